@@ -1,0 +1,48 @@
+#pragma once
+// Plain geometry value types shared by every module. They carry no CGAL types so that public
+// headers stay light; src/core/cgal_geometry.h converts to and from CGAL where the geometry is done.
+#include <vector>
+
+namespace topocut {
+
+struct Point2 {
+  double x = 0.0;
+  double y = 0.0;
+  friend bool operator==(const Point2&, const Point2&) = default;
+};
+
+// A closed ring of vertices; the last vertex is implicitly joined to the first (never repeated).
+using Ring = std::vector<Point2>;
+
+// One outer ring (counter-clockwise) and any number of holes (clockwise), as in CGAL.
+struct PolygonWithHoles {
+  Ring outer;
+  std::vector<Ring> holes;
+  friend bool operator==(const PolygonWithHoles&, const PolygonWithHoles&) = default;
+};
+
+struct Segment2 {
+  Point2 a;
+  Point2 b;
+  friend bool operator==(const Segment2&, const Segment2&) = default;
+};
+
+// The signed area of a ring (positive when counter-clockwise).
+double signed_area(const Ring& ring);
+
+// Area of the outer ring minus the areas of the holes (orientation-independent).
+double area(const PolygonWithHoles& polygon);
+
+// Area centroid of a polygon with holes; the vertex mean if the area is zero.
+Point2 centroid(const PolygonWithHoles& polygon);
+
+// Returns the ring with the requested orientation (reversed if needed).
+Ring oriented(const Ring& ring, bool counter_clockwise);
+
+// Returns the polygon with the outer ring counter-clockwise and the holes clockwise.
+PolygonWithHoles normalized_orientation(const PolygonWithHoles& polygon);
+
+// Euclidean distance between two points.
+double distance(const Point2& a, const Point2& b);
+
+}  // namespace topocut

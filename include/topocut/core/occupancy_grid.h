@@ -1,0 +1,39 @@
+#pragma once
+// An occupancy grid in the three states every stage understands, with its place in the world.
+#include <opencv2/core.hpp>
+
+#include "topocut/core/geometry.h"
+
+namespace topocut {
+
+// Cell values of OccupancyGrid::cells (CV_8UC1). Loaders map every input encoding to these.
+inline constexpr unsigned char kOccupied = 0;
+inline constexpr unsigned char kUnknown = 128;
+inline constexpr unsigned char kFree = 255;
+
+struct OccupancyGrid {
+  cv::Mat cells;             // CV_8UC1, values kOccupied / kUnknown / kFree; row 0 is the top row
+  double resolution = 0.05;  // metres per cell
+  Point2 origin;             // world position of the lower-left corner of the lower-left cell (ROS)
+
+  int width() const { return cells.cols; }
+  int height() const { return cells.rows; }
+};
+
+// World position of the centre of cell (column, row): DESIGN.md's grid/world convention.
+Point2 cell_center_world(const OccupancyGrid& grid, int column, int row);
+
+// Cell containing a world point, as (column, row); may lie outside the grid.
+cv::Point world_to_cell(const OccupancyGrid& grid, const Point2& world);
+
+// Converts a point in grid coordinates (x = column, y = height-1-row, unit = one cell, y up, cell
+// centres at integers) to world metres. Polygons traced from images use grid coordinates.
+Point2 grid_to_world(const OccupancyGrid& grid, const Point2& grid_point);
+
+// Converts a world point to grid coordinates (inverse of grid_to_world).
+Point2 world_to_grid(const OccupancyGrid& grid, const Point2& world);
+
+// Throws Error unless the grid is non-empty, CV_8UC1, and the resolution is finite and positive.
+void validate(const OccupancyGrid& grid);
+
+}  // namespace topocut

@@ -1,0 +1,34 @@
+#pragma once
+// The result of segmenting a map into rooms: what every pipeline produces and every writer reads.
+#include <vector>
+
+#include <opencv2/core.hpp>
+
+#include "topocut/core/geometry.h"
+
+namespace topocut {
+
+struct Room {
+  int id = 0;                // label value in Segmentation::labels, 1..N
+  PolygonWithHoles polygon;  // world metres, outer CCW, holes CW
+  double area = 0.0;         // m², of the room's labelled cells
+  Point2 centroid;           // world metres, of the room's labelled cells
+};
+
+// A passage (door, opening) between two rooms: the cut that separates them.
+struct Passage {
+  int room_a = 0;
+  int room_b = 0;
+  Segment2 cut;         // world metres
+  double width = 0.0;   // metres, length of the cut
+};
+
+struct Segmentation {
+  cv::Mat labels;                // CV_32SC1, grid size; 0 = not a room (obstacle, unknown), rooms 1..N
+  std::vector<Room> rooms;       // sorted by id
+  std::vector<Passage> passages; // the room graph's edges
+  double resolution = 0.05;      // metres per cell of labels
+  Point2 origin;                 // as OccupancyGrid::origin
+};
+
+}  // namespace topocut

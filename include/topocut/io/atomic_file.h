@@ -1,0 +1,22 @@
+#pragma once
+// Writing outputs so that a failure never leaves a half-written file behind: data goes to a
+// temporary file next to the target, which is renamed over it only when complete.
+#include <string>
+
+#include <opencv2/core.hpp>
+
+namespace topocut {
+
+// Writes contents to path atomically; throws Error naming the path if it cannot be written.
+void write_file_atomically(const std::string& path, const std::string& contents);
+
+// Encodes image by the path's extension (.png, .pgm, ...) and writes it atomically; throws Error.
+void write_image_atomically(const std::string& path, const cv::Mat& image);
+
+// Throws Error unless a file could be created at path (checked before long work starts).
+void check_writable(const std::string& path);
+
+// Reads a whole file; throws Error naming the path if it is missing or unreadable.
+std::string read_file(const std::string& path);
+
+}  // namespace topocut

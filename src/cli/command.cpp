@@ -1,0 +1,45 @@
+#include "cli/command.h"
+
+#include <iostream>
+
+namespace topocut::cli {
+
+namespace {
+std::map<std::string, Command>& table() {
+  static std::map<std::string, Command> instance;
+  return instance;
+}
+}  // namespace
+
+bool register_command(Command command) {
+  const std::string name = command.name;
+  table()[name] = std::move(command);
+  return true;
+}
+
+const std::map<std::string, Command>& commands() { return table(); }
+
+std::optional<po::variables_map> parse_options(const std::string& usage, const std::string& description,
+                                               const po::options_description& options,
+                                               const po::positional_options_description& positional,
+                                               const std::vector<std::string>& args) {
+  po::options_description all("Options");
+  all.add_options()("help,h", "show this help and exit");
+  all.add(options);
+  po::variables_map vm;
+  try {
+    po::store(po::command_line_parser(args).options(all).positional(positional).run(), vm);
+    if (vm.count("help")) {
+      std::cout << "Usage: " << usage << "\n\n" << description << "\n\n" << all << std::flush;
+      return std::nullopt;
+    }
+    po::notify(vm);
+  } catch (const po::error& e) {
+    throw UsageError(e.what());
+  }
+  return vm;
+}
+
+void progress(const std::string& message) { std::cerr << message << std::endl; }
+
+}  // namespace topocut::cli

@@ -1,0 +1,56 @@
+// topocut: segment 2-D robot maps into rooms. Dispatches to the registered subcommands and turns
+// every failure into one line on stderr and a non-zero exit code.
+#include <exception>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "cli/command.h"
+#include "topocut/core/error.h"
+
+namespace {
+
+void print_help() {
+  std::cout << "topocut " << TOPOCUT_VERSION
+            << " - segment 2-D robot maps (occupancy grids, laser logs) into rooms\n\n"
+               "Usage: topocut COMMAND [options]\n       topocut COMMAND --help\n\nCommands:\n";
+  for (const auto& [name, command] : topocut::cli::commands()) {
+    std::cout << "  " << name << std::string(name.size() < 12 ? 12 - name.size() : 1, ' ') << command.summary << "\n";
+  }
+  std::cout << "\nOptions:\n  --help      show this help\n  --version   print the version\n";
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const std::vector<std::string> args(argv + 1, argv + argc);
+  if (args.empty() || args[0] == "--help" || args[0] == "-h" || args[0] == "help") {
+    print_help();
+    return args.empty() ? 2 : 0;
+  }
+  if (args[0] == "--version") {
+    std::cout << "topocut " << TOPOCUT_VERSION << "\n";
+    return 0;
+  }
+  const auto& table = topocut::cli::commands();
+  const auto found = table.find(args[0]);
+  if (found == table.end()) {
+    std::cerr << "topocut: error: unknown command '" << args[0] << "' (see 'topocut --help')\n";
+    return 2;
+  }
+  try {
+    return found->second.run(std::vector<std::string>(args.begin() + 1, args.end()));
+  } catch (const topocut::cli::UsageError& e) {
+    std::cerr << "topocut " << args[0] << ": error: " << e.what() << " (see 'topocut " << args[0] << " --help')\n";
+    return 2;
+  } catch (const topocut::Error& e) {
+    std::cerr << "topocut " << args[0] << ": error: " << e.what() << "\n";
+    return 1;
+  } catch (const std::bad_alloc&) {
+    std::cerr << "topocut " << args[0] << ": error: out of memory\n";
+    return 1;
+  } catch (const std::exception& e) {
+    std::cerr << "topocut " << args[0] << ": error: internal failure: " << e.what() << "\n";
+    return 1;
+  }
+}

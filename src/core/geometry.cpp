@@ -1,0 +1,74 @@
+#include "topocut/core/geometry.h"
+
+#include <cmath>
+
+namespace topocut {
+
+double signed_area(const Ring& ring) {
+  const std::size_t n = ring.size();
+  if (n < 3) return 0.0;
+  double twice = 0.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const Point2& p = ring[i];
+    const Point2& q = ring[(i + 1) % n];
+    twice += p.x * q.y - q.x * p.y;
+  }
+  return 0.5 * twice;
+}
+
+double area(const PolygonWithHoles& polygon) {
+  double a = std::abs(signed_area(polygon.outer));
+  for (const Ring& hole : polygon.holes) a -= std::abs(signed_area(hole));
+  return a;
+}
+
+namespace {
+// Accumulates the first moments of a ring, signed so that holes subtract when oriented opposite.
+void add_moments(const Ring& ring, double sign, double& a2, double& mx, double& my) {
+  const std::size_t n = ring.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const Point2& p = ring[i];
+    const Point2& q = ring[(i + 1) % n];
+    const double cross = p.x * q.y - q.x * p.y;
+    a2 += sign * cross;
+    mx += sign * (p.x + q.x) * cross;
+    my += sign * (p.y + q.y) * cross;
+  }
+}
+}  // namespace
+
+Point2 centroid(const PolygonWithHoles& polygon) {
+  const PolygonWithHoles p = normalized_orientation(polygon);
+  double a2 = 0.0, mx = 0.0, my = 0.0;
+  add_moments(p.outer, 1.0, a2, mx, my);
+  for (const Ring& hole : p.holes) add_moments(hole, 1.0, a2, mx, my);
+  if (std::abs(a2) < 1e-12) {
+    Point2 mean;
+    if (p.outer.empty()) return mean;
+    for (const Point2& v : p.outer) {
+      mean.x += v.x;
+      mean.y += v.y;
+    }
+    mean.x /= static_cast<double>(p.outer.size());
+    mean.y /= static_cast<double>(p.outer.size());
+    return mean;
+  }
+  return {mx / (3.0 * a2), my / (3.0 * a2)};
+}
+
+Ring oriented(const Ring& ring, bool counter_clockwise) {
+  if ((signed_area(ring) > 0.0) == counter_clockwise || ring.size() < 3) return ring;
+  return Ring(ring.rbegin(), ring.rend());
+}
+
+PolygonWithHoles normalized_orientation(const PolygonWithHoles& polygon) {
+  PolygonWithHoles result;
+  result.outer = oriented(polygon.outer, true);
+  result.holes.reserve(polygon.holes.size());
+  for (const Ring& hole : polygon.holes) result.holes.push_back(oriented(hole, false));
+  return result;
+}
+
+double distance(const Point2& a, const Point2& b) { return std::hypot(a.x - b.x, a.y - b.y); }
+
+}  // namespace topocut

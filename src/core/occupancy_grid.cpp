@@ -1,0 +1,39 @@
+#include "topocut/core/occupancy_grid.h"
+
+#include <cmath>
+#include <string>
+
+#include "topocut/core/error.h"
+
+namespace topocut {
+
+Point2 cell_center_world(const OccupancyGrid& grid, int column, int row) {
+  return {grid.origin.x + (column + 0.5) * grid.resolution,
+          grid.origin.y + (grid.height() - row - 0.5) * grid.resolution};
+}
+
+cv::Point world_to_cell(const OccupancyGrid& grid, const Point2& world) {
+  const double c = (world.x - grid.origin.x) / grid.resolution;
+  const double r_from_bottom = (world.y - grid.origin.y) / grid.resolution;
+  return {static_cast<int>(std::floor(c)), grid.height() - 1 - static_cast<int>(std::floor(r_from_bottom))};
+}
+
+Point2 grid_to_world(const OccupancyGrid& grid, const Point2& g) {
+  return {grid.origin.x + (g.x + 0.5) * grid.resolution, grid.origin.y + (g.y + 0.5) * grid.resolution};
+}
+
+Point2 world_to_grid(const OccupancyGrid& grid, const Point2& w) {
+  return {(w.x - grid.origin.x) / grid.resolution - 0.5, (w.y - grid.origin.y) / grid.resolution - 0.5};
+}
+
+void validate(const OccupancyGrid& grid) {
+  if (grid.cells.empty()) throw Error("the map is empty (0 cells)");
+  if (grid.cells.type() != CV_8UC1) throw Error("the occupancy grid must be a single-channel 8-bit image");
+  if (!std::isfinite(grid.resolution) || grid.resolution <= 0.0)
+    throw Error("the map resolution must be a positive number of metres per cell, got " +
+                std::to_string(grid.resolution));
+  if (!std::isfinite(grid.origin.x) || !std::isfinite(grid.origin.y))
+    throw Error("the map origin must be finite");
+}
+
+}  // namespace topocut

@@ -1,0 +1,61 @@
+#include "topocut/core/geometry.h"
+
+#include <gtest/gtest.h>
+
+#include "core/cgal_geometry.h"
+#include "topocut/core/error.h"
+#include "topocut/core/occupancy_grid.h"
+
+#include <cmath>
+
+namespace topocut {
+namespace {
+
+TEST(Geometry, SignedAreaFollowsOrientation) {
+  const Ring square{{0, 0}, {4, 0}, {4, 3}, {0, 3}};
+  EXPECT_DOUBLE_EQ(signed_area(square), 12.0);
+  EXPECT_DOUBLE_EQ(signed_area(oriented(square, false)), -12.0);
+}
+
+TEST(Geometry, AreaAndCentroidSubtractHoles) {
+  PolygonWithHoles p{{{0, 0}, {10, 0}, {10, 10}, {0, 10}}, {{{0, 0}, {0, 5}, {5, 5}, {5, 0}}}};
+  EXPECT_DOUBLE_EQ(area(p), 75.0);
+  // Hand computation: (100*(5,5) - 25*(2.5,2.5)) / 75 = (5.8333.., 5.8333..).
+  const Point2 c = centroid(p);
+  EXPECT_NEAR(c.x, (500.0 - 62.5) / 75.0, 1e-12);
+  EXPECT_NEAR(c.y, (500.0 - 62.5) / 75.0, 1e-12);
+}
+
+TEST(Geometry, NormalizedOrientationMatchesCgalConvention) {
+  PolygonWithHoles p{{{0, 0}, {0, 10}, {10, 10}, {10, 0}}, {{{2, 2}, {4, 2}, {4, 4}, {2, 4}}}};
+  const cgal::PolygonWithHoles c = cgal::to_cgal(normalized_orientation(p));
+  EXPECT_TRUE(c.outer_boundary().is_counterclockwise_oriented());
+  EXPECT_TRUE(c.holes_begin()->is_clockwise_oriented());
+  EXPECT_EQ(cgal::from_cgal(c), normalized_orientation(p));
+}
+
+TEST(OccupancyGrid, CellCentresFollowRosConvention) {
+  OccupancyGrid grid{cv::Mat(4, 6, CV_8UC1, cv::Scalar(kFree)), 0.5, {-1.0, 2.0}};
+  const Point2 bottom_left = cell_center_world(grid, 0, 3);
+  EXPECT_DOUBLE_EQ(bottom_left.x, -0.75);
+  EXPECT_DOUBLE_EQ(bottom_left.y, 2.25);
+  EXPECT_EQ(world_to_cell(grid, bottom_left), cv::Point(0, 3));
+  const Point2 w = grid_to_world(grid, {5, 3});  // grid (5,3) = column 5, row 0
+  EXPECT_EQ(w, cell_center_world(grid, 5, 0));
+  const Point2 g = world_to_grid(grid, w);
+  EXPECT_NEAR(g.x, 5.0, 1e-12);
+  EXPECT_NEAR(g.y, 3.0, 1e-12);
+}
+
+TEST(OccupancyGrid, ValidateRejectsBadResolution) {
+  OccupancyGrid grid{cv::Mat(2, 2, CV_8UC1, cv::Scalar(kFree)), 0.0, {}};
+  EXPECT_THROW(validate(grid), Error);
+  grid.resolution = std::nan("");
+  EXPECT_THROW(validate(grid), Error);
+  grid.resolution = 0.05;
+  EXPECT_NO_THROW(validate(grid));
+  EXPECT_THROW(validate(OccupancyGrid{}), Error);
+}
+
+}  // namespace
+}  // namespace topocut
