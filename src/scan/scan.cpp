@@ -1,0 +1,57 @@
+#include "topocut/scan/scan.h"
+
+#include <cmath>
+#include <string>
+
+#include "topocut/core/error.h"
+
+namespace topocut {
+
+bool Scan::is_valid(std::size_t i) const {
+  if (i >= ranges.size() || i >= angles.size()) return false;
+  const double r = ranges[i];
+  return std::isfinite(r) && std::isfinite(angles[i]) && r > 0.0 && r >= range_min && r <= range_max;
+}
+
+void validate(const Scan& scan) {
+  if (scan.angles.size() != scan.ranges.size())
+    throw Error("a scan needs one angle per range, got " + std::to_string(scan.angles.size()) + " angles and " +
+                std::to_string(scan.ranges.size()) + " ranges");
+  if (std::isnan(scan.range_min) || std::isnan(scan.range_max) || scan.range_min < 0.0 ||
+      scan.range_max < scan.range_min)
+    throw Error("the scan range limits must satisfy 0 <= range_min <= range_max");
+}
+
+std::size_t count_valid(const Scan& scan) {
+  std::size_t n = 0;
+  for (std::size_t i = 0; i < scan.size(); ++i) n += scan.is_valid(i) ? 1 : 0;
+  return n;
+}
+
+std::vector<ScanPoint> valid_points(const Scan& scan) {
+  std::vector<ScanPoint> points;
+  points.reserve(scan.size());
+  for (std::size_t i = 0; i < scan.size(); ++i) {
+    if (scan.is_valid(i)) points.push_back({beam_point(scan, i), i});
+  }
+  return points;
+}
+
+Point2 beam_point(const Scan& scan, std::size_t i) {
+  const double r = scan.ranges.at(i);
+  const double a = scan.angles.at(i);
+  return {r * std::cos(a), r * std::sin(a)};
+}
+
+Point2 to_world(const Pose2& pose, const Point2& local) {
+  const double c = std::cos(pose.theta), s = std::sin(pose.theta);
+  return {pose.x + c * local.x - s * local.y, pose.y + s * local.x + c * local.y};
+}
+
+Point2 to_local(const Pose2& pose, const Point2& world) {
+  const double c = std::cos(pose.theta), s = std::sin(pose.theta);
+  const double dx = world.x - pose.x, dy = world.y - pose.y;
+  return {c * dx + s * dy, -s * dx + c * dy};
+}
+
+}  // namespace topocut
