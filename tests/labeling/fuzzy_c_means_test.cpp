@@ -1,0 +1,146 @@
+#include "topocut/labeling/fuzzy_c_means.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <random>
+
+#include "topocut/core/error.h"
+
+namespace topocut {
+namespace {
+
+// Points spread evenly on a circle of the given radius around a centre: their mean is the centre.
+void add_ring(std::vector<Point2>& points, Point2 centre, double radius, int count) {
+  for (int i = 0; i < count; ++i) {
+    const double a = 2.0 * M_PI * i / count;
+    points.push_back({centre.x + radius * std::cos(a), centre.y + radius * std::sin(a)});
+  }
+}
+
+TEST(FuzzyCMeans, ConvergesToTheCentresOfSeparableClusters) {
+  // Three symmetric clusters 10 m apart with 0.5 m radius: memberships in the far clusters are
+  // about (0.5/10)^2, so each centre sits within a few millimetres of its cluster's mean. The input
+  // is in cluster order 2, 0, 1 so the centres come back in that order.
+  const Point2 truth[3] = {{0, 0}, {10, 0}, {5, 8.66}};
+  std::vector<Point2> points;
+  add_ring(points, truth[2], 0.5, 24);
+  add_ring(points, truth[0], 0.5, 24);
+  add_ring(points, truth[1], 0.5, 24);
+  FuzzyCMeansOptions options;
+  options.clusters = 3;
+  const FuzzyCMeansResult r = fuzzy_c_means(points, options);
+  ASSERT_EQ(r.centres.size(), 3u);
+  EXPECT_TRUE(r.converged);
+  const int order[3] = {2, 0, 1};
+  for (int j = 0; j < 3; ++j) {
+    EXPECT_NEAR(r.centres[j].x, truth[order[j]].x, 0.01) << j;
+    EXPECT_NEAR(r.centres[j].y, truth[order[j]].y, 0.01) << j;
+  }
+  for (size_t i = 0; i < points.size(); ++i) {
+    double sum = 0.0;
+    for (int j = 0; j < 3; ++j) sum += r.membership(static_cast<int>(i), j);
+    EXPECT_NEAR(sum, 1.0, 1e-12);
+    // Each point belongs mostly to its own cluster.
+    EXPECT_GT(r.membership(static_cast<int>(i), static_cast<int>(i / 24)), 0.99);
+  }
+}
+
+TEST(FuzzyCMeans, NoisyBlobsConvergeNearTheirMeans) {
+  std::mt19937 rng(3);
+  std::normal_distribution<double> noise(0.0, 0.2);
+  const Point2 truth[2] = {{-4, 1}, {4, -1}};
+  std::vector<Point2> points;
+  Point2 mean[2];
+  for (int c = 0; c < 2; ++c) {
+    for (int i = 0; i < 200; ++i) {
+      const Point2 p{truth[c].x + noise(rng), truth[c].y + noise(rng)};
+      points.push_back(p);
+      mean[c].x += p.x / 200;
+      mean[c].y += p.y / 200;
+    }
+  }
+  const FuzzyCMeansResult r = fuzzy_c_means(points);
+  ASSERT_EQ(r.centres.size(), 2u);
+  EXPECT_TRUE(r.converged);
+  for (int c = 0; c < 2; ++c) {
+    EXPECT_NEAR(r.centres[c].x, mean[c].x, 0.02);
+    EXPECT_NEAR(r.centres[c].y, mean[c].y, 0.02);
+  }
+}
+
+TEST(FuzzyCMeans, HandComputedSmallCases) {
+  // One cluster: all memberships are 1 and the centre is the mean.
+  const std::vector<Point2> three{{0, 0}, {3, 0}, {0, 6}};
+  FuzzyCMeansOptions one;
+  one.clusters = 1;
+  const FuzzyCMeansResult r1 = fuzzy_c_means(three, one);
+  ASSERT_EQ(r1.centres.size(), 1u);
+  EXPECT_NEAR(r1.centres[0].x, 1.0, 1e-12);
+  EXPECT_NEAR(r1.centres[0].y, 2.0, 1e-12);
+
+  // Two points, two clusters: each point is its own centre with membership 1.
+  const std::vector<Point2> two{{0, 0}, {2, 0}};
+  const FuzzyCMeansResult r2 = fuzzy_c_means(two);
+  ASSERT_EQ(r2.centres.size(), 2u);
+  EXPECT_EQ(r2.centres[0], (Point2{0, 0}));
+  EXPECT_EQ(r2.centres[1], (Point2{2, 0}));
+  EXPECT_DOUBLE_EQ(r2.membership(0, 0), 1.0);
+  EXPECT_TRUE(r2.converged);
+
+  // Four points symmetric under p → -p: by symmetry the two centres are each other's negatives,
+  // and each lies between the inner (|x| = 1) and the outer (|x| = 3) column of its side.
+  const std::vector<Point2> four{{-3, 1}, {-1, -1}, {1, 1}, {3, -1}};
+  const FuzzyCMeansResult r4 = fuzzy_c_means(four);
+  ASSERT_EQ(r4.centres.size(), 2u);
+  EXPECT_NEAR(r4.centres[0].x, -r4.centres[1].x, 1e-6);
+  EXPECT_NEAR(r4.centres[0].y, -r4.centres[1].y, 1e-6);
+  EXPECT_GT(std::abs(r4.centres[0].x), 1.0);
+  EXPECT_LT(std::abs(r4.centres[0].x), 3.0);
+}
+
+TEST(FuzzyCMeans, FewerDistinctPointsThanClusters) {
+  const std::vector<Point2> points{{1, 1}, {1, 1}, {5, 5}};
+  FuzzyCMeansOptions options;
+  options.clusters = 4;
+  const FuzzyCMeansResult r = fuzzy_c_means(points, options);
+  ASSERT_EQ(r.centres.size(), 2u);
+  EXPECT_EQ(r.centres[0], (Point2{1, 1}));
+  EXPECT_EQ(r.centres[1], (Point2{5, 5}));
+  EXPECT_TRUE(fuzzy_c_means(std::vector<Point2>{}).centres.empty());
+}
+
+TEST(FuzzyCMeans, IsDeterministic) {
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> u(0, 10);
+  std::vector<Point2> points;
+  for (int i = 0; i < 100; ++i) points.push_back({u(rng), u(rng)});
+  FuzzyCMeansOptions options;
+  options.clusters = 5;
+  const FuzzyCMeansResult a = fuzzy_c_means(points, options);
+  const FuzzyCMeansResult b = fuzzy_c_means(points, options);
+  EXPECT_EQ(a.centres, b.centres);
+  EXPECT_EQ(a.memberships, b.memberships);
+}
+
+TEST(FuzzyCMeans, RejectsInvalidInput) {
+  const std::vector<Point2> points{{0, 0}, {1, 1}};
+  FuzzyCMeansOptions bad;
+  bad.clusters = 0;
+  EXPECT_THROW(fuzzy_c_means(points, bad), Error);
+  bad = {};
+  bad.fuzzifier = 1.0;
+  EXPECT_THROW(fuzzy_c_means(points, bad), Error);
+  bad = {};
+  bad.tolerance = -1.0;
+  EXPECT_THROW(fuzzy_c_means(points, bad), Error);
+  bad = {};
+  bad.max_iterations = 0;
+  EXPECT_THROW(fuzzy_c_means(points, bad), Error);
+  const std::vector<Point2> nan{{0, 0}, {std::numeric_limits<double>::quiet_NaN(), 0}};
+  EXPECT_THROW(fuzzy_c_means(nan), Error);
+}
+
+}  // namespace
+}  // namespace topocut
