@@ -1,0 +1,87 @@
+#pragma once
+// Running a segmenter over a Bormann-format dataset folder and scoring every image against its
+// ground truth. For each map X the folder holds X.png (plain), X_furnitures.png (furnished) and
+// X_gt_segmentation.png; Bormann et al. (ICRA 2016) publish 20 such maps at 0.05 m/px.
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "topocut/core/segmentation.h"
+#include "topocut/evaluation/precision_recall.h"
+#include "topocut/io/map_loader.h"
+#include "topocut/segmentation/segmenter.h"
+
+namespace topocut {
+
+enum class Variant {
+  kPlain,      // X.png
+  kFurnished,  // X_furnitures.png: the same building with furniture drawn in as obstacles
+};
+
+// "plain" or "furnished".
+std::string to_string(Variant variant);
+
+// Parses "plain" or "furnished"; throws Error on anything else.
+Variant parse_variant(const std::string& text);
+
+struct DatasetMap {
+  std::string name;          // X
+  std::string plain;         // path of X.png
+  std::string furnished;     // path of X_furnitures.png
+  std::string ground_truth;  // path of X_gt_segmentation.png
+
+  const std::string& image(Variant variant) const { return variant == Variant::kPlain ? plain : furnished; }
+};
+
+// Lists the maps of a dataset folder: every X for which X_gt_segmentation.png exists, sorted by
+// name (byte order). The image files are not checked here; a missing one fails only its own run.
+// Throws Error if the folder does not exist, is not a directory, or holds no map.
+std::vector<DatasetMap> discover_dataset(const std::string& folder);
+
+// Keeps the maps named in names, in the order given (all maps when names is empty). Throws Error
+// naming an unknown map and listing the known ones.
+std::vector<DatasetMap> select_maps(const std::vector<DatasetMap>& maps, const std::vector<std::string>& names);
+
+// The outcome of one image. A failed image keeps ok = false and the reason in error; its numbers
+// are meaningless and every report leaves them out.
+struct ImageResult {
+  std::string map;
+  Variant variant = Variant::kPlain;
+  bool ok = false;
+  std::string error;
+  int rooms = 0;          // segments larger than the ignore size (the ones precision averages over)
+  int gt_rooms = 0;       // ground-truth rooms larger than the ignore size
+  double recall = 0.0;    // fraction in [0, 1]
+  double precision = 0.0; // fraction in [0, 1]
+  double time_ms = 0.0;   // the whole segmentation of the image file, loading included
+};
+
+// Segments one image file; the runner times exactly this call.
+using ImageSegmenter = std::function<Segmentation(const std::string& image_path)>;
+
+struct DatasetRunOptions {
+  std::vector<Variant> variants{Variant::kPlain, Variant::kFurnished};
+  std::vector<std::string> maps;  // names to run; empty: every map of the folder
+  SegmentOptions segment;         // handed to segment() unchanged
+  MapLoadOptions load;            // the dataset's images are 0.05 m/px, MapLoadOptions' default
+  EvaluationOptions evaluation;
+  // Called after every image with a one-line status ("[3/40] lab_ipa furnished: ..."); may be empty.
+  std::function<void(const std::string&)> progress;
+};
+
+// Runs segmenter on every selected image (map by map, variants in options' order), loads each
+// ground truth once per map (outside the timing) and scores the labels. Never throws for a single
+// image: a failure (unreadable file, segmenter error, size mismatch) becomes a failed ImageResult.
+// options.maps and options.segment are not used here (the caller chose maps and segmenter).
+std::vector<ImageResult> run_dataset(const std::vector<DatasetMap>& maps, const DatasetRunOptions& options,
+                                     const ImageSegmenter& segmenter);
+
+// The library's own pipeline as an ImageSegmenter: load_map(path, options.load) then
+// segment(grid, options.segment).
+ImageSegmenter batch_segmenter(const DatasetRunOptions& options);
+
+// discover_dataset + select_maps(options.maps) + run_dataset with batch_segmenter(options).
+// Throws Error only for a bad folder or an unknown map name.
+std::vector<ImageResult> run_dataset(const std::string& folder, const DatasetRunOptions& options);
+
+}  // namespace topocut

@@ -1,0 +1,123 @@
+#include "topocut/evaluation/dataset.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <exception>
+#include <filesystem>
+#include <new>
+#include <optional>
+
+#include "topocut/core/error.h"
+
+namespace topocut {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr const char* kGroundTruthSuffix = "_gt_segmentation.png";
+
+std::string status_line(std::size_t index, std::size_t total, const ImageResult& result) {
+  std::string line = "[" + std::to_string(index) + "/" + std::to_string(total) + "] " + result.map + " " +
+                     to_string(result.variant) + ": ";
+  if (!result.ok) return line + "FAILED: " + result.error;
+  char numbers[160];
+  std::snprintf(numbers, sizeof numbers, "%d rooms (ground truth %d), recall %.3f, precision %.3f, %.0f ms",
+                result.rooms, result.gt_rooms, result.recall, result.precision, result.time_ms);
+  return line + numbers;
+}
+
+}  // namespace
+
+std::string to_string(Variant variant) { return variant == Variant::kPlain ? "plain" : "furnished"; }
+
+Variant parse_variant(const std::string& text) {
+  if (text == "plain") return Variant::kPlain;
+  if (text == "furnished") return Variant::kFurnished;
+  throw Error("unknown variant '" + text + "' (expected plain or furnished)");
+}
+
+std::vector<DatasetMap> discover_dataset(const std::string& folder) {
+  std::error_code ec;
+  if (!fs::exists(folder, ec)) throw Error("dataset folder '" + folder + "' does not exist");
+  if (!fs::is_directory(folder, ec)) throw Error("dataset path '" + folder + "' is not a folder");
+  std::vector<DatasetMap> maps;
+  const std::string suffix = kGroundTruthSuffix;
+  fs::directory_iterator it(folder, ec);
+  if (ec) throw Error("cannot list dataset folder '" + folder + "': " + ec.message());
+  for (const fs::directory_entry& entry : it) {
+    const std::string file = entry.path().filename().string();
+    if (file.size() <= suffix.size() || file.compare(file.size() - suffix.size(), suffix.size(), suffix) != 0) continue;
+    DatasetMap map;
+    map.name = file.substr(0, file.size() - suffix.size());
+    map.plain = (fs::path(folder) / (map.name + ".png")).string();
+    map.furnished = (fs::path(folder) / (map.name + "_furnitures.png")).string();
+    map.ground_truth = entry.path().string();
+    maps.push_back(std::move(map));
+  }
+  if (maps.empty()) {
+    throw Error("dataset folder '" + folder + "' holds no map (no file named X" + suffix + ")");
+  }
+  std::sort(maps.begin(), maps.end(), [](const DatasetMap& a, const DatasetMap& b) { return a.name < b.name; });
+  return maps;
+}
+
+std::vector<DatasetMap> select_maps(const std::vector<DatasetMap>& maps, const std::vector<std::string>& names) {
+  if (names.empty()) return maps;
+  std::vector<DatasetMap> selected;
+  for (const std::string& name : names) {
+    const auto found = std::find_if(maps.begin(), maps.end(), [&](const DatasetMap& m) { return m.name == name; });
+    if (found == maps.end()) {
+      std::string known;
+      for (const DatasetMap& m : maps) known += (known.empty() ? "" : ", ") + m.name;
+      throw Error("the dataset has no map '" + name + "' (maps: " + known + ")");
+    }
+    selected.push_back(*found);
+  }
+  return selected;
+}
+
+std::vector<ImageResult> run_dataset(const std::vector<DatasetMap>& maps, const DatasetRunOptions& options,
+                                     const ImageSegmenter& segmenter) {
+  std::vector<ImageResult> results;
+  const std::size_t total = maps.size() * options.variants.size();
+  for (const DatasetMap& map : maps) {
+    // The ground truth is shared by both variants; a bad one fails them both with its reason.
+    std::optional<cv::Mat> rooms;
+    std::string ground_truth_error;
+    try {
+      rooms = ground_truth_rooms(load_ground_truth(map.ground_truth), options.evaluation);
+    } catch (const std::exception& e) {
+      ground_truth_error = e.what();
+    }
+    for (const Variant variant : options.variants) {
+      ImageResult result;
+      result.map = map.name;
+      result.variant = variant;
+      try {
+        if (!rooms) throw Error(ground_truth_error);
+        const auto start = std::chrono::steady_clock::now();
+        const Segmentation segmentation = segmenter(map.image(variant));
+        const auto stop = std::chrono::steady_clock::now();
+        result.time_ms = std::chrono::duration<double, std::milli>(stop - start).count();
+        const PrecisionRecall score = precision_recall(segmentation.labels, *rooms, options.evaluation);
+        result.rooms = score.segments;
+        result.gt_rooms = score.rooms;
+        result.recall = score.recall;
+        result.precision = score.precision;
+        result.ok = true;
+      } catch (const std::bad_alloc&) {
+        result.error = "out of memory";
+      } catch (const std::exception& e) {
+        result.error = e.what();
+      }
+      if (!result.ok) result.time_ms = 0.0;
+      results.push_back(result);
+      if (options.progress) options.progress(status_line(results.size(), total, result));
+    }
+  }
+  return results;
+}
+
+}  // namespace topocut

@@ -1,0 +1,133 @@
+#include "topocut/evaluation/dataset_options.h"
+
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+
+#include "topocut/core/error.h"
+
+namespace topocut {
+
+namespace {
+
+std::string number(double value) {
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, "%g", value);
+  return buffer;
+}
+
+double parse_positive_metres(const std::string& name, const std::string& value) {
+  std::size_t used = 0;
+  double parsed = 0.0;
+  try {
+    parsed = std::stod(value, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used == 0 || used != value.size() || !std::isfinite(parsed) || parsed <= 0.0) {
+    throw Error("--" + name + " needs a positive number of metres, not '" + value + "'");
+  }
+  return parsed;
+}
+
+const DatasetOption* find_option(const std::string& name) {
+  for (const DatasetOption& option : dataset_options()) {
+    if (option.name == name) return &option;
+  }
+  return nullptr;
+}
+
+}  // namespace
+
+const std::vector<DatasetOption>& dataset_options() {
+  static const std::vector<DatasetOption> options = [] {
+    const DatasetArguments defaults;
+    return std::vector<DatasetOption>{
+        {"dataset", "DIR", "Bormann-format dataset folder (default " + defaults.dataset + ")", false},
+        {"variant", "V", "plain, furnished or all (default all)", false},
+        {"map", "NAME", "run only these maps (repeatable; default every map of the folder)", true},
+        {"csv", "FILE", "also write map,variant,rooms,gt_rooms,recall,precision,time_ms to FILE", false},
+        {"concavity", "M", "maximum concavity tau in metres (default " + number(defaults.run.segment.concavity) + ")",
+         false},
+        {"trivial", "", "baseline: every free-space component is one room (no decomposition)", false},
+    };
+  }();
+  return options;
+}
+
+void apply_dataset_option(DatasetArguments& arguments, const std::string& name, const std::string& value) {
+  if (name == "dataset") {
+    if (value.empty()) throw Error("--dataset needs a folder");
+    arguments.dataset = value;
+  } else if (name == "variant") {
+    if (value == "all") {
+      arguments.run.variants = {Variant::kPlain, Variant::kFurnished};
+    } else if (value == "plain" || value == "furnished") {
+      arguments.run.variants = {parse_variant(value)};
+    } else {
+      throw Error("unknown variant '" + value + "' (expected plain, furnished or all)");
+    }
+  } else if (name == "map") {
+    if (value.empty()) throw Error("--map needs a map name");
+    arguments.run.maps.push_back(value);
+  } else if (name == "csv") {
+    if (value.empty()) throw Error("--csv needs a file name");
+    arguments.csv = value;
+  } else if (name == "concavity") {
+    arguments.run.segment.concavity = parse_positive_metres(name, value);
+  } else if (name == "trivial") {
+    arguments.run.segment.decompose = false;
+  } else {
+    throw Error("unknown option '--" + name + "'");
+  }
+}
+
+DatasetArguments parse_dataset_arguments(const std::vector<std::string>& args) {
+  DatasetArguments arguments;
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    const std::string& arg = args[i];
+    if (arg.rfind("--", 0) != 0 || arg.size() == 2) throw Error("unexpected argument '" + arg + "'");
+    std::string name = arg.substr(2);
+    std::string inline_value;
+    bool has_inline_value = false;
+    if (const std::size_t eq = name.find('='); eq != std::string::npos) {
+      inline_value = name.substr(eq + 1);
+      name = name.substr(0, eq);
+      has_inline_value = true;
+    }
+    const DatasetOption* option = find_option(name);
+    if (option == nullptr) throw Error("unknown option '--" + name + "'");
+    if (option->value_name.empty()) {
+      if (has_inline_value) throw Error("--" + name + " takes no value");
+      apply_dataset_option(arguments, name, "");
+    } else if (has_inline_value) {
+      apply_dataset_option(arguments, name, inline_value);
+    } else {
+      if (i + 1 >= args.size() || args[i + 1].rfind("--", 0) == 0) {
+        throw Error("--" + name + " needs a value (" + option->value_name + ")");
+      }
+      apply_dataset_option(arguments, name, args[++i]);
+      while (option->repeatable && i + 1 < args.size() && args[i + 1].rfind("--", 0) != 0) {
+        apply_dataset_option(arguments, name, args[++i]);
+      }
+    }
+  }
+  return arguments;
+}
+
+std::string dataset_options_help() {
+  std::string help;
+  for (const DatasetOption& option : dataset_options()) {
+    std::string left = "  --" + option.name + (option.value_name.empty() ? "" : " " + option.value_name);
+    if (left.size() < 22) left += std::string(22 - left.size(), ' ');
+    help += left + " " + option.help + "\n";
+  }
+  return help;
+}
+
+std::string method_name(const SegmentOptions& options) {
+  if (!options.decompose) return "trivial (one room per component)";
+  return "topocut (tau " + number(options.concavity) + " m)";
+}
+
+}  // namespace topocut

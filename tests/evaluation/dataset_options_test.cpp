@@ -1,0 +1,78 @@
+#include "topocut/evaluation/dataset_options.h"
+
+#include <gtest/gtest.h>
+
+#include "topocut/core/error.h"
+
+namespace topocut {
+namespace {
+
+TEST(DatasetOptions, DefaultsRunEverythingWithTheDefaultSegmenter) {
+  const DatasetArguments arguments = parse_dataset_arguments({});
+  EXPECT_EQ(arguments.dataset, "../shared/datasets/bormann");
+  EXPECT_TRUE(arguments.csv.empty());
+  ASSERT_EQ(arguments.run.variants.size(), 2u);
+  EXPECT_EQ(arguments.run.variants[0], Variant::kPlain);
+  EXPECT_EQ(arguments.run.variants[1], Variant::kFurnished);
+  EXPECT_TRUE(arguments.run.maps.empty());
+  EXPECT_EQ(arguments.run.segment.concavity, SegmentOptions{}.concavity);
+  EXPECT_EQ(arguments.run.segment.decompose, SegmentOptions{}.decompose);
+}
+
+TEST(DatasetOptions, ParsesEveryOption) {
+  const DatasetArguments arguments =
+      parse_dataset_arguments({"--dataset", "/data/b", "--variant=furnished", "--map", "lab_ipa", "NLB", "--csv",
+                               "out.csv", "--concavity", "1.75", "--trivial", "--map=office_a"});
+  EXPECT_EQ(arguments.dataset, "/data/b");
+  ASSERT_EQ(arguments.run.variants.size(), 1u);
+  EXPECT_EQ(arguments.run.variants[0], Variant::kFurnished);
+  EXPECT_EQ(arguments.run.maps, (std::vector<std::string>{"lab_ipa", "NLB", "office_a"}));
+  EXPECT_EQ(arguments.csv, "out.csv");
+  EXPECT_DOUBLE_EQ(arguments.run.segment.concavity, 1.75);
+  EXPECT_FALSE(arguments.run.segment.decompose);
+}
+
+TEST(DatasetOptions, VariantAllSelectsBoth) {
+  DatasetArguments arguments;
+  apply_dataset_option(arguments, "variant", "plain");
+  ASSERT_EQ(arguments.run.variants.size(), 1u);
+  apply_dataset_option(arguments, "variant", "all");
+  EXPECT_EQ(arguments.run.variants.size(), 2u);
+}
+
+TEST(DatasetOptions, BadInputIsAnError) {
+  EXPECT_THROW(parse_dataset_arguments({"--variant", "furnitures"}), Error);
+  EXPECT_THROW(parse_dataset_arguments({"--concavity", "0"}), Error);
+  EXPECT_THROW(parse_dataset_arguments({"--concavity", "-1"}), Error);
+  EXPECT_THROW(parse_dataset_arguments({"--concavity", "2.5m"}), Error);
+  EXPECT_THROW(parse_dataset_arguments({"--concavity", "nan"}), Error);
+  EXPECT_THROW(parse_dataset_arguments({"--concavity"}), Error);
+  EXPECT_THROW(parse_dataset_arguments({"--dataset", "--trivial"}), Error);
+  EXPECT_THROW(parse_dataset_arguments({"--trivial=yes"}), Error);
+  EXPECT_THROW(parse_dataset_arguments({"--frobnicate"}), Error);
+  EXPECT_THROW(parse_dataset_arguments({"stray"}), Error);
+  DatasetArguments arguments;
+  EXPECT_THROW(apply_dataset_option(arguments, "nonsense", "1"), Error);
+}
+
+TEST(DatasetOptions, EveryOptionIsInTheHelpAndAccepted) {
+  const std::string help = dataset_options_help();
+  for (const DatasetOption& option : dataset_options()) {
+    EXPECT_NE(help.find("--" + option.name), std::string::npos) << option.name;
+    DatasetArguments arguments;
+    const std::string value = option.name == "variant" ? "plain" : option.name == "concavity" ? "2" : "x";
+    EXPECT_NO_THROW(apply_dataset_option(arguments, option.name, option.value_name.empty() ? "" : value))
+        << option.name;
+  }
+}
+
+TEST(DatasetOptions, MethodNameTellsTheBaselineApart) {
+  SegmentOptions options;
+  const std::string decomposing = method_name(options);
+  options.decompose = false;
+  EXPECT_NE(method_name(options), decomposing);
+  EXPECT_NE(method_name(options).find("trivial"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace topocut
