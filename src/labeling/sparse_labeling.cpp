@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <numeric>
 #include <string>
 #include <utility>
@@ -216,6 +217,15 @@ Labeling label_points(std::span<const Point2> points, const LabelingOptions& opt
     return empty;
   }
   return options.method == LabelingMethod::kRaster ? label_raster(cells, options) : label_sparse(cells, options);
+}
+
+Labeling label_scan(const Scan& scan, const LabelingOptions& options) {
+  validate(scan);
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  std::vector<Point2> points(scan.size(), Point2{nan, nan});
+  for (std::size_t i = 0; i < scan.size(); ++i)
+    if (scan.is_valid(i)) points[i] = beam_point(scan, i);
+  return label_points(points, options);
 }
 
 }  // namespace topocut

@@ -214,3 +214,22 @@ TEST(SparseLabeling, RejectsInvalidOptions) {
 
 }  // namespace
 }  // namespace topocut
+
+namespace topocut {
+namespace {
+
+TEST(SparseLabeling, ScanBeamsKeepTheirRows) {
+  // Five beams: two on a near wall 1 m ahead, an invalid beam, two on a wall 3 m ahead.
+  Scan scan;
+  scan.angles = {-0.02, -0.01, 0.0, 0.01, 0.02};
+  scan.ranges = {1.0, 1.0, std::numeric_limits<double>::quiet_NaN(), 3.0, 3.0};
+  const Labeling l = label_scan(scan);
+  EXPECT_EQ(l.labels, (std::vector<int>{0, 0, -1, 1, 1}));
+  ASSERT_EQ(l.segments.size(), 2u);
+  EXPECT_EQ(l.segments[1], (std::vector<int>{3, 4}));
+  scan.ranges.pop_back();
+  EXPECT_THROW(label_scan(scan), Error);
+}
+
+}  // namespace
+}  // namespace topocut

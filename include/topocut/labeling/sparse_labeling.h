@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "topocut/core/geometry.h"
+#include "topocut/scan/scan.h"
 
 namespace topocut {
 
@@ -42,5 +43,9 @@ struct Labeling {
 // (cell size not positive and finite, negative dilation, connectivity other than 4 or 8) or when
 // the points span more cells than can be indexed (raster: more than 2^28 cells in the box).
 Labeling label_points(std::span<const Point2> points, const LabelingOptions& options = {});
+
+// Labels the valid beams of a scan as sensor-frame points; labels are per beam (row of the scan),
+// -1 for invalid beams (Scan::is_valid). Throws Error as label_points and on an invalid scan.
+Labeling label_scan(const Scan& scan, const LabelingOptions& options = {});
 
 }  // namespace topocut
