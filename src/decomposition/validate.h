@@ -1,0 +1,17 @@
+#pragma once
+// Input hygiene for the decomposition: what decompose() accepts and how it normalises it.
+#include "topocut/core/geometry.h"
+
+namespace topocut::dude {
+
+// Returns the polygon with consecutive duplicate vertices (and a repeated closing vertex) removed,
+// the outer ring counter-clockwise and the holes clockwise. A reversed ring keeps its first vertex,
+// so the result does not depend on the input orientation. Throws Error when a ring has non-finite
+// coordinates or fewer than 3 distinct vertices, when rings intersect or touch (themselves or each
+// other), when a hole is not strictly inside the outer ring, or when a hole lies inside another.
+PolygonWithHoles clean_and_validate(const PolygonWithHoles& polygon);
+
+// Reverses a ring but keeps its first vertex first: v0, v(n-1), ..., v1.
+Ring reversed_keep_first(const Ring& ring);
+
+}  // namespace topocut::dude
