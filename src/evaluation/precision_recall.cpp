@@ -87,8 +87,9 @@ cv::Mat load_ground_truth(const std::string& path) {
       throw Error("cannot read ground truth '" + path + "': unsupported channel count " +
                   std::to_string(image.channels()));
   }
-  // A transparent pixel carries no drawing, so it cannot be a room pixel.
-  if (!alpha.empty()) grey.setTo(0, alpha == 0);
+  // A transparent pixel carries no drawing, so it cannot be a room pixel (alpha < 128 counts as
+  // transparent, as for maps in io/map_loader).
+  if (!alpha.empty()) grey.setTo(0, alpha < 128);
   return grey;
 }
 

@@ -28,7 +28,7 @@ struct PrecisionRecall {
 };
 
 // Loads a ground-truth image as one grey channel (CV_8UC1): colour is converted to grey, 16-bit
-// is scaled to 8 bits, and fully transparent pixels become 0 (never free). Throws Error naming the
+// is scaled to 8 bits, and transparent pixels (alpha < 128) become 0 (never free). Throws Error naming the
 // file if it is missing or not an image.
 cv::Mat load_ground_truth(const std::string& path);
 
