@@ -3,6 +3,8 @@
 #include <optional>
 #include <string>
 
+#include <opencv2/core.hpp>
+
 #include "topocut/core/occupancy_grid.h"
 
 namespace topocut {
@@ -12,13 +14,56 @@ struct MapLoadOptions {
   double resolution = 0.05;
   // Plain images: cells brighter than free_min are free, darker than occupied_max occupied, the
   // rest unknown (DESIGN.md: 0 occupied, 255 free, anything else unknown unless thresholds say so).
+  // free_min = 250 is Bormann et al.'s "> 250 is free" rule for their maps.
   int free_min = 250;
   int occupied_max = 50;
 };
+
+// How a ROS map_server image is interpreted (the YAML's `mode`).
+enum class RosMapMode {
+  kTrinary,  // occupied / free / unknown by the two thresholds
+  kScale,    // ROS keeps the middle band as a probability; in a three-state grid it is unknown
+  kRaw,      // the pixel value is the occupancy in percent (0..100), anything else unknown
+};
+
+// The fields of a ROS map_server YAML file.
+struct RosMapMetadata {
+  std::string image;             // as written in the YAML (relative to the YAML's folder unless absolute)
+  double resolution = 0.0;       // metres per cell
+  Point2 origin;                 // world position of the lower-left corner of the lower-left cell
+  double yaw = 0.0;              // radians; read but ignored, as by most of ROS
+  bool negate = false;           // white is occupied, black free
+  double occupied_thresh = 0.65; // occupancy probability above which a cell is occupied
+  double free_thresh = 0.196;    // occupancy probability below which a cell is free
+  RosMapMode mode = RosMapMode::kTrinary;
+};
+
+// Parses ROS map_server YAML text. `image`, `resolution` and `origin` are required; `negate`,
+// `occupied_thresh`, `free_thresh` and `mode` default to ROS map_saver's values (0, 0.65, 0.196,
+// trinary). Throws Error naming source_name and the field on a missing or invalid field.
+RosMapMetadata parse_ros_map_yaml(const std::string& yaml_text, const std::string& source_name);
+
+// Decodes image bytes (any format OpenCV reads) into one grey channel (CV_8UC1, the mean of the
+// colour channels as ROS does; 16-bit scaled to 8 bits) and a transparency mask (CV_8UC1, 255 where
+// the pixel is transparent, alpha < 128). Throws Error naming source_name if it is not an image.
+void decode_map_image(const std::string& bytes, const std::string& source_name, cv::Mat& grey,
+                      cv::Mat& transparent);
+
+// Three-state cells from a grey image and its transparency mask with ROS map_server semantics:
+// p = (255 - v) / 255 (p = v / 255 when negate; raw mode: p = v / 100 for v <= 100); occupied if
+// p > occupied_thresh, free if p < free_thresh, otherwise unknown. Transparent pixels are unknown.
+cv::Mat ros_cells(const cv::Mat& grey, const cv::Mat& transparent, const RosMapMetadata& metadata);
+
+// Three-state cells from a plain grey image with options.free_min / occupied_max; transparent
+// pixels are unknown.
+cv::Mat plain_image_cells(const cv::Mat& grey, const cv::Mat& transparent, const MapLoadOptions& options);
 
 // Loads a map: a ROS map_server YAML (image, resolution, origin, negate, occupied_thresh,
 // free_thresh, mode trinary/scale/raw, with ROS semantics) or any image OpenCV reads (grey, RGB,
 // RGBA, grey+alpha). Throws Error naming the file and the problem on any bad input.
 OccupancyGrid load_map(const std::string& path, const MapLoadOptions& options = {});
+
+// True if path names a YAML file by its extension (.yaml or .yml).
+bool is_yaml_path(const std::string& path);
 
 }  // namespace topocut

@@ -1,0 +1,240 @@
+#include "topocut/io/map_loader.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <sstream>
+#include <vector>
+
+#include <opencv2/imgcodecs.hpp>
+#include <yaml-cpp/yaml.h>
+
+#include "topocut/core/error.h"
+#include "topocut/io/atomic_file.h"
+
+namespace topocut {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string quoted(const std::string& s) { return "'" + s + "'"; }
+
+std::string lower(std::string s) {
+  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return s;
+}
+
+// Reads a required or optional finite number; the error names the field and the file.
+double number_field(const YAML::Node& root, const char* key, const std::string& source, std::optional<double> fallback) {
+  const YAML::Node node = root[key];
+  if (!node) {
+    if (fallback) return *fallback;
+    throw Error("map YAML " + quoted(source) + " has no '" + key + "' field");
+  }
+  double value = 0.0;
+  try {
+    value = node.as<double>();
+  } catch (const YAML::Exception&) {
+    throw Error("map YAML " + quoted(source) + ": '" + key + "' must be a number");
+  }
+  if (!std::isfinite(value)) throw Error("map YAML " + quoted(source) + ": '" + key + "' must be a finite number");
+  return value;
+}
+
+}  // namespace
+
+bool is_yaml_path(const std::string& path) {
+  const std::string extension = lower(fs::path(path).extension().string());
+  return extension == ".yaml" || extension == ".yml";
+}
+
+RosMapMetadata parse_ros_map_yaml(const std::string& yaml_text, const std::string& source) {
+  YAML::Node root;
+  try {
+    root = YAML::Load(yaml_text);
+  } catch (const YAML::Exception& e) {
+    throw Error("map YAML " + quoted(source) + " is not valid YAML (line " + std::to_string(e.mark.line + 1) + ")");
+  }
+  if (!root.IsMap()) throw Error("map YAML " + quoted(source) + " is not a map_server YAML (expected key: value fields)");
+
+  RosMapMetadata m;
+  const YAML::Node image = root["image"];
+  if (!image) throw Error("map YAML " + quoted(source) + " has no 'image' field");
+  if (!image.IsScalar() || image.as<std::string>().empty())
+    throw Error("map YAML " + quoted(source) + ": 'image' must be a file name");
+  m.image = image.as<std::string>();
+
+  m.resolution = number_field(root, "resolution", source, std::nullopt);
+  if (m.resolution <= 0.0) throw Error("map YAML " + quoted(source) + ": 'resolution' must be positive");
+
+  const YAML::Node origin = root["origin"];
+  if (!origin) throw Error("map YAML " + quoted(source) + " has no 'origin' field");
+  if (!origin.IsSequence() || (origin.size() != 3 && origin.size() != 2))
+    throw Error("map YAML " + quoted(source) + ": 'origin' must be [x, y, yaw]");
+  double xyz[3] = {0.0, 0.0, 0.0};
+  for (std::size_t i = 0; i < origin.size(); ++i) {
+    try {
+      xyz[i] = origin[i].as<double>();
+    } catch (const YAML::Exception&) {
+      throw Error("map YAML " + quoted(source) + ": 'origin' must be three numbers [x, y, yaw]");
+    }
+    if (!std::isfinite(xyz[i])) throw Error("map YAML " + quoted(source) + ": 'origin' must be finite");
+  }
+  m.origin = {xyz[0], xyz[1]};
+  m.yaw = xyz[2];
+
+  if (const YAML::Node negate = root["negate"]) {
+    bool ok = false;
+    try {
+      const int value = negate.as<int>();
+      if (value == 0 || value == 1) {
+        m.negate = value == 1;
+        ok = true;
+      }
+    } catch (const YAML::Exception&) {
+      try {
+        m.negate = negate.as<bool>();
+        ok = true;
+      } catch (const YAML::Exception&) {
+      }
+    }
+    if (!ok) throw Error("map YAML " + quoted(source) + ": 'negate' must be 0 or 1");
+  }
+
+  m.occupied_thresh = number_field(root, "occupied_thresh", source, 0.65);
+  m.free_thresh = number_field(root, "free_thresh", source, 0.196);
+  if (m.occupied_thresh < 0.0 || m.occupied_thresh > 1.0)
+    throw Error("map YAML " + quoted(source) + ": 'occupied_thresh' must lie in [0, 1]");
+  if (m.free_thresh < 0.0 || m.free_thresh > 1.0)
+    throw Error("map YAML " + quoted(source) + ": 'free_thresh' must lie in [0, 1]");
+  if (m.free_thresh > m.occupied_thresh)
+    throw Error("map YAML " + quoted(source) + ": 'free_thresh' must not exceed 'occupied_thresh'");
+
+  if (const YAML::Node mode = root["mode"]) {
+    std::string text;
+    try {
+      text = mode.as<std::string>();
+    } catch (const YAML::Exception&) {
+    }
+    if (text == "trinary") {
+      m.mode = RosMapMode::kTrinary;
+    } else if (text == "scale") {
+      m.mode = RosMapMode::kScale;
+    } else if (text == "raw") {
+      m.mode = RosMapMode::kRaw;
+    } else {
+      throw Error("map YAML " + quoted(source) + ": 'mode' must be trinary, scale or raw, got '" + text + "'");
+    }
+  }
+  return m;
+}
+
+void decode_map_image(const std::string& bytes, const std::string& source, cv::Mat& grey, cv::Mat& transparent) {
+  if (bytes.empty()) throw Error("map image " + quoted(source) + " is empty (0 bytes)");
+  cv::Mat image;
+  try {
+    const std::vector<unsigned char> buffer(bytes.begin(), bytes.end());
+    image = cv::imdecode(buffer, cv::IMREAD_UNCHANGED);
+  } catch (const cv::Exception&) {
+    image.release();
+  }
+  if (image.empty() || image.rows == 0 || image.cols == 0)
+    throw Error("cannot read " + quoted(source) + " as an image (not a format OpenCV decodes, or corrupt)");
+
+  // Work in floats on the 0..255 scale so the channel mean is exact, as in map_server.
+  double scale = 1.0;
+  switch (image.depth()) {
+    case CV_8U: scale = 1.0; break;
+    case CV_16U: scale = 255.0 / 65535.0; break;
+    default:
+      throw Error("map image " + quoted(source) + " has an unsupported pixel depth (only 8- and 16-bit integers)");
+  }
+  std::vector<cv::Mat> channels;
+  cv::split(image, channels);
+  const int n = image.channels();
+  const bool has_alpha = n == 2 || n == 4;
+  const int colour_channels = has_alpha ? n - 1 : n;
+  if (colour_channels < 1 || colour_channels > 3)
+    throw Error("map image " + quoted(source) + " has " + std::to_string(n) + " channels; expected grey, grey+alpha, RGB or RGBA");
+  grey = cv::Mat::zeros(image.size(), CV_32FC1);
+  for (int c = 0; c < colour_channels; ++c) {
+    cv::Mat f;
+    channels[c].convertTo(f, CV_32F, scale / colour_channels);
+    grey += f;
+  }
+  if (has_alpha) {
+    const double half = image.depth() == CV_8U ? 128.0 : 32768.0;
+    transparent = channels.back() < half;
+  } else {
+    transparent = cv::Mat::zeros(image.size(), CV_8UC1);
+  }
+}
+
+cv::Mat ros_cells(const cv::Mat& grey, const cv::Mat& transparent, const RosMapMetadata& m) {
+  CV_Assert(grey.type() == CV_32FC1 && transparent.type() == CV_8UC1 && grey.size() == transparent.size());
+  cv::Mat cells(grey.size(), CV_8UC1, cv::Scalar(kUnknown));
+  for (int r = 0; r < grey.rows; ++r) {
+    const float* g = grey.ptr<float>(r);
+    const unsigned char* t = transparent.ptr<unsigned char>(r);
+    unsigned char* out = cells.ptr<unsigned char>(r);
+    for (int c = 0; c < grey.cols; ++c) {
+      if (t[c]) continue;
+      const double v = m.negate ? 255.0 - g[c] : static_cast<double>(g[c]);
+      double p = 0.0;
+      if (m.mode == RosMapMode::kRaw) {
+        const double value = std::round(v);
+        if (value > 100.0) continue;  // not an occupancy percentage (255 is ROS's unknown)
+        p = value / 100.0;
+      } else {
+        p = (255.0 - v) / 255.0;
+      }
+      if (p > m.occupied_thresh) {
+        out[c] = kOccupied;
+      } else if (p < m.free_thresh) {
+        out[c] = kFree;
+      }
+    }
+  }
+  return cells;
+}
+
+cv::Mat plain_image_cells(const cv::Mat& grey, const cv::Mat& transparent, const MapLoadOptions& options) {
+  CV_Assert(grey.type() == CV_32FC1 && transparent.type() == CV_8UC1 && grey.size() == transparent.size());
+  cv::Mat cells(grey.size(), CV_8UC1, cv::Scalar(kUnknown));
+  cells.setTo(kFree, grey > options.free_min);
+  cells.setTo(kOccupied, grey < options.occupied_max);
+  cells.setTo(kUnknown, transparent);
+  return cells;
+}
+
+OccupancyGrid load_map(const std::string& path, const MapLoadOptions& options) {
+  if (path.empty()) throw Error("no map file given");
+  if (!fs::exists(path)) throw Error("map file " + quoted(path) + " does not exist");
+  OccupancyGrid grid;
+  cv::Mat grey, transparent;
+  if (is_yaml_path(path)) {
+    const RosMapMetadata m = parse_ros_map_yaml(read_file(path), path);
+    fs::path image = m.image;
+    if (image.is_relative()) image = fs::path(path).parent_path() / image;
+    if (!fs::exists(image))
+      throw Error("map YAML " + quoted(path) + " names image " + quoted(image.string()) + ", which does not exist");
+    decode_map_image(read_file(image.string()), image.string(), grey, transparent);
+    grid.cells = ros_cells(grey, transparent, m);
+    grid.resolution = m.resolution;
+    grid.origin = m.origin;
+  } else {
+    if (!std::isfinite(options.resolution) || options.resolution <= 0.0)
+      throw Error("the map resolution must be a positive number of metres per cell");
+    if (options.free_min < options.occupied_max)
+      throw Error("the free threshold must not be below the occupied threshold");
+    decode_map_image(read_file(path), path, grey, transparent);
+    grid.cells = plain_image_cells(grey, transparent, options);
+    grid.resolution = options.resolution;
+    grid.origin = {0.0, 0.0};
+  }
+  validate(grid);
+  return grid;
+}
+
+}  // namespace topocut
