@@ -32,7 +32,8 @@ std::string format(const char* pattern, double a, double b = 0.0, double c = 0.0
   return buffer;
 }
 
-// Pads every column of a Markdown table to its widest cell so it also reads well in a terminal.
+}  // namespace
+
 std::string markdown_table(const std::vector<std::vector<std::string>>& rows) {
   std::vector<std::size_t> widths;
   const auto display_width = [](const std::string& s) {
@@ -61,6 +62,8 @@ std::string markdown_table(const std::vector<std::vector<std::string>>& rows) {
   }
   return out.str();
 }
+
+namespace {
 
 std::string csv_field(const std::string& text) {
   if (text.find_first_of(",\"\n\r") == std::string::npos) return text;

@@ -289,5 +289,12 @@ TEST(DatasetReport, SummaryOfAVariantThatWasNotRunIsADash) {
   EXPECT_NE(summary.find("| -"), std::string::npos) << summary;
 }
 
+TEST(DatasetReport, MarkdownTablePadsColumnsByCharacters) {
+  EXPECT_EQ(markdown_table({{"a", "bb"}, {"1 ± 2", "x"}}),
+            "| a     | bb  |\n"
+            "|-------|-----|\n"
+            "| 1 ± 2 | x   |\n");
+}
+
 }  // namespace
 }  // namespace topocut

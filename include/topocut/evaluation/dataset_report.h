@@ -39,6 +39,10 @@ std::string format_results_table(const std::vector<ImageResult>& results);
 // variant with failures, if any.
 std::string format_summary(const std::vector<ImageResult>& results, const std::string& method);
 
+// A Markdown table (first row = header) with every column padded to its widest cell, so that it
+// also reads well in a terminal; "±" and other UTF-8 characters count as one column.
+std::string markdown_table(const std::vector<std::vector<std::string>>& rows);
+
 // CSV with exactly the columns map,variant,rooms,gt_rooms,recall,precision,time_ms (recall and
 // precision as fractions). A failed image keeps its map and variant and leaves the rest empty.
 std::string results_csv(const std::vector<ImageResult>& results);
