@@ -1,0 +1,102 @@
+#include "topocut/map/rasterize.h"
+
+#include <gtest/gtest.h>
+
+#include "topocut/core/error.h"
+
+namespace topocut {
+namespace {
+
+TEST(Rasterize, SharedCutThroughCellCentresIsClaimedOnce) {
+  // A 5 x 3 block of cells (grid x 0..4, y 0..2) split by the line x = 2 through cell centres.
+  const PolygonWithHoles left{{{-0.5, -0.5}, {2, -0.5}, {2, 2.5}, {-0.5, 2.5}}, {}};
+  const PolygonWithHoles right{{{2, -0.5}, {4.5, -0.5}, {4.5, 2.5}, {2, 2.5}}, {}};
+  const cv::Mat labels = rasterize_polygons({left, right}, cv::Size(5, 3));
+  EXPECT_EQ(cv::countNonZero(labels == 1), 6);  // columns 0, 1
+  EXPECT_EQ(cv::countNonZero(labels == 2), 9);  // columns 2, 3, 4: centres on the cut go right
+  // The order of the pieces does not change who owns the cut cells.
+  const cv::Mat swapped = rasterize_polygons({right, left}, cv::Size(5, 3));
+  EXPECT_EQ(cv::countNonZero(swapped == 1), 9);
+}
+
+TEST(Rasterize, DiagonalCutSplitsWithoutGapsOrOverlaps) {
+  // Square cells 0..5, cut from (-0.5, -0.5) to (5.5, 5.5): centres on the diagonal lie on the cut.
+  const PolygonWithHoles below{{{-0.5, -0.5}, {5.5, -0.5}, {5.5, 5.5}}, {}};
+  const PolygonWithHoles above{{{-0.5, -0.5}, {5.5, 5.5}, {-0.5, 5.5}}, {}};
+  const cv::Mat labels = rasterize_polygons({below, above}, cv::Size(6, 6));
+  EXPECT_EQ(cv::countNonZero(labels == 0), 0);
+  // 15 cells strictly below the diagonal, 15 strictly above, 6 on it go to the piece on the right.
+  EXPECT_EQ(cv::countNonZero(labels == 1), 21);
+  EXPECT_EQ(cv::countNonZero(labels == 2), 15);
+}
+
+TEST(Rasterize, HolesAndKeyholeRingsStayEmpty) {
+  // 7x7 cells with a 3x3 hole in the middle (cells 2..4).
+  const Ring outer{{-0.5, -0.5}, {6.5, -0.5}, {6.5, 6.5}, {-0.5, 6.5}};
+  const Ring hole{{1.5, 1.5}, {1.5, 4.5}, {4.5, 4.5}, {4.5, 1.5}};
+  const cv::Mat with_hole = rasterize_polygons({{outer, {hole}}}, cv::Size(7, 7));
+  EXPECT_EQ(cv::countNonZero(with_hole), 40);
+  EXPECT_EQ(with_hole.at<int>(3, 3), 0);
+  // The same region as one keyhole ring: out along y = -0.5 ... in through the slit x = 1.5.
+  const Ring keyhole{{-0.5, -0.5}, {1.5, -0.5}, {1.5, 1.5}, {1.5, 4.5}, {4.5, 4.5}, {4.5, 1.5}, {1.5, 1.5},
+                     {1.5, -0.5}, {6.5, -0.5}, {6.5, 6.5}, {-0.5, 6.5}};
+  const cv::Mat slit = rasterize_polygons({{keyhole, {}}}, cv::Size(7, 7));
+  EXPECT_EQ(cv::countNonZero(slit != with_hole), 0);
+}
+
+TEST(Rasterize, PolygonsOutsideTheImageAreClipped) {
+  const PolygonWithHoles big{{{-10, -10}, {10, -10}, {10, 10}, {-10, 10}}, {}};
+  EXPECT_EQ(cv::countNonZero(rasterize_polygons({big}, cv::Size(4, 3))), 12);
+  EXPECT_THROW(rasterize_polygons({big}, cv::Size(0, 3)), Error);
+  const PolygonWithHoles bad{{{0, 0}, {std::nan(""), 1}, {1, 1}}, {}};
+  EXPECT_THROW(rasterize_polygons({bad}, cv::Size(4, 3)), Error);
+}
+
+TEST(FillLabels, EveryFreeCellLabelledNoObstacleLabelled) {
+  // Two rooms separated by a wall with a door; label only a seed in each, let the fill do the rest.
+  cv::Mat free(10, 21, CV_8UC1, cv::Scalar(255));
+  free.col(10).setTo(0);
+  free.at<unsigned char>(5, 10) = 255;  // door
+  cv::Mat labels = cv::Mat::zeros(free.size(), CV_32SC1);
+  labels.at<int>(0, 0) = 1;
+  labels.at<int>(0, 20) = 2;
+  labels.at<int>(3, 10) = 7;  // a label on an obstacle cell must go
+  fill_free_space_labels(labels, free);
+  EXPECT_EQ(cv::countNonZero((labels > 0) != (free > 0)), 0);
+  EXPECT_EQ(cv::countNonZero(labels == 7), 0);
+  EXPECT_EQ(labels.at<int>(9, 9), 1);
+  EXPECT_EQ(labels.at<int>(9, 11), 2);
+}
+
+TEST(FillLabels, LabelsFollowFreeSpaceNotStraightLines) {
+  // A pocket next to room 1 but reachable only from room 2 (around the end of a wall).
+  cv::Mat free(12, 12, CV_8UC1, cv::Scalar(255));
+  free.col(5).setTo(0);
+  free.row(6).setTo(0);
+  free(cv::Rect(6, 7, 6, 5)).setTo(255);
+  free.at<unsigned char>(6, 11) = 255;  // pocket (rows 7.., cols 6..) joins room 2 (top right) at column 11
+  cv::Mat labels = cv::Mat::zeros(free.size(), CV_32SC1);
+  labels(cv::Rect(0, 0, 5, 12)).setTo(1);  // room 1: left, all rows
+  labels.at<int>(0, 11) = 2;               // room 2 seed: top right
+  labels.setTo(0, free == 0);
+  fill_free_space_labels(labels, free);
+  EXPECT_EQ(labels.at<int>(9, 6), 2);  // one wall away from room 1, but its free-space path leads to 2
+}
+
+TEST(FillLabels, CutOffSpecksTakeTheNearestLabel) {
+  cv::Mat free = cv::Mat::zeros(5, 12, CV_8UC1);
+  free(cv::Rect(0, 0, 3, 5)).setTo(255);
+  free(cv::Rect(9, 0, 3, 5)).setTo(255);
+  free.at<unsigned char>(2, 4) = 255;  // speck near room 1
+  free.at<unsigned char>(2, 7) = 255;  // speck near room 2
+  cv::Mat labels = cv::Mat::zeros(free.size(), CV_32SC1);
+  labels(cv::Rect(0, 0, 3, 5)).setTo(1);
+  labels(cv::Rect(9, 0, 3, 5)).setTo(2);
+  fill_free_space_labels(labels, free);
+  EXPECT_EQ(labels.at<int>(2, 4), 1);
+  EXPECT_EQ(labels.at<int>(2, 7), 2);
+  EXPECT_EQ(labels.at<int>(2, 5), 0);
+}
+
+}  // namespace
+}  // namespace topocut
