@@ -1,5 +1,6 @@
 #include "topocut/io/map_saver.h"
 
+#include <charconv>
 #include <filesystem>
 #include <sstream>
 
@@ -12,6 +13,15 @@
 namespace topocut {
 
 namespace fs = std::filesystem;
+
+namespace {
+// Shortest text that reads back as the same double ("0.05", not "0.050000000000000003").
+std::string shortest(double v) {
+  char buffer[64];
+  const auto result = std::to_chars(buffer, buffer + sizeof buffer, v);
+  return std::string(buffer, result.ptr);
+}
+}  // namespace
 
 cv::Mat ros_map_image(const OccupancyGrid& grid) {
   validate(grid);
@@ -33,16 +43,15 @@ void save_map(const std::string& yaml_path, const OccupancyGrid& grid, const Map
   const cv::Mat pixels = ros_map_image(grid);
 
   YAML::Emitter out;
-  out.SetDoublePrecision(17);
   out << YAML::BeginMap;
   out << YAML::Key << "image" << YAML::Value << image.filename().string();
   out << YAML::Key << "mode" << YAML::Value << "trinary";
-  out << YAML::Key << "resolution" << YAML::Value << grid.resolution;
-  out << YAML::Key << "origin" << YAML::Value << YAML::Flow << YAML::BeginSeq << grid.origin.x << grid.origin.y << 0.0
-      << YAML::EndSeq;
+  out << YAML::Key << "resolution" << YAML::Value << shortest(grid.resolution);
+  out << YAML::Key << "origin" << YAML::Value << YAML::Flow << YAML::BeginSeq << shortest(grid.origin.x) << shortest(grid.origin.y)
+      << "0.0" << YAML::EndSeq;
   out << YAML::Key << "negate" << YAML::Value << 0;
-  out << YAML::Key << "occupied_thresh" << YAML::Value << 0.65;
-  out << YAML::Key << "free_thresh" << YAML::Value << 0.196;
+  out << YAML::Key << "occupied_thresh" << YAML::Value << "0.65";
+  out << YAML::Key << "free_thresh" << YAML::Value << "0.196";
   out << YAML::EndMap;
   if (!out.good()) throw Error("cannot save map '" + yaml_path + "': " + out.GetLastError());
 

@@ -1,0 +1,34 @@
+#pragma once
+// Pieces -> rooms: rasterize the pieces of the free space, give every free cell a room, number the
+// rooms, and turn the cuts between pieces into passages of the room graph.
+#include <vector>
+
+#include "topocut/core/geometry.h"
+#include "topocut/core/occupancy_grid.h"
+#include "topocut/core/segmentation.h"
+
+namespace topocut {
+
+// Pieces of free space and the cuts that separate them, in grid coordinates (x = column,
+// y = height-1-row, one unit per cell).
+struct PieceSet {
+  std::vector<PolygonWithHoles> pieces;
+  std::vector<Segment2> cuts;  // a cut between two pieces becomes a passage; others are ignored
+
+  // Appends other's pieces and cuts (pieces from several components, or reused ones).
+  void append(const PieceSet& other);
+};
+
+// Builds the segmentation of grid from pieces: each piece labels the cells whose centres it
+// contains; every other free cell (grid.cells == kFree) takes the label of the nearest piece along
+// free space (fill_free_space_labels); non-free cells are 0. Rooms are the pieces that label at
+// least one cell, numbered 1..N by their first cell in raster order, with the piece as polygon
+// (world metres) and area and centroid of their labelled cells. Each cut whose two sides lie in two
+// different rooms becomes a passage (end points in metres, width = its length). Passages are
+// sorted by room ids, then by cut.
+Segmentation rooms_from_pieces(const OccupancyGrid& grid, const PieceSet& pieces);
+
+// Index of the piece containing point p (grid coordinates, even-odd over all rings), or -1.
+int piece_containing(const std::vector<PolygonWithHoles>& pieces, const Point2& p);
+
+}  // namespace topocut

@@ -1,0 +1,74 @@
+#include "topocut/segmentation/rooms_from_pieces.h"
+
+#include <gtest/gtest.h>
+
+namespace topocut {
+namespace {
+
+// A 10 x 4 free block (cells 0..9 x 0..3, grid y = 3 - row) at 0.5 m, origin (10, 20), cut at
+// grid x = 3.5 into a 4-column and a 6-column piece.
+struct Split {
+  OccupancyGrid grid{cv::Mat(4, 10, CV_8UC1, cv::Scalar(kFree)), 0.5, {10.0, 20.0}};
+  PieceSet set;
+  Split() {
+    set.pieces.push_back({{{3.5, -0.5}, {9.5, -0.5}, {9.5, 3.5}, {3.5, 3.5}}, {}});  // right, listed first
+    set.pieces.push_back({{{-0.5, -0.5}, {3.5, -0.5}, {3.5, 3.5}, {-0.5, 3.5}}, {}});
+    set.cuts.push_back({{3.5, -0.5}, {3.5, 3.5}});
+  }
+};
+
+TEST(RoomsFromPieces, RoomsFollowRasterOrderAndCutsBecomePassages) {
+  const Split t;
+  const Segmentation s = rooms_from_pieces(t.grid, t.set);
+  ASSERT_EQ(s.rooms.size(), 2u);
+  EXPECT_EQ(s.labels.at<int>(0, 0), 1);  // the left piece owns the first cell
+  EXPECT_EQ(s.labels.at<int>(0, 9), 2);
+  EXPECT_EQ(cv::countNonZero(s.labels == 1), 16);
+  EXPECT_DOUBLE_EQ(s.rooms[0].area, 16 * 0.25);
+  EXPECT_DOUBLE_EQ(s.rooms[1].area, 24 * 0.25);
+  // Room 1 covers columns 0..3: centroid x = 10 + 2 * 0.5, y = 20 + 2 * 0.5.
+  EXPECT_DOUBLE_EQ(s.rooms[0].centroid.x, 11.0);
+  EXPECT_DOUBLE_EQ(s.rooms[0].centroid.y, 21.0);
+  // Its polygon in metres: grid (-0.5, -0.5) is the world corner (10, 20).
+  EXPECT_DOUBLE_EQ(area(s.rooms[0].polygon), 4.0);
+  EXPECT_EQ(s.rooms[0].polygon.outer[0], (Point2{10.0, 20.0}));
+  ASSERT_EQ(s.passages.size(), 1u);
+  EXPECT_EQ(s.passages[0].room_a, 1);
+  EXPECT_EQ(s.passages[0].room_b, 2);
+  EXPECT_DOUBLE_EQ(s.passages[0].width, 2.0);
+  EXPECT_EQ(s.passages[0].cut.a, (Point2{12.0, 20.0}));
+  EXPECT_EQ(s.passages[0].cut.b, (Point2{12.0, 22.0}));
+}
+
+TEST(RoomsFromPieces, UncoveredFreeCellsJoinTheNearestPieceAndObstaclesStayZero) {
+  Split t;
+  t.grid.cells.at<unsigned char>(1, 1) = kOccupied;
+  t.set.pieces[1] = {{{-0.5, -0.5}, {2.5, -0.5}, {2.5, 3.5}, {-0.5, 3.5}}, {}};  // leaves column 3 uncovered
+  const Segmentation s = rooms_from_pieces(t.grid, t.set);
+  EXPECT_EQ(s.labels.at<int>(1, 1), 0);
+  EXPECT_EQ(cv::countNonZero(s.labels == 0), 1);
+  // Column 3 is next to both pieces; breadth-first search from raster-ordered sources gives it
+  // to the piece whose cell comes first in each row: the left one (column 2 precedes column 4).
+  EXPECT_EQ(s.labels.at<int>(0, 3), 1);
+  // The cut no longer has the left piece on its left side: no passage.
+  EXPECT_TRUE(s.passages.empty());
+}
+
+TEST(RoomsFromPieces, KeyholeCutsAndEmptyPiecesAreNotPassages) {
+  Split t;
+  t.set.cuts.push_back({{0.0, 0.0}, {1.0, 1.0}});                           // inside one piece
+  t.set.pieces.push_back({{{20, 20}, {21, 20}, {21, 21}}, {}});             // labels no cell
+  const Segmentation s = rooms_from_pieces(t.grid, t.set);
+  EXPECT_EQ(s.rooms.size(), 2u);
+  EXPECT_EQ(s.passages.size(), 1u);
+}
+
+TEST(RoomsFromPieces, PieceContaining) {
+  const Split t;
+  EXPECT_EQ(piece_containing(t.set.pieces, {1.0, 1.0}), 1);
+  EXPECT_EQ(piece_containing(t.set.pieces, {5.0, 1.0}), 0);
+  EXPECT_EQ(piece_containing(t.set.pieces, {50.0, 1.0}), -1);
+}
+
+}  // namespace
+}  // namespace topocut

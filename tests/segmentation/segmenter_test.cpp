@@ -1,0 +1,172 @@
+#include "topocut/segmentation/segmenter.h"
+
+#include <filesystem>
+#include <string>
+
+#include <gtest/gtest.h>
+#include <opencv2/imgproc.hpp>
+
+#include <opencv2/imgcodecs.hpp>
+
+#include "topocut/core/error.h"
+
+namespace topocut {
+namespace {
+
+// The segmentation module does not depend on io, so maps are read here with OpenCV directly:
+// grey > 250 free, < 50 occupied, otherwise unknown (the bundled maps use 254 / 0 / 205).
+OccupancyGrid read_map(const std::string& path) {
+  const cv::Mat grey = cv::imread(path, cv::IMREAD_GRAYSCALE);
+  if (grey.empty()) throw Error("test map missing: " + path);
+  OccupancyGrid grid{cv::Mat(grey.size(), CV_8UC1, cv::Scalar(kUnknown)), 0.05, {0.0, 0.0}};
+  grid.cells.setTo(kFree, grey > 250);
+  grid.cells.setTo(kOccupied, grey < 50);
+  return grid;
+}
+
+std::string bundled(const std::string& name) { return std::string(TOPOCUT_SOURCE_DIR) + "/maps/" + name + ".png"; }
+
+// Invariants every segmentation must satisfy, whatever the decomposition did.
+void expect_consistent(const OccupancyGrid& grid, const Segmentation& s) {
+  ASSERT_EQ(s.labels.type(), CV_32SC1);
+  ASSERT_EQ(s.labels.size(), grid.cells.size());
+  EXPECT_EQ(s.resolution, grid.resolution);
+  EXPECT_EQ(s.origin, grid.origin);
+  // Every free cell has a room; nothing else has one.
+  EXPECT_EQ(cv::countNonZero((s.labels > 0) != (grid.cells == kFree)), 0);
+  double low = 0, high = 0;
+  cv::minMaxLoc(s.labels, &low, &high);
+  EXPECT_EQ(low, 0.0);
+  ASSERT_EQ(static_cast<std::size_t>(high), s.rooms.size());
+  double total = 0.0;
+  for (std::size_t i = 0; i < s.rooms.size(); ++i) {
+    const Room& room = s.rooms[i];
+    EXPECT_EQ(room.id, static_cast<int>(i) + 1);
+    const int cells = cv::countNonZero(s.labels == room.id);
+    EXPECT_GT(cells, 0);
+    EXPECT_NEAR(room.area, cells * grid.resolution * grid.resolution, 1e-9);
+    EXPECT_GE(room.polygon.outer.size(), 3u);
+    total += room.area;
+  }
+  EXPECT_NEAR(total, cv::countNonZero(grid.cells == kFree) * grid.resolution * grid.resolution, 1e-6);
+  // Ids follow the raster order of each room's first cell.
+  int next = 1;
+  for (int r = 0; r < s.labels.rows; ++r)
+    for (int c = 0; c < s.labels.cols; ++c) {
+      const int l = s.labels.at<int>(r, c);
+      if (l >= next) {
+        EXPECT_EQ(l, next);
+        next = l + 1;
+      }
+    }
+  for (const Passage& p : s.passages) {
+    EXPECT_LT(p.room_a, p.room_b);
+    EXPECT_GE(p.room_a, 1);
+    EXPECT_LE(p.room_b, static_cast<int>(s.rooms.size()));
+    EXPECT_NEAR(p.width, distance(p.cut.a, p.cut.b), 1e-9);
+  }
+}
+
+SegmentOptions trivial() {
+  SegmentOptions options;
+  options.decompose = false;
+  return options;
+}
+
+TEST(Segment, TrivialModeOneRoomPerComponentNumberedByFirstCell) {
+  OccupancyGrid grid{cv::Mat(60, 80, CV_8UC1, cv::Scalar(kOccupied)), 0.1, {-2.0, 1.0}};
+  grid.cells(cv::Rect(40, 5, 30, 20)).setTo(kFree);   // first cell (40, 5): room 1
+  grid.cells(cv::Rect(5, 10, 20, 40)).setTo(kFree);   // first cell (5, 10): room 2
+  grid.cells(cv::Rect(45, 40, 10, 10)).setTo(kFree);  // 1 m²: room 3
+  grid.cells(cv::Rect(30, 20, 2, 2)).setTo(kFree);    // 0.04 m² speck: joins the nearest room
+  grid.cells(cv::Rect(60, 45, 5, 5)).setTo(kUnknown);
+  const Segmentation s = segment(grid, trivial());
+  expect_consistent(grid, s);
+  ASSERT_EQ(s.rooms.size(), 3u);
+  EXPECT_EQ(s.labels.at<int>(5, 40), 1);
+  EXPECT_EQ(s.labels.at<int>(10, 5), 2);
+  EXPECT_EQ(s.labels.at<int>(40, 45), 3);
+  EXPECT_EQ(s.labels.at<int>(20, 30), 2);  // the speck is 6 cells from room 2, 9 from room 1
+  EXPECT_EQ(s.labels.at<int>(47, 62), 0);  // unknown
+  EXPECT_TRUE(s.passages.empty());
+  // Room 3: cells 45..54 x 40..49; centroid at the middle of the block in world metres.
+  EXPECT_NEAR(s.rooms[2].area, 1.0, 1e-9);
+  EXPECT_NEAR(s.rooms[2].centroid.x, -2.0 + 50 * 0.1, 1e-9);
+  EXPECT_NEAR(s.rooms[2].centroid.y, 1.0 + (60 - 45) * 0.1, 1e-9);
+  // Its polygon is the block's outline in metres: x -2 + 4.5 .. -2 + 5.5, y 1 + 1.0 .. 1 + 2.0.
+  EXPECT_NEAR(area(s.rooms[2].polygon), 1.0, 1e-9);
+  for (const Point2& v : s.rooms[2].polygon.outer) {
+    EXPECT_TRUE(std::abs(v.x - 2.5) < 1e-9 || std::abs(v.x - 3.5) < 1e-9) << v.x;
+    EXPECT_TRUE(std::abs(v.y - 2.0) < 1e-9 || std::abs(v.y - 3.0) < 1e-9) << v.y;
+  }
+}
+
+TEST(Segment, DefaultModeKeepsTheInvariants) {
+  const OccupancyGrid grid = read_map(bundled("floorplan"));
+  const Segmentation s = segment(grid);
+  expect_consistent(grid, s);
+  EXPECT_GE(s.rooms.size(), 1u);
+}
+
+TEST(Segment, RobotRadiusShrinksPiecesButStillLabelsEveryFreeCell) {
+  const OccupancyGrid grid = read_map(bundled("furnished"));
+  SegmentOptions options = trivial();
+  options.binarize.robot_radius = 0.5;  // closes the 0.9 m door: the offices come apart
+  const Segmentation s = segment(grid, options);
+  expect_consistent(grid, s);
+  EXPECT_EQ(s.rooms.size(), 2u);
+  EXPECT_EQ(segment(grid, trivial()).rooms.size(), 1u);
+}
+
+TEST(Segment, BundledMapsTrivialModeHasOneRoomPerComponent) {
+  for (const char* name : {"floorplan", "corridor_l", "furnished"}) {
+    SCOPED_TRACE(name);
+    const OccupancyGrid grid = read_map(bundled(name));
+    const Segmentation s = segment(grid, trivial());
+    expect_consistent(grid, s);
+    cv::Mat components;
+    const int count = cv::connectedComponents(grid.cells == kFree, components, 8) - 1;
+    EXPECT_EQ(static_cast<int>(s.rooms.size()), count);
+  }
+}
+
+TEST(Segment, BormannMapTrivialMode) {
+  const std::string path = std::string(TOPOCUT_SHARED_DIR) + "/datasets/bormann/lab_ipa_furnitures.png";
+  if (!std::filesystem::exists(path)) GTEST_SKIP() << "shared Bormann dataset not found at " << path;
+  const OccupancyGrid grid = read_map(path);
+  const Segmentation s = segment(grid, trivial());
+  expect_consistent(grid, s);
+  // Components of at least 100 cells (0.25 m²) once diagonal pinches are broken, counted with OpenCV.
+  cv::Mat labels, stats, centroids;
+  const int n = cv::connectedComponentsWithStats(remove_diagonal_pinches(grid.cells == kFree), labels, stats, centroids, 4);
+  int big = 0;
+  for (int i = 1; i < n; ++i) big += stats.at<int>(i, cv::CC_STAT_AREA) >= 100;
+  EXPECT_EQ(static_cast<int>(s.rooms.size()), big);
+}
+
+TEST(Segment, BadInput) {
+  OccupancyGrid none{cv::Mat(10, 10, CV_8UC1, cv::Scalar(kOccupied)), 0.05, {}};
+  try {
+    segment(none);
+    ADD_FAILURE();
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("no free space"), std::string::npos);
+  }
+  OccupancyGrid grid{cv::Mat(10, 10, CV_8UC1, cv::Scalar(kFree)), 0.05, {}};
+  SegmentOptions options;
+  options.concavity = 0.0;
+  EXPECT_THROW(segment(grid, options), Error);
+  options.concavity = std::nan("");
+  EXPECT_THROW(segment(grid, options), Error);
+  grid.resolution = -1.0;
+  EXPECT_THROW(segment(grid), Error);
+  grid.resolution = 0.05;
+  options = SegmentOptions{};
+  options.binarize.robot_radius = 1.0;  // swallows the whole 0.5 m room
+  grid.cells.row(0).setTo(kOccupied);
+  EXPECT_THROW(segment(grid, options), Error);
+  EXPECT_THROW(segment(OccupancyGrid{}), Error);
+}
+
+}  // namespace
+}  // namespace topocut
