@@ -15,8 +15,26 @@ enum class ConcavityMeasure {
 
 // How the cut sets are chosen (dude-algorithm.md §6).
 enum class CutSelection {
-  kReference,  // the reference's knapsack-like DP and pruning (roughly cubic)
+  kReference,  // the reference's knapsack-like DP and pruning (roughly cubic; capped, see options)
   kGreedy,     // weight-ordered greedy with conflict checks (§6.4), near-linear
+};
+
+// Where candidate cuts come from (dude-algorithm.md §5.2, §6.5).
+enum class CandidateCuts {
+  // Diagonals of the simplified polygon are kept only if they lie inside the real polygon; every
+  // candidate is a true interior diagonal (no repair needed, pieces never overlap).
+  kValidated,
+  // The reference: simplified-polygon diagonals are taken unchecked and selected cuts that cross the
+  // boundary are "repaired" by moving one end point (§6.5). Cuts still invalid after the repair are
+  // dropped, so pieces never overlap, but the reference's lost cuts (§8.5.1) are reproduced.
+  kReference,
+};
+
+// The reference drops "skinny" cuts whose end points are close along the boundary (§6.5).
+enum class SkinnyCutFilter {
+  kReference,  // as the reference: every selected cut but the last one in the list is tested
+  kAll,        // every selected cut is tested
+  kOff,        // no skinny filter
 };
 
 struct DecompositionOptions {
@@ -24,6 +42,17 @@ struct DecompositionOptions {
   int max_rounds = 100;  // cap on decomposition passes, so adversarial input terminates
   ConcavityMeasure concavity = ConcavityMeasure::kStraightLine;
   CutSelection selection = CutSelection::kGreedy;
+  CandidateCuts candidates = CandidateCuts::kValidated;
+  SkinnyCutFilter skinny_cuts = SkinnyCutFilter::kReference;
+  // The reference deletes holes whose size, min(diameter, 2 * width), is below tau (§4.2): the
+  // pieces then cover them. When false such holes stay holes of the pieces (they never get cuts).
+  bool absorb_small_holes = true;
+  // With kReference selection, inputs with more cut sets than this use the greedy selection instead
+  // (the reference DP is roughly cubic in the number of cut sets).
+  int reference_selection_limit = 150;
+  // Final pieces whose outer ring runs along a slit to a hole (a "keyhole" left by a cut that
+  // merged a hole) are returned as outer ring plus hole; false keeps the keyhole ring.
+  bool restore_holes = true;
 };
 
 struct Cut {
@@ -35,6 +64,7 @@ struct PocketMinimum {
   Point2 vertex;
   double concavity = 0.0;
   int pass = 0;
+  bool on_hole = false;  // the vertex belongs to a hole (§4) rather than to the outer boundary (§3)
 };
 
 struct Decomposition {

@@ -1,0 +1,428 @@
+// §5: features, the simplified polygon and candidate diagonals from two constrained Delaunay
+// triangulations; plus the exact "segment strictly inside" test used to validate cuts.
+#include <CGAL/Constrained_Delaunay_triangulation_2.h>
+#include <CGAL/Constrained_triangulation_plus_2.h>
+#include <CGAL/Triangulation_face_base_with_info_2.h>
+#include <CGAL/Triangulation_vertex_base_with_info_2.h>
+#include <CGAL/box_intersection_d.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <deque>
+#include <set>
+#include <unordered_map>
+#include <unordered_set>
+
+#include "decomposition/pass_state.h"
+
+namespace topocut::dude {
+
+namespace {
+
+struct VInfo {
+  int id = -1;  // local point id; -1 for points CGAL creates at constraint crossings
+};
+struct FInfo {
+  int level = -1;  // nesting level; odd = inside the polygon
+};
+using Vb = CGAL::Triangulation_vertex_base_with_info_2<VInfo, K>;
+using Fbi = CGAL::Triangulation_face_base_with_info_2<FInfo, K>;
+using Fb = CGAL::Constrained_triangulation_face_base_2<K, Fbi>;
+using Tds = CGAL::Triangulation_data_structure_2<Vb, Fb>;
+using CDT = CGAL::Constrained_Delaunay_triangulation_2<K, Tds, CGAL::Exact_predicates_tag>;
+using Face = CDT::Face_handle;
+using Vertex = CDT::Vertex_handle;
+
+std::uint64_t pair_key(int a, int b) {
+  if (a > b) std::swap(a, b);
+  return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) | static_cast<std::uint32_t>(b);
+}
+
+// Distinct points of a set of corners: local id per point, the corners of each point.
+struct PointSet {
+  std::vector<int> local;                 // per corner of the poly: local point id or -1
+  std::vector<Pt> points;                 // per local id
+  std::vector<std::vector<int>> corners;  // per local id, ascending
+  std::unordered_map<int, int> by_vid;
+
+  PointSet(const Poly& poly, const std::vector<int>& selected) : local(poly.corners(), -1) {
+    by_vid.reserve(selected.size() * 2);
+    for (int c : selected) {
+      auto [it, inserted] = by_vid.emplace(poly.vid[c], static_cast<int>(points.size()));
+      if (inserted) {
+        points.push_back(poly.pt[c]);
+        corners.emplace_back();
+      }
+      local[c] = it->second;
+      corners[it->second].push_back(c);
+    }
+  }
+};
+
+// Builds a CDT with one vertex per local point; returns the handle of each local id.
+std::vector<Vertex> insert_points(CDT& cdt, const PointSet& set) {
+  std::vector<std::pair<Pt, VInfo>> input;
+  input.reserve(set.points.size());
+  for (std::size_t i = 0; i < set.points.size(); ++i) input.emplace_back(set.points[i], VInfo{static_cast<int>(i)});
+  cdt.insert(input.begin(), input.end());
+  std::vector<Vertex> handle(set.points.size());
+  for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v) {
+    if (v->info().id >= 0) handle[v->info().id] = v;
+  }
+  for (std::size_t i = 0; i < handle.size(); ++i) {
+    if (handle[i] == Vertex()) handle[i] = cdt.insert(set.points[i]);  // coincident point: share the vertex
+  }
+  return handle;
+}
+
+// Nesting levels by flood fill from the infinite face (CGAL's polygon_triangulation example
+// pattern); crossing an edge for which `boundary` is false keeps the level.
+template <class IsBoundary>
+void mark_levels(CDT& cdt, IsBoundary boundary) {
+  for (auto f = cdt.all_faces_begin(); f != cdt.all_faces_end(); ++f) f->info().level = -1;
+  std::deque<std::pair<Face, int>> border{{cdt.infinite_face(), 0}};
+  std::vector<Face> stack;
+  while (!border.empty()) {
+    const auto [start, level] = border.front();
+    border.pop_front();
+    if (start->info().level != -1) continue;
+    start->info().level = level;
+    stack.push_back(start);
+    while (!stack.empty()) {
+      const Face f = stack.back();
+      stack.pop_back();
+      for (int i = 0; i < 3; ++i) {
+        const Face n = f->neighbor(i);
+        if (n->info().level != -1) continue;
+        if (boundary(f, i)) {
+          border.emplace_back(n, level + 1);
+        } else {
+          n->info().level = level;
+          stack.push_back(n);
+        }
+      }
+    }
+  }
+}
+
+bool inside_face(const CDT& cdt, Face f) { return !cdt.is_infinite(f) && f->info().level % 2 == 1; }
+
+}  // namespace
+
+std::vector<char> segments_inside(const Poly& poly, const std::vector<std::pair<int, int>>& segments,
+                                  const std::vector<char>& deleted_rings) {
+  std::vector<char> ok(segments.size(), 1);
+  if (segments.empty()) return ok;
+  for (std::size_t i = 0; i < segments.size(); ++i) {
+    const auto [a, b] = segments[i];
+    if (poly.vid[a] == poly.vid[b] || !in_wedge(poly, a, poly.pt[b]) || !in_wedge(poly, b, poly.pt[a])) ok[i] = 0;
+  }
+  using Box = CGAL::Box_intersection_d::Box_with_info_d<double, 2, int>;
+  std::vector<Box> seg_boxes, edge_boxes;
+  for (std::size_t i = 0; i < segments.size(); ++i) {
+    if (!ok[i]) continue;
+    const auto [a, b] = segments[i];
+    seg_boxes.emplace_back(poly.pt[a].bbox() + poly.pt[b].bbox(), static_cast<int>(i));
+  }
+  for (int c = 0; c < poly.corners(); ++c) {
+    if (deleted_rings[poly.ring[c]]) continue;
+    edge_boxes.emplace_back(poly.pt[c].bbox() + poly.pt[poly.next(c)].bbox(), c);
+  }
+  auto test = [&](const Box& sb, const Box& eb) {
+    const int i = sb.info();
+    if (!ok[i]) return;
+    const auto [a, b] = segments[i];
+    const int c = eb.info();
+    const int d = poly.next(c);
+    const int va = poly.vid[a], vb = poly.vid[b], vc = poly.vid[c], vd = poly.vid[d];
+    const bool c_shared = vc == va || vc == vb;
+    const bool d_shared = vd == va || vd == vb;
+    bool bad;
+    if (c_shared && d_shared) {
+      bad = true;  // the segment is a boundary edge
+    } else if (c_shared || d_shared) {
+      const Pt& s = c_shared ? poly.pt[c] : poly.pt[d];
+      const Pt& other = c_shared ? poly.pt[d] : poly.pt[c];
+      const Pt& far = (c_shared ? vc : vd) == va ? poly.pt[b] : poly.pt[a];
+      bad = CGAL::orientation(s, far, other) == CGAL::COLLINEAR && CGAL::angle(other, s, far) == CGAL::ACUTE;
+    } else {
+      bad = CGAL::do_intersect(K::Segment_2(poly.pt[a], poly.pt[b]), K::Segment_2(poly.pt[c], poly.pt[d]));
+    }
+    if (bad) ok[i] = 0;
+  };
+  CGAL::box_intersection_d(seg_boxes.begin(), seg_boxes.end(), edge_boxes.begin(), edge_boxes.end(), test);
+  return ok;
+}
+
+std::vector<char> non_crossing_prefix(const Poly& poly, const std::vector<std::pair<int, int>>& segments) {
+  std::vector<char> keep(segments.size(), 1);
+  using Box = CGAL::Box_intersection_d::Box_with_info_d<double, 2, int>;
+  std::vector<Box> boxes;
+  for (std::size_t i = 0; i < segments.size(); ++i) {
+    boxes.emplace_back(poly.pt[segments[i].first].bbox() + poly.pt[segments[i].second].bbox(), static_cast<int>(i));
+  }
+  std::vector<std::vector<int>> earlier(segments.size());
+  auto test = [&](const Box& x, const Box& y) {
+    int i = x.info(), j = y.info();
+    if (i > j) std::swap(i, j);
+    const auto [a, b] = segments[i];
+    const auto [c, d] = segments[j];
+    const int va = poly.vid[a], vb = poly.vid[b], vc = poly.vid[c], vd = poly.vid[d];
+    const bool c_shared = vc == va || vc == vb;
+    const bool d_shared = vd == va || vd == vb;
+    bool bad;
+    if (c_shared && d_shared) {
+      bad = true;
+    } else if (c_shared || d_shared) {
+      const Pt& s = c_shared ? poly.pt[c] : poly.pt[d];
+      const Pt& other = c_shared ? poly.pt[d] : poly.pt[c];
+      const Pt& far = (c_shared ? vc : vd) == va ? poly.pt[b] : poly.pt[a];
+      bad = CGAL::orientation(s, far, other) == CGAL::COLLINEAR && CGAL::angle(other, s, far) == CGAL::ACUTE;
+    } else {
+      bad = CGAL::do_intersect(K::Segment_2(poly.pt[a], poly.pt[b]), K::Segment_2(poly.pt[c], poly.pt[d]));
+    }
+    if (bad) earlier[j].push_back(i);
+  };
+  CGAL::box_self_intersection_d(boxes.begin(), boxes.end(), test);
+  for (std::size_t j = 0; j < segments.size(); ++j) {
+    for (int i : earlier[j]) {
+      if (keep[i]) keep[j] = 0;
+    }
+  }
+  return keep;
+}
+
+namespace {
+
+// §5.3 bridge-breaking test: a cut must involve some concavity and must leave its pocket.
+bool bridge_breaking(const PassState& st, int a, int b) {
+  const int pa = st.owner[a], pb = st.owner[b], ha = st.hole_owner[a], hb = st.hole_owner[b];
+  if (pa < 0 && pb < 0 && ha < 0 && hb < 0) return false;
+  if (pa == pb && ha == hb) return false;
+  if (pa >= 0 && pb < 0 && st.on_chain(pa, b)) return false;
+  if (pb >= 0 && pa < 0 && st.on_chain(pb, a)) return false;
+  return true;
+}
+
+// §5.3 hole-span test: a diagonal from a hole feature must not end on one of its simplified edges.
+bool hole_span_ok(const PassState& st, int a, int b) {
+  int f = -1, other = -1;
+  if (st.hole_owner[a] >= 0) {
+    f = a;
+    other = b;
+  } else if (st.hole_owner[b] >= 0) {
+    f = b;
+    other = a;
+  } else {
+    return true;
+  }
+  if (st.dpre[f] < 0 || st.poly.ring[other] != st.poly.ring[f]) return true;
+  for (int c = f;; c = st.poly.prev(c)) {
+    if (c == other) return false;
+    if (c == st.dpre[f]) break;
+  }
+  for (int c = f;; c = st.poly.next(c)) {
+    if (c == other) return false;
+    if (c == st.dnext[f]) break;
+  }
+  return true;
+}
+
+// The corner of local point `lp` whose interior wedge contains the direction to q, or -1.
+int corner_toward(const Poly& poly, const PointSet& set, int lp, const Pt& q) {
+  for (int c : set.corners[lp]) {
+    if (in_wedge(poly, c, q)) return c;
+  }
+  return -1;
+}
+
+// The reference's second triangulation (§5.2.2): all simplified-polygon diagonals are constraints,
+// including those that cross the boundary, for which CGAL inserts crossing points. Those points
+// change the triangulation nearby (this is how the reference loses the cut of §8.5.1). The
+// constraint hierarchy tells boundary sub-edges from diagonal sub-edges for the inside test.
+std::vector<std::pair<int, int>> reference_fine_edges(const Poly& poly, const PointSet& set,
+                                                      const std::vector<int>& corners,
+                                                      const std::vector<std::pair<int, int>>& s_diagonals) {
+  using CDTP = CGAL::Constrained_triangulation_plus_2<CDT>;
+  CDTP cdt;
+  std::vector<Vertex> handle(set.points.size());
+  for (std::size_t i = 0; i < set.points.size(); ++i) {
+    handle[i] = cdt.insert(set.points[i]);
+    if (handle[i]->info().id < 0) handle[i]->info().id = static_cast<int>(i);
+  }
+  for (int c : corners) {
+    const Vertex va = handle[set.local[c]], vb = handle[set.local[poly.next(c)]];
+    if (va != vb) cdt.insert_constraint(va, vb);
+  }
+  std::set<CDTP::Constraint_id> diagonal_ids;
+  for (const auto& [a, b] : s_diagonals) {
+    diagonal_ids.insert(cdt.insert_constraint(handle[set.local[a]], handle[set.local[b]]));
+  }
+  mark_levels(cdt, [&](Face f, int i) {
+    if (!cdt.is_constrained(CDT::Edge(f, i))) return false;
+    const Vertex u = f->vertex(CDT::cw(i)), w = f->vertex(CDT::ccw(i));
+    for (auto it = cdt.contexts_begin(u, w); it != cdt.contexts_end(u, w); ++it) {
+      if (diagonal_ids.count(it->id()) == 0) return true;
+    }
+    return false;
+  });
+  std::vector<std::pair<int, int>> edges;  // local point ids
+  for (auto e = cdt.finite_edges_begin(); e != cdt.finite_edges_end(); ++e) {
+    const Face f = e->first;
+    const int i = e->second;
+    if (cdt.is_constrained(*e)) continue;
+    if (!inside_face(cdt, f) || !inside_face(cdt, f->neighbor(i))) continue;
+    const int u = f->vertex(CDT::cw(i))->info().id, w = f->vertex(CDT::ccw(i))->info().id;
+    if (u >= 0 && w >= 0) edges.emplace_back(u, w);
+  }
+  return edges;
+}
+
+}  // namespace
+
+std::vector<std::pair<int, int>> candidate_diagonals(PassState& st) {
+  const Poly& poly = st.poly;
+  const bool reference = st.settings.options.candidates == CandidateCuts::kReference;
+
+  // §5.1 simplified polygon: features per ring, rings with fewer than 3 features dropped.
+  std::vector<int> feature_corners;  // of rings kept in S
+  std::vector<std::pair<int, int>> s_edges;
+  for (int r = 0; r < poly.rings(); ++r) {
+    if (st.deleted[r]) continue;
+    std::vector<int> f;
+    for (int c = poly.ring_start[r]; c < poly.ring_start[r + 1]; ++c) {
+      if (st.feature[c]) f.push_back(c);
+    }
+    if (f.size() < 3) {
+      for (int c : f) {
+        st.dpre[c] = poly.prev(c);
+        st.dnext[c] = poly.next(c);
+      }
+      continue;
+    }
+    for (std::size_t i = 0; i < f.size(); ++i) {
+      const int c = f[i];
+      st.dpre[c] = f[(i + f.size() - 1) % f.size()];
+      st.dnext[c] = f[(i + 1) % f.size()];
+      feature_corners.push_back(c);
+      s_edges.emplace_back(c, st.dnext[c]);
+    }
+  }
+
+  auto accept = [&](int a, int b) { return bridge_breaking(st, a, b) && hole_span_ok(st, a, b); };
+
+  // Step 1: diagonals of the simplified polygon.
+  std::vector<std::pair<int, int>> s_diagonals;
+  if (!feature_corners.empty()) {
+    PointSet set(poly, feature_corners);
+    CDT cdt;
+    const std::vector<Vertex> handle = insert_points(cdt, set);
+    for (const auto& [a, b] : s_edges) {
+      const Vertex va = handle[set.local[a]], vb = handle[set.local[b]];
+      if (va != vb) cdt.insert_constraint(va, vb);
+    }
+    mark_levels(cdt, [&](Face f, int i) { return cdt.is_constrained(CDT::Edge(f, i)); });
+    std::unordered_set<std::uint64_t> seen;
+    for (auto e = cdt.finite_edges_begin(); e != cdt.finite_edges_end(); ++e) {
+      const Face f = e->first;
+      const int i = e->second;
+      if (cdt.is_constrained(*e)) continue;
+      if (!inside_face(cdt, f) || !inside_face(cdt, f->neighbor(i))) continue;
+      const int u = f->vertex(CDT::cw(i))->info().id, w = f->vertex(CDT::ccw(i))->info().id;
+      if (u < 0 || w < 0) continue;
+      int a = corner_toward(poly, set, u, set.points[w]);
+      int b = corner_toward(poly, set, w, set.points[u]);
+      if (reference) {
+        // The reference stores the diagonal with the feature vertices whatever the real boundary does.
+        if (a < 0) a = set.corners[u].front();
+        if (b < 0) b = set.corners[w].front();
+      }
+      if (a < 0 || b < 0) continue;
+      if (a > b) std::swap(a, b);
+      if (!accept(a, b)) continue;
+      if (seen.insert(pair_key(poly.vid[a], poly.vid[b])).second) s_diagonals.emplace_back(a, b);
+    }
+    std::sort(s_diagonals.begin(), s_diagonals.end());
+  }
+  const std::vector<char> s_valid = segments_inside(poly, s_diagonals, st.deleted);
+
+  std::vector<std::pair<int, int>> result;
+  std::vector<std::pair<int, int>> invalid_s;  // reference mode only
+  std::unordered_set<std::uint64_t> diagonal_keys;
+  for (std::size_t i = 0; i < s_diagonals.size(); ++i) {
+    if (s_valid[i]) {
+      result.push_back(s_diagonals[i]);
+      diagonal_keys.insert(pair_key(poly.vid[s_diagonals[i].first], poly.vid[s_diagonals[i].second]));
+    } else if (reference) {
+      invalid_s.push_back(s_diagonals[i]);
+    }
+  }
+
+  // Step 2: the full-resolution polygon with the valid simplified diagonals as extra constraints.
+  std::vector<int> all_corners;
+  all_corners.reserve(poly.corners());
+  for (int c = 0; c < poly.corners(); ++c) {
+    if (!st.deleted[poly.ring[c]]) all_corners.push_back(c);
+  }
+  PointSet set(poly, all_corners);
+  std::vector<std::pair<int, int>> fine_edges;  // local point ids
+  if (invalid_s.empty()) {
+    CDT cdt;
+    const std::vector<Vertex> handle = insert_points(cdt, set);
+    for (int c : all_corners) {
+      const Vertex va = handle[set.local[c]], vb = handle[set.local[poly.next(c)]];
+      if (va != vb) cdt.insert_constraint(va, vb);
+    }
+    std::unordered_set<std::uint64_t> constraint_diagonals;
+    for (const auto& [a, b] : result) {
+      cdt.insert_constraint(handle[set.local[a]], handle[set.local[b]]);
+      constraint_diagonals.insert(pair_key(set.local[a], set.local[b]));
+    }
+    mark_levels(cdt, [&](Face f, int i) {
+      if (!cdt.is_constrained(CDT::Edge(f, i))) return false;
+      const int u = f->vertex(CDT::cw(i))->info().id, w = f->vertex(CDT::ccw(i))->info().id;
+      return constraint_diagonals.count(pair_key(u, w)) == 0;
+    });
+    for (auto e = cdt.finite_edges_begin(); e != cdt.finite_edges_end(); ++e) {
+      const Face f = e->first;
+      const int i = e->second;
+      if (cdt.is_constrained(*e)) continue;
+      if (!inside_face(cdt, f) || !inside_face(cdt, f->neighbor(i))) continue;
+      const int u = f->vertex(CDT::cw(i))->info().id, w = f->vertex(CDT::ccw(i))->info().id;
+      if (u >= 0 && w >= 0) fine_edges.emplace_back(u, w);
+    }
+  } else {
+    fine_edges = reference_fine_edges(poly, set, all_corners, s_diagonals);
+  }
+  std::vector<std::pair<int, int>> fine;
+  for (const auto& [u, w] : fine_edges) {
+    int a = corner_toward(poly, set, u, set.points[w]);
+    int b = corner_toward(poly, set, w, set.points[u]);
+    if (a < 0 || b < 0) continue;
+    if (a > b) std::swap(a, b);
+    if (!accept(a, b)) continue;
+    fine.emplace_back(a, b);
+  }
+  if (!invalid_s.empty()) {
+    // The reference has its unchecked diagonals as constraints here, so nothing may cross them.
+    std::vector<std::pair<int, int>> both = invalid_s;
+    both.insert(both.end(), fine.begin(), fine.end());
+    const std::vector<char> keep = non_crossing_prefix(poly, both);
+    std::vector<std::pair<int, int>> kept;
+    for (std::size_t i = invalid_s.size(); i < both.size(); ++i) {
+      if (keep[i]) kept.push_back(both[i]);
+    }
+    fine.swap(kept);
+    for (const auto& d : invalid_s) {
+      result.push_back(d);
+      diagonal_keys.insert(pair_key(poly.vid[d.first], poly.vid[d.second]));
+    }
+  }
+  for (const auto& d : fine) {
+    if (diagonal_keys.insert(pair_key(poly.vid[d.first], poly.vid[d.second])).second) result.push_back(d);
+  }
+  std::sort(result.begin(), result.end());
+  return result;
+}
+
+}  // namespace topocut::dude
