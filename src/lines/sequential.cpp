@@ -1,0 +1,154 @@
+#include "topocut/lines/iepf.h"
+#include "topocut/lines/line_tracking.h"
+#include "topocut/lines/sef.h"
+
+#include <cmath>
+
+#include "lines/common.h"
+#include "topocut/core/error.h"
+
+namespace topocut {
+
+namespace {
+
+// The infinite line through a and b, for distances (from a itself when the points coincide).
+struct Chord {
+  Point2 a;
+  double nx = 0.0, ny = 0.0;
+  bool degenerate = true;
+  Chord(const Point2& from, const Point2& to) : a(from) {
+    const double dx = to.x - from.x, dy = to.y - from.y;
+    const double len = std::sqrt(dx * dx + dy * dy);
+    if (len > 0.0) nx = -dy / len, ny = dx / len, degenerate = false;
+  }
+  double distance(const Point2& p) const {
+    if (degenerate) return std::sqrt((p.x - a.x) * (p.x - a.x) + (p.y - a.y) * (p.y - a.y));
+    return std::abs((p.x - a.x) * nx + (p.y - a.y) * ny);
+  }
+};
+
+// Groups of one run never touch groups of another run; inside a run they all touch.
+void append_groups(std::vector<PointRun>& groups, std::vector<bool>& neighbours, const std::vector<PointRun>& inside) {
+  if (!groups.empty()) neighbours.back() = false;
+  for (const PointRun& g : inside) {
+    groups.push_back(g);
+    neighbours.push_back(true);
+  }
+}
+
+}  // namespace
+
+std::vector<Line> extract_lines_sef(const Scan& scan, const SefOptions& options) {
+  detail::require_positive(options.d_max, "D_max");
+  detail::require_positive(options.t_max, "T_max");
+  const std::vector<ScanPoint> points = detail::prepared_points(scan);
+  std::vector<PointRun> groups;
+  std::vector<bool> neighbours;
+  for (const PointRun& run : split_at_gaps(points, options.d_max)) {
+    std::vector<PointRun> inside;
+    PointRun current{run.first, run.first};
+    for (std::size_t k = run.first + 1; k <= run.last; ++k) {
+      // The edge runs from the line's first point through its middle point: unlike the chord to the
+      // last point it cannot bend round a corner one small step at a time.
+      const std::size_t middle = current.first + (current.last - current.first + 1) / 2;
+      const bool follows = current.size() < 2 ||
+                           Chord(points[current.first].point, points[middle].point).distance(points[k].point) <=
+                               options.t_max;
+      if (follows) {
+        current.last = k;
+      } else {
+        inside.push_back(current);
+        current = {k, k};
+      }
+    }
+    inside.push_back(current);
+    append_groups(groups, neighbours, inside);
+  }
+  detail::refine_boundaries(points, groups, neighbours);
+  detail::trim_run_ends(points, groups, neighbours);
+  return detail::lines_from_runs(scan, points, groups, options.min_points);
+}
+
+std::vector<Line> extract_lines_lt(const Scan& scan, const LtOptions& options) {
+  detail::require_positive(options.d_max, "D_max");
+  detail::require_positive(options.t_max, "T_max");
+  const std::vector<ScanPoint> points = detail::prepared_points(scan);
+  std::vector<PointRun> groups;
+  std::vector<bool> neighbours;
+  for (const PointRun& run : split_at_gaps(points, options.d_max)) {
+    std::vector<PointRun> inside;
+    PointRun current{run.first, run.first};
+    Moments m;
+    m.add(points[run.first].point);
+    for (std::size_t k = run.first + 1; k <= run.last; ++k) {
+      const Point2& p = points[k].point;
+      bool tracks = current.size() < 2;
+      if (!tracks) {
+        tracks = m.normal_form().distance(p) <= options.t_max;
+      }
+      if (tracks) {
+        current.last = k;
+        m.add(p);
+      } else {
+        inside.push_back(current);
+        current = {k, k};
+        m = Moments{};
+        m.add(p);
+      }
+    }
+    inside.push_back(current);
+    append_groups(groups, neighbours, inside);
+  }
+  detail::refine_boundaries(points, groups, neighbours);
+  detail::trim_run_ends(points, groups, neighbours);
+  return detail::lines_from_runs(scan, points, groups, options.min_points);
+}
+
+std::vector<Line> extract_lines_iepf(const Scan& scan, const IepfOptions& options) {
+  detail::require_positive(options.t_max, "T_max");
+  const std::vector<ScanPoint> points = detail::prepared_points(scan);
+  std::vector<PointRun> groups;
+  std::vector<bool> neighbours;
+  std::vector<PointRun> stack;
+  for (const PointRun& run : split_at_breakpoints(scan, points, options.breakpoints)) {
+    // Split phase (depth-first, left part first, so pieces come out in scan order).
+    std::vector<PointRun> pieces;
+    stack.assign(1, run);
+    while (!stack.empty()) {
+      const PointRun r = stack.back();
+      stack.pop_back();
+      const Chord chord(points[r.first].point, points[r.last].point);
+      double worst = 0.0;
+      std::size_t at = r.first;
+      for (std::size_t k = r.first + 1; k < r.last; ++k) {
+        const double d = chord.distance(points[k].point);
+        if (d > worst) worst = d, at = k;
+      }
+      if (worst > options.t_max) {
+        stack.push_back({at + 1, r.last});
+        stack.push_back({r.first, at});
+      } else {
+        pieces.push_back(r);
+      }
+    }
+    // Merge phase: fuse neighbours whose common line still holds every point within T_max.
+    if (options.merge && pieces.size() > 1) {
+      std::vector<PointRun> merged{pieces.front()};
+      for (std::size_t i = 1; i < pieces.size(); ++i) {
+        const PointRun fused{merged.back().first, pieces[i].last};
+        if (detail::max_distance(points, fused, detail::moments_of(points, fused).fit()) <= options.t_max) {
+          merged.back() = fused;
+        } else {
+          merged.push_back(pieces[i]);
+        }
+      }
+      pieces = std::move(merged);
+    }
+    append_groups(groups, neighbours, pieces);
+  }
+  detail::refine_boundaries(points, groups, neighbours);
+  detail::trim_run_ends(points, groups, neighbours);
+  return detail::lines_from_runs(scan, points, groups, options.min_points);
+}
+
+}  // namespace topocut
