@@ -23,7 +23,7 @@ std::string status_line(std::size_t index, std::size_t total, const ImageResult&
                      to_string(result.variant) + ": ";
   if (!result.ok) return line + "FAILED: " + result.error;
   char numbers[160];
-  std::snprintf(numbers, sizeof numbers, "%d rooms (ground truth %d), recall %.3f, precision %.3f, %.0f ms",
+  std::snprintf(numbers, sizeof numbers, "rooms %d (ground truth %d), recall %.3f, precision %.3f, %.0f ms",
                 result.rooms, result.gt_rooms, result.recall, result.precision, result.time_ms);
   return line + numbers;
 }

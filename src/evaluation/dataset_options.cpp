@@ -45,8 +45,8 @@ const std::vector<DatasetOption>& dataset_options() {
     return std::vector<DatasetOption>{
         {"dataset", "DIR", "Bormann-format dataset folder (default " + defaults.dataset + ")", false},
         {"variant", "V", "plain, furnished or all (default all)", false},
-        {"map", "NAME", "run only these maps (repeatable; default every map of the folder)", true},
-        {"csv", "FILE", "also write map,variant,rooms,gt_rooms,recall,precision,time_ms to FILE", false},
+        {"map", "NAME", "run only the named maps (one or more; default all)", true},
+        {"csv", "FILE", "also write the per-image results to FILE as CSV", false},
         {"concavity", "M", "maximum concavity tau in metres (default " + number(defaults.run.segment.concavity) + ")",
          false},
         {"trivial", "", "baseline: every free-space component is one room (no decomposition)", false},

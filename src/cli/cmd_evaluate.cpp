@@ -1,0 +1,97 @@
+// topocut evaluate: segments every image of a Bormann-format dataset and scores it against the
+// ground truth (precision/recall as Bormann et al., ICRA 2016, define them).
+#include <iostream>
+
+#include "cli/command.h"
+#include "topocut/core/error.h"
+#include "topocut/evaluation/dataset.h"
+#include "topocut/evaluation/dataset_options.h"
+#include "topocut/evaluation/dataset_report.h"
+#include "topocut/io/atomic_file.h"
+
+namespace topocut::cli {
+namespace {
+
+// The options come from the evaluation module's table, so the dataset benchmark accepts the same.
+po::options_description described_options() {
+  po::options_description described("Evaluation");
+  for (const DatasetOption& option : dataset_options()) {
+    if (option.value_name.empty()) {
+      described.add_options()(option.name.c_str(), po::bool_switch(), option.help.c_str());
+    } else if (option.repeatable) {
+      described.add_options()(option.name.c_str(),
+                              po::value<std::vector<std::string>>()->multitoken()->composing()->value_name(
+                                  option.value_name),
+                              option.help.c_str());
+    } else {
+      described.add_options()(option.name.c_str(), po::value<std::string>()->value_name(option.value_name),
+                              option.help.c_str());
+    }
+  }
+  return described;
+}
+
+DatasetArguments to_arguments(const po::variables_map& vm) {
+  DatasetArguments arguments;
+  try {
+    for (const DatasetOption& option : dataset_options()) {
+      if (!vm.count(option.name)) continue;
+      if (option.value_name.empty()) {
+        if (vm[option.name].as<bool>()) apply_dataset_option(arguments, option.name, "");
+      } else if (option.repeatable) {
+        for (const std::string& value : vm[option.name].as<std::vector<std::string>>()) {
+          apply_dataset_option(arguments, option.name, value);
+        }
+      } else {
+        apply_dataset_option(arguments, option.name, vm[option.name].as<std::string>());
+      }
+    }
+  } catch (const Error& e) {
+    throw UsageError(e.what());
+  }
+  return arguments;
+}
+
+int run(const std::vector<std::string>& args) {
+  const auto vm = parse_options(
+      "topocut evaluate [--dataset DIR] [--variant plain|furnished|all] [--csv FILE] [--concavity M]\n"
+      "                        [--trivial] [--map NAME ...]",
+      "Segments every map of a Bormann-format dataset folder (for each map X: X.png plain,\n"
+      "X_furnitures.png furnished, X_gt_segmentation.png ground truth; 0.05 m/px) and scores it\n"
+      "against the ground truth as Bormann et al. (ICRA 2016) define it: ground-truth pixels > 250\n"
+      "are free and split into rooms by 8-connected flood fill; rooms and segments of <= 100 px are\n"
+      "ignored; precision = mean over segments S of max_R |S ∩ R| / |S|, recall = mean over rooms R\n"
+      "of max_S |S ∩ R| / |R| (unlabelled pixels are not recalled).\n\n"
+      "Prints a per-image table (rooms found and ground-truth rooms, both counting regions > 100 px;\n"
+      "recall; precision; milliseconds for loading and segmenting the image) and a summary with\n"
+      "mean ± std over maps. --csv writes map,variant,rooms,gt_rooms,recall,precision,time_ms\n"
+      "(fractions; a failed image leaves its fields empty). Progress goes to stderr. Exits with 1\n"
+      "if any image failed (listed as FAILED in the table).",
+      described_options(), po::positional_options_description(), args);
+  if (!vm) return 0;
+  DatasetArguments arguments = to_arguments(*vm);
+  if (!arguments.csv.empty()) check_writable(arguments.csv);
+
+  const std::vector<DatasetMap> maps = select_maps(discover_dataset(arguments.dataset), arguments.run.maps);
+  arguments.run.progress = [](const std::string& line) { progress(line); };
+  const std::vector<ImageResult> results = run_dataset(maps, arguments.run, batch_segmenter(arguments.run));
+
+  const std::string method = method_name(arguments.run.segment);
+  std::cout << "Dataset " << arguments.dataset << ", " << maps.size() << " maps, method: " << method << "\n\n"
+            << format_results_table(results) << "\n"
+            << format_summary(results, method) << std::flush;
+  if (!arguments.csv.empty()) write_file_atomically(arguments.csv, results_csv(results));
+
+  std::size_t failed = 0;
+  for (const ImageResult& result : results) failed += result.ok ? 0 : 1;
+  if (failed > 0) {
+    throw Error(std::to_string(failed) + " of " + std::to_string(results.size()) +
+                " images failed (see FAILED in the table)");
+  }
+  return 0;
+}
+
+const bool registered = register_command({"evaluate", "score segmentations of a dataset against its ground truth", &run});
+
+}  // namespace
+}  // namespace topocut::cli

@@ -1,0 +1,186 @@
+// `topocut evaluate` as a user runs it: the built binary, its exit codes, stdout, stderr and CSV.
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <opencv2/imgcodecs.hpp>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Outcome {
+  int exit_code = -1;
+  std::string out;
+  std::string err;
+};
+
+std::string slurp(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+class EvaluateCli : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() / ("topocut_evaluate_cli_" + std::to_string(::getpid()) + "_" +
+                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  // Runs `topocut evaluate <args>` (args already shell-quoted as needed).
+  Outcome evaluate(const std::string& args) const {
+    const fs::path out = dir_ / "stdout.txt";
+    const fs::path err = dir_ / "stderr.txt";
+    const std::string command = std::string("'") + TOPOCUT_CLI + "' evaluate " + args + " >'" + out.string() +
+                                "' 2>'" + err.string() + "'";
+    const int status = std::system(command.c_str());
+    Outcome run;
+    run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    run.out = slurp(out);
+    run.err = slurp(err);
+    return run;
+  }
+
+  // A two-map dataset: "closed" has two rooms behind a full wall, "open" has the same rooms joined
+  // by a door that the ground truth closes. Furnished = plain but for a 20 px table in room A.
+  fs::path make_dataset() const {
+    const fs::path data = dir_ / "data";
+    fs::create_directories(data);
+    cv::Mat closed(60, 120, CV_8UC1, cv::Scalar(0));
+    closed(cv::Rect(4, 4, 60, 40)).setTo(255);   // room A, 2400 px (6 m² at 0.05 m/px)
+    closed(cv::Rect(70, 4, 40, 40)).setTo(255);  // room B, 1600 px
+    cv::Mat open = closed.clone();
+    open(cv::Rect(64, 20, 6, 8)).setTo(255);     // door, 48 px
+    const auto furnish = [](cv::Mat image) {
+      image(cv::Rect(10, 10, 10, 8)).setTo(0);  // table, 80 px
+      return image;
+    };
+    for (const auto& [name, map] : {std::pair<std::string, cv::Mat>{"closed", closed}, {"open", open}}) {
+      EXPECT_TRUE(cv::imwrite((data / (name + ".png")).string(), map));
+      EXPECT_TRUE(cv::imwrite((data / (name + "_furnitures.png")).string(), furnish(map.clone())));
+      EXPECT_TRUE(cv::imwrite((data / (name + "_gt_segmentation.png")).string(), closed));
+    }
+    return data;
+  }
+
+  fs::path dir_;
+};
+
+std::size_t count_lines(const std::string& text) {
+  std::size_t lines = 0;
+  for (const char c : text) lines += c == '\n';
+  return lines;
+}
+
+TEST_F(EvaluateCli, HelpListsEveryOption) {
+  const Outcome run = evaluate("--help");
+  EXPECT_EQ(run.exit_code, 0);
+  EXPECT_NE(run.out.find("Usage: topocut evaluate"), std::string::npos) << run.out;
+  for (const char* option : {"--dataset", "--variant", "--csv", "--concavity", "--trivial", "--map"}) {
+    EXPECT_NE(run.out.find(option), std::string::npos) << option;
+  }
+  EXPECT_TRUE(run.err.empty()) << run.err;
+}
+
+TEST_F(EvaluateCli, MissingDatasetFolderIsOneClearError) {
+  const Outcome run = evaluate("--dataset '" + (dir_ / "nowhere").string() + "'");
+  EXPECT_NE(run.exit_code, 0);
+  EXPECT_EQ(count_lines(run.err), 1u) << run.err;
+  EXPECT_NE(run.err.find("does not exist"), std::string::npos) << run.err;
+  EXPECT_TRUE(run.out.empty()) << run.out;
+}
+
+TEST_F(EvaluateCli, DatasetFolderWithoutMapsIsOneClearError) {
+  std::ofstream(dir_ / "readme.txt") << "no maps here\n";
+  const Outcome run = evaluate("--dataset '" + dir_.string() + "'");
+  EXPECT_NE(run.exit_code, 0);
+  EXPECT_EQ(count_lines(run.err), 1u) << run.err;
+  EXPECT_NE(run.err.find("holds no map"), std::string::npos) << run.err;
+}
+
+TEST_F(EvaluateCli, UnknownVariantIsAUsageError) {
+  const Outcome run = evaluate("--dataset '" + make_dataset().string() + "' --variant sofa");
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_NE(run.err.find("variant 'sofa'"), std::string::npos) << run.err;
+  EXPECT_TRUE(run.out.empty()) << run.out;
+}
+
+TEST_F(EvaluateCli, BadConcavityAndUnknownMapAreErrors) {
+  const std::string data = make_dataset().string();
+  const Outcome concavity = evaluate("--dataset '" + data + "' --concavity -3");
+  EXPECT_EQ(concavity.exit_code, 2);
+  EXPECT_NE(concavity.err.find("--concavity"), std::string::npos) << concavity.err;
+  const Outcome map = evaluate("--dataset '" + data + "' --map kitchen");
+  EXPECT_NE(map.exit_code, 0);
+  EXPECT_NE(map.err.find("no map 'kitchen'"), std::string::npos) << map.err;
+}
+
+TEST_F(EvaluateCli, UnwritableCsvIsRefusedBeforeAnyWork) {
+  const Outcome run = evaluate("--dataset '" + make_dataset().string() + "' --trivial --csv '" +
+                           (dir_ / "no_such_folder" / "out.csv").string() + "'");
+  EXPECT_NE(run.exit_code, 0);
+  EXPECT_EQ(run.err.find("[1/"), std::string::npos) << "work started: " << run.err;
+}
+
+TEST_F(EvaluateCli, TrivialBaselineOnASyntheticDatasetWritesTableSummaryAndCsv) {
+  const fs::path csv = dir_ / "results.csv";
+  const Outcome run = evaluate("--dataset '" + make_dataset().string() + "' --trivial --csv '" + csv.string() + "'");
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_NE(run.out.find("trivial"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("| closed"), std::string::npos) << run.out;
+  EXPECT_NE(run.err.find("[4/4]"), std::string::npos) << run.err;
+
+  // Hand-computed: closed plain is perfect; the table in room A leaves 2320 of 2400 px, so closed
+  // furnished has recall (2320 / 2400 + 1) / 2; open is one segment A + door + B = 4048 px (3968
+  // furnished) whose best room is A.
+  EXPECT_EQ(slurp(csv).substr(0, slurp(csv).find('\n')), "map,variant,rooms,gt_rooms,recall,precision,time_ms");
+  std::istringstream lines(slurp(csv));
+  std::string line;
+  std::getline(lines, line);
+  std::vector<std::string> rows;
+  while (std::getline(lines, line)) rows.push_back(line.substr(0, line.rfind(',')));  // drop time_ms
+  ASSERT_EQ(rows.size(), 4u);
+  EXPECT_EQ(rows[0], "closed,plain,2,2,1.000000,1.000000");
+  char expected[128];
+  std::snprintf(expected, sizeof expected, "closed,furnished,2,2,%.6f,1.000000", (2320.0 / 2400.0 + 1.0) / 2.0);
+  EXPECT_EQ(rows[1], expected);
+  std::snprintf(expected, sizeof expected, "open,plain,1,2,1.000000,%.6f", 2400.0 / 4048.0);
+  EXPECT_EQ(rows[2], expected);
+  std::snprintf(expected, sizeof expected, "open,furnished,1,2,%.6f,%.6f", (2320.0 / 2400.0 + 1.0) / 2.0,
+                2320.0 / 3968.0);
+  EXPECT_EQ(rows[3], expected);
+}
+
+TEST_F(EvaluateCli, VariantAndMapSelectionRestrictTheRun) {
+  const fs::path csv = dir_ / "results.csv";
+  const Outcome run = evaluate("--dataset '" + make_dataset().string() +
+                           "' --trivial --variant furnished --map open --csv '" + csv.string() + "'");
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const std::string text = slurp(csv);
+  EXPECT_EQ(count_lines(text), 2u) << text;
+  EXPECT_NE(text.find("open,furnished,"), std::string::npos) << text;
+}
+
+TEST_F(EvaluateCli, AFailingImageIsAFailureRowAndANonZeroExit) {
+  const fs::path data = make_dataset();
+  fs::remove(data / "open_furnitures.png");
+  const fs::path csv = dir_ / "results.csv";
+  const Outcome run = evaluate("--dataset '" + data.string() + "' --trivial --csv '" + csv.string() + "'");
+  EXPECT_EQ(run.exit_code, 1);
+  EXPECT_NE(run.out.find("FAILED"), std::string::npos) << run.out;
+  EXPECT_NE(run.err.find("1 of 4 images failed"), std::string::npos) << run.err;
+  EXPECT_NE(slurp(csv).find("open,furnished,,,,,"), std::string::npos) << slurp(csv);
+}
+
+}  // namespace
