@@ -1,0 +1,147 @@
+// topocut segment: map -> rooms (pipeline A). Loads a map, segments it, writes the requested
+// outputs (label image, colour overlay, rooms JSON, SVG) and prints a short summary.
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <iomanip>
+#include <iostream>
+#include <set>
+#include <sstream>
+
+#include <opencv2/imgcodecs.hpp>
+
+#include "cli/command.h"
+#include "topocut/core/error.h"
+#include "topocut/io/atomic_file.h"
+#include "topocut/io/label_image.h"
+#include "topocut/io/map_loader.h"
+#include "topocut/io/overlay.h"
+#include "topocut/io/rooms_json.h"
+#include "topocut/io/rooms_svg.h"
+#include "topocut/segmentation/segmenter.h"
+
+namespace topocut::cli {
+namespace {
+
+void require_positive(double value, const std::string& option) {
+  if (!std::isfinite(value) || value <= 0.0) throw UsageError(option + " must be a positive number");
+}
+
+void require_non_negative(double value, const std::string& option) {
+  if (!std::isfinite(value) || value < 0.0) throw UsageError(option + " must be a non-negative number");
+}
+
+std::string lower_extension(const std::string& path) {
+  std::string e = std::filesystem::path(path).extension().string();
+  for (char& c : e) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return e;
+}
+
+int run(const std::vector<std::string>& args) {
+  std::string map_path, out_labels, out_color, out_json, out_svg;
+  double resolution = 0.05;
+  SegmentOptions options;
+  MapLoadOptions load;
+  bool trivial = false;
+  po::options_description described("Segmentation");
+  described.add_options()
+      ("map", po::value<std::string>(&map_path)->required(), "map: ROS map_server YAML, or an image (PNG, PGM, ...)")
+      ("resolution", po::value<double>(&resolution)->default_value(resolution),
+       "metres per cell of a plain image (a YAML's own resolution always wins)")
+      ("concavity", po::value<double>(&options.concavity)->default_value(options.concavity),
+       "maximum concavity tau in metres: larger values give fewer, less convex rooms")
+      ("trivial", po::bool_switch(&trivial), "no decomposition: one room per free-space component (baseline)")
+      ("robot-radius", po::value<double>(&options.binarize.robot_radius)->default_value(0.0),
+       "inflate obstacles by this radius in metres before decomposing (0: raw free space)")
+      ("min-room-area", po::value<double>(&options.contours.min_component_area)->default_value(options.contours.min_component_area),
+       "free-space components smaller than this (m²) are not rooms; their cells join the nearest room")
+      ("min-hole-area", po::value<double>(&options.contours.min_hole_area)->default_value(options.contours.min_hole_area),
+       "obstacles inside free space smaller than this (m²) are ignored by the decomposition")
+      ("free-threshold", po::value<int>(&load.free_min)->default_value(load.free_min),
+       "plain images: grey values above this are free")
+      ("occupied-threshold", po::value<int>(&load.occupied_max)->default_value(load.occupied_max),
+       "plain images: grey values below this are occupied (between the two: unknown)")
+      ("out-labels", po::value<std::string>(&out_labels), "write the room labels as a 16-bit PNG (0 = no room, rooms 1..N)")
+      ("out-color", po::value<std::string>(&out_color), "write a colour overlay of the rooms over the map (PNG, JPEG, ...)")
+      ("out-json", po::value<std::string>(&out_json), "write rooms and passages as JSON (metres)")
+      ("out-svg", po::value<std::string>(&out_svg), "write rooms and passages as SVG (metres)");
+  po::positional_options_description positional;
+  positional.add("map", 1);
+  const auto vm = parse_options(
+      "topocut segment MAP [options]",
+      "Segments the free space of a map into rooms: free space -> polygons with holes -> dual-space\n"
+      "decomposition (DuDe) with maximum concavity tau -> rooms, and passages between them where a\n"
+      "cut separates two rooms. Every free cell gets a room; obstacles and unknown cells get none.\n"
+      "A ROS map_server YAML supplies its own resolution, origin and thresholds; for a plain image,\n"
+      "grey > --free-threshold is free, < --occupied-threshold occupied, and transparency is unknown.\n"
+      "Prints a summary (rooms, passages, time) and writes each requested output atomically.\n\n"
+      "Example:\n  topocut segment maps/floorplan.yaml --out-color rooms.png --out-json rooms.json",
+      described, positional, args);
+  if (!vm) return 0;
+
+  require_positive(resolution, "--resolution");
+  require_positive(options.concavity, "--concavity");
+  require_non_negative(options.binarize.robot_radius, "--robot-radius");
+  require_non_negative(options.contours.min_component_area, "--min-room-area");
+  require_non_negative(options.contours.min_hole_area, "--min-hole-area");
+  if (load.free_min < 0 || load.free_min > 255 || load.occupied_max < 0 || load.occupied_max > 255)
+    throw UsageError("--free-threshold and --occupied-threshold must lie in 0..255");
+  if (load.occupied_max > load.free_min) throw UsageError("--occupied-threshold must not exceed --free-threshold");
+  options.decompose = !trivial;
+  load.resolution = resolution;
+
+  // Every output is checked before the work starts, so a typo costs no time and leaves nothing behind.
+  std::set<std::string> seen;
+  for (const std::string* path : {&out_labels, &out_color, &out_json, &out_svg}) {
+    if (vm->count(path == &out_labels ? "out-labels" : path == &out_color ? "out-color" : path == &out_json ? "out-json" : "out-svg") &&
+        path->empty())
+      throw UsageError("an output option was given an empty file name");
+    if (path->empty()) continue;
+    std::error_code ec;
+    std::string canonical = std::filesystem::weakly_canonical(*path, ec).string();
+    if (ec) canonical = std::filesystem::absolute(*path).lexically_normal().string();
+    if (!seen.insert(canonical).second) throw Error("'" + *path + "' is given for two outputs");
+    check_writable(*path);
+  }
+  if (!out_labels.empty() && lower_extension(out_labels) != ".png")
+    throw Error("the label image '" + out_labels + "' must be a .png file (16-bit PNG)");
+  if (!out_color.empty() && !cv::haveImageWriter(out_color))
+    throw Error("cannot write the overlay '" + out_color + "': unknown image format (use .png or .jpg)");
+
+  const auto start = std::chrono::steady_clock::now();
+  const OccupancyGrid grid = load_map(map_path, load);
+  const auto loaded = std::chrono::steady_clock::now();
+  const Segmentation segmentation = segment(grid, options);
+  const auto done = std::chrono::steady_clock::now();
+
+  if (!out_labels.empty()) write_label_image(out_labels, segmentation.labels);
+  if (!out_color.empty()) write_overlay(out_color, grid, segmentation);
+  if (!out_json.empty()) write_rooms_json(out_json, segmentation);
+  if (!out_svg.empty()) write_rooms_svg(out_svg, grid, segmentation);
+
+  const auto ms = [](auto a, auto b) { return std::chrono::duration<double, std::milli>(b - a).count(); };
+  std::ostringstream summary;
+  summary << map_path << ": " << grid.width() << " x " << grid.height() << " cells at " << grid.resolution << " m; "
+          << segmentation.rooms.size() << (segmentation.rooms.size() == 1 ? " room, " : " rooms, ")
+          << segmentation.passages.size() << (segmentation.passages.size() == 1 ? " passage" : " passages") << " ("
+          << (trivial ? "trivial: one room per component" : "DuDe, concavity " + [&] {
+               std::ostringstream t;
+               t << options.concavity;
+               return t.str();
+             }() + " m")
+          << ") in " << std::fixed << std::setprecision(1) << ms(loaded, done) << " ms (loading " << ms(start, loaded)
+          << " ms)\n" << std::defaultfloat;
+  if (is_yaml_path(map_path) && !vm->at("resolution").defaulted())
+    summary << "note: --resolution is ignored, the YAML gives " << grid.resolution << " m\n";
+  if (!out_labels.empty()) summary << "wrote labels:  " << out_labels << " (16-bit PNG, 0 = no room, rooms 1.." << segmentation.rooms.size() << ")\n";
+  if (!out_color.empty()) summary << "wrote overlay: " << out_color << "\n";
+  if (!out_json.empty()) summary << "wrote JSON:    " << out_json << "\n";
+  if (!out_svg.empty()) summary << "wrote SVG:     " << out_svg << "\n";
+  std::cout << summary.str() << std::flush;
+  return 0;
+}
+
+const bool registered = register_command({"segment", "segment a map into rooms (labels, overlay, JSON, SVG)", &run});
+
+}  // namespace
+}  // namespace topocut::cli

@@ -1,0 +1,198 @@
+// Smoke and bad-input tests of `topocut segment`, run as a separate process.
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+#include <opencv2/imgcodecs.hpp>
+
+#include "io/temp_dir.h"
+
+namespace {
+
+using topocut::testing::TempDir;
+
+struct Result {
+  int code = -1;
+  std::string out;
+  std::string err;
+};
+
+std::string slurp(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+std::string quote(const std::string& s) {
+  std::string q = "'";
+  for (char c : s) {
+    if (c == '\'') {
+      q += "'\\''";
+    } else {
+      q += c;
+    }
+  }
+  q += '\'';
+  return q;
+}
+
+Result run(const TempDir& dir, const std::vector<std::string>& args) {
+  std::string command = quote(TOPOCUT_CLI) + " segment";
+  for (const std::string& a : args) {
+    command += ' ';
+    command += quote(a);
+  }
+  command += " >";
+  command += quote(dir.file("stdout.txt"));
+  command += " 2>";
+  command += quote(dir.file("stderr.txt"));
+  const int status = std::system(command.c_str());
+  Result r;
+  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  r.out = slurp(dir.file("stdout.txt"));
+  r.err = slurp(dir.file("stderr.txt"));
+  std::filesystem::remove(dir.file("stdout.txt"));
+  std::filesystem::remove(dir.file("stderr.txt"));
+  return r;
+}
+
+std::string bundled(const std::string& name) { return std::string(TOPOCUT_SOURCE_DIR) + "/maps/" + name; }
+
+// A failed run: non-zero exit, one line on stderr that says error and names the problem.
+void expect_error(const Result& r, const std::string& fragment, int code = 1) {
+  EXPECT_EQ(r.code, code) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_EQ(r.err.rfind("topocut segment: error: ", 0), 0u) << r.err;
+  EXPECT_NE(r.err.find(fragment), std::string::npos) << "expected '" << fragment << "' in: " << r.err;
+  EXPECT_TRUE(r.out.empty()) << r.out;
+}
+
+std::size_t files_in(const TempDir& dir) {
+  std::size_t n = 0;
+  for ([[maybe_unused]] const auto& e : std::filesystem::directory_iterator(dir.path())) ++n;
+  return n;
+}
+
+TEST(SegmentCli, FloorplanWritesEveryOutput) {
+  TempDir dir;
+  const Result r = run(dir, {bundled("floorplan.yaml"), "--out-labels", dir.file("labels.png"), "--out-color",
+                             dir.file("rooms.png"), "--out-json", dir.file("rooms.json"), "--out-svg", dir.file("rooms.svg")});
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_TRUE(r.err.empty()) << r.err;
+  EXPECT_NE(r.out.find("400 x 300 cells at 0.05 m"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("wrote labels:  " + dir.file("labels.png")), std::string::npos) << r.out;
+  const cv::Mat labels = cv::imread(dir.file("labels.png"), cv::IMREAD_UNCHANGED);
+  ASSERT_EQ(labels.type(), CV_16UC1);
+  const nlohmann::json rooms = nlohmann::json::parse(slurp(dir.file("rooms.json")));
+  double low = 0, high = 0;
+  cv::minMaxLoc(labels, &low, &high);
+  EXPECT_EQ(static_cast<std::size_t>(high), rooms["rooms"].size());
+  EXPECT_NE(r.out.find(std::to_string(rooms["rooms"].size()) + " room"), std::string::npos) << r.out;
+  // Every free cell of the map is in a room, and only those.
+  const cv::Mat map = cv::imread(bundled("floorplan.png"), cv::IMREAD_GRAYSCALE);
+  EXPECT_EQ(cv::countNonZero((labels > 0) != (map == 254)), 0);
+  const cv::Mat overlay = cv::imread(dir.file("rooms.png"), cv::IMREAD_COLOR);
+  EXPECT_EQ(overlay.size(), cv::Size(800, 600));  // scaled 2x so the ids stay legible
+  const std::string svg = slurp(dir.file("rooms.svg"));
+  EXPECT_NE(svg.find("</svg>"), std::string::npos);
+  EXPECT_EQ(files_in(dir), 4u);  // and no temporary files left over
+}
+
+TEST(SegmentCli, TrivialModeGivesOneRoomPerComponent) {
+  TempDir dir;
+  const Result r = run(dir, {bundled("floorplan.yaml"), "--trivial", "--out-json", dir.file("r.json")});
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("1 room, 0 passages"), std::string::npos) << r.out;
+  EXPECT_EQ(nlohmann::json::parse(slurp(dir.file("r.json")))["rooms"].size(), 1u);
+}
+
+TEST(SegmentCli, PlainImageTakesTheResolutionOption) {
+  TempDir dir;
+  const Result r = run(dir, {bundled("furnished.png"), "--resolution", "0.1", "--trivial", "--out-json", dir.file("r.json")});
+  ASSERT_EQ(r.code, 0) << r.err;
+  const nlohmann::json doc = nlohmann::json::parse(slurp(dir.file("r.json")));
+  EXPECT_DOUBLE_EQ(doc["resolution"].get<double>(), 0.1);
+  // The same map at twice the cell size covers four times the area.
+  const Result yaml = run(dir, {bundled("furnished.yaml"), "--trivial", "--out-json", dir.file("y.json")});
+  ASSERT_EQ(yaml.code, 0) << yaml.err;
+  const nlohmann::json at_005 = nlohmann::json::parse(slurp(dir.file("y.json")));
+  EXPECT_NEAR(doc["rooms"][0]["area"].get<double>(), 4.0 * at_005["rooms"][0]["area"].get<double>(), 1e-6);
+  const Result note = run(dir, {bundled("furnished.yaml"), "--trivial", "--resolution", "0.1"});
+  EXPECT_NE(note.out.find("--resolution is ignored"), std::string::npos) << note.out;
+}
+
+TEST(SegmentCli, HelpExplainsTheCommand) {
+  TempDir dir;
+  const Result r = run(dir, {"--help"});
+  EXPECT_EQ(r.code, 0);
+  EXPECT_NE(r.out.find("Usage: topocut segment MAP"), std::string::npos);
+  for (const char* option : {"--concavity", "--resolution", "--out-labels", "--out-color", "--out-json", "--out-svg",
+                             "--trivial", "--robot-radius"})
+    EXPECT_NE(r.out.find(option), std::string::npos) << option;
+}
+
+TEST(SegmentCli, BadMapFiles) {
+  TempDir dir;
+  expect_error(run(dir, {dir.file("missing.png")}), "does not exist");
+  std::ofstream(dir.file("notes.png")) << "not an image";
+  expect_error(run(dir, {dir.file("notes.png")}), "as an image");
+  std::ofstream(dir.file("empty.png")).close();
+  expect_error(run(dir, {dir.file("empty.png")}), "empty");
+  ASSERT_TRUE(cv::imwrite(dir.file("walls.png"), cv::Mat(20, 20, CV_8UC1, cv::Scalar(0))));
+  expect_error(run(dir, {dir.file("walls.png")}), "no free space");
+  expect_error(run(dir, {}), "map", 2);
+}
+
+TEST(SegmentCli, BadYamlFiles) {
+  TempDir dir;
+  ASSERT_TRUE(cv::imwrite(dir.file("m.png"), cv::Mat(20, 20, CV_8UC1, cv::Scalar(255))));
+  auto yaml = [&](const std::string& name, const std::string& text) {
+    std::ofstream(dir.file(name)) << text;
+    return dir.file(name);
+  };
+  expect_error(run(dir, {yaml("a.yaml", "resolution: 0.05\norigin: [0, 0, 0]\n")}), "'image'");
+  expect_error(run(dir, {yaml("b.yaml", "image: m.png\norigin: [0, 0, 0]\n")}), "'resolution'");
+  expect_error(run(dir, {yaml("c.yaml", "image: m.png\nresolution: 0.05\norigin: [0, 0, 0]\nmode: fuzzy\n")}), "'mode'");
+  expect_error(run(dir, {yaml("d.yaml", "image: m.png\nresolution: 0.05\norigin: [0, 0, 0]\noccupied_thresh: 2\n")}),
+               "'occupied_thresh'");
+  expect_error(run(dir, {yaml("e.yaml", "image: gone.png\nresolution: 0.05\norigin: [0, 0, 0]\n")}), "gone.png");
+  expect_error(run(dir, {yaml("f.yaml", "image: m.png\nresolution: -0.05\norigin: [0, 0, 0]\n")}), "'resolution'");
+  expect_error(run(dir, {yaml("g.yaml", "{{{")}), "YAML");
+  // The well-formed version of the same map works.
+  EXPECT_EQ(run(dir, {yaml("ok.yaml", "image: m.png\nresolution: 0.05\norigin: [0, 0, 0]\n")}).code, 0);
+}
+
+TEST(SegmentCli, BadOptions) {
+  TempDir dir;
+  const std::string map = bundled("floorplan.yaml");
+  expect_error(run(dir, {map, "--resolution", "0"}), "--resolution", 2);
+  expect_error(run(dir, {map, "--resolution", "-1"}), "--resolution", 2);
+  expect_error(run(dir, {map, "--resolution", "nan"}), "--resolution", 2);
+  expect_error(run(dir, {map, "--resolution", "fine"}), "resolution", 2);
+  expect_error(run(dir, {map, "--concavity", "0"}), "--concavity", 2);
+  expect_error(run(dir, {map, "--robot-radius", "-1"}), "--robot-radius", 2);
+  expect_error(run(dir, {map, "--colour-me-surprised"}), "colour-me-surprised", 2);
+  expect_error(run(dir, {map, "--out-labels"}), "out-labels", 2);
+}
+
+TEST(SegmentCli, UnwritableOutputsFailBeforeAnyWork) {
+  TempDir dir;
+  const std::string map = bundled("floorplan.yaml");
+  expect_error(run(dir, {map, "--out-json", dir.file("good.json"), "--out-labels", dir.file("no/such/dir/l.png")}),
+               "no/such/dir");
+  expect_error(run(dir, {map, "--out-svg", dir.path().string()}), "directory");
+  expect_error(run(dir, {map, "--out-labels", dir.file("l.jpg")}), ".png");
+  expect_error(run(dir, {map, "--out-color", dir.file("c.unknown")}), "format");
+  expect_error(run(dir, {map, "--out-json", dir.file("x.json"), "--out-svg", dir.file("x.json")}), "two outputs");
+  EXPECT_EQ(files_in(dir), 0u);  // nothing written, not even the good output
+}
+
+}  // namespace
