@@ -1,0 +1,209 @@
+// Dataset benchmark: segments every image of a Bormann-format dataset with the given segmenter
+// options and prints quality and time per image, plus a summary with medians. Each image's time is
+// put next to its "contour floor" (decode the PNG, threshold, cv::findContours: the least work any
+// contour-based pipeline must do on it), so runs on different machines compare by the ratio.
+//
+// Usage: dataset_benchmark [evaluate's options] [--repeat N] [--floor-repetitions N]
+//   --repeat N             run the whole dataset N times; an image's time is the median (default 1)
+//   --floor-repetitions N  repetitions of the contour floor per image, median taken (default 5)
+// Without --dataset it reads TOPOCUT_SHARED_DIR/datasets/bormann.
+#include <sys/resource.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <exception>
+#include <fstream>
+#include <iostream>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
+
+#include "topocut/core/error.h"
+#include "topocut/evaluation/dataset.h"
+#include "topocut/evaluation/dataset_options.h"
+#include "topocut/evaluation/dataset_report.h"
+#include "topocut/io/atomic_file.h"
+
+namespace {
+
+using namespace topocut;
+
+std::string cpu_model() {
+  std::ifstream cpuinfo("/proc/cpuinfo");
+  std::string line;
+  while (std::getline(cpuinfo, line)) {
+    if (line.rfind("model name", 0) == 0) {
+      const std::size_t colon = line.find(':');
+      if (colon != std::string::npos) return line.substr(line.find_first_not_of(' ', colon + 1));
+    }
+  }
+  return "unknown CPU";
+}
+
+double peak_rss_mb() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return static_cast<double>(usage.ru_maxrss) / 1024.0;  // Linux reports kilobytes
+}
+
+double median(std::vector<double> values) { return time_statistics(std::move(values)).median; }
+
+// Decode + threshold + contours of one image file, in milliseconds (median of repetitions).
+double contour_floor_ms(const std::string& path, int repetitions, const MapLoadOptions& load) {
+  std::vector<double> times;
+  for (int i = 0; i < repetitions; ++i) {
+    const auto start = std::chrono::steady_clock::now();
+    const cv::Mat image = cv::imread(path, cv::IMREAD_GRAYSCALE);
+    if (image.empty()) throw Error("cannot read '" + path + "'");
+    cv::Mat free;
+    cv::threshold(image, free, load.free_min, 255, cv::THRESH_BINARY);
+    std::vector<std::vector<cv::Point>> contours;
+    std::vector<cv::Vec4i> hierarchy;
+    cv::findContours(free, contours, hierarchy, cv::RETR_CCOMP, cv::CHAIN_APPROX_SIMPLE);
+    const auto stop = std::chrono::steady_clock::now();
+    times.push_back(std::chrono::duration<double, std::milli>(stop - start).count());
+  }
+  return median(times);
+}
+
+int parse_count(const std::string& name, const std::string& value) {
+  std::size_t used = 0;
+  int parsed = 0;
+  try {
+    parsed = std::stoi(value, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used == 0 || used != value.size() || parsed < 1) throw Error(name + " needs a positive whole number");
+  return parsed;
+}
+
+std::string fixed(double value, int decimals) {
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, "%.*f", decimals, value);
+  return buffer;
+}
+
+int run(std::vector<std::string> args) {
+  int repeat = 1;
+  int floor_repetitions = 5;
+  std::vector<std::string> dataset_args;
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    if (args[i] == "--help" || args[i] == "-h") {
+      std::cout << "Usage: dataset_benchmark [options]\n\nOptions (as topocut evaluate):\n"
+                << dataset_options_help()
+                << "  --repeat N             run the dataset N times, median time per image (default 1)\n"
+                   "  --floor-repetitions N  repetitions of the contour floor per image (default 5)\n";
+      return 0;
+    }
+    if ((args[i] == "--repeat" || args[i] == "--floor-repetitions") && i + 1 < args.size()) {
+      (args[i] == "--repeat" ? repeat : floor_repetitions) = parse_count(args[i], args[i + 1]);
+      ++i;
+      continue;
+    }
+    dataset_args.push_back(args[i]);
+  }
+  DatasetArguments arguments = parse_dataset_arguments(dataset_args);
+  const bool dataset_given =
+      std::find_if(dataset_args.begin(), dataset_args.end(),
+                   [](const std::string& a) { return a.rfind("--dataset", 0) == 0; }) != dataset_args.end();
+  if (!dataset_given) arguments.dataset = std::string(TOPOCUT_SHARED_DIR) + "/datasets/bormann";
+  if (!arguments.csv.empty()) check_writable(arguments.csv);
+
+  const std::vector<DatasetMap> maps = select_maps(discover_dataset(arguments.dataset), arguments.run.maps);
+  const std::string method = method_name(arguments.run.segment);
+  std::cout << "# Dataset benchmark\n\n"
+            << "machine: " << cpu_model() << ", " << std::thread::hardware_concurrency() << " hardware threads\n"
+#ifdef NDEBUG
+            << "build: optimised (NDEBUG)\n"
+#else
+            << "build: assertions on (not a release build; times are not representative)\n"
+#endif
+            << "dataset: " << arguments.dataset << " (" << maps.size() << " maps)\n"
+            << "method: " << method << "\n"
+            << "repeat: " << repeat << ", contour floor repetitions: " << floor_repetitions << "\n\n";
+
+  std::vector<double> peak_after;  // running peak RSS after each image of the first run
+  arguments.run.progress = [&](const std::string& line) {
+    peak_after.push_back(peak_rss_mb());
+    std::cerr << line << std::endl;
+  };
+  std::vector<ImageResult> results = run_dataset(maps, arguments.run, batch_segmenter(arguments.run));
+  std::vector<std::vector<double>> times(results.size());
+  for (std::size_t i = 0; i < results.size(); ++i) times[i].push_back(results[i].time_ms);
+  arguments.run.progress = [](const std::string& line) { std::cerr << line << std::endl; };
+  for (int r = 1; r < repeat; ++r) {
+    std::cerr << "repeat " << r + 1 << " of " << repeat << "\n";
+    const std::vector<ImageResult> again = run_dataset(maps, arguments.run, batch_segmenter(arguments.run));
+    for (std::size_t i = 0; i < results.size(); ++i) {
+      if (again[i].ok != results[i].ok || again[i].recall != results[i].recall ||
+          again[i].precision != results[i].precision) {
+        std::cerr << "warning: " << results[i].map << " " << to_string(results[i].variant)
+                  << " gave a different result on repeat " << r + 1 << " (not deterministic)\n";
+      }
+      times[i].push_back(again[i].time_ms);
+    }
+  }
+  for (std::size_t i = 0; i < results.size(); ++i) {
+    if (results[i].ok) results[i].time_ms = median(times[i]);
+  }
+
+  std::vector<std::vector<std::string>> rows{{"map", "variant", "rooms", "gt rooms", "recall %", "precision %",
+                                              "ms", "floor ms", "ms / floor", "peak RSS MB"}};
+  std::vector<double> floors, ratios;
+  for (std::size_t i = 0; i < results.size(); ++i) {
+    const ImageResult& r = results[i];
+    const std::string peak = i < peak_after.size() ? fixed(peak_after[i], 0) : "-";
+    if (!r.ok) {
+      rows.push_back({r.map, to_string(r.variant), "-", "-", "-", "-", "FAILED: " + r.error, "-", "-", peak});
+      continue;
+    }
+    const DatasetMap& map = *std::find_if(maps.begin(), maps.end(), [&](const DatasetMap& m) { return m.name == r.map; });
+    const double floor = contour_floor_ms(map.image(r.variant), floor_repetitions, arguments.run.load);
+    floors.push_back(floor);
+    ratios.push_back(r.time_ms / floor);
+    rows.push_back({r.map, to_string(r.variant), std::to_string(r.rooms), std::to_string(r.gt_rooms),
+                    fixed(100.0 * r.recall, 1), fixed(100.0 * r.precision, 1), fixed(r.time_ms, 1), fixed(floor, 2),
+                    fixed(r.time_ms / floor, 1), peak});
+  }
+  std::cout << markdown_table(rows) << "\n" << format_summary(results, method) << "\n";
+
+  std::vector<double> ok_times;
+  for (const ImageResult& r : results) {
+    if (r.ok) ok_times.push_back(r.time_ms);
+  }
+  const TimeStatistics time = time_statistics(ok_times);
+  const TimeStatistics ratio = time_statistics(ratios);
+  std::cout << markdown_table({{"medians over images", "value"},
+                               {"segment ms (median / mean / max)",
+                                fixed(time.median, 1) + " / " + fixed(time.mean, 1) + " / " + fixed(time.max, 1)},
+                               {"contour floor ms (median)", fixed(median(floors), 2)},
+                               {"ms / floor (median / max)", fixed(ratio.median, 1) + " / " + fixed(ratio.max, 1)},
+                               {"peak RSS MB (whole run)", fixed(peak_rss_mb(), 0)}});
+
+  if (!arguments.csv.empty()) write_file_atomically(arguments.csv, results_csv(results));
+  const auto failed = std::count_if(results.begin(), results.end(), [](const ImageResult& r) { return !r.ok; });
+  if (failed > 0) {
+    std::cerr << "dataset_benchmark: " << failed << " of " << results.size() << " images failed\n";
+    return 1;
+  }
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  try {
+    return run(std::vector<std::string>(argv + 1, argv + argc));
+  } catch (const topocut::Error& e) {
+    std::cerr << "dataset_benchmark: error: " << e.what() << "\n";
+    return 2;
+  } catch (const std::exception& e) {
+    std::cerr << "dataset_benchmark: error: internal failure: " << e.what() << "\n";
+    return 1;
+  }
+}
