@@ -1,0 +1,100 @@
+#pragma once
+// Incremental room segmentation for a growing map (pipeline B; Fermin-Leon et al., Algorithms 3-4).
+// Each update compares the new grid with the previous one; the rooms that the change touches are
+// merged with the changed free space and decomposed again with the batch stages, every other room
+// is kept as it is, with its id, polygon and passages. Work stays inside the bounding box of the
+// change and of the touched rooms, so an update costs what the change costs, not what the map does.
+#include <cstddef>
+#include <memory>
+#include <string>
+
+#include <opencv2/core.hpp>
+
+#include "topocut/core/occupancy_grid.h"
+#include "topocut/core/segmentation.h"
+#include "topocut/segmentation/segmenter.h"
+
+namespace topocut {
+
+struct IncrementalOptions {
+  SegmentOptions segment;  // the batch options, applied unchanged to every re-decomposed region
+  // Newly free blobs up to this area (m²) that touch exactly one room join that room without a new
+  // decomposition (sensor noise, gaps in walls filled in). The seed ignores difference blobs below
+  // (0.5 m)²; we label them instead, so that no free cell is ever left without a room.
+  double absorb_area = 0.25;
+  // A room that has absorbed more than this fraction of its own area since its last decomposition
+  // is decomposed again, so that absorbed cells never drift far from what batch would do.
+  double absorb_fraction = 0.1;
+  // When more cells change than this fraction of the free cells (a loop closure moving the whole
+  // map), every room is decomposed again: the batch result, with ids kept where rooms overlap.
+  double batch_fraction = 0.5;
+};
+
+// What the last update did (diagnostics for tests, benchmarks and logs).
+struct IncrementalUpdateReport {
+  enum class Kind {
+    kUnchanged,    // no cell changed: the previous result is returned as it is
+    kIncremental,  // only the touched rooms were decomposed again
+    kBatch,        // everything was decomposed again (first update, wholesale change, new frame)
+  };
+  Kind kind = Kind::kUnchanged;
+  std::string reason;         // why the update was a batch one
+  cv::Rect changed;           // bounding box of the changed cells, in the new grid's frame
+  int changed_cells = 0;      // cells whose free / not-free state (or binarized state) changed
+  int absorbed_blobs = 0;     // small newly free blobs given to an adjacent room
+  int redecomposed_rooms = 0; // rooms of the previous result decomposed again
+  cv::Rect region;            // window in which the decomposition ran (empty if none)
+  int region_cells = 0;       // free cells decomposed again
+  int new_rooms = 0;          // ids handed out by this update
+  int removed_rooms = 0;      // ids that disappeared
+};
+
+// Keeps the previous grid, its binarized free space and its labels between updates (six bytes per
+// cell plus the rooms and passages) and hands out stable room ids.
+//
+// Promises after every update: every free cell (kFree) carries exactly one room label and no other
+// cell does; every label value is the id of one room in rooms (sorted by id); ids of rooms that the
+// change did not touch are unchanged; new rooms get ids never used before, and a re-decomposed piece
+// that covers at least half of an old room keeps that room's id. Ids are therefore stable but not
+// contiguous (1..N is not promised, unlike segment()).
+class IncrementalSegmenter {
+ public:
+  explicit IncrementalSegmenter(const IncrementalOptions& options = {});
+  ~IncrementalSegmenter();
+  IncrementalSegmenter(IncrementalSegmenter&&) noexcept;
+  IncrementalSegmenter& operator=(IncrementalSegmenter&&) noexcept;
+
+  // Segments grid, reusing the previous result where nothing changed. The grid may have grown or
+  // moved (new size and/or origin, same resolution, as ROS maps grow); a changed resolution or a
+  // frame that no longer contains the old one restarts from batch (ids kept where rooms overlap).
+  // The result stays valid until the next update; copies of it are independent (the label image is
+  // copied on write when a copy still shares it). Throws Error like segment() on an invalid grid
+  // or options, and when free space exists but none is left after binarization.
+  const Segmentation& update(const OccupancyGrid& grid);
+
+  // The same, with a hint from the caller: every cell outside changed (in grid's frame) equals the
+  // previous grid's cell (unknown where the previous grid did not reach). The segmenter then looks
+  // only inside changed for differences. A wrong hint gives wrong rooms; an empty hint means "no
+  // cell changed".
+  const Segmentation& update(const OccupancyGrid& grid, const cv::Rect& changed);
+
+  // The latest result (empty before the first update).
+  const Segmentation& result() const;
+
+  // What the latest update did.
+  const IncrementalUpdateReport& last_update() const;
+
+  // Bytes held between updates: grid copy, binarized free space, labels, rooms and passages.
+  std::size_t state_bytes() const;
+
+  // Forgets everything; the next update is a batch one with fresh ids.
+  void reset();
+
+  const IncrementalOptions& options() const;
+
+ private:
+  struct State;
+  std::unique_ptr<State> state_;
+};
+
+}  // namespace topocut

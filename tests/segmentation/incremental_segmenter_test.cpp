@@ -1,0 +1,538 @@
+#include "topocut/segmentation/incremental_segmenter.h"
+
+#include <algorithm>
+#include <map>
+#include <set>
+#include <vector>
+
+#include <gtest/gtest.h>
+#include <opencv2/imgproc.hpp>
+
+#include "topocut/core/error.h"
+#include "topocut/segmentation/segmenter.h"
+
+namespace topocut {
+namespace {
+
+constexpr double kRes = 0.05;
+
+// A synthetic floor plan (15 m x 8 m at 0.05 m): a corridor along the bottom and four rooms above
+// it, each with an 18-cell door into the corridor. Walls are 4 cells thick.
+struct FloorPlan {
+  OccupancyGrid world;
+  cv::Rect corridor;
+  std::vector<cv::Rect> rooms;  // interiors
+  std::vector<cv::Rect> doors;  // openings in the corridor wall
+};
+
+FloorPlan floor_plan() {
+  FloorPlan plan;
+  plan.world.cells = cv::Mat(160, 300, CV_8UC1, cv::Scalar(kOccupied));
+  plan.world.resolution = kRes;
+  plan.corridor = cv::Rect(4, 124, 292, 32);
+  plan.world.cells(plan.corridor).setTo(kFree);
+  const int widths[4] = {70, 60, 80, 66};
+  int x = 4;
+  for (int i = 0; i < 4; ++i) {
+    const cv::Rect room(x, 4, widths[i], 116);
+    plan.rooms.push_back(room);
+    plan.world.cells(room).setTo(kFree);
+    const cv::Rect door(x + widths[i] / 2 - 9, 120, 18, 4);
+    plan.doors.push_back(door);
+    plan.world.cells(door).setTo(kFree);
+    x += widths[i] + 4;
+  }
+  return plan;
+}
+
+// The grid a robot knows when only the given parts of the world have been seen: those rectangles,
+// grown by the wall thickness so that walls show as obstacles, copied from the world; the rest
+// unknown.
+OccupancyGrid reveal(const FloorPlan& plan, const std::vector<cv::Rect>& seen) {
+  OccupancyGrid grid = plan.world;
+  grid.cells = cv::Mat(plan.world.cells.size(), CV_8UC1, cv::Scalar(kUnknown));
+  const cv::Rect all(0, 0, grid.width(), grid.height());
+  for (const cv::Rect& r : seen) {
+    const cv::Rect g = cv::Rect(r.x - 4, r.y - 4, r.width + 8, r.height + 8) & all;
+    plan.world.cells(g).copyTo(grid.cells(g));
+  }
+  return grid;
+}
+
+// Every free cell labelled exactly once with the id of a listed room, nothing else labelled, rooms
+// sorted by unique id with area and centroid of their cells.
+void expect_valid(const OccupancyGrid& grid, const Segmentation& s) {
+  ASSERT_EQ(s.labels.size(), grid.cells.size());
+  ASSERT_EQ(s.labels.type(), CV_32SC1);
+  std::map<int, long long> count;
+  std::map<int, std::pair<double, double>> sums;
+  for (int r = 0; r < grid.height(); ++r)
+    for (int c = 0; c < grid.width(); ++c) {
+      const int l = s.labels.at<int>(r, c);
+      if (grid.cells.at<unsigned char>(r, c) == kFree) {
+        ASSERT_GT(l, 0) << "free cell (" << c << ", " << r << ") unlabelled";
+        ++count[l];
+        sums[l].first += c;
+        sums[l].second += r;
+      } else {
+        ASSERT_EQ(l, 0) << "non-free cell (" << c << ", " << r << ") labelled";
+      }
+    }
+  ASSERT_EQ(count.size(), s.rooms.size());
+  for (std::size_t i = 0; i < s.rooms.size(); ++i) {
+    const Room& room = s.rooms[i];
+    if (i > 0) {
+      EXPECT_LT(s.rooms[i - 1].id, room.id);
+    }
+    ASSERT_TRUE(count.count(room.id)) << "room " << room.id << " labels no cell";
+    const long long n = count[room.id];
+    EXPECT_NEAR(room.area, n * kRes * kRes, 1e-9);
+    const double cx = grid.origin.x + (sums[room.id].first / n + 0.5) * kRes;
+    const double cy = grid.origin.y + (grid.height() - sums[room.id].second / n - 0.5) * kRes;
+    EXPECT_NEAR(room.centroid.x, cx, 1e-6);
+    EXPECT_NEAR(room.centroid.y, cy, 1e-6);
+    EXPECT_GE(room.polygon.outer.size(), 3u);
+  }
+  for (const Passage& p : s.passages) {
+    EXPECT_LT(p.room_a, p.room_b);
+    EXPECT_TRUE(count.count(p.room_a) && count.count(p.room_b));
+  }
+}
+
+// Cells of each room id.
+std::map<int, std::vector<int>> cells_by_room(const cv::Mat& labels) {
+  std::map<int, std::vector<int>> out;
+  for (int r = 0; r < labels.rows; ++r)
+    for (int c = 0; c < labels.cols; ++c)
+      if (const int l = labels.at<int>(r, c); l > 0) out[l].push_back(r * labels.cols + c);
+  return out;
+}
+
+// Rooms of before whose cells are farther than one cell from every cell whose free state changed
+// must keep their id and exactly their cells in after.
+void expect_untouched_stable(const OccupancyGrid& before_grid, const Segmentation& before, const OccupancyGrid& after_grid,
+                             const Segmentation& after) {
+  const cv::Mat changed = (before_grid.cells == kFree) != (after_grid.cells == kFree);
+  cv::Mat near_change;
+  cv::dilate(changed, near_change, cv::Mat::ones(3, 3, CV_8UC1));
+  const auto old_rooms = cells_by_room(before.labels);
+  const auto new_rooms = cells_by_room(after.labels);
+  int checked = 0;
+  for (const auto& [id, cells] : old_rooms) {
+    const bool touched = std::any_of(cells.begin(), cells.end(), [&](int i) { return near_change.data[i] != 0; });
+    if (touched) continue;
+    ++checked;
+    ASSERT_TRUE(new_rooms.count(id)) << "untouched room " << id << " lost its id";
+    EXPECT_EQ(new_rooms.at(id), cells) << "untouched room " << id << " changed its cells";
+  }
+}
+
+// Agreement of two labellings of the same free cells, in the shape of precision and recall with b
+// as the reference: mean over a's segments of their best overlap fraction with a b segment, and
+// the reverse.
+std::pair<double, double> agreement(const cv::Mat& a, const cv::Mat& b) {
+  std::map<std::pair<int, int>, long long> joint;
+  std::map<int, long long> na, nb;
+  for (int i = 0; i < static_cast<int>(a.total()); ++i) {
+    const int la = a.at<int>(i), lb = b.at<int>(i);
+    if (la <= 0 || lb <= 0) continue;
+    ++joint[{la, lb}];
+    ++na[la];
+    ++nb[lb];
+  }
+  std::map<int, long long> best_a, best_b;
+  for (const auto& [key, n] : joint) {
+    best_a[key.first] = std::max(best_a[key.first], n);
+    best_b[key.second] = std::max(best_b[key.second], n);
+  }
+  double precision = 0.0, recall = 0.0;
+  for (const auto& [l, n] : na) precision += static_cast<double>(best_a[l]) / n;
+  for (const auto& [l, n] : nb) recall += static_cast<double>(best_b[l]) / n;
+  return {precision / na.size(), recall / nb.size()};
+}
+
+IncrementalOptions trivial_options() {
+  IncrementalOptions options;
+  options.segment.decompose = false;  // one room per free-space component: answers by hand
+  return options;
+}
+
+TEST(IncrementalSegmenter, FirstUpdateEqualsBatch) {
+  const FloorPlan plan = floor_plan();
+  IncrementalSegmenter segmenter;
+  const Segmentation& s = segmenter.update(plan.world);
+  expect_valid(plan.world, s);
+  EXPECT_EQ(segmenter.last_update().kind, IncrementalUpdateReport::Kind::kBatch);
+  const Segmentation batch = segment(plan.world);
+  // Same pieces, numbered the same way (both by first cell in raster order on a fresh start).
+  EXPECT_EQ(cv::countNonZero(s.labels != batch.labels), 0);
+  ASSERT_EQ(s.rooms.size(), batch.rooms.size());
+  EXPECT_EQ(s.passages.size(), batch.passages.size());
+}
+
+TEST(IncrementalSegmenter, SeparateRoomsRevealedOneByOneKeepTheirIds) {
+  // Trivial mode, rooms without doors: each revealed room is its own component, so it must get a
+  // new id while every earlier room keeps its id and cells.
+  FloorPlan plan = floor_plan();
+  for (const cv::Rect& door : plan.doors) plan.world.cells(door).setTo(kOccupied);
+  IncrementalOptions options = trivial_options();
+  options.batch_fraction = 10.0;  // each room is nearly as large as all before it: stay incremental
+  IncrementalSegmenter segmenter(options);
+  std::vector<cv::Rect> seen{plan.corridor};
+  OccupancyGrid previous = reveal(plan, seen);
+  Segmentation before = segmenter.update(previous);
+  expect_valid(previous, before);
+  ASSERT_EQ(before.rooms.size(), 1u);
+  const int corridor_id = before.rooms[0].id;
+  std::set<int> ids{corridor_id};
+  for (std::size_t k = 0; k < plan.rooms.size(); ++k) {
+    seen.push_back(plan.rooms[k]);
+    const OccupancyGrid grid = reveal(plan, seen);
+    const Segmentation after = segmenter.update(grid);
+    expect_valid(grid, after);
+    expect_untouched_stable(previous, before, grid, after);
+    ASSERT_EQ(after.rooms.size(), k + 2);
+    // The room just revealed has a fresh id; all earlier ids are still there.
+    const cv::Point inside(plan.rooms[k].x + 5, plan.rooms[k].y + 5);
+    const int new_id = after.labels.at<int>(inside);
+    EXPECT_FALSE(ids.count(new_id)) << "revealed room reused id " << new_id;
+    ids.insert(new_id);
+    for (const Room& room : after.rooms) EXPECT_TRUE(ids.count(room.id));
+    EXPECT_EQ(segmenter.last_update().kind, IncrementalUpdateReport::Kind::kIncremental);
+    EXPECT_EQ(segmenter.last_update().redecomposed_rooms, 0);
+    EXPECT_EQ(segmenter.last_update().new_rooms, 1);
+    previous = grid;
+    before = after;
+  }
+  EXPECT_EQ(before.labels.at<int>(plan.corridor.y + 2, plan.corridor.x + 2), corridor_id);
+}
+
+TEST(IncrementalSegmenter, DoorOpeningMergesIntoTheLargerRoomsId) {
+  // Trivial mode: opening a door joins two components; the joined room covers all of both old
+  // rooms, so the first candidate by overlap (the larger old room) keeps its id.
+  FloorPlan plan = floor_plan();
+  for (const cv::Rect& door : plan.doors) plan.world.cells(door).setTo(kOccupied);
+  IncrementalSegmenter segmenter(trivial_options());
+  const Segmentation first = segmenter.update(plan.world);
+  ASSERT_EQ(first.rooms.size(), 5u);
+  const int corridor_id = first.labels.at<int>(plan.corridor.y + 1, plan.corridor.x + 1);
+  const int room0_id = first.labels.at<int>(plan.rooms[0].y + 1, plan.rooms[0].x + 1);
+  OccupancyGrid opened = plan.world;
+  opened.cells = plan.world.cells.clone();
+  opened.cells(plan.doors[0]).setTo(kFree);
+  const Segmentation second = segmenter.update(opened);
+  expect_valid(opened, second);
+  ASSERT_EQ(second.rooms.size(), 4u);
+  // corridor 292x32 = 9344 cells > room 0 70x116 = 8120 cells.
+  EXPECT_EQ(second.labels.at<int>(plan.rooms[0].y + 1, plan.rooms[0].x + 1), corridor_id);
+  EXPECT_FALSE(std::any_of(second.rooms.begin(), second.rooms.end(), [&](const Room& r) { return r.id == room0_id; }));
+  for (int k = 1; k < 4; ++k)
+    EXPECT_EQ(second.labels.at<int>(plan.rooms[k].y + 1, plan.rooms[k].x + 1),
+              first.labels.at<int>(plan.rooms[k].y + 1, plan.rooms[k].x + 1));
+  EXPECT_EQ(segmenter.last_update().redecomposed_rooms, 2);
+}
+
+TEST(IncrementalSegmenter, DoorClosingSplitsAndTheLargerPartKeepsTheId) {
+  FloorPlan plan = floor_plan();
+  for (std::size_t k = 1; k < plan.doors.size(); ++k) plan.world.cells(plan.doors[k]).setTo(kOccupied);
+  IncrementalSegmenter segmenter(trivial_options());
+  const Segmentation first = segmenter.update(plan.world);
+  ASSERT_EQ(first.rooms.size(), 4u);  // corridor + room 0 joined, rooms 1..3
+  const int joined = first.labels.at<int>(plan.rooms[0].y + 1, plan.rooms[0].x + 1);
+  OccupancyGrid closed = plan.world;
+  closed.cells = plan.world.cells.clone();
+  closed.cells(plan.doors[0]).setTo(kOccupied);
+  const Segmentation second = segmenter.update(closed);
+  expect_valid(closed, second);
+  ASSERT_EQ(second.rooms.size(), 5u);
+  // The corridor is more than half of the joined room: it keeps the id; room 0 gets a new one.
+  EXPECT_EQ(second.labels.at<int>(plan.corridor.y + 1, plan.corridor.x + 1), joined);
+  const int room0 = second.labels.at<int>(plan.rooms[0].y + 1, plan.rooms[0].x + 1);
+  EXPECT_NE(room0, joined);
+  for (const Room& r : first.rooms) EXPECT_NE(r.id, room0) << "the split-off room reused an old id";
+  expect_untouched_stable(plan.world, first, closed, second);
+}
+
+TEST(IncrementalSegmenter, RoomsRevealedThroughDoorsMatchBatchAtTheEnd) {
+  const FloorPlan plan = floor_plan();
+  IncrementalSegmenter segmenter;
+  std::vector<cv::Rect> seen{plan.corridor};
+  for (const cv::Rect& d : plan.doors) seen.push_back(d);
+  OccupancyGrid previous = reveal(plan, seen);
+  Segmentation before = segmenter.update(previous);
+  expect_valid(previous, before);
+  for (std::size_t k = 0; k < plan.rooms.size(); ++k) {
+    // Each room is seen in two halves, as a robot walking in would.
+    cv::Rect half = plan.rooms[k];
+    half.y += half.height / 2;
+    half.height -= half.height / 2;
+    for (const cv::Rect& part : {half, plan.rooms[k]}) {
+      seen.push_back(part);
+      const OccupancyGrid grid = reveal(plan, seen);
+      const Segmentation after = segmenter.update(grid);
+      expect_valid(grid, after);
+      expect_untouched_stable(previous, before, grid, after);
+      previous = grid;
+      before = after;
+    }
+  }
+  const Segmentation batch = segment(previous);
+  EXPECT_EQ(before.rooms.size(), batch.rooms.size());
+  const auto [precision, recall] = agreement(before.labels, batch.labels);
+  EXPECT_GT(precision, 0.95);
+  EXPECT_GT(recall, 0.95);
+}
+
+TEST(IncrementalSegmenter, DoorClosingWithDecompositionMatchesBatch) {
+  const FloorPlan plan = floor_plan();
+  IncrementalSegmenter segmenter;
+  const Segmentation first = segmenter.update(plan.world);
+  OccupancyGrid closed = plan.world;
+  closed.cells = plan.world.cells.clone();
+  closed.cells(plan.doors[2]).setTo(kOccupied);
+  const Segmentation second = segmenter.update(closed);
+  expect_valid(closed, second);
+  expect_untouched_stable(plan.world, first, closed, second);
+  EXPECT_EQ(segmenter.last_update().kind, IncrementalUpdateReport::Kind::kIncremental);
+  EXPECT_GE(segmenter.last_update().redecomposed_rooms, 1);
+  const Segmentation batch = segment(closed);
+  EXPECT_EQ(second.rooms.size(), batch.rooms.size());
+  const auto [precision, recall] = agreement(second.labels, batch.labels);
+  EXPECT_GT(precision, 0.95);
+  EXPECT_GT(recall, 0.95);
+}
+
+// Embeds grid into a larger one: `left` columns added on the left, `top` rows on top, `bottom`
+// rows below; the origin moves accordingly (ROS: origin = lower-left corner).
+OccupancyGrid grown_grid(const OccupancyGrid& grid, int left, int top, int bottom) {
+  OccupancyGrid out;
+  out.resolution = grid.resolution;
+  out.cells = cv::Mat(grid.height() + top + bottom, grid.width() + left, CV_8UC1, cv::Scalar(kUnknown));
+  grid.cells.copyTo(out.cells(cv::Rect(left, top, grid.width(), grid.height())));
+  out.origin = {grid.origin.x - left * grid.resolution, grid.origin.y - bottom * grid.resolution};
+  return out;
+}
+
+TEST(IncrementalSegmenter, MapGrowingLeftUpAndDownKeepsRoomsInTheWorld) {
+  const FloorPlan plan = floor_plan();
+  IncrementalSegmenter segmenter;
+  OccupancyGrid first = reveal(plan, {plan.corridor, plan.doors[0], plan.rooms[0], plan.doors[1], plan.rooms[1]});
+  first.origin = {3.0, -2.0};
+  const Segmentation before = segmenter.update(first);
+  expect_valid(first, before);
+
+  // Grow by 40 columns on the left and 30 rows on top, and reveal a new room out there.
+  OccupancyGrid second = grown_grid(first, 40, 30, 0);
+  EXPECT_DOUBLE_EQ(second.origin.x, 3.0 - 40 * kRes);
+  EXPECT_DOUBLE_EQ(second.origin.y, -2.0);
+  const cv::Rect extra(2, 2, 36, 60);  // a closed room in the new area
+  second.cells(cv::Rect(0, 0, 40, 64)).setTo(kOccupied);
+  second.cells(extra).setTo(kFree);
+  const Segmentation after = segmenter.update(second);
+  expect_valid(second, after);
+  EXPECT_EQ(segmenter.last_update().kind, IncrementalUpdateReport::Kind::kIncremental);
+  EXPECT_EQ(segmenter.last_update().redecomposed_rooms, 0);
+  ASSERT_EQ(after.rooms.size(), before.rooms.size() + 1);
+  for (const Room& old_room : before.rooms) {
+    const auto it = std::find_if(after.rooms.begin(), after.rooms.end(), [&](const Room& r) { return r.id == old_room.id; });
+    ASSERT_NE(it, after.rooms.end());
+    EXPECT_EQ(it->polygon, old_room.polygon);  // world metres: unchanged by the new frame
+    EXPECT_NEAR(it->centroid.x, old_room.centroid.x, 1e-9);
+    EXPECT_NEAR(it->centroid.y, old_room.centroid.y, 1e-9);
+    EXPECT_DOUBLE_EQ(it->area, old_room.area);
+  }
+  // The old labels moved by (40, 30) cells.
+  EXPECT_EQ(cv::countNonZero(after.labels(cv::Rect(40, 30, first.width(), first.height())) != before.labels), 0);
+
+  // Grow downwards too: the origin's y moves, old cells stay where they were in the world.
+  OccupancyGrid third = grown_grid(second, 0, 0, 25);
+  EXPECT_DOUBLE_EQ(third.origin.y, -2.0 - 25 * kRes);
+  const Segmentation last = segmenter.update(third, cv::Rect());  // hint: nothing changed
+  expect_valid(third, last);
+  EXPECT_EQ(segmenter.last_update().kind, IncrementalUpdateReport::Kind::kUnchanged);
+  EXPECT_EQ(cv::countNonZero(last.labels(cv::Rect(0, 0, second.width(), second.height())) != after.labels), 0);
+  EXPECT_EQ(last.rooms.size(), after.rooms.size());
+}
+
+TEST(IncrementalSegmenter, LoopClosureShiftFallsBackToBatchAndKeepsIds) {
+  const FloorPlan plan = floor_plan();
+  IncrementalSegmenter segmenter;
+  OccupancyGrid grid = plan.world;
+  grid.cells = plan.world.cells.clone();
+  const Segmentation before = segmenter.update(grid);
+  // The whole map moves by 3 cells right and 2 down (a corrected pose graph).
+  OccupancyGrid shifted = grid;
+  shifted.cells = cv::Mat(grid.cells.size(), CV_8UC1, cv::Scalar(kUnknown));
+  grid.cells(cv::Rect(0, 0, grid.width() - 3, grid.height() - 2)).copyTo(shifted.cells(cv::Rect(3, 2, grid.width() - 3, grid.height() - 2)));
+  const Segmentation after = segmenter.update(shifted);
+  expect_valid(shifted, after);
+  EXPECT_EQ(segmenter.last_update().kind, IncrementalUpdateReport::Kind::kBatch);
+  const Segmentation batch = segment(shifted);
+  EXPECT_EQ(after.rooms.size(), batch.rooms.size());
+  const auto [precision, recall] = agreement(after.labels, batch.labels);
+  EXPECT_DOUBLE_EQ(precision, 1.0);
+  EXPECT_DOUBLE_EQ(recall, 1.0);
+  // Every room overlaps its shifted self by far more than half: all ids are kept.
+  std::set<int> old_ids, new_ids;
+  for (const Room& r : before.rooms) old_ids.insert(r.id);
+  for (const Room& r : after.rooms) new_ids.insert(r.id);
+  EXPECT_EQ(old_ids, new_ids);
+}
+
+TEST(IncrementalSegmenter, SmallNoiseIsAbsorbedOrRepairedLocally) {
+  const FloorPlan plan = floor_plan();
+  IncrementalSegmenter segmenter;
+  OccupancyGrid grid = reveal(plan, {plan.corridor, plan.doors[0], plan.rooms[0], plan.doors[3], plan.rooms[3]});
+  const Segmentation first = segmenter.update(grid);
+  expect_valid(grid, first);
+
+  // Two wall cells next to the corridor read as free (sensor noise): they touch one room and are
+  // absorbed, nothing is decomposed again.
+  OccupancyGrid noisy = grid;
+  noisy.cells = grid.cells.clone();
+  const cv::Point gap(plan.rooms[1].x + 10, plan.corridor.y - 1);  // wall cell just above the corridor
+  ASSERT_EQ(noisy.cells.at<unsigned char>(gap), kOccupied);
+  noisy.cells.at<unsigned char>(gap) = kFree;
+  noisy.cells.at<unsigned char>(gap.y, gap.x + 1) = kFree;
+  const Segmentation second = segmenter.update(noisy);
+  expect_valid(noisy, second);
+  EXPECT_EQ(segmenter.last_update().absorbed_blobs, 1);
+  EXPECT_EQ(segmenter.last_update().redecomposed_rooms, 0);
+  EXPECT_EQ(second.labels.at<int>(gap), second.labels.at<int>(plan.corridor.y + 1, gap.x));
+  for (const Room& r : first.rooms) EXPECT_EQ(second.labels.at<int>(world_to_cell(grid, r.centroid)), r.id);
+
+  // A small obstacle appearing inside room 3: that room is decomposed again, the others are not.
+  OccupancyGrid blocked = noisy;
+  blocked.cells = noisy.cells.clone();
+  blocked.cells(cv::Rect(plan.rooms[3].x + 20, plan.rooms[3].y + 30, 3, 3)).setTo(kOccupied);
+  const Segmentation third = segmenter.update(blocked);
+  expect_valid(blocked, third);
+  expect_untouched_stable(noisy, second, blocked, third);
+  EXPECT_EQ(segmenter.last_update().redecomposed_rooms, 1);
+}
+
+TEST(IncrementalSegmenter, HintGivesTheSameResultAsAFullComparison) {
+  const FloorPlan plan = floor_plan();
+  IncrementalSegmenter with_hint, without_hint;
+  std::vector<cv::Rect> seen{plan.corridor};
+  OccupancyGrid previous = reveal(plan, seen);
+  with_hint.update(previous);
+  without_hint.update(previous);
+  for (std::size_t k = 0; k < plan.rooms.size(); ++k) {
+    seen.push_back(plan.doors[k]);
+    seen.push_back(plan.rooms[k]);
+    const OccupancyGrid grid = reveal(plan, seen);
+    cv::Rect hint = cv::boundingRect(grid.cells != previous.cells);
+    const Segmentation& a = with_hint.update(grid, hint);
+    const Segmentation& b = without_hint.update(grid);
+    EXPECT_EQ(cv::countNonZero(a.labels != b.labels), 0);
+    ASSERT_EQ(a.rooms.size(), b.rooms.size());
+    for (std::size_t i = 0; i < a.rooms.size(); ++i) {
+      EXPECT_EQ(a.rooms[i].id, b.rooms[i].id);
+      EXPECT_EQ(a.rooms[i].polygon, b.rooms[i].polygon);
+    }
+    EXPECT_EQ(a.passages.size(), b.passages.size());
+    previous = grid;
+  }
+}
+
+TEST(IncrementalSegmenter, CopiesOfAResultDoNotChangeOnTheNextUpdate) {
+  const FloorPlan plan = floor_plan();
+  IncrementalSegmenter segmenter;
+  const OccupancyGrid first = reveal(plan, {plan.corridor});
+  const Segmentation kept = segmenter.update(first);  // shares the label image with the state
+  const cv::Mat snapshot = kept.labels.clone();
+  const OccupancyGrid second = reveal(plan, {plan.corridor, plan.doors[1], plan.rooms[1]});
+  segmenter.update(second);
+  EXPECT_EQ(cv::countNonZero(kept.labels != snapshot), 0);
+  expect_valid(second, segmenter.result());
+}
+
+TEST(IncrementalSegmenter, UnchangedGridReturnsTheSameResult) {
+  const FloorPlan plan = floor_plan();
+  IncrementalSegmenter segmenter;
+  const Segmentation first = segmenter.update(plan.world);
+  const Segmentation second = segmenter.update(plan.world);
+  EXPECT_EQ(segmenter.last_update().kind, IncrementalUpdateReport::Kind::kUnchanged);
+  EXPECT_EQ(cv::countNonZero(first.labels != second.labels), 0);
+  // Unknown turning into obstacle changes no free cell: nothing to do either.
+  OccupancyGrid partial = reveal(plan, {plan.corridor});
+  segmenter.reset();
+  segmenter.update(partial);
+  partial.cells = partial.cells.clone();
+  partial.cells(cv::Rect(0, 0, 10, 10)).setTo(kOccupied);
+  segmenter.update(partial);
+  EXPECT_EQ(segmenter.last_update().kind, IncrementalUpdateReport::Kind::kUnchanged);
+}
+
+TEST(IncrementalSegmenter, InflationIsRecomputedLocally) {
+  const FloorPlan plan = floor_plan();
+  IncrementalOptions options;
+  options.segment.binarize.robot_radius = 0.15;
+  IncrementalSegmenter segmenter(options);
+  std::vector<cv::Rect> seen{plan.corridor};
+  OccupancyGrid previous = reveal(plan, seen);
+  Segmentation before = segmenter.update(previous);
+  for (std::size_t k = 0; k < plan.rooms.size(); ++k) {
+    seen.push_back(plan.doors[k]);
+    seen.push_back(plan.rooms[k]);
+    const OccupancyGrid grid = reveal(plan, seen);
+    const Segmentation after = segmenter.update(grid);
+    expect_valid(grid, after);
+    expect_untouched_stable(previous, before, grid, after);
+    previous = grid;
+    before = after;
+  }
+  // An obstacle inside a room only changes inflated free space around it (and its own cells).
+  OccupancyGrid blocked = previous;
+  blocked.cells = previous.cells.clone();
+  blocked.cells.at<unsigned char>(plan.rooms[2].y + 50, plan.rooms[2].x + 40) = kOccupied;
+  const Segmentation after = segmenter.update(blocked);
+  expect_valid(blocked, after);
+  EXPECT_EQ(segmenter.last_update().redecomposed_rooms, 1);
+  const Segmentation batch = segment(blocked, options.segment);
+  EXPECT_EQ(after.rooms.size(), batch.rooms.size());
+}
+
+TEST(IncrementalSegmenter, DeterministicAcrossInstances) {
+  const FloorPlan plan = floor_plan();
+  IncrementalSegmenter a, b;
+  std::vector<cv::Rect> seen{plan.corridor};
+  for (std::size_t k = 0; k < plan.rooms.size(); ++k) {
+    seen.push_back(plan.doors[k]);
+    seen.push_back(plan.rooms[k]);
+    const OccupancyGrid grid = reveal(plan, seen);
+    const Segmentation& sa = a.update(grid);
+    const Segmentation& sb = b.update(grid);
+    EXPECT_EQ(cv::countNonZero(sa.labels != sb.labels), 0);
+    ASSERT_EQ(sa.passages.size(), sb.passages.size());
+    for (std::size_t i = 0; i < sa.passages.size(); ++i) EXPECT_EQ(sa.passages[i].cut, sb.passages[i].cut);
+  }
+}
+
+TEST(IncrementalSegmenter, BadInputIsOneClearError) {
+  IncrementalSegmenter segmenter;
+  OccupancyGrid empty;
+  EXPECT_THROW(segmenter.update(empty), Error);
+  IncrementalOptions bad;
+  bad.segment.concavity = -1.0;
+  EXPECT_THROW(IncrementalSegmenter{bad}, Error);
+  IncrementalOptions bad_fraction;
+  bad_fraction.batch_fraction = 0.0;
+  EXPECT_THROW(IncrementalSegmenter{bad_fraction}, Error);
+  // After a failed update the segmenter still works.
+  const FloorPlan plan = floor_plan();
+  expect_valid(plan.world, segmenter.update(plan.world));
+}
+
+TEST(IncrementalSegmenter, StateIsProportionalToTheMap) {
+  const FloorPlan plan = floor_plan();
+  IncrementalSegmenter segmenter;
+  segmenter.update(plan.world);
+  const std::size_t cells = plan.world.cells.total();
+  EXPECT_GE(segmenter.state_bytes(), 6 * cells);  // grid copy, free space, labels
+  EXPECT_LT(segmenter.state_bytes(), 8 * cells);
+}
+
+}  // namespace
+}  // namespace topocut
