@@ -144,6 +144,36 @@ TEST(Segment, BormannMapTrivialMode) {
   EXPECT_EQ(static_cast<int>(s.rooms.size()), big);
 }
 
+TEST(Segment, SameInputSameOutput) {
+  const OccupancyGrid grid = read_map(bundled("floorplan"));
+  const Segmentation a = segment(grid);
+  const Segmentation b = segment(grid);
+  EXPECT_EQ(cv::countNonZero(a.labels != b.labels), 0);
+  ASSERT_EQ(a.rooms.size(), b.rooms.size());
+  for (std::size_t i = 0; i < a.rooms.size(); ++i) EXPECT_EQ(a.rooms[i].polygon, b.rooms[i].polygon);
+  ASSERT_EQ(a.passages.size(), b.passages.size());
+  for (std::size_t i = 0; i < a.passages.size(); ++i) EXPECT_EQ(a.passages[i].cut, b.passages[i].cut);
+}
+
+TEST(Segment, StagesComposeToSegment) {
+  // The stages an incremental segmenter reuses give exactly what segment() gives.
+  const OccupancyGrid grid = read_map(bundled("furnished"));
+  const SegmentOptions options;
+  const cv::Mat free = segmentation_free_space(grid, options);
+  const FreeSpacePolygons polygons = free_space_polygons(free, grid.resolution, options.contours);
+  PieceSet pieces;
+  for (const FreeSpaceComponent& c : polygons.components) pieces.append(decompose_component(c, grid.resolution, options));
+  const Segmentation staged = rooms_from_pieces(grid, pieces);
+  EXPECT_EQ(cv::countNonZero(staged.labels != segment(grid, options).labels), 0);
+  // Trivial mode hands back the component itself.
+  SegmentOptions plain = options;
+  plain.decompose = false;
+  const PieceSet one = decompose_component(polygons.components[0], grid.resolution, plain);
+  ASSERT_EQ(one.pieces.size(), 1u);
+  EXPECT_EQ(one.pieces[0], polygons.components[0].polygon);
+  EXPECT_TRUE(one.cuts.empty());
+}
+
 TEST(Segment, BadInput) {
   OccupancyGrid none{cv::Mat(10, 10, CV_8UC1, cv::Scalar(kOccupied)), 0.05, {}};
   try {
