@@ -94,7 +94,7 @@ void simple_hole(PassState& st, int h) {
     for (int c : ring) {
       if (c == d.m1 || c == d.m2) continue;
       const double v = dline(poly.pt[c], a, b);
-      if (v > best) {
+      if (v > best || (v == best && poly.pt[c] < poly.pt[far])) {
         best = v;
         far = c;
       }
@@ -148,13 +148,20 @@ void complex_hole(PassState& st, int h, const std::vector<std::pair<int, int>>& 
       }
     }
   };
+  // Ties between equally deep roots go to the geometrically smallest cut, not to ring order, so
+  // the result does not depend on where the ring starts.
+  auto ends_sorted = [&](int i) {
+    Pt a = poly.pt[cuts[i].first], b = poly.pt[cuts[i].second];
+    if (b < a) std::swap(a, b);
+    return std::pair{a, b};
+  };
   int root = 0, best = std::numeric_limits<int>::max();
   for (int i = 0; i < k; ++i) {
     std::vector<std::pair<int, int>> a, b;
     std::vector<int> ai, bi;
     sides(i, a, b, ai, bi);
     const int depth = 1 + std::max(nesting_depth(a), nesting_depth(b));
-    if (depth < best) {
+    if (depth < best || (depth == best && ends_sorted(i) < ends_sorted(root))) {
       best = depth;
       root = i;
     }
@@ -224,7 +231,8 @@ void complex_hole(PassState& st, int h, const std::vector<std::pair<int, int>>& 
     if (is_reflex(poly, c)) st.concavity[c] = end_hc[c];
   }
   // §4.3.5 the root's end points.
-  const int rs = cuts[root].first, rt = cuts[root].second;
+  int rs = cuts[root].first, rt = cuts[root].second;
+  if (poly.pt[rt] < poly.pt[rs]) std::swap(rs, rt);  // "start" end point: the smaller point
   for (const auto& [r, q] : {std::pair{rs, rt}, std::pair{rt, rs}}) {
     if (!is_reflex(poly, r)) continue;
     int pre = -1, nxt = -1;

@@ -108,6 +108,20 @@ std::vector<std::pair<int, int>> filter_top(const PassState& st, std::vector<std
   if (options.candidates == CandidateCuts::kReference) {
     for (auto& cut : cuts) cut = repair(st, cut);
   }
+  // The filters below depend on the order of the cuts and of their end points: use geometry (the
+  // smaller point first, cuts by their points), not ring positions, so that where a ring starts
+  // does not matter.
+  for (auto& cut : cuts) {
+    if (poly.pt[cut.second] < poly.pt[cut.first] ||
+        (poly.pt[cut.second] == poly.pt[cut.first] && cut.second < cut.first)) {
+      std::swap(cut.first, cut.second);
+    }
+  }
+  std::sort(cuts.begin(), cuts.end(), [&](const auto& x, const auto& y) {
+    if (poly.pt[x.first] != poly.pt[y.first]) return poly.pt[x.first] < poly.pt[y.first];
+    if (poly.pt[x.second] != poly.pt[y.second]) return poly.pt[x.second] < poly.pt[y.second];
+    return x < y;
+  });
   std::vector<std::pair<int, int>> kept;
   std::unordered_set<std::uint64_t> seen;
   for (std::size_t i = 0; i < cuts.size(); ++i) {
@@ -133,7 +147,7 @@ std::vector<std::pair<int, int>> filter_top(const PassState& st, std::vector<std
   const std::vector<char> keep = non_crossing_prefix(poly, valid);
   std::vector<std::pair<int, int>> result;
   for (std::size_t i = 0; i < valid.size(); ++i) {
-    if (keep[i]) result.push_back(valid[i]);
+    if (keep[i]) result.emplace_back(std::min(valid[i].first, valid[i].second), std::max(valid[i].first, valid[i].second));
   }
   return result;
 }

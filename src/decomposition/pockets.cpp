@@ -8,16 +8,18 @@ namespace topocut::dude {
 
 namespace {
 
-// The pocket polygon of a root pocket (§3.2.1): e, prev(e), ..., s, counter-clockwise.
-Poly pocket_polygon(const Poly& poly, const Pocket& pocket, std::vector<int>& map) {
+// The polygon of the chain stretch [lo, hi] (offsets from s) of a root pocket, closed by the bridge
+// line: the corners at hi, hi-1, ..., lo, counter-clockwise (§3.2.1).
+Poly pocket_polygon(const Poly& poly, int s, int lo, int hi, std::vector<int>& map) {
   std::vector<Pt> pts;
   std::vector<int> vids;
   map.clear();
-  for (int c = pocket.e;; c = poly.prev(c)) {
+  const int n = poly.ring_size(0);
+  for (int o = hi; o >= lo; --o) {
+    const int c = poly.ring_start[0] + (s - poly.ring_start[0] + o) % n;
     pts.push_back(poly.pt[c]);
     vids.push_back(poly.vid[c]);
-    map.push_back(c);
-    if (c == pocket.s) break;
+    map.push_back(o);
   }
   Poly q;
   q.add_ring(pts, vids);
@@ -27,25 +29,47 @@ Poly pocket_polygon(const Poly& poly, const Pocket& pocket, std::vector<int>& ma
 // Adds the children found by the dual decomposition of root pocket `root` (§3.2).
 void add_children(PassState& st, int root) {
   const Poly& poly = st.poly;
-  std::vector<int> map;
-  const Poly q = pocket_polygon(poly, st.pockets[root], map);
-  const PassResult dual = dude_pass(q, st.settings, false, st.depth + 1);
   const int s = st.pockets[root].s;
   const int len = st.pockets[root].len;
+  const Pt& ps = poly.pt[s];
+  const Pt& pe = poly.pt[st.pockets[root].e];
+  auto corner_at = [&](int o) { return poly.ring_start[0] + (s - poly.ring_start[0] + o) % poly.ring_size(0); };
+
+  // The stretches to decompose: the whole chain, or the parts between chain vertices on the bridge.
+  std::vector<std::pair<int, int>> stretches;
+  if (st.settings.options.pocket_polygon == PocketPolygon::kReference) {
+    stretches.emplace_back(0, len);
+  } else {
+    int last = 0;
+    bool deep = false;
+    for (int o = 1; o <= len; ++o) {
+      const int c = corner_at(o);
+      if (o < len && CGAL::orientation(ps, pe, poly.pt[c]) != CGAL::COLLINEAR) {
+        deep = true;
+        continue;
+      }
+      if (deep && o - last >= 2) stretches.emplace_back(last, o);
+      last = o;
+      deep = false;
+    }
+  }
+
   struct Child {
     int lo, hi;
   };
   std::vector<Child> kids;
-  for (const auto& [x, y] : dual.cuts) {
-    int lo = poly.offset(s, map[x]);
-    int hi = poly.offset(s, map[y]);
-    if (lo > hi) std::swap(lo, hi);
-    if (hi - lo < 2 || (lo == 0 && hi == len)) continue;
-    const int cs = poly.ring_start[0] + (s - poly.ring_start[0] + lo) % poly.ring_size(0);
-    const int ce = poly.ring_start[0] + (s - poly.ring_start[0] + hi) % poly.ring_size(0);
-    // Orient by the negative-area rule (§3.1): the chain lo..hi must enclose a clockwise region.
-    if (!(chain_area2(poly, cs, ce) < 0.0)) continue;
-    kids.push_back({lo, hi});
+  std::vector<int> map;
+  for (const auto& [from, to] : stretches) {
+    const Poly q = pocket_polygon(poly, s, from, to, map);
+    const PassResult dual = dude_pass(q, st.settings, false, st.depth + 1);
+    for (const auto& [x, y] : dual.cuts) {
+      int lo = map[x], hi = map[y];
+      if (lo > hi) std::swap(lo, hi);
+      if (hi - lo < 2 || (lo == 0 && hi == len)) continue;
+      // Orient by the negative-area rule (§3.1): the chain lo..hi must enclose a clockwise region.
+      if (!(chain_area2(poly, corner_at(lo), corner_at(hi)) < 0.0)) continue;
+      kids.push_back({lo, hi});
+    }
   }
   // Dual cuts do not cross, so the chain intervals are laminar: nest them with a stack (§3.2.4).
   std::sort(kids.begin(), kids.end(), [](const Child& a, const Child& b) {
@@ -60,8 +84,8 @@ void add_children(PassState& st, int root) {
       stack.pop_back();
     }
     Pocket child;
-    child.s = poly.ring_start[0] + (s - poly.ring_start[0] + k.lo) % poly.ring_size(0);
-    child.e = poly.ring_start[0] + (s - poly.ring_start[0] + k.hi) % poly.ring_size(0);
+    child.s = corner_at(k.lo);
+    child.e = corner_at(k.hi);
     child.len = k.hi - k.lo;
     child.parent = stack.empty() ? root : stack.back();
     child.root = root;

@@ -30,6 +30,16 @@ enum class CandidateCuts {
   kReference,
 };
 
+// What the dual pass of a pocket (§3.2) decomposes.
+enum class PocketPolygon {
+  // The pocket is split where its chain touches the bridge and each part is decomposed on its own.
+  // Pockets along a flat wall (e.g. wall stubs next to a door) otherwise contain zero-width stretches
+  // on the bridge whose corners look like deep reflex vertices; their spurious dual cuts then hide
+  // the wall tips, so thin walls with doors are never cut.
+  kSplitOnBridge,
+  kReference,  // the whole chain plus the bridge as one (degenerate) polygon, as the reference
+};
+
 // The reference drops "skinny" cuts whose end points are close along the boundary (§6.5).
 enum class SkinnyCutFilter {
   kReference,  // as the reference: every selected cut but the last one in the list is tested
@@ -44,6 +54,7 @@ struct DecompositionOptions {
   CutSelection selection = CutSelection::kGreedy;
   CandidateCuts candidates = CandidateCuts::kValidated;
   SkinnyCutFilter skinny_cuts = SkinnyCutFilter::kReference;
+  PocketPolygon pocket_polygon = PocketPolygon::kSplitOnBridge;
   // The reference deletes holes whose size, min(diameter, 2 * width), is below tau (§4.2): the
   // pieces then cover them. When false such holes stay holes of the pieces (they never get cuts).
   bool absorb_small_holes = true;
