@@ -23,7 +23,8 @@ struct OverlayOptions {
 cv::Vec3b room_colour(int id);
 
 // A point inside each room (world metres) to anchor its id and graph node: the centroid when it
-// lies in the room, otherwise the room cell farthest from the room's border. Same order as rooms.
+// lies in the room at least two cells from its border, otherwise the centre of the room cell
+// farthest from the room's border. Same order as rooms.
 std::vector<Point2> room_anchor_points(const Segmentation& segmentation);
 
 // Renders the overlay (CV_8UC3, BGR): the map in grey (obstacles dark, unknown light grey), rooms
