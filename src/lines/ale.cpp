@@ -19,7 +19,7 @@ class PrefixMoments {
     }
   }
   // RMSE of points [first, last] about their total-least-squares line.
-  double rmse(std::size_t first, std::size_t last) const { return (prefix_[last + 1] - prefix_[first]).fit().sigma; }
+  double rmse(std::size_t first, std::size_t last) const { return (prefix_[last + 1] - prefix_[first]).sigma(); }
 
  private:
   Point2 origin_;

@@ -45,7 +45,7 @@ std::vector<PointRun> split_at_breakpoints(const Scan& scan, const std::vector<S
     // Beyond lambda the formula has no meaning (the step itself is too wide): always split.
     bool split = dphi >= options.lambda;
     if (!split) {
-      if (dphi != cached_dphi) {
+      if (std::abs(dphi - cached_dphi) > 1e-12) {
         cached_dphi = dphi;
         cached_factor = std::sin(dphi) / std::sin(options.lambda - dphi);
       }

@@ -25,10 +25,9 @@ Moments moments_of(const std::vector<ScanPoint>& points, const PointRun& run) {
   return m;
 }
 
-double max_distance(const std::vector<ScanPoint>& points, const PointRun& run, const LineFit& line) {
-  const NormalForm normal(line);
+double max_distance(const std::vector<ScanPoint>& points, const PointRun& run, const NormalForm& line) {
   double worst = 0.0;
-  for (std::size_t k = run.first; k <= run.last; ++k) worst = std::max(worst, normal.distance(points[k].point));
+  for (std::size_t k = run.first; k <= run.last; ++k) worst = std::max(worst, line.distance(points[k].point));
   return worst;
 }
 
@@ -89,10 +88,9 @@ void trim_run_ends(const std::vector<ScanPoint>& points, std::vector<PointRun>& 
   // keeps exactly collinear points, whose rest RMSE is rounding noise, from being dropped).
   auto outlying = [&](std::size_t end, const PointRun& rest) {
     const Moments m = moments_of(points, rest);
-    const LineFit fit = m.fit();
     const Point2& p = points[end].point;
     const double floor = 1e-9 * (1.0 + std::abs(p.x) + std::abs(p.y));
-    return m.normal_form().distance(p) > 3.0 * fit.sigma + floor;
+    return m.normal_form().distance(p) > 3.0 * m.sigma() + floor;
   };
   for (std::size_t g = 0; g < groups.size(); ++g) {
     PointRun& run = groups[g];
@@ -117,10 +115,9 @@ void merge_collinear(const std::vector<ScanPoint>& points, std::vector<PointRun>
   for (std::size_t g = 1; g < groups.size(); ++g) {
     PointRun& last = merged.back();
     if (merged_neighbours.back()) {
-      const double sa = moments_of(points, last).fit().sigma;
-      const double sb = moments_of(points, groups[g]).fit().sigma;
-      const PointRun fused{last.first, groups[g].last};
-      if (moments_of(points, fused).fit().sigma <= std::max(sa, sb) + tolerance) {
+      const Moments ma = moments_of(points, last), mb = moments_of(points, groups[g]);
+      if ((ma + mb).sigma() <= std::max(ma.sigma(), mb.sigma()) + tolerance) {
+        const PointRun fused{last.first, groups[g].last};
         last = fused;
         merged_neighbours.back() = neighbours[g];
         continue;

@@ -18,7 +18,7 @@ std::vector<ScanPoint> prepared_points(const Scan& scan);
 Moments moments_of(const std::vector<ScanPoint>& points, const PointRun& run);
 
 // Largest perpendicular distance of points[run] from the line.
-double max_distance(const std::vector<ScanPoint>& points, const PointRun& run, const LineFit& line);
+double max_distance(const std::vector<ScanPoint>& points, const PointRun& run, const NormalForm& line);
 
 // Sequential groups: consecutive runs in beam order; neighbours[i] says whether groups i and i+1
 // touch (no breakpoint between them), so their common boundary may move. Moves boundary points to

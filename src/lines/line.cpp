@@ -18,16 +18,17 @@ Line line_from_points(std::vector<std::size_t> support, const std::vector<Point2
   line.rho = fit.rho;
   line.alpha = fit.alpha;
   // Position along the line direction (-sin, cos); the extremes bound the observed wall.
-  const double tx = -std::sin(fit.alpha), ty = std::cos(fit.alpha);
-  std::size_t lo = 0, hi = 0;
+  const double nx = std::cos(fit.alpha), ny = std::sin(fit.alpha);
+  const double tx = -ny, ty = nx;
   double t_lo = 0.0, t_hi = 0.0;
   for (std::size_t k = 0; k < points.size(); ++k) {
     const double t = points[k].x * tx + points[k].y * ty;
-    if (k == 0 || t < t_lo) t_lo = t, lo = k;
-    if (k == 0 || t > t_hi) t_hi = t, hi = k;
+    if (k == 0 || t < t_lo) t_lo = t;
+    if (k == 0 || t > t_hi) t_hi = t;
   }
-  const Point2 a = project_onto_line(fit.rho, fit.alpha, points[lo]);
-  const Point2 b = project_onto_line(fit.rho, fit.alpha, points[hi]);
+  // The projection of a point is rho * n + t * direction.
+  const Point2 a{fit.rho * nx + t_lo * tx, fit.rho * ny + t_lo * ty};
+  const Point2 b{fit.rho * nx + t_hi * tx, fit.rho * ny + t_hi * ty};
   // Start on the side of the first (lowest) row, so sequential lines run in scan order.
   const double t_first = points[0].x * tx + points[0].y * ty;
   const bool first_near_lo = std::abs(t_first - t_lo) <= std::abs(t_first - t_hi);

@@ -47,6 +47,18 @@ struct Moments {
     const double suv = sxy - n * c.x * c.y;
     return from_moments(c, suu, suv, svv, n);
   }
+  // RMS perpendicular distance to the fitted line (smaller eigenvalue of the scatter matrix), without
+  // computing the line.
+  double sigma() const {
+    if (n <= 0.0) return 0.0;
+    const double cx = sx / n, cy = sy / n;
+    const double suu = std::max(0.0, sxx - n * cx * cx);
+    const double svv = std::max(0.0, syy - n * cy * cy);
+    const double suv = sxy - n * cx * cy;
+    const double half_diff = 0.5 * (suu - svv);
+    const double lambda_min = 0.5 * (suu + svv) - std::sqrt(half_diff * half_diff + suv * suv);
+    return std::sqrt(std::max(0.0, lambda_min) / n);
+  }
   // The fitted line's normal form without trigonometry: the normal is the eigenvector of the
   // smallest eigenvalue of the 2x2 scatter matrix [[suu, suv], [suv, svv]] (the same line as fit()).
   NormalForm normal_form() const {

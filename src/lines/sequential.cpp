@@ -27,6 +27,16 @@ struct Chord {
   }
 };
 
+// Whether p lies within t of the line through a and b (of a itself when they coincide), without
+// square roots: |cross(b - a, p - a)|^2 <= t^2 |b - a|^2.
+bool within_chord(const Point2& a, const Point2& b, const Point2& p, double t) {
+  const double dx = b.x - a.x, dy = b.y - a.y, px = p.x - a.x, py = p.y - a.y;
+  const double len2 = dx * dx + dy * dy;
+  if (len2 == 0.0) return px * px + py * py <= t * t;
+  const double cross = dx * py - dy * px;
+  return cross * cross <= t * t * len2;
+}
+
 // Groups of one run never touch groups of another run; inside a run they all touch.
 void append_groups(std::vector<PointRun>& groups, std::vector<bool>& neighbours, const std::vector<PointRun>& inside) {
   if (!groups.empty()) neighbours.back() = false;
@@ -52,8 +62,7 @@ std::vector<Line> extract_lines_sef(const Scan& scan, const SefOptions& options)
       // last point it cannot bend round a corner one small step at a time.
       const std::size_t middle = current.first + (current.last - current.first + 1) / 2;
       const bool follows = current.size() < 2 ||
-                           Chord(points[current.first].point, points[middle].point).distance(points[k].point) <=
-                               options.t_max;
+                           within_chord(points[current.first].point, points[middle].point, points[k].point, options.t_max);
       if (follows) {
         current.last = k;
       } else {
@@ -136,7 +145,7 @@ std::vector<Line> extract_lines_iepf(const Scan& scan, const IepfOptions& option
       std::vector<PointRun> merged{pieces.front()};
       for (std::size_t i = 1; i < pieces.size(); ++i) {
         const PointRun fused{merged.back().first, pieces[i].last};
-        if (detail::max_distance(points, fused, detail::moments_of(points, fused).fit()) <= options.t_max) {
+        if (detail::max_distance(points, fused, detail::moments_of(points, fused).normal_form()) <= options.t_max) {
           merged.back() = fused;
         } else {
           merged.push_back(pieces[i]);

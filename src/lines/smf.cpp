@@ -112,7 +112,7 @@ void merge_phase(std::vector<Cluster>& clusters, double sigma_max) {
       double best_sigma = std::numeric_limits<double>::infinity();
       for (const std::size_t j : near) {
         if (j >= clusters.size()) continue;
-        const double sigma = (clusters[i].moments + clusters[j].moments).fit().sigma;
+        const double sigma = (clusters[i].moments + clusters[j].moments).sigma();
         if (sigma < best_sigma) best_sigma = sigma, best = j;
       }
       if (best < clusters.size() && best_sigma <= sigma_max) {
@@ -151,7 +151,7 @@ std::vector<Line> extract_lines_smf(const Scan& scan, const SmfOptions& options)
       Set s = std::move(stack.back());
       stack.pop_back();
       const Moments m = moments_of(points, s);
-      if (s.size() <= 2 || m.fit().sigma <= options.sigma_max) {
+      if (s.size() <= 2 || m.sigma() <= options.sigma_max) {
         clusters.push_back({std::move(s), m});
         continue;
       }

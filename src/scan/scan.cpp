@@ -8,12 +8,6 @@
 
 namespace topocut {
 
-bool Scan::is_valid(std::size_t i) const {
-  if (i >= ranges.size() || i >= angles.size()) return false;
-  const double r = ranges[i];
-  return std::isfinite(r) && std::isfinite(angles[i]) && r > 0.0 && r >= range_min && r <= range_max;
-}
-
 void validate(const Scan& scan) {
   if (scan.angles.size() != scan.ranges.size())
     throw Error("a scan needs one angle per range, got " + std::to_string(scan.angles.size()) + " angles and " +

@@ -2,6 +2,7 @@
 // A planar laser scan: one (angle, range) pair per beam, in the sensor frame (x forward, y left,
 // angles counter-clockwise from x). Invalid readings stay in place so that beam indices always equal
 // the rows of the input; every consumer skips them through is_valid().
+#include <cmath>
 #include <cstddef>
 #include <limits>
 #include <vector>
@@ -19,7 +20,11 @@ struct Scan {
   std::size_t size() const { return ranges.size(); }
 
   // True when beam i has a usable reading: finite, > 0, within [range_min, range_max], finite angle.
-  bool is_valid(std::size_t i) const;
+  bool is_valid(std::size_t i) const {
+    if (i >= ranges.size() || i >= angles.size()) return false;
+    const double r = ranges[i];
+    return std::isfinite(r) && std::isfinite(angles[i]) && r > 0.0 && r >= range_min && r <= range_max;
+  }
 };
 
 // A valid beam as a point in the sensor frame, with the row it came from.
