@@ -53,5 +53,24 @@ TEST(BormannDataset, TrivialBaselineOnThreeMapsIsSane) {
   }
 }
 
+TEST(BormannDataset, SegmenterOptionsFlowThroughTheRunner) {
+  if (!fs::is_directory(bormann_folder())) GTEST_SKIP() << "Bormann dataset not found at " << bormann_folder();
+  DatasetRunOptions options;
+  options.maps = {"Freiburg52_scan"};
+  options.variants = {Variant::kPlain};
+  const std::vector<ImageResult> decomposed = run_dataset(bormann_folder(), options);
+  options.segment.decompose = false;
+  const std::vector<ImageResult> trivial = run_dataset(bormann_folder(), options);
+  ASSERT_EQ(decomposed.size(), 1u);
+  ASSERT_EQ(trivial.size(), 1u);
+  ASSERT_TRUE(decomposed[0].ok) << decomposed[0].error;
+  ASSERT_TRUE(trivial[0].ok) << trivial[0].error;
+  // The map is one free-space component holding ten ground-truth rooms: the baseline keeps it
+  // whole, a decomposition must split it and gain precision.
+  EXPECT_EQ(trivial[0].rooms, 1);
+  EXPECT_GT(decomposed[0].rooms, 1);
+  EXPECT_GT(decomposed[0].precision, trivial[0].precision);
+}
+
 }  // namespace
 }  // namespace topocut
