@@ -5,6 +5,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <random>
 
 #include <zlib.h>
 
@@ -163,6 +164,39 @@ TEST(CarmenLog, MaximumRangeRule) {
   EXPECT_DOUBLE_EQ(parse_carmen_log(saturated, "x", fixed).max_range, 10.0);
   fixed.max_range = -1.0;
   EXPECT_THROW(parse_carmen_log(saturated, "x", fixed), Error);
+}
+
+TEST(CarmenLog, MutatedLogsParseOrFailCleanly) {
+  // Random edits of a valid log: every outcome is a parsed log or an Error, never a crash or any
+  // other exception; parsed scans always have their announced beam count and a finite pose.
+  std::mt19937 rng(29);
+  const std::string alphabet = "0123456789 .-+eEnaifFLASERODM\n\t#x";
+  const std::string base = std::string(kSmallLog) + "FLASER 4 1 2 3 4 0 0 0 0 0 0 1 h 1\n";
+  int parsed = 0;
+  for (int trial = 0; trial < 3000; ++trial) {
+    std::string text = base;
+    const int edits = 1 + static_cast<int>(rng() % 4);
+    for (int e = 0; e < edits; ++e) {
+      const std::size_t at = rng() % text.size();
+      switch (rng() % 3) {
+        case 0: text[at] = alphabet[rng() % alphabet.size()]; break;
+        case 1: text.erase(at, 1 + rng() % 8); break;
+        default: text.insert(at, 1, alphabet[rng() % alphabet.size()]); break;
+      }
+      if (text.empty()) text = "x";
+    }
+    try {
+      const CarmenLog log = parse_carmen_log(text, "m");
+      ++parsed;
+      for (const auto& scan : log.scans) {
+        ASSERT_GE(scan.ranges.size(), 2u);
+        ASSERT_TRUE(std::isfinite(scan.pose.x) && std::isfinite(scan.pose.y) && std::isfinite(scan.pose.theta));
+      }
+      ASSERT_GT(log.max_range, 0.0);
+    } catch (const Error&) {
+    }
+  }
+  EXPECT_GT(parsed, 100);  // many edits leave a readable log
 }
 
 TEST_F(CarmenLogFile, ReadsPlainAndGzipFilesAlike) {

@@ -1,0 +1,41 @@
+#pragma once
+// From walls and the rays of the scans to an occupancy grid that pipeline A segments: cells crossed
+// by a laser ray are free, cells under a wall polygon are occupied (walls win), the rest unknown.
+#include <cstddef>
+#include <span>
+#include <vector>
+
+#include "topocut/core/geometry.h"
+#include "topocut/core/occupancy_grid.h"
+#include "topocut/walls/posed_scan.h"
+#include "topocut/walls/wall_merging.h"
+
+namespace topocut {
+
+struct WallMapOptions {
+  double resolution = 0.05;      // metres per cell
+  double wall_thickness = 0.10;  // metres: walls become rectangles this thick around their line
+  // Beams without a return (+inf range) prove free space too, but glass and dark surfaces also give
+  // no return: they are traced only this far (0: not at all).
+  double no_return_free_range = 3.0;  // metres
+  // Hits farther than this are traced as free only up to this distance (their bearing error grows).
+  double max_free_range = 30.0;  // metres
+  double margin = 1.0;           // metres of unknown around everything seen
+  std::size_t max_cells = 100'000'000;  // larger grids are refused (absurd poses or ranges)
+};
+
+// The wall as a counter-clockwise rectangle of the given thickness around its segment (a square of
+// side `thickness` for a zero-length segment).
+Ring wall_polygon(const Segment2& wall, double thickness);
+
+// wall_polygon() of every wall, in order.
+std::vector<Ring> wall_polygons(std::span<const Wall> walls, double thickness);
+
+// The grid covering the scans' poses and traced rays and the walls (plus the margin): every cell a
+// ray passes before its hit is free, every cell under a wall polygon occupied (a wall's centre line
+// is also drawn 4-connected so no free path crosses it diagonally), the rest unknown. Throws Error
+// on invalid options or when the grid would exceed max_cells.
+OccupancyGrid build_wall_map(std::span<const PosedScan> scans, std::span<const Wall> walls,
+                             const WallMapOptions& options = {});
+
+}  // namespace topocut

@@ -1,0 +1,34 @@
+#pragma once
+// Pipeline C end to end: posed scans → per-scan wall segments → merged walls → occupancy grid.
+#include <span>
+#include <string>
+#include <vector>
+
+#include "topocut/core/occupancy_grid.h"
+#include "topocut/walls/posed_scan.h"
+#include "topocut/walls/wall_extraction.h"
+#include "topocut/walls/wall_map.h"
+#include "topocut/walls/wall_merging.h"
+
+namespace topocut {
+
+struct WallsOptions {
+  WallExtractionOptions extraction;
+  WallMergeOptions merge;
+  WallMapOptions map;
+};
+
+struct WallsResult {
+  std::vector<WallSegment> segments;  // every scan's wall segments, in scan order
+  std::vector<Wall> walls;            // merged (Wall::members index segments)
+  OccupancyGrid grid;                 // walls occupied, seen space free, the rest unknown
+};
+
+// Runs the pipeline on the scans. Throws Error if there are no scans or on invalid options.
+WallsResult walls_from_scans(std::span<const PosedScan> scans, const WallsOptions& options = {});
+
+// The walls as JSON: {"units": "metres", "scans", "segments", "thickness",
+//  "walls": [{"id", "start": [x, y], "end": [x, y], "length", "observations", "polygon": [[x, y] ×4]}]}.
+std::string walls_to_json(const WallsResult& result, std::size_t scans, double thickness);
+
+}  // namespace topocut

@@ -1,0 +1,131 @@
+#include "topocut/walls/wall_map.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include <opencv2/imgproc.hpp>
+
+#include "topocut/core/error.h"
+
+namespace topocut {
+
+namespace {
+
+constexpr int kShift = 4;  // sub-pixel bits for OpenCV drawing
+constexpr double kScale = 1 << kShift;
+
+void validate(const WallMapOptions& o) {
+  auto positive = [](double v) { return std::isfinite(v) && v > 0.0; };
+  auto non_negative = [](double v) { return std::isfinite(v) && v >= 0.0; };
+  if (!positive(o.resolution))
+    throw Error("the map resolution must be a positive number of metres per cell, got " + std::to_string(o.resolution));
+  if (!non_negative(o.wall_thickness)) throw Error("the wall thickness must be a non-negative number of metres");
+  if (!non_negative(o.no_return_free_range)) throw Error("the no-return free range must be a non-negative number of metres");
+  if (!non_negative(o.max_free_range)) throw Error("the maximum free range must be a non-negative number of metres");
+  if (!non_negative(o.margin)) throw Error("the map margin must be a non-negative number of metres");
+}
+
+struct Ray {
+  Point2 from, to;
+};
+
+// The stretch of each beam known to be free: up to one cell short of a hit, or along a beam without
+// return up to the no-return limit.
+std::vector<Ray> free_rays(std::span<const PosedScan> scans, const WallMapOptions& o) {
+  std::vector<Ray> rays;
+  for (const PosedScan& posed : scans) {
+    const Scan& scan = posed.scan;
+    const Pose2& pose = posed.pose;
+    if (!std::isfinite(pose.x) || !std::isfinite(pose.y) || !std::isfinite(pose.theta)) continue;
+    const Point2 from{pose.x, pose.y};
+    for (std::size_t i = 0; i < scan.size() && i < scan.angles.size(); ++i) {
+      double reach = 0.0;
+      const double r = scan.ranges[i];
+      if (scan.is_valid(i)) {
+        reach = std::min(r - o.resolution, o.max_free_range);
+      } else if (r == std::numeric_limits<double>::infinity() && std::isfinite(scan.angles[i])) {
+        reach = std::min(o.no_return_free_range, o.max_free_range);
+      }
+      if (reach <= 0.0) continue;
+      const double a = pose.theta + scan.angles[i];
+      rays.push_back({from, {from.x + reach * std::cos(a), from.y + reach * std::sin(a)}});
+    }
+  }
+  return rays;
+}
+
+cv::Point to_pixel(const OccupancyGrid& grid, const Point2& p) {
+  // Pixel centres at integer coordinates, row 0 on top, kShift fractional bits.
+  const double column = (p.x - grid.origin.x) / grid.resolution - 0.5;
+  const double row = grid.height() - 0.5 - (p.y - grid.origin.y) / grid.resolution;
+  return {static_cast<int>(std::lround(column * kScale)), static_cast<int>(std::lround(row * kScale))};
+}
+
+}  // namespace
+
+Ring wall_polygon(const Segment2& wall, double thickness) {
+  const double length = distance(wall.a, wall.b);
+  const Point2 u = length > 0.0 ? Point2{(wall.b.x - wall.a.x) / length, (wall.b.y - wall.a.y) / length} : Point2{1.0, 0.0};
+  const Point2 n{-u.y, u.x};
+  const double h = 0.5 * thickness;
+  // Capped by half the thickness at both ends so that walls meeting at a corner close it.
+  return {{wall.a.x - h * u.x - h * n.x, wall.a.y - h * u.y - h * n.y},
+          {wall.b.x + h * u.x - h * n.x, wall.b.y + h * u.y - h * n.y},
+          {wall.b.x + h * u.x + h * n.x, wall.b.y + h * u.y + h * n.y},
+          {wall.a.x - h * u.x + h * n.x, wall.a.y - h * u.y + h * n.y}};
+}
+
+std::vector<Ring> wall_polygons(std::span<const Wall> walls, double thickness) {
+  std::vector<Ring> rings;
+  rings.reserve(walls.size());
+  for (const Wall& w : walls) rings.push_back(wall_polygon(w.segment, thickness));
+  return rings;
+}
+
+OccupancyGrid build_wall_map(std::span<const PosedScan> scans, std::span<const Wall> walls, const WallMapOptions& options) {
+  validate(options);
+  const std::vector<Ray> rays = free_rays(scans, options);
+  const std::vector<Ring> polygons = wall_polygons(walls, options.wall_thickness);
+
+  double min_x = INFINITY, min_y = INFINITY, max_x = -INFINITY, max_y = -INFINITY;
+  auto extend = [&](const Point2& p) {
+    if (!std::isfinite(p.x) || !std::isfinite(p.y)) return;
+    min_x = std::min(min_x, p.x);
+    min_y = std::min(min_y, p.y);
+    max_x = std::max(max_x, p.x);
+    max_y = std::max(max_y, p.y);
+  };
+  for (const PosedScan& s : scans) extend({s.pose.x, s.pose.y});
+  for (const Ray& r : rays) extend(r.to);
+  for (const Ring& ring : polygons)
+    for (const Point2& p : ring) extend(p);
+  if (!(min_x <= max_x)) throw Error("there is nothing to map: no scan with a finite pose and no wall");
+
+  OccupancyGrid grid;
+  grid.resolution = options.resolution;
+  grid.origin = {min_x - options.margin, min_y - options.margin};
+  const double columns = std::ceil((max_x - min_x + 2.0 * options.margin) / options.resolution) + 1.0;
+  const double rows = std::ceil((max_y - min_y + 2.0 * options.margin) / options.resolution) + 1.0;
+  if (columns * rows > static_cast<double>(options.max_cells) || columns > 1e6 || rows > 1e6)
+    throw Error("the map would span " + std::to_string(max_x - min_x) + " m by " + std::to_string(max_y - min_y) +
+                " m, " + std::to_string(static_cast<long long>(columns * rows)) + " cells at " +
+                std::to_string(options.resolution) + " m per cell (more than the limit of " +
+                std::to_string(options.max_cells) + "); check the poses or use a coarser resolution");
+  grid.cells = cv::Mat(static_cast<int>(rows), static_cast<int>(columns), CV_8UC1, cv::Scalar(kUnknown));
+
+  cv::Mat seen = cv::Mat::zeros(grid.cells.size(), CV_8UC1);
+  for (const Ray& r : rays) cv::line(seen, to_pixel(grid, r.from), to_pixel(grid, r.to), cv::Scalar(255), 1, cv::LINE_8, kShift);
+  grid.cells.setTo(cv::Scalar(kFree), seen);
+
+  for (std::size_t i = 0; i < polygons.size(); ++i) {
+    std::vector<cv::Point> corners;
+    for (const Point2& p : polygons[i]) corners.push_back(to_pixel(grid, p));
+    cv::fillConvexPoly(grid.cells, corners, cv::Scalar(kOccupied), cv::LINE_8, kShift);
+    cv::line(grid.cells, to_pixel(grid, walls[i].segment.a), to_pixel(grid, walls[i].segment.b), cv::Scalar(kOccupied), 1,
+             cv::LINE_4, kShift);
+  }
+  return grid;
+}
+
+}  // namespace topocut
