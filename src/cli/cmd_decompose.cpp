@@ -1,0 +1,139 @@
+// topocut decompose: dual-space decomposition of one polygon with holes given as JSON.
+#include <cmath>
+#include <iostream>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "cli/command.h"
+#include "topocut/core/error.h"
+#include "topocut/decomposition/decompose.h"
+#include "topocut/io/atomic_file.h"
+
+namespace topocut::cli {
+namespace {
+
+Ring parse_ring(const nlohmann::json& value, const std::string& what) {
+  if (!value.is_array()) throw Error(what + " must be an array of [x, y] points");
+  Ring ring;
+  for (const auto& point : value) {
+    if (!point.is_array() || point.size() != 2 || !point[0].is_number() || !point[1].is_number()) {
+      throw Error(what + " has a point that is not [x, y] with two numbers");
+    }
+    ring.push_back({point[0].get<double>(), point[1].get<double>()});
+  }
+  return ring;
+}
+
+PolygonWithHoles parse_polygon(const std::string& text, const std::string& path) {
+  nlohmann::json doc;
+  try {
+    doc = nlohmann::json::parse(text);
+  } catch (const nlohmann::json::exception& e) {
+    throw Error(path + " is not valid JSON: " + e.what());
+  }
+  if (!doc.is_object() || !doc.contains("outer")) {
+    throw Error(path + " must be a JSON object with \"outer\" (and optionally \"holes\")");
+  }
+  PolygonWithHoles polygon;
+  polygon.outer = parse_ring(doc["outer"], "\"outer\"");
+  if (doc.contains("holes")) {
+    if (!doc["holes"].is_array()) throw Error("\"holes\" must be an array of rings");
+    for (std::size_t i = 0; i < doc["holes"].size(); ++i) {
+      polygon.holes.push_back(parse_ring(doc["holes"][i], "hole " + std::to_string(i)));
+    }
+  }
+  return polygon;
+}
+
+nlohmann::json ring_json(const Ring& ring) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const Point2& p : ring) out.push_back({p.x, p.y});
+  return out;
+}
+
+template <class E>
+E pick(const std::string& option, const std::string& value, std::initializer_list<std::pair<const char*, E>> choices) {
+  std::string names;
+  for (const auto& [name, e] : choices) {
+    if (value == name) return e;
+    names += names.empty() ? std::string("'") + name + "'" : std::string(", '") + name + "'";
+  }
+  throw UsageError("--" + option + " must be one of " + names + ", got '" + value + "'");
+}
+
+int run(const std::vector<std::string>& args) {
+  std::string input, output, selection = "greedy", concavity = "straight", candidates = "validated";
+  std::string pockets = "split", skinny = "reference";
+  bool keep_small_holes = false, keyholes = false;
+  DecompositionOptions options;
+  double tau = 0.0;
+  po::options_description described("Decomposition");
+  described.add_options()
+      ("polygon", po::value<std::string>(&input)->required(), "polygon JSON: {\"outer\": [[x,y],...], \"holes\": [[[x,y],...],...]}")
+      ("tau", po::value<double>(&tau)->required(), "maximum concavity, in the polygon's units (> 0)")
+      ("output,o", po::value<std::string>(&output), "write the JSON here instead of standard output")
+      ("selection", po::value<std::string>(&selection)->default_value(selection), "cut selection: greedy or reference (the authors' DP)")
+      ("concavity", po::value<std::string>(&concavity)->default_value(concavity), "pocket concavity: straight (reference code) or hierarchical (paper)")
+      ("candidates", po::value<std::string>(&candidates)->default_value(candidates), "candidate cuts: validated or reference (unchecked, repaired)")
+      ("pocket-polygons", po::value<std::string>(&pockets)->default_value(pockets), "dual pass on pockets: split (at the bridge) or reference")
+      ("skinny", po::value<std::string>(&skinny)->default_value(skinny), "skinny-cut filter: reference, all or off")
+      ("keep-small-holes", po::bool_switch(&keep_small_holes), "keep holes smaller than tau instead of absorbing them")
+      ("keyholes", po::bool_switch(&keyholes), "return pieces with keyhole rings instead of restoring their holes")
+      ("max-rounds", po::value<int>(&options.max_rounds)->default_value(options.max_rounds), "cap on decomposition passes");
+  po::positional_options_description positional;
+  positional.add("polygon", 1);
+  const auto vm = parse_options(
+      "topocut decompose POLYGON.json --tau T [options]",
+      "Decomposes a polygon with holes into nearly convex pieces with the dual-space decomposition\n"
+      "(DuDe, Liu, Xi & Lien 2014): cuts between existing vertices wherever a pocket or hole is\n"
+      "deeper than tau. Rings may have any orientation. Prints JSON: the pieces (outer ring\n"
+      "counter-clockwise, holes clockwise, area), the cuts applied, and the holes smaller than tau\n"
+      "that the pieces cover.",
+      described, positional, args);
+  if (!vm) return 0;
+  if (!(tau > 0.0) || !std::isfinite(tau)) throw UsageError("--tau must be a positive number");
+  options.tau = tau;
+  options.selection = pick<CutSelection>("selection", selection, {{"greedy", CutSelection::kGreedy}, {"reference", CutSelection::kReference}});
+  options.concavity = pick<ConcavityMeasure>("concavity", concavity, {{"straight", ConcavityMeasure::kStraightLine}, {"hierarchical", ConcavityMeasure::kHierarchical}});
+  options.candidates = pick<CandidateCuts>("candidates", candidates, {{"validated", CandidateCuts::kValidated}, {"reference", CandidateCuts::kReference}});
+  options.pocket_polygon = pick<PocketPolygon>("pocket-polygons", pockets, {{"split", PocketPolygon::kSplitOnBridge}, {"reference", PocketPolygon::kReference}});
+  options.skinny_cuts = pick<SkinnyCutFilter>("skinny", skinny, {{"reference", SkinnyCutFilter::kReference}, {"all", SkinnyCutFilter::kAll}, {"off", SkinnyCutFilter::kOff}});
+  options.absorb_small_holes = !keep_small_holes;
+  options.restore_holes = !keyholes;
+  if (options.max_rounds < 1) throw UsageError("--max-rounds must be at least 1");
+  if (!output.empty()) check_writable(output);
+
+  const PolygonWithHoles polygon = parse_polygon(read_file(input), input);
+  const Decomposition result = decompose(polygon, options);
+
+  nlohmann::json out;
+  nlohmann::json pieces = nlohmann::json::array();
+  for (const PolygonWithHoles& piece : result.pieces) {
+    nlohmann::json holes = nlohmann::json::array();
+    for (const Ring& hole : piece.holes) holes.push_back(ring_json(hole));
+    pieces.push_back({{"outer", ring_json(piece.outer)}, {"holes", holes}, {"area", area(piece)}});
+  }
+  out["pieces"] = pieces;
+  nlohmann::json cuts = nlohmann::json::array();
+  for (const Cut& cut : result.cuts) {
+    cuts.push_back({{cut.segment.a.x, cut.segment.a.y}, {cut.segment.b.x, cut.segment.b.y}});
+  }
+  out["cuts"] = cuts;
+  nlohmann::json absorbed = nlohmann::json::array();
+  for (const Ring& hole : result.absorbed_holes) absorbed.push_back(ring_json(hole));
+  out["absorbed_holes"] = absorbed;
+  const std::string text = out.dump() + "\n";
+  if (output.empty()) {
+    std::cout << text;
+  } else {
+    write_file_atomically(output, text);
+  }
+  return 0;
+}
+
+const bool registered = register_command(
+    {"decompose", "split a polygon (JSON) into nearly convex pieces (dual-space decomposition)", &run});
+
+}  // namespace
+}  // namespace topocut::cli

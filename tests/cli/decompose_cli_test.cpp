@@ -1,0 +1,175 @@
+// `topocut decompose` as a user runs it: the built binary, its exit codes, its JSON and its errors.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <set>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Outcome {
+  int exit_code = -1;
+  std::string out;
+  std::string err;
+};
+
+std::string slurp(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+class DecomposeCli : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() / ("topocut_decompose_cli_" + std::to_string(::getpid()) + "_" +
+                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  fs::path write(const std::string& name, const std::string& text) {
+    const fs::path path = dir_ / name;
+    std::ofstream(path, std::ios::binary) << text;
+    return path;
+  }
+
+  Outcome run(const std::string& args) {
+    const fs::path out = dir_ / "stdout.txt", err = dir_ / "stderr.txt";
+    const std::string command = std::string(TOPOCUT_CLI) + " decompose " + args + " >" + out.string() + " 2>" + err.string();
+    const int status = std::system(command.c_str());
+    Outcome o;
+    o.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    o.out = slurp(out);
+    o.err = slurp(err);
+    return o;
+  }
+
+  // Runs with bad input: non-zero exit, nothing on stdout, exactly one error line naming `fragment`.
+  void expect_error(const std::string& args, const std::string& fragment) {
+    const Outcome o = run(args);
+    EXPECT_NE(o.exit_code, 0) << args;
+    EXPECT_TRUE(o.out.empty()) << o.out;
+    EXPECT_EQ(std::count(o.err.begin(), o.err.end(), '\n'), 1) << o.err;
+    EXPECT_NE(o.err.find("error"), std::string::npos) << o.err;
+    EXPECT_NE(o.err.find(fragment), std::string::npos) << "expected '" << fragment << "' in: " << o.err;
+  }
+
+  fs::path dir_;
+};
+
+// §9.3 of the spec: a 10x10 room with a 4x4 obstacle, given clockwise (orientation is free).
+const char* kSquareWithHole =
+    R"({"outer": [[0,0],[0,10],[10,10],[10,0]], "holes": [[[3,3],[7,3],[7,7],[3,7]]]})";
+
+TEST_F(DecomposeCli, PrintsPiecesAndCuts) {
+  const fs::path in = write("room.json", kSquareWithHole);
+  const Outcome o = run(in.string() + " --tau 4");
+  ASSERT_EQ(o.exit_code, 0) << o.err;
+  const auto doc = nlohmann::json::parse(o.out);
+  ASSERT_EQ(doc["pieces"].size(), 2u);
+  double total = 0;
+  for (const auto& piece : doc["pieces"]) {
+    EXPECT_DOUBLE_EQ(piece["area"].get<double>(), 42.0);
+    EXPECT_EQ(piece["outer"].size(), 6u);
+    EXPECT_TRUE(piece["holes"].empty());
+    total += piece["area"].get<double>();
+  }
+  EXPECT_DOUBLE_EQ(total, 84.0);
+  ASSERT_EQ(doc["cuts"].size(), 2u);
+  std::set<std::vector<double>> cuts;
+  for (const auto& c : doc["cuts"]) {
+    std::vector<double> v{c[0][0], c[0][1], c[1][0], c[1][1]};
+    if (std::make_pair(v[2], v[3]) < std::make_pair(v[0], v[1])) v = {v[2], v[3], v[0], v[1]};
+    cuts.insert(v);
+  }
+  EXPECT_EQ(cuts, (std::set<std::vector<double>>{{0, 0, 3, 3}, {7, 7, 10, 10}}));
+}
+
+TEST_F(DecomposeCli, LargeTauAbsorbsTheHoleAndWritesAFile) {
+  const fs::path in = write("room.json", kSquareWithHole);
+  const fs::path out = dir_ / "result.json";
+  const Outcome o = run(in.string() + " --tau 6 -o " + out.string());
+  ASSERT_EQ(o.exit_code, 0) << o.err;
+  EXPECT_TRUE(o.out.empty());
+  const auto doc = nlohmann::json::parse(slurp(out));
+  ASSERT_EQ(doc["pieces"].size(), 1u);
+  EXPECT_DOUBLE_EQ(doc["pieces"][0]["area"].get<double>(), 100.0);
+  EXPECT_TRUE(doc["cuts"].empty());
+  EXPECT_EQ(doc["absorbed_holes"].size(), 1u);
+}
+
+TEST_F(DecomposeCli, ReferenceOptionsAreAccepted) {
+  const fs::path in = write("l.json", R"({"outer": [[0,0],[10,0],[10,4],[4,4],[4,10],[0,10]]})");
+  const Outcome o = run(in.string() + " --tau 2 --selection reference --concavity hierarchical --candidates reference"
+                                      " --pocket-polygons reference --skinny all");
+  ASSERT_EQ(o.exit_code, 0) << o.err;
+  const auto doc = nlohmann::json::parse(o.out);
+  EXPECT_EQ(doc["pieces"].size(), 2u);
+  EXPECT_EQ(doc["cuts"].size(), 1u);
+}
+
+TEST_F(DecomposeCli, HelpExitsZero) {
+  const Outcome o = run("--help");
+  EXPECT_EQ(o.exit_code, 0);
+  EXPECT_NE(o.out.find("--tau"), std::string::npos);
+}
+
+TEST_F(DecomposeCli, RejectsSelfIntersectingRing) {
+  expect_error(write("bow.json", R"({"outer": [[0,0],[10,10],[10,0],[0,10]]})").string() + " --tau 1",
+               "intersects itself");
+}
+
+TEST_F(DecomposeCli, RejectsTooFewVertices) {
+  expect_error(write("two.json", R"({"outer": [[0,0],[1,1]]})").string() + " --tau 1", "fewer than 3");
+}
+
+TEST_F(DecomposeCli, RejectsInfiniteAndNaNCoordinates) {
+  expect_error(write("inf.json", R"({"outer": [[0,0],[1e999,0],[0,1]]})").string() + " --tau 1", "JSON");
+  expect_error(write("nan.json", R"({"outer": [[0,0],[NaN,0],[0,1]]})").string() + " --tau 1", "JSON");
+}
+
+TEST_F(DecomposeCli, RejectsHoleOutsideOuterRing) {
+  expect_error(write("out.json", R"({"outer": [[0,0],[10,0],[10,10],[0,10]], "holes": [[[20,20],[21,20],[21,21]]]})")
+                       .string() +
+                   " --tau 1",
+               "not inside the outer ring");
+}
+
+TEST_F(DecomposeCli, RejectsNonPositiveTau) {
+  const std::string in = write("room.json", kSquareWithHole).string();
+  expect_error(in + " --tau 0", "--tau");
+  expect_error(in + " --tau -3", "--tau");
+  expect_error(in, "tau");  // missing
+}
+
+TEST_F(DecomposeCli, RejectsMalformedJson) {
+  expect_error(write("bad.json", R"({"outer": [[0,0],[1,0],)").string() + " --tau 1", "not valid JSON");
+  expect_error(write("arr.json", R"([[0,0],[1,0],[0,1]])").string() + " --tau 1", "\"outer\"");
+  expect_error(write("str.json", R"({"outer": [[0,0],["1",0],[0,1]]})").string() + " --tau 1", "two numbers");
+  expect_error(write("holes.json", R"({"outer": [[0,0],[1,0],[0,1]], "holes": 3})").string() + " --tau 1", "holes");
+}
+
+TEST_F(DecomposeCli, RejectsMissingFile) {
+  expect_error((dir_ / "missing.json").string() + " --tau 1", "missing.json");
+}
+
+TEST_F(DecomposeCli, RejectsUnknownChoice) {
+  const std::string in = write("room.json", kSquareWithHole).string();
+  expect_error(in + " --tau 1 --selection best", "--selection");
+}
+
+}  // namespace
