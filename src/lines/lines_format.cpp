@@ -17,7 +17,8 @@ void append_number(std::string& out, double value) {
 }  // namespace
 
 std::string format_lines_json(const std::vector<Line>& lines) {
-  nlohmann::json array = nlohmann::json::array();
+  // ordered_json keeps the keys in the order DESIGN.md lists them.
+  nlohmann::ordered_json array = nlohmann::ordered_json::array();
   for (const Line& line : lines) {
     array.push_back({{"rho", line.rho},
                      {"alpha", line.alpha},
