@@ -7,8 +7,11 @@
 //     points still fit a line with RMSE <= the maximum threshold, and likewise for the minimum one;
 //     between the two the threshold floats: the line ends at the first point where the RMSE gradient
 //     jumps (the onset of a corner), else at the maximum-threshold end;
-//  4. the lines are fitted (total least squares) to the raw points, never to the smoothed ones, and
-//     boundary points move to the neighbouring line they fit better.
+//  4. (ours) smoothing rounds corners and can leave a short extra piece next to one: neighbouring
+//     pieces are fused when their common line's RMSE (raw points) is at most the larger of their
+//     own RMSEs plus the scaled lower threshold; boundary beams move to the neighbouring line they
+//     fit better, and lone outlying beams at segment ends are dropped, as in the sequential methods;
+//  5. the lines are fitted (total least squares) to the raw points, never to the smoothed ones.
 // Thresholds. The seeds' RMSE band (0.0025 ... 0.008 m) suits a laser with about 1 cm range noise;
 // smoothed 5 cm noise alone has an RMSE above 0.008 m. So the band is scaled by the scan's estimated
 // range noise relative to reference_noise (never below the seeds' values): the same defaults then

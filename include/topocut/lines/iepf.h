@@ -2,7 +2,10 @@
 // Iterative end-point fit (IEPF, split-and-merge). Like all sequential extractors compared by Borges & Aldon (2004) it
 // walks the valid beams in scan order: every line's support is a run of consecutive valid beams,
 // no two lines share a beam, and lines with fewer than min_points beams are dropped (their beams
-// stay unassigned).
+// stay unassigned). Two steps of ours follow every sequential method: beams at a boundary between
+// two lines move to the line they fit better (the split point and the tracking lag are otherwise
+// assigned arbitrarily), and a lone beam at the end of a segment lying more than 3 RMSE off its
+// line is dropped. Reported lines are total-least-squares fits of their beams.
 #include <cstddef>
 #include <vector>
 

@@ -7,7 +7,10 @@
 // are split again until every set satisfies sigma <= sigma_max. Merge: each line is fused with the
 // better (lower fused sigma) of its two nearest lines by centre of gravity while the fused line still
 // satisfies sigma <= sigma_max. Unlike the sequential methods, a line's support need not be a run of
-// consecutive beams (one wall seen in two pieces becomes one line), but no beam belongs to two lines.
+// consecutive beams (one wall seen in two pieces becomes one line, and a line can bridge a gap to a
+// far collinear surface), but no beam belongs to two lines. A final step of ours moves boundary
+// beams to the line of a scan neighbour they fit better (a set is accepted as soon as
+// sigma <= sigma_max, so a few beams of the neighbouring wall can otherwise stay in it).
 #include <cstddef>
 #include <vector>
 
