@@ -35,7 +35,11 @@ void refine_boundaries(const std::vector<ScanPoint>& points, std::vector<PointRu
                        const std::vector<bool>& neighbours) {
   if (groups.size() < 2) return;
   std::vector<Moments> m(groups.size());
-  for (std::size_t g = 0; g < groups.size(); ++g) m[g] = moments_of(points, groups[g]);
+  std::vector<NormalForm> line(groups.size());
+  for (std::size_t g = 0; g < groups.size(); ++g) {
+    m[g] = moments_of(points, groups[g]);
+    line[g] = m[g].normal_form();
+  }
   // A boundary can only settle once both neighbouring lines are clean, and cleaning one line may
   // move its other boundary: sweep again over the boundaries next to a changed group.
   std::vector<bool> dirty(groups.size(), true), next(groups.size(), false);
@@ -46,17 +50,14 @@ void refine_boundaries(const std::vector<ScanPoint>& points, std::vector<PointRu
       if (!neighbours[g] || (!dirty[g] && !dirty[g + 1])) continue;
       PointRun& a = groups[g];
       PointRun& b = groups[g + 1];
-      Moments& ma = m[g];
-      Moments& mb = m[g + 1];
       // The cap guards against cycling on exact ties.
       for (std::size_t guard = 0; guard < a.size() + b.size(); ++guard) {
-        const NormalForm la = ma.normal_form(), lb = mb.normal_form();
         bool moved = false;
         if (a.size() > 2) {
           const Point2& p = points[a.last].point;
-          if (lb.distance(p) < la.distance(p)) {
-            ma.remove(p);
-            mb.add(p);
+          if (line[g + 1].distance(p) < line[g].distance(p)) {
+            m[g].remove(p);
+            m[g + 1].add(p);
             --a.last;
             --b.first;
             moved = true;
@@ -64,15 +65,17 @@ void refine_boundaries(const std::vector<ScanPoint>& points, std::vector<PointRu
         }
         if (!moved && b.size() > 2) {
           const Point2& p = points[b.first].point;
-          if (la.distance(p) < lb.distance(p)) {
-            mb.remove(p);
-            ma.add(p);
+          if (line[g].distance(p) < line[g + 1].distance(p)) {
+            m[g + 1].remove(p);
+            m[g].add(p);
             ++a.last;
             ++b.first;
             moved = true;
           }
         }
         if (!moved) break;
+        line[g] = m[g].normal_form();
+        line[g + 1] = m[g + 1].normal_form();
         any = true;
         next[g] = next[g + 1] = true;
       }

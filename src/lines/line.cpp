@@ -6,6 +6,7 @@
 
 #include "topocut/core/error.h"
 #include "lines/common.h"
+#include "lines/moments.h"
 #include "topocut/lines/line_fit.h"
 
 namespace topocut {
@@ -13,7 +14,20 @@ namespace topocut {
 namespace detail {
 
 Line line_from_points(std::vector<std::size_t> support, const std::vector<Point2>& points) {
-  const LineFit fit = fit_line(points);
+  // fit_line without its residual pass (a Line carries no sigma): centroid, centred moments, polar form.
+  const double n = static_cast<double>(points.size());
+  Point2 c;
+  for (const Point2& p : points) c.x += p.x, c.y += p.y;
+  c.x /= n;
+  c.y /= n;
+  double suu = 0.0, suv = 0.0, svv = 0.0;
+  for (const Point2& p : points) {
+    const double u = p.x - c.x, v = p.y - c.y;
+    suu += u * u;
+    suv += u * v;
+    svv += v * v;
+  }
+  const LineFit fit = from_moments(c, suu, suv, svv, n);
   Line line;
   line.rho = fit.rho;
   line.alpha = fit.alpha;
