@@ -154,7 +154,20 @@ std::vector<std::pair<int, int>> filter_top(const PassState& st, std::vector<std
 
 }  // namespace
 
+struct ProfileCounters {
+  long passes[64] = {}, corners[64] = {}, cdt_passes[64] = {}, cdt_corners[64] = {};
+  ~ProfileCounters() {
+    if (!std::getenv("TOPOCUT_DUDE_PROFILE")) return;
+    for (int d = 0; d < 64; ++d) {
+      if (passes[d]) fprintf(stderr, "depth %d: passes %ld corners %ld, with PMs %ld corners %ld\n", d, passes[d], corners[d], cdt_passes[d], cdt_corners[d]);
+    }
+  }
+};
+ProfileCounters g_profile;
+
 PassResult dude_pass(const Poly& poly, const Settings& settings, bool top, int depth) {
+  g_profile.passes[std::min(depth, 63)]++;
+  g_profile.corners[std::min(depth, 63)] += poly.corners();
   PassState st(poly, settings);
   st.top = top;
   st.depth = depth;
@@ -186,7 +199,10 @@ PassResult dude_pass(const Poly& poly, const Settings& settings, bool top, int d
     for (const auto& [c, cc] : result.pms) fprintf(stderr, "%s  PM %s %g\n", ind.c_str(), P(c).c_str(), cc);
   }
   if (result.pms.empty()) return result;
-  if (st.pockets.empty() && holes_left) outer_diameter_features(st);
+  g_profile.cdt_passes[std::min(depth, 63)]++;
+  g_profile.cdt_corners[std::min(depth, 63)] += poly.corners();
+  outer_features(st);
+  if (st.roots.empty() && holes_left) outer_diameter_features(st);
   const std::vector<std::pair<int, int>> diagonals = candidate_diagonals(st);
   std::vector<std::pair<int, int>> cuts = select_cuts(st, diagonals);
   if (debug) {

@@ -40,6 +40,9 @@ struct PassState {
   std::vector<char> pm;          // final pocket minima of this pass
   std::vector<int> dpre, dnext;  // neighbouring features (§5.1)
   std::vector<Pocket> pockets;
+  std::vector<int> roots;          // root (hull-edge) pockets in ring order
+  std::vector<int> deep_roots;     // analysed by analyse_outer
+  std::vector<int> shallow_roots;  // analysed only when features are needed (outer_features)
   std::vector<char> deleted;     // per ring: hole judged noise (§4.2)
   int depth = 0;
   bool top = false;
@@ -54,8 +57,12 @@ struct PassState {
   }
 };
 
-// §3: hull, pockets (with their dual decomposition), pocket minima and outer features.
+// §3: hull and root pockets; the hierarchy and pocket minima of every root pocket that can hold one.
 void analyse_outer(PassState& st);
+// §3.2-3.4 for one root pocket: dual decomposition, minima candidates, final minima.
+void analyse_root(PassState& st, int root);
+// §3.6: completes the remaining root pockets and marks the features of the outer ring.
+void outer_features(PassState& st);
 // §4: holes as polygons; simple holes may be deleted; hole minima and hole features.
 void analyse_holes(PassState& st);
 // §5.1-5.3: features -> dpre/dnext, then candidate diagonals (corner pairs, first < second).

@@ -210,16 +210,15 @@ void analyse_outer(PassState& st) {
   for (int c = 0; c < n0; ++c) {
     if (on_hull[c]) h.push_back(c);
   }
-  std::vector<int> roots;
+  const bool straight = st.settings.options.concavity == ConcavityMeasure::kStraightLine;
   for (std::size_t k = 0; k < h.size() && h.size() >= 2; ++k) {
     const int a = h[k], b = h[(k + 1) % h.size()];
     if (poly.next(a) == b) continue;
     bool deep = false;
+    double depth = 0.0;
     for (int c = poly.next(a); c != b; c = poly.next(c)) {
-      if (CGAL::orientation(poly.pt[a], poly.pt[b], poly.pt[c]) == CGAL::LEFT_TURN) {
-        deep = true;
-        break;
-      }
+      if (CGAL::orientation(poly.pt[a], poly.pt[b], poly.pt[c]) == CGAL::LEFT_TURN) deep = true;
+      depth = std::max(depth, dseg(poly.pt[c], poly.pt[a], poly.pt[b]));
     }
     if (!deep) continue;
     Pocket pocket;
@@ -227,24 +226,38 @@ void analyse_outer(PassState& st) {
     pocket.e = b;
     pocket.len = poly.offset(a, b);
     pocket.root = static_cast<int>(st.pockets.size());
-    roots.push_back(pocket.root);
+    st.roots.push_back(pocket.root);
     st.pockets.push_back(pocket);
+    // With straight-line concavity a pocket shallower than tau cannot hold a pocket minimum: its
+    // hierarchy only yields features and owners, needed only if the pass has minima at all.
+    (straight && depth < tau ? st.shallow_roots : st.deep_roots).push_back(pocket.root);
   }
+  for (int r : st.deep_roots) analyse_root(st, r);
+}
 
-  for (int r : roots) {
-    if (st.depth < st.settings.max_depth) add_children(st, r);
-    collect_minima(st, r);
-    const Pocket& root = st.pockets[r];
-    for (int v : root.pms) {
-      const double c = st.settings.options.concavity == ConcavityMeasure::kHierarchical && st.owner[v] >= 0
-                           ? hierarchical_concavity(st, poly.pt[v], st.owner[v])
-                           : dseg(poly.pt[v], poly.pt[root.s], poly.pt[root.e]);
-      if (c >= tau) {
-        st.pm[v] = 1;
-        st.concavity[v] = c;
-      }
+void analyse_root(PassState& st, int r) {
+  const Poly& poly = st.poly;
+  if (st.depth < st.settings.max_depth) add_children(st, r);
+  collect_minima(st, r);
+  const Pocket& root = st.pockets[r];
+  for (int v : root.pms) {
+    const double c = st.settings.options.concavity == ConcavityMeasure::kHierarchical && st.owner[v] >= 0
+                         ? hierarchical_concavity(st, poly.pt[v], st.owner[v])
+                         : dseg(poly.pt[v], poly.pt[root.s], poly.pt[root.e]);
+    if (c >= st.tau()) {
+      st.pm[v] = 1;
+      st.concavity[v] = c;
     }
   }
+}
+
+void outer_features(PassState& st) {
+  const Poly& poly = st.poly;
+  const int n0 = poly.ring_size(0);
+  const double tau = st.tau();
+  for (int r : st.shallow_roots) analyse_root(st, r);
+  st.shallow_roots.clear();
+  const std::vector<int>& roots = st.roots;
 
   // §3.6 features of the outer ring.
   std::vector<char> interior(n0, 0);
