@@ -9,42 +9,10 @@
 #include "topocut/core/error.h"
 #include "topocut/decomposition/decompose.h"
 #include "topocut/io/atomic_file.h"
+#include "topocut/io/polygon_json.h"
 
 namespace topocut::cli {
 namespace {
-
-Ring parse_ring(const nlohmann::json& value, const std::string& what) {
-  if (!value.is_array()) throw Error(what + " must be an array of [x, y] points");
-  Ring ring;
-  for (const auto& point : value) {
-    if (!point.is_array() || point.size() != 2 || !point[0].is_number() || !point[1].is_number()) {
-      throw Error(what + " has a point that is not [x, y] with two numbers");
-    }
-    ring.push_back({point[0].get<double>(), point[1].get<double>()});
-  }
-  return ring;
-}
-
-PolygonWithHoles parse_polygon(const std::string& text, const std::string& path) {
-  nlohmann::json doc;
-  try {
-    doc = nlohmann::json::parse(text);
-  } catch (const nlohmann::json::exception& e) {
-    throw Error(path + " is not valid JSON: " + e.what());
-  }
-  if (!doc.is_object() || !doc.contains("outer")) {
-    throw Error(path + " must be a JSON object with \"outer\" (and optionally \"holes\")");
-  }
-  PolygonWithHoles polygon;
-  polygon.outer = parse_ring(doc["outer"], "\"outer\"");
-  if (doc.contains("holes")) {
-    if (!doc["holes"].is_array()) throw Error("\"holes\" must be an array of rings");
-    for (std::size_t i = 0; i < doc["holes"].size(); ++i) {
-      polygon.holes.push_back(parse_ring(doc["holes"][i], "hole " + std::to_string(i)));
-    }
-  }
-  return polygon;
-}
 
 nlohmann::json ring_json(const Ring& ring) {
   nlohmann::json out = nlohmann::json::array();
@@ -104,7 +72,7 @@ int run(const std::vector<std::string>& args) {
   if (options.max_rounds < 1) throw UsageError("--max-rounds must be at least 1");
   if (!output.empty()) check_writable(output);
 
-  const PolygonWithHoles polygon = parse_polygon(read_file(input), input);
+  const PolygonWithHoles polygon = parse_polygon_json(read_file(input), input);
   const Decomposition result = decompose(polygon, options);
 
   nlohmann::json out;
