@@ -43,8 +43,8 @@ struct RosMapMetadata {
 // trinary). Throws Error naming source_name and the field on a missing or invalid field.
 RosMapMetadata parse_ros_map_yaml(const std::string& yaml_text, const std::string& source_name);
 
-// Decodes image bytes (any format OpenCV reads) into one grey channel (CV_8UC1, the mean of the
-// colour channels as ROS does; 16-bit scaled to 8 bits) and a transparency mask (CV_8UC1, 255 where
+// Decodes image bytes (any format OpenCV reads) into one grey channel (CV_32FC1 on the 0..255 scale,
+// the mean of the colour channels as ROS does; 16-bit scaled down) and a transparency mask (CV_8UC1, 255 where
 // the pixel is transparent, alpha < 128). Throws Error naming source_name if it is not an image.
 void decode_map_image(const std::string& bytes, const std::string& source_name, cv::Mat& grey,
                       cv::Mat& transparent);
