@@ -2,16 +2,30 @@
 # One entry point for a fresh Debian 12 machine (as root) and for CI:
 #   bash .ci/setup.sh demo   install what is missing, build (Release), segment a bundled map
 #   bash .ci/setup.sh test   install what is missing, build (Release), run the whole test suite
-# BUILD_DIR (default build) and JOBS (default: number of cores) can be set in the environment.
+#   bash .ci/setup.sh sanitize
+#                            build with AddressSanitizer + UndefinedBehaviorSanitizer (GCC, -O1) in
+#                            build-asan and run the whole test suite there
+#   bash .ci/setup.sh fuzz SECONDS [TARGET...]
+#                            install clang, build the libFuzzer targets (fuzz/) in build-fuzz and run
+#                            each for SECONDS (fuzz/run.sh; findings in build-fuzz/findings/)
+# BUILD_DIR (default build, build-asan, build-fuzz by mode) and JOBS (default: number of cores) can
+# be set in the environment.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 mode="${1:-demo}"
-BUILD_DIR="${BUILD_DIR:-build}"
+case "$mode" in
+  sanitize) BUILD_DIR="${BUILD_DIR:-build-asan}" ;;
+  fuzz) BUILD_DIR="${BUILD_DIR:-build-fuzz}" ;;
+  demo|test) BUILD_DIR="${BUILD_DIR:-build}" ;;
+  *) echo "usage: bash .ci/setup.sh demo|test|sanitize|fuzz SECONDS [TARGET...]" >&2; exit 2 ;;
+esac
 JOBS="${JOBS:-$(nproc)}"
 
 packages=(build-essential cmake pkg-config libcgal-dev libopencv-dev libeigen3-dev libboost-dev
           libboost-program-options-dev libboost-graph-dev nlohmann-json3-dev libyaml-cpp-dev
           libgtest-dev libgmock-dev libbenchmark-dev zlib1g-dev)
+# libFuzzer comes with clang only; the other modes build with GCC.
+[ "$mode" = fuzz ] && packages+=(clang libclang-rt-14-dev)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
@@ -23,9 +37,31 @@ if [ "${#missing[@]}" -gt 0 ]; then
   apt-get install -y -qq --no-install-recommends "${missing[@]}"
 fi
 
-echo "== configuring and building in $BUILD_DIR (Release, $JOBS jobs)"
-cmake -S . -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=Release >/dev/null
-cmake --build "$BUILD_DIR" -j "$JOBS"
+case "$mode" in
+  demo|test)
+    echo "== configuring and building in $BUILD_DIR (Release, $JOBS jobs)"
+    cmake -S . -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=Release >/dev/null
+    cmake --build "$BUILD_DIR" -j "$JOBS"
+    ;;
+  sanitize)
+    # -O1 keeps the suite fast enough while the sanitizers still see every access; -g1 gives line
+    # numbers in reports. Benchmarks are not built (timings under ASan mean nothing).
+    echo "== configuring and building in $BUILD_DIR (ASan + UBSan, -O1, $JOBS jobs)"
+    cmake -S . -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1" \
+      -DTOPOCUT_SANITIZE=ON -DTOPOCUT_BUILD_BENCHMARKS=OFF >/dev/null
+    cmake --build "$BUILD_DIR" -j "$JOBS"
+    ;;
+  fuzz)
+    seconds="${2:?usage: bash .ci/setup.sh fuzz SECONDS [TARGET...]}"
+    echo "== configuring and building the fuzz targets in $BUILD_DIR (clang, libFuzzer + ASan + UBSan)"
+    cmake -S . -B "$BUILD_DIR" -DCMAKE_CXX_COMPILER=clang++-14 -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+      -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1" -DTOPOCUT_FUZZ=ON -DTOPOCUT_BUILD_TESTS=OFF \
+      -DTOPOCUT_BUILD_BENCHMARKS=OFF >/dev/null
+    fuzz_targets=()
+    for f in fuzz/fuzz_*.cpp; do fuzz_targets+=("$(basename "$f" .cpp)"); done
+    cmake --build "$BUILD_DIR" -j "$JOBS" --target "${fuzz_targets[@]}"
+    ;;
+esac
 
 case "$mode" in
   demo)
@@ -40,8 +76,19 @@ case "$mode" in
     cd "$BUILD_DIR"
     ctest --output-on-failure -j "$JOBS"
     ;;
+  sanitize)
+    cd "$BUILD_DIR"
+    # Any sanitizer report fails the test that triggered it.
+    export ASAN_OPTIONS="${ASAN_OPTIONS:-abort_on_error=1:detect_leaks=1:strict_string_checks=1:detect_stack_use_after_return=1}"
+    export UBSAN_OPTIONS="${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}"
+    ctest --output-on-failure -j "$JOBS"
+    ;;
+  fuzz)
+    shift 2
+    bash fuzz/run.sh "$seconds" "$BUILD_DIR" "$@"
+    ;;
   *)
-    echo "usage: bash .ci/setup.sh demo|test" >&2
+    echo "usage: bash .ci/setup.sh demo|test|sanitize|fuzz SECONDS [TARGET...]" >&2
     exit 2
     ;;
 esac
