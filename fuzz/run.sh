@@ -1,0 +1,32 @@
+#!/usr/bin/env bash
+# Runs every libFuzzer target (or those named) for SECONDS each, one after the other, and prints a
+# table of executions and findings. Usage:
+#   bash fuzz/run.sh SECONDS [BUILD_DIR] [TARGET...]
+# Seeds come from fuzz/corpus/<target>/ (committed, small); the grown corpus goes to
+# BUILD_DIR/corpus/<target>/ and crash/timeout/oom inputs to BUILD_DIR/findings/<target>/.
+# Exit status: non-zero if any target had a finding.
+set -uo pipefail
+cd "$(dirname "$0")/.."
+seconds="${1:?usage: bash fuzz/run.sh SECONDS [BUILD_DIR] [TARGET...]}"
+build="${2:-build-fuzz}"
+shift $(( $# >= 2 ? 2 : 1 ))
+targets=("$@")
+if [ "${#targets[@]}" -eq 0 ]; then
+  for f in fuzz/fuzz_*.cpp; do targets+=("$(basename "$f" .cpp)"); done
+fi
+status=0
+printf '| target | seconds | executions | exec/s | corpus | findings |\n|---|---|---|---|---|---|\n' > "$build/fuzz_summary.md"
+for t in "${targets[@]}"; do
+  mkdir -p "$build/corpus/$t" "$build/findings/$t"
+  log="$build/findings/$t.log"
+  "$build/$t" "$build/corpus/$t" "fuzz/corpus/$t" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 \
+    -artifact_prefix="$build/findings/$t/" -print_final_stats=1 > "$log" 2>&1
+  rc=$?
+  execs=$(grep -o 'stat::number_of_executed_units: *[0-9]*' "$log" | grep -o '[0-9]*$' | tail -1)
+  rate=$(grep -o 'stat::average_exec_per_sec: *[0-9]*' "$log" | grep -o '[0-9]*$' | tail -1)
+  corpus=$(find "$build/corpus/$t" -type f | wc -l)
+  findings=$(find "$build/findings/$t" -type f | wc -l)
+  [ "$rc" -ne 0 ] && status=1
+  printf '| %s | %s | %s | %s | %s | %s |\n' "$t" "$seconds" "${execs:-?}" "${rate:-?}" "$corpus" "$findings" | tee -a "$build/fuzz_summary.md"
+done
+exit "$status"
