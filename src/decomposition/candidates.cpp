@@ -107,6 +107,60 @@ void mark_levels(CDT& cdt, IsBoundary boundary) {
 
 bool inside_face(const CDT& cdt, Face f) { return !cdt.is_infinite(f) && f->info().level % 2 == 1; }
 
+// True when the segment between two vertices crosses no constrained edge and passes through no
+// other vertex: a walk through the triangles it crosses, with exact orientation tests.
+bool free_segment(const CDT& cdt, Vertex va, Vertex vb) {
+  Face fh;
+  int i;
+  if (cdt.is_edge(va, vb, fh, i)) return !cdt.is_constrained(CDT::Edge(fh, i));
+  const Pt& a = va->point();
+  const Pt& b = vb->point();
+  // The triangle at va whose angle contains the direction to b: (va, right, left) counter-clockwise.
+  Face f;
+  Vertex right, left;
+  auto fc = cdt.incident_faces(va), done = fc;
+  do {
+    if (!cdt.is_infinite(fc)) {
+      const int k = fc->index(va);
+      const Vertex p = fc->vertex(CDT::ccw(k)), q = fc->vertex(CDT::cw(k));
+      const CGAL::Orientation op = CGAL::orientation(a, p->point(), b);
+      const CGAL::Orientation oq = CGAL::orientation(a, q->point(), b);
+      if (op == CGAL::COLLINEAR && CGAL::angle(p->point(), a, b) == CGAL::ACUTE) return false;  // through p
+      if (oq == CGAL::COLLINEAR && CGAL::angle(q->point(), a, b) == CGAL::ACUTE) return false;  // through q
+      if (op == CGAL::LEFT_TURN && oq == CGAL::RIGHT_TURN) {
+        f = fc;
+        right = p;
+        left = q;
+        break;
+      }
+    }
+  } while (++fc != done);
+  if (f == Face()) return false;
+  Vertex third = va;
+  for (std::size_t steps = 0; steps <= cdt.number_of_faces(); ++steps) {
+    const int k = f->index(third);
+    if (cdt.is_constrained(CDT::Edge(f, k))) return false;
+    const Face g = f->neighbor(k);
+    const Vertex r = g->vertex(cdt.mirror_index(f, k));
+    if (r == vb) return true;
+    if (cdt.is_infinite(r)) return false;
+    switch (CGAL::orientation(a, b, r->point())) {
+      case CGAL::RIGHT_TURN:
+        third = right;
+        right = r;
+        break;
+      case CGAL::LEFT_TURN:
+        third = left;
+        left = r;
+        break;
+      default:
+        return false;  // through r
+    }
+    f = g;
+  }
+  return false;
+}
+
 }  // namespace
 
 std::vector<char> segments_inside(const Poly& poly, const std::vector<std::pair<int, int>>& segments,
@@ -344,11 +398,30 @@ std::vector<std::pair<int, int>> candidate_diagonals(PassState& st) {
     }
     std::sort(s_diagonals.begin(), s_diagonals.end());
   }
-  const std::vector<char> s_valid = segments_inside(poly, s_diagonals, st.deleted);
-
+  std::vector<int> all_corners;
+  all_corners.reserve(poly.corners());
+  for (int c = 0; c < poly.corners(); ++c) {
+    if (!st.deleted[poly.ring[c]]) all_corners.push_back(c);
+  }
+  PointSet set(poly, all_corners);
   std::vector<std::pair<int, int>> result;
   std::vector<std::pair<int, int>> invalid_s;  // reference mode only
   std::unordered_set<std::uint64_t> diagonal_keys;
+  std::vector<std::pair<int, int>> fine_edges;  // local point ids
+
+  // Step 2: the full-resolution polygon; simplified diagonals that lie inside it become constraints.
+  CDT cdt;
+  const std::vector<Vertex> handle = insert_points(cdt, set);
+  for (int c : all_corners) {
+    const Vertex va = handle[set.local[c]], vb = handle[set.local[poly.next(c)]];
+    if (va != vb) cdt.insert_constraint(va, vb);
+  }
+  std::vector<char> s_valid(s_diagonals.size(), 0);
+  for (std::size_t i = 0; i < s_diagonals.size(); ++i) {
+    const auto [a, b] = s_diagonals[i];
+    s_valid[i] = poly.vid[a] != poly.vid[b] && in_wedge(poly, a, poly.pt[b]) && in_wedge(poly, b, poly.pt[a]) &&
+                 free_segment(cdt, handle[set.local[a]], handle[set.local[b]]);
+  }
   for (std::size_t i = 0; i < s_diagonals.size(); ++i) {
     if (s_valid[i]) {
       result.push_back(s_diagonals[i]);
@@ -357,22 +430,7 @@ std::vector<std::pair<int, int>> candidate_diagonals(PassState& st) {
       invalid_s.push_back(s_diagonals[i]);
     }
   }
-
-  // Step 2: the full-resolution polygon with the valid simplified diagonals as extra constraints.
-  std::vector<int> all_corners;
-  all_corners.reserve(poly.corners());
-  for (int c = 0; c < poly.corners(); ++c) {
-    if (!st.deleted[poly.ring[c]]) all_corners.push_back(c);
-  }
-  PointSet set(poly, all_corners);
-  std::vector<std::pair<int, int>> fine_edges;  // local point ids
   if (invalid_s.empty()) {
-    CDT cdt;
-    const std::vector<Vertex> handle = insert_points(cdt, set);
-    for (int c : all_corners) {
-      const Vertex va = handle[set.local[c]], vb = handle[set.local[poly.next(c)]];
-      if (va != vb) cdt.insert_constraint(va, vb);
-    }
     std::unordered_set<std::uint64_t> constraint_diagonals;
     for (const auto& [a, b] : result) {
       cdt.insert_constraint(handle[set.local[a]], handle[set.local[b]]);

@@ -11,6 +11,10 @@ namespace topocut::dude {
 // other), when a hole is not strictly inside the outer ring, or when a hole lies inside another.
 PolygonWithHoles clean_and_validate(const PolygonWithHoles& polygon);
 
+// The intersection test used for inputs whose edges are too long for the grid: throws Error unless
+// the rings are simple and pairwise disjoint (exposed for tests; clean_and_validate chooses).
+void check_rings_by_triangulation(const PolygonWithHoles& polygon);
+
 // Reverses a ring but keeps its first vertex first: v0, v(n-1), ..., v1.
 Ring reversed_keep_first(const Ring& ring);
 

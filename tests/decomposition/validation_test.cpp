@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 
+#include "decomposition/dude_test_shapes.h"
+#include "decomposition/validate.h"
 #include "topocut/core/error.h"
 #include "topocut/decomposition/decompose.h"
 
@@ -68,6 +70,48 @@ TEST(DecomposeValidation, NormalisesOrientationAndRepeats) {
   ASSERT_EQ(d.pieces.size(), 1u);
   const Ring expected{{0, 0}, {10, 0}, {10, 10}, {0, 10}};  // reversed, first vertex kept
   EXPECT_EQ(d.pieces[0].outer, expected);
+}
+
+// Many holes: the grid finds a hole inside another, a hole outside, and touching holes.
+TEST(DecomposeValidation, ManyHoles) {
+  PolygonWithHoles p = square(400);
+  for (int i = 0; i < 20; ++i) {
+    for (int j = 0; j < 20; ++j) {
+      const double x = 10 + 19.5 * i, y = 10 + 19.5 * j;
+      p.holes.push_back({{x, y}, {x, y + 5}, {x + 5, y + 5}, {x + 5, y}});
+    }
+  }
+  EXPECT_NO_THROW(decompose(p, {}));
+  PolygonWithHoles q = p;
+  q.holes.push_back({{11, 11}, {11, 12}, {12, 12}});  // inside hole 0
+  expect_error(q, "hole 400 lies inside hole 0");
+  q = p;
+  q.holes.push_back({{401, 1}, {402, 1}, {402, 2}});
+  expect_error(q, "hole 400 is not inside the outer ring");
+  q = p;
+  q.holes.push_back({{15, 12}, {17, 12}, {17, 14}});  // touches hole 0's right edge at x = 15
+  expect_error(q, "intersect or touch");
+}
+
+// Long spikes overlap every grid cell; such inputs are checked with a triangulation instead.
+TEST(DecomposeValidation, SpikyInputsUseTheTriangulation) {
+  PolygonWithHoles star = test_shapes::star(3, 6000, 1, 1000, true);
+  EXPECT_NO_THROW(decompose(star, {1e9}));
+  std::swap(star.outer[100], star.outer[3100]);  // vertices from opposite sides exchanged: the ring crosses
+  expect_error(star, "intersects itself", 1e9);
+}
+
+TEST(DecomposeValidation, TriangulationCheckFindsEveryDefect) {
+  const PolygonWithHoles ok{{{0, 0}, {10, 0}, {10, 10}, {0, 10}}, {{{2, 2}, {2, 4}, {4, 4}, {4, 2}}}};
+  EXPECT_NO_THROW(dude::check_rings_by_triangulation(ok));
+  auto fails = [](const PolygonWithHoles& p) {
+    EXPECT_THROW(dude::check_rings_by_triangulation(p), Error);
+  };
+  fails({{{0, 0}, {10, 10}, {10, 0}, {0, 10}}, {}});                                     // bow tie
+  fails({{{0, 0}, {10, 0}, {5, 0}, {5, 5}}, {}});                                        // fold back
+  fails({{{0, 0}, {10, 0}, {10, 10}, {0, 10}}, {{{0, 5}, {3, 4}, {3, 6}}}});             // hole touches outer
+  fails({{{0, 0}, {10, 0}, {10, 10}, {0, 10}}, {{{2, 2}, {2, 4}, {4, 4}}, {{2, 2}, {1, 1}, {3, 1}}}});  // shared vertex
+  fails({{{0, 0}, {10, 0}, {10, 10}, {0, 10}}, {{{5, -1}, {6, 5}, {7, -1}}}});           // hole crosses outer
 }
 
 }  // namespace
