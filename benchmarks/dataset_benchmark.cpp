@@ -97,7 +97,8 @@ int run(std::vector<std::string> args) {
       std::cout << "Usage: dataset_benchmark [options]\n\nOptions (as topocut evaluate):\n"
                 << dataset_options_help()
                 << "  --repeat N             run the dataset N times, median time per image (default 1)\n"
-                   "  --floor-repetitions N  repetitions of the contour floor per image (default 5)\n";
+                   "  --floor-repetitions N  repetitions of the contour floor per image (default 5)\n\n"
+                   "Without --dataset it reads " TOPOCUT_SHARED_DIR "/datasets/bormann.\n";
       return 0;
     }
     if ((args[i] == "--repeat" || args[i] == "--floor-repetitions") && i + 1 < args.size()) {

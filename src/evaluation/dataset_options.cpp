@@ -119,7 +119,7 @@ std::string dataset_options_help() {
   std::string help;
   for (const DatasetOption& option : dataset_options()) {
     std::string left = "  --" + option.name + (option.value_name.empty() ? "" : " " + option.value_name);
-    if (left.size() < 22) left += std::string(22 - left.size(), ' ');
+    if (left.size() < 24) left += std::string(24 - left.size(), ' ');
     help += left + " " + option.help + "\n";
   }
   return help;
