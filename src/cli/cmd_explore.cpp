@@ -1,0 +1,190 @@
+// topocut explore: a simulated robot explores a map with a 360° laser while the incremental
+// segmenter keeps its rooms up to date; prints per-update times and the final quality.
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+
+#include "cli/command.h"
+#include "topocut/core/error.h"
+#include "topocut/evaluation/precision_recall.h"
+#include "topocut/exploration/exploration_frame.h"
+#include "topocut/exploration/exploration_run.h"
+#include "topocut/io/atomic_file.h"
+#include "topocut/io/map_loader.h"
+
+namespace topocut::cli {
+namespace {
+
+std::string fmt(const char* pattern, double a, double b = 0.0, double c = 0.0) {
+  char buffer[160];
+  std::snprintf(buffer, sizeof buffer, pattern, a, b, c);
+  return buffer;
+}
+
+Point2 parse_point(const std::string& text) {
+  double x = 0.0, y = 0.0;
+  char tail = 0;
+  if (std::sscanf(text.c_str(), "%lf,%lf%c", &x, &y, &tail) != 2)
+    throw UsageError("--start needs X,Y in metres (e.g. --start 3.5,-1.2), not '" + text + "'");
+  return {x, y};
+}
+
+int run(const std::vector<std::string>& args) {
+  std::string map_path, frames, gt_path, start;
+  ExplorationRunOptions options;
+  ExplorationOptions& exploration = options.exploration;
+  double concavity = options.incremental.segment.concavity;
+  unsigned seed = 0;
+  int frame_every = 1;
+  double resolution = MapLoadOptions{}.resolution;
+  bool no_hint = false;
+  po::options_description described("Exploration");
+  described.add_options()
+      ("map", po::value<std::string>(&map_path)->required(), "ground-truth map the robot explores (image or ROS YAML)")
+      ("range", po::value<double>(&exploration.range)->default_value(exploration.range), "laser range in metres (360°, 1° beams)")
+      ("step", po::value<double>(&exploration.step)->default_value(exploration.step), "metres walked between scans")
+      ("seed", po::value<unsigned>(&seed)->default_value(seed), "start choice: 0 = the most open cell, else a random free cell")
+      ("start", po::value<std::string>(&start), "start position X,Y in metres (overrides the seed)")
+      ("max-scans", po::value<int>(&exploration.max_scans)->default_value(exploration.max_scans), "stop after this many scans")
+      ("min-frontier", po::value<double>(&exploration.min_frontier)->default_value(exploration.min_frontier), "ignore frontiers shorter than this (metres)")
+      ("grow", po::bool_switch(&exploration.growing_map), "publish a map that grows with what was seen (new size and origin), as ROS does")
+      ("concavity", po::value<double>(&concavity)->default_value(concavity), "maximum concavity tau in metres")
+      ("resolution", po::value<double>(&resolution)->default_value(resolution), "metres per pixel of a plain image")
+      ("compare-batch", po::bool_switch(&options.compare_batch), "also run the batch segmenter on every update, timed")
+      ("batch-every", po::value<int>(&options.batch_every)->default_value(1), "with --compare-batch: only every N-th update (and the last)")
+      ("no-hint", po::bool_switch(&no_hint), "do not tell the segmenter which rectangle changed")
+      ("gt", po::value<std::string>(&gt_path), "ground-truth segmentation image (default: X_gt_segmentation.png next to the map)")
+      ("frames", po::value<std::string>(&frames), "write a PNG frame of every update into this folder")
+      ("frame-every", po::value<int>(&frame_every)->default_value(frame_every), "with --frames: only every N-th update (and the last)");
+  po::positional_options_description positional;
+  positional.add("map", 1);
+  const auto vm = parse_options(
+      "topocut explore MAP [--range 5] [--step 0.5] [--seed N] [--compare-batch] [--frames DIR] [options]",
+      "Simulates a robot exploring MAP: from the start it takes 360° laser scans (1° beams) ray-cast\n"
+      "on the map, builds a known map (unknown / free / occupied) from the scans, and walks in steps\n"
+      "toward the nearest reachable frontier until none is left. Every changed known map goes to the\n"
+      "incremental segmenter (which decomposes again only the rooms the change touched).\n\n"
+      "Prints the number of updates, the incremental time per update (median, p95, max), with\n"
+      "--compare-batch the batch time on the same updates, and, when the map has a ground truth\n"
+      "(X_gt_segmentation.png next to X.png or X_furnitures.png, or --gt), the final recall and\n"
+      "precision of the incremental result and of batch segmentation of the same final map.\n"
+      "--frames writes frame_NNNNN.png per update: unknown grey, rooms in their colours with ids,\n"
+      "the robot's path and laser range. Progress goes to stderr.",
+      described, positional, args);
+  if (!vm) return 0;
+  if (seed > 0xffffffffu) throw UsageError("--seed must fit in 32 bits");
+  if (frame_every < 1) throw UsageError("--frame-every must be at least 1");
+  if (options.batch_every < 1) throw UsageError("--batch-every must be at least 1");
+  exploration.seed = seed;
+  if (vm->count("start")) exploration.start = parse_point(start);
+  options.incremental.segment.concavity = concavity;
+  options.use_hint = !no_hint;
+  try {
+    validate(exploration);
+    validate(options.incremental.segment);
+  } catch (const Error& e) {
+    throw UsageError(e.what());
+  }
+
+  MapLoadOptions load;
+  load.resolution = resolution;
+  const OccupancyGrid world = load_map(map_path, load);
+  if (gt_path.empty()) gt_path = find_ground_truth(map_path);
+  cv::Mat gt_rooms;
+  if (!gt_path.empty()) {
+    gt_rooms = ground_truth_rooms(load_ground_truth(gt_path));
+    if (gt_rooms.size() != world.cells.size())
+      throw Error("the ground truth " + gt_path + " (" + std::to_string(gt_rooms.cols) + " x " +
+                  std::to_string(gt_rooms.rows) + ") differs in size from the map");
+  }
+  if (!frames.empty()) {
+    std::error_code error;
+    std::filesystem::create_directories(frames, error);
+    if (error || !std::filesystem::is_directory(frames)) throw Error("cannot create the frames folder " + frames);
+    check_writable((std::filesystem::path(frames) / "frame_00001.png").string());
+  }
+
+  int frames_written = 0;
+  int last_update = 0;
+  auto write_frame = [&](const ExplorationFrame& frame) {
+    FrameOptions frame_options;
+    frame_options.range = exploration.range;
+    frame_options.caption = "update " + std::to_string(frame.update) + ", scan " + std::to_string(frame.explorer.scans()) +
+                            ", " + std::to_string(frame.segmentation.rooms.size()) + " rooms";
+    char name[32];
+    std::snprintf(name, sizeof name, "frame_%05d.png", frame.update);
+    write_image_atomically((std::filesystem::path(frames) / name).string(),
+                           render_exploration_frame(frame.grid, frame.segmentation, frame.explorer.path(),
+                                                    frame.explorer.pose(), frame_options));
+    ++frames_written;
+  };
+  if (!frames.empty()) {
+    options.on_update = [&](const ExplorationFrame& frame) {
+      last_update = frame.update;
+      if ((frame.update - 1) % frame_every == 0) write_frame(frame);
+    };
+  }
+  options.progress = [](const std::string& line) { progress(line); };
+
+  const ExplorationRun run = run_exploration(world, options);
+  if (!frames.empty() && last_update > 0 && (last_update - 1) % frame_every != 0) {
+    // End the sequence on the finished map: the final map is the last update's grid.
+    FrameOptions frame_options;
+    frame_options.range = exploration.range;
+    frame_options.caption = "update " + std::to_string(last_update) + ", scan " + std::to_string(run.scans) + ", " +
+                            std::to_string(run.incremental.rooms.size()) + " rooms";
+    char name[32];
+    std::snprintf(name, sizeof name, "frame_%05d.png", last_update);
+    write_image_atomically((std::filesystem::path(frames) / name).string(),
+                           render_exploration_frame(run.final_map, run.incremental, run.path, run.final_pose, frame_options));
+    ++frames_written;
+  }
+
+  std::vector<double> inc, inc_wall, batch, paired;
+  for (const UpdateRecord& u : run.updates) {
+    inc.push_back(u.incremental_ms);
+    inc_wall.push_back(u.incremental_wall_ms);
+    if (u.batch_ms >= 0.0) {
+      batch.push_back(u.batch_ms);
+      paired.push_back(u.incremental_ms);
+    }
+  }
+  const UpdateTimes inc_t = update_times(inc), wall_t = update_times(inc_wall), batch_t = update_times(batch),
+                    paired_t = update_times(paired);
+  std::cout << "map: " << map_path << " (" << world.width() << " x " << world.height() << " cells, "
+            << fmt("%g m/cell)\n", world.resolution);
+  std::cout << "scans: " << run.scans << ", updates: " << run.updates.size() << " (" << run.stop_reason << "), path "
+            << fmt("%.1f m\n", run.path_length);
+  if (run.reachable_free_cells > 0)
+    std::cout << "explored: " << fmt("%.1f %% of the reachable free space\n", 100.0 * run.known_free_cells / run.reachable_free_cells);
+  std::cout << "incremental per update: " << fmt("median %.3f ms, p95 %.3f ms, ", inc_t.median, inc_t.p95)
+            << fmt("max %.2f ms (total %.1f ms; CPU time)\n", inc_t.max, inc_t.total)
+            << "  wall clock:           " << fmt("median %.3f ms, p95 %.3f ms, ", wall_t.median, wall_t.p95)
+            << fmt("max %.2f ms\n", wall_t.max);
+  if (batch_t.count > 0) {
+    std::cout << "batch per update:       " << fmt("median %.3f ms, p95 %.3f ms, ", batch_t.median, batch_t.p95)
+              << fmt("max %.2f ms (", batch_t.max) << batch_t.count << " updates compared)\n";
+    if (paired_t.median > 0.0)
+      std::cout << "speed-up on the same updates: " << fmt("%.1fx (medians)\n", batch_t.median / paired_t.median);
+  }
+  std::cout << "peak segmenter state: " << fmt("%.1f MB\n", run.peak_state_bytes / (1024.0 * 1024.0));
+  std::cout << "final rooms: incremental " << run.incremental.rooms.size() << ", batch " << run.batch.rooms.size()
+            << "\n";
+  if (!gt_rooms.empty()) {
+    auto score = [&](const Segmentation& s) {
+      return precision_recall(labels_in_frame(s.labels, run.window, world.cells.size()), gt_rooms);
+    };
+    const PrecisionRecall a = score(run.incremental), b = score(run.batch);
+    std::cout << "ground truth " << gt_path << ":\n"
+              << "  incremental: " << fmt("recall %.1f %%, precision %.1f %%\n", 100.0 * a.recall, 100.0 * a.precision)
+              << "  batch:       " << fmt("recall %.1f %%, precision %.1f %%\n", 100.0 * b.recall, 100.0 * b.precision);
+  }
+  if (!frames.empty()) std::cout << "frames: " << frames_written << " written to " << frames << "\n";
+  return 0;
+}
+
+const bool registered =
+    register_command({"explore", "simulate a robot exploring a map, segmenting it incrementally after every scan", &run});
+
+}  // namespace
+}  // namespace topocut::cli
