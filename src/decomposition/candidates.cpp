@@ -40,21 +40,29 @@ std::uint64_t pair_key(int a, int b) {
 
 // Distinct points of a set of corners: local id per point, the corners of each point.
 struct PointSet {
-  std::vector<int> local;                 // per corner of the poly: local point id or -1
-  std::vector<Pt> points;                 // per local id
-  std::vector<std::vector<int>> corners;  // per local id, ascending
-  std::unordered_map<int, int> by_vid;
+  std::vector<int> local;   // per corner of the poly: local point id or -1
+  std::vector<Pt> points;   // per local id
+  std::vector<int> first;   // per local id: its first corner (ascending corner order)
+  std::vector<int> next;    // per corner: the next corner of the same point, or -1
 
-  PointSet(const Poly& poly, const std::vector<int>& selected) : local(poly.corners(), -1) {
-    by_vid.reserve(selected.size() * 2);
-    for (int c : selected) {
-      auto [it, inserted] = by_vid.emplace(poly.vid[c], static_cast<int>(points.size()));
-      if (inserted) {
+  PointSet(const Poly& poly, const std::vector<int>& selected) : local(poly.corners(), -1), next(poly.corners(), -1) {
+    // Corners of one point are found by sorting on the vertex id (no hashing, no per-point lists).
+    std::vector<int> order(selected);
+    std::sort(order.begin(), order.end(), [&](int a, int b) {
+      return poly.vid[a] != poly.vid[b] ? poly.vid[a] < poly.vid[b] : a < b;
+    });
+    points.reserve(order.size());
+    first.reserve(order.size());
+    for (std::size_t i = 0; i < order.size(); ++i) {
+      const int c = order[i];
+      if (i > 0 && poly.vid[order[i - 1]] == poly.vid[c]) {
+        local[c] = local[order[i - 1]];
+        next[order[i - 1]] = c;
+      } else {
+        local[c] = static_cast<int>(points.size());
         points.push_back(poly.pt[c]);
-        corners.emplace_back();
+        first.push_back(c);
       }
-      local[c] = it->second;
-      corners[it->second].push_back(c);
     }
   }
 };
@@ -284,7 +292,9 @@ bool hole_span_ok(const PassState& st, int a, int b) {
 
 // The corner of local point `lp` whose interior wedge contains the direction to q, or -1.
 int corner_toward(const Poly& poly, const PointSet& set, int lp, const Pt& q) {
-  for (int c : set.corners[lp]) {
+  const int c0 = set.first[lp];
+  if (set.next[c0] < 0) return in_wedge(poly, c0, q) ? c0 : -1;
+  for (int c = c0; c >= 0; c = set.next[c]) {
     if (in_wedge(poly, c, q)) return c;
   }
   return -1;
@@ -388,8 +398,8 @@ std::vector<std::pair<int, int>> candidate_diagonals(PassState& st) {
       int b = corner_toward(poly, set, w, set.points[u]);
       if (reference) {
         // The reference stores the diagonal with the feature vertices whatever the real boundary does.
-        if (a < 0) a = set.corners[u].front();
-        if (b < 0) b = set.corners[w].front();
+        if (a < 0) a = set.first[u];
+        if (b < 0) b = set.first[w];
       }
       if (a < 0 || b < 0) continue;
       if (a > b) std::swap(a, b);

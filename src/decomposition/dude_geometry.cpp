@@ -4,7 +4,6 @@
 #include <CGAL/property_map.h>
 
 #include <algorithm>
-#include <unordered_set>
 
 #include "decomposition/dude.h"
 
@@ -119,12 +118,25 @@ std::vector<int> approx(const Poly& poly, const std::vector<int>& chain, double 
 }
 
 std::vector<int> hull_of(const Poly& poly, const std::vector<int>& corners) {
+  // Keep the first corner given for each point: sort (vertex id, position) pairs, then filter.
+  std::vector<std::pair<int, int>> keyed(corners.size());
+  for (std::size_t i = 0; i < corners.size(); ++i) keyed[i] = {poly.vid[corners[i]], static_cast<int>(i)};
+  std::sort(keyed.begin(), keyed.end());
+  std::vector<char> keep(corners.size(), 1);
+  bool repeats = false;
+  for (std::size_t i = 1; i < keyed.size(); ++i) {
+    if (keyed[i].first == keyed[i - 1].first) {
+      keep[keyed[i].second] = 0;
+      repeats = true;
+    }
+  }
   std::vector<int> unique;
-  unique.reserve(corners.size());
-  std::unordered_set<int> seen;
-  seen.reserve(corners.size() * 2);
-  for (int c : corners) {
-    if (seen.insert(poly.vid[c]).second) unique.push_back(c);
+  if (repeats) {
+    for (std::size_t i = 0; i < corners.size(); ++i) {
+      if (keep[i]) unique.push_back(corners[i]);
+    }
+  } else {
+    unique = corners;
   }
   std::vector<int> hull;
   if (unique.size() < 3) return unique;
