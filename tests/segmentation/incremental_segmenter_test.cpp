@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <map>
+#include <random>
 #include <set>
 #include <vector>
 
@@ -168,6 +169,29 @@ TEST(IncrementalSegmenter, FirstUpdateEqualsBatch) {
   EXPECT_EQ(cv::countNonZero(s.labels != batch.labels), 0);
   ASSERT_EQ(s.rooms.size(), batch.rooms.size());
   EXPECT_EQ(s.passages.size(), batch.passages.size());
+}
+
+TEST(IncrementalSegmenter, FirstUpdateEqualsBatchOnANoisyMap) {
+  // Speckle, diagonal pinches, tiny free islands and unknown patches: the paths where labels come
+  // from the breadth-first fill and the straight-line rule, not from the pieces.
+  FloorPlan plan = floor_plan();
+  std::mt19937 rng(12345);
+  cv::Mat& cells = plan.world.cells;
+  for (int i = 0; i < 3000; ++i) {
+    const int r = static_cast<int>(rng() % cells.rows), c = static_cast<int>(rng() % cells.cols);
+    const unsigned v = rng() % 3;
+    cells.at<unsigned char>(r, c) = v == 0 ? kOccupied : (v == 1 ? kFree : kUnknown);
+  }
+  IncrementalSegmenter segmenter;
+  const Segmentation& s = segmenter.update(plan.world);
+  expect_valid(plan.world, s);
+  const Segmentation batch = segment(plan.world);
+  EXPECT_EQ(cv::countNonZero(s.labels != batch.labels), 0);
+  ASSERT_EQ(s.rooms.size(), batch.rooms.size());
+  for (std::size_t i = 0; i < s.rooms.size(); ++i) {
+    EXPECT_EQ(s.rooms[i].id, batch.rooms[i].id);
+    EXPECT_EQ(s.rooms[i].polygon, batch.rooms[i].polygon);
+  }
 }
 
 TEST(IncrementalSegmenter, SeparateRoomsRevealedOneByOneKeepTheirIds) {
