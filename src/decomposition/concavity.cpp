@@ -13,7 +13,7 @@ Concavity measure_concavity(const PolygonWithHoles& polygon) {
   dude::Poly poly;
   int vid = 0;
   auto add = [&](const Ring& ring, bool ccw) {
-    Ring r = (signed_area(ring) > 0) == ccw ? ring : dude::reversed_keep_first(ring);
+    Ring r = dude::is_counter_clockwise(ring) == ccw ? ring : dude::reversed_keep_first(ring);
     std::vector<dude::Pt> pts;
     std::vector<int> vids;
     for (const Point2& p : r) {

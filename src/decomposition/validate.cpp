@@ -314,6 +314,18 @@ void check_rings_by_triangulation(const PolygonWithHoles& polygon) {
   check_with_triangulation(rings);
 }
 
+bool is_counter_clockwise(const Ring& ring) {
+  const std::size_t n = ring.size();
+  if (n < 3) return true;
+  std::size_t m = 0;
+  for (std::size_t i = 1; i < n; ++i) {
+    if (ring[i].x < ring[m].x || (ring[i].x == ring[m].x && ring[i].y < ring[m].y)) m = i;
+  }
+  // The extreme vertex of a simple ring is convex, so the turn there gives the orientation.
+  const CPoint a = cgal::to_cgal(ring[(m + n - 1) % n]), b = cgal::to_cgal(ring[m]), c = cgal::to_cgal(ring[(m + 1) % n]);
+  return CGAL::orientation(a, b, c) == CGAL::LEFT_TURN;
+}
+
 Ring reversed_keep_first(const Ring& ring) {
   Ring out;
   out.reserve(ring.size());
@@ -365,9 +377,9 @@ PolygonWithHoles clean_and_validate(const PolygonWithHoles& polygon) {
     throw Error(ring_name(nested >> 32) + " lies inside " + ring_name(nested & 0xffffffffu));
   }
 
-  if (signed_area(result.outer) < 0.0) result.outer = reversed_keep_first(result.outer);
+  if (!is_counter_clockwise(result.outer)) result.outer = reversed_keep_first(result.outer);
   for (Ring& hole : result.holes) {
-    if (signed_area(hole) > 0.0) hole = reversed_keep_first(hole);
+    if (is_counter_clockwise(hole)) hole = reversed_keep_first(hole);
   }
   return result;
 }

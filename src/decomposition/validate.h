@@ -15,6 +15,10 @@ PolygonWithHoles clean_and_validate(const PolygonWithHoles& polygon);
 // the rings are simple and pairwise disjoint (exposed for tests; clean_and_validate chooses).
 void check_rings_by_triangulation(const PolygonWithHoles& polygon);
 
+// True when a simple ring is counter-clockwise; exact (orientation at its lowest-leftmost vertex),
+// so it does not suffer from cancellation far from the origin as the shoelace sum does.
+bool is_counter_clockwise(const Ring& ring);
+
 // Reverses a ring but keeps its first vertex first: v0, v(n-1), ..., v1.
 Ring reversed_keep_first(const Ring& ring);
 
