@@ -1,8 +1,9 @@
 // Pipeline C on the shared CARMEN logs: walls from laser scans, their fidelity to the raw hits,
 // the time from file to rooms, and the labeling speed. A plain program that prints tables.
-//   walls_benchmark [--pictures DIR] [--methods] [LOG ...]
+//   walls_benchmark [--pictures DIR] [--methods] [--sweep] [LOG ...]
 // LOG names one of intel, aces, csail, fhw (default: all four). --methods adds the comparison of the
-// five line extractors; --pictures writes DIR/walls_<log>.png (walls over the raw hits | rooms).
+// five line extractors, --sweep a sweep of the labeling cell and line support; --pictures writes
+// DIR/walls_<log>.png (walls over the raw hits | rooms).
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -176,11 +177,13 @@ void write_small_png(const std::string& path, cv::Mat image, std::size_t max_byt
 int main(int argc, char** argv) {
   std::string pictures;
   bool methods = false;
+  bool sweep = false;
   std::vector<std::string> names;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "--pictures" && i + 1 < argc) pictures = argv[++i];
     else if (a == "--methods") methods = true;
+    else if (a == "--sweep") sweep = true;
     else names.push_back(a);
   }
   if (names.empty()) names = {"intel", "aces", "csail", "fhw"};
@@ -258,6 +261,28 @@ int main(int argc, char** argv) {
         std::printf("| %s | %s | %zu | %zu | %.1f %% | %.1f %% | %.0f |\n", name.c_str(), to_string(m).c_str(),
                     run.result.segments.size(), run.result.walls.size(), 100 * run.fidelity.precision,
                     100 * run.fidelity.coverage, run.segments_ms);
+      }
+    }
+  }
+  if (sweep) {
+    // The labeling cell and the minimum support of a wall line, with the default extractor.
+    std::printf("\nLabeling cell and minimum line support (%s lines):\n\n", to_string(defaults.extraction.lines.method).c_str());
+    std::printf("| log | cell m | min points | max gap m | segments | walls | wall precision | hit coverage |\n|---|---:|---:|---:|---:|---:|---:|---:|\n");
+    for (const std::string& name : names) {
+      if (!std::filesystem::exists(path_of(name))) continue;
+      for (double cell : {0.05, 0.10, 0.15}) {
+        for (std::size_t min_points : {3, 4, 5}) {
+          for (double gap : {0.3, 0.5}) {
+            WallsOptions options;
+            options.extraction.labeling.cell_size = cell;
+            options.extraction.min_points = min_points;
+            options.extraction.max_gap = gap;
+            const Run run = run_log(path_of(name), options, false);
+            std::printf("| %s | %.2f | %zu | %.1f | %zu | %zu | %.1f %% | %.1f %% |\n", name.c_str(), cell, min_points, gap,
+                        run.result.segments.size(), run.result.walls.size(), 100 * run.fidelity.precision,
+                        100 * run.fidelity.coverage);
+          }
+        }
       }
     }
   }
