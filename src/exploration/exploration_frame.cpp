@@ -29,7 +29,9 @@ cv::Mat render_exploration_frame(const OccupancyGrid& grid, const Segmentation& 
     std::vector<cv::Point> line;
     line.reserve(path.size());
     for (const Point2& p : path) line.push_back(to_image(p.x, p.y));
-    cv::polylines(image, line, false, cv::Scalar(140, 60, 20), thickness, cv::LINE_AA, kShift);
+    // A white halo under a dark line keeps the path readable over every room colour.
+    cv::polylines(image, line, false, cv::Scalar(255, 255, 255), thickness + 2, cv::LINE_AA, kShift);
+    cv::polylines(image, line, false, cv::Scalar(120, 40, 10), thickness, cv::LINE_AA, kShift);
   }
   const cv::Point centre = to_image(robot.x, robot.y);
   if (options.range > 0.0) {

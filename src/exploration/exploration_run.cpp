@@ -275,6 +275,13 @@ std::string format_update_times_table(const std::vector<IncrementalImageResult>&
   return markdown_table(rows);
 }
 
+std::string format_incremental_report(const std::vector<IncrementalImageResult>& results, const std::string& method) {
+  const std::vector<ImageResult> incremental = incremental_image_results(results);
+  return format_results_table(incremental) + "\n" + format_summary(incremental, method) +
+         format_summary(batch_image_results(results), "batch segment() on the same final maps") +
+         "\nTime per update:\n\n" + format_update_times_table(results) + "\n" + format_incremental_summary(results);
+}
+
 std::string format_incremental_summary(const std::vector<IncrementalImageResult>& results) {
   std::vector<double> all, wall, batch, paired;
   std::size_t peak = 0;

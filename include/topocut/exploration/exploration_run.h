@@ -134,6 +134,11 @@ std::string incremental_results_csv(const std::vector<IncrementalImageResult>& r
 // compared, batch median on the same updates and the ratio of the medians.
 std::string format_update_times_table(const std::vector<IncrementalImageResult>& results);
 
+// The whole report of an incremental dataset run, as `topocut evaluate --mode incremental` prints
+// it: the per-image table and summary of the final incremental maps (the same tables as batch
+// mode), the summary of batch on the same final maps, and the per-update time tables.
+std::string format_incremental_report(const std::vector<IncrementalImageResult>& results, const std::string& method);
+
 // Markdown summary over all images: all updates pooled (median, p95, max), batch on the same
 // updates and the speed-up, quality of incremental and batch on the final maps, peak state.
 std::string format_incremental_summary(const std::vector<IncrementalImageResult>& results);
