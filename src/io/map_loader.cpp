@@ -2,10 +2,15 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <sstream>
 #include <vector>
 
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <opencv2/core/utils/logger.hpp>
 #include <opencv2/imgcodecs.hpp>
 #include <yaml-cpp/yaml.h>
 
@@ -41,6 +46,34 @@ double number_field(const YAML::Node& root, const char* key, const std::string& 
   if (!std::isfinite(value)) throw Error("map YAML " + quoted(source) + ": '" + key + "' must be a finite number");
   return value;
 }
+
+// Silences standard error (and OpenCV's logger) for its lifetime. Why: the decoders under
+// cv::imdecode (libpng, OpenJPEG, ...) print their own warnings on corrupt input, but a bad map must
+// give exactly one clear error line. Process-wide while it lives; decoding is short and single-threaded.
+class QuietStderr {
+ public:
+  QuietStderr() : level_(cv::utils::logging::setLogLevel(cv::utils::logging::LOG_LEVEL_SILENT)) {
+    std::fflush(stderr);
+    saved_ = ::dup(STDERR_FILENO);
+    const int null = ::open("/dev/null", O_WRONLY | O_CLOEXEC);
+    if (saved_ >= 0 && null >= 0) ::dup2(null, STDERR_FILENO);
+    if (null >= 0) ::close(null);
+  }
+  ~QuietStderr() {
+    std::fflush(stderr);
+    if (saved_ >= 0) {
+      ::dup2(saved_, STDERR_FILENO);
+      ::close(saved_);
+    }
+    cv::utils::logging::setLogLevel(level_);
+  }
+  QuietStderr(const QuietStderr&) = delete;
+  QuietStderr& operator=(const QuietStderr&) = delete;
+
+ private:
+  cv::utils::logging::LogLevel level_;
+  int saved_ = -1;
+};
 
 }  // namespace
 
@@ -135,6 +168,7 @@ void decode_map_image(const std::string& bytes, const std::string& source, cv::M
   cv::Mat image;
   try {
     const std::vector<unsigned char> buffer(bytes.begin(), bytes.end());
+    const QuietStderr quiet;
     image = cv::imdecode(buffer, cv::IMREAD_UNCHANGED);
   } catch (const cv::Exception&) {
     image.release();
