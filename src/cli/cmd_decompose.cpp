@@ -32,7 +32,7 @@ E pick(const std::string& option, const std::string& value, std::initializer_lis
 
 int run(const std::vector<std::string>& args) {
   std::string input, output, selection = "greedy", concavity = "straight", candidates = "validated";
-  std::string pockets = "split", skinny = "reference";
+  std::string pockets = "split", skinny = "reference", hull_distance = "segment";
   bool keep_small_holes = false, keyholes = false;
   DecompositionOptions options;
   double tau = 0.0;
@@ -45,6 +45,7 @@ int run(const std::vector<std::string>& args) {
       ("concavity", po::value<std::string>(&concavity)->default_value(concavity), "pocket concavity: straight (reference code) or hierarchical (paper)")
       ("candidates", po::value<std::string>(&candidates)->default_value(candidates), "candidate cuts: validated or reference (unchecked, repaired)")
       ("pocket-polygons", po::value<std::string>(&pockets)->default_value(pockets), "dual pass on pockets: split (at the bridge) or reference")
+      ("hull-chain-distance", po::value<std::string>(&hull_distance)->default_value(hull_distance), "pocket hull-chain approximation: segment or line (reference)")
       ("skinny", po::value<std::string>(&skinny)->default_value(skinny), "skinny-cut filter: reference, all or off")
       ("keep-small-holes", po::bool_switch(&keep_small_holes), "keep holes smaller than tau instead of absorbing them")
       ("keyholes", po::bool_switch(&keyholes), "return pieces with keyhole rings instead of restoring their holes")
@@ -66,6 +67,7 @@ int run(const std::vector<std::string>& args) {
   options.concavity = pick<ConcavityMeasure>("concavity", concavity, {{"straight", ConcavityMeasure::kStraightLine}, {"hierarchical", ConcavityMeasure::kHierarchical}});
   options.candidates = pick<CandidateCuts>("candidates", candidates, {{"validated", CandidateCuts::kValidated}, {"reference", CandidateCuts::kReference}});
   options.pocket_polygon = pick<PocketPolygon>("pocket-polygons", pockets, {{"split", PocketPolygon::kSplitOnBridge}, {"reference", PocketPolygon::kReference}});
+  options.hull_chain_distance = pick<HullChainDistance>("hull-chain-distance", hull_distance, {{"segment", HullChainDistance::kSegment}, {"line", HullChainDistance::kLine}});
   options.skinny_cuts = pick<SkinnyCutFilter>("skinny", skinny, {{"reference", SkinnyCutFilter::kReference}, {"all", SkinnyCutFilter::kAll}, {"off", SkinnyCutFilter::kOff}});
   options.absorb_small_holes = !keep_small_holes;
   options.restore_holes = !keyholes;

@@ -98,8 +98,9 @@ bool is_reflex(const Poly& poly, int c);
 
 // Douglas-Peucker simplification of an open chain (corner indices) with tolerance t; returns the
 // positions (into chain) that are kept, always including both ends. A vertex is kept when its
-// distance to the line of its current segment is >= t; ties go to the lexicographically smaller point.
-std::vector<int> approx(const Poly& poly, const std::vector<int>& chain, double t);
+// distance to its current chord is >= t: the distance to the chord's line, or with
+// `segment_distance` to the chord itself. Ties go to the later vertex of the chain.
+std::vector<int> approx(const Poly& poly, const std::vector<int>& chain, double t, bool segment_distance = false);
 
 // Convex hull (strictly convex vertices, counter-clockwise) of the given corners; duplicate points
 // are represented by the first corner given for them.

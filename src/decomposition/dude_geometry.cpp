@@ -79,7 +79,7 @@ bool is_reflex(const Poly& poly, int c) {
   return CGAL::orientation(poly.pt[poly.prev(c)], poly.pt[c], poly.pt[poly.next(c)]) != CGAL::LEFT_TURN;
 }
 
-std::vector<int> approx(const Poly& poly, const std::vector<int>& chain, double t) {
+std::vector<int> approx(const Poly& poly, const std::vector<int>& chain, double t, bool segment_distance) {
   const int n = static_cast<int>(chain.size());
   std::vector<int> kept;
   if (n <= 2) {
@@ -99,7 +99,7 @@ std::vector<int> approx(const Poly& poly, const std::vector<int>& chain, double 
     double best_d = -1.0;
     for (int k = i + 1; k < j; ++k) {
       const Pt& p = poly.pt[chain[k]];
-      const double d = dline(p, a, b);
+      const double d = segment_distance ? dseg(p, a, b) : dline(p, a, b);
       if (d >= best_d) {
         best_d = d;
         best = k;

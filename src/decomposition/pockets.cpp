@@ -136,7 +136,10 @@ void collect_minima(PassState& st, int p) {
   }
   hullchain.push_back(b.e);
 
-  const std::vector<int> kept = approx(poly, hullchain, 0.75 * tau);
+  // The reference measures a vertex's deviation from the line of its chord; a vertex beyond the end
+  // of the bridge (a needle-shaped pocket) is then dropped although it is deep (§8.4).
+  const bool segment = st.settings.options.hull_chain_distance == HullChainDistance::kSegment;
+  const std::vector<int> kept = approx(poly, hullchain, 0.75 * tau, segment);
   std::vector<int> own;
   for (std::size_t i = 1; i + 1 < kept.size(); ++i) {
     const int v = hullchain[kept[i]];

@@ -115,7 +115,7 @@ TEST_F(DecomposeCli, LargeTauAbsorbsTheHoleAndWritesAFile) {
 TEST_F(DecomposeCli, ReferenceOptionsAreAccepted) {
   const fs::path in = write("l.json", R"({"outer": [[0,0],[10,0],[10,4],[4,4],[4,10],[0,10]]})");
   const Outcome o = run(in.string() + " --tau 2 --selection reference --concavity hierarchical --candidates reference"
-                                      " --pocket-polygons reference --skinny all");
+                                      " --pocket-polygons reference --hull-chain-distance line --skinny all");
   ASSERT_EQ(o.exit_code, 0) << o.err;
   const auto doc = nlohmann::json::parse(o.out);
   EXPECT_EQ(doc["pieces"].size(), 2u);

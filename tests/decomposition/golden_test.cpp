@@ -8,6 +8,7 @@
 #include <set>
 #include <utility>
 
+#include "topocut/decomposition/concavity.h"
 #include "topocut/decomposition/decompose.h"
 
 namespace topocut {
@@ -39,20 +40,40 @@ std::vector<double> sorted_areas(const Decomposition& d) {
   return areas;
 }
 
-// The golden tests run with the default (greedy) selection and again with the reference DP.
-CutSelection g_selection = CutSelection::kGreedy;
+// Every switch set to the reference's behaviour (dude-algorithm.md), for parity checks.
+DecompositionOptions reference_options() {
+  DecompositionOptions o;
+  o.selection = CutSelection::kReference;
+  o.concavity = ConcavityMeasure::kStraightLine;
+  o.candidates = CandidateCuts::kReference;
+  o.skinny_cuts = SkinnyCutFilter::kReference;
+  o.pocket_polygon = PocketPolygon::kReference;
+  o.hull_chain_distance = HullChainDistance::kLine;
+  return o;
+}
+
+// The worked examples run with the defaults (greedy selection), the defaults with the reference
+// DP selection, and with every switch at the reference's behaviour.
+enum class Config { kDefault, kReferenceDp, kReference };
+Config g_config = Config::kDefault;
+
+DecompositionOptions options_for(Config c) {
+  if (c == Config::kReference) return reference_options();
+  DecompositionOptions o;
+  if (c == Config::kReferenceDp) o.selection = CutSelection::kReference;
+  return o;
+}
 
 Decomposition run(const PolygonWithHoles& p, double tau) {
-  DecompositionOptions o;
+  DecompositionOptions o = options_for(g_config);
   o.tau = tau;
-  o.selection = g_selection;
   return decompose(p, o);
 }
 
-class DudeGolden : public ::testing::TestWithParam<CutSelection> {
+class DudeGolden : public ::testing::TestWithParam<Config> {
  protected:
-  void SetUp() override { g_selection = GetParam(); }
-  void TearDown() override { g_selection = CutSelection::kGreedy; }
+  void SetUp() override { g_config = GetParam(); }
+  void TearDown() override { g_config = Config::kDefault; }
 };
 
 const PolygonWithHoles kLRoom{{{0, 0}, {10, 0}, {10, 4}, {4, 4}, {4, 10}, {0, 10}}, {}};
@@ -155,15 +176,13 @@ TEST_P(DudeGolden, FloorPlanTau8GivesRoomsAndCorridor) {
   expect_rooms_and_corridor(d);
 }
 
-TEST_P(DudeGolden, FloorPlanTau8WithReferencePocketPolygons) {
-  // With the reference's pocket polygons all doors are cut in the first pass, doors 1 and 3 on the
+TEST(DudeGoldenReference, FloorPlanDoorsAsTheReference) {
+  // With the reference's switches all doors are cut in the first pass, doors 1 and 3 on the
   // reference's jambs. The reference cuts door 2 diagonally, (46,12)-(52,10); we cut it at corridor
   // level: the jamb choice rests on how the reference builds the hull chain of a pocket whose chain
   // crosses its own (dual-cut) bridge, which the spec leaves open (§9.4 notes rotation changes it too).
-  DecompositionOptions o;
+  DecompositionOptions o = reference_options();
   o.tau = 8;
-  o.pocket_polygon = PocketPolygon::kReference;
-  o.selection = g_selection;
   const Decomposition d = decompose(kFloorPlan, o);
   expect_rooms_and_corridor(d);
   const std::set<Key> cuts = cut_keys(d, 0);
@@ -214,24 +233,30 @@ const PolygonWithHoles kReferenceFailure{
     {{-26.48, 1.447}, {-47.544, 76.043}, {-56.505, 51.182}, {-53.975, 11.086}, {-81.991, 12.546}, {-27.112, 1.784}},
     {}};
 
-TEST_P(DudeGolden, ReferenceFailureIsFixed) {
-  const Decomposition d = run(kReferenceFailure, 3);
-  ASSERT_EQ(d.pieces.size(), 2u);
-  EXPECT_EQ(cut_keys(d), (std::set<Key>{key(-53.975, 11.086, -27.112, 1.784)}));
+TEST(DudeGoldenReference, ReferenceFailureIsFixed) {
+  for (const CutSelection selection : {CutSelection::kGreedy, CutSelection::kReference}) {
+    DecompositionOptions o;
+    o.tau = 3;
+    o.selection = selection;
+    const Decomposition d = decompose(kReferenceFailure, o);
+    ASSERT_EQ(d.pieces.size(), 2u);
+    EXPECT_EQ(cut_keys(d), (std::set<Key>{key(-53.975, 11.086, -27.112, 1.784)}));
+    for (const PolygonWithHoles& piece : d.pieces) EXPECT_LT(measure_concavity(piece).max(), 3.0);
+  }
 }
 
-TEST_P(DudeGolden, ReferenceFailureIsReproducedInReferenceMode) {
-  DecompositionOptions o;
+TEST(DudeGoldenReference, ReferenceFailureIsReproducedInReferenceMode) {
+  DecompositionOptions o = reference_options();
   o.tau = 3;
-  o.candidates = CandidateCuts::kReference;
-  o.selection = g_selection;
   const Decomposition d = decompose(kReferenceFailure, o);
   EXPECT_EQ(d.pieces.size(), 1u);
   EXPECT_TRUE(d.cuts.empty());
 }
 
-INSTANTIATE_TEST_SUITE_P(Selections, DudeGolden, ::testing::Values(CutSelection::kGreedy, CutSelection::kReference),
-                         [](const auto& info) { return info.param == CutSelection::kGreedy ? "Greedy" : "ReferenceDP"; });
+INSTANTIATE_TEST_SUITE_P(Configs, DudeGolden, ::testing::Values(Config::kDefault, Config::kReferenceDp, Config::kReference),
+                         [](const auto& info) {
+                           return info.param == Config::kDefault ? "Default" : info.param == Config::kReferenceDp ? "ReferenceDP" : "Reference";
+                         });
 
 }  // namespace
 }  // namespace topocut

@@ -40,6 +40,14 @@ enum class PocketPolygon {
   kReference,  // the whole chain plus the bridge as one (degenerate) polygon, as the reference
 };
 
+// How far a vertex of a pocket's hull chain is from its chord when the chain is approximated to
+// pick pocket-minimum candidates (§3.3.4).
+enum class HullChainDistance {
+  kLine,     // distance to the chord's line, as the reference: a deep vertex beyond the end of the
+             // bridge (a needle-shaped pocket) is dropped, and its piece is accepted too deep (§8.4)
+  kSegment,  // distance to the chord itself, consistent with the depth test that follows
+};
+
 // The reference drops "skinny" cuts whose end points are close along the boundary (§6.5).
 enum class SkinnyCutFilter {
   kReference,  // as the reference: every selected cut but the last one in the list is tested
@@ -55,6 +63,7 @@ struct DecompositionOptions {
   CandidateCuts candidates = CandidateCuts::kValidated;
   SkinnyCutFilter skinny_cuts = SkinnyCutFilter::kReference;
   PocketPolygon pocket_polygon = PocketPolygon::kSplitOnBridge;
+  HullChainDistance hull_chain_distance = HullChainDistance::kSegment;
   // The reference deletes holes whose size, min(diameter, 2 * width), is below tau (§4.2): the
   // pieces then cover them. When false such holes stay holes of the pieces (they never get cuts).
   bool absorb_small_holes = true;
