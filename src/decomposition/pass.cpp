@@ -1,9 +1,6 @@
 // §1 dude_pass: one pass of the dual-space decomposition over one polygon, and the cut filters that
 // the reference applies to top-level passes (§6.5).
 #include <algorithm>
-#include <cstdio>
-#include <cstdlib>
-#include <string>
 #include <cstdint>
 #include <limits>
 #include <unordered_set>
@@ -154,20 +151,7 @@ std::vector<std::pair<int, int>> filter_top(const PassState& st, std::vector<std
 
 }  // namespace
 
-struct ProfileCounters {
-  long passes[64] = {}, corners[64] = {}, cdt_passes[64] = {}, cdt_corners[64] = {};
-  ~ProfileCounters() {
-    if (!std::getenv("TOPOCUT_DUDE_PROFILE")) return;
-    for (int d = 0; d < 64; ++d) {
-      if (passes[d]) fprintf(stderr, "depth %d: passes %ld corners %ld, with PMs %ld corners %ld\n", d, passes[d], corners[d], cdt_passes[d], cdt_corners[d]);
-    }
-  }
-};
-ProfileCounters g_profile;
-
 PassResult dude_pass(const Poly& poly, const Settings& settings, bool top, int depth) {
-  g_profile.passes[std::min(depth, 63)]++;
-  g_profile.corners[std::min(depth, 63)] += poly.corners();
   PassState st(poly, settings);
   st.top = top;
   st.depth = depth;
@@ -185,36 +169,11 @@ PassResult dude_pass(const Poly& poly, const Settings& settings, bool top, int d
   for (int c = 0; c < poly.corners(); ++c) {
     if (st.pm[c]) result.pms.emplace_back(c, st.concavity[c]);
   }
-  static const bool debug = std::getenv("TOPOCUT_DUDE_DEBUG") != nullptr;
-  auto P = [&](int c) { return "(" + std::to_string(poly.pt[c].x()) + "," + std::to_string(poly.pt[c].y()) + ")"; };
-  if (debug) {
-    std::string ind(2 * depth, ' ');
-    fprintf(stderr, "%spass depth %d top %d corners %d rings %d\n", ind.c_str(), depth, top, poly.corners(), poly.rings());
-    for (std::size_t i = 0; i < st.pockets.size(); ++i) {
-      const Pocket& k = st.pockets[i];
-      fprintf(stderr, "%s  pocket %zu parent %d %s-%s pms:", ind.c_str(), i, k.parent, P(k.s).c_str(), P(k.e).c_str());
-      for (int v : k.pms) fprintf(stderr, " %s", P(v).c_str());
-      fprintf(stderr, "\n");
-    }
-    for (const auto& [c, cc] : result.pms) fprintf(stderr, "%s  PM %s %g\n", ind.c_str(), P(c).c_str(), cc);
-  }
   if (result.pms.empty()) return result;
-  g_profile.cdt_passes[std::min(depth, 63)]++;
-  g_profile.cdt_corners[std::min(depth, 63)] += poly.corners();
   outer_features(st);
   if (st.roots.empty() && holes_left) outer_diameter_features(st);
   const std::vector<std::pair<int, int>> diagonals = candidate_diagonals(st);
   std::vector<std::pair<int, int>> cuts = select_cuts(st, diagonals);
-  if (debug) {
-    std::string ind(2 * depth, ' ');
-    fprintf(stderr, "%s  features:", ind.c_str());
-    for (int c = 0; c < poly.corners(); ++c) if (st.feature[c]) fprintf(stderr, " %s", P(c).c_str());
-    fprintf(stderr, "\n%s  diagonals:", ind.c_str());
-    for (const auto& [a, b] : diagonals) fprintf(stderr, " %s-%s", P(a).c_str(), P(b).c_str());
-    fprintf(stderr, "\n%s  selected:", ind.c_str());
-    for (const auto& [a, b] : cuts) fprintf(stderr, " %s-%s", P(a).c_str(), P(b).c_str());
-    fprintf(stderr, "\n");
-  }
   if (top) cuts = filter_top(st, std::move(cuts));
   result.cuts = std::move(cuts);
   return result;
