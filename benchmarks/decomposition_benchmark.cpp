@@ -59,7 +59,7 @@ int vertices(const PolygonWithHoles& p) {
 
 std::vector<Case> cases() {
   std::vector<Case> out;
-  for (int w : {40, 80, 160, 320, 640, 1000, 1300}) {
+  for (int w : {40, 60, 80, 160, 320, 640, 1000, 1600}) {
     out.push_back({"floor plan", "plan_" + std::to_string(w), [w] { return plan(w); }, 12.0});
   }
   for (int n : {100, 300, 1000, 3000, 10000, 30000, 100000}) {

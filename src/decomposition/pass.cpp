@@ -135,8 +135,18 @@ std::vector<std::pair<int, int>> filter_top(const PassState& st, std::vector<std
     }
     kept.push_back({a, b});
   }
-  // Safety net: whatever the options, only true interior diagonals that do not cross are applied.
-  const std::vector<char> inside = segments_inside(poly, kept, st.deleted);
+  // Safety net: only interior diagonals that do not cross are applied. Validated candidates are
+  // triangulation edges or diagonals checked against the boundary already, so for them the local
+  // tests (both ends leave into their wedges) suffice; the reference's candidates get the full test.
+  std::vector<char> inside(kept.size(), 1);
+  if (options.candidates == CandidateCuts::kReference) {
+    inside = segments_inside(poly, kept, st.deleted);
+  } else {
+    for (std::size_t i = 0; i < kept.size(); ++i) {
+      const auto [a, b] = kept[i];
+      inside[i] = in_wedge(poly, a, poly.pt[b]) && in_wedge(poly, b, poly.pt[a]);
+    }
+  }
   std::vector<std::pair<int, int>> valid;
   for (std::size_t i = 0; i < kept.size(); ++i) {
     if (inside[i]) valid.push_back(kept[i]);
