@@ -156,7 +156,6 @@ void collect_minima(PassState& st, int p) {
   auto add = [&](int c) { list.emplace_back(poly.offset(b.s, c), c); };
   add(b.s);
   add(b.e);
-  list.back().first = b.len;
   for (int k : kids) {
     add(st.pockets[k].s);
     add(st.pockets[k].e);
@@ -168,7 +167,7 @@ void collect_minima(PassState& st, int p) {
 
   std::vector<int> pms = from_children;
   for (int v : own) {
-    const auto it = std::find_if(list.begin(), list.end(), [&](const auto& x) { return x.second == v; });
+    const auto it = std::lower_bound(list.begin(), list.end(), std::pair{poly.offset(b.s, v), v});
     if (it == list.begin() || it + 1 == list.end()) continue;
     const int before = (it - 1)->second, after = (it + 1)->second;
     if (dseg(poly.pt[v], poly.pt[before], poly.pt[after]) > tau / 2) pms.push_back(v);
