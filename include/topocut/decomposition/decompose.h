@@ -76,28 +76,33 @@ struct DecompositionOptions {
 };
 
 struct Cut {
-  Segment2 segment;  // both end points are vertices of the piece it split
+  Segment2 segment;  // both end points are input vertices; the open segment lies inside the piece it split
   int pass = 0;      // 0-based round in which the cut was applied
 };
 
+// A vertex a pass had to resolve (concavity >= tau for pockets, > tau for holes).
 struct PocketMinimum {
   Point2 vertex;
-  double concavity = 0.0;
+  double concavity = 0.0;  // as measured by options.concavity (holes: §4.2-4.3)
   int pass = 0;
   bool on_hole = false;  // the vertex belongs to a hole (§4) rather than to the outer boundary (§3)
 };
 
 struct Decomposition {
-  std::vector<PolygonWithHoles> pieces;       // outer CCW, holes CW; tile the input minus absorbed holes
-  std::vector<Cut> cuts;                      // in the order applied
-  std::vector<PocketMinimum> pocket_minima;   // per pass, diagnostics
+  // Outer ring CCW, holes CW. Interiors are disjoint and the pieces cover the input plus its
+  // absorbed holes exactly; every vertex is an input vertex.
+  std::vector<PolygonWithHoles> pieces;
+  std::vector<Cut> cuts;                      // in the order applied; cuts never cross
+  std::vector<PocketMinimum> pocket_minima;   // of every pass on every piece, diagnostics
   std::vector<Ring> absorbed_holes;           // holes judged too small for tau and covered by pieces
-  int rounds = 0;                             // passes run
+  int rounds = 0;                             // rounds of passes run (at most options.max_rounds)
 };
 
-// Decomposes polygon into pieces whose concavity is at most options.tau (see the spec for the
-// acceptance rule). Throws Error on invalid input (fewer than 3 vertices, non-finite coordinates,
-// self-intersecting rings, holes outside the outer ring, tau <= 0).
+// Decomposes polygon (rings in any orientation) into pieces that no further DuDe pass would cut:
+// the reference's acceptance rule, which is not a hard bound on concavity (measure_concavity in
+// concavity.h measures it). Deterministic. Throws Error on invalid input: fewer than 3 distinct
+// vertices, non-finite coordinates, rings that cross or touch (themselves or each other), holes
+// outside the outer ring or inside another hole, tau not positive, max_rounds < 1.
 Decomposition decompose(const PolygonWithHoles& polygon, const DecompositionOptions& options = {});
 
 }  // namespace topocut
