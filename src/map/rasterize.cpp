@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <deque>
+#include <limits>
 #include <string>
 
 #include <opencv2/imgproc.hpp>
@@ -34,62 +35,117 @@ void add_crossings(const Ring& ring, int height, std::vector<std::vector<double>
 
 }  // namespace
 
-cv::Mat rasterize_polygons(const std::vector<PolygonWithHoles>& polygons, cv::Size size) {
+std::vector<CellSpan> polygon_spans(const std::vector<PolygonWithHoles>& polygons, cv::Size size) {
   if (size.width <= 0 || size.height <= 0) throw Error("cannot rasterize into an empty image");
-  cv::Mat labels = cv::Mat::zeros(size, CV_32SC1);
   const int height = size.height, width = size.width;
+  std::vector<CellSpan> spans;
   std::vector<std::vector<double>> rows_x(static_cast<std::size_t>(height));
   for (std::size_t i = 0; i < polygons.size(); ++i) {
-    for (auto& xs : rows_x) xs.clear();
+    // Only the rows the polygon spans are touched, so many small polygons stay cheap.
+    double y_low = std::numeric_limits<double>::infinity(), y_high = -y_low;
+    auto extend = [&](const Ring& ring) {
+      for (const Point2& p : ring) {
+        y_low = std::min(y_low, p.y);
+        y_high = std::max(y_high, p.y);
+      }
+    };
+    extend(polygons[i].outer);
+    for (const Ring& hole : polygons[i].holes) extend(hole);
+    if (!(y_low <= y_high)) continue;
+    const int y_first = std::max(0, static_cast<int>(std::ceil(y_low)));
+    const int y_last = std::min(height - 1, static_cast<int>(std::ceil(y_high)) - 1);
     add_crossings(polygons[i].outer, height, rows_x);
     for (const Ring& hole : polygons[i].holes) add_crossings(hole, height, rows_x);
-    const int label = static_cast<int>(i) + 1;
-    for (int y = 0; y < height; ++y) {
+    for (int y = y_first; y <= y_last; ++y) {
       std::vector<double>& xs = rows_x[static_cast<std::size_t>(y)];
       if (xs.empty()) continue;
       std::sort(xs.begin(), xs.end());
-      int* row = labels.ptr<int>(height - 1 - y);
       // Even-odd spans [x0, x1): a centre exactly on the right end belongs to the next piece.
       for (std::size_t k = 0; k + 1 < xs.size(); k += 2) {
         const int c_first = std::max(0, static_cast<int>(std::ceil(xs[k])));
         const int c_end = std::min(width, static_cast<int>(std::ceil(xs[k + 1])));
-        for (int c = c_first; c < c_end; ++c)
-          if (row[c] == 0) row[c] = label;
+        if (c_first < c_end) spans.push_back({height - 1 - y, c_first, c_end, static_cast<int>(i)});
       }
+      xs.clear();
     }
+  }
+  return spans;
+}
+
+cv::Mat rasterize_polygons(const std::vector<PolygonWithHoles>& polygons, cv::Size size) {
+  const std::vector<CellSpan> spans = polygon_spans(polygons, size);
+  cv::Mat labels = cv::Mat::zeros(size, CV_32SC1);
+  for (const CellSpan& span : spans) {
+    int* row = labels.ptr<int>(span.row);
+    const int label = span.index + 1;
+    for (int c = span.first; c < span.end; ++c)
+      if (row[c] == 0) row[c] = label;
   }
   return labels;
 }
 
-void fill_free_space_labels(cv::Mat& labels, const cv::Mat& free_mask) {
+void fill_free_space_labels(cv::Mat& labels, const cv::Mat& free_mask, bool keep_non_free,
+                            std::vector<LabelChange>* changes) {
   if (labels.type() != CV_32SC1 || free_mask.type() != CV_8UC1 || labels.size() != free_mask.size())
     throw Error("labels (CV_32SC1) and free-space mask (CV_8UC1) must have the same size");
   const int h = labels.rows, w = labels.cols;
-  labels.setTo(0, free_mask == 0);
-
-  // Breadth-first search through free space from every labelled cell (sources in raster order,
-  // so ties between equally near labels are broken the same way every time).
-  std::deque<int> queue;
-  for (int r = 0; r < h; ++r) {
-    const int* row = labels.ptr<int>(r);
-    for (int c = 0; c < w; ++c)
-      if (row[c] > 0) queue.push_back(r * w + c);
-  }
-  if (queue.empty()) return;
-  int* data = labels.ptr<int>(0);
   CV_Assert(labels.isContinuous() && free_mask.isContinuous());
+  int* data = labels.ptr<int>(0);
   const unsigned char* free = free_mask.ptr<unsigned char>(0);
-  while (!queue.empty()) {
-    const int i = queue.front();
-    queue.pop_front();
+
+  // One pass: clear labelled non-free cells (unless kept) and list the unlabelled free cells. Most
+  // rows need neither, which a branch-free test finds quickly.
+  std::vector<int> unlabelled;
+  for (int r = 0; r < h; ++r) {
+    int* row = data + static_cast<std::size_t>(r) * w;
+    const unsigned char* f = free + static_cast<std::size_t>(r) * w;
+    int odd = 0;
+    if (keep_non_free) {
+      for (int c = 0; c < w; ++c) odd |= (f[c] != 0) & (row[c] == 0);
+    } else {
+      for (int c = 0; c < w; ++c) odd |= (f[c] != 0) != (row[c] != 0);
+    }
+    if (!odd) continue;
+    for (int c = 0; c < w; ++c) {
+      if (f[c] == 0) {
+        if (!keep_non_free && row[c] != 0) {
+          if (changes) changes->push_back({r * w + c, row[c], 0});
+          row[c] = 0;
+        }
+      } else if (row[c] == 0) {
+        unlabelled.push_back(r * w + c);
+      }
+    }
+  }
+  if (unlabelled.empty()) return;
+
+  // Breadth-first search through free space from the labelled free cells next to unlabelled ones,
+  // in raster order (ties between equally near labels are broken the same way every time, as if
+  // every labelled cell were a source).
+  std::vector<int> queue;
+  queue.reserve(unlabelled.size() * 2);
+  for (const int i : unlabelled) {
+    const int r = i / w, c = i % w;
+    const int neighbours[4] = {r > 0 ? i - w : -1, c > 0 ? i - 1 : -1, c + 1 < w ? i + 1 : -1, r + 1 < h ? i + w : -1};
+    for (const int j : neighbours)
+      if (j >= 0 && free[j] && data[j] > 0) queue.push_back(j);
+  }
+  std::sort(queue.begin(), queue.end());
+  queue.erase(std::unique(queue.begin(), queue.end()), queue.end());
+  std::size_t left = unlabelled.size();
+  for (std::size_t head = 0; head < queue.size() && left > 0; ++head) {
+    const int i = queue[head];
     const int r = i / w, c = i % w;
     const int neighbours[4] = {r > 0 ? i - w : -1, c > 0 ? i - 1 : -1, c + 1 < w ? i + 1 : -1, r + 1 < h ? i + w : -1};
     for (const int j : neighbours) {
       if (j < 0 || !free[j] || data[j] != 0) continue;
       data[j] = data[i];
+      if (changes) changes->push_back({j, 0, data[i]});
       queue.push_back(j);
+      --left;
     }
   }
+  if (left == 0) return;
 
   // Free cells cut off from every label (specks too small to be rooms): nearest label in a
   // straight line.
@@ -111,8 +167,11 @@ void fill_free_space_labels(cv::Mat& labels, const cv::Mat& free_mask) {
     int* l = labels.ptr<int>(r);
     const int* n = nearest.ptr<int>(r);
     const unsigned char* o = orphans.ptr<unsigned char>(r);
-    for (int c = 0; c < w; ++c)
-      if (o[c]) l[c] = label_of[static_cast<std::size_t>(n[c])];
+    for (int c = 0; c < w; ++c) {
+      if (!o[c]) continue;
+      l[c] = label_of[static_cast<std::size_t>(n[c])];
+      if (changes && l[c] != 0) changes->push_back({r * w + c, 0, l[c]});
+    }
   }
 }
 

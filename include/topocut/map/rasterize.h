@@ -16,11 +16,30 @@ namespace topocut {
 // share a cut never both claim a cell; where polygons overlap anyway, the earlier one keeps it.
 cv::Mat rasterize_polygons(const std::vector<PolygonWithHoles>& polygons, cv::Size size);
 
+// A run of cells [first, end) of one image row whose centres polygon `index` contains.
+struct CellSpan {
+  int row = 0;
+  int first = 0, end = 0;
+  int index = 0;
+};
+
+// The spans rasterize_polygons() fills, polygon by polygon (each polygon's spans by row from the
+// bottom up, then by column), clipped to the image; overlaps between polygons are not resolved.
+std::vector<CellSpan> polygon_spans(const std::vector<PolygonWithHoles>& polygons, cv::Size size);
+
 // Completes labels over the free space (free_mask CV_8UC1, nonzero = free): non-free cells become
 // 0; each unlabelled free cell takes the label of the nearest labelled cell measured along the free
 // space (4-connected breadth-first search, so labels never leak through walls), and cells that
 // free space does not connect to any label take the label of the nearest labelled cell in a
-// straight line. Cells stay 0 only when there is no label at all.
-void fill_free_space_labels(cv::Mat& labels, const cv::Mat& free_mask);
+// straight line. Cells stay 0 only when there is no label at all. With keep_non_free, non-free
+// cells keep the labels they have (obstacles that a piece covers, such as furniture the
+// decomposition absorbed) instead of becoming 0; labels never spread through them. If changes is
+// given, every cell whose label this changed is appended to it (in no particular order).
+struct LabelChange {
+  int index = 0;  // row * cols + column
+  int before = 0, after = 0;
+};
+void fill_free_space_labels(cv::Mat& labels, const cv::Mat& free_mask, bool keep_non_free = false,
+                            std::vector<LabelChange>* changes = nullptr);
 
 }  // namespace topocut
