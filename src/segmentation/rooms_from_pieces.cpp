@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <tuple>
 
 #include "topocut/core/error.h"
@@ -37,6 +38,7 @@ bool contains(const PolygonWithHoles& polygon, const Point2& p) {
 void PieceSet::append(const PieceSet& other) {
   pieces.insert(pieces.end(), other.pieces.begin(), other.pieces.end());
   cuts.insert(cuts.end(), other.cuts.begin(), other.cuts.end());
+  doors.insert(doors.end(), other.doors.begin(), other.doors.end());
 }
 
 int piece_containing(const std::vector<PolygonWithHoles>& pieces, const Point2& p) {
@@ -56,55 +58,123 @@ int piece_containing(const std::vector<PolygonWithHoles>& pieces, const Point2& 
   return -1;
 }
 
-Segmentation rooms_from_pieces(const OccupancyGrid& grid, const PieceSet& set) {
+Segmentation rooms_from_pieces(const OccupancyGrid& grid, const PieceSet& set, const RoomLabelOptions& options) {
   validate(grid);
   const int h = grid.height(), w = grid.width();
-  cv::Mat labels = rasterize_polygons(set.pieces, grid.cells.size());
-  fill_free_space_labels(labels, grid.cells == kFree);
+  const std::size_t n = set.pieces.size();
 
-  // Rooms numbered by first cell in raster order: the ids do not depend on the order of pieces.
-  std::vector<int> room_of_piece(set.pieces.size() + 1, 0);
-  std::vector<long> cells;
-  std::vector<double> sum_c, sum_r;
-  int rooms = 0;
-  for (int r = 0; r < h; ++r) {
-    int* row = labels.ptr<int>(r);
-    for (int c = 0; c < w; ++c) {
-      if (row[c] == 0) continue;
-      int& room = room_of_piece[static_cast<std::size_t>(row[c])];
-      if (room == 0) {
-        room = ++rooms;
-        cells.push_back(0);
-        sum_c.push_back(0.0);
-        sum_r.push_back(0.0);
-      }
-      row[c] = room;
-      ++cells[static_cast<std::size_t>(room - 1)];
-      sum_c[static_cast<std::size_t>(room - 1)] += c;
-      sum_r[static_cast<std::size_t>(room - 1)] += r;
+  // Rooms are numbered by their first cell in raster order. The spans tell each piece's first cell
+  // before anything is written, so the label image is written once, with room ids; the few cells
+  // that the completion below changes are checked, and only if one of them moves a room's first
+  // cell are the rooms numbered again from the image.
+  const std::vector<CellSpan> spans = polygon_spans(set.pieces, grid.cells.size());
+  const long never = std::numeric_limits<long>::max();
+  std::vector<long> first(n, never);
+  for (const CellSpan& span : spans) {
+    const long at = static_cast<long>(span.row) * w + span.first;
+    first[static_cast<std::size_t>(span.index)] = std::min(first[static_cast<std::size_t>(span.index)], at);
+  }
+  std::vector<int> order;
+  for (std::size_t i = 0; i < n; ++i)
+    if (first[i] != never) order.push_back(static_cast<int>(i));
+  std::sort(order.begin(), order.end(), [&](int a, int b) {
+    return std::tie(first[static_cast<std::size_t>(a)], a) < std::tie(first[static_cast<std::size_t>(b)], b);
+  });
+  std::vector<int> room_of_piece(n + 1, 0);
+  for (std::size_t k = 0; k < order.size(); ++k) room_of_piece[static_cast<std::size_t>(order[k]) + 1] = static_cast<int>(k) + 1;
+  const int rooms = static_cast<int>(order.size());
+
+  cv::Mat labels = cv::Mat::zeros(grid.cells.size(), CV_32SC1);
+  std::vector<long> cells(static_cast<std::size_t>(rooms) + 1, 0);
+  std::vector<double> sum_c(static_cast<std::size_t>(rooms) + 1, 0.0), sum_r(static_cast<std::size_t>(rooms) + 1, 0.0);
+  bool overlap = false;
+  for (const CellSpan& span : spans) {
+    int* row = labels.ptr<int>(span.row);
+    const int id = room_of_piece[static_cast<std::size_t>(span.index) + 1];
+    for (int c = span.first; c < span.end; ++c) {
+      overlap |= row[c] != 0;
+      row[c] = row[c] != 0 ? row[c] : id;
     }
+    const long count = span.end - span.first;
+    cells[static_cast<std::size_t>(id)] += count;
+    sum_c[static_cast<std::size_t>(id)] += 0.5 * static_cast<double>(count) * (span.first + span.end - 1);
+    sum_r[static_cast<std::size_t>(id)] += static_cast<double>(count) * span.row;
+  }
+  std::vector<LabelChange> changes;
+  fill_free_space_labels(labels, grid.cells == kFree, options.cover_absorbed_obstacles, &changes);
+  bool renumber = overlap;
+  for (const LabelChange& change : changes) {
+    const int r = change.index / w, c = change.index % w;
+    if (change.before > 0) {
+      const std::size_t k = static_cast<std::size_t>(change.before);
+      --cells[k];
+      sum_c[k] -= c;
+      sum_r[k] -= r;
+      renumber |= cells[k] == 0 || change.index == first[static_cast<std::size_t>(order[k - 1])];
+    }
+    if (change.after > 0) {
+      const std::size_t k = static_cast<std::size_t>(change.after);
+      ++cells[k];
+      sum_c[k] += c;
+      sum_r[k] += r;
+      renumber |= change.index < first[static_cast<std::size_t>(order[k - 1])];
+    }
+  }
+
+  // Rare: overlapping pieces or a first cell cleared or preceded by a filled cell. Number the rooms
+  // from the image itself, as the definition says.
+  std::vector<int> piece_of_room(static_cast<std::size_t>(rooms) + 1, -1);
+  for (std::size_t k = 0; k < order.size(); ++k) piece_of_room[k + 1] = order[k];
+  int room_count = rooms;
+  if (renumber) {
+    std::vector<int> renamed(static_cast<std::size_t>(rooms) + 1, 0);
+    std::vector<int> new_piece(1, -1);
+    int next = 0;
+    std::fill(cells.begin(), cells.end(), 0);
+    std::fill(sum_c.begin(), sum_c.end(), 0.0);
+    std::fill(sum_r.begin(), sum_r.end(), 0.0);
+    for (int r = 0; r < h; ++r) {
+      int* row = labels.ptr<int>(r);
+      for (int c = 0; c < w; ++c) {
+        if (row[c] == 0) continue;
+        int& id = renamed[static_cast<std::size_t>(row[c])];
+        if (id == 0) {
+          id = ++next;
+          new_piece.push_back(piece_of_room[static_cast<std::size_t>(row[c])]);
+        }
+        row[c] = id;
+        ++cells[static_cast<std::size_t>(id)];
+        sum_c[static_cast<std::size_t>(id)] += c;
+        sum_r[static_cast<std::size_t>(id)] += r;
+      }
+    }
+    std::fill(room_of_piece.begin(), room_of_piece.end(), 0);
+    for (int id = 1; id <= next; ++id) room_of_piece[static_cast<std::size_t>(new_piece[static_cast<std::size_t>(id)]) + 1] = id;
+    piece_of_room = new_piece;
+    room_count = next;
   }
 
   Segmentation s;
   s.labels = labels;
   s.resolution = grid.resolution;
   s.origin = grid.origin;
-  s.rooms.resize(static_cast<std::size_t>(rooms));
+  s.rooms.resize(static_cast<std::size_t>(room_count));
   const double cell_area = grid.resolution * grid.resolution;
-  for (std::size_t piece = 0; piece < set.pieces.size(); ++piece) {
-    const int id = room_of_piece[piece + 1];
-    if (id == 0) continue;
-    Room& room = s.rooms[static_cast<std::size_t>(id - 1)];
+  for (int id = 1; id <= room_count; ++id) {
+    const std::size_t k = static_cast<std::size_t>(id);
+    const PolygonWithHoles& piece = set.pieces[static_cast<std::size_t>(piece_of_room[k])];
+    Room& room = s.rooms[k - 1];
     room.id = id;
     PolygonWithHoles world;
-    for (const Point2& v : set.pieces[piece].outer) world.outer.push_back(grid_to_world(grid, v));
-    for (const Ring& hole : set.pieces[piece].holes) {
+    world.outer.reserve(piece.outer.size());
+    for (const Point2& v : piece.outer) world.outer.push_back(grid_to_world(grid, v));
+    for (const Ring& hole : piece.holes) {
       Ring ring;
+      ring.reserve(hole.size());
       for (const Point2& v : hole) ring.push_back(grid_to_world(grid, v));
       world.holes.push_back(std::move(ring));
     }
     room.polygon = normalized_orientation(world);
-    const std::size_t k = static_cast<std::size_t>(id - 1);
     room.area = static_cast<double>(cells[k]) * cell_area;
     const double mean_c = sum_c[k] / static_cast<double>(cells[k]);
     const double mean_r = sum_r[k] / static_cast<double>(cells[k]);

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "topocut/core/error.h"
+#include "topocut/map/simplify.h"
 
 namespace topocut {
 
@@ -11,6 +12,10 @@ void validate(const SegmentOptions& options) {
   if (!std::isfinite(options.concavity) || options.concavity <= 0.0)
     throw Error("the concavity must be a positive number of metres");
   if (options.decomposition.max_rounds < 1) throw Error("the decomposition needs at least one round");
+  validate(options.merge);
+  validate(options.doors);
+  if (!std::isfinite(options.simplify) || options.simplify < 0.0)
+    throw Error("the simplification tolerance must be a non-negative number of cells");
 }
 
 cv::Mat segmentation_free_space(const OccupancyGrid& grid, const SegmentOptions& options) {
@@ -22,24 +27,58 @@ cv::Mat segmentation_free_space(const OccupancyGrid& grid, const SegmentOptions&
   return free;
 }
 
-PieceSet decompose_component(const FreeSpaceComponent& component, double resolution, const SegmentOptions& options) {
+namespace {
+
+PieceSet decompose_polygon(const PolygonWithHoles& polygon, double resolution, const SegmentOptions& options) {
   PieceSet set;
+  set.doors = find_door_cuts(polygon, resolution, options.doors);
+  const std::vector<PolygonWithHoles> parts = split_polygon(polygon, set.doors);
+  set.cuts = set.doors;
+  DecompositionOptions decomposition = options.decomposition;
+  decomposition.tau = options.concavity / resolution;
+  for (const PolygonWithHoles& part : parts) {
+    const Decomposition result = decompose(part, decomposition);
+    set.pieces.insert(set.pieces.end(), result.pieces.begin(), result.pieces.end());
+    for (const Cut& cut : result.cuts) set.cuts.push_back(cut.segment);
+  }
+  return set;
+}
+
+}  // namespace
+
+PieceSet decompose_pieces(const FreeSpaceComponent& component, double resolution, const SegmentOptions& options) {
   if (!options.decompose) {
+    PieceSet set;
     set.pieces.push_back(component.polygon);
     return set;
   }
-  DecompositionOptions decomposition = options.decomposition;
-  decomposition.tau = options.concavity / resolution;
   try {
-    const Decomposition result = decompose(component.polygon, decomposition);
-    set.pieces = result.pieces;
-    set.cuts.reserve(result.cuts.size());
-    for (const Cut& cut : result.cuts) set.cuts.push_back(cut.segment);
+    if (options.simplify > 0.0) {
+      try {
+        return decompose_polygon(simplify_polygon(component.polygon, options.simplify), resolution, options);
+      } catch (const Error&) {
+        // The simplified rings touch after all (a very thin wall or gap): use the exact ones.
+      }
+    }
+    return decompose_polygon(component.polygon, resolution, options);
   } catch (const Error& e) {
     throw Error("decomposing the free-space component at cell (" + std::to_string(component.first_pixel.x) + ", " +
                 std::to_string(component.first_pixel.y) + ") failed: " + e.what());
   }
-  return set;
+}
+
+PieceSet decompose_component(const FreeSpaceComponent& component, double resolution, const SegmentOptions& options) {
+  return merge_rooms(component, decompose_pieces(component, resolution, options), resolution, options.merge);
+}
+
+SegmentOptions parity_segment_options(double concavity) {
+  SegmentOptions options;
+  options.concavity = concavity;
+  options.merge.enabled = false;
+  options.doors.enabled = false;
+  options.labels.cover_absorbed_obstacles = false;
+  options.simplify = 0.0;
+  return options;
 }
 
 Segmentation segment(const OccupancyGrid& grid, const SegmentOptions& options) {
@@ -49,7 +88,7 @@ Segmentation segment(const OccupancyGrid& grid, const SegmentOptions& options) {
   PieceSet pieces;
   for (const FreeSpaceComponent& component : polygons.components)
     pieces.append(decompose_component(component, grid.resolution, options));
-  return rooms_from_pieces(grid, pieces);
+  return rooms_from_pieces(grid, pieces, options.labels);
 }
 
 }  // namespace topocut

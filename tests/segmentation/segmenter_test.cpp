@@ -174,6 +174,71 @@ TEST(Segment, StagesComposeToSegment) {
   EXPECT_TRUE(one.cuts.empty());
 }
 
+// A 10 m x 10 m L of 2 m wide corridor, walls one cell thick around it.
+OccupancyGrid l_corridor() {
+  OccupancyGrid grid{cv::Mat(202, 202, CV_8UC1, cv::Scalar(kOccupied)), 0.05, {}};
+  grid.cells(cv::Rect(1, 161, 200, 40)).setTo(kFree);  // bottom arm
+  grid.cells(cv::Rect(1, 1, 40, 200)).setTo(kFree);    // left arm
+  return grid;
+}
+
+// Two 3 m x 3 m rooms side by side, 0.2 m wall, a 0.9 m door in it.
+OccupancyGrid two_rooms_with_a_door() {
+  OccupancyGrid grid{cv::Mat(62, 126, CV_8UC1, cv::Scalar(kOccupied)), 0.05, {}};
+  grid.cells(cv::Rect(1, 1, 60, 60)).setTo(kFree);
+  grid.cells(cv::Rect(65, 1, 60, 60)).setTo(kFree);
+  grid.cells(cv::Rect(61, 21, 4, 18)).setTo(kFree);
+  return grid;
+}
+
+TEST(Segment, AnLShapedCorridorIsOneRoomWhereDuDeAloneCutsIt) {
+  const OccupancyGrid grid = l_corridor();
+  const Segmentation s = segment(grid);
+  expect_consistent(grid, s);
+  EXPECT_EQ(s.rooms.size(), 1u);
+  EXPECT_TRUE(s.passages.empty());
+  const Segmentation parity = segment(grid, parity_segment_options());
+  expect_consistent(grid, parity);
+  EXPECT_GE(parity.rooms.size(), 2u);
+}
+
+TEST(Segment, TwoRoomsJoinedByADoorAreTwoRoomsWithOnePassage) {
+  const OccupancyGrid grid = two_rooms_with_a_door();
+  const Segmentation s = segment(grid);
+  expect_consistent(grid, s);
+  ASSERT_EQ(s.rooms.size(), 2u);
+  ASSERT_EQ(s.passages.size(), 1u);
+  EXPECT_NEAR(s.passages[0].width, 0.9, 1e-9);
+  // Each room holds one of the 3 m x 3 m squares (and a share of the door's frame).
+  EXPECT_NE(s.labels.at<int>(30, 30), s.labels.at<int>(30, 95));
+  for (const Room& room : s.rooms) {
+    EXPECT_GE(room.area, 9.0 - 1e-9);
+    EXPECT_LE(room.area, 9.0 + 4 * 18 * 0.0025 + 1e-9);
+  }
+  // The trivial baseline sees one component.
+  EXPECT_EQ(segment(grid, trivial()).rooms.size(), 1u);
+}
+
+TEST(Segment, ParityOptionsSwitchEveryImprovementOff) {
+  const SegmentOptions parity = parity_segment_options(3.0);
+  EXPECT_EQ(parity.concavity, 3.0);
+  EXPECT_FALSE(parity.merge.enabled);
+  EXPECT_FALSE(parity.doors.enabled);
+  EXPECT_EQ(parity.simplify, 0.0);
+  EXPECT_FALSE(parity.labels.cover_absorbed_obstacles);
+  // Parity pieces are exactly DuDe's pieces of each component.
+  const OccupancyGrid grid = read_map(bundled("floorplan"));
+  const cv::Mat free = segmentation_free_space(grid, parity);
+  const FreeSpacePolygons polygons = free_space_polygons(free, grid.resolution, parity.contours);
+  std::size_t pieces = 0;
+  for (const FreeSpaceComponent& c : polygons.components) {
+    DecompositionOptions dude = parity.decomposition;
+    dude.tau = parity.concavity / grid.resolution;
+    pieces += decompose(c.polygon, dude).pieces.size();
+  }
+  EXPECT_EQ(segment(grid, parity).rooms.size(), pieces);
+}
+
 TEST(Segment, BadInput) {
   OccupancyGrid none{cv::Mat(10, 10, CV_8UC1, cv::Scalar(kOccupied)), 0.05, {}};
   try {

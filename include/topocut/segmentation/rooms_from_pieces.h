@@ -14,19 +14,29 @@ namespace topocut {
 struct PieceSet {
   std::vector<PolygonWithHoles> pieces;
   std::vector<Segment2> cuts;  // a cut between two pieces becomes a passage; others are ignored
+  std::vector<Segment2> doors; // the cuts found as doors (door_cuts.h), also listed in cuts
 
   // Appends other's pieces and cuts (pieces from several components, or reused ones).
   void append(const PieceSet& other);
 };
 
+struct RoomLabelOptions {
+  // Obstacles a piece covers (holes the decomposition absorbed as too small to matter: furniture,
+  // pillars, sensor noise) belong to that room: their cells get its label. The floor under a
+  // table is part of the room; false gives every non-free cell 0, as the reference wrapper's
+  // evaluation of free cells only.
+  bool cover_absorbed_obstacles = false;
+};
+
 // Builds the segmentation of grid from pieces: each piece labels the cells whose centres it
 // contains; every other free cell (grid.cells == kFree) takes the label of the nearest piece along
-// free space (fill_free_space_labels); non-free cells are 0. Rooms are the pieces that label at
-// least one cell, numbered 1..N by their first cell in raster order, with the piece as polygon
-// (world metres) and area and centroid of their labelled cells. Each cut whose two sides lie in two
-// different rooms becomes a passage (end points in metres, width = its length). Passages are
-// sorted by room ids, then by cut.
-Segmentation rooms_from_pieces(const OccupancyGrid& grid, const PieceSet& pieces);
+// free space (fill_free_space_labels); other non-free cells are 0 (and so are the covered ones
+// unless options.cover_absorbed_obstacles). Rooms are the pieces that label at least one cell,
+// numbered 1..N by their first cell in raster order, with the piece as polygon (world metres) and
+// area and centroid of their labelled cells. Each cut whose two sides lie in two different rooms
+// becomes a passage (end points in metres, width = its length). Passages are sorted by room ids,
+// then by cut.
+Segmentation rooms_from_pieces(const OccupancyGrid& grid, const PieceSet& pieces, const RoomLabelOptions& options = {});
 
 // Index of the piece containing point p (grid coordinates, even-odd over all rings), or -1.
 int piece_containing(const std::vector<PolygonWithHoles>& pieces, const Point2& p);

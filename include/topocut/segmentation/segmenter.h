@@ -7,6 +7,8 @@
 #include "topocut/decomposition/decompose.h"
 #include "topocut/map/binarize.h"
 #include "topocut/map/free_space_polygons.h"
+#include "topocut/segmentation/door_cuts.h"
+#include "topocut/segmentation/room_merging.h"
 #include "topocut/segmentation/rooms_from_pieces.h"
 
 namespace topocut {
@@ -16,9 +18,20 @@ struct SegmentOptions {
   bool decompose = true;   // false: the trivial baseline, each free-space component is one room
   BinarizeOptions binarize;  // defaults: raw free space (no inflation, no filtering)
   ContourOptions contours;   // minimum component and hole areas (m²)
+  // Douglas-Peucker tolerance, in cells, applied to the traced pixel-edge polygons before doors
+  // are searched and the decomposition runs: it removes the stair steps of slanted and noisy walls.
+  // Below half a cell, rings that are a cell apart cannot touch. 0 keeps the exact pixel edges.
+  double simplify = 0.45;
+  DoorOptions doors;  // door cuts split each component before the decomposition (door_cuts.h)
   // Passed to decompose(); its tau is replaced by concavity / resolution (the polygons are in cells).
   DecompositionOptions decomposition;
+  RoomMergeOptions merge;  // pieces -> rooms (room_merging.h)
+  RoomLabelOptions labels; // rooms -> label image (rooms_from_pieces.h)
 };
+
+// The reference behaviour (dude-algorithm.md): the options under which topocut does what the
+// authors' DuDe does, so that every improvement can be measured against it.
+SegmentOptions parity_segment_options(double concavity = 2.5);
 
 // Segments the free space of grid into rooms; every free cell gets a room label. Rooms are
 // numbered by their first cell in raster order. Throws Error on an invalid grid or options, or a
@@ -29,9 +42,16 @@ Segmentation segment(const OccupancyGrid& grid, const SegmentOptions& options = 
 // it is empty.
 cv::Mat segmentation_free_space(const OccupancyGrid& grid, const SegmentOptions& options);
 
-// Stage 3: the pieces of one free-space component (grid coordinates) and the cuts between them:
-// decompose() at tau = options.concavity / resolution, or the component itself when
-// options.decompose is false. Errors name the component's first cell.
+// Stage 3a: the pieces of one free-space component (grid coordinates) and the cuts between them:
+// the polygon simplified (options.simplify), split along its door cuts (options.doors, listed in
+// the result's doors), and each part decomposed by decompose() at tau = options.concavity /
+// resolution; or the component itself when options.decompose is false. If the simplified
+// polygon cannot be decomposed, the exact one is. Errors name the component's first cell.
+PieceSet decompose_pieces(const FreeSpaceComponent& component, double resolution, const SegmentOptions& options);
+
+// Stage 3: the rooms of one free-space component (grid coordinates) and the cuts between them:
+// decompose_pieces() followed by merge_rooms() with options.merge. Errors name the component's
+// first cell.
 PieceSet decompose_component(const FreeSpaceComponent& component, double resolution, const SegmentOptions& options);
 
 // Throws Error unless the options are usable (finite, positive concavity and so on).

@@ -1,0 +1,230 @@
+// Segmentation stage times: where the milliseconds of `topocut segment` go on the Bormann images.
+// For every image it runs the batch pipeline stage by stage (the same calls segment() makes) and
+// prints the least CPU time of each stage over --repeat runs (thread CPU time: on a shared, busy
+// machine the least of a few runs is the steadiest estimate), next to the contour floor measured
+// the same way (decode the PNG, threshold, cv::findContours). Used to decide what to optimise;
+// the dataset benchmark gives the end-to-end wall-clock figures.
+//
+// With --quality it also scores every image against its ground truth (recall / precision, as
+// `topocut evaluate`), so that option variants can be compared stage by stage.
+//
+// Usage: segment_stages_benchmark [--repeat N] [--map NAME ...] [--variant plain|furnished|all]
+//                                 [--concavity M] [--parity] [--quality] [--no-merge]
+//                                 [--door-ratio R] [--width-depth M] [--min-room-area M2]
+//                                 [--min-room-width M] [--no-doors] [--door-max M]
+//                                 [--door-side-ratio R] [--door-depth M] [--door-turn RAD] [--simplify CELLS]
+#include <time.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <numeric>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
+
+#include "topocut/core/error.h"
+#include "topocut/evaluation/dataset.h"
+#include "topocut/evaluation/dataset_report.h"
+#include "topocut/evaluation/precision_recall.h"
+#include "topocut/io/map_loader.h"
+#include "topocut/map/rasterize.h"
+#include "topocut/segmentation/segmenter.h"
+
+namespace {
+
+using namespace topocut;
+// CPU time of the calling thread, in milliseconds.
+struct Clock {
+  static double now() {
+    timespec t{};
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+    return static_cast<double>(t.tv_sec) * 1e3 + static_cast<double>(t.tv_nsec) * 1e-6;
+  }
+};
+
+double ms(double a, double b) { return b - a; }
+
+double least(const std::vector<double>& v) { return *std::min_element(v.begin(), v.end()); }
+
+double median(std::vector<double> v) { return time_statistics(std::move(v)).median; }
+
+std::string fixed(double value, int decimals) {
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, "%.*f", decimals, value);
+  return buffer;
+}
+
+struct StageTimes {
+  std::vector<double> floor, load, free_space, polygons, decompose, merge, rooms, total;
+  int vertices = 0, pieces = 0, rooms_found = 0;
+};
+
+int run(const std::vector<std::string>& args) {
+  int repeat = 3;
+  std::vector<std::string> names;
+  std::vector<Variant> variants{Variant::kPlain, Variant::kFurnished};
+  SegmentOptions options;
+  bool quality = false;
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    const std::string& a = args[i];
+    auto value = [&]() -> std::string {
+      if (i + 1 >= args.size()) throw Error(a + " needs a value");
+      return args[++i];
+    };
+    if (a == "--repeat") {
+      repeat = std::max(1, std::stoi(value()));
+    } else if (a == "--map") {
+      names.push_back(value());
+      while (i + 1 < args.size() && args[i + 1].rfind("--", 0) != 0) names.push_back(args[++i]);
+    } else if (a == "--variant") {
+      const std::string v = value();
+      variants = v == "all" ? std::vector<Variant>{Variant::kPlain, Variant::kFurnished}
+                            : std::vector<Variant>{parse_variant(v)};
+    } else if (a == "--concavity") {
+      options.concavity = std::stod(value());
+    } else if (a == "--parity") {
+      options = parity_segment_options(options.concavity);
+    } else if (a == "--quality") {
+      quality = true;
+    } else if (a == "--no-merge") {
+      options.merge.enabled = false;
+    } else if (a == "--door-ratio") {
+      options.merge.door_ratio = std::stod(value());
+    } else if (a == "--width-depth") {
+      options.merge.width_depth = std::stod(value());
+    } else if (a == "--min-room-area") {
+      options.merge.min_room_area = std::stod(value());
+    } else if (a == "--min-room-width") {
+      options.merge.min_room_width = std::stod(value());
+    } else if (a == "--no-cover") {
+      options.labels.cover_absorbed_obstacles = false;
+    } else if (a == "--min-hole-area") {
+      options.contours.min_hole_area = std::stod(value());
+    } else if (a == "--no-doors") {
+      options.doors.enabled = false;
+    } else if (a == "--door-max") {
+      options.doors.max_width = std::stod(value());
+    } else if (a == "--door-side-ratio") {
+      options.doors.door_ratio = std::stod(value());
+    } else if (a == "--door-depth") {
+      options.doors.width_depth = std::stod(value());
+    } else if (a == "--door-turn") {
+      options.doors.min_turn = std::stod(value());
+    } else if (a == "--simplify") {
+      options.simplify = std::stod(value());
+    } else {
+      throw Error("unknown argument '" + a + "'");
+    }
+  }
+  const std::vector<DatasetMap> maps =
+      select_maps(discover_dataset(std::string(TOPOCUT_SHARED_DIR) + "/datasets/bormann"), names);
+  const MapLoadOptions load;
+
+  std::vector<std::vector<std::string>> rows{{"image", "floor", "load", "free", "polygons", "vertices", "decompose",
+                                              "pieces", "merge", "rooms", "labels", "total", "total / floor", "recall", "precision"}};
+  std::vector<double> recall[2], precision[2];
+  std::vector<double> all_total, all_floor, all_ratio;
+  for (const DatasetMap& map : maps) {
+    for (const Variant variant : variants) {
+      const std::string& path = map.image(variant);
+      StageTimes t;
+      Segmentation last;
+      for (int k = 0; k < repeat; ++k) {
+        auto t0 = Clock::now();
+        {
+          const cv::Mat image = cv::imread(path, cv::IMREAD_GRAYSCALE);
+          cv::Mat free;
+          cv::threshold(image, free, load.free_min, 255, cv::THRESH_BINARY);
+          std::vector<std::vector<cv::Point>> contours;
+          std::vector<cv::Vec4i> hierarchy;
+          cv::findContours(free, contours, hierarchy, cv::RETR_CCOMP, cv::CHAIN_APPROX_SIMPLE);
+        }
+        auto t1 = Clock::now();
+        t.floor.push_back(ms(t0, t1));
+
+        const auto a = Clock::now();
+        const OccupancyGrid grid = load_map(path, load);
+        const auto b = Clock::now();
+        const cv::Mat free = segmentation_free_space(grid, options);
+        const auto c = Clock::now();
+        const FreeSpacePolygons polygons = free_space_polygons(free, grid.resolution, options.contours);
+        const auto d = Clock::now();
+        std::vector<PieceSet> raw;
+        for (const FreeSpaceComponent& component : polygons.components)
+          raw.push_back(decompose_pieces(component, grid.resolution, options));
+        const auto e = Clock::now();
+        PieceSet pieces;
+        for (std::size_t i = 0; i < raw.size(); ++i)
+          pieces.append(merge_rooms(polygons.components[i], raw[i], grid.resolution, options.merge));
+        const auto f = Clock::now();
+        const Segmentation s = rooms_from_pieces(grid, pieces, options.labels);
+        const auto g = Clock::now();
+        t.load.push_back(ms(a, b));
+        t.free_space.push_back(ms(b, c));
+        t.polygons.push_back(ms(c, d));
+        t.decompose.push_back(ms(d, e));
+        t.merge.push_back(ms(e, f));
+        t.rooms.push_back(ms(f, g));
+        t.total.push_back(ms(a, g));
+        t.vertices = 0;
+        for (const FreeSpaceComponent& component : polygons.components) {
+          t.vertices += static_cast<int>(component.polygon.outer.size());
+          for (const Ring& hole : component.polygon.holes) t.vertices += static_cast<int>(hole.size());
+        }
+        t.pieces = 0;
+        for (const PieceSet& set : raw) t.pieces += static_cast<int>(set.pieces.size());
+        t.rooms_found = static_cast<int>(s.rooms.size());
+        if (k == 0) last = s;
+      }
+      const double floor = least(t.floor), total = least(t.total);
+      all_total.push_back(total);
+      all_floor.push_back(floor);
+      all_ratio.push_back(total / floor);
+      rows.push_back({map.name + (variant == Variant::kPlain ? "" : " (f)"), fixed(floor, 1), fixed(least(t.load), 1),
+                      fixed(least(t.free_space), 1), fixed(least(t.polygons), 1), std::to_string(t.vertices),
+                      fixed(least(t.decompose), 1), std::to_string(t.pieces), fixed(least(t.merge), 1),
+                      fixed(least(t.rooms), 1), std::to_string(t.rooms_found), fixed(total, 1),
+                      fixed(total / floor, 2), "-", "-"});
+      if (quality) {
+        const PrecisionRecall pr = evaluate_against_ground_truth(last.labels, load_ground_truth(map.ground_truth));
+        const int v = variant == Variant::kPlain ? 0 : 1;
+        recall[v].push_back(pr.recall);
+        precision[v].push_back(pr.precision);
+        rows.back()[13] = fixed(100.0 * pr.recall, 1);
+        rows.back()[14] = fixed(100.0 * pr.precision, 1);
+      }
+      std::cerr << rows.back()[0] << " " << rows.back()[11] << " ms\n";
+    }
+  }
+  std::cout << "CPU times in ms, least of " << repeat << " runs per image\n\n" << markdown_table(rows) << "\n";
+  std::cout << "median total " << fixed(median(all_total), 1) << " ms, median floor " << fixed(median(all_floor), 1)
+            << " ms, median ratio " << fixed(median(all_ratio), 2) << ", max total "
+            << fixed(*std::max_element(all_total.begin(), all_total.end()), 1) << " ms\n";
+  auto mean = [](const std::vector<double>& v) {
+    return v.empty() ? 0.0 : 100.0 * std::accumulate(v.begin(), v.end(), 0.0) / static_cast<double>(v.size());
+  };
+  auto lowest = [](const std::vector<double>& v) { return v.empty() ? 0.0 : 100.0 * *std::min_element(v.begin(), v.end()); };
+  if (quality) {
+    std::cout << "plain recall " << fixed(mean(recall[0]), 2) << " precision " << fixed(mean(precision[0]), 2)
+              << " | furnished recall " << fixed(mean(recall[1]), 2) << " precision " << fixed(mean(precision[1]), 2)
+              << " | lowest recall " << fixed(std::min(lowest(recall[0]), lowest(recall[1])), 1) << " precision "
+              << fixed(std::min(lowest(precision[0]), lowest(precision[1])), 1) << "\n";
+  }
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  try {
+    return run(std::vector<std::string>(argv + 1, argv + argc));
+  } catch (const std::exception& e) {
+    std::cerr << "segment_stages_benchmark: error: " << e.what() << "\n";
+    return 1;
+  }
+}

@@ -1,0 +1,46 @@
+#pragma once
+// Doors before decomposition: DuDe cuts where the boundary is concave at the scale tau, which is
+// not where people put room boundaries; a door is a narrow passage between two wider spaces. This
+// stage finds such passages geometrically, at every wall corner that points into free space (a
+// reflex vertex: door jambs, wall ends), as the shortest segment that resolves the corner, and
+// keeps the segments that are much narrower than the space on both of their sides. The component
+// is then split along them, and each part is decomposed on its own.
+#include <vector>
+
+#include "topocut/core/geometry.h"
+
+namespace topocut {
+
+struct DoorOptions {
+  // false: no door detection (the reference behaviour: DuDe alone).
+  bool enabled = true;
+  // Widest passage (metres) taken for a door. Doors are about 0.8-1.2 m wide; double doors and
+  // openings between rooms reach 2 m.
+  double max_width = 2.0;
+  // A passage is a door when it is narrower than door_ratio times the width of the space on each
+  // of its sides (the longest chord parallel to it within width_depth).
+  double door_ratio = 0.6;
+  // How far (metres) beyond the passage the width of each side is sampled; more than a wall's
+  // thickness, so that the door frame does not count as the space behind it.
+  double width_depth = 1.0;
+  // Corners that turn by less than this (radians) are not wall corners but bends of a wall.
+  double min_turn = 0.5;
+};
+
+// Throws Error unless the options are usable.
+void validate(const DoorOptions& options);
+
+// The door cuts of a free-space polygon (grid coordinates, one unit per cell; resolution converts
+// the options' metres): segments between a reflex vertex and a point of the same ring (a vertex
+// or a point on an edge), strictly inside the polygon, pairwise disjoint (they may share an end
+// point), each splitting the polygon in two. Ordered from the most door-like. Deterministic.
+std::vector<Segment2> find_door_cuts(const PolygonWithHoles& polygon, double resolution, const DoorOptions& options = {});
+
+// Splits polygon (outer ring CCW, holes CW, rings pairwise disjoint) along chords: segments whose
+// end points lie on the rings (vertices or points on edges), that lie inside the polygon and do not
+// cross each other, each joining two points of one ring. Returns the parts (outer CCW, holes CW),
+// which tile the polygon; every chord is an edge of the two parts it separates. Throws Error if a
+// chord end point is not on the polygon's boundary.
+std::vector<PolygonWithHoles> split_polygon(const PolygonWithHoles& polygon, const std::vector<Segment2>& chords);
+
+}  // namespace topocut

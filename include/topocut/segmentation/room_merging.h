@@ -1,0 +1,53 @@
+#pragma once
+// Pieces -> rooms: DuDe cuts a free-space component into nearly convex pieces, but rooms are not
+// convex pieces (an L-shaped corridor is at least two). This stage merges pieces across cuts that
+// are not door-like and folds pieces too small to be rooms into their neighbours. Everything is
+// measured in metres, so one set of options fits every map resolution.
+#include <vector>
+
+#include "topocut/core/geometry.h"
+#include "topocut/map/free_space_polygons.h"
+#include "topocut/segmentation/rooms_from_pieces.h"
+
+namespace topocut {
+
+struct RoomMergeOptions {
+  // false: the pieces are the rooms (the reference behaviour).
+  bool enabled = true;
+  // A cut is door-like when it is narrower than door_ratio times the width of the room on each of
+  // its sides (a door into a room, a room's opening onto a corridor); a cut at least this close to
+  // the width of the narrower side (a corridor cut across, an L-room cut at its inner corner) is
+  // not, and the rooms on its sides are merged, most clearly non-door-like cuts first.
+  double door_ratio = 0.8;
+  // How far into a room (metres) its width next to a cut is sampled: the width of a side is the
+  // longest chord parallel to the cut within this depth. It must exceed the wall thickness, so that
+  // a door's own frame does not count as the room behind it.
+  double width_depth = 1.0;
+  // Rooms smaller than this (m²) are folded into the neighbour they share the longest cut with
+  // (slivers between cuts, free-space leaks through doors and windows).
+  double min_room_area = 1.0;
+  // Rooms whose widest chord across any of their cuts stays below this (metres) are folded the same
+  // way: a strip this thin is a leak or a gap beside a door, not a room. 0 disables.
+  double min_room_width = 0.0;
+};
+
+// Throws Error unless the options are usable (finite, non-negative, door_ratio > 0).
+void validate(const RoomMergeOptions& options);
+
+// Merges the pieces of one free-space component (grid coordinates: one unit per cell, as from the
+// decomposition; resolution converts the options' metres) into rooms. The result's pieces are the
+// rooms, each the exact union of the pieces merged into it (union_of_pieces), ordered by their
+// first piece; its cuts are the cuts between two different rooms, in their input order. Cuts
+// that do not separate two pieces (keyhole cuts) are dropped. With options.enabled false, the
+// input is returned unchanged. component is the polygon the pieces tile (used for diagnostics).
+PieceSet merge_rooms(const FreeSpaceComponent& component, const PieceSet& pieces, double resolution,
+                     const RoomMergeOptions& options = {});
+
+// The union of pieces that tile a region without overlapping and meet only along whole shared
+// edges (as DuDe's pieces do): every edge traversed in both directions is removed and the rest is
+// linked into rings, outer ring counter-clockwise, holes clockwise. Vertices where a removed edge
+// met the boundary stay, even where the boundary goes straight on through them.
+// Throws Error if the pieces do not form one connected region.
+PolygonWithHoles union_of_pieces(const std::vector<PolygonWithHoles>& pieces);
+
+}  // namespace topocut

@@ -1,0 +1,452 @@
+#include "topocut/segmentation/door_cuts.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <string>
+#include <tuple>
+#include <utility>
+
+#include "topocut/core/error.h"
+
+namespace topocut {
+
+namespace {
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+double cross(const Point2& a, const Point2& b) { return a.x * b.y - a.y * b.x; }
+Point2 minus(const Point2& a, const Point2& b) { return {a.x - b.x, a.y - b.y}; }
+double dot(const Point2& a, const Point2& b) { return a.x * b.x + a.y * b.y; }
+double length(const Point2& a) { return std::hypot(a.x, a.y); }
+
+struct Edge {
+  Point2 a, b;
+  int ring = 0;
+  int index = 0;  // the edge from vertex index to index + 1 of its ring
+};
+
+// A uniform grid over the edges, for "edges near this point" and "first edge along this ray".
+class EdgeGrid {
+ public:
+  EdgeGrid(const std::vector<Edge>& edges, double cell) : edges_(edges), cell_(cell) {
+    x0_ = y0_ = kInfinity;
+    double x1 = -kInfinity, y1 = -kInfinity;
+    for (const Edge& e : edges) {
+      x0_ = std::min({x0_, e.a.x, e.b.x});
+      y0_ = std::min({y0_, e.a.y, e.b.y});
+      x1 = std::max({x1, e.a.x, e.b.x});
+      y1 = std::max({y1, e.a.y, e.b.y});
+    }
+    x0_ -= cell_;
+    y0_ -= cell_;
+    nx_ = static_cast<int>((x1 - x0_) / cell_) + 2;
+    ny_ = static_cast<int>((y1 - y0_) / cell_) + 2;
+    // Compressed rows: count, then fill. An edge goes into every cell its segment passes through.
+    std::vector<int> count(static_cast<std::size_t>(nx_) * ny_ + 1, 0);
+    auto for_cells = [&](const Edge& e, auto&& f) {
+      const int cx0 = column(std::min(e.a.x, e.b.x)), cx1 = column(std::max(e.a.x, e.b.x));
+      const int cy0 = row(std::min(e.a.y, e.b.y)), cy1 = row(std::max(e.a.y, e.b.y));
+      const Point2 d = minus(e.b, e.a);
+      for (int cy = cy0; cy <= cy1; ++cy) {
+        for (int cx = cx0; cx <= cx1; ++cx) {
+          if (cx1 > cx0 && cy1 > cy0) {
+            // Skip cells the segment's line misses (all four corners on one side).
+            const double bx = x0_ + cx * cell_, by = y0_ + cy * cell_;
+            const double s0 = cross(d, minus({bx, by}, e.a)), s1 = cross(d, minus({bx + cell_, by}, e.a));
+            const double s2 = cross(d, minus({bx, by + cell_}, e.a)), s3 = cross(d, minus({bx + cell_, by + cell_}, e.a));
+            if ((s0 > 0 && s1 > 0 && s2 > 0 && s3 > 0) || (s0 < 0 && s1 < 0 && s2 < 0 && s3 < 0)) continue;
+          }
+          f(cy * nx_ + cx);
+        }
+      }
+    };
+    for (const Edge& e : edges) for_cells(e, [&](int c) { ++count[static_cast<std::size_t>(c) + 1]; });
+    for (std::size_t i = 1; i < count.size(); ++i) count[i] += count[i - 1];
+    start_ = count;
+    items_.resize(static_cast<std::size_t>(count.back()));
+    for (std::size_t i = 0; i < edges.size(); ++i)
+      for_cells(edges[i], [&](int c) { items_[static_cast<std::size_t>(count[static_cast<std::size_t>(c)]++)] = static_cast<int>(i); });
+  }
+
+  template <class F>
+  void visit_box(double x0, double y0, double x1, double y1, F&& f) const {
+    const int cx0 = std::max(0, column(x0)), cx1 = std::min(nx_ - 1, column(x1));
+    const int cy0 = std::max(0, row(y0)), cy1 = std::min(ny_ - 1, row(y1));
+    for (int cy = cy0; cy <= cy1; ++cy)
+      for (int cx = cx0; cx <= cx1; ++cx) {
+        const int c = cy * nx_ + cx;
+        for (int k = start_[static_cast<std::size_t>(c)]; k < start_[static_cast<std::size_t>(c) + 1]; ++k) f(items_[static_cast<std::size_t>(k)]);
+      }
+  }
+
+  // Distance along the ray p + t·u (u unit) to the first edge it meets, t in (0, t_max]; infinity
+  // if none.
+  double cast(const Point2& p, const Point2& u, double t_max) const {
+    int cx = column(p.x), cy = row(p.y);
+    const int step_x = u.x > 0 ? 1 : -1, step_y = u.y > 0 ? 1 : -1;
+    const double next_x = x0_ + (cx + (step_x > 0 ? 1 : 0)) * cell_;
+    const double next_y = y0_ + (cy + (step_y > 0 ? 1 : 0)) * cell_;
+    double t_x = u.x != 0.0 ? (next_x - p.x) / u.x : kInfinity;
+    double t_y = u.y != 0.0 ? (next_y - p.y) / u.y : kInfinity;
+    const double d_x = u.x != 0.0 ? cell_ / std::abs(u.x) : kInfinity;
+    const double d_y = u.y != 0.0 ? cell_ / std::abs(u.y) : kInfinity;
+    double best = kInfinity;
+    double entry = 0.0;
+    while (cx >= 0 && cy >= 0 && cx < nx_ && cy < ny_ && entry <= t_max) {
+      const int c = cy * nx_ + cx;
+      for (int k = start_[static_cast<std::size_t>(c)]; k < start_[static_cast<std::size_t>(c) + 1]; ++k) {
+        const Edge& e = edges_[static_cast<std::size_t>(items_[static_cast<std::size_t>(k)])];
+        const Point2 d = minus(e.b, e.a);
+        const double denominator = cross(u, d);
+        if (denominator == 0.0) continue;
+        const Point2 w = minus(e.a, p);
+        const double t = cross(w, d) / denominator;
+        const double s = cross(w, u) / denominator;
+        if (t > 1e-9 && s >= 0.0 && s <= 1.0 && t < best) best = t;
+      }
+      const double exit = std::min(t_x, t_y);
+      if (best <= exit) break;
+      entry = exit;
+      if (t_x < t_y) {
+        t_x += d_x;
+        cx += step_x;
+      } else {
+        t_y += d_y;
+        cy += step_y;
+      }
+    }
+    return best <= t_max ? best : kInfinity;
+  }
+
+ private:
+  int column(double x) const { return static_cast<int>(std::floor((x - x0_) / cell_)); }
+  int row(double y) const { return static_cast<int>(std::floor((y - y0_) / cell_)); }
+
+  const std::vector<Edge>& edges_;
+  double cell_;
+  double x0_, y0_;
+  int nx_ = 0, ny_ = 0;
+  std::vector<int> start_, items_;
+};
+
+struct Candidate {
+  Segment2 segment;
+  double width = 0.0;  // cells
+  int ring = 0;
+};
+
+// Widest chord parallel to u beside the segment's midpoint on the side of normal n, sampled up to
+// depth; capped at cap (enough to call the side wide).
+double side_width(const EdgeGrid& grid, const Point2& mid, const Point2& u, const Point2& n, double depth, double cap) {
+  const double inside = grid.cast(mid, n, depth);  // the side ends at the first wall along n
+  const int samples = 8;
+  double widest = 0.0;
+  for (int k = 1; k <= samples; ++k) {
+    const double d = depth * k / samples;
+    if (d >= inside) break;
+    const Point2 p{mid.x + d * n.x, mid.y + d * n.y};
+    const double chord = std::min(grid.cast(p, u, cap), cap) + std::min(grid.cast(p, {-u.x, -u.y}, cap), cap);
+    widest = std::max(widest, chord);
+    if (widest >= cap) break;
+  }
+  return widest;
+}
+
+// Proper crossing or touching of two segments other than at shared end points.
+bool segments_conflict(const Segment2& s, const Segment2& t) {
+  auto orient = [](const Point2& a, const Point2& b, const Point2& c) { return cross(minus(b, a), minus(c, a)); };
+  const bool shared = s.a == t.a || s.a == t.b || s.b == t.a || s.b == t.b;
+  const double d1 = orient(t.a, t.b, s.a), d2 = orient(t.a, t.b, s.b);
+  const double d3 = orient(s.a, s.b, t.a), d4 = orient(s.a, s.b, t.b);
+  if (((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) && ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0))) return true;
+  if (shared) return false;
+  auto on = [&](const Point2& a, const Point2& b, const Point2& p, double o) {
+    return o == 0.0 && std::min(a.x, b.x) <= p.x && p.x <= std::max(a.x, b.x) && std::min(a.y, b.y) <= p.y &&
+           p.y <= std::max(a.y, b.y);
+  };
+  return on(t.a, t.b, s.a, d1) || on(t.a, t.b, s.b, d2) || on(s.a, s.b, t.a, d3) || on(s.a, s.b, t.b, d4);
+}
+
+double point_segment_distance(const Point2& p, const Segment2& s) {
+  const Point2 d = minus(s.b, s.a);
+  const double l2 = dot(d, d);
+  double t = l2 > 0.0 ? dot(minus(p, s.a), d) / l2 : 0.0;
+  t = std::clamp(t, 0.0, 1.0);
+  return length(minus(p, {s.a.x + t * d.x, s.a.y + t * d.y}));
+}
+
+double turn_angle(const Point2& a, const Point2& b, const Point2& c) {
+  const Point2 d = minus(b, a), e = minus(c, b);
+  return std::atan2(cross(d, e), dot(d, e));
+}
+
+// Even-odd point-in-ring test (half-open in y).
+bool in_ring(const Ring& ring, const Point2& p) {
+  bool inside = false;
+  for (std::size_t i = 0, j = ring.size() - 1; i < ring.size(); j = i++) {
+    const Point2& a = ring[i];
+    const Point2& b = ring[j];
+    if ((a.y > p.y) != (b.y > p.y) && p.x < a.x + (p.y - a.y) * (b.x - a.x) / (b.y - a.y)) inside = !inside;
+  }
+  return inside;
+}
+
+}  // namespace
+
+void validate(const DoorOptions& options) {
+  auto positive = [](double v) { return std::isfinite(v) && v > 0.0; };
+  if (!positive(options.max_width) || !positive(options.door_ratio) || !positive(options.width_depth))
+    throw Error("the door width, ratio and depth must be positive numbers");
+  if (!std::isfinite(options.min_turn) || options.min_turn < 0.0) throw Error("the door corner turn must be a non-negative angle");
+}
+
+std::vector<Segment2> find_door_cuts(const PolygonWithHoles& polygon, double resolution, const DoorOptions& options) {
+  validate(options);
+  if (!std::isfinite(resolution) || resolution <= 0.0) throw Error("the map resolution must be a positive number");
+  if (!options.enabled) return {};
+  std::vector<const Ring*> rings{&polygon.outer};
+  for (const Ring& hole : polygon.holes) rings.push_back(&hole);
+  std::vector<Edge> edges;
+  for (std::size_t r = 0; r < rings.size(); ++r) {
+    const Ring& ring = *rings[r];
+    for (std::size_t i = 0; i < ring.size(); ++i)
+      edges.push_back({ring[i], ring[(i + 1) % ring.size()], static_cast<int>(r), static_cast<int>(i)});
+  }
+  if (edges.empty()) return {};
+  const double reach = options.max_width / resolution;  // cells
+  const double depth = options.width_depth / resolution;
+  const EdgeGrid grid(edges, std::max(4.0, reach / 4.0));
+
+  std::vector<Candidate> candidates;
+  for (std::size_t r = 0; r < rings.size(); ++r) {
+    const Ring& ring = *rings[r];
+    const int n = static_cast<int>(ring.size());
+    for (int i = 0; i < n; ++i) {
+      const Point2& p = ring[static_cast<std::size_t>((i + n - 1) % n)];
+      const Point2& v = ring[static_cast<std::size_t>(i)];
+      const Point2& q = ring[static_cast<std::size_t>((i + 1) % n)];
+      // Free space lies left of every ring (outer CCW, holes CW): a right turn is a reflex corner.
+      if (turn_angle(p, v, q) > -options.min_turn) continue;
+      // Directions that resolve the corner: between the continuations of its two edges.
+      const Point2 e1 = minus(v, p), e2 = minus(v, q);
+      const double l1 = length(e1), l2 = length(e2);
+      const Point2 u1{e1.x / l1, e1.y / l1}, u2{e2.x / l2, e2.y / l2};
+      auto in_cone = [&](const Point2& x) {
+        const Point2 d = minus(x, v);
+        const double tolerance = 1e-9 * length(d);
+        return cross(u1, d) >= -tolerance && cross(d, u2) >= -tolerance;
+      };
+      const int before = (i + n - 1) % n;
+      double best = reach;
+      Point2 best_point;
+      bool found = false;
+      grid.visit_box(v.x - reach, v.y - reach, v.x + reach, v.y + reach, [&](int id) {
+        const Edge& e = edges[static_cast<std::size_t>(id)];
+        if (e.ring == static_cast<int>(r) && (e.index == i || e.index == before)) return;
+        auto consider = [&](const Point2& x) {
+          const double d = length(minus(x, v));
+          if (d > 0.0 && d < best && in_cone(x)) {
+            best = d;
+            best_point = x;
+            found = true;
+          }
+        };
+        consider(e.a);
+        consider(e.b);
+        const Point2 d = minus(e.b, e.a);
+        const double l2 = dot(d, d);
+        if (l2 > 0.0) {
+          const double t = dot(minus(v, e.a), d) / l2;
+          if (t > 0.0 && t < 1.0) consider({e.a.x + t * d.x, e.a.y + t * d.y});
+        }
+        for (const Point2& ray : {u1, u2}) {
+          const double denominator = cross(ray, d);
+          if (denominator == 0.0) continue;
+          const Point2 w = minus(e.a, v);
+          const double t = cross(w, d) / denominator, s = cross(w, ray) / denominator;
+          if (t > 0.0 && s > 0.0 && s < 1.0) consider({v.x + t * ray.x, v.y + t * ray.y});
+        }
+      });
+      if (!found) continue;
+      // The nearest point must be on the same ring: a cut to another ring does not split.
+      int ring_of_point = -1;
+      grid.visit_box(best_point.x - 1e-6, best_point.y - 1e-6, best_point.x + 1e-6, best_point.y + 1e-6, [&](int id) {
+        const Edge& e = edges[static_cast<std::size_t>(id)];
+        if (point_segment_distance(best_point, {e.a, e.b}) < 1e-7) ring_of_point = e.ring;
+      });
+      if (ring_of_point != static_cast<int>(r)) continue;
+      candidates.push_back({{v, best_point}, best, static_cast<int>(r)});
+    }
+  }
+
+  // Door test: both sides much wider than the passage.
+  std::vector<Candidate> doors;
+  for (const Candidate& c : candidates) {
+    const Point2 d = minus(c.segment.b, c.segment.a);
+    const Point2 u{d.x / c.width, d.y / c.width};
+    const Point2 mid{(c.segment.a.x + c.segment.b.x) / 2.0, (c.segment.a.y + c.segment.b.y) / 2.0};
+    const double cap = c.width / options.door_ratio;
+    if (side_width(grid, mid, u, {-u.y, u.x}, depth, cap) < cap) continue;
+    if (side_width(grid, mid, u, {u.y, -u.x}, depth, cap) < cap) continue;
+    doors.push_back(c);
+  }
+  // Narrowest first; a door found from both of its jambs (or from two corners of one wall end) is
+  // kept once; crossing cuts are not allowed.
+  std::sort(doors.begin(), doors.end(), [](const Candidate& x, const Candidate& y) {
+    return std::tie(x.width, x.segment.a.x, x.segment.a.y, x.segment.b.x, x.segment.b.y) <
+           std::tie(y.width, y.segment.a.x, y.segment.a.y, y.segment.b.x, y.segment.b.y);
+  });
+  const double duplicate = 0.3 / resolution;
+  std::vector<Segment2> accepted;
+  for (const Candidate& c : doors) {
+    bool ok = true;
+    for (const Segment2& s : accepted) {
+      if (segments_conflict(c.segment, s) ||
+          (point_segment_distance(c.segment.a, s) < duplicate && point_segment_distance(c.segment.b, s) < duplicate) ||
+          (point_segment_distance(s.a, c.segment) < duplicate && point_segment_distance(s.b, c.segment) < duplicate)) {
+        ok = false;
+        break;
+      }
+    }
+    if (ok) accepted.push_back(c.segment);
+  }
+  return accepted;
+}
+
+std::vector<PolygonWithHoles> split_polygon(const PolygonWithHoles& polygon, const std::vector<Segment2>& chords) {
+  if (chords.empty()) return {polygon};
+  std::vector<Ring> rings{polygon.outer};
+  for (const Ring& hole : polygon.holes) rings.push_back(hole);
+
+  // Chord end points that are not vertices become vertices of the edge they lie on.
+  using Key = std::pair<double, double>;
+  std::map<Key, bool> is_vertex;
+  for (const Ring& ring : rings)
+    for (const Point2& p : ring) is_vertex[{p.x, p.y}] = true;
+  std::map<std::pair<int, int>, std::vector<std::pair<double, Point2>>> inserts;  // (ring, edge) -> (t, point)
+  for (const Segment2& chord : chords) {
+    for (const Point2& p : {chord.a, chord.b}) {
+      if (is_vertex.count({p.x, p.y})) continue;
+      int best_ring = -1, best_edge = -1;
+      double best = 1e-6, best_t = 0.0;
+      for (std::size_t r = 0; r < rings.size(); ++r) {
+        const Ring& ring = rings[r];
+        for (std::size_t i = 0; i < ring.size(); ++i) {
+          const Segment2 e{ring[i], ring[(i + 1) % ring.size()]};
+          const double d = point_segment_distance(p, e);
+          if (d < best) {
+            best = d;
+            best_ring = static_cast<int>(r);
+            best_edge = static_cast<int>(i);
+            const Point2 v = minus(e.b, e.a);
+            best_t = dot(minus(p, e.a), v) / dot(v, v);
+          }
+        }
+      }
+      if (best_ring < 0) throw Error("a cut end point is not on the polygon's boundary");
+      inserts[{best_ring, best_edge}].emplace_back(best_t, p);
+      is_vertex[{p.x, p.y}] = true;
+    }
+  }
+  for (std::size_t r = 0; r < rings.size(); ++r) {
+    bool any = false;
+    for (const auto& [key, list] : inserts) any = any || key.first == static_cast<int>(r);
+    if (!any) continue;
+    Ring out;
+    for (std::size_t i = 0; i < rings[r].size(); ++i) {
+      out.push_back(rings[r][i]);
+      const auto it = inserts.find({static_cast<int>(r), static_cast<int>(i)});
+      if (it == inserts.end()) continue;
+      std::vector<std::pair<double, Point2>> list = it->second;
+      std::sort(list.begin(), list.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
+      for (const auto& [t, p] : list) out.push_back(p);
+    }
+    rings[r] = std::move(out);
+  }
+
+  // Half-edges: ring edges (free space on their left) and both directions of every chord.
+  std::map<Key, int> vertex_id;
+  std::vector<Point2> vertices;
+  auto id_of = [&](const Point2& p) {
+    const auto [it, added] = vertex_id.emplace(Key{p.x, p.y}, static_cast<int>(vertices.size()));
+    if (added) vertices.push_back(p);
+    return it->second;
+  };
+  struct HalfEdge {
+    int from, to, twin;
+  };
+  std::vector<HalfEdge> half;
+  for (const Ring& ring : rings)
+    for (std::size_t i = 0; i < ring.size(); ++i) half.push_back({id_of(ring[i]), id_of(ring[(i + 1) % ring.size()]), -1});
+  for (const Segment2& chord : chords) {
+    const int a = id_of(chord.a), b = id_of(chord.b);
+    const int k = static_cast<int>(half.size());
+    half.push_back({a, b, k + 1});
+    half.push_back({b, a, k});
+  }
+  std::vector<std::vector<int>> outgoing(vertices.size());
+  for (std::size_t k = 0; k < half.size(); ++k) outgoing[static_cast<std::size_t>(half[k].from)].push_back(static_cast<int>(k));
+
+  // Faces on the left: at each vertex leave along the edge that turns most to the left (never
+  // straight back along the chord just walked, unless it is the only way on).
+  auto next_of = [&](int k) {
+    const HalfEdge& h = half[static_cast<std::size_t>(k)];
+    int best = -1;
+    double best_turn = -kInfinity;
+    for (const int o : outgoing[static_cast<std::size_t>(h.to)]) {
+      if (o == h.twin) continue;
+      const double t = turn_angle(vertices[static_cast<std::size_t>(h.from)], vertices[static_cast<std::size_t>(h.to)],
+                                  vertices[static_cast<std::size_t>(half[static_cast<std::size_t>(o)].to)]);
+      if (t > best_turn) {
+        best_turn = t;
+        best = o;
+      }
+    }
+    return best >= 0 ? best : h.twin;
+  };
+  std::vector<bool> used(half.size(), false);
+  std::vector<Ring> outers, holes;
+  for (std::size_t start = 0; start < half.size(); ++start) {
+    if (used[start]) continue;
+    Ring cycle;
+    int k = static_cast<int>(start);
+    while (k >= 0 && !used[static_cast<std::size_t>(k)]) {
+      used[static_cast<std::size_t>(k)] = true;
+      cycle.push_back(vertices[static_cast<std::size_t>(half[static_cast<std::size_t>(k)].from)]);
+      k = next_of(k);
+    }
+    if (k != static_cast<int>(start)) throw Error("the cuts do not split the polygon into faces (a cut leaves the polygon?)");
+    const double a = signed_area(cycle);
+    if (a > 0.0) {
+      outers.push_back(std::move(cycle));
+    } else if (a < 0.0) {
+      holes.push_back(std::move(cycle));
+    }
+  }
+  std::vector<PolygonWithHoles> parts;
+  for (Ring& outer : outers) parts.push_back({std::move(outer), {}});
+  for (Ring& hole : holes) {
+    // A point just left of the hole's first edge lies in the part that owns the hole.
+    const Point2 d = minus(hole[1], hole[0]);
+    const double l = length(d);
+    const double e = 1e-4 * std::min(1.0, l);
+    const Point2 p{(hole[0].x + hole[1].x) / 2.0 - d.y / l * e, (hole[0].y + hole[1].y) / 2.0 + d.x / l * e};
+    int owner = -1;
+    double owner_area = kInfinity;
+    for (std::size_t i = 0; i < parts.size(); ++i) {
+      if (!in_ring(parts[i].outer, p)) continue;
+      const double a = signed_area(parts[i].outer);
+      if (a < owner_area) {
+        owner_area = a;
+        owner = static_cast<int>(i);
+      }
+    }
+    if (owner < 0) throw Error("internal: a hole outside every part after splitting");
+    parts[static_cast<std::size_t>(owner)].holes.push_back(std::move(hole));
+  }
+  return parts;
+}
+
+}  // namespace topocut

@@ -1,0 +1,443 @@
+#include "topocut/segmentation/room_merging.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <numeric>
+#include <set>
+#include <string>
+#include <tuple>
+#include <utility>
+
+#include "topocut/core/error.h"
+
+namespace topocut {
+
+namespace {
+
+using Key = std::tuple<double, double, double, double>;  // directed edge (a.x, a.y, b.x, b.y)
+
+Key edge_key(const Point2& a, const Point2& b) { return {a.x, a.y, b.x, b.y}; }
+
+struct Box {
+  double x0 = std::numeric_limits<double>::infinity(), y0 = x0;
+  double x1 = -std::numeric_limits<double>::infinity(), y1 = x1;
+};
+
+Box bounding_box(const PolygonWithHoles& polygon) {
+  Box box;
+  for (const Point2& p : polygon.outer) {
+    box.x0 = std::min(box.x0, p.x);
+    box.y0 = std::min(box.y0, p.y);
+    box.x1 = std::max(box.x1, p.x);
+    box.y1 = std::max(box.y1, p.y);
+  }
+  return box;
+}
+
+// Where the line p + t·u (u a unit vector) crosses the rings of one piece, as parameters t; the
+// crossing rule is half-open on the side of the line (as the rasterizer's), so a vertex on the line
+// is counted once and the even-odd pairing of the sorted values gives the piece's chords.
+void add_crossings(const Ring& ring, const Point2& p, const Point2& u, std::vector<double>& ts) {
+  const Point2 n{-u.y, u.x};
+  const std::size_t count = ring.size();
+  for (std::size_t i = 0; i < count; ++i) {
+    const Point2& a = ring[i];
+    const Point2& b = ring[(i + 1) % count];
+    const double sa = (a.x - p.x) * n.x + (a.y - p.y) * n.y;
+    const double sb = (b.x - p.x) * n.x + (b.y - p.y) * n.y;
+    if ((sa > 0.0) == (sb > 0.0)) continue;
+    const double ta = (a.x - p.x) * u.x + (a.y - p.y) * u.y;
+    const double tb = (b.x - p.x) * u.x + (b.y - p.y) * u.y;
+    ts.push_back(ta + (tb - ta) * sa / (sa - sb));
+  }
+}
+
+// The pieces and cuts of one component, with the rooms formed so far (union-find over pieces).
+class Merger {
+ public:
+  Merger(const PieceSet& set, double resolution, const RoomMergeOptions& options)
+      : set_(set), resolution_(resolution), options_(options), parent_(set.pieces.size()) {
+    std::iota(parent_.begin(), parent_.end(), 0);
+    boxes_.reserve(set.pieces.size());
+    for (const PolygonWithHoles& piece : set.pieces) {
+      boxes_.push_back(bounding_box(piece));
+      areas_.push_back(area(piece) * resolution * resolution);
+    }
+    find_cut_sides();
+  }
+
+  void merge_non_doors() {
+    // Greedy: the most clearly non-door-like cut first, then the scores next to the merged room
+    // change (the merged room is wider or longer than its parts), so they are measured again.
+    while (true) {
+      int best = -1;
+      double best_score = 0.0;
+      for (std::size_t k = 0; k < sides_.size(); ++k) {
+        const Side& s = sides_[k];
+        if (s.left < 0 || root(s.left) == root(s.right) || blocked_[k] || s.door) continue;
+        const double score = door_score(static_cast<int>(k));
+        if (score >= options_.door_ratio && (best < 0 || score > best_score)) {
+          best = static_cast<int>(k);
+          best_score = score;
+        }
+      }
+      if (best < 0) return;
+      if (!unite(sides_[static_cast<std::size_t>(best)].left, sides_[static_cast<std::size_t>(best)].right))
+        blocked_[static_cast<std::size_t>(best)] = true;
+    }
+  }
+
+  void fold_small_rooms() {
+    while (true) {
+      // Smallest offending room first: it is the least likely to be a room of its own.
+      int victim = -1;
+      double victim_area = 0.0;
+      for (std::size_t i = 0; i < parent_.size(); ++i) {
+        if (root(static_cast<int>(i)) != static_cast<int>(i)) continue;
+        const double a = room_area(static_cast<int>(i));
+        const bool small = a < options_.min_room_area;
+        const bool thin = options_.min_room_width > 0.0 && room_width(static_cast<int>(i)) < options_.min_room_width;
+        if ((small || thin) && (victim < 0 || a < victim_area) && !stuck_[i]) {
+          victim = static_cast<int>(i);
+          victim_area = a;
+        }
+      }
+      if (victim < 0) return;
+      // The neighbour with the longest shared cut length.
+      std::map<int, double> shared;
+      for (std::size_t k = 0; k < sides_.size(); ++k) {
+        const Side& s = sides_[k];
+        if (s.left < 0 || blocked_[k]) continue;
+        const int a = root(s.left), b = root(s.right);
+        if (a == b || (a != victim && b != victim)) continue;
+        shared[a == victim ? b : a] += s.length;
+      }
+      int into = -1;
+      double longest = 0.0;
+      for (const auto& [room, length] : shared) {
+        if (length > longest) {
+          into = room;
+          longest = length;
+        }
+      }
+      if (into < 0 || !unite(victim, into)) stuck_[static_cast<std::size_t>(victim)] = true;
+    }
+  }
+
+  PieceSet result() {
+    // Rooms in the order of their first piece; the cuts between two rooms in input order.
+    std::vector<int> order;
+    std::vector<std::vector<int>> members(parent_.size());
+    for (std::size_t i = 0; i < parent_.size(); ++i) {
+      const int r = root(static_cast<int>(i));
+      if (members[static_cast<std::size_t>(r)].empty()) order.push_back(r);
+      members[static_cast<std::size_t>(r)].push_back(static_cast<int>(i));
+    }
+    PieceSet out;
+    std::set<std::pair<double, double>> ends;  // end points of the cuts that stay
+    for (std::size_t k = 0; k < sides_.size(); ++k) {
+      const Side& s = sides_[k];
+      if (s.left < 0 || root(s.left) == root(s.right)) continue;
+      out.cuts.push_back(set_.cuts[k]);
+      if (s.door) out.doors.push_back(set_.cuts[k]);
+      ends.insert({set_.cuts[k].a.x, set_.cuts[k].a.y});
+      ends.insert({set_.cuts[k].b.x, set_.cuts[k].b.y});
+    }
+    for (const int r : order) {
+      const std::vector<int>& m = members[static_cast<std::size_t>(r)];
+      if (m.size() == 1) {
+        out.pieces.push_back(set_.pieces[static_cast<std::size_t>(m[0])]);
+        continue;
+      }
+      // Where a removed cut met a straight wall the union goes straight on; such vertices are
+      // dropped unless a remaining cut ends there (the cut must stay an edge of both rooms).
+      PolygonWithHoles room = unions_.at(r);
+      auto tidy = [&](Ring& ring) {
+        Ring kept;
+        const std::size_t n = ring.size();
+        for (std::size_t i = 0; i < n; ++i) {
+          const Point2& a = ring[(i + n - 1) % n];
+          const Point2& b = ring[i];
+          const Point2& c = ring[(i + 1) % n];
+          const double turn = (b.x - a.x) * (c.y - b.y) - (b.y - a.y) * (c.x - b.x);
+          const double ahead = (b.x - a.x) * (c.x - b.x) + (b.y - a.y) * (c.y - b.y);
+          if (turn == 0.0 && ahead > 0.0 && !ends.count({b.x, b.y})) continue;
+          kept.push_back(b);
+        }
+        if (kept.size() >= 3) ring = std::move(kept);
+      };
+      tidy(room.outer);
+      for (Ring& hole : room.holes) tidy(hole);
+      out.pieces.push_back(std::move(room));
+    }
+    return out;
+  }
+
+ private:
+  struct Side {
+    int left = -1, right = -1;  // pieces left and right of the cut (a -> b); -1: not a cut between two pieces
+    double length = 0.0;        // metres
+    bool door = false;          // found by the door detector: never merged as "not a door"
+  };
+
+  void find_cut_sides() {
+    std::map<Key, int> owner;
+    for (std::size_t i = 0; i < set_.pieces.size(); ++i) {
+      auto add_ring = [&](const Ring& ring) {
+        for (std::size_t k = 0; k < ring.size(); ++k)
+          owner.emplace(edge_key(ring[k], ring[(k + 1) % ring.size()]), static_cast<int>(i));
+      };
+      add_ring(set_.pieces[i].outer);
+      for (const Ring& hole : set_.pieces[i].holes) add_ring(hole);
+    }
+    sides_.resize(set_.cuts.size());
+    blocked_.assign(set_.cuts.size(), false);
+    stuck_.assign(set_.pieces.size(), false);
+    for (std::size_t k = 0; k < set_.cuts.size(); ++k) {
+      const Segment2& c = set_.cuts[k];
+      const auto left = owner.find(edge_key(c.a, c.b));
+      const auto right = owner.find(edge_key(c.b, c.a));
+      if (left == owner.end() || right == owner.end() || left->second == right->second) continue;
+      const bool door = std::find(set_.doors.begin(), set_.doors.end(), c) != set_.doors.end();
+      sides_[k] = {left->second, right->second, distance(c.a, c.b) * resolution_, door};
+    }
+  }
+
+  int root(int i) {
+    while (parent_[static_cast<std::size_t>(i)] != i) {
+      parent_[static_cast<std::size_t>(i)] = parent_[static_cast<std::size_t>(parent_[static_cast<std::size_t>(i)])];
+      i = parent_[static_cast<std::size_t>(i)];
+    }
+    return i;
+  }
+
+  // Merges the rooms of pieces a and b if their union is a proper polygon; false if it is not (then
+  // the pieces do not meet along whole edges, and the rooms are left apart).
+  bool unite(int a, int b) {
+    int ra = root(a), rb = root(b);
+    if (ra == rb) return true;
+    if (rb < ra) std::swap(ra, rb);  // the room keeps its first piece as root
+    std::vector<PolygonWithHoles> parts{room_polygon(ra), room_polygon(rb)};
+    PolygonWithHoles joined;
+    try {
+      joined = union_of_pieces(parts);
+    } catch (const Error&) {
+      return false;
+    }
+    parent_[static_cast<std::size_t>(rb)] = ra;
+    unions_[ra] = std::move(joined);
+    unions_.erase(rb);
+    area_sum_[ra] = room_area(ra) + room_area(rb);
+    area_sum_.erase(rb);
+    return true;
+  }
+
+  PolygonWithHoles room_polygon(int r) {
+    const auto it = unions_.find(r);
+    return it != unions_.end() ? it->second : set_.pieces[static_cast<std::size_t>(r)];
+  }
+
+  double room_area(int r) {
+    const auto it = area_sum_.find(r);
+    return it != area_sum_.end() ? it->second : areas_[static_cast<std::size_t>(r)];
+  }
+
+  // Length of the chord of room r along the line through p with direction u (unit), around p; 0 if
+  // p is not inside the room. The room's pieces are intersected one by one and their chords joined.
+  double chord(int r, const Point2& p, const Point2& u) {
+    std::vector<std::pair<double, double>> spans;
+    std::vector<double> ts;
+    const Point2 n{-u.y, u.x};
+    for (std::size_t i = 0; i < set_.pieces.size(); ++i) {
+      if (root(static_cast<int>(i)) != r) continue;
+      const Box& b = boxes_[i];
+      const double s[4] = {(b.x0 - p.x) * n.x + (b.y0 - p.y) * n.y, (b.x1 - p.x) * n.x + (b.y0 - p.y) * n.y,
+                           (b.x0 - p.x) * n.x + (b.y1 - p.y) * n.y, (b.x1 - p.x) * n.x + (b.y1 - p.y) * n.y};
+      if (std::min({s[0], s[1], s[2], s[3]}) > 0.0 || std::max({s[0], s[1], s[2], s[3]}) <= 0.0) continue;
+      ts.clear();
+      add_crossings(set_.pieces[i].outer, p, u, ts);
+      for (const Ring& hole : set_.pieces[i].holes) add_crossings(hole, p, u, ts);
+      std::sort(ts.begin(), ts.end());
+      for (std::size_t k = 0; k + 1 < ts.size(); k += 2) spans.emplace_back(ts[k], ts[k + 1]);
+    }
+    std::sort(spans.begin(), spans.end());
+    // Join touching spans (pieces of one room share their cuts), keep the one around t = 0.
+    const double touch = 1e-9;
+    double lo = 0.0, hi = 0.0;
+    bool open = false;
+    for (const auto& [a, b] : spans) {
+      if (open && a <= hi + touch) {
+        hi = std::max(hi, b);
+        continue;
+      }
+      if (open && lo <= 0.0 && hi >= 0.0) return hi - lo;
+      lo = a;
+      hi = b;
+      open = true;
+    }
+    if (open && lo <= 0.0 && hi >= 0.0) return hi - lo;
+    return 0.0;
+  }
+
+  // Width of room r beside cut k (cells): the longest chord parallel to the cut within the sampling
+  // depth on r's side.
+  double side_width(int k, int r, bool left) {
+    const Segment2& c = set_.cuts[static_cast<std::size_t>(k)];
+    const double length = distance(c.a, c.b);
+    const Point2 u{(c.b.x - c.a.x) / length, (c.b.y - c.a.y) / length};
+    const Point2 n = left ? Point2{-u.y, u.x} : Point2{u.y, -u.x};
+    const Point2 mid{(c.a.x + c.b.x) / 2.0, (c.a.y + c.b.y) / 2.0};
+    const double depth = std::max(options_.width_depth / resolution_, 1.0);
+    const int samples = 8;
+    double widest = 0.0;
+    for (int s = 1; s <= samples; ++s) {
+      const double d = depth * s / samples;
+      const double w = chord(r, {mid.x + d * n.x, mid.y + d * n.y}, u);
+      if (w <= 0.0) break;
+      widest = std::max(widest, w);
+    }
+    return widest * resolution_;
+  }
+
+  // Cut length over the width of the narrower side: >= door_ratio means "not a door".
+  double door_score(int k) {
+    const Side& s = sides_[static_cast<std::size_t>(k)];
+    const double narrow = std::min(side_width(k, root(s.left), true), side_width(k, root(s.right), false));
+    if (narrow <= 0.0) return std::numeric_limits<double>::infinity();
+    return s.length / narrow;
+  }
+
+  // Widest chord of room r along any of its cuts (metres).
+  double room_width(int r) {
+    double widest = 0.0;
+    for (std::size_t k = 0; k < sides_.size(); ++k) {
+      const Side& s = sides_[k];
+      if (s.left < 0) continue;
+      const int a = root(s.left), b = root(s.right);
+      if (a == b) continue;
+      if (a == r) widest = std::max(widest, side_width(static_cast<int>(k), r, true));
+      if (b == r) widest = std::max(widest, side_width(static_cast<int>(k), r, false));
+    }
+    return widest;
+  }
+
+  const PieceSet& set_;
+  double resolution_;
+  RoomMergeOptions options_;
+  std::vector<int> parent_;
+  std::vector<Box> boxes_;
+  std::vector<double> areas_;  // m² per piece
+  std::vector<Side> sides_;
+  std::vector<bool> blocked_, stuck_;
+  std::map<int, PolygonWithHoles> unions_;  // room root -> union polygon (rooms of 2+ pieces)
+  std::map<int, double> area_sum_;          // room root -> area (m², rooms of 2+ pieces)
+};
+
+double turn(const Point2& a, const Point2& b, const Point2& c) {
+  const double dx = b.x - a.x, dy = b.y - a.y, ex = c.x - b.x, ey = c.y - b.y;
+  return std::atan2(dx * ey - dy * ex, dx * ex + dy * ey);
+}
+
+}  // namespace
+
+void validate(const RoomMergeOptions& options) {
+  auto finite_non_negative = [](double v) { return std::isfinite(v) && v >= 0.0; };
+  if (!std::isfinite(options.door_ratio) || options.door_ratio <= 0.0)
+    throw Error("the door ratio of room merging must be a positive number");
+  if (!finite_non_negative(options.width_depth) || !finite_non_negative(options.min_room_area) ||
+      !finite_non_negative(options.min_room_width))
+    throw Error("the room merging depth, minimum room area and minimum room width must be non-negative numbers");
+}
+
+PolygonWithHoles union_of_pieces(const std::vector<PolygonWithHoles>& pieces) {
+  // Directed edges; an edge met in the other direction too is interior and cancels.
+  std::map<Key, int> pending;
+  std::vector<std::pair<Point2, Point2>> edges;
+  auto add_ring = [&](const Ring& ring) {
+    for (std::size_t k = 0; k < ring.size(); ++k) {
+      const Point2& a = ring[k];
+      const Point2& b = ring[(k + 1) % ring.size()];
+      if (a == b) continue;
+      const auto reverse = pending.find(edge_key(b, a));
+      if (reverse != pending.end()) {
+        pending.erase(reverse);
+        continue;
+      }
+      pending.emplace(edge_key(a, b), static_cast<int>(edges.size()));
+      edges.emplace_back(a, b);
+    }
+  };
+  for (const PolygonWithHoles& piece : pieces) {
+    add_ring(piece.outer);
+    for (const Ring& hole : piece.holes) add_ring(hole);
+  }
+  // Remaining edges by start point, in a deterministic order.
+  std::map<std::pair<double, double>, std::vector<int>> out;
+  std::vector<bool> used(edges.size(), true);
+  for (const auto& [key, index] : pending) {
+    const auto& e = edges[static_cast<std::size_t>(index)];
+    out[{e.first.x, e.first.y}].push_back(index);
+    used[static_cast<std::size_t>(index)] = false;
+  }
+  std::vector<Ring> rings;
+  for (const auto& [key, first] : pending) {
+    if (used[static_cast<std::size_t>(first)]) continue;
+    Ring ring;
+    int e = first;
+    used[static_cast<std::size_t>(e)] = true;
+    const std::size_t limit = edges.size() + 1;
+    while (true) {
+      const auto& [a, b] = edges[static_cast<std::size_t>(e)];
+      ring.push_back(a);
+      if (ring.size() > limit) throw Error("internal: the pieces' edges do not close into rings");
+      // Leave b along the unused edge that turns most to the right (holes touching the outer ring
+      // at a vertex stay separate rings); closing the ring is one of the choices.
+      const auto it = out.find({b.x, b.y});
+      int next = -1;
+      double best = std::numeric_limits<double>::infinity();
+      if (it != out.end()) {
+        for (const int candidate : it->second) {
+          if (used[static_cast<std::size_t>(candidate)] && candidate != first) continue;
+          const double t = turn(a, b, edges[static_cast<std::size_t>(candidate)].second);
+          if (t < best) {
+            best = t;
+            next = candidate;
+          }
+        }
+      }
+      if (next < 0) throw Error("the pieces do not meet along whole edges: their union is not a polygon");
+      if (next == first) break;
+      used[static_cast<std::size_t>(next)] = true;
+      e = next;
+    }
+    if (ring.size() >= 3 && signed_area(ring) != 0.0) rings.push_back(std::move(ring));
+  }
+  PolygonWithHoles result;
+  int outers = 0;
+  for (Ring& ring : rings) {
+    if (signed_area(ring) > 0.0) {
+      result.outer = std::move(ring);
+      ++outers;
+    } else {
+      result.holes.push_back(std::move(ring));
+    }
+  }
+  if (outers != 1) throw Error("the pieces do not form one connected region (" + std::to_string(outers) + " outer rings)");
+  return result;
+}
+
+PieceSet merge_rooms(const FreeSpaceComponent& component, const PieceSet& pieces, double resolution,
+                     const RoomMergeOptions& options) {
+  (void)component;
+  validate(options);
+  if (!std::isfinite(resolution) || resolution <= 0.0) throw Error("the map resolution must be a positive number");
+  if (!options.enabled || pieces.pieces.size() < 2) return pieces;
+  Merger merger(pieces, resolution, options);
+  merger.merge_non_doors();
+  merger.fold_small_rooms();
+  return merger.result();
+}
+
+}  // namespace topocut

@@ -1,0 +1,115 @@
+#include "topocut/segmentation/door_cuts.h"
+
+#include <gtest/gtest.h>
+
+#include "topocut/core/error.h"
+
+namespace topocut {
+namespace {
+
+constexpr double kRes = 0.05;  // 20 units per metre
+
+// Two 3 m x 3 m rooms, x in [0, 60] and [64, 124], joined by a 0.9 m door (y in [20, 38])
+// through a 0.2 m wall: one outer ring, counter-clockwise.
+PolygonWithHoles two_rooms() {
+  return {{{0, 0}, {60, 0}, {60, 20}, {64, 20}, {64, 0}, {124, 0}, {124, 60}, {64, 60}, {64, 38}, {60, 38}, {60, 60},
+           {0, 60}},
+          {}};
+}
+
+double total_area(const std::vector<PolygonWithHoles>& parts) {
+  double sum = 0.0;
+  for (const PolygonWithHoles& p : parts) sum += area(p);
+  return sum;
+}
+
+TEST(DoorCuts, ADoorBetweenTwoRoomsIsFoundOnce) {
+  const std::vector<Segment2> doors = find_door_cuts(two_rooms(), kRes);
+  ASSERT_EQ(doors.size(), 1u);
+  // Jamb to jamb across the opening, on one face of the wall: 18 units = 0.9 m, vertical.
+  EXPECT_DOUBLE_EQ(distance(doors[0].a, doors[0].b), 18.0);
+  EXPECT_EQ(doors[0].a.x, doors[0].b.x);
+  EXPECT_TRUE(doors[0].a.x == 60 || doors[0].a.x == 64);
+}
+
+TEST(DoorCuts, CorridorsAndRoomsWithoutDoorsHaveNone) {
+  // A straight corridor, and an L-shaped corridor: its inner corner is reflex, but every cut that
+  // resolves it is as wide as the corridor on both sides.
+  const PolygonWithHoles straight{{{0, 0}, {200, 0}, {200, 36}, {0, 36}}, {}};
+  const PolygonWithHoles l_shape{{{0, 0}, {200, 0}, {200, 36}, {36, 36}, {36, 200}, {0, 200}}, {}};
+  EXPECT_TRUE(find_door_cuts(straight, kRes).empty());
+  EXPECT_TRUE(find_door_cuts(l_shape, kRes).empty());
+}
+
+TEST(DoorCuts, ARoomOpeningOntoACorridorIsADoorAndTooWideAnOpeningIsNot) {
+  // A 4 m x 4 m room above a 2 m wide, 10 m long corridor, joined by an opening of width w in the
+  // 0.2 m wall between them (x from 80 - w/2 to 80 + w/2 in units).
+  auto plan = [](double w) {
+    const double a = 80 - w / 2, b = 80 + w / 2;
+    return PolygonWithHoles{{{0, 0}, {200, 0}, {200, 40}, {b, 40}, {b, 44}, {120, 44}, {120, 124}, {40, 124},
+                             {40, 44}, {a, 44}, {a, 40}, {0, 40}},
+                            {}};
+  };
+  EXPECT_EQ(find_door_cuts(plan(18), kRes).size(), 1u);
+  // A 1.9 m opening in a 2 m corridor: narrower than 0.6 times the corridor's length but not
+  // than 0.6 times... the corridor side is 10 m long, the room 4 m wide: still a door.
+  EXPECT_EQ(find_door_cuts(plan(38), kRes).size(), 1u);
+  DoorOptions narrow;
+  narrow.max_width = 1.5;
+  EXPECT_TRUE(find_door_cuts(plan(38), kRes, narrow).empty());
+  // Open across almost the whole room (3.8 m of 4 m): not a door.
+  EXPECT_TRUE(find_door_cuts(plan(76), kRes).empty());
+}
+
+TEST(DoorCuts, DisabledAndBadOptions) {
+  DoorOptions off;
+  off.enabled = false;
+  EXPECT_TRUE(find_door_cuts(two_rooms(), kRes, off).empty());
+  DoorOptions bad;
+  bad.door_ratio = 0.0;
+  EXPECT_THROW(find_door_cuts(two_rooms(), kRes, bad), Error);
+  EXPECT_THROW(find_door_cuts(two_rooms(), -1.0), Error);
+}
+
+TEST(SplitPolygon, ADoorSplitsTwoRoomsIntoPartsThatTileThePolygon) {
+  const PolygonWithHoles polygon = two_rooms();
+  const Segment2 door{{60, 20}, {60, 38}};
+  const std::vector<PolygonWithHoles> parts = split_polygon(polygon, {door});
+  ASSERT_EQ(parts.size(), 2u);
+  EXPECT_DOUBLE_EQ(total_area(parts), area(polygon));
+  for (const PolygonWithHoles& part : parts) {
+    EXPECT_GT(signed_area(part.outer), 0.0);
+    bool has_door = false;
+    for (std::size_t i = 0; i < part.outer.size(); ++i) {
+      const Point2& a = part.outer[i];
+      const Point2& b = part.outer[(i + 1) % part.outer.size()];
+      has_door = has_door || (a == door.a && b == door.b) || (a == door.b && b == door.a);
+    }
+    EXPECT_TRUE(has_door);
+  }
+  EXPECT_TRUE(split_polygon(polygon, {}) == std::vector<PolygonWithHoles>{polygon});
+}
+
+TEST(SplitPolygon, EndPointsOnEdgesBecomeVerticesAndHolesGoToTheirPart) {
+  // A 10 x 4 rectangle with a 1 x 1 hole at x in [7, 8], cut across at x = 5 (end points in the
+  // middle of the long edges).
+  const PolygonWithHoles polygon{{{0, 0}, {10, 0}, {10, 4}, {0, 4}}, {{{7, 1}, {7, 2}, {8, 2}, {8, 1}}}};
+  const std::vector<PolygonWithHoles> parts = split_polygon(polygon, {{{5, 0}, {5, 4}}});
+  ASSERT_EQ(parts.size(), 2u);
+  EXPECT_DOUBLE_EQ(total_area(parts), 39.0);
+  int with_hole = 0;
+  for (const PolygonWithHoles& part : parts) {
+    if (part.holes.empty()) {
+      EXPECT_DOUBLE_EQ(area(part), 20.0);
+    } else {
+      ++with_hole;
+      EXPECT_DOUBLE_EQ(area(part), 19.0);
+      EXPECT_LT(signed_area(part.holes[0]), 0.0);
+    }
+  }
+  EXPECT_EQ(with_hole, 1);
+  EXPECT_THROW(split_polygon(polygon, {{{5, 0.5}, {5, 4}}}), Error);
+}
+
+}  // namespace
+}  // namespace topocut

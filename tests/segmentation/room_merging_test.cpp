@@ -1,0 +1,139 @@
+#include "topocut/segmentation/room_merging.h"
+
+#include <algorithm>
+
+#include <gtest/gtest.h>
+
+#include "topocut/core/error.h"
+
+namespace topocut {
+namespace {
+
+// Grid coordinates, one unit per cell; at 0.05 m per cell 20 units are a metre.
+constexpr double kRes = 0.05;
+
+PolygonWithHoles box(double x0, double y0, double x1, double y1) {
+  return {{{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}}, {}};
+}
+
+FreeSpaceComponent no_component() { return {}; }
+
+bool has_edge(const Ring& ring, const Point2& a, const Point2& b) {
+  for (std::size_t i = 0; i < ring.size(); ++i) {
+    const Point2& p = ring[i];
+    const Point2& q = ring[(i + 1) % ring.size()];
+    if ((p == a && q == b) || (p == b && q == a)) return true;
+  }
+  return false;
+}
+
+TEST(UnionOfPieces, TwoSquaresSharingAnEdgeGiveTheRectangle) {
+  const PolygonWithHoles u = union_of_pieces({box(0, 0, 10, 10), box(10, 0, 20, 10)});
+  EXPECT_TRUE(u.holes.empty());
+  EXPECT_DOUBLE_EQ(signed_area(u.outer), 200.0);
+  // The shared edge is gone; its end points stay (the boundary goes straight on through them).
+  EXPECT_FALSE(has_edge(u.outer, {10, 0}, {10, 10}));
+  EXPECT_EQ(u.outer.size(), 6u);
+}
+
+TEST(UnionOfPieces, PiecesAroundAnObstacleGiveAPolygonWithAHole) {
+  // Four pieces framing the square [10, 20]²: the union is the big square minus the small one.
+  const std::vector<PolygonWithHoles> pieces{
+      {{{0, 0}, {30, 0}, {30, 10}, {20, 10}, {10, 10}, {0, 10}}, {}},
+      {{{20, 10}, {30, 10}, {30, 20}, {20, 20}}, {}},
+      {{{0, 20}, {10, 20}, {20, 20}, {30, 20}, {30, 30}, {0, 30}}, {}},
+      {{{0, 10}, {10, 10}, {10, 20}, {0, 20}}, {}}};
+  const PolygonWithHoles u = union_of_pieces(pieces);
+  ASSERT_EQ(u.holes.size(), 1u);
+  EXPECT_GT(signed_area(u.outer), 0.0);
+  EXPECT_LT(signed_area(u.holes[0]), 0.0);
+  EXPECT_DOUBLE_EQ(area(u), 900.0 - 100.0);
+}
+
+TEST(UnionOfPieces, DisjointPiecesAreAnError) {
+  EXPECT_THROW(union_of_pieces({box(0, 0, 10, 10), box(20, 0, 30, 10)}), Error);
+}
+
+TEST(MergeRooms, AnOpeningAsWideAsTheRoomIsNoDoor) {
+  // An L-shaped room cut at its inner corner: the cut is exactly as wide as the narrower side.
+  PieceSet set;
+  set.pieces = {box(0, 0, 60, 40), box(60, 0, 100, 40), box(60, 40, 100, 100)};
+  set.cuts = {{{60, 0}, {60, 40}}, {{60, 40}, {100, 40}}};
+  const PieceSet rooms = merge_rooms(no_component(), set, kRes);
+  ASSERT_EQ(rooms.pieces.size(), 1u);
+  EXPECT_TRUE(rooms.cuts.empty());
+  EXPECT_DOUBLE_EQ(area(rooms.pieces[0]), 60 * 40 + 40 * 40 + 40 * 60);
+  EXPECT_TRUE(rooms.pieces[0].holes.empty());
+  // Merged rooms keep no internal passage: no vertex of the union lies on a removed cut's inside.
+  for (const Point2& v : rooms.pieces[0].outer) EXPECT_FALSE(v.x == 60 && v.y > 0 && v.y < 40);
+}
+
+TEST(MergeRooms, ADoorBetweenTwoRoomsKeepsThemApart) {
+  // Two 3 m rooms joined by a 0.9 m door through a 0.2 m wall. The door's own frame is a sliver
+  // piece; it is folded into a room, and the door stays a passage.
+  // Pieces meet along whole edges, so the rooms carry the door's end points as vertices.
+  PieceSet set;
+  set.pieces = {{{{0, 0}, {60, 0}, {60, 20}, {60, 38}, {60, 60}, {0, 60}}, {}},
+                box(60, 20, 64, 38),
+                {{{64, 0}, {124, 0}, {124, 60}, {64, 60}, {64, 38}, {64, 20}}, {}}};
+  set.cuts = {{{60, 20}, {60, 38}}, {{64, 38}, {64, 20}}};
+  const PieceSet rooms = merge_rooms(no_component(), set, kRes);
+  ASSERT_EQ(rooms.pieces.size(), 2u);
+  ASSERT_EQ(rooms.cuts.size(), 1u);
+  EXPECT_NEAR(distance(rooms.cuts[0].a, rooms.cuts[0].b) * kRes, 0.9, 1e-12);
+  const double a0 = area(rooms.pieces[0]), a1 = area(rooms.pieces[1]);
+  EXPECT_DOUBLE_EQ(a0 + a1, 3600 + 72 + 3600);
+  EXPECT_DOUBLE_EQ(std::min(a0, a1), 3600.0);
+  // The remaining cut is an edge of both rooms.
+  EXPECT_TRUE(has_edge(rooms.pieces[0].outer, rooms.cuts[0].a, rooms.cuts[0].b));
+  EXPECT_TRUE(has_edge(rooms.pieces[1].outer, rooms.cuts[0].a, rooms.cuts[0].b));
+}
+
+TEST(MergeRooms, AKnownDoorIsNeverMergedAsAWideOpening) {
+  PieceSet set;
+  set.pieces = {box(0, 0, 60, 40), box(60, 0, 100, 40)};
+  set.cuts = {{{60, 0}, {60, 40}}};
+  EXPECT_EQ(merge_rooms(no_component(), set, kRes).pieces.size(), 1u);
+  set.doors = set.cuts;
+  EXPECT_EQ(merge_rooms(no_component(), set, kRes).pieces.size(), 2u);
+}
+
+TEST(MergeRooms, ASliverIsFoldedIntoTheNeighbourWithTheLongestCut) {
+  // A small strip between two large rooms; it shares 3 m with the left room, 1 m with the right.
+  PieceSet set;
+  set.pieces = {{{{0, 0}, {80, 0}, {80, 60}, {80, 100}, {0, 100}}, {}},
+                {{{80, 60}, {80, 0}, {100, 0}, {100, 20}}, {}},
+                {{{100, 0}, {200, 0}, {200, 100}, {100, 100}, {100, 20}}, {}}};
+  // Left/strip cut 60 units (3 m), strip/right cut 20 units (1 m). The strip is a trapezoid of
+  // (60 + 20) / 2 * 20 = 800 units² = 2 m².
+  set.cuts = {{{80, 0}, {80, 60}}, {{100, 20}, {100, 0}}};
+  RoomMergeOptions options;
+  options.door_ratio = 10.0;      // no cut is wide enough to merge as "not a door"
+  options.min_room_area = 3.0;    // m²: the strip is too small to be a room
+  const PieceSet rooms = merge_rooms(no_component(), set, kRes, options);
+  ASSERT_EQ(rooms.pieces.size(), 2u);
+  EXPECT_DOUBLE_EQ(area(rooms.pieces[0]), 80 * 100 + area(set.pieces[1]));
+  ASSERT_EQ(rooms.cuts.size(), 1u);
+  EXPECT_EQ(rooms.cuts[0], set.cuts[1]);
+}
+
+TEST(MergeRooms, DisabledReturnsThePiecesAndBadOptionsAreErrors) {
+  PieceSet set;
+  set.pieces = {box(0, 0, 60, 40), box(60, 0, 100, 40)};
+  set.cuts = {{{60, 0}, {60, 40}}};
+  RoomMergeOptions off;
+  off.enabled = false;
+  const PieceSet same = merge_rooms(no_component(), set, kRes, off);
+  EXPECT_EQ(same.pieces, set.pieces);
+  EXPECT_EQ(same.cuts, set.cuts);
+  RoomMergeOptions bad;
+  bad.door_ratio = 0.0;
+  EXPECT_THROW(merge_rooms(no_component(), set, kRes, bad), Error);
+  bad = {};
+  bad.min_room_area = -1.0;
+  EXPECT_THROW(merge_rooms(no_component(), set, kRes, bad), Error);
+  EXPECT_THROW(merge_rooms(no_component(), set, 0.0), Error);
+}
+
+}  // namespace
+}  // namespace topocut
