@@ -172,5 +172,55 @@ TEST(DudeProperties, TransformedCopies) {
   EXPECT_GE(quarter_same * 5, quarter_runs * 4) << quarter_same << " of " << quarter_runs;
 }
 
+// §10.14: the spec's synthetic raster (200 x 120 px, 4-px walls, corridor rows 4-30, corridor wall
+// rows 30-34 with 18-px doors at x = 20, 75, 125, 175, room separators at x = 60, 110, 160, a 25 x 10
+// and a 2 x 2 obstacle), tau = 50 px: 4 rooms and the corridor; with 150 one-pixel bumps on the
+// walls still 5 +- 1 pieces with every room centre in a different piece.
+TEST(DudeProperties, SpecRasterWithPixelNoise) {
+  auto raster = [](int bumps, unsigned seed) {
+    test_shapes::Grid g(200, 120);
+    g.fill(4, 4, 196, 116, true);
+    g.fill(4, 30, 196, 34, false);
+    for (int x : {20, 75, 125, 175}) g.fill(x, 30, x + 18, 34, true);
+    for (int x : {60, 110, 160}) g.fill(x, 34, x + 4, 116, false);
+    g.fill(75, 70, 100, 80, false);
+    g.fill(100, 15, 102, 17, false);
+    std::mt19937 rng(seed);
+    for (int placed = 0, tries = 0; placed < bumps && tries < 100000; ++tries) {
+      const int x = test_shapes::uniform(rng, 1, 198), y = test_shapes::uniform(rng, 1, 118);
+      if (!g.free(x, y)) continue;
+      if (g.free(x + 1, y) && g.free(x - 1, y) && g.free(x, y + 1) && g.free(x, y - 1)) continue;
+      g.set(x, y, false);
+      ++placed;
+    }
+    test_shapes::remove_pinches(g);
+    test_shapes::keep_largest_component(g);
+    return test_shapes::trace(g);
+  };
+  const std::vector<Point2> room_centres{{32, 75}, {87, 60}, {137, 75}, {180, 75}};
+  auto piece_of = [](const Decomposition& d, const Point2& q) {
+    for (std::size_t i = 0; i < d.pieces.size(); ++i) {
+      if (test_props::side(test_props::rings_of(d.pieces[i]), cgal::to_cgal(q)) == 1) return static_cast<int>(i);
+    }
+    return -1;
+  };
+  const PolygonWithHoles clean = raster(0, 0);
+  const Decomposition d = run(clean, 50);
+  expect_valid(clean, d, "spec raster");
+  EXPECT_EQ(d.pieces.size(), 5u);
+  for (unsigned seed = 1; seed <= 10; ++seed) {
+    const PolygonWithHoles noisy = raster(150, seed);
+    const Decomposition dn = run(noisy, 50);
+    const std::string what = "noisy spec raster " + std::to_string(seed);
+    expect_valid(noisy, dn, what);
+    EXPECT_GE(dn.pieces.size(), 4u) << what;
+    EXPECT_LE(dn.pieces.size(), 6u) << what;
+    std::set<int> owners;
+    for (const Point2& c : room_centres) owners.insert(piece_of(dn, c));
+    EXPECT_EQ(owners.size(), 4u) << what;
+    EXPECT_FALSE(owners.count(-1)) << what;
+  }
+}
+
 }  // namespace
 }  // namespace topocut
