@@ -440,9 +440,19 @@ void IncrementalSegmenter::State::process(const OccupancyGrid& grid, const cv::R
     for (std::size_t id = 1; id < rooms.size(); ++id)
       if (rooms[id].alive) add_region(static_cast<int>(id));
   cv::Rect region_box;
+  // A room takes newly seen cells without a decomposition until they add up to its allowance.
+  auto allowance = [&](const RoomState& room) {
+    return std::max(absorb_cells, static_cast<long long>(options.absorb_fraction * static_cast<double>(room.cells)));
+  };
   for (std::size_t b = 1; b < blobs.size(); ++b) {
     Blob& blob = blobs[b];
-    blob.absorb = !whole_map && !blob.structural && blob.touched.size() == 1 && blob.gained <= absorb_cells;
+    // A blob touching several rooms joins them (a door seen open): always decomposed again.
+    blob.absorb = !whole_map && !blob.structural && blob.touched.size() == 1;
+    if (blob.absorb) {
+      RoomState& room = rooms[static_cast<std::size_t>(blob.touched.front())];
+      blob.absorb = room.absorbed + blob.gained <= allowance(room);
+      if (blob.absorb) room.absorbed += blob.gained;  // counted now, so later blobs see it
+    }
     if (blob.absorb) {
       ++report.absorbed_blobs;
     } else {
@@ -477,17 +487,12 @@ void IncrementalSegmenter::State::process(const OccupancyGrid& grid, const cv::R
         RoomState& room = rooms[static_cast<std::size_t>(id)];
         l[c] = id;
         ++room.cells;
-        ++room.absorbed;
         room.sum_c += window.x + c;
         room.sum_r += window.y + r;
         room.box = unite(room.box, cv::Rect(window.x + c, window.y + r, 1, 1));
         add_unique(touched_rooms, id);
       }
     }
-  }
-  for (const int id : touched_rooms) {
-    const RoomState& room = rooms[static_cast<std::size_t>(id)];
-    if (static_cast<double>(room.absorbed) > options.absorb_fraction * static_cast<double>(room.cells)) add_region(id);
   }
 
   report.kind = whole_map ? IncrementalUpdateReport::Kind::kBatch : IncrementalUpdateReport::Kind::kIncremental;
@@ -716,6 +721,29 @@ void IncrementalSegmenter::State::redecompose(const OccupancyGrid& grid, std::ve
     right = {mid.x + dy / length * eps, mid.y - dx / length * eps};
     return true;
   };
+  // The room of this region on the other side of an old cut from `outside`. The region's pieces
+  // follow pixel edges while an old cut may run diagonally, so the cut's own side test can miss
+  // them: look at the labelled cells across the cut instead, nearest first.
+  std::vector<char> region_room(rooms.size(), 0);
+  for (int p = 1; p <= pieces; ++p)
+    if (piece_cells[static_cast<std::size_t>(p)] > 0) region_room[static_cast<std::size_t>(id_of_piece[static_cast<std::size_t>(p)])] = 1;
+  auto region_room_beside = [&](const Point2& a, const Point2& b, int outside) {
+    const double dx = b.x - a.x, dy = b.y - a.y;
+    const double length = std::hypot(dx, dy);
+    if (!(length > 0.0) || !std::isfinite(length)) return 0;
+    const Point2 normal{-dy / length, dx / length};
+    for (const double t : {0.5, 0.25, 0.75})
+      for (const double k : {0.5, 1.0, 1.5, 2.0, 3.0})
+        for (const double side : {1.0, -1.0}) {
+          const double x = a.x + t * dx + side * k * normal.x, y = a.y + t * dy + side * k * normal.y;
+          const int column = static_cast<int>(std::floor(x + 0.5));
+          const int row = window.height - 1 - static_cast<int>(std::floor(y + 0.5));
+          if (column < 0 || row < 0 || column >= window.width || row >= window.height) continue;
+          const int id = labels.at<int>(window.y + row, window.x + column);
+          if (id > 0 && id != outside && region_room[static_cast<std::size_t>(id)]) return id;
+        }
+    return 0;
+  };
   std::vector<Passage> passages;
   passages.reserve(result.passages.size() + set.cuts.size());
   for (const Passage& passage : result.passages) {
@@ -727,14 +755,8 @@ void IncrementalSegmenter::State::redecompose(const OccupancyGrid& grid, std::ve
     }
     if (a_in && b_in) continue;
     const int outside = a_in ? passage.room_b : passage.room_a;
-    Point2 left, right;
-    if (!sides(to_window(passage.cut.a), to_window(passage.cut.b), left, right)) continue;
-    const int l = room_of(left), r = room_of(right);
-    int inside = 0;
-    if (l > 0 && r == 0) inside = l;
-    else if (r > 0 && l == 0) inside = r;
-    else if (l > 0 && r > 0) inside = l != outside ? l : r;
-    if (inside == 0 || inside == outside) continue;
+    const int inside = region_room_beside(to_window(passage.cut.a), to_window(passage.cut.b), outside);
+    if (inside == 0) continue;
     Passage kept = passage;
     kept.room_a = std::min(inside, outside);
     kept.room_b = std::max(inside, outside);

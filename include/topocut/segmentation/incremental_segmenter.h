@@ -18,12 +18,15 @@ namespace topocut {
 
 struct IncrementalOptions {
   SegmentOptions segment;  // the batch options, applied unchanged to every re-decomposed region
-  // Newly free blobs up to this area (m²) that touch exactly one room join that room without a new
-  // decomposition (sensor noise, gaps in walls filled in). The seed ignores difference blobs below
-  // (0.5 m)²; we label them instead, so that no free cell is ever left without a room.
+  // Newly free blobs that touch exactly one room join that room without a new decomposition, as
+  // long as everything the room has taken in since its last decomposition stays within its
+  // allowance: absorb_area (m²) or absorb_fraction of the room's own area, whichever is larger.
+  // A blob that does not fit is decomposed together with the room. Small blobs are sensor noise
+  // and wall gaps filled in (the seed ignores difference blobs below (0.5 m)²; we label them, so
+  // that no free cell is ever left without a room); the fraction keeps a large room from being
+  // decomposed again for every scan that adds a strip to it, while bounding how far its cells can
+  // drift from what batch would do.
   double absorb_area = 0.25;
-  // A room that has absorbed more than this fraction of its own area since its last decomposition
-  // is decomposed again, so that absorbed cells never drift far from what batch would do.
   double absorb_fraction = 0.1;
   // When more cells change than this fraction of the free cells (a loop closure moving the whole
   // map), every room is decomposed again: the batch result, with ids kept where rooms overlap.
