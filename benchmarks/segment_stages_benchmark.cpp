@@ -105,6 +105,16 @@ int run(const std::vector<std::string>& args) {
       options.labels.cover_absorbed_obstacles = false;
     } else if (a == "--min-hole-area") {
       options.contours.min_hole_area = std::stod(value());
+    } else if (a == "--no-gaps") {
+      options.doors.extend_walls = false;
+    } else if (a == "--max-gap") {
+      options.doors.max_gap = std::stod(value());
+    } else if (a == "--gap-side") {
+      options.doors.min_side_width = std::stod(value());
+    } else if (a == "--wall-thickness") {
+      options.doors.max_wall_thickness = std::stod(value());
+    } else if (a == "--gap-wall") {
+      options.doors.min_wall_length = std::stod(value());
     } else if (a == "--no-doors") {
       options.doors.enabled = false;
     } else if (a == "--door-max") {

@@ -83,7 +83,7 @@ class EdgeGrid {
 
   // Distance along the ray p + t·u (u unit) to the first edge it meets, t in (0, t_max]; infinity
   // if none.
-  double cast(const Point2& p, const Point2& u, double t_max) const {
+  double cast(const Point2& p, const Point2& u, double t_max, int* hit_edge = nullptr) const {
     int cx = column(p.x), cy = row(p.y);
     const int step_x = u.x > 0 ? 1 : -1, step_y = u.y > 0 ? 1 : -1;
     const double next_x = x0_ + (cx + (step_x > 0 ? 1 : 0)) * cell_;
@@ -104,7 +104,10 @@ class EdgeGrid {
         const Point2 w = minus(e.a, p);
         const double t = cross(w, d) / denominator;
         const double s = cross(w, u) / denominator;
-        if (t > 1e-9 && s >= 0.0 && s <= 1.0 && t < best) best = t;
+        if (t > 1e-9 && s >= 0.0 && s <= 1.0 && t < best) {
+          best = t;
+          if (hit_edge) *hit_edge = items_[static_cast<std::size_t>(k)];
+        }
       }
       const double exit = std::min(t_x, t_y);
       if (best <= exit) break;
@@ -200,6 +203,10 @@ void validate(const DoorOptions& options) {
   if (!positive(options.max_width) || !positive(options.door_ratio) || !positive(options.width_depth))
     throw Error("the door width, ratio and depth must be positive numbers");
   if (!std::isfinite(options.min_turn) || options.min_turn < 0.0) throw Error("the door corner turn must be a non-negative angle");
+  if (!positive(options.max_gap) || !positive(options.max_wall_thickness) || !std::isfinite(options.min_wall_length) ||
+      options.min_wall_length < 0.0 || !std::isfinite(options.gap_alignment) || options.gap_alignment < 0.0 ||
+      !std::isfinite(options.min_side_width) || options.min_side_width < 0.0)
+    throw Error("the wall opening gap and wall thickness must be positive, the other opening options non-negative");
 }
 
 std::vector<Segment2> find_door_cuts(const PolygonWithHoles& polygon, double resolution, const DoorOptions& options) {
@@ -283,6 +290,84 @@ std::vector<Segment2> find_door_cuts(const PolygonWithHoles& polygon, double res
 
   // Door test: both sides much wider than the passage.
   std::vector<Candidate> doors;
+  if (options.extend_walls) {
+    // Openings in a wall: from the end of a thin wall, along the wall, to the first obstacle (a room
+    // front open to a corridor, a gap between partitions, a wall that stops short of the next).
+    // Such an opening may be as wide as the room behind it, so the width test is replaced by the
+    // wall: it is thin (a partition, not furniture or the building's outline) and points across.
+    const double max_gap = options.max_gap / resolution;
+    const double min_wall = options.min_wall_length / resolution;
+    const double near = 0.15 / resolution;
+    const double max_thickness = options.max_wall_thickness / resolution;
+    const double cos_tolerance = std::cos(options.gap_alignment);
+    struct End {
+      Point2 v, dir;
+      int ring;
+    };
+    std::vector<End> ends;
+    for (std::size_t r = 0; r < rings.size(); ++r) {
+      const Ring& ring = *rings[r];
+      const int n = static_cast<int>(ring.size());
+      for (int i = 0; i < n; ++i) {
+        const Point2& p = ring[static_cast<std::size_t>((i + n - 1) % n)];
+        const Point2& v = ring[static_cast<std::size_t>(i)];
+        const Point2& q = ring[static_cast<std::size_t>((i + 1) % n)];
+        if (turn_angle(p, v, q) > -options.min_turn) continue;
+        for (const Point2& from : {p, q}) {
+          const Point2 e = minus(v, from);
+          const double l = length(e);
+          if (l < min_wall) continue;
+          const Point2 dir{e.x / l, e.y / l};
+          // Thin: across the wall, just behind its end, free space of this component lies within
+          // the thickness limit. Free space is left of ring edges, so the obstacle lies right of
+          // p -> v and left of v -> q.
+          const Point2 into = &from == &p ? Point2{dir.y, -dir.x} : Point2{-dir.y, dir.x};
+          const double back = std::min(0.5 * l, 0.3 / resolution);
+          const Point2 x{v.x - back * dir.x + 1e-3 * into.x, v.y - back * dir.y + 1e-3 * into.y};
+          if (!std::isfinite(grid.cast(x, into, max_thickness))) continue;
+          ends.push_back({v, dir, static_cast<int>(r)});
+        }
+      }
+    }
+    std::map<std::pair<double, double>, std::vector<std::size_t>> at;
+    for (std::size_t k = 0; k < ends.size(); ++k) at[{ends[k].v.x, ends[k].v.y}].push_back(k);
+    for (const End& e : ends) {
+      int hit_edge = -1;
+      const double hit = grid.cast(e.v, e.dir, max_gap, &hit_edge);
+      if (!std::isfinite(hit) || edges[static_cast<std::size_t>(hit_edge)].ring != e.ring) continue;
+      const Point2 h{e.v.x + hit * e.dir.x, e.v.y + hit * e.dir.y};
+      // A wall end near the hit whose wall points back along the ray.
+      const End* best = nullptr;
+      double best_d = near;
+      for (auto it = at.lower_bound({h.x - near, -kInfinity}); it != at.end() && it->first.first <= h.x + near; ++it) {
+        for (const std::size_t k : it->second) {
+          const End& o = ends[k];
+          const double d = length(minus(o.v, h));
+          if (o.ring != e.ring || d > best_d || dot(o.dir, e.dir) > -cos_tolerance) continue;
+          const Point2 g = minus(o.v, e.v);
+          const double gl = length(g);
+          if (gl <= 0.0 || dot(g, e.dir) < cos_tolerance * gl) continue;
+          // Nothing in between: the first wall along v -> o is o's own.
+          if (grid.cast(e.v, {g.x / gl, g.y / gl}, gl) < gl - 1e-6) continue;
+          best = &o;
+          best_d = d;
+        }
+      }
+      // The opening ends at the wall end met, or else where the ray meets the wall.
+      const Point2 target = best ? best->v : h;
+      const Point2 g = minus(target, e.v);
+      const double gl = length(g);
+      const Point2 u{g.x / gl, g.y / gl};
+      const Point2 mid{(e.v.x + target.x) / 2.0, (e.v.y + target.y) / 2.0};
+      const double cap = options.min_side_width / resolution;
+      if (side_width(grid, mid, u, {-u.y, u.x}, depth, cap) < cap) continue;
+      if (side_width(grid, mid, u, {u.y, -u.x}, depth, cap) < cap) continue;
+      Candidate c{{e.v, target}, gl, e.ring};
+      // Openings come after every door: a narrow passage is the stronger evidence.
+      c.width += max_gap;
+      doors.push_back(c);
+    }
+  }
   for (const Candidate& c : candidates) {
     const Point2 d = minus(c.segment.b, c.segment.a);
     const Point2 u{d.x / c.width, d.y / c.width};

@@ -50,15 +50,39 @@ TEST(DoorCuts, ARoomOpeningOntoACorridorIsADoorAndTooWideAnOpeningIsNot) {
                              {40, 44}, {a, 44}, {a, 40}, {0, 40}},
                             {}};
   };
-  EXPECT_EQ(find_door_cuts(plan(18), kRes).size(), 1u);
-  // A 1.9 m opening in a 2 m corridor: narrower than 0.6 times the corridor's length but not
-  // than 0.6 times... the corridor side is 10 m long, the room 4 m wide: still a door.
-  EXPECT_EQ(find_door_cuts(plan(38), kRes).size(), 1u);
-  DoorOptions narrow;
+  DoorOptions passages_only;
+  passages_only.extend_walls = false;
+  EXPECT_EQ(find_door_cuts(plan(18), kRes, passages_only).size(), 1u);
+  // A 1.9 m opening: the corridor side is 10 m long and the room 4 m wide, both wider than
+  // 1.9 / 0.6 m: still a door, unless doors may be at most 1.5 m wide.
+  EXPECT_EQ(find_door_cuts(plan(38), kRes, passages_only).size(), 1u);
+  DoorOptions narrow = passages_only;
   narrow.max_width = 1.5;
   EXPECT_TRUE(find_door_cuts(plan(38), kRes, narrow).empty());
-  // Open across almost the whole room (3.8 m of 4 m): not a door.
+  // Open across almost the whole room (3.8 m of 4 m): not a door; the 0.1 m wall stubs left are
+  // too short to give a wall direction.
   EXPECT_TRUE(find_door_cuts(plan(76), kRes).empty());
+}
+
+TEST(DoorCuts, AThinWallIsExtendedAcrossAnOpeningAndFurnitureIsNot) {
+  // A 5 m x 5 m room (100 units) with something standing on its bottom wall at x in [40, 44]
+  // (a 0.2 m partition) or [30, 50] (a 1 m cupboard), 2.5 m tall into the room.
+  auto room = [](double x0, double x1) {
+    return PolygonWithHoles{{{0, 0}, {x0, 0}, {x0, 50}, {x1, 50}, {x1, 0}, {100, 0}, {100, 100}, {0, 100}}, {}};
+  };
+  const std::vector<Segment2> partition = find_door_cuts(room(40, 44), kRes);
+  ASSERT_EQ(partition.size(), 1u);
+  // From the partition's end straight up to the top wall: 2.5 m.
+  EXPECT_DOUBLE_EQ(distance(partition[0].a, partition[0].b), 50.0);
+  EXPECT_EQ(partition[0].a.x, partition[0].b.x);
+  EXPECT_EQ(split_polygon(room(40, 44), partition).size(), 2u);
+  EXPECT_TRUE(find_door_cuts(room(30, 50), kRes).empty());
+  DoorOptions off;
+  off.extend_walls = false;
+  EXPECT_TRUE(find_door_cuts(room(40, 44), kRes, off).empty());
+  off = {};
+  off.max_gap = 2.0;  // the opening to the top wall is wider
+  EXPECT_TRUE(find_door_cuts(room(40, 44), kRes, off).empty());
 }
 
 TEST(DoorCuts, DisabledAndBadOptions) {

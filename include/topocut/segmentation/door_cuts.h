@@ -25,15 +25,27 @@ struct DoorOptions {
   double width_depth = 1.0;
   // Corners that turn by less than this (radians) are not wall corners but bends of a wall.
   double min_turn = 0.5;
+  // Openings in walls: from the end of a thin wall (at most max_wall_thickness thick, so not
+  // furniture or the building's outline) along the wall to the first obstacle within max_gap, or
+  // to a wall end there that faces it (within gap_alignment radians). A room front open to a
+  // corridor is as wide as the room, so no width test can find it; a wall that stops short can.
+  // Walls shorter than min_wall_length give no direction; both sides must be min_side_width wide.
+  bool extend_walls = true;
+  double max_gap = 3.0;
+  double max_wall_thickness = 0.5;
+  double min_wall_length = 0.3;
+  double gap_alignment = 0.2;
+  double min_side_width = 1.0;
 };
 
 // Throws Error unless the options are usable.
 void validate(const DoorOptions& options);
 
 // The door cuts of a free-space polygon (grid coordinates, one unit per cell; resolution converts
-// the options' metres): segments between a reflex vertex and a point of the same ring (a vertex
-// or a point on an edge), strictly inside the polygon, pairwise disjoint (they may share an end
-// point), each splitting the polygon in two. Ordered from the most door-like. Deterministic.
+// the options' metres): narrow passages first, then wall openings; segments between a reflex
+// vertex and a point of the same ring (a vertex or a point on an edge), strictly inside the
+// polygon, pairwise disjoint (they may share an end point), each splitting the polygon in two.
+// Deterministic.
 std::vector<Segment2> find_door_cuts(const PolygonWithHoles& polygon, double resolution, const DoorOptions& options = {});
 
 // Splits polygon (outer ring CCW, holes CW, rings pairwise disjoint) along chords: segments whose
