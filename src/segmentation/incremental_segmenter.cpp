@@ -92,45 +92,6 @@ void add_unique(std::vector<int>& ids, int id) {
 
 bool near_integer(double v) { return std::abs(v - std::round(v)) < 1e-6; }
 
-// fill_free_space_labels() with the same result, cheaper on a window that the pieces mostly cover:
-// the breadth-first search starts only from labelled cells next to an unlabelled free cell, in
-// raster order. Those are the only queue entries of the full version that label anything, and
-// they label in the same order, so every cell gets the same label.
-void fill_region_labels(cv::Mat& labels, const cv::Mat& free_mask) {
-  const int h = labels.rows, w = labels.cols;
-  CV_Assert(labels.isContinuous() && free_mask.isContinuous());
-  int* data = labels.ptr<int>(0);
-  const unsigned char* free = free_mask.ptr<unsigned char>(0);
-  bool any_label = false, any_orphan = false;
-  for (int i = 0; i < w * h; ++i) {
-    if (!free[i]) data[i] = 0;
-    any_label = any_label || data[i] > 0;
-  }
-  if (!any_label) return;
-  std::vector<int> queue;
-  for (int r = 0; r < h; ++r)
-    for (int c = 0; c < w; ++c) {
-      const int i = r * w + c;
-      if (data[i] <= 0) continue;
-      const bool frontier = (r > 0 && free[i - w] && data[i - w] == 0) || (c > 0 && free[i - 1] && data[i - 1] == 0) ||
-                            (c + 1 < w && free[i + 1] && data[i + 1] == 0) ||
-                            (r + 1 < h && free[i + w] && data[i + w] == 0);
-      if (frontier) queue.push_back(i);
-    }
-  for (std::size_t head = 0; head < queue.size(); ++head) {
-    const int i = queue[head];
-    const int r = i / w, c = i % w;
-    const int neighbours[4] = {r > 0 ? i - w : -1, c > 0 ? i - 1 : -1, c + 1 < w ? i + 1 : -1, r + 1 < h ? i + w : -1};
-    for (const int j : neighbours) {
-      if (j < 0 || !free[j] || data[j] != 0) continue;
-      data[j] = data[i];
-      queue.push_back(j);
-    }
-  }
-  for (int i = 0; i < w * h && !any_orphan; ++i) any_orphan = free[i] && data[i] == 0;
-  // Free cells that free space does not connect to any label: the library's straight-line rule.
-  if (any_orphan) fill_free_space_labels(labels, free_mask);
-}
 
 std::size_t polygon_bytes(const PolygonWithHoles& p) {
   std::size_t n = p.outer.capacity();
@@ -575,7 +536,7 @@ void IncrementalSegmenter::State::redecompose(const OccupancyGrid& grid, std::ve
   const int pieces = static_cast<int>(set.pieces.size());
   if (pieces > 0) {
     local = rasterize_polygons(set.pieces, window.size());
-    fill_region_labels(local, raw);
+    fill_free_space_labels(local, raw);
   } else {
     local = cv::Mat::zeros(window.size(), CV_32SC1);
   }
@@ -789,6 +750,8 @@ IncrementalSegmenter::IncrementalSegmenter(const IncrementalOptions& options) : 
   if (!std::isfinite(options.batch_fraction) || options.batch_fraction <= 0.0)
     throw Error("the batch fraction must be a positive number");
   validate(options.segment);
+  if (options.segment.labels.cover_absorbed_obstacles)
+    throw Error("the incremental segmenter labels free cells only: cover_absorbed_obstacles is not supported");
   state_->options = options;
 }
 

@@ -659,6 +659,9 @@ TEST(IncrementalSegmenter, BadInputIsOneClearError) {
   IncrementalOptions bad_fraction;
   bad_fraction.batch_fraction = 0.0;
   EXPECT_THROW(IncrementalSegmenter{bad_fraction}, Error);
+  IncrementalOptions covering;
+  covering.segment.labels.cover_absorbed_obstacles = true;  // would label obstacle cells
+  EXPECT_THROW(IncrementalSegmenter{covering}, Error);
   // After a failed update the segmenter still works.
   const FloorPlan plan = floor_plan();
   expect_valid(plan.world, segmenter.update(plan.world));

@@ -17,7 +17,9 @@
 namespace topocut {
 
 struct IncrementalOptions {
-  SegmentOptions segment;  // the batch options, applied unchanged to every re-decomposed region
+  // The batch options, applied unchanged to every re-decomposed region (labels.cover_absorbed_
+  // obstacles is not supported: only free cells are labelled).
+  SegmentOptions segment;
   // Newly free blobs that touch exactly one room join that room without a new decomposition, as
   // long as everything the room has taken in since its last decomposition stays within its
   // allowance: absorb_area (m²) or absorb_fraction of the room's own area, whichever is larger.
