@@ -14,8 +14,8 @@
 namespace topocut::cli {
 namespace {
 
-nlohmann::json ring_json(const Ring& ring) {
-  nlohmann::json out = nlohmann::json::array();
+nlohmann::ordered_json ring_json(const Ring& ring) {
+  nlohmann::ordered_json out = nlohmann::ordered_json::array();
   for (const Point2& p : ring) out.push_back({p.x, p.y});
   return out;
 }
@@ -77,20 +77,21 @@ int run(const std::vector<std::string>& args) {
   const PolygonWithHoles polygon = parse_polygon_json(read_file(input), input);
   const Decomposition result = decompose(polygon, options);
 
-  nlohmann::json out;
-  nlohmann::json pieces = nlohmann::json::array();
+  // Keys in the documented order: pieces, cuts, absorbed_holes; outer, holes, area.
+  nlohmann::ordered_json out;
+  nlohmann::ordered_json pieces = nlohmann::ordered_json::array();
   for (const PolygonWithHoles& piece : result.pieces) {
-    nlohmann::json holes = nlohmann::json::array();
+    nlohmann::ordered_json holes = nlohmann::ordered_json::array();
     for (const Ring& hole : piece.holes) holes.push_back(ring_json(hole));
     pieces.push_back({{"outer", ring_json(piece.outer)}, {"holes", holes}, {"area", area(piece)}});
   }
   out["pieces"] = pieces;
-  nlohmann::json cuts = nlohmann::json::array();
+  nlohmann::ordered_json cuts = nlohmann::ordered_json::array();
   for (const Cut& cut : result.cuts) {
     cuts.push_back({{cut.segment.a.x, cut.segment.a.y}, {cut.segment.b.x, cut.segment.b.y}});
   }
   out["cuts"] = cuts;
-  nlohmann::json absorbed = nlohmann::json::array();
+  nlohmann::ordered_json absorbed = nlohmann::ordered_json::array();
   for (const Ring& hole : result.absorbed_holes) absorbed.push_back(ring_json(hole));
   out["absorbed_holes"] = absorbed;
   const std::string text = out.dump() + "\n";
