@@ -5,6 +5,9 @@
 #include <cstdlib>
 #include <limits>
 #include <vector>
+#include <cstdint>
+#include <cstring>
+#include <utility>
 
 #include <opencv2/imgproc.hpp>
 
@@ -14,65 +17,82 @@ namespace topocut {
 
 namespace {
 
-// Labels 4-connected components of a mask and renumbers them 1..N in raster order of their first
-// cell, so the result does not depend on the labelling algorithm OpenCV picks.
-int raster_ordered_components(const cv::Mat& mask, cv::Mat& labels, std::vector<cv::Point>& first,
-                              std::vector<int>& size) {
-  cv::Mat raw;
-  const int n = cv::connectedComponents(mask, raw, 4, CV_32S);
-  std::vector<int> order(static_cast<std::size_t>(n), 0);
-  first.assign(static_cast<std::size_t>(n), cv::Point(-1, -1));
-  size.assign(static_cast<std::size_t>(n), 0);
-  int next = 1;
-  for (int r = 0; r < raw.rows; ++r) {
-    int* row = raw.ptr<int>(r);
-    for (int c = 0; c < raw.cols; ++c) {
-      const int l = row[c];
-      if (l == 0) continue;
-      if (order[static_cast<std::size_t>(l)] == 0) {
-        order[static_cast<std::size_t>(l)] = next;
-        first[static_cast<std::size_t>(next)] = {c, r};
-        ++next;
-      }
-      row[c] = order[static_cast<std::size_t>(l)];
-      ++size[static_cast<std::size_t>(row[c])];
-    }
-  }
-  labels = raw;
-  return n - 1;
+std::uint64_t load8(const unsigned char* p) {
+  std::uint64_t v;
+  std::memcpy(&v, p, sizeof v);
+  return v;
 }
 
-// Follows the pixel-edge boundary of the free region in a padded mask, keeping free cells on the
-// right (clockwise around free space as seen in the picture), from corner (x, y) heading (dx, dy).
-// Returns the turning corners in grid coordinates of the unpadded image, reversed so that free
-// space lies on the left: outer rings counter-clockwise, holes clockwise.
-Ring trace_ring(const cv::Mat& padded, int x, int y, int dx, int dy, int height) {
-  auto free_at = [&](int column, int row) { return padded.at<unsigned char>(row, column) != 0; };
-  const int x0 = x, y0 = y, dx0 = dx, dy0 = dy;
-  Ring ring;
-  while (true) {
-    x += dx;
-    y += dy;
-    const int rx = -dy, ry = dx;  // right-hand side of the heading, in image coordinates
-    // The two cells ahead of the corner: right and left of the heading (offsets are exact halves).
-    const bool ahead_right = free_at(x + (dx + rx - 1) / 2, y + (dy + ry - 1) / 2);
-    const bool ahead_left = free_at(x + (dx - rx - 1) / 2, y + (dy - ry - 1) / 2);
-    int ndx = dx, ndy = dy;
-    if (!ahead_right) {
-      ndx = rx;
-      ndy = ry;
-    } else if (ahead_left) {
-      ndx = dy;
-      ndy = -dx;
-    }
-    if (ndx != dx || ndy != dy) ring.push_back({x - 1.5, height + 0.5 - y});
-    dx = ndx;
-    dy = ndy;
-    if (x == x0 && y == y0 && dx == dx0 && dy == dy0) break;
+// Pixel-edge boundary tracing with bookkeeping for a single raster scan (a pixel-edge variant of
+// Suzuki and Abe's border following). Corners (x, y) are the top-left corners of cells (x, y),
+// x in 0..w, y in 0..h; outside the image is not free.
+class Tracer {
+ public:
+  explicit Tracer(const cv::Mat& mask) : mask_(mask), w_(mask.cols), h_(mask.rows) {
+    horizontal_.assign(static_cast<std::size_t>(h_ + 1) * w_, 0);
+    vertical_.resize(static_cast<std::size_t>(h_));
   }
-  std::reverse(ring.begin(), ring.end());
-  return ring;
-}
+
+  bool free_at(int column, int row) const {
+    return column >= 0 && row >= 0 && column < w_ && row < h_ && mask_.ptr<unsigned char>(row)[column] != 0;
+  }
+  bool visited(int boundary, int column) const { return horizontal_[static_cast<std::size_t>(boundary) * w_ + column] != 0; }
+
+  // Follows the boundary from corner (x, y) heading (dx, dy), free cells on the right in the
+  // picture (y down), marking every horizontal edge visited and recording the ring of every
+  // vertical one. Returns the turning corners in grid coordinates, reversed so that free space lies
+  // on the left: outer rings counter-clockwise, holes clockwise.
+  Ring trace(int x, int y, int dx, int dy, int ring_id) {
+    const int x0 = x, y0 = y, dx0 = dx, dy0 = dy;
+    Ring ring;
+    while (true) {
+      if (dy == 0) {
+        horizontal_[static_cast<std::size_t>(y) * w_ + std::min(x, x + dx)] = 1;
+      } else {
+        vertical_[static_cast<std::size_t>(std::min(y, y + dy))].push_back({x, ring_id});
+      }
+      x += dx;
+      y += dy;
+      const int rx = -dy, ry = dx;  // right-hand side of the heading, in image coordinates
+      // The two cells ahead of the corner: right and left of the heading (offsets are exact halves).
+      const bool ahead_right = free_at(x + (dx + rx - 1) / 2, y + (dy + ry - 1) / 2);
+      const bool ahead_left = free_at(x + (dx - rx - 1) / 2, y + (dy - ry - 1) / 2);
+      int ndx = dx, ndy = dy;
+      if (!ahead_right) {
+        ndx = rx;
+        ndy = ry;
+      } else if (ahead_left) {
+        ndx = dy;
+        ndy = -dx;
+      }
+      if (ndx != dx || ndy != dy) ring.push_back({x - 0.5, h_ - 0.5 - y});
+      dx = ndx;
+      dy = ndy;
+      if (x == x0 && y == y0 && dx == dx0 && dy == dy0) break;
+    }
+    std::reverse(ring.begin(), ring.end());
+    return ring;
+  }
+
+  // The ring of the nearest vertical boundary edge left of cell (column, row) on that row, where
+  // the cells change from !free_side to free_side (column excluded); -1 if the row has none.
+  int ring_left_of(int column, int row, bool free_side) const {
+    for (int c = column; c >= 0; --c) {
+      if (free_at(c - 1, row) != free_side) {
+        for (const auto& [x, ring] : vertical_[static_cast<std::size_t>(row)])
+          if (x == c) return ring;
+        return -1;
+      }
+    }
+    return -1;
+  }
+
+ private:
+  const cv::Mat& mask_;
+  int w_, h_;
+  std::vector<unsigned char> horizontal_;  // (h + 1) x w: boundary edges already traced
+  std::vector<std::vector<std::pair<int, int>>> vertical_;  // per row: (x, ring id) of traced vertical edges
+};
 
 }  // namespace
 
@@ -104,52 +124,114 @@ cv::Mat remove_diagonal_pinches(const cv::Mat& free_mask, int* removed) {
     for (int br = drop.y - 1; br <= drop.y; ++br)
       for (int bc = drop.x - 1; bc <= drop.x; ++bc) stack.push_back({bc, br});
   };
-  for (int r = 0; r + 1 < h; ++r) {
-    for (int c = 0; c + 1 < w; ++c) {
-      check(r, c);
-      while (!stack.empty()) {
-        const cv::Point b = stack.back();
-        stack.pop_back();
-        check(b.y, b.x);
-      }
+  auto check_and_repair = [&](int r, int c) {
+    check(r, c);
+    while (!stack.empty()) {
+      const cv::Point b = stack.back();
+      stack.pop_back();
+      check(b.y, b.x);
     }
+  };
+  for (int r = 0; r + 1 < h; ++r) {
+    const unsigned char* upper = f.ptr<unsigned char>(r);
+    const unsigned char* lower = f.ptr<unsigned char>(r + 1);
+    int c = 0;
+    // A checkerboard needs the two rows to differ within the block: eight blocks whose nine columns
+    // are equal in both rows are skipped at once (the rows are read after every repair).
+    for (; c + 9 <= w; c += 8) {
+      if (load8(upper + c) == load8(lower + c) && upper[c + 8] == lower[c + 8]) continue;
+      for (int k = 0; k < 8; ++k) check_and_repair(r, c + k);
+    }
+    for (; c + 1 < w; ++c) check_and_repair(r, c);
   }
   if (removed) *removed = count;
   return f;
 }
 
-std::vector<FreeSpaceComponent> trace_components(const cv::Mat& mask) {
-  if (mask.empty() || mask.type() != CV_8UC1) throw Error("the free-space mask must be a non-empty 8-bit image");
-  const int h = mask.rows;
-  cv::Mat padded;
-  cv::copyMakeBorder(mask != 0, padded, 1, 1, 1, 1, cv::BORDER_CONSTANT, cv::Scalar(0));
+std::vector<FreeSpaceComponent> trace_components(const cv::Mat& mask_in) {
+  if (mask_in.empty() || mask_in.type() != CV_8UC1) throw Error("the free-space mask must be a non-empty 8-bit image");
+  const cv::Mat mask = mask_in.isContinuous() ? mask_in : mask_in.clone();
+  const int h = mask.rows, w = mask.cols;
+  Tracer tracer(mask);
 
-  cv::Mat free_labels, background_labels;
-  std::vector<cv::Point> free_first, background_first;
-  std::vector<int> free_size, background_size;
-  const int n_free = raster_ordered_components(padded, free_labels, free_first, free_size);
-  const int n_background = raster_ordered_components(padded == 0, background_labels, background_first, background_size);
+  // Rings in discovery order: what each one is and where it belongs.
+  struct RingInfo {
+    int component = -1;  // the free component it bounds
+    int hole = -1;       // index into that component's holes, or -1 for its outer ring
+  };
+  std::vector<RingInfo> rings;
+  std::vector<FreeSpaceComponent> components;
+  std::vector<int> parent_hole_ring;  // per component: the hole ring it lies in, -1 outside
+  std::vector<std::vector<int>> hole_rings;  // per component: ring id of each hole
+  const std::vector<unsigned char> nothing(static_cast<std::size_t>(w), 0);
 
-  std::vector<FreeSpaceComponent> components(static_cast<std::size_t>(n_free));
-  for (int i = 1; i <= n_free; ++i) {
-    const cv::Point p = free_first[static_cast<std::size_t>(i)];
-    FreeSpaceComponent& component = components[static_cast<std::size_t>(i - 1)];
-    // The first cell's top edge lies on the outer boundary: nothing of the component is above it.
-    component.polygon.outer = trace_ring(padded, p.x, p.y, 1, 0, h);
-    component.pixel_count = free_size[static_cast<std::size_t>(i)];
-    component.first_pixel = {p.x - 1, p.y - 1};
+  // One scan over the horizontal edges, boundary row by boundary row: the first untraced edge
+  // with free space below is the top of a new component's first cell (its outer ring); one with
+  // free space above is the top of a hole's first cell. Rows are compared eight cells at a time.
+  for (int y = 0; y <= h; ++y) {
+    const unsigned char* above = y > 0 ? mask.ptr<unsigned char>(y - 1) : nothing.data();
+    const unsigned char* below = y < h ? mask.ptr<unsigned char>(y) : nothing.data();
+    for (int c = 0; c < w; ++c) {
+      if (c + 8 <= w && (c & 7) == 0 && load8(above + c) == load8(below + c)) {
+        c += 7;
+        continue;
+      }
+      const bool up = above[c] != 0, down = below[c] != 0;
+      if (up == down || tracer.visited(y, c)) continue;
+      const int id = static_cast<int>(rings.size());
+      if (down) {
+        // A new component; it lies in the region of the non-free cell above it.
+        FreeSpaceComponent component;
+        component.first_pixel = {c, y};
+        component.polygon.outer = tracer.trace(c, y, 1, 0, id);
+        int parent = -1;
+        if (y > 0) {
+          const int ring = tracer.ring_left_of(c, y - 1, false);
+          if (ring >= 0) {
+            const RingInfo& info = rings[static_cast<std::size_t>(ring)];
+            parent = info.hole >= 0 ? ring : parent_hole_ring[static_cast<std::size_t>(info.component)];
+          }
+        }
+        rings.push_back({static_cast<int>(components.size()), -1});
+        components.push_back(std::move(component));
+        parent_hole_ring.push_back(parent);
+        hole_rings.emplace_back();
+      } else {
+        // A hole of the component that holds the free cell above it.
+        const int ring = tracer.ring_left_of(c, y - 1, true);
+        if (ring < 0) throw Error("internal: a hole without an enclosing free-space component");
+        const int owner = rings[static_cast<std::size_t>(ring)].component;
+        FreeSpaceComponent& component = components[static_cast<std::size_t>(owner)];
+        rings.push_back({owner, static_cast<int>(component.polygon.holes.size())});
+        component.polygon.holes.push_back(tracer.trace(c + 1, y, -1, 0, id));
+        hole_rings[static_cast<std::size_t>(owner)].push_back(id);
+      }
+    }
   }
-  // Background component 1 contains the padding, i.e. everything outside. Every other one is a
-  // hole of the component just above its first cell (that cell is free, or it would belong to
-  // the same background component; and it belongs to the enclosing component, since nothing of
-  // the hole lies higher up).
-  for (int j = 2; j <= n_background; ++j) {
-    const cv::Point b = background_first[static_cast<std::size_t>(j)];
-    const int owner = free_labels.at<int>(b.y - 1, b.x);
-    if (owner <= 0) throw Error("internal: a hole without an enclosing free-space component");
-    FreeSpaceComponent& component = components[static_cast<std::size_t>(owner - 1)];
-    component.polygon.holes.push_back(trace_ring(padded, b.x + 1, b.y, -1, 0, h));
-    component.hole_cells.push_back(background_size[static_cast<std::size_t>(j)]);
+
+  // Cell counts from the rings' areas (pixel-edge rings enclose exactly their cells): a component
+  // is its outer ring minus its holes; a hole's own cells are its ring minus the islands in it.
+  std::vector<double> ring_area(rings.size(), 0.0);
+  for (std::size_t k = 0; k < rings.size(); ++k) {
+    const FreeSpaceComponent& component = components[static_cast<std::size_t>(rings[k].component)];
+    const Ring& ring = rings[k].hole < 0 ? component.polygon.outer : component.polygon.holes[static_cast<std::size_t>(rings[k].hole)];
+    ring_area[k] = std::abs(signed_area(ring));
+  }
+  std::vector<double> island_area(rings.size(), 0.0);
+  for (std::size_t i = 0; i < components.size(); ++i) {
+    if (parent_hole_ring[i] >= 0)
+      island_area[static_cast<std::size_t>(parent_hole_ring[i])] += std::abs(signed_area(components[i].polygon.outer));
+  }
+  for (std::size_t i = 0; i < components.size(); ++i) {
+    FreeSpaceComponent& component = components[i];
+    double cells = std::abs(signed_area(component.polygon.outer));
+    component.hole_cells.clear();
+    for (const int ring : hole_rings[i]) {
+      cells -= ring_area[static_cast<std::size_t>(ring)];
+      component.hole_cells.push_back(static_cast<int>(std::lround(ring_area[static_cast<std::size_t>(ring)] -
+                                                                  island_area[static_cast<std::size_t>(ring)])));
+    }
+    component.pixel_count = static_cast<int>(std::lround(cells));
   }
   return components;
 }
@@ -175,17 +257,11 @@ FreeSpacePolygons free_space_polygons(const cv::Mat& free_mask, double resolutio
   }
   if (!any && !all.empty()) keep[largest] = true;
 
-  cv::Mat labels;
-  std::vector<cv::Point> first;
-  std::vector<int> sizes;
-  raster_ordered_components(mask, labels, first, sizes);  // same numbering as trace_components
-  std::vector<unsigned char> kept_label(all.size() + 1, 0);
   for (std::size_t i = 0; i < all.size(); ++i) {
     if (!keep[i]) {
       ++result.dropped_components;
       continue;
     }
-    kept_label[i + 1] = 255;
     FreeSpaceComponent component = std::move(all[i]);
     std::vector<Ring> holes;
     std::vector<int> hole_cells;
@@ -202,13 +278,8 @@ FreeSpacePolygons free_space_polygons(const cv::Mat& free_mask, double resolutio
     }
     component.polygon.holes = std::move(holes);
     component.hole_cells = std::move(hole_cells);
+    result.kept_cells += component.pixel_count;
     result.components.push_back(std::move(component));
-  }
-  result.traced = cv::Mat::zeros(mask.size(), CV_8UC1);
-  for (int r = 0; r < labels.rows; ++r) {
-    const int* l = labels.ptr<int>(r);
-    unsigned char* out = result.traced.ptr<unsigned char>(r);
-    for (int c = 0; c < labels.cols; ++c) out[c] = kept_label[static_cast<std::size_t>(l[c])];
   }
   return result;
 }

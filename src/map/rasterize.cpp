@@ -4,6 +4,7 @@
 #include <cmath>
 #include <deque>
 #include <limits>
+#include <unordered_map>
 #include <string>
 
 #include <opencv2/imgproc.hpp>
@@ -148,29 +149,67 @@ void fill_free_space_labels(cv::Mat& labels, const cv::Mat& free_mask, bool keep
   if (left == 0) return;
 
   // Free cells cut off from every label (specks too small to be rooms): nearest label in a
-  // straight line.
-  const cv::Mat orphans = (labels == 0) & (free_mask != 0);
-  if (cv::countNonZero(orphans) == 0) return;
-  cv::Mat sources = labels == 0;  // distanceTransform measures distance to zero cells: the labelled ones
-  cv::Mat distance, nearest;
-  cv::distanceTransform(sources, distance, nearest, cv::DIST_L2, 5, cv::DIST_LABEL_PIXEL);
-  double max_index = 0.0;
-  cv::minMaxLoc(nearest, nullptr, &max_index);
-  std::vector<int> label_of(static_cast<std::size_t>(max_index) + 1, 0);
-  for (int r = 0; r < h; ++r) {
-    const int* l = labels.ptr<int>(r);
-    const int* n = nearest.ptr<int>(r);
-    for (int c = 0; c < w; ++c)
-      if (l[c] > 0) label_of[static_cast<std::size_t>(n[c])] = l[c];
-  }
-  for (int r = 0; r < h; ++r) {
-    int* l = labels.ptr<int>(r);
-    const int* n = nearest.ptr<int>(r);
-    const unsigned char* o = orphans.ptr<unsigned char>(r);
-    for (int c = 0; c < w; ++c) {
-      if (!o[c]) continue;
-      l[c] = label_of[static_cast<std::size_t>(n[c])];
-      if (changes && l[c] != 0) changes->push_back({r * w + c, 0, l[c]});
+  // straight line. They are few and small; each cut-off blob is solved in a window around it that
+  // grows until it holds labels, then by the blob's own size again (so the nearest label of every
+  // cell of the blob lies inside), instead of a distance transform of the whole map.
+  std::vector<int> orphans;
+  for (const int i : unlabelled)
+    if (data[i] == 0) orphans.push_back(i);
+  std::vector<unsigned char> seen(orphans.size(), 0);
+  std::unordered_map<int, std::size_t> orphan_at;
+  orphan_at.reserve(orphans.size() * 2);
+  for (std::size_t k = 0; k < orphans.size(); ++k) orphan_at.emplace(orphans[k], k);
+  for (std::size_t k = 0; k < orphans.size(); ++k) {
+    if (seen[k]) continue;
+    // The blob: 8-connected cut-off cells, found by flood fill over the orphan list.
+    std::vector<int> blob{orphans[k]};
+    seen[k] = 1;
+    int r0 = h, r1 = -1, c0 = w, c1 = -1;
+    for (std::size_t head = 0; head < blob.size(); ++head) {
+      const int i = blob[head];
+      const int r = i / w, c = i % w;
+      r0 = std::min(r0, r);
+      r1 = std::max(r1, r);
+      c0 = std::min(c0, c);
+      c1 = std::max(c1, c);
+      for (int dr = -1; dr <= 1; ++dr)
+        for (int dc = -1; dc <= 1; ++dc) {
+          if (r + dr < 0 || r + dr >= h || c + dc < 0 || c + dc >= w) continue;
+          const auto it = orphan_at.find(i + dr * w + dc);
+          if (it == orphan_at.end() || seen[it->second]) continue;
+          seen[it->second] = 1;
+          blob.push_back(it->first);
+        }
+    }
+    int margin = 8;
+    cv::Rect window;
+    const cv::Rect all(0, 0, w, h);
+    while (true) {
+      window = cv::Rect(c0 - margin, r0 - margin, c1 - c0 + 1 + 2 * margin, r1 - r0 + 1 + 2 * margin) & all;
+      if (cv::countNonZero(labels(window) > 0) > 0 || window == all) break;
+      margin *= 2;
+    }
+    margin += std::max(r1 - r0, c1 - c0) + 2;
+    window = cv::Rect(c0 - margin, r0 - margin, c1 - c0 + 1 + 2 * margin, r1 - r0 + 1 + 2 * margin) & all;
+    const cv::Mat local = labels(window);
+    cv::Mat sources = local <= 0;  // distanceTransform measures distance to zero cells: the labelled ones
+    if (cv::countNonZero(sources == 0) == 0) continue;  // no label anywhere
+    cv::Mat distance, nearest;
+    cv::distanceTransform(sources, distance, nearest, cv::DIST_L2, 5, cv::DIST_LABEL_PIXEL);
+    double max_index = 0.0;
+    cv::minMaxLoc(nearest, nullptr, &max_index);
+    std::vector<int> label_of(static_cast<std::size_t>(max_index) + 1, 0);
+    for (int r = 0; r < local.rows; ++r) {
+      const int* l = local.ptr<int>(r);
+      const int* n = nearest.ptr<int>(r);
+      for (int c = 0; c < local.cols; ++c)
+        if (l[c] > 0) label_of[static_cast<std::size_t>(n[c])] = l[c];
+    }
+    for (const int i : blob) {
+      const int r = i / w - window.y, c = i % w - window.x;
+      const int label = label_of[static_cast<std::size_t>(nearest.at<int>(r, c))];
+      data[i] = label;
+      if (changes && label != 0) changes->push_back({i, 0, label});
     }
   }
 }

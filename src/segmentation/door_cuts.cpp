@@ -15,6 +15,7 @@ namespace topocut {
 namespace {
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
+constexpr double kSmallestRoom = 1.0;  // m²: no room is smaller than a square metre
 
 double cross(const Point2& a, const Point2& b) { return a.x * b.y - a.y * b.x; }
 Point2 minus(const Point2& a, const Point2& b) { return {a.x - b.x, a.y - b.y}; }
@@ -79,6 +80,29 @@ class EdgeGrid {
         const int c = cy * nx_ + cx;
         for (int k = start_[static_cast<std::size_t>(c)]; k < start_[static_cast<std::size_t>(c) + 1]; ++k) f(items_[static_cast<std::size_t>(k)]);
       }
+  }
+
+  // Calls f(edge) for the edges registered in the cells around p, ring of cells by ring of cells
+  // outward, while keep_going(d) holds for d = the least distance from p to the next ring's cells
+  // (an edge in several cells is visited several times).
+  template <class F, class G>
+  void visit_nearest(const Point2& p, double reach, F&& f, G&& keep_going) const {
+    const int cx = column(p.x), cy = row(p.y);
+    const int rings = static_cast<int>(std::ceil(reach / cell_)) + 1;
+    for (int k = 0; k <= rings; ++k) {
+      if (k > 0 && !keep_going((k - 1) * cell_)) return;
+      for (int y = cy - k; y <= cy + k; ++y) {
+        if (y < 0 || y >= ny_) continue;
+        const bool edge_row = y == cy - k || y == cy + k;
+        for (int x = cx - k; x <= cx + k; x += edge_row ? 1 : 2 * k) {
+          if (x >= 0 && x < nx_) {
+            const int c = y * nx_ + x;
+            for (int i = start_[static_cast<std::size_t>(c)]; i < start_[static_cast<std::size_t>(c) + 1]; ++i) f(items_[static_cast<std::size_t>(i)]);
+          }
+          if (k == 0) break;
+        }
+      }
+    }
   }
 
   // Distance along the ray p + t·u (u unit) to the first edge it meets, t in (0, t_max]; infinity
@@ -230,6 +254,18 @@ std::vector<Segment2> find_door_cuts(const PolygonWithHoles& polygon, double res
   for (std::size_t r = 0; r < rings.size(); ++r) {
     const Ring& ring = *rings[r];
     const int n = static_cast<int>(ring.size());
+    if (r > 0) {
+      // A door cut joins two points of one ring; around a small obstacle (furniture) the region it
+      // could cut off lies within the obstacle's bounding box, too small to be a room.
+      double x0 = kInfinity, y0 = kInfinity, x1 = -kInfinity, y1 = -kInfinity;
+      for (const Point2& p : ring) {
+        x0 = std::min(x0, p.x);
+        y0 = std::min(y0, p.y);
+        x1 = std::max(x1, p.x);
+        y1 = std::max(y1, p.y);
+      }
+      if ((x1 - x0) * (y1 - y0) * resolution * resolution < kSmallestRoom) continue;
+    }
     for (int i = 0; i < n; ++i) {
       const Point2& p = ring[static_cast<std::size_t>((i + n - 1) % n)];
       const Point2& v = ring[static_cast<std::size_t>(i)];
@@ -242,22 +278,27 @@ std::vector<Segment2> find_door_cuts(const PolygonWithHoles& polygon, double res
       const Point2 u1{e1.x / l1, e1.y / l1}, u2{e2.x / l2, e2.y / l2};
       auto in_cone = [&](const Point2& x) {
         const Point2 d = minus(x, v);
-        const double tolerance = 1e-9 * length(d);
+        const double tolerance = 1e-9 * (std::abs(d.x) + std::abs(d.y));
         return cross(u1, d) >= -tolerance && cross(d, u2) >= -tolerance;
       };
       const int before = (i + n - 1) % n;
-      double best = reach;
+      double best2 = reach * reach;  // squared distance of the nearest point so far
       Point2 best_point;
-      bool found = false;
-      grid.visit_box(v.x - reach, v.y - reach, v.x + reach, v.y + reach, [&](int id) {
+      int best_ring = -1;
+      grid.visit_nearest(v, reach, [&](int id) {
         const Edge& e = edges[static_cast<std::size_t>(id)];
         if (e.ring == static_cast<int>(r) && (e.index == i || e.index == before)) return;
+        // No point of the edge can beat the best so far if its bounding box is farther.
+        const double gx = std::max({std::min(e.a.x, e.b.x) - v.x, 0.0, v.x - std::max(e.a.x, e.b.x)});
+        const double gy = std::max({std::min(e.a.y, e.b.y) - v.y, 0.0, v.y - std::max(e.a.y, e.b.y)});
+        if (gx * gx + gy * gy >= best2) return;
         auto consider = [&](const Point2& x) {
-          const double d = length(minus(x, v));
-          if (d > 0.0 && d < best && in_cone(x)) {
-            best = d;
+          const Point2 d = minus(x, v);
+          const double d2 = dot(d, d);
+          if (d2 > 0.0 && d2 < best2 && in_cone(x)) {
+            best2 = d2;
             best_point = x;
-            found = true;
+            best_ring = e.ring;
           }
         };
         consider(e.a);
@@ -275,15 +316,10 @@ std::vector<Segment2> find_door_cuts(const PolygonWithHoles& polygon, double res
           const double t = cross(w, d) / denominator, s = cross(w, ray) / denominator;
           if (t > 0.0 && s > 0.0 && s < 1.0) consider({v.x + t * ray.x, v.y + t * ray.y});
         }
-      });
-      if (!found) continue;
+      }, [&](double d) { return d * d < best2; });
       // The nearest point must be on the same ring: a cut to another ring does not split.
-      int ring_of_point = -1;
-      grid.visit_box(best_point.x - 1e-6, best_point.y - 1e-6, best_point.x + 1e-6, best_point.y + 1e-6, [&](int id) {
-        const Edge& e = edges[static_cast<std::size_t>(id)];
-        if (point_segment_distance(best_point, {e.a, e.b}) < 1e-7) ring_of_point = e.ring;
-      });
-      if (ring_of_point != static_cast<int>(r)) continue;
+      if (best_ring != static_cast<int>(r)) continue;
+      const double best = std::sqrt(best2);
       candidates.push_back({{v, best_point}, best, static_cast<int>(r)});
     }
   }

@@ -158,7 +158,7 @@ TEST(FreeSpacePolygons, SmallComponentsAreDroppedButNeverAll) {
   FreeSpacePolygons result = free_space_polygons(mask, 0.05);  // default 0.25 m²
   ASSERT_EQ(result.components.size(), 1u);
   EXPECT_EQ(result.dropped_components, 1);
-  EXPECT_EQ(cv::countNonZero(result.traced), 400);
+  EXPECT_EQ(result.kept_cells, 400);
   cv::Mat tiny = blank(10, 10);
   tiny(cv::Rect(1, 1, 2, 2)).setTo(255);
   tiny(cv::Rect(5, 5, 3, 3)).setTo(255);

@@ -30,7 +30,7 @@ struct FreeSpaceComponent {
 
 struct FreeSpacePolygons {
   std::vector<FreeSpaceComponent> components;  // kept components, in raster order of first_pixel
-  cv::Mat traced;          // CV_8UC1: 255 on the free cells inside a kept component's polygon
+  long kept_cells = 0;     // free cells of the kept components
   int pinch_cells = 0;     // free cells removed to break diagonal pinch points
   int dropped_components = 0;
   int dropped_holes = 0;
