@@ -7,11 +7,13 @@ namespace topocut {
 double signed_area(const Ring& ring) {
   const std::size_t n = ring.size();
   if (n < 3) return 0.0;
+  // Relative to the first vertex: the shoelace terms of far-off coordinates would otherwise cancel.
+  const Point2 o = ring[0];
   double twice = 0.0;
-  for (std::size_t i = 0; i < n; ++i) {
-    const Point2& p = ring[i];
-    const Point2& q = ring[(i + 1) % n];
-    twice += p.x * q.y - q.x * p.y;
+  for (std::size_t i = 1; i + 1 < n; ++i) {
+    const double px = ring[i].x - o.x, py = ring[i].y - o.y;
+    const double qx = ring[i + 1].x - o.x, qy = ring[i + 1].y - o.y;
+    twice += px * qy - qx * py;
   }
   return 0.5 * twice;
 }

@@ -17,6 +17,13 @@ TEST(Geometry, SignedAreaFollowsOrientation) {
   EXPECT_DOUBLE_EQ(signed_area(oriented(square, false)), -12.0);
 }
 
+TEST(Geometry, SignedAreaStaysExactFarFromTheOrigin) {
+  // A 1 x 1 square at 1e9: the plain shoelace sum loses the whole area to cancellation.
+  const double f = 1e9;
+  const Ring square{{f, f}, {f + 1, f}, {f + 1, f + 1}, {f, f + 1}};
+  EXPECT_DOUBLE_EQ(signed_area(square), 1.0);
+}
+
 TEST(Geometry, AreaAndCentroidSubtractHoles) {
   PolygonWithHoles p{{{0, 0}, {10, 0}, {10, 10}, {0, 10}}, {{{0, 0}, {0, 5}, {5, 5}, {5, 0}}}};
   EXPECT_DOUBLE_EQ(area(p), 75.0);
