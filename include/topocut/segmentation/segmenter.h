@@ -19,9 +19,11 @@ struct SegmentOptions {
   BinarizeOptions binarize;  // defaults: raw free space (no inflation, no filtering)
   ContourOptions contours;   // minimum component and hole areas (m²)
   // Douglas-Peucker tolerance, in cells, applied to the traced pixel-edge polygons before doors
-  // are searched and the decomposition runs: it removes the stair steps of slanted and noisy walls.
-  // Below half a cell, rings that are a cell apart cannot touch. 0 keeps the exact pixel edges.
-  double simplify = 0.45;
+  // are searched and the decomposition runs: it removes the stair steps of slanted and noisy walls
+  // (a 45-degree stair deviates 0.71 cells from its line). Below half a cell, rings that are a cell
+  // apart cannot touch; above, if they do, the component is decomposed from its exact polygon.
+  // 0 keeps the exact pixel edges.
+  double simplify = 1.0;
   DoorOptions doors;  // door cuts split each component before the decomposition (door_cuts.h)
   // Passed to decompose(); its tau is replaced by concavity / resolution (the polygons are in cells).
   DecompositionOptions decomposition;
