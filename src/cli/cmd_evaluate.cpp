@@ -7,6 +7,7 @@
 #include "topocut/evaluation/dataset.h"
 #include "topocut/evaluation/dataset_options.h"
 #include "topocut/evaluation/dataset_report.h"
+#include "topocut/exploration/exploration_run.h"
 #include "topocut/io/atomic_file.h"
 
 namespace topocut::cli {
@@ -52,10 +53,38 @@ DatasetArguments to_arguments(const po::variables_map& vm) {
   return arguments;
 }
 
+// --mode incremental: a simulated robot explores every image (exploration module) and each
+// update of its map is segmented incrementally; the final maps are scored, updates timed.
+int run_incremental(const DatasetArguments& arguments, const std::vector<DatasetMap>& maps, bool compare_batch,
+                    int batch_every) {
+  IncrementalDatasetOptions options;
+  options.run = arguments.run;
+  options.exploration.compare_batch = compare_batch;
+  options.exploration.batch_every = batch_every;
+  const std::vector<IncrementalImageResult> results = run_incremental_dataset(maps, options);
+  const std::string method = method_name(arguments.run.segment) + ", incremental";
+  std::cout << "Dataset " << arguments.dataset << ", " << maps.size() << " maps, method: " << method << "\n\n"
+            << format_incremental_report(results, method) << std::flush;
+  if (!arguments.csv.empty()) write_file_atomically(arguments.csv, incremental_results_csv(results));
+  std::size_t failed = 0;
+  for (const IncrementalImageResult& result : results) failed += result.incremental.ok ? 0 : 1;
+  if (failed > 0) {
+    throw Error(std::to_string(failed) + " of " + std::to_string(results.size()) +
+                " images failed (see FAILED in the table)");
+  }
+  return 0;
+}
+
 int run(const std::vector<std::string>& args) {
+  po::options_description described = described_options();
+  described.add_options()
+      ("mode", po::value<std::string>()->default_value("batch")->value_name("MODE"),
+       "batch, or incremental: a simulated robot (360° laser, 5 m) explores each image and every update of its map is segmented incrementally")
+      ("compare-batch", po::bool_switch(), "with --mode incremental: also time batch segmentation on the same updates")
+      ("batch-every", po::value<int>()->default_value(1)->value_name("N"), "with --compare-batch: every N-th update only (and the last)");
   const auto vm = parse_options(
       "topocut evaluate [--dataset DIR] [--variant plain|furnished|all] [--csv FILE] [--concavity M]\n"
-      "                        [--trivial] [--map NAME ...]",
+      "                        [--trivial] [--map NAME ...] [--mode batch|incremental [--compare-batch]]",
       "Segments every map of a Bormann-format dataset folder (for each map X: X.png plain,\n"
       "X_furnitures.png furnished, X_gt_segmentation.png ground truth; 0.05 m/px) and scores it\n"
       "against the ground truth as Bormann et al. (ICRA 2016) define it: ground-truth pixels > 250\n"
@@ -66,14 +95,23 @@ int run(const std::vector<std::string>& args) {
       "recall; precision; milliseconds for loading and segmenting the image) and a summary with\n"
       "mean ± std over maps. --csv writes map,variant,rooms,gt_rooms,recall,precision,time_ms\n"
       "(fractions; a failed image leaves its fields empty). Progress goes to stderr. Exits with 1\n"
-      "if any image failed (listed as FAILED in the table).",
-      described_options(), po::positional_options_description(), args);
+      "if any image failed (listed as FAILED in the table).\n\n"
+      "--mode incremental explores every image instead (topocut explore) and scores the final\n"
+      "explored map, incremental and batch; it adds per-update times (process CPU time: median, p95,\n"
+      "max) and the CSV columns updates,update_median_ms,update_p95_ms,update_max_ms,\n"
+      "batch_update_median_ms (the last with --compare-batch).",
+      described, po::positional_options_description(), args);
   if (!vm) return 0;
   DatasetArguments arguments = to_arguments(*vm);
+  const std::string mode = (*vm)["mode"].as<std::string>();
+  if (mode != "batch" && mode != "incremental") throw UsageError("--mode must be batch or incremental, not '" + mode + "'");
+  const int batch_every = (*vm)["batch-every"].as<int>();
+  if (batch_every < 1) throw UsageError("--batch-every must be at least 1");
   if (!arguments.csv.empty()) check_writable(arguments.csv);
 
   const std::vector<DatasetMap> maps = select_maps(discover_dataset(arguments.dataset), arguments.run.maps);
   arguments.run.progress = [](const std::string& line) { progress(line); };
+  if (mode == "incremental") return run_incremental(arguments, maps, (*vm)["compare-batch"].as<bool>(), batch_every);
   const std::vector<ImageResult> results = run_dataset(maps, arguments.run, batch_segmenter(arguments.run));
 
   const std::string method = method_name(arguments.run.segment);

@@ -1,6 +1,7 @@
 // `topocut explore` as a user runs it: the built binary, its exit codes, its report and its frames.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -40,9 +41,10 @@ class ExploreCli : public ::testing::Test {
   }
   void TearDown() override { fs::remove_all(dir_); }
 
-  Outcome run(const std::string& args) {
+  Outcome run(const std::string& args, const std::string& command_name = "explore") {
     const fs::path out = dir_ / "stdout.txt", err = dir_ / "stderr.txt";
-    const std::string command = std::string(TOPOCUT_CLI) + " explore " + args + " >" + out.string() + " 2>" + err.string();
+    const std::string command =
+        std::string(TOPOCUT_CLI) + " " + command_name + " " + args + " >" + out.string() + " 2>" + err.string();
     const int status = std::system(command.c_str());
     Outcome o;
     o.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
@@ -186,6 +188,38 @@ TEST_F(ExploreCli, SameSeedSameRunGrowingMapWorks) {
   const Outcome grow = run(map.string() + " --grow");
   ASSERT_EQ(grow.exit_code, 0) << grow.err;
   EXPECT_GT(number_after(grow.out, "incremental: recall "), 80.0) << grow.out;
+}
+
+// `topocut evaluate --mode incremental` on a two-map dataset folder in the Bormann layout.
+TEST_F(ExploreCli, EvaluateIncrementalModeReportsUpdatesAndCsv) {
+  for (const std::string name : {"alpha", "beta"}) {
+    const fs::path map = write_map(name, true);
+    fs::copy_file(map, dir_ / (name + "_furnitures.png"));
+  }
+  const fs::path csv = dir_ / "out.csv";
+  const Outcome o = run("--dataset " + dir_.string() + " --mode incremental --compare-batch --csv " + csv.string(), "evaluate");
+  ASSERT_EQ(o.exit_code, 0) << o.err;
+  EXPECT_NE(o.out.find("incremental"), std::string::npos);
+  EXPECT_NE(o.out.find("batch segment() on the same final maps"), std::string::npos) << o.out;
+  EXPECT_NE(o.out.find("inc median ms"), std::string::npos) << o.out;
+  EXPECT_NE(o.err.find("[4/4]"), std::string::npos) << o.err;  // progress on stderr
+  std::ifstream in(csv);
+  std::string header, line;
+  std::getline(in, header);
+  EXPECT_EQ(header,
+            "map,variant,rooms,gt_rooms,recall,precision,time_ms,updates,update_median_ms,update_p95_ms,update_max_ms,"
+            "batch_update_median_ms");
+  int rows = 0;
+  while (std::getline(in, line)) {
+    ++rows;
+    EXPECT_EQ(std::count(line.begin(), line.end(), ','), 11) << line;
+    EXPECT_NE(line.back(), ',') << "batch median missing: " << line;
+  }
+  EXPECT_EQ(rows, 4);
+
+  const Outcome bad = run("--dataset " + dir_.string() + " --mode sideways", "evaluate");
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_NE(bad.err.find("--mode"), std::string::npos) << bad.err;
 }
 
 }  // namespace
