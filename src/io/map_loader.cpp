@@ -163,11 +163,15 @@ RosMapMetadata parse_ros_map_yaml(const std::string& yaml_text, const std::strin
   return m;
 }
 
-void decode_map_image(const std::string& bytes, const std::string& source, cv::Mat& grey, cv::Mat& transparent) {
+namespace {
+
+// The image as stored (any depth and channel count); throws Error naming source if it is not one.
+cv::Mat decode_image(const std::string& bytes, const std::string& source) {
   if (bytes.empty()) throw Error("map image " + quoted(source) + " is empty (0 bytes)");
   cv::Mat image;
   try {
-    const std::vector<unsigned char> buffer(bytes.begin(), bytes.end());
+    // A header over the bytes, not a copy of them.
+    const cv::Mat buffer(1, static_cast<int>(bytes.size()), CV_8UC1, const_cast<char*>(bytes.data()));
     const QuietStderr quiet;
     image = cv::imdecode(buffer, cv::IMREAD_UNCHANGED);
   } catch (const cv::Exception&) {
@@ -175,6 +179,55 @@ void decode_map_image(const std::string& bytes, const std::string& source, cv::M
   }
   if (image.empty() || image.rows == 0 || image.cols == 0)
     throw Error("cannot read " + quoted(source) + " as an image (not a format OpenCV decodes, or corrupt)");
+  return image;
+}
+
+// plain_image_cells(decode_map_image(...)) for 8-bit images in one pass over the pixels, with the
+// same arithmetic: the channel mean summed in floats as convertTo and add do it, compared in floats,
+// alpha < 128 transparent. False (nothing done) for other depths.
+bool plain_cells_8bit(const cv::Mat& image, const MapLoadOptions& options, cv::Mat& cells) {
+  if (image.depth() != CV_8U) return false;
+  const int n = image.channels();
+  const bool has_alpha = n == 2 || n == 4;
+  const int colour_channels = has_alpha ? n - 1 : n;
+  if (colour_channels < 1 || colour_channels > 3) return false;
+  const float free_min = static_cast<float>(options.free_min), occupied_max = static_cast<float>(options.occupied_max);
+  // The state of a channel mean, and each channel's share of it, by value.
+  const float share = static_cast<float>(1.0 / colour_channels);
+  float part[256];
+  unsigned char state[256];
+  for (int v = 0; v < 256; ++v) {
+    part[v] = static_cast<float>(v) * share;
+    const float g = static_cast<float>(v);
+    state[v] = g > free_min ? kFree : (g < occupied_max ? kOccupied : kUnknown);
+  }
+  cells.create(image.size(), CV_8UC1);
+  for (int r = 0; r < image.rows; ++r) {
+    const unsigned char* in = image.ptr<unsigned char>(r);
+    unsigned char* out = cells.ptr<unsigned char>(r);
+    if (colour_channels == 1) {
+      for (int c = 0; c < image.cols; ++c) {
+        const unsigned char* px = in + static_cast<std::size_t>(c) * n;
+        out[c] = has_alpha && px[1] < 128 ? kUnknown : state[px[0]];
+      }
+      continue;
+    }
+    for (int c = 0; c < image.cols; ++c) {
+      const unsigned char* px = in + static_cast<std::size_t>(c) * n;
+      float g = 0.0f;
+      g += part[px[0]];
+      g += part[px[1]];
+      g += part[px[2]];
+      out[c] = has_alpha && px[3] < 128 ? kUnknown : (g > free_min ? kFree : (g < occupied_max ? kOccupied : kUnknown));
+    }
+  }
+  return true;
+}
+
+}  // namespace
+
+void decode_map_image(const std::string& bytes, const std::string& source, cv::Mat& grey, cv::Mat& transparent) {
+  const cv::Mat image = decode_image(bytes, source);
 
   // Work in floats on the 0..255 scale so the channel mean is exact, as in map_server.
   double scale = 1.0;
@@ -262,8 +315,11 @@ OccupancyGrid load_map(const std::string& path, const MapLoadOptions& options) {
       throw Error("the map resolution must be a positive number of metres per cell");
     if (options.free_min < options.occupied_max)
       throw Error("the free threshold must not be below the occupied threshold");
-    decode_map_image(read_file(path), path, grey, transparent);
-    grid.cells = plain_image_cells(grey, transparent, options);
+    const std::string bytes = read_file(path);
+    if (!plain_cells_8bit(decode_image(bytes, path), options, grid.cells)) {
+      decode_map_image(bytes, path, grey, transparent);
+      grid.cells = plain_image_cells(grey, transparent, options);
+    }
     grid.resolution = options.resolution;
     grid.origin = {0.0, 0.0};
   }
