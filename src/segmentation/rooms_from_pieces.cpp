@@ -102,7 +102,7 @@ Segmentation rooms_from_pieces(const OccupancyGrid& grid, const PieceSet& set, c
   }
   std::vector<LabelChange> changes;
   fill_free_space_labels(labels, grid.cells == kFree, options.cover_absorbed_obstacles, &changes);
-  bool renumber = overlap;
+  std::vector<long> filled_first(static_cast<std::size_t>(rooms) + 1, never);  // earliest filled cell per room
   for (const LabelChange& change : changes) {
     const int r = change.index / w, c = change.index % w;
     if (change.before > 0) {
@@ -110,23 +110,22 @@ Segmentation rooms_from_pieces(const OccupancyGrid& grid, const PieceSet& set, c
       --cells[k];
       sum_c[k] -= c;
       sum_r[k] -= r;
-      renumber |= cells[k] == 0 || change.index == first[static_cast<std::size_t>(order[k - 1])];
     }
     if (change.after > 0) {
       const std::size_t k = static_cast<std::size_t>(change.after);
       ++cells[k];
       sum_c[k] += c;
       sum_r[k] += r;
-      renumber |= change.index < first[static_cast<std::size_t>(order[k - 1])];
+      filled_first[k] = std::min(filled_first[k], static_cast<long>(change.index));
     }
   }
 
-  // Rare: overlapping pieces or a first cell cleared or preceded by a filled cell. Number the rooms
-  // from the image itself, as the definition says.
   std::vector<int> piece_of_room(static_cast<std::size_t>(rooms) + 1, -1);
   for (std::size_t k = 0; k < order.size(); ++k) piece_of_room[k + 1] = order[k];
   int room_count = rooms;
-  if (renumber) {
+  if (overlap) {
+    // Pieces that overlap (not a tiling): number the rooms from the image itself, as the
+    // definition says.
     std::vector<int> renamed(static_cast<std::size_t>(rooms) + 1, 0);
     std::vector<int> new_piece(1, -1);
     int next = 0;
@@ -152,6 +151,68 @@ Segmentation rooms_from_pieces(const OccupancyGrid& grid, const PieceSet& set, c
     for (int id = 1; id <= next; ++id) room_of_piece[static_cast<std::size_t>(new_piece[static_cast<std::size_t>(id)]) + 1] = id;
     piece_of_room = new_piece;
     room_count = next;
+  } else {
+    // The completion cleared some cells (obstacles a piece covered) and labelled others: each
+    // room's first cell is its first span cell that kept its label, or an earlier filled cell.
+    // Only if that changes the order (or empties a room) are the labels renamed, by table.
+    std::vector<std::size_t> span_begin(n + 1, 0);
+    for (const CellSpan& span : spans) ++span_begin[static_cast<std::size_t>(span.index) + 1];
+    for (std::size_t i = 0; i < n; ++i) span_begin[i + 1] += span_begin[i];
+    std::vector<long> true_first(static_cast<std::size_t>(rooms) + 1, never);
+    for (int k = 1; k <= rooms; ++k) {
+      const std::size_t piece = static_cast<std::size_t>(piece_of_room[static_cast<std::size_t>(k)]);
+      long found = never;
+      // The piece's spans run from its bottom row up; walk its rows from the top.
+      std::size_t end = span_begin[piece + 1];
+      while (end > span_begin[piece] && found == never) {
+        std::size_t begin = end - 1;
+        while (begin > span_begin[piece] && spans[begin - 1].row == spans[end - 1].row) --begin;
+        for (std::size_t i = begin; i < end && found == never; ++i) {
+          const int* row = labels.ptr<int>(spans[i].row);
+          for (int c = spans[i].first; c < spans[i].end; ++c) {
+            if (row[c] == k) {
+              found = static_cast<long>(spans[i].row) * w + c;
+              break;
+            }
+          }
+        }
+        end = begin;
+      }
+      true_first[static_cast<std::size_t>(k)] = std::min(found, filled_first[static_cast<std::size_t>(k)]);
+    }
+    std::vector<int> by_first;
+    for (int k = 1; k <= rooms; ++k)
+      if (cells[static_cast<std::size_t>(k)] > 0) by_first.push_back(k);
+    std::sort(by_first.begin(), by_first.end(), [&](int a, int b) {
+      return true_first[static_cast<std::size_t>(a)] < true_first[static_cast<std::size_t>(b)];
+    });
+    bool identity = static_cast<int>(by_first.size()) == rooms;
+    for (std::size_t i = 0; i < by_first.size() && identity; ++i) identity = by_first[i] == static_cast<int>(i) + 1;
+    if (!identity) {
+      std::vector<int> renamed(static_cast<std::size_t>(rooms) + 1, 0);
+      std::vector<int> new_piece(1, -1);
+      std::vector<long> new_cells(1, 0);
+      std::vector<double> new_c(1, 0.0), new_r(1, 0.0);
+      for (std::size_t i = 0; i < by_first.size(); ++i) {
+        const std::size_t k = static_cast<std::size_t>(by_first[i]);
+        renamed[k] = static_cast<int>(i) + 1;
+        new_piece.push_back(piece_of_room[k]);
+        new_cells.push_back(cells[k]);
+        new_c.push_back(sum_c[k]);
+        new_r.push_back(sum_r[k]);
+      }
+      for (int r = 0; r < h; ++r) {
+        int* row = labels.ptr<int>(r);
+        for (int c = 0; c < w; ++c) row[c] = renamed[static_cast<std::size_t>(row[c])];
+      }
+      std::fill(room_of_piece.begin(), room_of_piece.end(), 0);
+      for (std::size_t id = 1; id < new_piece.size(); ++id) room_of_piece[static_cast<std::size_t>(new_piece[id]) + 1] = static_cast<int>(id);
+      piece_of_room = new_piece;
+      cells = new_cells;
+      sum_c = new_c;
+      sum_r = new_r;
+      room_count = static_cast<int>(by_first.size());
+    }
   }
 
   Segmentation s;
