@@ -50,6 +50,12 @@ const std::vector<DatasetOption>& dataset_options() {
         {"concavity", "M", "maximum concavity tau in metres (default " + number(defaults.run.segment.concavity) + ")",
          false},
         {"trivial", "", "baseline: every free-space component is one room (no decomposition)", false},
+        {"parity", "", "the reference: DuDe's pieces are the rooms (no doors, merging or simplification)", false},
+        {"no-doors", "", "no door cuts before the decomposition", false},
+        {"no-wall-openings", "", "door cuts without the wall openings", false},
+        {"no-merge", "", "no merging of pieces into rooms", false},
+        {"no-simplify", "", "decompose the exact pixel-edge polygons", false},
+        {"cover-obstacles", "", "rooms also label the obstacles they absorbed (furniture)", false},
     };
   }();
   return options;
@@ -77,6 +83,20 @@ void apply_dataset_option(DatasetArguments& arguments, const std::string& name, 
     arguments.run.segment.concavity = parse_positive_metres(name, value);
   } else if (name == "trivial") {
     arguments.run.segment.decompose = false;
+  } else if (name == "parity") {
+    const bool decompose = arguments.run.segment.decompose;
+    arguments.run.segment = parity_segment_options(arguments.run.segment.concavity);
+    arguments.run.segment.decompose = decompose;
+  } else if (name == "no-doors") {
+    arguments.run.segment.doors.enabled = false;
+  } else if (name == "no-wall-openings") {
+    arguments.run.segment.doors.extend_walls = false;
+  } else if (name == "no-merge") {
+    arguments.run.segment.merge.enabled = false;
+  } else if (name == "no-simplify") {
+    arguments.run.segment.simplify = 0.0;
+  } else if (name == "cover-obstacles") {
+    arguments.run.segment.labels.cover_absorbed_obstacles = true;
   } else {
     throw Error("unknown option '--" + name + "'");
   }
@@ -127,7 +147,18 @@ std::string dataset_options_help() {
 
 std::string method_name(const SegmentOptions& options) {
   if (!options.decompose) return "trivial (one room per component)";
-  return "topocut (tau " + number(options.concavity) + " m)";
+  std::string name = "topocut (tau " + number(options.concavity) + " m";
+  if (!options.doors.enabled && !options.merge.enabled && options.simplify == 0.0 &&
+      !options.labels.cover_absorbed_obstacles) {
+    name += ", parity";
+  } else {
+    if (!options.doors.enabled) name += ", no doors";
+    if (options.doors.enabled && !options.doors.extend_walls) name += ", no wall openings";
+    if (!options.merge.enabled) name += ", no merge";
+    if (options.simplify == 0.0) name += ", no simplify";
+    if (options.labels.cover_absorbed_obstacles) name += ", obstacles covered";
+  }
+  return name + ")";
 }
 
 }  // namespace topocut

@@ -74,5 +74,25 @@ TEST(DatasetOptions, MethodNameTellsTheBaselineApart) {
   EXPECT_NE(method_name(options).find("trivial"), std::string::npos);
 }
 
+TEST(DatasetOptions, SegmenterSwitchesReachTheOptionsAndTheMethodName) {
+  DatasetArguments arguments;
+  apply_dataset_option(arguments, "concavity", "3");
+  apply_dataset_option(arguments, "parity", "");
+  EXPECT_EQ(arguments.run.segment.concavity, 3.0);
+  EXPECT_FALSE(arguments.run.segment.doors.enabled);
+  EXPECT_FALSE(arguments.run.segment.merge.enabled);
+  EXPECT_NE(method_name(arguments.run.segment).find("parity"), std::string::npos);
+  DatasetArguments other;
+  apply_dataset_option(other, "no-merge", "");
+  apply_dataset_option(other, "cover-obstacles", "");
+  EXPECT_FALSE(other.run.segment.merge.enabled);
+  EXPECT_TRUE(other.run.segment.doors.enabled);
+  EXPECT_TRUE(other.run.segment.labels.cover_absorbed_obstacles);
+  const std::string name = method_name(other.run.segment);
+  EXPECT_NE(name.find("no merge"), std::string::npos);
+  EXPECT_EQ(name.find("parity"), std::string::npos);
+  EXPECT_EQ(method_name(SegmentOptions{}), "topocut (tau 2.5 m)");
+}
+
 }  // namespace
 }  // namespace topocut
