@@ -42,7 +42,7 @@ int run(const std::vector<std::string>& args) {
   double resolution = 0.05;
   SegmentOptions options;
   MapLoadOptions load;
-  bool trivial = false;
+  bool trivial = false, parity = false, no_doors = false, no_openings = false, no_merge = false, no_simplify = false;
   po::options_description described("Segmentation");
   described.add_options()
       ("map", po::value<std::string>(&map_path)->required(), "map: ROS map_server YAML, or an image (PNG, PGM, ...)")
@@ -51,6 +51,19 @@ int run(const std::vector<std::string>& args) {
       ("concavity", po::value<double>(&options.concavity)->default_value(options.concavity),
        "maximum concavity tau in metres: larger values give fewer, less convex rooms")
       ("trivial", po::bool_switch(&trivial), "no decomposition: one room per free-space component (baseline)")
+      ("parity", po::bool_switch(&parity),
+       "the reference behaviour: DuDe's pieces are the rooms (no door cuts, merging or simplification)")
+      ("door-width", po::value<double>(&options.doors.max_width)->default_value(options.doors.max_width),
+       "widest passage in metres taken for a door (cut before the decomposition)")
+      ("no-doors", po::bool_switch(&no_doors), "no door cuts before the decomposition")
+      ("no-wall-openings", po::bool_switch(&no_openings),
+       "door cuts only at narrow passages, not where a thin wall stops short of the next obstacle")
+      ("no-merge", po::bool_switch(&no_merge), "keep DuDe's pieces as rooms instead of merging them across wide cuts")
+      ("fold-area", po::value<double>(&options.merge.min_room_area)->default_value(options.merge.min_room_area),
+       "rooms smaller than this (m²) are folded into the neighbour they share the longest cut with")
+      ("no-simplify", po::bool_switch(&no_simplify), "decompose the exact pixel-edge polygons (slower)")
+      ("cover-obstacles", po::bool_switch(&options.labels.cover_absorbed_obstacles),
+       "label the obstacles a room absorbed (furniture) with the room, not with 0")
       ("robot-radius", po::value<double>(&options.binarize.robot_radius)->default_value(0.0),
        "inflate obstacles by this radius in metres before decomposing (0: raw free space)")
       ("min-room-area", po::value<double>(&options.contours.min_component_area)->default_value(options.contours.min_component_area),
@@ -69,9 +82,12 @@ int run(const std::vector<std::string>& args) {
   positional.add("map", 1);
   const auto vm = parse_options(
       "topocut segment MAP [options]",
-      "Segments the free space of a map into rooms: free space -> polygons with holes -> dual-space\n"
-      "decomposition (DuDe) with maximum concavity tau -> rooms, and passages between them where a\n"
-      "cut separates two rooms. Every free cell gets a room; obstacles and unknown cells get none.\n"
+      "Segments the free space of a map into rooms: free space -> polygons with holes -> door cuts\n"
+      "(narrow passages, and openings where a thin wall stops short) -> dual-space decomposition\n"
+      "(DuDe) of each part with maximum concavity tau -> pieces merged across cuts that are not\n"
+      "door-like -> rooms, and passages between them (the room graph). Every free cell gets a room;\n"
+      "obstacles and unknown cells get none (absorbed obstacles too with --cover-obstacles).\n"
+      "--parity runs the reference behaviour (DuDe's pieces are the rooms).\n"
       "A ROS map_server YAML supplies its own resolution, origin and thresholds; for a plain image,\n"
       "grey > --free-threshold is free, < --occupied-threshold occupied, and transparency is unknown.\n"
       "Prints a summary (rooms, passages, time) and writes each requested output atomically.\n\n"
@@ -83,10 +99,25 @@ int run(const std::vector<std::string>& args) {
   require_positive(options.concavity, "--concavity");
   require_non_negative(options.binarize.robot_radius, "--robot-radius");
   require_non_negative(options.contours.min_component_area, "--min-room-area");
+  require_non_negative(options.merge.min_room_area, "--fold-area");
+  require_positive(options.doors.max_width, "--door-width");
   require_non_negative(options.contours.min_hole_area, "--min-hole-area");
   if (load.free_min < 0 || load.free_min > 255 || load.occupied_max < 0 || load.occupied_max > 255)
     throw UsageError("--free-threshold and --occupied-threshold must lie in 0..255");
   if (load.occupied_max > load.free_min) throw UsageError("--occupied-threshold must not exceed --free-threshold");
+  if (parity && (no_doors || no_openings || no_merge || no_simplify || options.labels.cover_absorbed_obstacles))
+    throw UsageError("--parity already switches every improvement off; give it alone");
+  if (parity) {
+    const SegmentOptions reference = parity_segment_options(options.concavity);
+    options.doors = reference.doors;
+    options.merge = reference.merge;
+    options.simplify = reference.simplify;
+    options.labels = reference.labels;
+  }
+  if (no_doors) options.doors.enabled = false;
+  if (no_openings) options.doors.extend_walls = false;
+  if (no_merge) options.merge.enabled = false;
+  if (no_simplify) options.simplify = 0.0;
   options.decompose = !trivial;
   load.resolution = resolution;
 
@@ -124,11 +155,12 @@ int run(const std::vector<std::string>& args) {
   summary << map_path << ": " << grid.width() << " x " << grid.height() << " cells at " << grid.resolution << " m; "
           << segmentation.rooms.size() << (segmentation.rooms.size() == 1 ? " room, " : " rooms, ")
           << segmentation.passages.size() << (segmentation.passages.size() == 1 ? " passage" : " passages") << " ("
-          << (trivial ? "trivial: one room per component" : "DuDe, concavity " + [&] {
-               std::ostringstream t;
-               t << options.concavity;
-               return t.str();
-             }() + " m")
+          << (trivial ? "trivial: one room per component"
+                      : std::string(parity ? "DuDe pieces, parity" : "doors + DuDe + merging") + ", concavity " + [&] {
+                          std::ostringstream t;
+                          t << options.concavity;
+                          return t.str();
+                        }() + " m")
           << ") in " << std::fixed << std::setprecision(1) << ms(loaded, done) << " ms (loading " << ms(start, loaded)
           << " ms)\n" << std::defaultfloat;
   if (is_yaml_path(map_path) && !vm->at("resolution").defaulted())

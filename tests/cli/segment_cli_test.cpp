@@ -106,6 +106,26 @@ TEST(SegmentCli, FloorplanWritesEveryOutput) {
   EXPECT_EQ(files_in(dir), 4u);  // and no temporary files left over
 }
 
+TEST(SegmentCli, MergedCorridorIsOneRoomAndParityKeepsDuDesPieces) {
+  TempDir dir;
+  const Result rooms = run(dir, {bundled("corridor_l.yaml"), "--out-json", dir.file("rooms.json")});
+  ASSERT_EQ(rooms.code, 0) << rooms.err;
+  EXPECT_NE(rooms.out.find("1 room, 0 passages"), std::string::npos) << rooms.out;
+  // The merged room's polygon is the whole L (no internal passage, area of all its cells).
+  const nlohmann::json json = nlohmann::json::parse(slurp(dir.file("rooms.json")));
+  ASSERT_EQ(json["rooms"].size(), 1u);
+  EXPECT_TRUE(json["passages"].empty());
+  const Result parity = run(dir, {bundled("corridor_l.yaml"), "--parity"});
+  ASSERT_EQ(parity.code, 0) << parity.err;
+  EXPECT_NE(parity.out.find("2 rooms, 1 passage"), std::string::npos) << parity.out;
+  EXPECT_NE(parity.out.find("parity"), std::string::npos) << parity.out;
+  const Result unmerged = run(dir, {bundled("corridor_l.yaml"), "--no-merge"});
+  ASSERT_EQ(unmerged.code, 0) << unmerged.err;
+  EXPECT_NE(unmerged.out.find("2 rooms, 1 passage"), std::string::npos) << unmerged.out;
+  expect_error(run(dir, {bundled("corridor_l.yaml"), "--parity", "--no-merge"}), "--parity", 2);
+  expect_error(run(dir, {bundled("corridor_l.yaml"), "--door-width", "0"}), "--door-width", 2);
+}
+
 TEST(SegmentCli, TrivialModeGivesOneRoomPerComponent) {
   TempDir dir;
   const Result r = run(dir, {bundled("floorplan.yaml"), "--trivial", "--out-json", dir.file("r.json")});
