@@ -118,7 +118,18 @@ void fill_free_space_labels(cv::Mat& labels, const cv::Mat& free_mask, bool keep
       }
     }
   }
+  complete_unlabelled_cells(labels, free_mask, unlabelled, changes);
+}
+
+void complete_unlabelled_cells(cv::Mat& labels, const cv::Mat& free_mask, const std::vector<int>& unlabelled,
+                               std::vector<LabelChange>* changes) {
   if (unlabelled.empty()) return;
+  if (labels.type() != CV_32SC1 || free_mask.type() != CV_8UC1 || labels.size() != free_mask.size())
+    throw Error("labels (CV_32SC1) and free-space mask (CV_8UC1) must have the same size");
+  CV_Assert(labels.isContinuous() && free_mask.isContinuous());
+  const int h = labels.rows, w = labels.cols;
+  int* data = labels.ptr<int>(0);
+  const unsigned char* free = free_mask.ptr<unsigned char>(0);
 
   // Breadth-first search through free space from the labelled free cells next to unlabelled ones,
   // in raster order (ties between equally near labels are broken the same way every time, as if
@@ -152,9 +163,40 @@ void fill_free_space_labels(cv::Mat& labels, const cv::Mat& free_mask, bool keep
   // straight line. They are few and small; each cut-off blob is solved in a window around it that
   // grows until it holds labels, then by the blob's own size again (so the nearest label of every
   // cell of the blob lies inside), instead of a distance transform of the whole map.
-  std::vector<int> orphans;
-  for (const int i : unlabelled)
-    if (data[i] == 0) orphans.push_back(i);
+  // Most specks lie next to a room: a search in square rings around the cell, stopped once the
+  // rings are farther than the nearest label found (or at a cap), settles them without a window.
+  // The labelled cells taken are those present before this step, as in the window below.
+  std::vector<int> orphans, settled_index, settled_label;
+  constexpr int kRingCap = 24;
+  for (const int i : unlabelled) {
+    if (data[i] != 0) continue;
+    const int r = i / w, c = i % w;
+    long best = std::numeric_limits<long>::max();
+    int label = 0;
+    for (int k = 1; k <= kRingCap && static_cast<long>(k - 1) * (k - 1) < best; ++k) {
+      for (int y = r - k; y <= r + k; ++y) {
+        if (y < 0 || y >= h) continue;
+        const bool edge_row = y == r - k || y == r + k;
+        for (int x = c - k; x <= c + k; x += edge_row ? 1 : 2 * k) {
+          if (x < 0 || x >= w) continue;
+          const int l = data[y * w + x];
+          if (l <= 0) continue;
+          const long d = static_cast<long>(y - r) * (y - r) + static_cast<long>(x - c) * (x - c);
+          if (d < best) {
+            best = d;
+            label = l;
+          }
+        }
+      }
+    }
+    if (label > 0) {
+      settled_index.push_back(i);
+      settled_label.push_back(label);
+    } else {
+      orphans.push_back(i);
+    }
+  }
+
   std::vector<unsigned char> seen(orphans.size(), 0);
   std::unordered_map<int, std::size_t> orphan_at;
   orphan_at.reserve(orphans.size() * 2);
@@ -208,9 +250,15 @@ void fill_free_space_labels(cv::Mat& labels, const cv::Mat& free_mask, bool keep
     for (const int i : blob) {
       const int r = i / w - window.y, c = i % w - window.x;
       const int label = label_of[static_cast<std::size_t>(nearest.at<int>(r, c))];
-      data[i] = label;
-      if (changes && label != 0) changes->push_back({i, 0, label});
+      if (label == 0) continue;
+      settled_index.push_back(i);
+      settled_label.push_back(label);
     }
+  }
+  // Written only now, so that no speck takes its label from another speck.
+  for (std::size_t k = 0; k < settled_index.size(); ++k) {
+    data[settled_index[k]] = settled_label[k];
+    if (changes) changes->push_back({settled_index[k], 0, settled_label[k]});
   }
 }
 

@@ -70,9 +70,19 @@ Segmentation rooms_from_pieces(const OccupancyGrid& grid, const PieceSet& set, c
   const std::vector<CellSpan> spans = polygon_spans(set.pieces, grid.cells.size());
   const long never = std::numeric_limits<long>::max();
   std::vector<long> first(n, never);
-  for (const CellSpan& span : spans) {
-    const long at = static_cast<long>(span.row) * w + span.first;
-    first[static_cast<std::size_t>(span.index)] = std::min(first[static_cast<std::size_t>(span.index)], at);
+  // A piece's first cell that keeps its label: the first free one of its spans (any, if covered
+  // obstacles are labelled). Pieces' spans run from their bottom row up, so walk them backwards.
+  for (std::size_t k = spans.size(); k-- > 0;) {
+    const CellSpan& span = spans[k];
+    long& f = first[static_cast<std::size_t>(span.index)];
+    if (f != never && f < static_cast<long>(span.row) * w) continue;  // an earlier row already has one
+    const unsigned char* g = grid.cells.ptr<unsigned char>(span.row);
+    for (int c = span.first; c < span.end; ++c) {
+      if (options.cover_absorbed_obstacles || g[c] == kFree) {
+        f = std::min(f, static_cast<long>(span.row) * w + c);
+        break;
+      }
+    }
   }
   std::vector<int> order;
   for (std::size_t i = 0; i < n; ++i)
@@ -84,24 +94,66 @@ Segmentation rooms_from_pieces(const OccupancyGrid& grid, const PieceSet& set, c
   for (std::size_t k = 0; k < order.size(); ++k) room_of_piece[static_cast<std::size_t>(order[k]) + 1] = static_cast<int>(k) + 1;
   const int rooms = static_cast<int>(order.size());
 
-  cv::Mat labels = cv::Mat::zeros(grid.cells.size(), CV_32SC1);
+  // One pass writes the label image row by row from the spans (sorted by row, then column):
+  // room ids on covered cells (0 where a covered cell is not free, unless obstacles are covered),
+  // 0 between spans, and lists the free cells no span covers.
+  std::vector<std::size_t> row_begin(static_cast<std::size_t>(h) + 1, 0);
+  for (const CellSpan& span : spans) ++row_begin[static_cast<std::size_t>(span.row) + 1];
+  for (int r = 0; r < h; ++r) row_begin[static_cast<std::size_t>(r) + 1] += row_begin[static_cast<std::size_t>(r)];
+  std::vector<int> by_row(spans.size());
+  {
+    std::vector<std::size_t> next(row_begin.begin(), row_begin.end() - 1);
+    for (std::size_t i = 0; i < spans.size(); ++i) by_row[next[static_cast<std::size_t>(spans[i].row)]++] = static_cast<int>(i);
+  }
+  cv::Mat labels(grid.cells.size(), CV_32SC1);
   std::vector<long> cells(static_cast<std::size_t>(rooms) + 1, 0);
   std::vector<double> sum_c(static_cast<std::size_t>(rooms) + 1, 0.0), sum_r(static_cast<std::size_t>(rooms) + 1, 0.0);
+  std::vector<LabelChange> changes;  // covered cells cleared, free cells filled: to fix the span counts
+  std::vector<int> unlabelled;
   bool overlap = false;
-  for (const CellSpan& span : spans) {
-    int* row = labels.ptr<int>(span.row);
-    const int id = room_of_piece[static_cast<std::size_t>(span.index) + 1];
-    for (int c = span.first; c < span.end; ++c) {
-      overlap |= row[c] != 0;
-      row[c] = row[c] != 0 ? row[c] : id;
+  const bool keep = options.cover_absorbed_obstacles;
+  std::vector<int> row_spans;
+  for (int r = 0; r < h; ++r) {
+    int* out = labels.ptr<int>(r);
+    const unsigned char* g = grid.cells.ptr<unsigned char>(r);
+    row_spans.assign(by_row.begin() + static_cast<std::ptrdiff_t>(row_begin[static_cast<std::size_t>(r)]),
+                     by_row.begin() + static_cast<std::ptrdiff_t>(row_begin[static_cast<std::size_t>(r) + 1]));
+    std::sort(row_spans.begin(), row_spans.end(), [&](int a, int b) {
+      return std::tie(spans[static_cast<std::size_t>(a)].first, a) < std::tie(spans[static_cast<std::size_t>(b)].first, b);
+    });
+    int c = 0;
+    auto gap = [&](int until) {
+      std::fill(out + c, out + until, 0);
+      for (; c < until; ++c)
+        if (g[c] == kFree) unlabelled.push_back(r * w + c);
+    };
+    for (const int i : row_spans) {
+      const CellSpan& span = spans[static_cast<std::size_t>(i)];
+      int first_cell = span.first;
+      if (first_cell < c) {
+        overlap = true;  // pieces overlap: the cells written first stay; rooms are counted again below
+        if (span.end <= c) continue;
+        first_cell = c;
+      }
+      gap(first_cell);
+      const int id = room_of_piece[static_cast<std::size_t>(span.index) + 1];
+      std::fill(out + first_cell, out + span.end, id);
+      const long count = span.end - first_cell;
+      cells[static_cast<std::size_t>(id)] += count;
+      sum_c[static_cast<std::size_t>(id)] += 0.5 * static_cast<double>(count) * (first_cell + span.end - 1);
+      sum_r[static_cast<std::size_t>(id)] += static_cast<double>(count) * r;
+      if (!keep) {
+        for (int x = first_cell; x < span.end; ++x) {
+          if (g[x] == kFree) continue;
+          out[x] = 0;
+          changes.push_back({r * w + x, id, 0});
+        }
+      }
+      c = span.end;
     }
-    const long count = span.end - span.first;
-    cells[static_cast<std::size_t>(id)] += count;
-    sum_c[static_cast<std::size_t>(id)] += 0.5 * static_cast<double>(count) * (span.first + span.end - 1);
-    sum_r[static_cast<std::size_t>(id)] += static_cast<double>(count) * span.row;
+    gap(w);
   }
-  std::vector<LabelChange> changes;
-  fill_free_space_labels(labels, grid.cells == kFree, options.cover_absorbed_obstacles, &changes);
+  if (!unlabelled.empty()) complete_unlabelled_cells(labels, grid.cells == kFree, unlabelled, &changes);
   std::vector<long> filled_first(static_cast<std::size_t>(rooms) + 1, never);  // earliest filled cell per room
   for (const LabelChange& change : changes) {
     const int r = change.index / w, c = change.index % w;

@@ -98,5 +98,23 @@ TEST(FillLabels, CutOffSpecksTakeTheNearestLabel) {
   EXPECT_EQ(labels.at<int>(2, 5), 0);
 }
 
+TEST(FillLabels, FarSpecksTakeTheNearestLabelInAStraightLine) {
+  // Labels at the two ends of a long strip of obstacles; specks 30 and 60 cells from the left end.
+  cv::Mat free = cv::Mat::zeros(3, 101, CV_8UC1);
+  free.col(0).setTo(255);
+  free.col(100).setTo(255);
+  free.at<unsigned char>(1, 30) = 255;
+  free.at<unsigned char>(1, 60) = 255;
+  cv::Mat labels = cv::Mat::zeros(free.size(), CV_32SC1);
+  labels.col(0).setTo(1);
+  labels.col(100).setTo(2);
+  std::vector<LabelChange> changes;
+  fill_free_space_labels(labels, free, false, &changes);
+  EXPECT_EQ(labels.at<int>(1, 30), 1);
+  EXPECT_EQ(labels.at<int>(1, 60), 2);
+  EXPECT_EQ(changes.size(), 2u);
+  EXPECT_EQ(cv::countNonZero(labels), 3 + 3 + 2);
+}
+
 }  // namespace
 }  // namespace topocut

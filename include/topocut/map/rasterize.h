@@ -42,4 +42,10 @@ struct LabelChange {
 void fill_free_space_labels(cv::Mat& labels, const cv::Mat& free_mask, bool keep_non_free = false,
                             std::vector<LabelChange>* changes = nullptr);
 
+// The second half of fill_free_space_labels, for callers that found the unlabelled free cells
+// themselves: unlabelled lists them (row * cols + column, in raster order); each gets the label
+// of the nearest labelled free cell along free space, or else in a straight line.
+void complete_unlabelled_cells(cv::Mat& labels, const cv::Mat& free_mask, const std::vector<int>& unlabelled,
+                               std::vector<LabelChange>* changes = nullptr);
+
 }  // namespace topocut
