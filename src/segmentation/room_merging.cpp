@@ -60,6 +60,8 @@ class Merger {
   Merger(const PieceSet& set, double resolution, const RoomMergeOptions& options)
       : set_(set), resolution_(resolution), options_(options), parent_(set.pieces.size()) {
     std::iota(parent_.begin(), parent_.end(), 0);
+    members_.resize(set.pieces.size());
+    for (std::size_t i = 0; i < set.pieces.size(); ++i) members_[i] = {static_cast<int>(i)};
     boxes_.reserve(set.pieces.size());
     for (const PolygonWithHoles& piece : set.pieces) {
       boxes_.push_back(bounding_box(piece));
@@ -71,21 +73,35 @@ class Merger {
   void merge_non_doors() {
     // Greedy: the most clearly non-door-like cut first, then the scores next to the merged room
     // change (the merged room is wider or longer than its parts), so they are measured again.
+    // Scores are cached and measured again only for the cuts of a room that just grew.
+    std::vector<double> score(sides_.size(), 0.0);
+    std::vector<bool> fresh(sides_.size(), false);
     while (true) {
       int best = -1;
       double best_score = 0.0;
       for (std::size_t k = 0; k < sides_.size(); ++k) {
         const Side& s = sides_[k];
         if (s.left < 0 || root(s.left) == root(s.right) || blocked_[k] || s.door) continue;
-        const double score = door_score(static_cast<int>(k));
-        if (score >= options_.door_ratio && (best < 0 || score > best_score)) {
+        if (!fresh[k]) {
+          score[k] = door_score(static_cast<int>(k));
+          fresh[k] = true;
+        }
+        if (score[k] >= options_.door_ratio && (best < 0 || score[k] > best_score)) {
           best = static_cast<int>(k);
-          best_score = score;
+          best_score = score[k];
         }
       }
       if (best < 0) return;
-      if (!unite(sides_[static_cast<std::size_t>(best)].left, sides_[static_cast<std::size_t>(best)].right))
+      const Side& chosen = sides_[static_cast<std::size_t>(best)];
+      if (!unite(chosen.left, chosen.right)) {
         blocked_[static_cast<std::size_t>(best)] = true;
+        continue;
+      }
+      const int grown = root(chosen.left);
+      for (std::size_t k = 0; k < sides_.size(); ++k) {
+        const Side& s = sides_[k];
+        if (s.left >= 0 && (root(s.left) == grown || root(s.right) == grown)) fresh[k] = false;
+      }
     }
   }
 
@@ -135,11 +151,26 @@ class Merger {
       if (members[static_cast<std::size_t>(r)].empty()) order.push_back(r);
       members[static_cast<std::size_t>(r)].push_back(static_cast<int>(i));
     }
+    // Each merged room's polygon is the union of its pieces. If that fails (pieces that do not
+    // meet along whole edges, which DuDe's never do), the room stays as its pieces.
+    std::map<int, PolygonWithHoles> unions;
+    std::set<int> broken;
+    for (const int r : order) {
+      const std::vector<int>& m = members[static_cast<std::size_t>(r)];
+      if (m.size() < 2) continue;
+      std::vector<PolygonWithHoles> parts;
+      for (const int i : m) parts.push_back(set_.pieces[static_cast<std::size_t>(i)]);
+      try {
+        unions[r] = union_of_pieces(parts);
+      } catch (const Error&) {
+        broken.insert(r);
+      }
+    }
     PieceSet out;
     std::set<std::pair<double, double>> ends;  // end points of the cuts that stay
     for (std::size_t k = 0; k < sides_.size(); ++k) {
       const Side& s = sides_[k];
-      if (s.left < 0 || root(s.left) == root(s.right)) continue;
+      if (s.left < 0 || (root(s.left) == root(s.right) && !broken.count(root(s.left)))) continue;
       out.cuts.push_back(set_.cuts[k]);
       if (s.door) out.doors.push_back(set_.cuts[k]);
       ends.insert({set_.cuts[k].a.x, set_.cuts[k].a.y});
@@ -147,13 +178,13 @@ class Merger {
     }
     for (const int r : order) {
       const std::vector<int>& m = members[static_cast<std::size_t>(r)];
-      if (m.size() == 1) {
-        out.pieces.push_back(set_.pieces[static_cast<std::size_t>(m[0])]);
+      if (m.size() == 1 || broken.count(r)) {
+        for (const int i : m) out.pieces.push_back(set_.pieces[static_cast<std::size_t>(i)]);
         continue;
       }
       // Where a removed cut met a straight wall the union goes straight on; such vertices are
       // dropped unless a remaining cut ends there (the cut must stay an edge of both rooms).
-      PolygonWithHoles room = unions_.at(r);
+      PolygonWithHoles room = unions.at(r);
       auto tidy = [&](Ring& ring) {
         Ring kept;
         const std::size_t n = ring.size();
@@ -213,30 +244,19 @@ class Merger {
     return i;
   }
 
-  // Merges the rooms of pieces a and b if their union is a proper polygon; false if it is not (then
-  // the pieces do not meet along whole edges, and the rooms are left apart).
+  // Merges the rooms of pieces a and b (their polygon is made once, in result()).
   bool unite(int a, int b) {
     int ra = root(a), rb = root(b);
     if (ra == rb) return true;
     if (rb < ra) std::swap(ra, rb);  // the room keeps its first piece as root
-    std::vector<PolygonWithHoles> parts{room_polygon(ra), room_polygon(rb)};
-    PolygonWithHoles joined;
-    try {
-      joined = union_of_pieces(parts);
-    } catch (const Error&) {
-      return false;
-    }
     parent_[static_cast<std::size_t>(rb)] = ra;
-    unions_[ra] = std::move(joined);
-    unions_.erase(rb);
+    std::vector<int>& into = members_[static_cast<std::size_t>(ra)];
+    std::vector<int>& from = members_[static_cast<std::size_t>(rb)];
+    into.insert(into.end(), from.begin(), from.end());
+    from.clear();
     area_sum_[ra] = room_area(ra) + room_area(rb);
     area_sum_.erase(rb);
     return true;
-  }
-
-  PolygonWithHoles room_polygon(int r) {
-    const auto it = unions_.find(r);
-    return it != unions_.end() ? it->second : set_.pieces[static_cast<std::size_t>(r)];
   }
 
   double room_area(int r) {
@@ -250,8 +270,8 @@ class Merger {
     std::vector<std::pair<double, double>> spans;
     std::vector<double> ts;
     const Point2 n{-u.y, u.x};
-    for (std::size_t i = 0; i < set_.pieces.size(); ++i) {
-      if (root(static_cast<int>(i)) != r) continue;
+    for (const int member : members_[static_cast<std::size_t>(r)]) {
+      const std::size_t i = static_cast<std::size_t>(member);
       const Box& b = boxes_[i];
       const double s[4] = {(b.x0 - p.x) * n.x + (b.y0 - p.y) * n.y, (b.x1 - p.x) * n.x + (b.y0 - p.y) * n.y,
                            (b.x0 - p.x) * n.x + (b.y1 - p.y) * n.y, (b.x1 - p.x) * n.x + (b.y1 - p.y) * n.y};
@@ -327,11 +347,11 @@ class Merger {
   double resolution_;
   RoomMergeOptions options_;
   std::vector<int> parent_;
+  std::vector<std::vector<int>> members_;  // room root -> its pieces
   std::vector<Box> boxes_;
   std::vector<double> areas_;  // m² per piece
   std::vector<Side> sides_;
   std::vector<bool> blocked_, stuck_;
-  std::map<int, PolygonWithHoles> unions_;  // room root -> union polygon (rooms of 2+ pieces)
   std::map<int, double> area_sum_;          // room root -> area (m², rooms of 2+ pieces)
 };
 
