@@ -14,6 +14,8 @@ void validate(const SegmentOptions& options) {
   if (options.decomposition.max_rounds < 1) throw Error("the decomposition needs at least one round");
   validate(options.merge);
   validate(options.doors);
+  if (!std::isfinite(options.oversegment) || options.oversegment <= 0.0 || options.oversegment > 1.0)
+    throw Error("the oversegmentation factor must lie in (0, 1]");
   if (!std::isfinite(options.simplify) || options.simplify < 0.0)
     throw Error("the simplification tolerance must be a non-negative number of cells");
 }
@@ -35,7 +37,7 @@ PieceSet decompose_polygon(const PolygonWithHoles& polygon, double resolution, c
   const std::vector<PolygonWithHoles> parts = split_polygon(polygon, set.doors);
   set.cuts = set.doors;
   DecompositionOptions decomposition = options.decomposition;
-  decomposition.tau = options.concavity / resolution;
+  decomposition.tau = options.concavity * (options.merge.enabled ? options.oversegment : 1.0) / resolution;
   for (const PolygonWithHoles& part : parts) {
     const Decomposition result = decompose(part, decomposition);
     set.pieces.insert(set.pieces.end(), result.pieces.begin(), result.pieces.end());

@@ -18,7 +18,7 @@ struct RoomMergeOptions {
   // its sides (a door into a room, a room's opening onto a corridor); a cut at least this close to
   // the width of the narrower side (a corridor cut across, an L-room cut at its inner corner) is
   // not, and the rooms on its sides are merged, most clearly non-door-like cuts first.
-  double door_ratio = 0.8;
+  double door_ratio = 0.7;
   // How far into a room (metres) its width next to a cut is sampled: the width of a side is the
   // longest chord parallel to the cut within this depth. It must exceed the wall thickness, so that
   // a door's own frame does not count as the room behind it.

@@ -25,6 +25,9 @@ struct SegmentOptions {
   // 0 keeps the exact pixel edges.
   double simplify = 1.0;
   DoorOptions doors;  // door cuts split each component before the decomposition (door_cuts.h)
+  // With merging on, DuDe cuts at this fraction of the concavity: merging removes every cut that
+  // is not door-like, so a finer decomposition only adds candidate room boundaries. 1 cuts at tau.
+  double oversegment = 0.5;
   // Passed to decompose(); its tau is replaced by concavity / resolution (the polygons are in cells).
   DecompositionOptions decomposition;
   RoomMergeOptions merge;  // pieces -> rooms (room_merging.h)
@@ -47,7 +50,8 @@ cv::Mat segmentation_free_space(const OccupancyGrid& grid, const SegmentOptions&
 // Stage 3a: the pieces of one free-space component (grid coordinates) and the cuts between them:
 // the polygon simplified (options.simplify), split along its door cuts (options.doors, listed in
 // the result's doors), and each part decomposed by decompose() at tau = options.concavity /
-// resolution; or the component itself when options.decompose is false. If the simplified
+// resolution (times options.oversegment when options.merge is on); or the component itself when
+// options.decompose is false. If the simplified
 // polygon cannot be decomposed, the exact one is. Errors name the component's first cell.
 PieceSet decompose_pieces(const FreeSpaceComponent& component, double resolution, const SegmentOptions& options);
 
