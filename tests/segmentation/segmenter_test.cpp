@@ -226,7 +226,8 @@ TEST(Segment, ParityOptionsSwitchEveryImprovementOff) {
   EXPECT_FALSE(parity.doors.enabled);
   EXPECT_EQ(parity.simplify, 0.0);
   EXPECT_FALSE(parity.labels.cover_absorbed_obstacles);
-  // Parity pieces are exactly DuDe's pieces of each component.
+  // Parity pieces are exactly DuDe's pieces of each component, at tau itself (no oversegmentation
+  // without merging).
   const OccupancyGrid grid = read_map(bundled("floorplan"));
   const cv::Mat free = segmentation_free_space(grid, parity);
   const FreeSpacePolygons polygons = free_space_polygons(free, grid.resolution, parity.contours);
@@ -252,6 +253,20 @@ TEST(Segment, BadInput) {
   options.concavity = 0.0;
   EXPECT_THROW(segment(grid, options), Error);
   options.concavity = std::nan("");
+  EXPECT_THROW(segment(grid, options), Error);
+  options = SegmentOptions{};
+  options.oversegment = 0.0;
+  EXPECT_THROW(segment(grid, options), Error);
+  options.oversegment = 1.5;
+  EXPECT_THROW(segment(grid, options), Error);
+  options = SegmentOptions{};
+  options.merge.door_ratio = -1.0;
+  EXPECT_THROW(segment(grid, options), Error);
+  options = SegmentOptions{};
+  options.doors.max_width = 0.0;
+  EXPECT_THROW(segment(grid, options), Error);
+  options = SegmentOptions{};
+  options.simplify = -1.0;
   EXPECT_THROW(segment(grid, options), Error);
   grid.resolution = -1.0;
   EXPECT_THROW(segment(grid), Error);
