@@ -56,6 +56,8 @@ const std::vector<DatasetOption>& dataset_options() {
         {"no-merge", "", "no merging of pieces into rooms", false},
         {"no-simplify", "", "decompose the exact pixel-edge polygons", false},
         {"cover-obstacles", "", "rooms also label the obstacles they absorbed (furniture)", false},
+        {"oversegment", "F", "with merging, DuDe cuts at F x tau, 0 < F <= 1 (default " +
+                                  number(defaults.run.segment.oversegment) + ")", false},
     };
   }();
   return options;
@@ -97,6 +99,17 @@ void apply_dataset_option(DatasetArguments& arguments, const std::string& name, 
     arguments.run.segment.simplify = 0.0;
   } else if (name == "cover-obstacles") {
     arguments.run.segment.labels.cover_absorbed_obstacles = true;
+  } else if (name == "oversegment") {
+    std::size_t used = 0;
+    double factor = 0.0;
+    try {
+      factor = std::stod(value, &used);
+    } catch (const std::exception&) {
+      used = 0;
+    }
+    if (used == 0 || used != value.size() || !(factor > 0.0 && factor <= 1.0))
+      throw Error("--oversegment needs a factor in (0, 1], not '" + value + "'");
+    arguments.run.segment.oversegment = factor;
   } else {
     throw Error("unknown option '--" + name + "'");
   }
@@ -157,6 +170,8 @@ std::string method_name(const SegmentOptions& options) {
     if (!options.merge.enabled) name += ", no merge";
     if (options.simplify == 0.0) name += ", no simplify";
     if (options.labels.cover_absorbed_obstacles) name += ", obstacles covered";
+    if (options.merge.enabled && options.oversegment != SegmentOptions{}.oversegment)
+      name += ", DuDe at " + number(options.oversegment) + " tau";
   }
   return name + ")";
 }

@@ -60,7 +60,9 @@ TEST(DatasetOptions, EveryOptionIsInTheHelpAndAccepted) {
   for (const DatasetOption& option : dataset_options()) {
     EXPECT_NE(help.find("--" + option.name), std::string::npos) << option.name;
     DatasetArguments arguments;
-    const std::string value = option.name == "variant" ? "plain" : option.name == "concavity" ? "2" : "x";
+    const std::string value = option.name == "variant"                                   ? "plain"
+                              : option.name == "concavity" || option.name == "oversegment" ? "1"
+                                                                                          : "x";
     EXPECT_NO_THROW(apply_dataset_option(arguments, option.name, option.value_name.empty() ? "" : value))
         << option.name;
   }
@@ -92,6 +94,9 @@ TEST(DatasetOptions, SegmenterSwitchesReachTheOptionsAndTheMethodName) {
   EXPECT_NE(name.find("no merge"), std::string::npos);
   EXPECT_EQ(name.find("parity"), std::string::npos);
   EXPECT_EQ(method_name(SegmentOptions{}), "topocut (tau 2.5 m)");
+  apply_dataset_option(other, "oversegment", "1");
+  EXPECT_EQ(other.run.segment.oversegment, 1.0);
+  EXPECT_THROW(apply_dataset_option(other, "oversegment", "2"), Error);
 }
 
 }  // namespace
