@@ -195,8 +195,12 @@ TEST(Segment, AnLShapedCorridorIsOneRoomWhereDuDeAloneCutsIt) {
   const OccupancyGrid grid = l_corridor();
   const Segmentation s = segment(grid);
   expect_consistent(grid, s);
-  EXPECT_EQ(s.rooms.size(), 1u);
+  ASSERT_EQ(s.rooms.size(), 1u);
   EXPECT_TRUE(s.passages.empty());
+  // The merged room's polygon is the union of DuDe's pieces: the whole L (its cells' area, up to
+  // the one-cell simplification of the outline), without holes.
+  EXPECT_TRUE(s.rooms[0].polygon.holes.empty());
+  EXPECT_NEAR(area(s.rooms[0].polygon), s.rooms[0].area, 0.02 * s.rooms[0].area);
   const Segmentation parity = segment(grid, parity_segment_options());
   expect_consistent(grid, parity);
   EXPECT_GE(parity.rooms.size(), 2u);
