@@ -117,6 +117,23 @@ TEST(MergeRooms, ASliverIsFoldedIntoTheNeighbourWithTheLongestCut) {
   EXPECT_EQ(rooms.cuts[0], set.cuts[1]);
 }
 
+TEST(MergeRooms, AThinStripIsFoldedWhenAMinimumWidthIsSet) {
+  // A 0.3 m x 6 m strip (1.8 m², above the area limit) sticking out of a 6 m x 4 m room, cut off
+  // at its root (a laser leak through a gap); door_ratio is set so high that nothing merges as
+  // "not a door".
+  PieceSet set;
+  set.pieces = {{{{0, 0}, {120, 0}, {120, 80}, {56, 80}, {50, 80}, {0, 80}}, {}}, box(50, 80, 56, 200)};
+  set.cuts = {{{56, 80}, {50, 80}}};
+  RoomMergeOptions options;
+  options.door_ratio = 10.0;
+  EXPECT_EQ(merge_rooms(no_component(), set, kRes, options).pieces.size(), 2u);
+  options.min_room_width = 0.5;  // the strip's widest chord parallel to its cut is 0.3 m
+  const PieceSet rooms = merge_rooms(no_component(), set, kRes, options);
+  ASSERT_EQ(rooms.pieces.size(), 1u);
+  EXPECT_DOUBLE_EQ(area(rooms.pieces[0]), 120 * 80 + 6 * 120);
+  EXPECT_TRUE(rooms.cuts.empty());
+}
+
 TEST(MergeRooms, DisabledReturnsThePiecesAndBadOptionsAreErrors) {
   PieceSet set;
   set.pieces = {box(0, 0, 60, 40), box(60, 0, 100, 40)};
