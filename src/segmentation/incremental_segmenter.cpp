@@ -110,6 +110,7 @@ struct IncrementalSegmenter::State {
   cv::Mat bin;    // its binarized free space (CV_8UC1, 255 free)
   Segmentation result;               // result.labels is the state's label image
   std::vector<RoomState> rooms{1};   // by id; index 0 unused
+  std::vector<char> passage_door;    // per result.passages entry: its cut was found as a door
   int next_id = 1;
   long long free_cells = 0;
   IncrementalUpdateReport report;
@@ -137,6 +138,7 @@ void IncrementalSegmenter::State::start_frame(const OccupancyGrid& grid) {
   result.origin = grid.origin;
   result.rooms.clear();
   result.passages.clear();
+  passage_door.clear();
   rooms.assign(static_cast<std::size_t>(next_id), RoomState{});
   free_cells = 0;
   initialised = true;
@@ -471,10 +473,24 @@ void IncrementalSegmenter::State::redecompose(const OccupancyGrid& grid, std::ve
   cv::Mat& labels = result.labels;
   const int h = labels.rows;
   std::vector<char> in_region(rooms.size(), 0);
-  for (const int id : region_ids) {
-    in_region[static_cast<std::size_t>(id)] = 1;
-    window = unite(window, rooms[static_cast<std::size_t>(id)].box);
+  for (const int id : region_ids) in_region[static_cast<std::size_t>(id)] = 1;
+  // The rooms next to the region go with it (one ring, through the passages): batch decides on
+  // the cuts between them again when it finds doors and merges pieces into rooms, and can only do
+  // so with both sides in view. A door found while one side was only partly seen (or cut short by
+  // the region's border) is not final, hence doors too unless options say otherwise.
+  const std::size_t core = region_ids.size();
+  for (std::size_t k = 0; k < result.passages.size(); ++k) {
+    if (passage_door[k] && !options.neighbours_across_doors) continue;
+    const Passage& p = result.passages[k];
+    const bool a_in = in_region[static_cast<std::size_t>(p.room_a)] != 0;
+    const bool b_in = in_region[static_cast<std::size_t>(p.room_b)] != 0;
+    if (a_in == b_in) continue;
+    const int other = a_in ? p.room_b : p.room_a;
+    if (std::find(region_ids.begin() + static_cast<std::ptrdiff_t>(core), region_ids.end(), other) == region_ids.end())
+      region_ids.push_back(other);
   }
+  for (std::size_t k = core; k < region_ids.size(); ++k) in_region[static_cast<std::size_t>(region_ids[k])] = 1;
+  for (const int id : region_ids) window = unite(window, rooms[static_cast<std::size_t>(id)].box);
 
   // The region's masks: raw free cells (to be labelled) and binarized ones (to be decomposed).
   cv::Mat raw, binarized;
@@ -706,12 +722,15 @@ void IncrementalSegmenter::State::redecompose(const OccupancyGrid& grid, std::ve
     return 0;
   };
   std::vector<Passage> passages;
+  std::vector<char> doors;
   passages.reserve(result.passages.size() + set.cuts.size());
-  for (const Passage& passage : result.passages) {
+  for (std::size_t k = 0; k < result.passages.size(); ++k) {
+    const Passage& passage = result.passages[k];
     const bool a_in = in_region[static_cast<std::size_t>(passage.room_a)] != 0;
     const bool b_in = in_region[static_cast<std::size_t>(passage.room_b)] != 0;
     if (!a_in && !b_in) {
       passages.push_back(passage);
+      doors.push_back(passage_door[k]);
       continue;
     }
     if (a_in && b_in) continue;
@@ -722,6 +741,7 @@ void IncrementalSegmenter::State::redecompose(const OccupancyGrid& grid, std::ve
     kept.room_a = std::min(inside, outside);
     kept.room_b = std::max(inside, outside);
     passages.push_back(kept);
+    doors.push_back(passage_door[k]);
   }
   for (const Segment2& cut : set.cuts) {
     Point2 left, right;
@@ -734,12 +754,22 @@ void IncrementalSegmenter::State::redecompose(const OccupancyGrid& grid, std::ve
     passage.cut = {to_world(cut.a), to_world(cut.b)};
     passage.width = std::hypot(cut.b.x - cut.a.x, cut.b.y - cut.a.y) * resolution;
     passages.push_back(passage);
+    doors.push_back(std::find(set.doors.begin(), set.doors.end(), cut) != set.doors.end());
   }
-  std::sort(passages.begin(), passages.end(), [](const Passage& x, const Passage& y) {
-    return std::tie(x.room_a, x.room_b, x.cut.a.x, x.cut.a.y, x.cut.b.x, x.cut.b.y) <
-           std::tie(y.room_a, y.room_b, y.cut.a.x, y.cut.a.y, y.cut.b.x, y.cut.b.y);
+  std::vector<std::size_t> order(passages.size());
+  for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;
+  std::sort(order.begin(), order.end(), [&](std::size_t i, std::size_t j) {
+    const Passage& x = passages[i];
+    const Passage& y = passages[j];
+    return std::tie(x.room_a, x.room_b, x.cut.a.x, x.cut.a.y, x.cut.b.x, x.cut.b.y, i) <
+           std::tie(y.room_a, y.room_b, y.cut.a.x, y.cut.a.y, y.cut.b.x, y.cut.b.y, j);
   });
-  result.passages = std::move(passages);
+  result.passages.clear();
+  passage_door.clear();
+  for (const std::size_t k : order) {
+    result.passages.push_back(passages[k]);
+    passage_door.push_back(doors[k]);
+  }
 }
 
 IncrementalSegmenter::IncrementalSegmenter(const IncrementalOptions& options) : state_(std::make_unique<State>()) {

@@ -109,8 +109,10 @@ std::map<int, std::vector<int>> cells_by_room(const cv::Mat& labels) {
   return out;
 }
 
-// Rooms of before whose cells are farther than one cell from every cell whose free state changed
-// must keep their id and exactly their cells in after.
+// Rooms the change cannot reach must keep their id and exactly their cells: rooms of before
+// farther than one cell from every cell whose free state changed, and not sharing a passage with
+// such a near room (the segmenter decomposes those neighbours again with it, as batch would decide
+// on the cuts between them again).
 void expect_untouched_stable(const OccupancyGrid& before_grid, const Segmentation& before, const OccupancyGrid& after_grid,
                              const Segmentation& after) {
   const cv::Mat changed = (before_grid.cells == kFree) != (after_grid.cells == kFree);
@@ -118,14 +120,29 @@ void expect_untouched_stable(const OccupancyGrid& before_grid, const Segmentatio
   cv::dilate(changed, near_change, cv::Mat::ones(3, 3, CV_8UC1));
   const auto old_rooms = cells_by_room(before.labels);
   const auto new_rooms = cells_by_room(after.labels);
-  int checked = 0;
+  std::set<int> reached;
+  for (const auto& [id, cells] : old_rooms)
+    if (std::any_of(cells.begin(), cells.end(), [&](int i) { return near_change.data[i] != 0; })) reached.insert(id);
+  const std::set<int> near = reached;
+  for (const Passage& p : before.passages) {
+    if (near.count(p.room_a)) reached.insert(p.room_b);
+    if (near.count(p.room_b)) reached.insert(p.room_a);
+  }
   for (const auto& [id, cells] : old_rooms) {
-    const bool touched = std::any_of(cells.begin(), cells.end(), [&](int i) { return near_change.data[i] != 0; });
-    if (touched) continue;
-    ++checked;
+    if (reached.count(id)) continue;
     ASSERT_TRUE(new_rooms.count(id)) << "untouched room " << id << " lost its id";
     EXPECT_EQ(new_rooms.at(id), cells) << "untouched room " << id << " changed its cells";
   }
+}
+
+// Number of rooms sharing a passage with room id.
+int passage_neighbours(const Segmentation& s, int id) {
+  std::set<int> out;
+  for (const Passage& p : s.passages) {
+    if (p.room_a == id) out.insert(p.room_b);
+    if (p.room_b == id) out.insert(p.room_a);
+  }
+  return static_cast<int>(out.size());
 }
 
 // Agreement of two labellings of the same free cells, in the shape of precision and recall with b
@@ -499,14 +516,36 @@ TEST(IncrementalSegmenter, SmallNoiseIsAbsorbedOrRepairedLocally) {
   EXPECT_EQ(second.labels.at<int>(gap), second.labels.at<int>(plan.corridor.y + 1, gap.x));
   for (const Room& r : first.rooms) EXPECT_EQ(second.labels.at<int>(world_to_cell(grid, r.centroid)), r.id);
 
-  // A small obstacle appearing inside room 3: that room is decomposed again, the others are not.
+  // A small obstacle appearing inside room 3: that room is decomposed again with its neighbours
+  // through passages (here the corridor), the others are not.
   OccupancyGrid blocked = noisy;
   blocked.cells = noisy.cells.clone();
   blocked.cells(cv::Rect(plan.rooms[3].x + 20, plan.rooms[3].y + 30, 3, 3)).setTo(kOccupied);
+  const int room3 = second.labels.at<int>(plan.rooms[3].y + 30, plan.rooms[3].x + 20);
   const Segmentation third = segmenter.update(blocked);
   expect_valid(blocked, third);
   expect_untouched_stable(noisy, second, blocked, third);
+  EXPECT_EQ(segmenter.last_update().redecomposed_rooms, 1 + passage_neighbours(second, room3));
+  EXPECT_GE(passage_neighbours(second, room3), 1);
+}
+
+TEST(IncrementalSegmenter, NeighboursBehindDoorsCanBeLeftAlone) {
+  // With neighbours_across_doors off, a change inside a room that has only a door to the corridor
+  // decomposes that room alone; the corridor keeps its cells.
+  const FloorPlan plan = floor_plan();
+  IncrementalOptions options;
+  options.neighbours_across_doors = false;
+  IncrementalSegmenter segmenter(options);
+  const Segmentation first = segmenter.update(plan.world);
+  OccupancyGrid blocked = plan.world;
+  blocked.cells = plan.world.cells.clone();
+  blocked.cells(cv::Rect(plan.rooms[1].x + 20, plan.rooms[1].y + 30, 3, 3)).setTo(kOccupied);
+  const Segmentation second = segmenter.update(blocked);
+  expect_valid(blocked, second);
   EXPECT_EQ(segmenter.last_update().redecomposed_rooms, 1);
+  const int corridor = first.labels.at<int>(plan.corridor.y + 5, plan.corridor.x + 5);
+  EXPECT_EQ(cells_by_room(second.labels).at(corridor), cells_by_room(first.labels).at(corridor));
+  EXPECT_EQ(passage_pairs(second).size(), passage_pairs(first).size());
 }
 
 TEST(IncrementalSegmenter, LargeRoomsAbsorbGrowthUpToTheirAllowance) {
@@ -622,13 +661,15 @@ TEST(IncrementalSegmenter, InflationIsRecomputedLocally) {
     previous = grid;
     before = after;
   }
-  // An obstacle inside a room only changes inflated free space around it (and its own cells).
+  // An obstacle inside a room only changes inflated free space around it (and its own cells): that
+  // room and its passage neighbours are decomposed again.
   OccupancyGrid blocked = previous;
   blocked.cells = previous.cells.clone();
   blocked.cells.at<unsigned char>(plan.rooms[2].y + 50, plan.rooms[2].x + 40) = kOccupied;
+  const int room2 = before.labels.at<int>(plan.rooms[2].y + 50, plan.rooms[2].x + 41);
   const Segmentation after = segmenter.update(blocked);
   expect_valid(blocked, after);
-  EXPECT_EQ(segmenter.last_update().redecomposed_rooms, 1);
+  EXPECT_EQ(segmenter.last_update().redecomposed_rooms, 1 + passage_neighbours(before, room2));
   const Segmentation batch = segment(blocked, options.segment);
   EXPECT_EQ(after.rooms.size(), batch.rooms.size());
 }
