@@ -498,25 +498,26 @@ void IncrementalSegmenter::State::redecompose(const OccupancyGrid& grid, std::ve
   cv::Mat local;
   int region_cells = 0;
   for (int attempt = 0; attempt < 2; ++attempt) {
-    raw = cv::Mat::zeros(window.size(), CV_8UC1);
-    binarized = cv::Mat::zeros(window.size(), CV_8UC1);
+    raw.create(window.size(), CV_8UC1);
+    binarized.create(window.size(), CV_8UC1);
     region_cells = 0;
     int binarized_cells = 0;
+    // member[id + 1]: 255 if cells labelled id are in the region (kPending = -1 always is).
+    std::vector<unsigned char> member(rooms.size() + 1, 0);
+    member[0] = 255;
+    for (std::size_t id = 1; id < rooms.size(); ++id) member[id + 1] = in_region[id] ? 255 : 0;
+    const unsigned char* lut = member.data() + 1;
     for (int r = 0; r < window.height; ++r) {
       const int* l = labels.ptr<int>(window.y + r) + window.x;
       const unsigned char* b = bin.ptr<unsigned char>(window.y + r) + window.x;
       unsigned char* out_raw = raw.ptr<unsigned char>(r);
       unsigned char* out_bin = binarized.ptr<unsigned char>(r);
       for (int c = 0; c < window.width; ++c) {
-        const int id = l[c];
-        if (id == kPending || (id > 0 && in_region[static_cast<std::size_t>(id)])) {
-          out_raw[c] = 255;
-          ++region_cells;
-          if (b[c]) {
-            out_bin[c] = 255;
-            ++binarized_cells;
-          }
-        }
+        const unsigned char in = lut[l[c]];  // labels are >= kPending
+        out_raw[c] = in;
+        out_bin[c] = in & b[c];
+        region_cells += in & 1;
+        binarized_cells += out_bin[c] & 1;
       }
     }
     set = PieceSet{};
@@ -557,28 +558,35 @@ void IncrementalSegmenter::State::redecompose(const OccupancyGrid& grid, std::ve
     local = cv::Mat::zeros(window.size(), CV_32SC1);
   }
 
-  // Overlap of every piece with every old room of the region, piece sizes and first cells.
+  // One pass over the region: every piece's overlap with every old room of the region, its cell
+  // count, first cell, coordinate sums and bounding box.
   const int n_old = static_cast<int>(region_ids.size());
   std::vector<int> old_index(rooms.size(), -1);
   for (int j = 0; j < n_old; ++j) old_index[static_cast<std::size_t>(region_ids[static_cast<std::size_t>(j)])] = j;
-  std::vector<long long> overlap(static_cast<std::size_t>(pieces) * static_cast<std::size_t>(std::max(n_old, 1)), 0);
-  std::vector<long long> piece_cells(static_cast<std::size_t>(pieces) + 1, 0);
-  std::vector<long long> first_cell(static_cast<std::size_t>(pieces) + 1, LLONG_MAX);
+  const std::size_t slots = static_cast<std::size_t>(pieces) + 1;
+  std::vector<long long> overlap(slots * static_cast<std::size_t>(n_old + 1), 0);  // column n_old: pending
+  std::vector<long long> piece_cells(slots, 0), first_cell(slots, LLONG_MAX), sum_c(slots, 0), sum_r(slots, 0);
+  std::vector<int> min_c(slots, INT_MAX), max_c(slots, -1), min_r(slots, INT_MAX), max_r(slots, -1);
   for (int r = 0; r < window.height; ++r) {
     const int* l = labels.ptr<int>(window.y + r) + window.x;
     const int* k = local.ptr<int>(r);
     const unsigned char* in = raw.ptr<unsigned char>(r);
+    const int gr = window.y + r;
     for (int c = 0; c < window.width; ++c) {
       if (!in[c]) continue;
       const int piece = k[c];
       if (piece <= 0) throw Error("internal: a free cell of the re-decomposed region got no room");
-      ++piece_cells[static_cast<std::size_t>(piece)];
-      if (first_cell[static_cast<std::size_t>(piece)] == LLONG_MAX)
-        first_cell[static_cast<std::size_t>(piece)] = static_cast<long long>(r) * window.width + c;
-      if (l[c] > 0) {
-        const int j = old_index[static_cast<std::size_t>(l[c])];
-        ++overlap[static_cast<std::size_t>(piece - 1) * static_cast<std::size_t>(n_old) + static_cast<std::size_t>(j)];
-      }
+      const std::size_t p = static_cast<std::size_t>(piece);
+      if (piece_cells[p]++ == 0) first_cell[p] = static_cast<long long>(r) * window.width + c;
+      const int j = l[c] > 0 ? old_index[static_cast<std::size_t>(l[c])] : n_old;
+      ++overlap[p * static_cast<std::size_t>(n_old + 1) + static_cast<std::size_t>(j)];
+      const int gc = window.x + c;
+      sum_c[p] += gc;
+      sum_r[p] += gr;
+      min_c[p] = std::min(min_c[p], gc);
+      max_c[p] = std::max(max_c[p], gc);
+      min_r[p] = std::min(min_r[p], gr);
+      max_r[p] = std::max(max_r[p], gr);
     }
   }
   struct Candidate {
@@ -587,10 +595,10 @@ void IncrementalSegmenter::State::redecompose(const OccupancyGrid& grid, std::ve
     int old;
   };
   std::vector<Candidate> candidates;
-  for (int p = 0; p < pieces; ++p)
+  for (int p = 1; p <= pieces; ++p)
     for (int j = 0; j < n_old; ++j) {
-      const long long count = overlap[static_cast<std::size_t>(p) * static_cast<std::size_t>(n_old) + static_cast<std::size_t>(j)];
-      if (count > 0) candidates.push_back({count, p + 1, region_ids[static_cast<std::size_t>(j)]});
+      const long long count = overlap[static_cast<std::size_t>(p) * static_cast<std::size_t>(n_old + 1) + static_cast<std::size_t>(j)];
+      if (count > 0) candidates.push_back({count, p, region_ids[static_cast<std::size_t>(j)]});
     }
   std::sort(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) {
     return std::tie(b.count, a.piece, a.old) < std::tie(a.count, b.piece, b.old);
@@ -622,26 +630,12 @@ void IncrementalSegmenter::State::redecompose(const OccupancyGrid& grid, std::ve
       removed.push_back(id);
     }
   report.removed_rooms = static_cast<int>(removed.size());
-  std::vector<int> min_c(static_cast<std::size_t>(pieces) + 1, INT_MAX), max_c(static_cast<std::size_t>(pieces) + 1, -1),
-      min_r(static_cast<std::size_t>(pieces) + 1, INT_MAX), max_r(static_cast<std::size_t>(pieces) + 1, -1);
-  std::vector<double> sum_c(static_cast<std::size_t>(pieces) + 1, 0.0), sum_r(static_cast<std::size_t>(pieces) + 1, 0.0);
   for (int r = 0; r < window.height; ++r) {
     int* l = labels.ptr<int>(window.y + r) + window.x;
     const int* k = local.ptr<int>(r);
     const unsigned char* in = raw.ptr<unsigned char>(r);
-    const int gr = window.y + r;
-    for (int c = 0; c < window.width; ++c) {
-      if (!in[c]) continue;
-      const std::size_t piece = static_cast<std::size_t>(k[c]);
-      l[c] = id_of_piece[piece];
-      const int gc = window.x + c;
-      sum_c[piece] += gc;
-      sum_r[piece] += gr;
-      min_c[piece] = std::min(min_c[piece], gc);
-      max_c[piece] = std::max(max_c[piece], gc);
-      min_r[piece] = std::min(min_r[piece], gr);
-      max_r[piece] = std::max(max_r[piece], gr);
-    }
+    for (int c = 0; c < window.width; ++c)
+      if (in[c]) l[c] = id_of_piece[static_cast<std::size_t>(k[c])];
   }
 
   // Pieces' polygons in world metres: window grid coordinates -> world.
@@ -660,8 +654,8 @@ void IncrementalSegmenter::State::redecompose(const OccupancyGrid& grid, std::ve
     RoomState& room = rooms[static_cast<std::size_t>(id)];
     room.alive = true;
     room.cells = piece_cells[piece];
-    room.sum_c = sum_c[piece];
-    room.sum_r = sum_r[piece];
+    room.sum_c = static_cast<double>(sum_c[piece]);
+    room.sum_r = static_cast<double>(sum_r[piece]);
     room.absorbed = 0;
     room.box = cv::Rect(min_c[piece], min_r[piece], max_c[piece] - min_c[piece] + 1, max_r[piece] - min_r[piece] + 1);
     PolygonWithHoles world;
