@@ -96,6 +96,18 @@ int run(int argc, char** argv) {
 
   std::cout << "## Per image (times per update, CPU)\n\n" << format_update_times_table(results) << "\n";
   std::cout << "## Pooled over all updates\n\n" << format_incremental_summary(results) << "\n";
+  {
+    std::vector<std::vector<std::string>> rows{{"map", "variant", "explored %", "rooms inc / batch",
+                                                "inc R / P %", "batch R / P %"}};
+    for (const IncrementalImageResult& r : results) {
+      if (!r.incremental.ok) continue;
+      rows.push_back({r.incremental.map, to_string(r.incremental.variant), fmt("%.1f", 100.0 * r.explored),
+                      std::to_string(r.incremental.rooms) + " / " + std::to_string(r.batch.rooms),
+                      fmt("%.1f / %.1f", 100.0 * r.incremental.recall, 100.0 * r.incremental.precision),
+                      fmt("%.1f / %.1f", 100.0 * r.batch.recall, 100.0 * r.batch.precision)});
+    }
+    std::cout << "## Final quality per image (rooms = segments > 100 px)\n\n" << markdown_table(rows) << "\n";
+  }
   const std::vector<ImageResult> inc = incremental_image_results(results), bat = batch_image_results(results);
   std::cout << "## Final quality (same final maps; time = all incremental updates / one batch call)\n\n"
             << format_summary(inc, "incremental (explored map)") << format_summary(bat, "batch (same map)") << "\n";
