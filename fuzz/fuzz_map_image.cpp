@@ -41,7 +41,14 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       }
     }
   };
-  check_cells(plain_image_cells(grey, transparent, MapLoadOptions{}));
+  cv::Mat levels, level_transparent;
+  try {
+    decode_map_levels(bytes, "fuzz", levels, level_transparent);
+  } catch (const Error&) {
+    fuzz::fail("decode_map_levels refused an image decode_map_image read");
+  }
+  if (levels.size() != grey.size() || levels.type() != CV_8UC1) fuzz::fail("levels of the wrong size or type");
+  check_cells(plain_image_cells(levels, level_transparent, plain_image_palette(levels, level_transparent, MapLoadOptions{})));
   RosMapMetadata metadata;
   metadata.resolution = 0.05;
   metadata.negate = size % 2 == 1;

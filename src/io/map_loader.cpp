@@ -182,46 +182,48 @@ cv::Mat decode_image(const std::string& bytes, const std::string& source) {
   return image;
 }
 
-// plain_image_cells(decode_map_image(...)) for 8-bit images in one pass over the pixels, with the
-// same arithmetic: the channel mean summed in floats as convertTo and add do it, compared in floats,
-// alpha < 128 transparent. False (nothing done) for other depths.
-bool plain_cells_8bit(const cv::Mat& image, const MapLoadOptions& options, cv::Mat& cells) {
-  if (image.depth() != CV_8U) return false;
+// The level of one pixel: the rounded mean of its colour channels on the 0..255 scale.
+template <typename T>
+unsigned char pixel_level(const T* px, int colour_channels, double scale) {
+  double sum = 0.0;
+  for (int k = 0; k < colour_channels; ++k) sum += px[k];
+  return cv::saturate_cast<unsigned char>(sum * scale / colour_channels);
+}
+
+template <typename T>
+void image_levels(const cv::Mat& image, int colour_channels, bool has_alpha, double scale, double half, cv::Mat& levels,
+                  cv::Mat& transparent) {
+  const int n = image.channels();
+  levels.create(image.size(), CV_8UC1);
+  transparent = cv::Mat::zeros(image.size(), CV_8UC1);
+  for (int r = 0; r < image.rows; ++r) {
+    const T* in = image.ptr<T>(r);
+    unsigned char* level = levels.ptr<unsigned char>(r);
+    unsigned char* clear = transparent.ptr<unsigned char>(r);
+    for (int c = 0; c < image.cols; ++c) {
+      const T* px = in + static_cast<std::size_t>(c) * n;
+      level[c] = pixel_level(px, colour_channels, scale);
+      if (has_alpha && px[n - 1] < half) clear[c] = 255;
+    }
+  }
+}
+
+void levels_of(const cv::Mat& image, const std::string& source, cv::Mat& levels, cv::Mat& transparent) {
   const int n = image.channels();
   const bool has_alpha = n == 2 || n == 4;
   const int colour_channels = has_alpha ? n - 1 : n;
-  if (colour_channels < 1 || colour_channels > 3) return false;
-  const float free_min = static_cast<float>(options.free_min), occupied_max = static_cast<float>(options.occupied_max);
-  // The state of a channel mean, and each channel's share of it, by value.
-  const float share = static_cast<float>(1.0 / colour_channels);
-  float part[256];
-  unsigned char state[256];
-  for (int v = 0; v < 256; ++v) {
-    part[v] = static_cast<float>(v) * share;
-    const float g = static_cast<float>(v);
-    state[v] = g > free_min ? kFree : (g < occupied_max ? kOccupied : kUnknown);
+  if (colour_channels < 1 || colour_channels > 3)
+    throw Error("map image " + quoted(source) + " has " + std::to_string(n) + " channels; expected grey, grey+alpha, RGB or RGBA");
+  if (image.depth() == CV_8U && n == 1) {  // the common case: the image is its own levels
+    levels = image;
+    transparent = cv::Mat::zeros(image.size(), CV_8UC1);
+  } else if (image.depth() == CV_8U) {
+    image_levels<unsigned char>(image, colour_channels, has_alpha, 1.0, 128.0, levels, transparent);
+  } else if (image.depth() == CV_16U) {
+    image_levels<unsigned short>(image, colour_channels, has_alpha, 255.0 / 65535.0, 32768.0, levels, transparent);
+  } else {
+    throw Error("map image " + quoted(source) + " has an unsupported pixel depth (only 8- and 16-bit integers)");
   }
-  cells.create(image.size(), CV_8UC1);
-  for (int r = 0; r < image.rows; ++r) {
-    const unsigned char* in = image.ptr<unsigned char>(r);
-    unsigned char* out = cells.ptr<unsigned char>(r);
-    if (colour_channels == 1) {
-      for (int c = 0; c < image.cols; ++c) {
-        const unsigned char* px = in + static_cast<std::size_t>(c) * n;
-        out[c] = has_alpha && px[1] < 128 ? kUnknown : state[px[0]];
-      }
-      continue;
-    }
-    for (int c = 0; c < image.cols; ++c) {
-      const unsigned char* px = in + static_cast<std::size_t>(c) * n;
-      float g = 0.0f;
-      g += part[px[0]];
-      g += part[px[1]];
-      g += part[px[2]];
-      out[c] = has_alpha && px[3] < 128 ? kUnknown : (g > free_min ? kFree : (g < occupied_max ? kOccupied : kUnknown));
-    }
-  }
-  return true;
 }
 
 }  // namespace
@@ -286,16 +288,24 @@ cv::Mat ros_cells(const cv::Mat& grey, const cv::Mat& transparent, const RosMapM
   return cells;
 }
 
-cv::Mat plain_image_cells(const cv::Mat& grey, const cv::Mat& transparent, const MapLoadOptions& options) {
-  CV_Assert(grey.type() == CV_32FC1 && transparent.type() == CV_8UC1 && grey.size() == transparent.size());
-  cv::Mat cells(grey.size(), CV_8UC1, cv::Scalar(kUnknown));
-  cells.setTo(kFree, grey > options.free_min);
-  cells.setTo(kOccupied, grey < options.occupied_max);
+void decode_map_levels(const std::string& bytes, const std::string& source, cv::Mat& levels, cv::Mat& transparent) {
+  levels_of(decode_image(bytes, source), source, levels, transparent);
+}
+
+MapPalette plain_image_palette(const cv::Mat& levels, const cv::Mat& transparent, const MapLoadOptions& options) {
+  return options.detect_palette ? detect_palette(levels, transparent, options.free_min, options.occupied_max)
+                                : threshold_palette(options.free_min, options.occupied_max);
+}
+
+cv::Mat plain_image_cells(const cv::Mat& levels, const cv::Mat& transparent, const MapPalette& palette) {
+  CV_Assert(levels.type() == CV_8UC1 && transparent.type() == CV_8UC1 && levels.size() == transparent.size());
+  cv::Mat cells;
+  cv::LUT(levels, cv::Mat(1, 256, CV_8UC1, const_cast<unsigned char*>(palette.state.data())), cells);
   cells.setTo(kUnknown, transparent);
   return cells;
 }
 
-OccupancyGrid load_map(const std::string& path, const MapLoadOptions& options) {
+OccupancyGrid load_map(const std::string& path, const MapLoadOptions& options, std::string* palette) {
   if (path.empty()) throw Error("no map file given");
   if (!fs::exists(path)) throw Error("map file " + quoted(path) + " does not exist");
   OccupancyGrid grid;
@@ -308,6 +318,11 @@ OccupancyGrid load_map(const std::string& path, const MapLoadOptions& options) {
       throw Error("map YAML " + quoted(path) + " names image " + quoted(image.string()) + ", which does not exist");
     decode_map_image(read_file(image.string()), image.string(), grey, transparent);
     grid.cells = ros_cells(grey, transparent, m);
+    if (palette) {
+      std::ostringstream text;
+      text << "YAML: free below " << m.free_thresh << ", occupied above " << m.occupied_thresh << (m.negate ? ", negated" : "");
+      *palette = text.str();
+    }
     grid.resolution = m.resolution;
     grid.origin = m.origin;
   } else {
@@ -315,11 +330,11 @@ OccupancyGrid load_map(const std::string& path, const MapLoadOptions& options) {
       throw Error("the map resolution must be a positive number of metres per cell");
     if (options.free_min < options.occupied_max)
       throw Error("the free threshold must not be below the occupied threshold");
-    const std::string bytes = read_file(path);
-    if (!plain_cells_8bit(decode_image(bytes, path), options, grid.cells)) {
-      decode_map_image(bytes, path, grey, transparent);
-      grid.cells = plain_image_cells(grey, transparent, options);
-    }
+    cv::Mat levels;
+    decode_map_levels(read_file(path), path, levels, transparent);
+    const MapPalette plain = plain_image_palette(levels, transparent, options);
+    grid.cells = plain_image_cells(levels, transparent, plain);
+    if (palette) *palette = plain.description;
     grid.resolution = options.resolution;
     grid.origin = {0.0, 0.0};
   }

@@ -1,5 +1,6 @@
-// load_map() turns 8-bit images into cells in one pass; it must agree cell for cell with the
-// general path (decode_map_image + plain_image_cells), thresholds included.
+// load_map() reads a plain image's levels in one pass (the grey image itself when it has one 8-bit
+// channel); it must agree cell for cell with the rounded channel mean of decode_map_image() put
+// through the same palette, for every channel layout.
 #include <random>
 #include <string>
 
@@ -50,10 +51,12 @@ TEST(LoadMapFastPath, AgreesWithTheGeneralPathForEveryChannelLayout) {
     for (const int free_min : {250, 200}) {
       MapLoadOptions options;
       options.free_min = free_min;
+      options.detect_palette = false;
       const OccupancyGrid grid = load_map(path, options);
-      cv::Mat grey, transparent;
+      cv::Mat grey, transparent, levels;
       decode_map_image(read_file(path), path, grey, transparent);
-      const cv::Mat expected = plain_image_cells(grey, transparent, options);
+      grey.convertTo(levels, CV_8U);  // rounds to the nearest level, as load_map does
+      const cv::Mat expected = plain_image_cells(levels, transparent, threshold_palette(free_min, options.occupied_max));
       ASSERT_EQ(grid.cells.size(), expected.size());
       EXPECT_EQ(cv::countNonZero(grid.cells != expected), 0);
     }

@@ -146,6 +146,7 @@ TEST(LoadMap, PlainImagesUseTheImageThresholds) {
   ASSERT_TRUE(cv::imwrite(dir.file("m.png"), image));
   MapLoadOptions options;
   options.resolution = 0.025;
+  options.detect_palette = false;
   const OccupancyGrid grid = load_map(dir.file("m.png"), options);
   EXPECT_DOUBLE_EQ(grid.resolution, 0.025);
   const cv::Mat expected = (cv::Mat_<unsigned char>(1, 6) << O, O, U, U, F, F);
@@ -220,13 +221,18 @@ TEST(LoadMap, GreyPlusAlphaPng) {
 TEST(LoadMap, BormannGreyAlphaMap) {
   const std::string path = std::string(TOPOCUT_SHARED_DIR) + "/datasets/bormann/Freiburg52_scan.png";
   if (!std::filesystem::exists(path)) GTEST_SKIP() << "shared Bormann dataset not found at " << path;
-  const OccupancyGrid grid = load_map(path);
+  MapLoadOptions fixed;
+  fixed.detect_palette = false;
+  const OccupancyGrid grid = load_map(path, fixed);
   EXPECT_EQ(grid.width(), 643);
   EXPECT_EQ(grid.height(), 354);
   // Counted independently from the PNG's grey channel: 142381 pixels > 250 and 167 pixels < 50.
   EXPECT_EQ(cv::countNonZero(grid.cells == kFree), 142381);
   EXPECT_EQ(cv::countNonZero(grid.cells == kOccupied), 167);
   EXPECT_EQ(cv::countNonZero(grid.cells == kUnknown), 643 * 354 - 142381 - 167);
+  // The detected palette (free 255, the drawing's greys not free) frees exactly the same cells.
+  const OccupancyGrid detected = load_map(path);
+  EXPECT_EQ(cv::countNonZero((detected.cells == kFree) != (grid.cells == kFree)), 0);
 }
 
 void expect_load_error(const std::string& path, const std::string& fragment, const MapLoadOptions& options = {}) {

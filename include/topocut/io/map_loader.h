@@ -6,15 +6,18 @@
 #include <opencv2/core.hpp>
 
 #include "topocut/core/occupancy_grid.h"
+#include "topocut/io/map_palette.h"
 
 namespace topocut {
 
 struct MapLoadOptions {
   // Used for plain images (a YAML's own resolution always wins); metres per cell.
   double resolution = 0.05;
-  // Plain images: cells brighter than free_min are free, darker than occupied_max occupied, the
-  // rest unknown (DESIGN.md: 0 occupied, 255 free, anything else unknown unless thresholds say so).
-  // free_min = 250 is Bormann et al.'s "> 250 is free" rule for their maps.
+  // Plain images: the palette (which grey levels are free, occupied, unknown) is read from the
+  // image itself (map_palette.h), so grey walls and black or grey unknown work. false, or a palette
+  // the image does not show: levels above free_min are free, below occupied_max occupied, the rest
+  // unknown (DESIGN.md's rule; free_min = 250 is Bormann et al.'s "> 250 is free").
+  bool detect_palette = true;
   int free_min = 250;
   int occupied_max = 50;
 };
@@ -54,14 +57,24 @@ void decode_map_image(const std::string& bytes, const std::string& source_name, 
 // p > occupied_thresh, free if p < free_thresh, otherwise unknown. Transparent pixels are unknown.
 cv::Mat ros_cells(const cv::Mat& grey, const cv::Mat& transparent, const RosMapMetadata& metadata);
 
-// Three-state cells from a plain grey image with options.free_min / occupied_max; transparent
-// pixels are unknown.
-cv::Mat plain_image_cells(const cv::Mat& grey, const cv::Mat& transparent, const MapLoadOptions& options);
+// The grey level of every pixel of a plain image (CV_8UC1: the rounded mean of the colour channels,
+// 16-bit scaled to 8) and its transparency mask (CV_8UC1, 255 where alpha < half). Throws Error naming
+// source_name if the bytes are not an image.
+void decode_map_levels(const std::string& bytes, const std::string& source_name, cv::Mat& levels, cv::Mat& transparent);
+
+// The palette load_map() uses for a plain image: detected (options.detect_palette) or the fixed
+// thresholds options.free_min / occupied_max.
+MapPalette plain_image_palette(const cv::Mat& levels, const cv::Mat& transparent, const MapLoadOptions& options);
+
+// Three-state cells of a plain image from its levels and palette; transparent pixels are unknown.
+cv::Mat plain_image_cells(const cv::Mat& levels, const cv::Mat& transparent, const MapPalette& palette);
 
 // Loads a map: a ROS map_server YAML (image, resolution, origin, negate, occupied_thresh,
 // free_thresh, mode trinary/scale/raw, with ROS semantics) or any image OpenCV reads (grey, RGB,
-// RGBA, grey+alpha). Throws Error naming the file and the problem on any bad input.
-OccupancyGrid load_map(const std::string& path, const MapLoadOptions& options = {});
+// RGBA, grey+alpha). If palette is given, it receives a one-line description of how the cells were
+// read (the detected palette, the fixed thresholds, or the YAML's). Throws Error naming the file and
+// the problem on any bad input.
+OccupancyGrid load_map(const std::string& path, const MapLoadOptions& options = {}, std::string* palette = nullptr);
 
 // True if path names a YAML file by its extension (.yaml or .yml).
 bool is_yaml_path(const std::string& path);

@@ -1,0 +1,50 @@
+#pragma once
+// How the grey levels of a plain map image (no YAML) mean free, occupied and unknown. Clean drawings
+// use black walls on white; SLAM tools write grey walls (127, 153), light-grey or black unknown and
+// partly observed greys in between. A fixed threshold pair reads some of them wrongly, so the
+// palette is read from the image itself: its histogram's modes, and the level covering most of the
+// border (the unexplored surroundings) as unknown.
+#include <array>
+#include <string>
+
+#include <opencv2/core.hpp>
+
+namespace topocut {
+
+// The cell state (kFree / kOccupied / kUnknown) of every grey level 0..255.
+struct MapPalette {
+  std::array<unsigned char, 256> state{};
+  std::string description;  // one line for people, e.g. "free 255, unknown 230, occupied 127 (detected)"
+};
+
+struct PaletteDetectionOptions {
+  // A grey level is a mode when it is a local maximum of the histogram within +-mode_separation
+  // levels and holds at least min_mode_share of the pixels: anti-aliasing and partly observed cells
+  // make thin spreads around the few values a map tool writes.
+  int mode_separation = 16;
+  double min_mode_share = 0.005;
+  // Free is the free mode's level give or take this much; every other level is not free (unknown is
+  // never free): partly observed and anti-aliased greys next to walls stay out of the free space.
+  // 4 around 255 is Bormann et al.'s "> 250 is free".
+  int free_tolerance = 4;
+  // The border's most common level is unknown when it covers at least this share of the border.
+  double min_border_share = 0.5;
+  // With only two modes (free and one other), the other is occupied when darker than this, unknown
+  // otherwise: black on white is a drawing's walls, a single grey is a SLAM map's unknown.
+  int dark_level = 64;
+};
+
+// Free above free_min, occupied below occupied_max, unknown between (DESIGN.md's plain-image rule).
+MapPalette threshold_palette(int free_min, int occupied_max);
+
+// The palette of a map image: levels is CV_8UC1 (the grey level of each pixel), transparent CV_8UC1
+// (non-zero where the pixel is transparent: unknown, not counted). The brightest mode is free; the
+// border's level (if it covers most of the border and is not the free mode) is unknown; the darkest
+// remaining mode is occupied; levels within free_tolerance of the free mode are free, every other
+// level takes the state of its nearest non-free mode. Falls back to
+// threshold_palette(fallback_free_min, fallback_occupied_max) when the image has no bright mode or
+// only one mode. Deterministic.
+MapPalette detect_palette(const cv::Mat& levels, const cv::Mat& transparent, int fallback_free_min, int fallback_occupied_max,
+                          const PaletteDetectionOptions& options = {});
+
+}  // namespace topocut
