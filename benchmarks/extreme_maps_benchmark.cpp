@@ -18,6 +18,7 @@
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
 
+#include "topocut/core/allocator.h"
 #include "topocut/io/label_image.h"
 #include "topocut/io/map_loader.h"
 #include "topocut/segmentation/segmenter.h"
@@ -72,6 +73,7 @@ int run_one(int side, const std::string& folder) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  topocut::keep_freed_memory_for_reuse();
   std::vector<int> sides;
   for (int i = 1; i < argc; ++i) sides.push_back(std::atoi(argv[i]));
   if (sides.empty()) sides = {1000, 2500, 5000, 10000};

@@ -22,6 +22,7 @@
 
 #include <opencv2/core.hpp>
 
+#include "topocut/core/allocator.h"
 #include "topocut/core/error.h"
 #include "topocut/evaluation/dataset_options.h"
 #include "topocut/evaluation/dataset_report.h"
@@ -154,6 +155,7 @@ int run(int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  topocut::keep_freed_memory_for_reuse();
   try {
     return run(argc, argv);
   } catch (const std::exception& e) {

@@ -27,6 +27,7 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include "topocut/core/allocator.h"
 #include "topocut/core/error.h"
 #include "topocut/evaluation/dataset.h"
 #include "topocut/evaluation/dataset_report.h"
@@ -231,6 +232,7 @@ int run(const std::vector<std::string>& args) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  topocut::keep_freed_memory_for_reuse();
   try {
     return run(std::vector<std::string>(argv + 1, argv + argc));
   } catch (const std::exception& e) {

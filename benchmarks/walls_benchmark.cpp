@@ -15,6 +15,7 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include "topocut/core/allocator.h"
 #include "topocut/core/occupancy_grid.h"
 #include "topocut/io/atomic_file.h"
 #include "topocut/io/carmen_log.h"
@@ -175,6 +176,7 @@ void write_small_png(const std::string& path, cv::Mat image, std::size_t max_byt
 }  // namespace
 
 int main(int argc, char** argv) {
+  topocut::keep_freed_memory_for_reuse();
   std::string pictures;
   bool methods = false;
   bool sweep = false;

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "cli/command.h"
+#include "topocut/core/allocator.h"
 #include "topocut/core/error.h"
 
 namespace {
@@ -23,6 +24,7 @@ void print_help() {
 }  // namespace
 
 int main(int argc, char** argv) {
+  topocut::keep_freed_memory_for_reuse();
   const std::vector<std::string> args(argv + 1, argv + argc);
   if (args.empty() || args[0] == "--help" || args[0] == "-h" || args[0] == "help") {
     print_help();

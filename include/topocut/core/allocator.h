@@ -1,0 +1,14 @@
+#pragma once
+// Process-wide tuning of the C allocator for programs that work on large images.
+
+namespace topocut {
+
+// Makes glibc keep freed large blocks for reuse instead of returning them to the system: every
+// stage allocates and frees map-sized buffers (masks, labels, distance images), and by default each
+// one above 128 KiB is a fresh mapping whose pages fault in one by one; on virtual machines that
+// cost more than the work itself (office_a: cleaning 41 -> 15 ms, segment 43 -> 18 ms). Peak memory
+// is unchanged; memory is returned when the process ends. Call once at program start (the topocut
+// command and the benchmarks do). No effect with other C libraries.
+void keep_freed_memory_for_reuse();
+
+}  // namespace topocut
