@@ -161,6 +161,7 @@ std::vector<IncrementalImageResult> run_incremental_dataset(const std::vector<Da
           throw Error("the ground truth's size differs from the map's (" + map.ground_truth + ")");
         ExplorationRunOptions run_options = options.exploration;
         run_options.incremental.segment = options.run.segment;
+        run_options.incremental.segment.clean = false;  // not incremental yet (IncrementalOptions)
         const ExplorationRun run = run_exploration(world, run_options);
         auto score = [&](const Segmentation& s, ImageResult& out) {
           const PrecisionRecall pr =

@@ -776,6 +776,8 @@ IncrementalSegmenter::IncrementalSegmenter(const IncrementalOptions& options) : 
   validate(options.segment);
   if (options.segment.labels.cover_absorbed_obstacles)
     throw Error("the incremental segmenter labels free cells only: cover_absorbed_obstacles is not supported");
+  if (options.segment.clean)
+    throw Error("the incremental segmenter does not clean the free space (ray fans, specks): set clean to false");
   state_->options = options;
 }
 

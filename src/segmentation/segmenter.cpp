@@ -18,6 +18,7 @@ void validate(const SegmentOptions& options) {
     throw Error("the oversegmentation factor must lie in (0, 1]");
   if (!std::isfinite(options.simplify) || options.simplify < 0.0)
     throw Error("the simplification tolerance must be a non-negative number of cells");
+  validate(options.cleaning);
 }
 
 cv::Mat segmentation_free_space(const OccupancyGrid& grid, const SegmentOptions& options) {
@@ -27,6 +28,22 @@ cv::Mat segmentation_free_space(const OccupancyGrid& grid, const SegmentOptions&
   if (cv::countNonZero(free) == 0)
     throw Error("no free space is left after inflating obstacles by the robot radius and filtering");
   return free;
+}
+
+SegmentationInput segmentation_input(const OccupancyGrid& grid, const SegmentOptions& options) {
+  SegmentationInput input;
+  input.floor = segmentation_free_space(grid, options);
+  input.labelled = grid;
+  if (!options.clean) return input;
+  CleanedFreeSpace cleaned = clean_free_space(input.floor, grid.cells, grid.resolution, options.cleaning);
+  if (cv::countNonZero(cleaned.floor) == 0) return input;
+  input.floor = cleaned.floor;
+  if (cleaned.outside_cells > 0) {
+    input.labelled.cells = grid.cells.clone();
+    input.labelled.cells.setTo(kUnknown, cleaned.removed == kCellRemovedOutside);
+  }
+  input.cleaned = std::move(cleaned);
+  return input;
 }
 
 namespace {
@@ -80,17 +97,21 @@ SegmentOptions parity_segment_options(double concavity) {
   options.doors.enabled = false;
   options.labels.cover_absorbed_obstacles = false;
   options.simplify = 0.0;
+  options.clean = false;
+  options.contours.min_component_area = ContourOptions{}.min_component_area;
   return options;
 }
 
-Segmentation segment(const OccupancyGrid& grid, const SegmentOptions& options) {
+Segmentation segment(const OccupancyGrid& grid, const SegmentOptions& options, SegmentationInput* used) {
   validate(options);
-  const cv::Mat free = segmentation_free_space(grid, options);
-  const FreeSpacePolygons polygons = free_space_polygons(free, grid.resolution, options.contours);
+  SegmentationInput local;
+  SegmentationInput& input = used ? *used : local;
+  input = segmentation_input(grid, options);
+  const FreeSpacePolygons polygons = free_space_polygons(input.floor, grid.resolution, options.contours);
   PieceSet pieces;
   for (const FreeSpaceComponent& component : polygons.components)
     pieces.append(decompose_component(component, grid.resolution, options));
-  return rooms_from_pieces(grid, pieces, options.labels);
+  return rooms_from_pieces(input.labelled, pieces, options.labels);
 }
 
 }  // namespace topocut

@@ -67,9 +67,11 @@ void expect_consistent(const OccupancyGrid& grid, const Segmentation& s) {
   }
 }
 
+// The baseline on the raw free space: one room per component, no cleaning either.
 SegmentOptions trivial() {
   SegmentOptions options;
   options.decompose = false;
+  options.clean = false;
   return options;
 }
 
@@ -136,11 +138,13 @@ TEST(Segment, BormannMapTrivialMode) {
   const OccupancyGrid grid = read_map(path);
   const Segmentation s = segment(grid, trivial());
   expect_consistent(grid, s);
-  // Components of at least 100 cells (0.25 m²) once diagonal pinches are broken, counted with OpenCV.
+  // Components of at least the minimum component area once diagonal pinches are broken, counted
+  // with OpenCV.
   cv::Mat labels, stats, centroids;
   const int n = cv::connectedComponentsWithStats(remove_diagonal_pinches(grid.cells == kFree), labels, stats, centroids, 4);
+  const double min_cells = trivial().contours.min_component_area / (grid.resolution * grid.resolution);
   int big = 0;
-  for (int i = 1; i < n; ++i) big += stats.at<int>(i, cv::CC_STAT_AREA) >= 100;
+  for (int i = 1; i < n; ++i) big += stats.at<int>(i, cv::CC_STAT_AREA) >= min_cells - 1e-9;
   EXPECT_EQ(static_cast<int>(s.rooms.size()), big);
 }
 
@@ -280,6 +284,45 @@ TEST(Segment, BadInput) {
   grid.cells.row(0).setTo(kOccupied);
   EXPECT_THROW(segment(grid, options), Error);
   EXPECT_THROW(segment(OccupancyGrid{}), Error);
+}
+
+}  // namespace
+}  // namespace topocut
+
+namespace topocut {
+namespace {
+
+TEST(Segment, RaysOutsideTheBuildingAreNoRoomAndSpecksAreNoRooms) {
+  // A walled 5 m x 5 m room with a window in its top wall and one-cell laser rays fanning out of
+  // it into the unknown, plus a 3 x 3 obstacle speck, and in the unknown far away a scrap of free
+  // space thinner than a person and a 0.8 m x 0.8 m free speck.
+  OccupancyGrid grid{cv::Mat(200, 200, CV_8UC1, cv::Scalar(kUnknown)), 0.05, {0.0, 0.0}};
+  cv::rectangle(grid.cells, cv::Rect(49, 79, 102, 102), cv::Scalar(kOccupied), cv::FILLED);
+  grid.cells(cv::Rect(50, 80, 100, 100)).setTo(kFree);
+  grid.cells(cv::Rect(90, 79, 20, 1)).setTo(kFree);
+  std::vector<cv::Point> far_rays;
+  for (int k = -2; k <= 2; ++k) {
+    for (int t = 1; t <= 60; ++t) {
+      const cv::Point p(100 + k * t / 4, 79 - t);
+      grid.cells.at<unsigned char>(p) = kFree;
+      if (t > 6) far_rays.push_back(p);
+    }
+  }
+  grid.cells(cv::Rect(80, 120, 3, 3)).setTo(kOccupied);
+  grid.cells(cv::Rect(5, 190, 4, 4)).setTo(kFree);
+  grid.cells(cv::Rect(5, 20, 16, 16)).setTo(kFree);
+  const Segmentation s = segment(grid);
+  ASSERT_EQ(s.rooms.size(), 1u);
+  for (const cv::Point& p : far_rays) EXPECT_EQ(s.labels.at<int>(p), 0) << p;
+  EXPECT_EQ(s.labels.at<int>(120, 80), 0);  // the obstacle speck stays unlabelled
+  EXPECT_EQ(s.labels.at<int>(100, 100), 1);
+  EXPECT_EQ(s.labels.at<int>(190, 5), 0);  // thin and in the unknown: outside the building
+  EXPECT_EQ(s.labels.at<int>(25, 10), 1);  // below 1 m²: no room, joins the nearest (DESIGN.md)
+  // Without the cleaning the fan is free space of the room's component: labelled.
+  SegmentOptions raw;
+  raw.clean = false;
+  const Segmentation r = segment(grid, raw);
+  EXPECT_NE(r.labels.at<int>(far_rays.back()), 0);
 }
 
 }  // namespace

@@ -17,9 +17,14 @@
 namespace topocut {
 
 struct IncrementalOptions {
-  // The batch options, applied unchanged to every re-decomposed region (labels.cover_absorbed_
-  // obstacles is not supported: only free cells are labelled).
-  SegmentOptions segment;
+  // The batch options, applied unchanged to every re-decomposed region. Not supported:
+  // labels.cover_absorbed_obstacles (only free cells are labelled) and clean (the real-map cleaning
+  // looks beyond the changed region: ray fans, the inside of the building), so it is off here.
+  SegmentOptions segment = [] {
+    SegmentOptions o;
+    o.clean = false;
+    return o;
+  }();
   // Newly free blobs that touch exactly one room join that room without a new decomposition, as
   // long as everything the room has taken in since its last decomposition stays within its
   // allowance: absorb_area (m²) or absorb_fraction of the room's own area, whichever is larger.

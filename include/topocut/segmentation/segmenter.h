@@ -6,6 +6,7 @@
 #include "topocut/core/segmentation.h"
 #include "topocut/decomposition/decompose.h"
 #include "topocut/map/binarize.h"
+#include "topocut/map/free_space_cleaning.h"
 #include "topocut/map/free_space_polygons.h"
 #include "topocut/segmentation/door_cuts.h"
 #include "topocut/segmentation/room_merging.h"
@@ -17,7 +18,17 @@ struct SegmentOptions {
   double concavity = 2.5;  // tau, maximum concavity in metres (Fermin-Leon et al.: 2.5 m for all maps)
   bool decompose = true;   // false: the trivial baseline, each free-space component is one room
   BinarizeOptions binarize;  // defaults: raw free space (no inflation, no filtering)
-  ContourOptions contours;   // minimum component and hole areas (m²)
+  // The real-map front end (free_space_cleaning.h): ray fans, slivers and free specks out of the
+  // free space, obstacle specks into it. false: the binarized free space is decomposed as it is.
+  bool clean = true;
+  FreeSpaceCleaningOptions cleaning;
+  // Minimum component and hole areas (m²). Components below 1 m² are no rooms (DESIGN.md: their
+  // cells join the nearest room), as merging folds rooms below 1 m² (RoomMergeOptions::min_room_area).
+  ContourOptions contours = [] {
+    ContourOptions c;
+    c.min_component_area = 1.0;
+    return c;
+  }();
   // Douglas-Peucker tolerance, in cells, applied to the traced pixel-edge polygons before doors
   // are searched and the decomposition runs: it removes the stair steps of slanted and noisy walls
   // (a 45-degree stair deviates 0.71 cells from its line). Below half a cell, rings that are a cell
@@ -40,12 +51,25 @@ SegmentOptions parity_segment_options(double concavity = 2.5);
 
 // Segments the free space of grid into rooms; every free cell gets a room label. Rooms are
 // numbered by their first cell in raster order. Throws Error on an invalid grid or options, or a
-// map without free space.
-Segmentation segment(const OccupancyGrid& grid, const SegmentOptions& options = {});
+// map without free space. If input is given, it receives what was decomposed and labelled
+// (segmentation_input()), for pictures of the cleaning.
+struct SegmentationInput;
+Segmentation segment(const OccupancyGrid& grid, const SegmentOptions& options = {}, SegmentationInput* input = nullptr);
 
-// Stage 1: the free-space mask segment() decomposes (options.binarize applied); throws Error if
-// it is empty.
+// Stage 1: the binarized free-space mask (options.binarize applied); throws Error if it is empty.
 cv::Mat segmentation_free_space(const OccupancyGrid& grid, const SegmentOptions& options);
+
+// Stage 2: what segment() decomposes and labels. floor is the free space to decompose (CV_8UC1,
+// 255): the binarized free space, cleaned by clean_free_space() when options.clean. labelled is the
+// grid whose free cells get a room: the input with the cells the cleaning put outside the building
+// made unknown. cleaned is empty unless options.clean; when the cleaning would leave no floor at all
+// (a map smaller than one room), the binarized free space is used as it is.
+struct SegmentationInput {
+  cv::Mat floor;
+  OccupancyGrid labelled;
+  CleanedFreeSpace cleaned;
+};
+SegmentationInput segmentation_input(const OccupancyGrid& grid, const SegmentOptions& options);
 
 // Stage 3a: the pieces of one free-space component (grid coordinates) and the cuts between them:
 // the polygon simplified (options.simplify), split along its door cuts (options.doors, listed in

@@ -1,0 +1,70 @@
+#pragma once
+// The real-map front end. A SLAM map's free space holds much that is no floor of a room: laser rays
+// through windows, glass and open doors fanning out into the unknown, slivers along walls, specks of
+// free space, and a pepper of obstacle and unknown specks inside rooms (clutter, chair legs, cells
+// seen once). Left in, they become rooms nobody would draw and they multiply the vertices of every
+// outline. This stage keeps the floor: free space a disc of a person's width fits into, plus a
+// margin around it, and walled-in narrow space; obstacle specks inside it are floor for the
+// decomposition (they stay unlabelled cells). Free specks are left to the contour stage, which drops
+// components below ContourOptions::min_component_area. What it removes is labelled as a person would: removed cells inside the building (rays
+// between furniture, a sliver behind a cupboard) join the room next to them; those outside it (rays
+// through windows, glass and open doors into the outside or into rooms never entered, specks beyond
+// the walls) belong to no room.
+#include <opencv2/core.hpp>
+
+namespace topocut {
+
+struct FreeSpaceCleaningOptions {
+  // Obstacle specks: connected non-free regions (8-connected) enclosed by free space whose bounding
+  // box is at most this long (metres) on both sides. They count as floor (no hole of a polygon, no
+  // door jamb), while their cells stay unlabelled. 0 keeps every obstacle.
+  double max_obstacle_speck = 0.3;
+  // Thin free space: free cells farther than min_width / 4 (along free space) from every disc of
+  // diameter min_width (metres) that fits into the free space are thin. A connected thin part is
+  // removed when more of the non-free cells around it are unknown than occupied: laser rays end in
+  // the unknown, while a narrow corridor, a closet or a gap behind a cupboard is walled in and
+  // stays. A corridor or doorway at least min_width wide is never thin. 0 disables.
+  double min_width = 0.6;
+  // A removed cell is inside the building when it lies in the closing of the kept floor with a square
+  // of this side (metres): floor surrounds it within that distance. 0: every removed cell is
+  // outside.
+  double inside_closing = 1.0;
+};
+
+// What happened to a cell (CleanedFreeSpace::removed).
+enum CleanedCell : unsigned char {
+  kCellUntouched = 0,     // kept floor, or never free
+  kCellObstacleSpeck = 1, // non-free cell that counts as floor
+  kCellRemovedInside = 2, // free cell removed (thin or a speck) inside the building: joins the nearest room
+  kCellRemovedOutside = 3,// free cell removed outside the building: no room
+};
+
+struct CleanedFreeSpace {
+  cv::Mat floor;    // CV_8UC1, 255 where the decomposition sees free space (kept floor and obstacle specks)
+  cv::Mat removed;  // CV_8UC1, a CleanedCell per cell
+  int removed_cells = 0;  // free cells removed (inside or outside)
+  int outside_cells = 0;  // of those, outside the building
+};
+
+// Cleans a free-space mask (CV_8UC1, nonzero = free) of a map whose cells (CV_8UC1, kFree /
+// kOccupied / kUnknown, same size) tell walls from unknown, at the given resolution (metres per
+// cell). Every free cell is either floor or removed; floor is free space plus obstacle specks.
+// Throws Error on an empty or non-8-bit mask, mismatched cells, a bad resolution or negative /
+// non-finite options.
+CleanedFreeSpace clean_free_space(const cv::Mat& free, const cv::Mat& cells, double resolution,
+                                  const FreeSpaceCleaningOptions& options = {});
+
+// A picture of the cleaning for people (CV_8UC3, BGR, one pixel per cell): free white, occupied
+// black, unknown grey; removed cells outside the building red, inside orange, obstacle specks that
+// count as floor light blue. cells is the grid (kFree / kOccupied / kUnknown); an empty cleaned
+// result draws the grid alone.
+cv::Mat render_cleaned_map(const cv::Mat& cells, const CleanedFreeSpace& cleaned);
+
+// Throws Error unless the options are finite and non-negative.
+void validate(const FreeSpaceCleaningOptions& options);
+
+// How far (cells) a change of one cell can change the result of clean_free_space(), for
+// callers that clean a window of a larger map (component areas aside, which the sizes bound).
+int cleaning_reach(const FreeSpaceCleaningOptions& options, double resolution);
+
+}  // namespace topocut

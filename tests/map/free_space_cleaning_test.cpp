@@ -1,0 +1,120 @@
+// The real-map front end on a synthetic SLAM map whose every feature is known: laser rays through a
+// window into the unknown go, a narrow walled corridor and a doorway stay, obstacle specks become
+// floor, thin space between unknown blocks inside a room is removed but stays in the building.
+#include <gtest/gtest.h>
+#include <opencv2/imgproc.hpp>
+
+#include "topocut/core/error.h"
+#include "topocut/core/occupancy_grid.h"
+#include "topocut/map/free_space_cleaning.h"
+
+namespace topocut {
+namespace {
+
+constexpr double kRes = 0.05;
+
+struct Synthetic {
+  cv::Mat cells;
+  cv::Rect corridor, room_a, room_b, speck, gap;
+  std::vector<cv::Point> ray_cells;  // free cells of the rays beyond the wall
+};
+
+// 300 x 200 cells of unknown; two walled 5 m rooms joined by a 0.5 m x 2 m walled corridor; five
+// one-cell rays fanning up out of a window in room A's top wall; a 2 x 2 obstacle in room A; a
+// 0.1 m free gap between two unknown blocks (partly seen cupboards, 0.4 x 0.9 m) inside room B.
+Synthetic synthetic_map() {
+  Synthetic s;
+  s.cells = cv::Mat(200, 300, CV_8UC1, cv::Scalar(kUnknown));
+  s.room_a = {20, 80, 100, 100};
+  s.room_b = {160, 80, 100, 100};
+  s.corridor = {120, 125, 40, 10};
+  for (const cv::Rect& r : {s.room_a, s.room_b, s.corridor}) {
+    cv::rectangle(s.cells, cv::Rect(r.x - 1, r.y - 1, r.width + 2, r.height + 2), cv::Scalar(kOccupied), cv::FILLED);
+  }
+  for (const cv::Rect& r : {s.room_a, s.room_b, s.corridor}) s.cells(r).setTo(kFree);
+  // The window: a 20-cell gap in room A's top wall, rays fanning from its middle.
+  s.cells(cv::Rect(60, 79, 20, 1)).setTo(kFree);
+  for (int k = -2; k <= 2; ++k) {
+    for (int t = 1; t <= 60; ++t) {
+      const cv::Point p(70 + k * t / 4, 79 - t);
+      if (p.y < 0) break;
+      s.cells.at<unsigned char>(p) = kFree;
+      s.ray_cells.push_back(p);
+    }
+  }
+  s.speck = {50, 120, 2, 2};
+  s.cells(s.speck).setTo(kOccupied);
+  // Two unknown blocks 2 cells apart, against room B's bottom wall.
+  s.cells(cv::Rect(200, 162, 8, 18)).setTo(kUnknown);
+  s.cells(cv::Rect(210, 162, 8, 18)).setTo(kUnknown);
+  s.gap = {208, 166, 2, 14};  // the gap below the floor's margin
+  return s;
+}
+
+int count(const cv::Mat& mask) { return cv::countNonZero(mask); }
+
+TEST(CleanFreeSpace, RaysGoCorridorsAndDoorsStay) {
+  const Synthetic s = synthetic_map();
+  const CleanedFreeSpace c = clean_free_space(s.cells == kFree, s.cells, kRes);
+  ASSERT_EQ(c.floor.size(), s.cells.size());
+  // The 0.5 m corridor is narrower than the 0.6 m disc but walled in: it stays, whole.
+  EXPECT_EQ(count(c.floor(s.corridor)), s.corridor.area());
+  // The rooms stay (their corners too), but for the cells around the unknown blocks.
+  EXPECT_EQ(count(c.floor(s.room_a)), s.room_a.area());
+  EXPECT_EQ(count(c.floor(s.room_b)), s.room_b.area() - 2 * 8 * 18 - s.gap.area());
+  // Every ray cell beyond the wall is removed, outside the building; only the rays' roots within
+  // the floor's margin (min_width / 4 beyond the disc's reach, here 3 cells) stay.
+  for (const cv::Point& p : s.ray_cells) {
+    if (p.y >= 73) continue;
+    EXPECT_EQ(c.floor.at<unsigned char>(p), 0) << p;
+    EXPECT_EQ(c.removed.at<unsigned char>(p), kCellRemovedOutside) << p;
+  }
+  // The obstacle speck is floor for the decomposition.
+  EXPECT_EQ(count(c.floor(s.speck)), 4);
+  EXPECT_EQ(count(c.removed(s.speck) == kCellObstacleSpeck), 4);
+  // The gap between the unknown blocks is thin and bounded by unknown: removed, but inside.
+  EXPECT_EQ(count(c.floor(s.gap)), 0);
+  EXPECT_EQ(count(c.removed(s.gap) == kCellRemovedInside), s.gap.area());
+  EXPECT_EQ(c.removed_cells, count(c.removed >= kCellRemovedInside));
+  EXPECT_EQ(c.outside_cells, count(c.removed == kCellRemovedOutside));
+  // Floor is free space plus obstacle specks, nothing else.
+  EXPECT_EQ(count(c.floor & ~((s.cells == kFree) | (c.removed == kCellObstacleSpeck))), 0);
+}
+
+TEST(CleanFreeSpace, EachStepCanBeSwitchedOff) {
+  const Synthetic s = synthetic_map();
+  FreeSpaceCleaningOptions off;
+  off.max_obstacle_speck = 0.0;
+  off.min_width = 0.0;
+  const CleanedFreeSpace c = clean_free_space(s.cells == kFree, s.cells, kRes, off);
+  EXPECT_EQ(count(c.floor != (s.cells == kFree)), 0);
+  EXPECT_EQ(c.removed_cells, 0);
+  FreeSpaceCleaningOptions no_inside;
+  no_inside.inside_closing = 0.0;
+  const CleanedFreeSpace d = clean_free_space(s.cells == kFree, s.cells, kRes, no_inside);
+  EXPECT_EQ(count(d.removed(s.gap) == kCellRemovedOutside), s.gap.area());
+}
+
+TEST(CleanFreeSpace, BadInputIsAnError) {
+  const cv::Mat cells(10, 10, CV_8UC1, cv::Scalar(kFree));
+  EXPECT_THROW(clean_free_space(cv::Mat(), cells, kRes), Error);
+  EXPECT_THROW(clean_free_space(cells == kFree, cv::Mat(5, 5, CV_8UC1), kRes), Error);
+  EXPECT_THROW(clean_free_space(cells == kFree, cells, 0.0), Error);
+  FreeSpaceCleaningOptions bad;
+  bad.min_width = -1.0;
+  EXPECT_THROW(clean_free_space(cells == kFree, cells, kRes, bad), Error);
+}
+
+TEST(CleanFreeSpace, PictureShowsWhatWasRemoved) {
+  const Synthetic s = synthetic_map();
+  const CleanedFreeSpace c = clean_free_space(s.cells == kFree, s.cells, kRes);
+  const cv::Mat picture = render_cleaned_map(s.cells, c);
+  ASSERT_EQ(picture.type(), CV_8UC3);
+  EXPECT_EQ(picture.at<cv::Vec3b>(s.room_a.y + 5, s.room_a.x + 5), cv::Vec3b(255, 255, 255));
+  EXPECT_EQ(picture.at<cv::Vec3b>(s.ray_cells.back()), cv::Vec3b(40, 40, 220));
+  EXPECT_EQ(picture.at<cv::Vec3b>(s.gap.y + 5, s.gap.x), cv::Vec3b(40, 160, 250));
+  EXPECT_EQ(picture.at<cv::Vec3b>(s.speck.y, s.speck.x), cv::Vec3b(235, 200, 120));
+}
+
+}  // namespace
+}  // namespace topocut
