@@ -20,6 +20,22 @@ using Key = std::tuple<double, double, double, double>;  // directed edge (a.x, 
 
 Key edge_key(const Point2& a, const Point2& b) { return {a.x, a.y, b.x, b.y}; }
 
+double perimeter(const PolygonWithHoles& polygon) {
+  double length = 0.0;
+  auto add = [&](const Ring& ring) {
+    for (std::size_t i = 0; i < ring.size(); ++i) length += distance(ring[i], ring[(i + 1) % ring.size()]);
+  };
+  add(polygon.outer);
+  for (const Ring& hole : polygon.holes) add(hole);
+  return length;
+}
+
+double point_segment_distance(const Point2& p, const Point2& a, const Point2& b) {
+  const double dx = b.x - a.x, dy = b.y - a.y, l2 = dx * dx + dy * dy;
+  const double t = l2 > 0.0 ? std::clamp(((p.x - a.x) * dx + (p.y - a.y) * dy) / l2, 0.0, 1.0) : 0.0;
+  return std::hypot(p.x - a.x - t * dx, p.y - a.y - t * dy);
+}
+
 struct Box {
   double x0 = std::numeric_limits<double>::infinity(), y0 = x0;
   double x1 = -std::numeric_limits<double>::infinity(), y1 = x1;
@@ -57,7 +73,7 @@ void add_crossings(const Ring& ring, const Point2& p, const Point2& u, std::vect
 // The pieces and cuts of one component, with the rooms formed so far (union-find over pieces).
 class Merger {
  public:
-  Merger(const PieceSet& set, double resolution, const RoomMergeOptions& options)
+  Merger(const PolygonWithHoles& polygon, const PieceSet& set, double resolution, const RoomMergeOptions& options)
       : set_(set), resolution_(resolution), options_(options), parent_(set.pieces.size()) {
     std::iota(parent_.begin(), parent_.end(), 0);
     members_.resize(set.pieces.size());
@@ -66,8 +82,10 @@ class Merger {
     for (const PolygonWithHoles& piece : set.pieces) {
       boxes_.push_back(bounding_box(piece));
       areas_.push_back(area(piece) * resolution * resolution);
+      perimeters_.push_back(perimeter(piece) * resolution);
     }
     find_cut_sides();
+    mark_furniture_cuts(polygon);
   }
 
   void merge_non_doors() {
@@ -114,7 +132,8 @@ class Merger {
         if (root(static_cast<int>(i)) != static_cast<int>(i)) continue;
         const double a = room_area(static_cast<int>(i));
         const bool small = a < options_.min_room_area;
-        const bool thin = options_.min_room_width > 0.0 && room_width(static_cast<int>(i)) < options_.min_room_width;
+        const bool thin = (options_.min_room_width > 0.0 && room_width(static_cast<int>(i)) < options_.min_room_width) ||
+                          (options_.min_room_thickness > 0.0 && room_thickness(static_cast<int>(i)) < options_.min_room_thickness);
         if ((small || thin) && (victim < 0 || a < victim_area) && !stuck_[i]) {
           victim = static_cast<int>(i);
           victim_area = a;
@@ -211,7 +230,34 @@ class Merger {
     int left = -1, right = -1;  // pieces left and right of the cut (a -> b); -1: not a cut between two pieces
     double length = 0.0;        // metres
     bool door = false;          // found by the door detector: never merged as "not a door"
+    bool furniture = false;     // ends on a furniture-sized obstacle: no room boundary
   };
+
+  // Cuts with an end point on a small obstacle (a hole whose bounding box is at most
+  // options_.furniture_size a side) separate no rooms: a room does not end at a table.
+  void mark_furniture_cuts(const PolygonWithHoles& polygon) {
+    if (options_.furniture_size <= 0.0) return;
+    const double limit = options_.furniture_size / resolution_;
+    const double near = 1.5;  // cells: the pieces come from the polygon simplified by about a cell
+    for (const Ring& hole : polygon.holes) {
+      Box box;
+      for (const Point2& p : hole) {
+        box.x0 = std::min(box.x0, p.x);
+        box.y0 = std::min(box.y0, p.y);
+        box.x1 = std::max(box.x1, p.x);
+        box.y1 = std::max(box.y1, p.y);
+      }
+      if (box.x1 - box.x0 > limit || box.y1 - box.y0 > limit) continue;
+      for (std::size_t k = 0; k < sides_.size(); ++k) {
+        if (sides_[k].left < 0 || sides_[k].furniture) continue;
+        for (const Point2& end : {set_.cuts[k].a, set_.cuts[k].b}) {
+          if (end.x < box.x0 - near || end.x > box.x1 + near || end.y < box.y0 - near || end.y > box.y1 + near) continue;
+          for (std::size_t i = 0; i < hole.size() && !sides_[k].furniture; ++i)
+            sides_[k].furniture = point_segment_distance(end, hole[i], hole[(i + 1) % hole.size()]) <= near;
+        }
+      }
+    }
+  }
 
   void find_cut_sides() {
     std::map<Key, int> owner;
@@ -321,12 +367,47 @@ class Merger {
     return widest * resolution_;
   }
 
-  // Cut length over the width of the narrower side: >= door_ratio means "not a door".
+  // A room that opens onto a much wider, deep space (RoomMergeOptions::step_ratio): kept apart.
+  bool is_width_step(int k, double width_left, double width_right) {
+    if (options_.step_ratio <= 0.0) return false;
+    const Side& s = sides_[static_cast<std::size_t>(k)];
+    const bool left_narrow = width_left <= width_right;
+    const int wide_room = root(left_narrow ? s.right : s.left);
+    return std::min(width_left, width_right) < options_.step_ratio * std::max(width_left, width_right) &&
+           std::min(room_area(root(s.left)), room_area(root(s.right))) >= options_.step_min_area &&
+           side_depth(k, wide_room, !left_narrow) >= options_.step_min_wide_depth;
+  }
+
+  // Depth of room r behind cut k (metres): its chord along the cut's normal through the cut's middle.
+  double side_depth(int k, int r, bool left) {
+    const Segment2& c = set_.cuts[static_cast<std::size_t>(k)];
+    const double length = distance(c.a, c.b);
+    const Point2 u{(c.b.x - c.a.x) / length, (c.b.y - c.a.y) / length};
+    const Point2 n = left ? Point2{-u.y, u.x} : Point2{u.y, -u.x};
+    const Point2 mid{(c.a.x + c.b.x) / 2.0 + 0.5 * n.x, (c.a.y + c.b.y) / 2.0 + 0.5 * n.y};
+    return chord(r, mid, n) * resolution_;
+  }
+
+  // Cut length over the width of the narrower side: >= door_ratio means "not a door"; infinite for a
+  // cut that ends on furniture, 0 for a width step.
   double door_score(int k) {
     const Side& s = sides_[static_cast<std::size_t>(k)];
-    const double narrow = std::min(side_width(k, root(s.left), true), side_width(k, root(s.right), false));
+    if (s.furniture) return std::numeric_limits<double>::infinity();
+    const double wl = side_width(k, root(s.left), true), wr = side_width(k, root(s.right), false);
+    const double narrow = std::min(wl, wr), wide = std::max(wl, wr);
     if (narrow <= 0.0) return std::numeric_limits<double>::infinity();
+    if (is_width_step(k, wl, wr)) return 0.0;
     return s.length / narrow;
+  }
+
+  // 2 area / perimeter of room r (metres): the width of a long strip, half the side of a square.
+  double room_thickness(int r) {
+    double length = 0.0;
+    for (const int member : members_[static_cast<std::size_t>(r)]) length += perimeters_[static_cast<std::size_t>(member)];
+    for (const Side& s : sides_) {
+      if (s.left >= 0 && root(s.left) == r && root(s.right) == r) length -= 2.0 * s.length;
+    }
+    return length > 0.0 ? 2.0 * room_area(r) / length : 0.0;
   }
 
   // Widest chord of room r along any of its cuts (metres).
@@ -350,6 +431,7 @@ class Merger {
   std::vector<std::vector<int>> members_;  // room root -> its pieces
   std::vector<Box> boxes_;
   std::vector<double> areas_;  // m² per piece
+  std::vector<double> perimeters_;  // m per piece
   std::vector<Side> sides_;
   std::vector<bool> blocked_, stuck_;
   std::map<int, double> area_sum_;          // room root -> area (m², rooms of 2+ pieces)
@@ -367,8 +449,12 @@ void validate(const RoomMergeOptions& options) {
   if (!std::isfinite(options.door_ratio) || options.door_ratio <= 0.0)
     throw Error("the door ratio of room merging must be a positive number");
   if (!finite_non_negative(options.width_depth) || !finite_non_negative(options.min_room_area) ||
-      !finite_non_negative(options.min_room_width))
-    throw Error("the room merging depth, minimum room area and minimum room width must be non-negative numbers");
+      !finite_non_negative(options.min_room_width) || !finite_non_negative(options.min_room_thickness) ||
+      !finite_non_negative(options.furniture_size))
+    throw Error("the room merging depth, minimum room area, width and thickness and the furniture size must be non-negative numbers");
+  if (!finite_non_negative(options.step_ratio) || options.step_ratio >= 1.0 || !finite_non_negative(options.step_min_area) ||
+      !finite_non_negative(options.step_min_wide_depth))
+    throw Error("the width-step ratio must lie in [0, 1) and its area and depth must be non-negative numbers");
 }
 
 PolygonWithHoles union_of_pieces(const std::vector<PolygonWithHoles>& pieces) {
@@ -450,11 +536,10 @@ PolygonWithHoles union_of_pieces(const std::vector<PolygonWithHoles>& pieces) {
 
 PieceSet merge_rooms(const FreeSpaceComponent& component, const PieceSet& pieces, double resolution,
                      const RoomMergeOptions& options) {
-  (void)component;
   validate(options);
   if (!std::isfinite(resolution) || resolution <= 0.0) throw Error("the map resolution must be a positive number");
   if (!options.enabled || pieces.pieces.size() < 2) return pieces;
-  Merger merger(pieces, resolution, options);
+  Merger merger(component.polygon, pieces, resolution, options);
   merger.merge_non_doors();
   merger.fold_small_rooms();
   return merger.result();

@@ -126,6 +126,7 @@ TEST(MergeRooms, AThinStripIsFoldedWhenAMinimumWidthIsSet) {
   set.cuts = {{{56, 80}, {50, 80}}};
   RoomMergeOptions options;
   options.door_ratio = 10.0;
+  options.min_room_thickness = 0.0;
   EXPECT_EQ(merge_rooms(no_component(), set, kRes, options).pieces.size(), 2u);
   options.min_room_width = 0.5;  // the strip's widest chord parallel to its cut is 0.3 m
   const PieceSet rooms = merge_rooms(no_component(), set, kRes, options);
@@ -150,6 +151,76 @@ TEST(MergeRooms, DisabledReturnsThePiecesAndBadOptionsAreErrors) {
   bad.min_room_area = -1.0;
   EXPECT_THROW(merge_rooms(no_component(), set, kRes, bad), Error);
   EXPECT_THROW(merge_rooms(no_component(), set, 0.0), Error);
+}
+
+}  // namespace
+}  // namespace topocut
+
+namespace topocut {
+namespace {
+
+TEST(MergeRooms, ASliverThinnerThanAPersonIsFolded) {
+  // A 6 m x 4 m room and a 0.4 m x 4 m strip along its side (1.6 m², above the area limit):
+  // thickness 2 * 1.6 / 8.8 = 0.36 m. Nothing merges as "not a door" (door_ratio 10).
+  PieceSet set;
+  set.pieces = {box(0, 0, 120, 80), box(120, 0, 128, 80)};
+  set.cuts = {{{120, 0}, {120, 80}}};
+  RoomMergeOptions options;
+  options.door_ratio = 10.0;
+  options.min_room_thickness = 0.0;
+  EXPECT_EQ(merge_rooms(no_component(), set, kRes, options).pieces.size(), 2u);
+  options.min_room_thickness = 0.35;  // just below the strip's 0.36 m
+  EXPECT_EQ(merge_rooms(no_component(), set, kRes, options).pieces.size(), 2u);
+  options.min_room_thickness = 0.6;  // the default
+  const PieceSet rooms = merge_rooms(no_component(), set, kRes, options);
+  ASSERT_EQ(rooms.pieces.size(), 1u);
+  EXPECT_DOUBLE_EQ(area(rooms.pieces[0]), 128 * 80);
+}
+
+// A 10 m x 5 m room with an obstacle of side cells in its middle, cut by DuDe into four pieces whose
+// cuts all end on the obstacle's corners.
+PieceSet around_obstacle(int side, FreeSpaceComponent& component) {
+  const int x0 = 100 - side / 2, x1 = 100 + side / 2, y0 = 50 - side / 2, y1 = 50 + side / 2;
+  component.polygon.outer = {{0, 0}, {200, 0}, {200, 100}, {0, 100}};
+  component.polygon.holes = {{{x0, y0}, {x0, y1}, {x1, y1}, {x1, y0}}};  // clockwise
+  PieceSet set;
+  set.pieces = {{{{0, 0}, {x0, 0}, {x0, y0}, {x0, y1}, {x0, 100}, {0, 100}}, {}},
+                {{{x1, 0}, {200, 0}, {200, 100}, {x1, 100}, {x1, y1}, {x1, y0}}, {}},
+                {{{x0, 0}, {x1, 0}, {x1, y0}, {x0, y0}}, {}},
+                {{{x0, y1}, {x1, y1}, {x1, 100}, {x0, 100}}, {}}};
+  set.cuts = {{{x0, 0}, {x0, y0}}, {{x0, y1}, {x0, 100}}, {{x1, y0}, {x1, 0}}, {{x1, 100}, {x1, y1}}};
+  return set;
+}
+
+TEST(MergeRooms, CutsEndingOnFurnitureSeparateNoRooms) {
+  RoomMergeOptions options;
+  options.door_ratio = 10.0;  // no cut merges as "not a door": only the furniture rule can merge
+  FreeSpaceComponent table;
+  const PieceSet set = around_obstacle(20, table);  // a 1 m table
+  EXPECT_EQ(merge_rooms(table, set, kRes, options).pieces.size(), 1u);
+  options.furniture_size = 0.0;
+  EXPECT_EQ(merge_rooms(table, set, kRes, options).pieces.size(), 4u);
+  options.furniture_size = 2.5;
+  FreeSpaceComponent core;
+  const PieceSet big = around_obstacle(60, core);  // a 3 m block is no furniture
+  EXPECT_EQ(merge_rooms(core, big, kRes, options).pieces.size(), 4u);
+}
+
+TEST(MergeRooms, ARoomOpeningOntoAMuchWiderDeepSpaceStaysApart) {
+  // A 4 m x 4 m room open across its whole width onto a 12 m wide room below: widths 4 and 12 m
+  // (0.33 < 0.6), areas 16 and 96 m², the wide side 8 m deep behind the cut.
+  PieceSet set;
+  set.pieces = {{{{0, 0}, {240, 0}, {240, 160}, {160, 160}, {80, 160}, {0, 160}}, {}}, box(80, 160, 160, 240)};
+  set.cuts = {{{80, 160}, {160, 160}}};
+  RoomMergeOptions options;
+  EXPECT_EQ(merge_rooms(no_component(), set, kRes, options).pieces.size(), 2u);
+  options.step_ratio = 0.0;  // the cut spans the narrow room: not door-like, merged
+  EXPECT_EQ(merge_rooms(no_component(), set, kRes, options).pieces.size(), 1u);
+  // Onto a 3 m deep corridor instead: the corridor takes the room in.
+  PieceSet corridor;
+  corridor.pieces = {{{{0, 100}, {240, 100}, {240, 160}, {160, 160}, {80, 160}, {0, 160}}, {}}, box(80, 160, 160, 240)};
+  corridor.cuts = set.cuts;
+  EXPECT_EQ(merge_rooms(no_component(), corridor, kRes, RoomMergeOptions{}).pieces.size(), 1u);
 }
 
 }  // namespace

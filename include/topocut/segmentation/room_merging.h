@@ -31,18 +31,34 @@ struct RoomMergeOptions {
   // rays through a gap), not a room. 0 disables (the default: 0.4-0.8 m change nothing on the Bormann
   // maps, whose leaks are free-space components of their own).
   double min_room_width = 0.0;
+  // Rooms thinner than this (metres; thickness = 2 area / perimeter: a strip's width, half a square's
+  // side) are folded the same way: slivers between two parallel cuts or along a wall, the roots of
+  // laser-ray fans. 0.6 m is the width of a person (the same disc the defect count uses).
+  double min_room_thickness = 0.6;
+  // Obstacles whose bounding box is at most this long on both sides (metres) are furniture: a cut
+  // that ends on one is no room boundary (a room does not end at a table), so the rooms on its sides
+  // merge. Larger obstacles (a building's core, a detached wall) may separate rooms. 0 disables.
+  double furniture_size = 2.5;
+  // Width steps: a room that opens across its whole width onto a space much wider than itself (its
+  // width below step_ratio times the other side's) and at least step_min_wide_depth deep stays a room
+  // of its own when both are at least step_min_area m², as people separate rooms of a floor plan
+  // joined by wide openings. The depth test keeps a corridor (shallow behind its side openings)
+  // merged with what opens onto it. step_ratio 0 disables.
+  double step_ratio = 0.6;
+  double step_min_area = 6.0;
+  double step_min_wide_depth = 5.0;
 };
 
 // Throws Error unless the options are usable (finite, non-negative, door_ratio > 0).
 void validate(const RoomMergeOptions& options);
 
 // Merges the pieces of one free-space component (grid coordinates: one unit per cell, as from the
-// decomposition; resolution converts the options' metres) into rooms. The result's pieces are the
+// decomposition; resolution converts the options' metres) into rooms. component.polygon tells
+// furniture (its small holes) from walls. The result's pieces are the
 // rooms, each the exact union of the pieces merged into it (union_of_pieces), ordered by their
 // first piece; its cuts are the cuts between two different rooms, in their input order. Cuts
 // that do not separate two pieces (keyhole cuts) are dropped. With options.enabled false, the
-// input is returned unchanged. component is the polygon the pieces tile; the criteria need only
-// the pieces, so it is not read (kept so that the stage's inputs say what the pieces are of).
+// input is returned unchanged.
 PieceSet merge_rooms(const FreeSpaceComponent& component, const PieceSet& pieces, double resolution,
                      const RoomMergeOptions& options = {});
 
