@@ -7,6 +7,7 @@
 #include "topocut/evaluation/dataset.h"
 #include "topocut/evaluation/dataset_options.h"
 #include "topocut/evaluation/dataset_report.h"
+#include "topocut/evaluation/room_defects.h"
 #include "topocut/exploration/exploration_run.h"
 #include "topocut/io/atomic_file.h"
 
@@ -75,16 +76,38 @@ int run_incremental(const DatasetArguments& arguments, const std::vector<Dataset
   return 0;
 }
 
+// --maps DIR: maps without ground truth, judged by the rooms no person would draw.
+int run_defects(const DatasetArguments& arguments, const std::string& folder, int floor_repetitions) {
+  MapFolderOptions options;
+  options.segment = arguments.run.segment;
+  options.load = arguments.run.load;
+  options.floor_repetitions = floor_repetitions;
+  options.progress = [](const std::string& line) { progress(line); };
+  const std::vector<MapDefectResult> results = run_map_files(discover_map_files(folder), options);
+  std::cout << "Maps " << folder << ", method: " << method_name(arguments.run.segment) << "\n\n"
+            << format_defects_table(results) << std::flush;
+  if (!arguments.csv.empty()) write_file_atomically(arguments.csv, defects_csv(results));
+  std::size_t failed = 0;
+  for (const MapDefectResult& result : results) failed += result.ok ? 0 : 1;
+  if (failed > 0)
+    throw Error(std::to_string(failed) + " of " + std::to_string(results.size()) + " maps failed (see FAILED in the table)");
+  return 0;
+}
+
 int run(const std::vector<std::string>& args) {
   po::options_description described = described_options();
   described.add_options()
       ("mode", po::value<std::string>()->default_value("batch")->value_name("MODE"),
        "batch, or incremental: a simulated robot (360° laser, 5 m) explores each image and every update of its map is segmented incrementally")
       ("compare-batch", po::bool_switch(), "with --mode incremental: also time batch segmentation on the same updates")
-      ("batch-every", po::value<int>()->default_value(1)->value_name("N"), "with --compare-batch: every N-th update only (and the last)");
+      ("batch-every", po::value<int>()->default_value(1)->value_name("N"), "with --compare-batch: every N-th update only (and the last)")
+      ("maps", po::value<std::string>()->value_name("DIR"),
+       "maps without ground truth (every YAML, else image at --resolution, in DIR): count per map the rooms, the thin rooms (>= 1 m², less than half survives an opening with a 0.6 m disc: ray fans, slivers, strips) and the speck rooms (0.1 to 1 m²), time the whole segmentation and compare it with the map's contour floor")
+      ("floor-repetitions", po::value<int>()->default_value(3)->value_name("N"), "with --maps: repetitions of the contour floor (decode, threshold, findContours), median taken; 0: not measured");
   const auto vm = parse_options(
       "topocut evaluate [--dataset DIR] [--variant plain|furnished|all] [--csv FILE] [--concavity M]\n"
-      "                        [--trivial] [--map NAME ...] [--mode batch|incremental [--compare-batch]]",
+      "                        [--trivial] [--map NAME ...] [--mode batch|incremental [--compare-batch]]\n"
+      "       topocut evaluate --maps DIR [--resolution M] [--csv FILE] [segmenter options]",
       "Segments every map of a Bormann-format dataset folder (for each map X: X.png plain,\n"
       "X_furnitures.png furnished, X_gt_segmentation.png ground truth; 0.05 m/px) and scores it\n"
       "against the ground truth as Bormann et al. (ICRA 2016) define it: ground-truth pixels > 250\n"
@@ -99,7 +122,10 @@ int run(const std::vector<std::string>& args) {
       "--mode incremental explores every image instead (topocut explore) and scores the final\n"
       "explored map, incremental and batch; it adds per-update times (process CPU time: median, p95,\n"
       "max) and the CSV columns updates,update_median_ms,update_p95_ms,update_max_ms,\n"
-      "batch_update_median_ms (the last with --compare-batch).",
+      "batch_update_median_ms (the last with --compare-batch).\n\n"
+      "--maps DIR judges maps without ground truth by their defects (see --maps below); its CSV is\n"
+      "map,width,height,rooms,thin,specks,time_ms,floor_ms. A folder without furnished (or plain)\n"
+      "images is evaluated with the variants it has unless --variant is given.",
       described, po::positional_options_description(), args);
   if (!vm) return 0;
   DatasetArguments arguments = to_arguments(*vm);
@@ -108,8 +134,18 @@ int run(const std::vector<std::string>& args) {
   const int batch_every = (*vm)["batch-every"].as<int>();
   if (batch_every < 1) throw UsageError("--batch-every must be at least 1");
   if (!arguments.csv.empty()) check_writable(arguments.csv);
+  if (vm->count("maps")) {
+    const int floor_repetitions = (*vm)["floor-repetitions"].as<int>();
+    if (floor_repetitions < 0) throw UsageError("--floor-repetitions must not be negative");
+    if (mode != "batch") throw UsageError("--maps takes no --mode (maps without ground truth are segmented in batch)");
+    return run_defects(arguments, (*vm)["maps"].as<std::string>(), floor_repetitions);
+  }
 
   const std::vector<DatasetMap> maps = select_maps(discover_dataset(arguments.dataset), arguments.run.maps);
+  if (!arguments.variant_given) {
+    arguments.run.variants = present_variants(maps);
+    if (arguments.run.variants.empty()) throw Error("the dataset folder has no map image (neither X.png nor X_furnitures.png)");
+  }
   arguments.run.progress = [](const std::string& line) { progress(line); };
   if (mode == "incremental") return run_incremental(arguments, maps, (*vm)["compare-batch"].as<bool>(), batch_every);
   const std::vector<ImageResult> results = run_dataset(maps, arguments.run, batch_segmenter(arguments.run));

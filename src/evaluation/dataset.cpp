@@ -63,6 +63,20 @@ std::vector<DatasetMap> discover_dataset(const std::string& folder) {
   return maps;
 }
 
+std::vector<Variant> present_variants(const std::vector<DatasetMap>& maps) {
+  std::vector<Variant> variants;
+  for (const Variant variant : {Variant::kPlain, Variant::kFurnished}) {
+    for (const DatasetMap& map : maps) {
+      std::error_code ec;
+      if (std::filesystem::is_regular_file(map.image(variant), ec)) {
+        variants.push_back(variant);
+        break;
+      }
+    }
+  }
+  return variants;
+}
+
 std::vector<DatasetMap> select_maps(const std::vector<DatasetMap>& maps, const std::vector<std::string>& names) {
   if (names.empty()) return maps;
   std::vector<DatasetMap> selected;

@@ -44,7 +44,7 @@ const std::vector<DatasetOption>& dataset_options() {
     const DatasetArguments defaults;
     return std::vector<DatasetOption>{
         {"dataset", "DIR", "Bormann-format dataset folder (default " + defaults.dataset + ")", false},
-        {"variant", "V", "plain, furnished or all (default all)", false},
+        {"variant", "V", "plain, furnished or all (default: those the folder has)", false},
         {"map", "NAME", "run only the named maps (one or more; default all)", true},
         {"csv", "FILE", "also write the per-image results to FILE as CSV", false},
         {"concavity", "M", "maximum concavity tau in metres (default " + number(defaults.run.segment.concavity) + ")",
@@ -56,6 +56,12 @@ const std::vector<DatasetOption>& dataset_options() {
         {"no-merge", "", "no merging of pieces into rooms", false},
         {"no-simplify", "", "decompose the exact pixel-edge polygons", false},
         {"cover-obstacles", "", "rooms also label the obstacles they absorbed (furniture)", false},
+        {"no-clean", "", "decompose the free space as it is (no removal of ray fans, slivers and specks)", false},
+        {"fixed-thresholds", "", "plain images: grey > 250 free, < 50 occupied (no palette detection)", false},
+        {"no-width-steps", "", "merge a room into a much wider space it opens onto (no width-step rule)", false},
+        {"no-furniture-rule", "", "cuts that end on furniture-sized obstacles may separate rooms", false},
+        {"resolution", "M", "metres per cell of images without a YAML (default " + number(defaults.run.load.resolution) + ")",
+         false},
         {"oversegment", "F", "with merging, DuDe cuts at F x tau, 0 < F <= 1 (default " +
                                   number(defaults.run.segment.oversegment) + ")", false},
     };
@@ -68,6 +74,7 @@ void apply_dataset_option(DatasetArguments& arguments, const std::string& name, 
     if (value.empty()) throw Error("--dataset needs a folder");
     arguments.dataset = value;
   } else if (name == "variant") {
+    arguments.variant_given = true;
     if (value == "all") {
       arguments.run.variants = {Variant::kPlain, Variant::kFurnished};
     } else if (value == "plain" || value == "furnished") {
@@ -99,6 +106,16 @@ void apply_dataset_option(DatasetArguments& arguments, const std::string& name, 
     arguments.run.segment.simplify = 0.0;
   } else if (name == "cover-obstacles") {
     arguments.run.segment.labels.cover_absorbed_obstacles = true;
+  } else if (name == "no-clean") {
+    arguments.run.segment.clean = false;
+  } else if (name == "fixed-thresholds") {
+    arguments.run.load.detect_palette = false;
+  } else if (name == "no-width-steps") {
+    arguments.run.segment.merge.step_ratio = 0.0;
+  } else if (name == "no-furniture-rule") {
+    arguments.run.segment.merge.furniture_size = 0.0;
+  } else if (name == "resolution") {
+    arguments.run.load.resolution = parse_positive_metres(name, value);
   } else if (name == "oversegment") {
     std::size_t used = 0;
     double factor = 0.0;
@@ -162,7 +179,7 @@ std::string method_name(const SegmentOptions& options) {
   if (!options.decompose) return "trivial (one room per component)";
   std::string name = "topocut (tau " + number(options.concavity) + " m";
   if (!options.doors.enabled && !options.merge.enabled && options.simplify == 0.0 &&
-      !options.labels.cover_absorbed_obstacles) {
+      !options.labels.cover_absorbed_obstacles && !options.clean) {
     name += ", parity";
   } else {
     if (!options.doors.enabled) name += ", no doors";
@@ -170,6 +187,9 @@ std::string method_name(const SegmentOptions& options) {
     if (!options.merge.enabled) name += ", no merge";
     if (options.simplify == 0.0) name += ", no simplify";
     if (options.labels.cover_absorbed_obstacles) name += ", obstacles covered";
+    if (!options.clean) name += ", no cleaning";
+    if (options.merge.enabled && options.merge.step_ratio == 0.0) name += ", no width steps";
+    if (options.merge.enabled && options.merge.furniture_size == 0.0) name += ", no furniture rule";
     if (options.merge.enabled && options.oversegment != SegmentOptions{}.oversegment)
       name += ", DuDe at " + number(options.oversegment) + " tau";
   }

@@ -11,6 +11,7 @@
 #include <unistd.h>
 
 #include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
 
 namespace {
 
@@ -181,6 +182,44 @@ TEST_F(EvaluateCli, AFailingImageIsAFailureRowAndANonZeroExit) {
   EXPECT_NE(run.out.find("FAILED"), std::string::npos) << run.out;
   EXPECT_NE(run.err.find("1 of 4 images failed"), std::string::npos) << run.err;
   EXPECT_NE(slurp(csv).find("open,furnished,,,,,"), std::string::npos) << slurp(csv);
+}
+
+}  // namespace
+
+namespace {
+
+TEST_F(EvaluateCli, AFolderWithoutFurnishedImagesJustWorks) {
+  const fs::path data = make_dataset();
+  for (const char* name : {"closed", "open"}) fs::remove(data / (std::string(name) + "_furnitures.png"));
+  const Outcome run = evaluate("--dataset '" + data.string() + "' --csv '" + (dir_ / "r.csv").string() + "'");
+  EXPECT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_EQ(run.out.find("FAILED"), std::string::npos) << run.out;
+  EXPECT_EQ(count_lines(slurp(dir_ / "r.csv")), 3u);  // header + two plain images
+  // Asked for explicitly, the missing variant still fails (the user asked for it).
+  EXPECT_NE(evaluate("--dataset '" + data.string() + "' --variant furnished").exit_code, 0);
+}
+
+TEST_F(EvaluateCli, MapsWithoutGroundTruthGiveTheirDefects) {
+  const fs::path maps = dir_ / "maps";
+  fs::create_directories(maps);
+  cv::Mat map(80, 120, CV_8UC1, cv::Scalar(205));  // map_server palette: 205 unknown
+  cv::rectangle(map, cv::Rect(9, 9, 102, 62), cv::Scalar(0), cv::FILLED);
+  map(cv::Rect(10, 10, 100, 60)).setTo(254);
+  ASSERT_TRUE(cv::imwrite((maps / "home.pgm").string(), map));
+  ASSERT_TRUE(cv::imwrite((maps / "lab.png").string(), map));
+  std::ofstream(maps / "home.yaml") << "image: home.pgm\nresolution: 0.05\norigin: [0, 0, 0]\n";
+  const fs::path csv = dir_ / "d.csv";
+  const Outcome run = evaluate("--maps '" + maps.string() + "' --floor-repetitions 1 --csv '" + csv.string() + "'");
+  EXPECT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_NE(run.out.find("home.yaml"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("lab.png"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("2 maps, 2 rooms: 0 thin, 0 specks"), std::string::npos) << run.out;
+  const std::string table = slurp(csv);
+  EXPECT_EQ(table.substr(0, table.find('\n')), "map,width,height,rooms,thin,specks,time_ms,floor_ms");
+  EXPECT_EQ(count_lines(table), 3u);
+  const Outcome missing = evaluate("--maps '" + (dir_ / "nowhere").string() + "'");
+  EXPECT_NE(missing.exit_code, 0);
+  EXPECT_EQ(count_lines(missing.err), 1u) << missing.err;
 }
 
 }  // namespace

@@ -61,7 +61,7 @@ TEST(DatasetOptions, EveryOptionIsInTheHelpAndAccepted) {
     EXPECT_NE(help.find("--" + option.name), std::string::npos) << option.name;
     DatasetArguments arguments;
     const std::string value = option.name == "variant"                                   ? "plain"
-                              : option.name == "concavity" || option.name == "oversegment" ? "1"
+                              : option.name == "concavity" || option.name == "oversegment" || option.name == "resolution" ? "1"
                                                                                           : "x";
     EXPECT_NO_THROW(apply_dataset_option(arguments, option.name, option.value_name.empty() ? "" : value))
         << option.name;
@@ -97,6 +97,28 @@ TEST(DatasetOptions, SegmenterSwitchesReachTheOptionsAndTheMethodName) {
   apply_dataset_option(other, "oversegment", "1");
   EXPECT_EQ(other.run.segment.oversegment, 1.0);
   EXPECT_THROW(apply_dataset_option(other, "oversegment", "2"), Error);
+}
+
+}  // namespace
+}  // namespace topocut
+
+namespace topocut {
+namespace {
+
+TEST(DatasetOptions, RealMapSwitchesAndResolution) {
+  const DatasetArguments a = parse_dataset_arguments(
+      {"--no-clean", "--fixed-thresholds", "--no-width-steps", "--no-furniture-rule", "--resolution", "0.1"});
+  EXPECT_FALSE(a.run.segment.clean);
+  EXPECT_FALSE(a.run.load.detect_palette);
+  EXPECT_EQ(a.run.segment.merge.step_ratio, 0.0);
+  EXPECT_EQ(a.run.segment.merge.furniture_size, 0.0);
+  EXPECT_DOUBLE_EQ(a.run.load.resolution, 0.1);
+  EXPECT_FALSE(a.variant_given);
+  EXPECT_TRUE(parse_dataset_arguments({"--variant", "plain"}).variant_given);
+  EXPECT_THROW(parse_dataset_arguments({"--resolution", "0"}), Error);
+  // The method name tells each switch apart from the defaults.
+  EXPECT_NE(method_name(a.run.segment).find("no cleaning"), std::string::npos);
+  EXPECT_NE(method_name(a.run.segment).find("no width steps"), std::string::npos);
 }
 
 }  // namespace

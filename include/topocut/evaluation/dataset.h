@@ -38,6 +38,10 @@ struct DatasetMap {
 // Throws Error if the folder does not exist, is not a directory, or holds no map.
 std::vector<DatasetMap> discover_dataset(const std::string& folder);
 
+// The variants of which at least one map of the folder has its image file, in the order plain,
+// furnished: a folder of plain maps only (the sketches, raw SLAM maps) is evaluated as such.
+std::vector<Variant> present_variants(const std::vector<DatasetMap>& maps);
+
 // Keeps the maps named in names, in the order given (all maps when names is empty). Throws Error
 // naming an unknown map and listing the known ones.
 std::vector<DatasetMap> select_maps(const std::vector<DatasetMap>& maps, const std::vector<std::string>& names);

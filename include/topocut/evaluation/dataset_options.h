@@ -13,6 +13,7 @@ namespace topocut {
 struct DatasetArguments {
   std::string dataset = "../shared/datasets/bormann";  // relative to the current directory
   std::string csv;                                     // CSV output path; empty: none
+  bool variant_given = false;                          // --variant was given (else: the folder's variants)
   DatasetRunOptions run;
 };
 

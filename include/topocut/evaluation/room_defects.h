@@ -1,0 +1,80 @@
+#pragma once
+// Judging a segmentation without ground truth: rooms no person would draw. A 'thin' room (at least
+// thin_min_area, yet less than thin_share of it survives a morphological opening with a disc of
+// thin_disc diameter) is a laser-ray fan, a sliver along a wall or a strip; a 'speck' room
+// (speck_min_area to speck_max_area) is a scrap of free space. DESIGN.md, "Beyond Bormann".
+#include <functional>
+#include <string>
+#include <vector>
+
+#include <opencv2/core.hpp>
+
+#include "topocut/io/map_loader.h"
+#include "topocut/segmentation/segmenter.h"
+
+namespace topocut {
+
+struct DefectOptions {
+  double thin_min_area = 1.0;   // m²
+  double thin_disc = 0.6;       // m, diameter of the opening's disc
+  double thin_share = 0.5;      // a room is thin when less than this share survives the opening
+  double speck_min_area = 0.1;  // m²
+  double speck_max_area = 1.0;  // m² (exclusive)
+};
+
+struct RoomDefects {
+  int rooms = 0;   // distinct labels > 0
+  int thin = 0;
+  int specks = 0;
+};
+
+// Counts the rooms, thin rooms and speck rooms of a label image (single-channel integer labels,
+// 0 = no room) at the given resolution (metres per cell). The disc has an odd diameter of
+// 2 * round(thin_disc / 2 / resolution) + 1 cells. Throws Error on a bad image or resolution.
+RoomDefects count_room_defects(const cv::Mat& labels, double resolution, const DefectOptions& options = {});
+
+// A map of a folder without ground truth.
+struct MapFile {
+  std::string name;  // file name without its folder
+  std::string path;
+};
+
+// The maps of a folder: every ROS map_server YAML, and every image (png, pgm, ppm, jpg, jpeg, bmp,
+// tif, tiff) that no YAML of the folder names and that is no ground truth (*_gt_segmentation.*),
+// sorted by name. Throws Error if the folder does not exist or holds no map.
+std::vector<MapFile> discover_map_files(const std::string& folder);
+
+struct MapDefectResult {
+  std::string map;
+  bool ok = false;
+  std::string error;
+  int width = 0, height = 0;
+  RoomDefects defects;
+  double time_ms = 0.0;   // load + segment, the whole job
+  double floor_ms = 0.0;  // the contour floor of the same image (0 when not measured)
+};
+
+struct MapFolderOptions {
+  SegmentOptions segment;
+  MapLoadOptions load;    // plain images use load.resolution
+  DefectOptions defects;
+  int floor_repetitions = 0;  // 0: do not measure the contour floor
+  std::function<void(const std::string&)> progress;  // one line per map; may be empty
+};
+
+// Segments every map (load + segment timed together), counts its defects and, if asked, measures its
+// contour floor. A map that fails becomes a failed result; never throws for a single map.
+std::vector<MapDefectResult> run_map_files(const std::vector<MapFile>& maps, const MapFolderOptions& options);
+
+// The least work any contour-based segmenter must do on an image file, in milliseconds (median of
+// repetitions): decode it as grey, threshold at free_min, cv::findContours. A YAML's image is used
+// for a YAML. Throws Error if the image cannot be read.
+double contour_floor_ms(const std::string& path, int free_min, int repetitions);
+
+// The per-map table (Markdown) and the totals line: map, size, rooms, thin, specks, ms, floor, ratio.
+std::string format_defects_table(const std::vector<MapDefectResult>& results);
+
+// CSV: map,width,height,rooms,thin,specks,time_ms,floor_ms (a failed map leaves the numbers empty).
+std::string defects_csv(const std::vector<MapDefectResult>& results);
+
+}  // namespace topocut

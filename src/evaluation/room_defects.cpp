@@ -1,0 +1,227 @@
+#include "topocut/evaluation/room_defects.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <map>
+#include <set>
+
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
+
+#include "topocut/core/error.h"
+#include "topocut/evaluation/dataset_report.h"
+#include "topocut/io/atomic_file.h"
+
+namespace topocut {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct RoomExtent {
+  cv::Rect box;
+  long long cells = 0;
+};
+
+std::map<int, RoomExtent> room_extents(const cv::Mat& labels) {
+  std::map<int, RoomExtent> rooms;
+  for (int r = 0; r < labels.rows; ++r) {
+    const int* row = labels.ptr<int>(r);
+    for (int c = 0; c < labels.cols; ++c) {
+      if (row[c] <= 0) continue;
+      RoomExtent& room = rooms[row[c]];
+      room.box = room.cells == 0 ? cv::Rect(c, r, 1, 1) : (room.box | cv::Rect(c, r, 1, 1));
+      ++room.cells;
+    }
+  }
+  return rooms;
+}
+
+// Cells of the room that survive an opening with the disc, computed in a window around the room.
+long long opened_cells(const cv::Mat& labels, int id, const cv::Rect& box, const cv::Mat& disc) {
+  const int pad = disc.cols;
+  const cv::Rect window = cv::Rect(box.x - pad, box.y - pad, box.width + 2 * pad, box.height + 2 * pad) &
+                          cv::Rect(0, 0, labels.cols, labels.rows);
+  cv::Mat room = labels(window) == id, opened;
+  cv::morphologyEx(room, opened, cv::MORPH_OPEN, disc, cv::Point(-1, -1), 1, cv::BORDER_CONSTANT, cv::Scalar(0));
+  return cv::countNonZero(opened);
+}
+
+std::string lower(std::string s) {
+  for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return s;
+}
+
+bool is_image_name(const std::string& name) {
+  static const std::set<std::string> extensions{".png", ".pgm", ".ppm", ".jpg", ".jpeg", ".bmp", ".tif", ".tiff"};
+  return extensions.count(lower(fs::path(name).extension().string())) > 0;
+}
+
+std::string fixed(double value, int decimals) {
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, "%.*f", decimals, value);
+  return buffer;
+}
+
+double elapsed_ms(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+MapDefectResult run_one(const MapFile& map, const MapFolderOptions& options) {
+  MapDefectResult result;
+  result.map = map.name;
+  try {
+    const auto start = std::chrono::steady_clock::now();
+    const OccupancyGrid grid = load_map(map.path, options.load);
+    const Segmentation segmentation = segment(grid, options.segment);
+    result.time_ms = elapsed_ms(start);
+    result.width = grid.width();
+    result.height = grid.height();
+    result.defects = count_room_defects(segmentation.labels, grid.resolution, options.defects);
+    if (options.floor_repetitions > 0)
+      result.floor_ms = contour_floor_ms(map.path, options.load.free_min, options.floor_repetitions);
+    result.ok = true;
+  } catch (const std::exception& e) {
+    result.error = e.what();
+  }
+  return result;
+}
+
+}  // namespace
+
+RoomDefects count_room_defects(const cv::Mat& labels, double resolution, const DefectOptions& options) {
+  if (labels.empty() || labels.channels() != 1) throw Error("the label image must be a non-empty single-channel image");
+  if (!std::isfinite(resolution) || resolution <= 0.0) throw Error("the resolution must be a positive number of metres");
+  cv::Mat ids;
+  labels.convertTo(ids, CV_32S);
+  const double cell_area = resolution * resolution;
+  const int radius = static_cast<int>(std::lround(options.thin_disc / 2.0 / resolution));
+  const cv::Mat disc = cv::getStructuringElement(cv::MORPH_ELLIPSE, {2 * radius + 1, 2 * radius + 1});
+  RoomDefects defects;
+  for (const auto& [id, room] : room_extents(ids)) {
+    ++defects.rooms;
+    const double area = static_cast<double>(room.cells) * cell_area;
+    if (area >= options.speck_min_area && area < options.speck_max_area) ++defects.specks;
+    if (area >= options.thin_min_area &&
+        static_cast<double>(opened_cells(ids, id, room.box, disc)) < options.thin_share * static_cast<double>(room.cells))
+      ++defects.thin;
+  }
+  return defects;
+}
+
+std::vector<MapFile> discover_map_files(const std::string& folder) {
+  std::error_code ec;
+  if (!fs::is_directory(folder, ec)) throw Error("map folder '" + folder + "' does not exist or is not a folder");
+  std::vector<MapFile> maps;
+  std::set<std::string> named_by_yaml, images;
+  for (const fs::directory_entry& entry : fs::directory_iterator(folder)) {
+    if (!entry.is_regular_file(ec)) continue;
+    const std::string name = entry.path().filename().string();
+    if (is_yaml_path(name)) {
+      maps.push_back({name, entry.path().string()});
+      try {
+        named_by_yaml.insert(fs::path(parse_ros_map_yaml(read_file(entry.path().string()), name).image).filename().string());
+      } catch (const Error&) {
+        // A broken YAML fails as a map of its own.
+      }
+    } else if (is_image_name(name) && name.find("_gt_segmentation.") == std::string::npos) {
+      images.insert(name);
+    }
+  }
+  for (const std::string& name : images) {
+    if (!named_by_yaml.count(name)) maps.push_back({name, (fs::path(folder) / name).string()});
+  }
+  std::sort(maps.begin(), maps.end(), [](const MapFile& a, const MapFile& b) { return a.name < b.name; });
+  if (maps.empty()) throw Error("map folder '" + folder + "' holds no map (no YAML and no image)");
+  return maps;
+}
+
+std::vector<MapDefectResult> run_map_files(const std::vector<MapFile>& maps, const MapFolderOptions& options) {
+  std::vector<MapDefectResult> results;
+  for (std::size_t i = 0; i < maps.size(); ++i) {
+    results.push_back(run_one(maps[i], options));
+    const MapDefectResult& r = results.back();
+    if (options.progress) {
+      const std::string head = "[" + std::to_string(i + 1) + "/" + std::to_string(maps.size()) + "] " + r.map + ": ";
+      options.progress(r.ok ? head + std::to_string(r.defects.rooms) + " rooms, " + std::to_string(r.defects.thin) +
+                                  " thin, " + std::to_string(r.defects.specks) + " specks, " + fixed(r.time_ms, 0) + " ms"
+                            : head + "FAILED: " + r.error);
+    }
+  }
+  return results;
+}
+
+double contour_floor_ms(const std::string& path, int free_min, int repetitions) {
+  std::string image_path = path;
+  if (is_yaml_path(path)) {
+    fs::path image = parse_ros_map_yaml(read_file(path), path).image;
+    if (image.is_relative()) image = fs::path(path).parent_path() / image;
+    image_path = image.string();
+  }
+  std::vector<double> times;
+  for (int i = 0; i < std::max(1, repetitions); ++i) {
+    const auto start = std::chrono::steady_clock::now();
+    const cv::Mat image = cv::imread(image_path, cv::IMREAD_GRAYSCALE);
+    if (image.empty()) throw Error("cannot read '" + image_path + "' as an image");
+    cv::Mat free;
+    cv::threshold(image, free, free_min, 255, cv::THRESH_BINARY);
+    std::vector<std::vector<cv::Point>> contours;
+    std::vector<cv::Vec4i> hierarchy;
+    cv::findContours(free, contours, hierarchy, cv::RETR_CCOMP, cv::CHAIN_APPROX_SIMPLE);
+    times.push_back(elapsed_ms(start));
+  }
+  return time_statistics(times).median;
+}
+
+std::string format_defects_table(const std::vector<MapDefectResult>& results) {
+  std::vector<std::vector<std::string>> rows{{"map", "cells", "rooms", "thin", "specks", "ms", "floor ms", "ms / floor"}};
+  RoomDefects total;
+  std::vector<double> ratios;
+  int failed = 0;
+  for (const MapDefectResult& r : results) {
+    if (!r.ok) {
+      ++failed;
+      rows.push_back({r.map, "-", "-", "-", "-", "FAILED: " + r.error, "-", "-"});
+      continue;
+    }
+    total.rooms += r.defects.rooms;
+    total.thin += r.defects.thin;
+    total.specks += r.defects.specks;
+    const bool floor = r.floor_ms > 0.0;
+    if (floor) ratios.push_back(r.time_ms / r.floor_ms);
+    rows.push_back({r.map, std::to_string(r.width) + " x " + std::to_string(r.height), std::to_string(r.defects.rooms),
+                    std::to_string(r.defects.thin), std::to_string(r.defects.specks), fixed(r.time_ms, 1),
+                    floor ? fixed(r.floor_ms, 2) : "-", floor ? fixed(r.time_ms / r.floor_ms, 1) : "-"});
+  }
+  const double share = total.rooms > 0 ? 100.0 * (total.thin + total.specks) / total.rooms : 0.0;
+  std::string text = markdown_table(rows) + "\n" + std::to_string(results.size() - failed) + " maps, " +
+                     std::to_string(total.rooms) + " rooms: " + std::to_string(total.thin) + " thin, " +
+                     std::to_string(total.specks) + " specks (" + fixed(share, 1) + " % of the rooms)";
+  if (!ratios.empty()) {
+    const TimeStatistics ratio = time_statistics(ratios);
+    text += "; ms / floor median " + fixed(ratio.median, 1) + ", max " + fixed(ratio.max, 1);
+  }
+  if (failed > 0) text += "; " + std::to_string(failed) + " failed";
+  return text + "\n";
+}
+
+std::string defects_csv(const std::vector<MapDefectResult>& results) {
+  std::string csv = "map,width,height,rooms,thin,specks,time_ms,floor_ms\n";
+  for (const MapDefectResult& r : results) {
+    csv += r.map;
+    if (r.ok) {
+      csv += "," + std::to_string(r.width) + "," + std::to_string(r.height) + "," + std::to_string(r.defects.rooms) + "," +
+             std::to_string(r.defects.thin) + "," + std::to_string(r.defects.specks) + "," + fixed(r.time_ms, 3) + "," +
+             (r.floor_ms > 0.0 ? fixed(r.floor_ms, 3) : "");
+    } else {
+      csv += ",,,,,,,";
+    }
+    csv += "\n";
+  }
+  return csv;
+}
+
+}  // namespace topocut
