@@ -43,6 +43,9 @@ int run(const std::vector<std::string>& args) {
   SegmentOptions options;
   MapLoadOptions load;
   bool trivial = false, parity = false, no_doors = false, no_openings = false, no_merge = false, no_simplify = false;
+  bool no_clean = false, fixed_thresholds = false;
+  std::string out_clean;
+  bool no_width_steps = false, no_furniture_rule = false;
   po::options_description described("Segmentation");
   described.add_options()
       ("map", po::value<std::string>(&map_path)->required(), "map: ROS map_server YAML, or an image (PNG, PGM, ...)")
@@ -70,26 +73,39 @@ int run(const std::vector<std::string>& args) {
        "free-space components smaller than this (m²) are not rooms; their cells join the nearest room")
       ("min-hole-area", po::value<double>(&options.contours.min_hole_area)->default_value(options.contours.min_hole_area),
        "obstacles inside free space smaller than this (m²) are ignored by the decomposition")
+      ("no-clean", po::bool_switch(&no_clean),
+       "decompose the free space as it is: keep laser-ray fans, slivers, free and obstacle specks")
+      ("fixed-thresholds", po::bool_switch(&fixed_thresholds),
+       "plain images: use --free-threshold and --occupied-threshold instead of reading the palette from the image")
       ("free-threshold", po::value<int>(&load.free_min)->default_value(load.free_min),
-       "plain images: grey values above this are free")
+       "plain images with --fixed-thresholds (or no readable palette): grey values above this are free")
       ("occupied-threshold", po::value<int>(&load.occupied_max)->default_value(load.occupied_max),
-       "plain images: grey values below this are occupied (between the two: unknown)")
+       "plain images with --fixed-thresholds: grey values below this are occupied (between the two: unknown)")
       ("out-labels", po::value<std::string>(&out_labels), "write the room labels as a 16-bit PNG (0 = no room, rooms 1..N)")
       ("out-color", po::value<std::string>(&out_color), "write a colour overlay of the rooms over the map (PNG, JPEG, ...)")
       ("out-json", po::value<std::string>(&out_json), "write rooms and passages as JSON (metres)")
-      ("out-svg", po::value<std::string>(&out_svg), "write rooms and passages as SVG (metres)");
+      ("out-svg", po::value<std::string>(&out_svg), "write rooms and passages as SVG (metres)")
+      ("no-width-steps", po::bool_switch(&no_width_steps),
+       "merge a room into a much wider space it opens onto across its whole width (no width-step rule)")
+      ("no-furniture-rule", po::bool_switch(&no_furniture_rule),
+       "cuts that end on furniture-sized obstacles (at most 2.5 m a side) may separate rooms")
+      ("out-clean", po::value<std::string>(&out_clean),
+       "write the map as the segmenter saw it (PNG): free, occupied, unknown, and what the cleaning removed in colour");
   po::positional_options_description positional;
   positional.add("map", 1);
   const auto vm = parse_options(
       "topocut segment MAP [options]",
-      "Segments the free space of a map into rooms: free space -> polygons with holes -> door cuts\n"
+      "Segments the free space of a map into rooms: free space -> cleaning (laser-ray fans, slivers\n"
+      "and specks out, obstacle specks in; --out-clean shows it) -> polygons with holes -> door cuts\n"
       "(narrow passages, and openings where a thin wall stops short) -> dual-space decomposition\n"
       "(DuDe) of each part with maximum concavity tau -> pieces merged across cuts that are not\n"
-      "door-like -> rooms, and passages between them (the room graph). Every free cell gets a room;\n"
-      "obstacles and unknown cells get none (absorbed obstacles too with --cover-obstacles).\n"
+      "door-like (and not width steps) -> rooms, and passages between them (the room graph). Every\n"
+      "free cell inside the building gets a room; obstacles, unknown cells and free cells the\n"
+      "cleaning put outside the building get none (absorbed obstacles get one with --cover-obstacles).\n"
       "--parity runs the reference behaviour (DuDe's pieces are the rooms).\n"
-      "A ROS map_server YAML supplies its own resolution, origin and thresholds; for a plain image,\n"
-      "grey > --free-threshold is free, < --occupied-threshold occupied, and transparency is unknown.\n"
+      "A ROS map_server YAML supplies its own resolution, origin and thresholds; for a plain image\n"
+      "the palette is read from the image (free: the brightest grey; unknown: the grey covering the\n"
+      "border; occupied: the darkest other grey; transparency is unknown) unless --fixed-thresholds.\n"
       "Prints a summary (rooms, passages, time) and writes each requested output atomically.\n\n"
       "Example:\n  topocut segment maps/floorplan.yaml --out-color rooms.png --out-json rooms.json",
       described, positional, args);
@@ -105,7 +121,8 @@ int run(const std::vector<std::string>& args) {
   if (load.free_min < 0 || load.free_min > 255 || load.occupied_max < 0 || load.occupied_max > 255)
     throw UsageError("--free-threshold and --occupied-threshold must lie in 0..255");
   if (load.occupied_max > load.free_min) throw UsageError("--occupied-threshold must not exceed --free-threshold");
-  if (parity && (no_doors || no_openings || no_merge || no_simplify || options.labels.cover_absorbed_obstacles))
+  if (parity && (no_doors || no_openings || no_merge || no_simplify || options.labels.cover_absorbed_obstacles || no_clean ||
+                 no_width_steps || no_furniture_rule))
     throw UsageError("--parity already switches every improvement off; give it alone");
   if (parity) {
     const SegmentOptions reference = parity_segment_options(options.concavity);
@@ -113,20 +130,27 @@ int run(const std::vector<std::string>& args) {
     options.merge = reference.merge;
     options.simplify = reference.simplify;
     options.labels = reference.labels;
+    options.clean = reference.clean;
+    if (vm->at("min-room-area").defaulted()) options.contours.min_component_area = reference.contours.min_component_area;
   }
   if (no_doors) options.doors.enabled = false;
   if (no_openings) options.doors.extend_walls = false;
   if (no_merge) options.merge.enabled = false;
   if (no_simplify) options.simplify = 0.0;
+  if (no_clean) options.clean = false;
+  if (fixed_thresholds || !vm->at("free-threshold").defaulted() || !vm->at("occupied-threshold").defaulted())
+    load.detect_palette = false;
   options.decompose = !trivial;
   load.resolution = resolution;
+  if (no_width_steps) options.merge.step_ratio = 0.0;
+  if (no_furniture_rule) options.merge.furniture_size = 0.0;
 
   // Every output is checked before the work starts, so a typo costs no time and leaves nothing behind.
   std::set<std::string> seen;
-  for (const std::string* path : {&out_labels, &out_color, &out_json, &out_svg}) {
-    if (vm->count(path == &out_labels ? "out-labels" : path == &out_color ? "out-color" : path == &out_json ? "out-json" : "out-svg") &&
-        path->empty())
-      throw UsageError("an output option was given an empty file name");
+  const std::pair<const char*, const std::string*> outputs[] = {
+      {"out-labels", &out_labels}, {"out-color", &out_color}, {"out-json", &out_json}, {"out-svg", &out_svg}, {"out-clean", &out_clean}};
+  for (const auto& [option, path] : outputs) {
+    if (vm->count(option) && path->empty()) throw UsageError("--" + std::string(option) + " was given an empty file name");
     if (path->empty()) continue;
     std::error_code ec;
     std::string canonical = std::filesystem::weakly_canonical(*path, ec).string();
@@ -138,13 +162,18 @@ int run(const std::vector<std::string>& args) {
     throw Error("the label image '" + out_labels + "' must be a .png file (16-bit PNG)");
   if (!out_color.empty() && !cv::haveImageWriter(out_color))
     throw Error("cannot write the overlay '" + out_color + "': unknown image format (use .png or .jpg)");
+  if (!out_clean.empty() && lower_extension(out_clean) != ".png")
+    throw Error("the cleaned map '" + out_clean + "' must be a .png file");
 
   const auto start = std::chrono::steady_clock::now();
-  const OccupancyGrid grid = load_map(map_path, load);
+  std::string palette;
+  const OccupancyGrid grid = load_map(map_path, load, &palette);
   const auto loaded = std::chrono::steady_clock::now();
-  const Segmentation segmentation = segment(grid, options);
+  SegmentationInput input;
+  const Segmentation segmentation = segment(grid, options, out_clean.empty() ? nullptr : &input);
   const auto done = std::chrono::steady_clock::now();
 
+  if (!out_clean.empty()) write_image_atomically(out_clean, render_cleaned_map(grid.cells, input.cleaned));
   if (!out_labels.empty()) write_label_image(out_labels, segmentation.labels);
   if (!out_color.empty()) write_overlay(out_color, grid, segmentation);
   if (!out_json.empty()) write_rooms_json(out_json, segmentation);
@@ -156,19 +185,21 @@ int run(const std::vector<std::string>& args) {
           << segmentation.rooms.size() << (segmentation.rooms.size() == 1 ? " room, " : " rooms, ")
           << segmentation.passages.size() << (segmentation.passages.size() == 1 ? " passage" : " passages") << " ("
           << (trivial ? "trivial: one room per component"
-                      : std::string(parity ? "DuDe pieces, parity" : "doors + DuDe + merging") + ", concavity " + [&] {
+                      : std::string(parity ? "DuDe pieces, parity" : options.clean ? "cleaning + doors + DuDe + merging" : "doors + DuDe + merging") + ", concavity " + [&] {
                           std::ostringstream t;
                           t << options.concavity;
                           return t.str();
                         }() + " m")
           << ") in " << std::fixed << std::setprecision(1) << ms(loaded, done) << " ms (loading " << ms(start, loaded)
           << " ms)\n" << std::defaultfloat;
+  summary << "map cells: " << palette << "\n";
   if (is_yaml_path(map_path) && !vm->at("resolution").defaulted())
     summary << "note: --resolution is ignored, the YAML gives " << grid.resolution << " m\n";
   if (!out_labels.empty()) summary << "wrote labels:  " << out_labels << " (16-bit PNG, 0 = no room, rooms 1.." << segmentation.rooms.size() << ")\n";
   if (!out_color.empty()) summary << "wrote overlay: " << out_color << "\n";
   if (!out_json.empty()) summary << "wrote JSON:    " << out_json << "\n";
   if (!out_svg.empty()) summary << "wrote SVG:     " << out_svg << "\n";
+  if (!out_clean.empty()) summary << "wrote cleaned map: " << out_clean << "\n";
   std::cout << summary.str() << std::flush;
   return 0;
 }

@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 #include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
 
 #include "io/temp_dir.h"
 
@@ -213,6 +214,43 @@ TEST(SegmentCli, UnwritableOutputsFailBeforeAnyWork) {
   expect_error(run(dir, {map, "--out-color", dir.file("c.unknown")}), "format");
   expect_error(run(dir, {map, "--out-json", dir.file("x.json"), "--out-svg", dir.file("x.json")}), "two outputs");
   EXPECT_EQ(files_in(dir), 0u);  // nothing written, not even the good output
+}
+
+}  // namespace
+
+namespace {
+
+TEST(SegmentCli, OutCleanShowsTheMapAsTheSegmenterSawIt) {
+  TempDir dir;
+  // A SLAM-style image: light-grey unknown (230), grey walls (127), a 5 m room with a window in its
+  // top wall and laser rays fanning out of it.
+  cv::Mat map(200, 200, CV_8UC1, cv::Scalar(230));
+  cv::rectangle(map, cv::Rect(48, 78, 104, 104), cv::Scalar(127), cv::FILLED);
+  map(cv::Rect(50, 80, 100, 100)).setTo(255);
+  map(cv::Rect(90, 78, 20, 2)).setTo(255);
+  for (int k = -2; k <= 2; ++k)
+    for (int t = 1; t <= 60; ++t) map.at<unsigned char>(78 - t, 100 + k * t / 4) = 255;
+  ASSERT_TRUE(cv::imwrite(dir.file("slam.png"), map));
+  const Result r = run(dir, {dir.file("slam.png"), "--out-clean", dir.file("clean.png"), "--out-labels", dir.file("l.png")});
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("map cells: free 255, unknown 230, occupied 127 (detected)"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("wrote cleaned map: " + dir.file("clean.png")), std::string::npos) << r.out;
+  const cv::Mat clean = cv::imread(dir.file("clean.png"), cv::IMREAD_COLOR);
+  ASSERT_EQ(clean.size(), map.size());
+  EXPECT_EQ(clean.at<cv::Vec3b>(100, 100), cv::Vec3b(255, 255, 255));  // floor
+  EXPECT_EQ(clean.at<cv::Vec3b>(80, 48), cv::Vec3b(0, 0, 0));          // wall
+  EXPECT_EQ(clean.at<cv::Vec3b>(5, 5), cv::Vec3b(160, 160, 160));      // unknown
+  EXPECT_EQ(clean.at<cv::Vec3b>(78 - 50, 100), cv::Vec3b(40, 40, 220)); // a ray, outside
+  const cv::Mat labels = cv::imread(dir.file("l.png"), cv::IMREAD_UNCHANGED);
+  EXPECT_EQ(labels.at<unsigned short>(78 - 50, 100), 0);
+  // Without the cleaning the rays are room space, and --out-clean draws the grid alone.
+  const Result raw = run(dir, {dir.file("slam.png"), "--no-clean", "--out-clean", dir.file("raw.png"), "--out-labels", dir.file("r.png")});
+  ASSERT_EQ(raw.code, 0) << raw.err;
+  EXPECT_NE(cv::imread(dir.file("r.png"), cv::IMREAD_UNCHANGED).at<unsigned short>(78 - 50, 100), 0);
+  EXPECT_EQ(cv::imread(dir.file("raw.png"), cv::IMREAD_COLOR).at<cv::Vec3b>(78 - 50, 100), cv::Vec3b(255, 255, 255));
+  // A non-PNG cleaned map is refused before any work.
+  const Result bad = run(dir, {dir.file("slam.png"), "--out-clean", dir.file("clean.jpg")});
+  EXPECT_NE(bad.code, 0);
 }
 
 }  // namespace

@@ -1,0 +1,236 @@
+// Map suite benchmark: one set of segmenter options on every kind of map at once (DESIGN.md, "Beyond
+// Bormann"): the 20 Bormann maps (plain and furnished), the hand-drawn sketches scored against each of
+// their two annotators, the raw SLAM maps registered onto Bormann's ground truth, and the real robot
+// maps without ground truth (thin and speck rooms). Prints one table per set and a summary with the
+// targets of the issue "Rooms on the maps real robots make", so an idea is judged on all sets together.
+//
+// Usage: map_suite_benchmark [evaluate's segmenter options] [--details] [--floor-repetitions N]
+//                            [--threads N] [--shared DIR]
+//   --details              also print the per-image tables
+//   --floor-repetitions N  measure each image's contour floor N times (default 5; 0: no times)
+//   --threads N            run the sets on N threads (default 1; times are only meaningful with 1)
+//   --shared DIR           the shared folder holding datasets/ (default: the source tree's ../shared)
+#include <sys/resource.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <exception>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <iostream>
+#include <mutex>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "topocut/core/allocator.h"
+#include "topocut/core/error.h"
+#include "topocut/evaluation/dataset.h"
+#include "topocut/evaluation/dataset_options.h"
+#include "topocut/evaluation/dataset_report.h"
+#include "topocut/evaluation/room_defects.h"
+
+namespace {
+
+using namespace topocut;
+
+std::string fixed(double value, int decimals) {
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, "%.*f", decimals, value);
+  return buffer;
+}
+
+std::string cpu_model() {
+  std::ifstream cpuinfo("/proc/cpuinfo");
+  std::string line;
+  while (std::getline(cpuinfo, line)) {
+    if (line.rfind("model name", 0) == 0) return line.substr(line.find_first_not_of(' ', line.find(':') + 1));
+  }
+  return "unknown CPU";
+}
+
+double peak_rss_mb() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return static_cast<double>(usage.ru_maxrss) / 1024.0;
+}
+
+// A set scored against ground truth.
+struct ScoredSet {
+  std::string name, folder;
+  std::vector<Variant> variants;
+  std::vector<ImageResult> results;
+  std::vector<double> ratios;  // time / contour floor per image
+};
+
+struct Targets {
+  double recall = 0.0, precision = 0.0;
+};
+
+void score_set(ScoredSet& set, const DatasetRunOptions& base, int floor_repetitions) {
+  DatasetRunOptions run = base;
+  run.variants = set.variants;
+  run.progress = {};
+  const std::vector<DatasetMap> maps = discover_dataset(set.folder);
+  set.results = run_dataset(maps, run, batch_segmenter(run));
+  if (floor_repetitions <= 0) return;
+  for (const ImageResult& r : set.results) {
+    if (!r.ok) continue;
+    const DatasetMap& map = *std::find_if(maps.begin(), maps.end(), [&](const DatasetMap& m) { return m.name == r.map; });
+    set.ratios.push_back(r.time_ms / contour_floor_ms(map.image(r.variant), run.load.free_min, floor_repetitions));
+  }
+}
+
+// Lowest recall and precision over the images of a set.
+std::pair<double, double> lowest(const std::vector<ImageResult>& results, Variant variant) {
+  double recall = 1.0, precision = 1.0;
+  for (const ImageResult& r : results) {
+    if (!r.ok || r.variant != variant) continue;
+    recall = std::min(recall, r.recall);
+    precision = std::min(precision, r.precision);
+  }
+  return {recall, precision};
+}
+
+std::string ratio_text(const std::vector<double>& ratios) {
+  if (ratios.empty()) return "-";
+  const TimeStatistics s = time_statistics(ratios);
+  return fixed(s.median, 1) + " / " + fixed(s.max, 1);
+}
+
+int run(std::vector<std::string> args) {
+  bool details = false;
+  int floor_repetitions = 5, threads = 1;
+  std::string shared = TOPOCUT_SHARED_DIR;
+  std::vector<std::string> segmenter_args;
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    const std::string& a = args[i];
+    if (a == "--help" || a == "-h") {
+      std::cout << "Usage: map_suite_benchmark [options]\n\nSegmenter options (as topocut evaluate):\n"
+                << dataset_options_help()
+                << "  --details              also print the per-image tables\n"
+                   "  --floor-repetitions N  contour floor repetitions per image (default 5; 0: no times)\n"
+                   "  --threads N            sets on N threads (default 1; times need 1)\n"
+                   "  --shared DIR           folder holding datasets/ (default " TOPOCUT_SHARED_DIR ")\n";
+      return 0;
+    }
+    if (a == "--details") {
+      details = true;
+    } else if ((a == "--floor-repetitions" || a == "--threads" || a == "--shared") && i + 1 < args.size()) {
+      const std::string value = args[++i];
+      if (a == "--shared") {
+        shared = value;
+      } else {
+        const int n = std::stoi(value);
+        (a == "--threads" ? threads : floor_repetitions) = std::max(a == "--threads" ? 1 : 0, n);
+      }
+    } else {
+      segmenter_args.push_back(a);
+    }
+  }
+  const DatasetArguments arguments = parse_dataset_arguments(segmenter_args);
+  const std::string datasets = shared + "/datasets";
+  if (!std::filesystem::is_directory(datasets)) {
+    std::cout << "map_suite_benchmark: " << datasets << " is absent; nothing to measure\n";
+    return 0;
+  }
+
+  std::vector<ScoredSet> scored{
+      {"Bormann", datasets + "/bormann", {Variant::kPlain, Variant::kFurnished}, {}, {}},
+      {"sketches (lex)", datasets + "/sketches/lex", {Variant::kPlain}, {}, {}},
+      {"sketches (ezvin)", datasets + "/sketches/ezvin", {Variant::kPlain}, {}, {}},
+      {"raw maps with people's rooms", datasets + "/real_maps_gt", {Variant::kPlain}, {}, {}},
+  };
+  std::vector<MapDefectResult> real;
+  MapFolderOptions folder_options;
+  folder_options.segment = arguments.run.segment;
+  folder_options.load = arguments.run.load;
+  folder_options.floor_repetitions = floor_repetitions;
+
+  std::vector<std::function<void()>> jobs;
+  for (ScoredSet& set : scored) jobs.push_back([&, floor_repetitions] { score_set(set, arguments.run, floor_repetitions); });
+  jobs.push_back([&] { real = run_map_files(discover_map_files(datasets + "/real_maps"), folder_options); });
+  std::mutex mutex;
+  std::size_t next = 0;
+  std::vector<std::thread> pool;
+  std::vector<std::string> errors;
+  for (int t = 0; t < threads; ++t) {
+    pool.emplace_back([&] {
+      for (;;) {
+        std::size_t job = 0;
+        {
+          const std::lock_guard<std::mutex> lock(mutex);
+          if (next == jobs.size()) return;
+          job = next++;
+        }
+        try {
+          jobs[job]();
+        } catch (const std::exception& e) {
+          const std::lock_guard<std::mutex> lock(mutex);
+          errors.push_back(e.what());
+        }
+      }
+    });
+  }
+  for (std::thread& t : pool) t.join();
+  for (const std::string& e : errors) std::cerr << "map_suite_benchmark: " << e << "\n";
+
+  std::cout << "# Map suite benchmark\n\nmachine: " << cpu_model() << ", " << std::thread::hardware_concurrency()
+            << " hardware threads; threads used: " << threads << "\nmethod: " << method_name(arguments.run.segment)
+            << "\n\n";
+  if (details) {
+    for (const ScoredSet& set : scored) std::cout << "## " << set.name << "\n\n" << format_results_table(set.results) << "\n";
+    std::cout << "## real maps (no ground truth)\n\n";
+  }
+  std::cout << format_defects_table(real) << "\n";
+
+  const std::vector<Targets> targets{{98.5, 97.0}, {92.0, 96.5}, {90.0, 90.0}, {90.0, 90.0}, {95.0, 93.0}};
+  std::vector<std::vector<std::string>> rows{
+      {"set", "recall / precision %", "lowest R / P %", "target R / P", "ms / floor (median / max)"}};
+  std::size_t target = 0;
+  int failed = 0;
+  for (const ScoredSet& set : scored) {
+    for (const Variant variant : set.variants) {
+      const VariantSummary s = summarize(set.results, variant);
+      failed += s.failed;
+      const auto [low_r, low_p] = lowest(set.results, variant);
+      const std::string name = set.variants.size() > 1 ? set.name + " " + to_string(variant) : set.name;
+      rows.push_back({name, fixed(100 * s.recall_mean, 1) + " / " + fixed(100 * s.precision_mean, 1),
+                      fixed(100 * low_r, 1) + " / " + fixed(100 * low_p, 1),
+                      "≥ " + fixed(targets[target].recall, 1) + " / ≥ " + fixed(targets[target].precision, 1),
+                      variant == set.variants.front() ? ratio_text(set.ratios) : ""});
+      ++target;
+    }
+  }
+  RoomDefects total;
+  std::vector<double> ratios;
+  for (const MapDefectResult& r : real) {
+    if (!r.ok) {
+      ++failed;
+      continue;
+    }
+    total.rooms += r.defects.rooms;
+    total.thin += r.defects.thin;
+    total.specks += r.defects.specks;
+    if (r.floor_ms > 0.0) ratios.push_back(r.time_ms / r.floor_ms);
+  }
+  const double share = total.rooms > 0 ? 100.0 * (total.thin + total.specks) / total.rooms : 0.0;
+  rows.push_back({"real maps: thin + speck rooms", std::to_string(total.thin) + " + " + std::to_string(total.specks) +
+                                                       " of " + std::to_string(total.rooms) + " (" + fixed(share, 1) + " %)",
+                  "", "≤ 3 %", ratio_text(ratios)});
+  std::cout << markdown_table(rows) << "\nfailures: " << failed << "; peak RSS " << fixed(peak_rss_mb(), 0) << " MB\n";
+  return failed > 0 || !errors.empty() ? 1 : 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  topocut::keep_freed_memory_for_reuse();
+  try {
+    return run(std::vector<std::string>(argv + 1, argv + argc));
+  } catch (const std::exception& e) {
+    std::cerr << "map_suite_benchmark: error: " << e.what() << "\n";
+    return 2;
+  }
+}
