@@ -98,8 +98,7 @@ cv::Mat rays_of(const cv::Mat& thin, const cv::Mat& cells) {
 }
 
 // Morphological closing of mask with a square of the given side (cells); the map's edge does not
-// erode (the outside is no obstacle). A square, not a disc: the inside test is coarse, and a square
-// is ten times cheaper.
+// erode. A square, not a disc: the inside test is coarse, and a square is ten times cheaper.
 cv::Mat square_closing(const cv::Mat& mask, double side) {
   if (side <= 0.0) return cv::Mat::zeros(mask.size(), CV_8UC1);
   const int n = std::max(1, static_cast<int>(std::lround(side / 2.0)));
@@ -110,16 +109,19 @@ cv::Mat square_closing(const cv::Mat& mask, double side) {
   return closed;
 }
 
-// Which of the lost cells lie inside the building (in the closing of floor), computed only around them.
-cv::Mat inside_building(const cv::Mat& lost, const cv::Mat& floor, double diameter) {
-  cv::Mat inside = cv::Mat::zeros(lost.size(), CV_8UC1);
-  const cv::Rect box = cv::boundingRect(lost);
-  if (box.empty() || diameter <= 0.0) return inside;
-  const int margin = static_cast<int>(std::ceil(diameter)) + 2;
-  const cv::Rect around = cv::Rect(box.x - margin, box.y - margin, box.width + 2 * margin, box.height + 2 * margin) &
-                          cv::Rect(0, 0, lost.cols, lost.rows);
-  inside(around) = square_closing(floor(around), diameter) & lost(around);
-  return inside;
+// Which of the lost cells lie inside the building: enclosed by its structure (floor and walls), once
+// gaps narrower than side cells (windows, doors, unseen stretches of wall) are closed. Rays that
+// reach into a room never entered end on its walls and stay inside; rays through a window into the
+// open do not.
+cv::Mat inside_building(const cv::Mat& lost, const cv::Mat& floor, const cv::Mat& walls, double side) {
+  if (side <= 0.0 || cv::countNonZero(lost) == 0) return cv::Mat::zeros(lost.size(), CV_8UC1);
+  const cv::Mat closed = square_closing(floor | walls, side);
+  // Flood the outside from a one-cell frame around the window; what it does not reach is enclosed.
+  cv::Mat outside;
+  cv::copyMakeBorder(~closed, outside, 1, 1, 1, 1, cv::BORDER_CONSTANT, cv::Scalar(255));
+  cv::floodFill(outside, cv::Point(0, 0), cv::Scalar(0), nullptr, cv::Scalar(0), cv::Scalar(0), 4);
+  const cv::Mat enclosed = outside(cv::Rect(1, 1, lost.cols, lost.rows)) != 0;
+  return (closed | enclosed) & lost;
 }
 
 void clean_window(const cv::Mat& free, const cv::Mat& grid_cells, double resolution, const FreeSpaceCleaningOptions& options,
@@ -134,7 +136,7 @@ void clean_window(const cv::Mat& free, const cv::Mat& grid_cells, double resolut
   removed = cv::Mat::zeros(free.size(), CV_8UC1);
   removed.setTo(kCellObstacleSpeck, specks & floor);
   removed.setTo(kCellRemovedOutside, lost);
-  removed.setTo(kCellRemovedInside, inside_building(lost, floor, options.inside_closing / resolution));
+  removed.setTo(kCellRemovedInside, inside_building(lost, floor, grid_cells == kOccupied, options.inside_closing / resolution));
 }
 
 }  // namespace

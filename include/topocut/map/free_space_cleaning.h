@@ -25,10 +25,11 @@ struct FreeSpaceCleaningOptions {
   // the unknown, while a narrow corridor, a closet or a gap behind a cupboard is walled in and
   // stays. A corridor or doorway at least min_width wide is never thin. 0 disables.
   double min_width = 0.6;
-  // A removed cell is inside the building when it lies in the closing of the kept floor with a square
-  // of this side (metres): floor surrounds it within that distance. 0: every removed cell is
-  // outside.
-  double inside_closing = 1.0;
+  // A removed cell is inside the building when the building's structure (floor and walls) encloses
+  // it once gaps up to this wide (metres: windows, doors, unseen stretches of wall) are closed:
+  // rays into a room the robot never entered end on that room's walls and stay inside; rays through
+  // a window into the open do not. 0: every removed cell is outside.
+  double inside_closing = 2.0;
 };
 
 // What happened to a cell (CleanedFreeSpace::removed).
