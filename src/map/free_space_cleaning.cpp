@@ -22,10 +22,20 @@ cv::Mat disc(double radius) {
   return cv::getStructuringElement(cv::MORPH_ELLIPSE, {2 * r + 1, 2 * r + 1});
 }
 
+// The mask (CV_8UC1) of the cells whose label the lookup marks with 255.
+cv::Mat mask_of_labels(const cv::Mat& labels, const std::vector<unsigned char>& lookup) {
+  cv::Mat mask(labels.size(), CV_8UC1);
+  for (int r = 0; r < labels.rows; ++r) {
+    const int* label = labels.ptr<int>(r);
+    unsigned char* out = mask.ptr<unsigned char>(r);
+    for (int c = 0; c < labels.cols; ++c) out[c] = lookup[static_cast<std::size_t>(label[c])];
+  }
+  return mask;
+}
+
 // Non-free regions enclosed by free space with a bounding box of at most max_side cells a side.
 cv::Mat obstacle_specks(const cv::Mat& free, int max_side) {
-  cv::Mat specks = cv::Mat::zeros(free.size(), CV_8UC1);
-  if (max_side <= 0) return specks;
+  if (max_side <= 0) return cv::Mat::zeros(free.size(), CV_8UC1);
   cv::Mat labels, stats, centroids;
   const int n = cv::connectedComponentsWithStats(free == 0, labels, stats, centroids, 8, CV_32S);
   std::vector<unsigned char> is_speck(static_cast<std::size_t>(n), 0);
@@ -35,12 +45,7 @@ cv::Mat obstacle_specks(const cv::Mat& free, int max_side) {
     const bool enclosed = x > 0 && y > 0 && x + w < free.cols && y + h < free.rows;
     is_speck[static_cast<std::size_t>(i)] = enclosed && w <= max_side && h <= max_side ? 255 : 0;
   }
-  for (int r = 0; r < free.rows; ++r) {
-    const int* label = labels.ptr<int>(r);
-    unsigned char* out = specks.ptr<unsigned char>(r);
-    for (int c = 0; c < free.cols; ++c) out[c] = is_speck[static_cast<std::size_t>(label[c])];
-  }
-  return specks;
+  return mask_of_labels(labels, is_speck);
 }
 
 // The cells of solid covered by discs of radius (cells) that fit into it (its opening; the map's
@@ -87,14 +92,8 @@ cv::Mat rays_of(const cv::Mat& thin, const cv::Mat& cells) {
     }
   }
   std::vector<unsigned char> is_ray(static_cast<std::size_t>(n), 0);
-  for (int i = 1; i < n; ++i) is_ray[static_cast<std::size_t>(i)] = unknown[static_cast<std::size_t>(i)] > occupied[static_cast<std::size_t>(i)] ? 255 : 0;
-  cv::Mat rays(thin.size(), CV_8UC1);
-  for (int r = 0; r < h; ++r) {
-    const int* label = labels.ptr<int>(r);
-    unsigned char* out = rays.ptr<unsigned char>(r);
-    for (int c = 0; c < w; ++c) out[c] = is_ray[static_cast<std::size_t>(label[c])];
-  }
-  return rays;
+  for (std::size_t i = 1; i < is_ray.size(); ++i) is_ray[i] = unknown[i] > occupied[i] ? 255 : 0;
+  return mask_of_labels(labels, is_ray);
 }
 
 // Morphological closing of mask with a square of the given side (cells); the map's edge does not
@@ -148,10 +147,6 @@ void validate(const FreeSpaceCleaningOptions& options) {
   }
 }
 
-int cleaning_reach(const FreeSpaceCleaningOptions& options, double resolution) {
-  return cells(options.max_obstacle_speck + 2.0 * options.min_width + options.inside_closing, resolution) + 4;
-}
-
 CleanedFreeSpace clean_free_space(const cv::Mat& free, const cv::Mat& grid_cells, double resolution,
                                   const FreeSpaceCleaningOptions& options) {
   if (free.empty() || free.type() != CV_8UC1) throw Error("the free-space mask must be a non-empty 8-bit image");
@@ -177,10 +172,6 @@ CleanedFreeSpace clean_free_space(const cv::Mat& free, const cv::Mat& grid_cells
   result.outside_cells = cv::countNonZero(removed == kCellRemovedOutside);
   return result;
 }
-
-}  // namespace topocut
-
-namespace topocut {
 
 cv::Mat render_cleaned_map(const cv::Mat& cells, const CleanedFreeSpace& cleaned) {
   CV_Assert(cells.type() == CV_8UC1);

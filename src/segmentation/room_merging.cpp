@@ -41,9 +41,9 @@ struct Box {
   double x1 = -std::numeric_limits<double>::infinity(), y1 = x1;
 };
 
-Box bounding_box(const PolygonWithHoles& polygon) {
+Box bounding_box(const Ring& ring) {
   Box box;
-  for (const Point2& p : polygon.outer) {
+  for (const Point2& p : ring) {
     box.x0 = std::min(box.x0, p.x);
     box.y0 = std::min(box.y0, p.y);
     box.x1 = std::max(box.x1, p.x);
@@ -80,7 +80,7 @@ class Merger {
     for (std::size_t i = 0; i < set.pieces.size(); ++i) members_[i] = {static_cast<int>(i)};
     boxes_.reserve(set.pieces.size());
     for (const PolygonWithHoles& piece : set.pieces) {
-      boxes_.push_back(bounding_box(piece));
+      boxes_.push_back(bounding_box(piece.outer));
       areas_.push_back(area(piece) * resolution * resolution);
       perimeters_.push_back(perimeter(piece) * resolution);
     }
@@ -240,13 +240,7 @@ class Merger {
     const double limit = options_.furniture_size / resolution_;
     const double near = 1.5;  // cells: the pieces come from the polygon simplified by about a cell
     for (const Ring& hole : polygon.holes) {
-      Box box;
-      for (const Point2& p : hole) {
-        box.x0 = std::min(box.x0, p.x);
-        box.y0 = std::min(box.y0, p.y);
-        box.x1 = std::max(box.x1, p.x);
-        box.y1 = std::max(box.y1, p.y);
-      }
+      const Box box = bounding_box(hole);
       if (box.x1 - box.x0 > limit || box.y1 - box.y0 > limit) continue;
       for (std::size_t k = 0; k < sides_.size(); ++k) {
         if (sides_[k].left < 0 || sides_[k].furniture) continue;
@@ -394,7 +388,7 @@ class Merger {
     const Side& s = sides_[static_cast<std::size_t>(k)];
     if (s.furniture) return std::numeric_limits<double>::infinity();
     const double wl = side_width(k, root(s.left), true), wr = side_width(k, root(s.right), false);
-    const double narrow = std::min(wl, wr), wide = std::max(wl, wr);
+    const double narrow = std::min(wl, wr);
     if (narrow <= 0.0) return std::numeric_limits<double>::infinity();
     if (is_width_step(k, wl, wr)) return 0.0;
     return s.length / narrow;

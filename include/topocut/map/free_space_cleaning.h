@@ -64,8 +64,4 @@ cv::Mat render_cleaned_map(const cv::Mat& cells, const CleanedFreeSpace& cleaned
 // Throws Error unless the options are finite and non-negative.
 void validate(const FreeSpaceCleaningOptions& options);
 
-// How far (cells) a change of one cell can change the result of clean_free_space(), for
-// callers that clean a window of a larger map (component areas aside, which the sizes bound).
-int cleaning_reach(const FreeSpaceCleaningOptions& options, double resolution);
-
 }  // namespace topocut
