@@ -1,5 +1,6 @@
 // topocut: segment 2-D robot maps into rooms. Dispatches to the registered subcommands and turns
 // every failure into one line on stderr and a non-zero exit code.
+#include <cstdio>
 #include <exception>
 #include <iostream>
 #include <string>
@@ -21,11 +22,8 @@ void print_help() {
   std::cout << "\nOptions:\n  --help      show this help\n  --version   print the version\n";
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
-  topocut::keep_freed_memory_for_reuse();
-  const std::vector<std::string> args(argv + 1, argv + argc);
+// Runs the command; exceptions become one line on stderr and an exit code.
+int dispatch(const std::vector<std::string>& args) {
   if (args.empty() || args[0] == "--help" || args[0] == "-h" || args[0] == "help") {
     print_help();
     return args.empty() ? 2 : 0;
@@ -55,4 +53,19 @@ int main(int argc, char** argv) {
     std::cerr << "topocut " << args[0] << ": error: internal failure: " << e.what() << "\n";
     return 1;
   }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  topocut::keep_freed_memory_for_reuse();
+  const int code = dispatch(std::vector<std::string>(argv + 1, argv + argc));
+  // Results printed on stdout are an output like any file: a full disk, a closed pipe or a closed
+  // stdout must not end in exit 0 with the results lost.
+  std::cout.flush();
+  if (!std::cout || std::fflush(stdout) != 0 || std::ferror(stdout)) {
+    std::cerr << "topocut: error: cannot write to standard output\n";
+    return code == 0 ? 1 : code;
+  }
+  return code;
 }
