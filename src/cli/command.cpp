@@ -19,6 +19,26 @@ bool register_command(Command command) {
 
 const std::map<std::string, Command>& commands() { return table(); }
 
+namespace {
+
+// `--out-json --trivial` would write a file named "--trivial" and run without --trivial: a value
+// that spells one of the command's own options is a missing value.
+void reject_options_taken_as_values(const po::variables_map& vm, const po::options_description& all) {
+  auto check = [&](const std::string& name, const std::string& value) {
+    if (value.size() > 2 && value.compare(0, 2, "--") == 0 && all.find_nothrow(value.substr(2), false) != nullptr)
+      throw UsageError("--" + name + " needs a value, not the option '" + value + "'");
+  };
+  for (const auto& [name, entry] : vm) {
+    if (const auto* text = boost::any_cast<std::string>(&entry.value())) {
+      check(name, *text);
+    } else if (const auto* texts = boost::any_cast<std::vector<std::string>>(&entry.value())) {
+      for (const std::string& t : *texts) check(name, t);
+    }
+  }
+}
+
+}  // namespace
+
 std::optional<po::variables_map> parse_options(const std::string& usage, const std::string& description,
                                                const po::options_description& options,
                                                const po::positional_options_description& positional,
@@ -37,6 +57,7 @@ std::optional<po::variables_map> parse_options(const std::string& usage, const s
   } catch (const po::error& e) {
     throw UsageError(e.what());
   }
+  reject_options_taken_as_values(vm, all);
   return vm;
 }
 

@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include <algorithm>
+
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 #include <opencv2/imgcodecs.hpp>
@@ -251,6 +253,22 @@ TEST(SegmentCli, OutCleanShowsTheMapAsTheSegmenterSawIt) {
   // A non-PNG cleaned map is refused before any work.
   const Result bad = run(dir, {dir.file("slam.png"), "--out-clean", dir.file("clean.jpg")});
   EXPECT_NE(bad.code, 0);
+}
+
+}  // namespace
+
+namespace {
+
+TEST(SegmentCli, AnOptionWhereAValueBelongsIsAMissingValue) {
+  TempDir dir;
+  const Result r = run(dir, {bundled("floorplan.yaml"), "--out-json", "--trivial"});
+  EXPECT_EQ(r.code, 2);
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_NE(r.err.find("--out-json needs a value, not the option '--trivial'"), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(dir.file("--trivial")));
+  EXPECT_FALSE(std::filesystem::exists("--trivial"));
+  // A value that only looks like an option (no such option) is a value.
+  EXPECT_EQ(run(dir, {bundled("floorplan.yaml"), "--out-json", dir.file("--rooms.json")}).code, 0);
 }
 
 }  // namespace
