@@ -1,5 +1,6 @@
 #include "topocut/core/geometry.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace topocut {
@@ -72,5 +73,13 @@ PolygonWithHoles normalized_orientation(const PolygonWithHoles& polygon) {
 }
 
 double distance(const Point2& a, const Point2& b) { return std::hypot(a.x - b.x, a.y - b.y); }
+
+double distance_to_segment(const Point2& p, const Segment2& s) {
+  const double dx = s.b.x - s.a.x, dy = s.b.y - s.a.y;
+  const double length2 = dx * dx + dy * dy;
+  double t = length2 > 0.0 ? ((p.x - s.a.x) * dx + (p.y - s.a.y) * dy) / length2 : 0.0;
+  t = std::clamp(t, 0.0, 1.0);
+  return std::hypot(p.x - (s.a.x + t * dx), p.y - (s.a.y + t * dy));
+}
 
 }  // namespace topocut

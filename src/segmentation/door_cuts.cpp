@@ -196,14 +196,6 @@ bool segments_conflict(const Segment2& s, const Segment2& t) {
   return on(t.a, t.b, s.a, d1) || on(t.a, t.b, s.b, d2) || on(s.a, s.b, t.a, d3) || on(s.a, s.b, t.b, d4);
 }
 
-double point_segment_distance(const Point2& p, const Segment2& s) {
-  const Point2 d = minus(s.b, s.a);
-  const double l2 = dot(d, d);
-  double t = l2 > 0.0 ? dot(minus(p, s.a), d) / l2 : 0.0;
-  t = std::clamp(t, 0.0, 1.0);
-  return length(minus(p, {s.a.x + t * d.x, s.a.y + t * d.y}));
-}
-
 double turn_angle(const Point2& a, const Point2& b, const Point2& c) {
   const Point2 d = minus(b, a), e = minus(c, b);
   return std::atan2(cross(d, e), dot(d, e));
@@ -425,8 +417,8 @@ std::vector<Segment2> find_door_cuts(const PolygonWithHoles& polygon, double res
     bool ok = true;
     for (const Segment2& s : accepted) {
       if (segments_conflict(c.segment, s) ||
-          (point_segment_distance(c.segment.a, s) < duplicate && point_segment_distance(c.segment.b, s) < duplicate) ||
-          (point_segment_distance(s.a, c.segment) < duplicate && point_segment_distance(s.b, c.segment) < duplicate)) {
+          (distance_to_segment(c.segment.a, s) < duplicate && distance_to_segment(c.segment.b, s) < duplicate) ||
+          (distance_to_segment(s.a, c.segment) < duplicate && distance_to_segment(s.b, c.segment) < duplicate)) {
         ok = false;
         break;
       }
@@ -456,7 +448,7 @@ std::vector<PolygonWithHoles> split_polygon(const PolygonWithHoles& polygon, con
         const Ring& ring = rings[r];
         for (std::size_t i = 0; i < ring.size(); ++i) {
           const Segment2 e{ring[i], ring[(i + 1) % ring.size()]};
-          const double d = point_segment_distance(p, e);
+          const double d = distance_to_segment(p, e);
           if (d < best) {
             best = d;
             best_ring = static_cast<int>(r);

@@ -30,11 +30,6 @@ double perimeter(const PolygonWithHoles& polygon) {
   return length;
 }
 
-double point_segment_distance(const Point2& p, const Point2& a, const Point2& b) {
-  const double dx = b.x - a.x, dy = b.y - a.y, l2 = dx * dx + dy * dy;
-  const double t = l2 > 0.0 ? std::clamp(((p.x - a.x) * dx + (p.y - a.y) * dy) / l2, 0.0, 1.0) : 0.0;
-  return std::hypot(p.x - a.x - t * dx, p.y - a.y - t * dy);
-}
 
 struct Box {
   double x0 = std::numeric_limits<double>::infinity(), y0 = x0;
@@ -247,7 +242,7 @@ class Merger {
         for (const Point2& end : {set_.cuts[k].a, set_.cuts[k].b}) {
           if (end.x < box.x0 - near || end.x > box.x1 + near || end.y < box.y0 - near || end.y > box.y1 + near) continue;
           for (std::size_t i = 0; i < hole.size() && !sides_[k].furniture; ++i)
-            sides_[k].furniture = point_segment_distance(end, hole[i], hole[(i + 1) % hole.size()]) <= near;
+            sides_[k].furniture = distance_to_segment(end, {hole[i], hole[(i + 1) % hole.size()]}) <= near;
         }
       }
     }

@@ -219,14 +219,6 @@ void validate(const WallMergeOptions& o) {
 
 }  // namespace
 
-double distance_to_segment(const Point2& p, const Segment2& s) {
-  const double dx = s.b.x - s.a.x, dy = s.b.y - s.a.y;
-  const double length2 = dx * dx + dy * dy;
-  double t = length2 > 0.0 ? ((p.x - s.a.x) * dx + (p.y - s.a.y) * dy) / length2 : 0.0;
-  t = std::clamp(t, 0.0, 1.0);
-  return std::hypot(p.x - (s.a.x + t * dx), p.y - (s.a.y + t * dy));
-}
-
 std::vector<Wall> merge_wall_segments(std::span<const WallSegment> segments, const WallMergeOptions& options) {
   validate(options);
   std::vector<Item> items;

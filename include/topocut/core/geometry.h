@@ -45,4 +45,7 @@ PolygonWithHoles normalized_orientation(const PolygonWithHoles& polygon);
 // Euclidean distance between two points.
 double distance(const Point2& a, const Point2& b);
 
+// Distance of a point from a segment (to its nearest point; a degenerate segment is its end a).
+double distance_to_segment(const Point2& p, const Segment2& s);
+
 }  // namespace topocut

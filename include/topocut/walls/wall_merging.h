@@ -42,7 +42,4 @@ struct WallMergeOptions {
 // skipped. Walls are ordered by their first member. Throws Error on invalid options.
 std::vector<Wall> merge_wall_segments(std::span<const WallSegment> segments, const WallMergeOptions& options = {});
 
-// Perpendicular distance of a point from a segment (to the nearest point of the segment).
-double distance_to_segment(const Point2& p, const Segment2& s);
-
 }  // namespace topocut
