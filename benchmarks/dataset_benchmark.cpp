@@ -7,69 +7,30 @@
 //   --repeat N             run the whole dataset N times; an image's time is the median (default 1)
 //   --floor-repetitions N  repetitions of the contour floor per image, median taken (default 5)
 // Without --dataset it reads TOPOCUT_SHARED_DIR/datasets/bormann.
-#include <sys/resource.h>
-
 #include <algorithm>
-#include <chrono>
 #include <cstdio>
 #include <exception>
-#include <fstream>
 #include <iostream>
 #include <string>
 #include <thread>
 #include <vector>
 
-#include <opencv2/imgcodecs.hpp>
-#include <opencv2/imgproc.hpp>
-
+#include "benchmark_machine.h"
 #include "topocut/core/allocator.h"
 #include "topocut/core/error.h"
 #include "topocut/evaluation/dataset.h"
 #include "topocut/evaluation/dataset_options.h"
 #include "topocut/evaluation/dataset_report.h"
+#include "topocut/evaluation/room_defects.h"
 #include "topocut/io/atomic_file.h"
 
 namespace {
 
 using namespace topocut;
-
-std::string cpu_model() {
-  std::ifstream cpuinfo("/proc/cpuinfo");
-  std::string line;
-  while (std::getline(cpuinfo, line)) {
-    if (line.rfind("model name", 0) == 0) {
-      const std::size_t colon = line.find(':');
-      if (colon != std::string::npos) return line.substr(line.find_first_not_of(' ', colon + 1));
-    }
-  }
-  return "unknown CPU";
-}
-
-double peak_rss_mb() {
-  rusage usage{};
-  getrusage(RUSAGE_SELF, &usage);
-  return static_cast<double>(usage.ru_maxrss) / 1024.0;  // Linux reports kilobytes
-}
+using topocut::benchmarks::cpu_model;
+using topocut::benchmarks::peak_rss_mb;
 
 double median(std::vector<double> values) { return time_statistics(std::move(values)).median; }
-
-// Decode + threshold + contours of one image file, in milliseconds (median of repetitions).
-double contour_floor_ms(const std::string& path, int repetitions, const MapLoadOptions& load) {
-  std::vector<double> times;
-  for (int i = 0; i < repetitions; ++i) {
-    const auto start = std::chrono::steady_clock::now();
-    const cv::Mat image = cv::imread(path, cv::IMREAD_GRAYSCALE);
-    if (image.empty()) throw Error("cannot read '" + path + "'");
-    cv::Mat free;
-    cv::threshold(image, free, load.free_min, 255, cv::THRESH_BINARY);
-    std::vector<std::vector<cv::Point>> contours;
-    std::vector<cv::Vec4i> hierarchy;
-    cv::findContours(free, contours, hierarchy, cv::RETR_CCOMP, cv::CHAIN_APPROX_SIMPLE);
-    const auto stop = std::chrono::steady_clock::now();
-    times.push_back(std::chrono::duration<double, std::milli>(stop - start).count());
-  }
-  return median(times);
-}
 
 int parse_count(const std::string& name, const std::string& value) {
   std::size_t used = 0;
@@ -165,7 +126,7 @@ int run(std::vector<std::string> args) {
       continue;
     }
     const DatasetMap& map = *std::find_if(maps.begin(), maps.end(), [&](const DatasetMap& m) { return m.name == r.map; });
-    const double floor = contour_floor_ms(map.image(r.variant), floor_repetitions, arguments.run.load);
+    const double floor = contour_floor_ms(map.image(r.variant), arguments.run.load.free_min, floor_repetitions);
     floors.push_back(floor);
     ratios.push_back(r.time_ms / floor);
     rows.push_back({r.map, to_string(r.variant), std::to_string(r.rooms), std::to_string(r.gt_rooms),

@@ -10,13 +10,10 @@
 //   --floor-repetitions N  measure each image's contour floor N times (default 5; 0: no times)
 //   --threads N            run the sets on N threads (default 1; times are only meaningful with 1)
 //   --shared DIR           the shared folder holding datasets/ (default: the source tree's ../shared)
-#include <sys/resource.h>
-
 #include <algorithm>
 #include <cstdio>
 #include <exception>
 #include <filesystem>
-#include <fstream>
 #include <functional>
 #include <iostream>
 #include <mutex>
@@ -24,6 +21,7 @@
 #include <thread>
 #include <vector>
 
+#include "benchmark_machine.h"
 #include "topocut/core/allocator.h"
 #include "topocut/core/error.h"
 #include "topocut/evaluation/dataset.h"
@@ -34,26 +32,13 @@
 namespace {
 
 using namespace topocut;
+using topocut::benchmarks::cpu_model;
+using topocut::benchmarks::peak_rss_mb;
 
 std::string fixed(double value, int decimals) {
   char buffer[64];
   std::snprintf(buffer, sizeof buffer, "%.*f", decimals, value);
   return buffer;
-}
-
-std::string cpu_model() {
-  std::ifstream cpuinfo("/proc/cpuinfo");
-  std::string line;
-  while (std::getline(cpuinfo, line)) {
-    if (line.rfind("model name", 0) == 0) return line.substr(line.find_first_not_of(' ', line.find(':') + 1));
-  }
-  return "unknown CPU";
-}
-
-double peak_rss_mb() {
-  rusage usage{};
-  getrusage(RUSAGE_SELF, &usage);
-  return static_cast<double>(usage.ru_maxrss) / 1024.0;
 }
 
 // A set scored against ground truth.
