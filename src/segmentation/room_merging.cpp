@@ -336,14 +336,21 @@ class Merger {
     return 0.0;
   }
 
-  // Width of room r beside cut k (cells): the longest chord parallel to the cut within the sampling
-  // depth on r's side.
-  double side_width(int k, int r, bool left) {
+  // Cut k's direction (unit, a -> b), its normal into the left or right side, and its middle.
+  struct CutFrame {
+    Point2 u, n, mid;
+  };
+  CutFrame cut_frame(int k, bool left) const {
     const Segment2& c = set_.cuts[static_cast<std::size_t>(k)];
     const double length = distance(c.a, c.b);
     const Point2 u{(c.b.x - c.a.x) / length, (c.b.y - c.a.y) / length};
-    const Point2 n = left ? Point2{-u.y, u.x} : Point2{u.y, -u.x};
-    const Point2 mid{(c.a.x + c.b.x) / 2.0, (c.a.y + c.b.y) / 2.0};
+    return {u, left ? Point2{-u.y, u.x} : Point2{u.y, -u.x}, {(c.a.x + c.b.x) / 2.0, (c.a.y + c.b.y) / 2.0}};
+  }
+
+  // Width of room r beside cut k (cells): the longest chord parallel to the cut within the sampling
+  // depth on r's side.
+  double side_width(int k, int r, bool left) {
+    const auto [u, n, mid] = cut_frame(k, left);
     const double depth = std::max(options_.width_depth / resolution_, 1.0);
     const int samples = 8;
     double widest = 0.0;
@@ -369,12 +376,8 @@ class Merger {
 
   // Depth of room r behind cut k (metres): its chord along the cut's normal through the cut's middle.
   double side_depth(int k, int r, bool left) {
-    const Segment2& c = set_.cuts[static_cast<std::size_t>(k)];
-    const double length = distance(c.a, c.b);
-    const Point2 u{(c.b.x - c.a.x) / length, (c.b.y - c.a.y) / length};
-    const Point2 n = left ? Point2{-u.y, u.x} : Point2{u.y, -u.x};
-    const Point2 mid{(c.a.x + c.b.x) / 2.0 + 0.5 * n.x, (c.a.y + c.b.y) / 2.0 + 0.5 * n.y};
-    return chord(r, mid, n) * resolution_;
+    const auto [u, n, mid] = cut_frame(k, left);
+    return chord(r, {mid.x + 0.5 * n.x, mid.y + 0.5 * n.y}, n) * resolution_;
   }
 
   // Cut length over the width of the narrower side: >= door_ratio means "not a door"; infinite for a
