@@ -9,6 +9,7 @@
 #include "topocut/core/error.h"
 #include "topocut/decomposition/decompose.h"
 #include "topocut/io/atomic_file.h"
+#include "topocut/io/output_files.h"
 #include "topocut/io/polygon_json.h"
 
 namespace topocut::cli {
@@ -72,7 +73,7 @@ int run(const std::vector<std::string>& args) {
   options.absorb_small_holes = !keep_small_holes;
   options.restore_holes = !keyholes;
   if (options.max_rounds < 1) throw UsageError("--max-rounds must be at least 1");
-  if (!output.empty()) check_writable(output);
+  if (!output.empty()) check_outputs({output}, {input});
 
   const PolygonWithHoles polygon = parse_polygon_json(read_file(input), input);
   const Decomposition result = decompose(polygon, options);

@@ -10,6 +10,8 @@
 #include "topocut/evaluation/room_defects.h"
 #include "topocut/exploration/exploration_run.h"
 #include "topocut/io/atomic_file.h"
+#include "topocut/io/map_loader.h"
+#include "topocut/io/output_files.h"
 
 namespace topocut::cli {
 namespace {
@@ -54,6 +56,14 @@ DatasetArguments to_arguments(const po::variables_map& vm) {
   return arguments;
 }
 
+// 1 with one error line when some runs failed. The table and the CSV are complete reports that show
+// the failed rows, so they are kept (an exception would discard the outputs).
+int failure_exit_code(std::size_t failed, std::size_t total, const char* what) {
+  if (failed == 0) return 0;
+  std::cerr << "topocut evaluate: error: " << failed << " of " << total << " " << what << " failed (see FAILED in the table)\n";
+  return 1;
+}
+
 // --mode incremental: a simulated robot explores every image (exploration module) and each
 // update of its map is segmented incrementally; the final maps are scored, updates timed.
 int run_incremental(const DatasetArguments& arguments, const std::vector<DatasetMap>& maps, bool compare_batch,
@@ -69,11 +79,14 @@ int run_incremental(const DatasetArguments& arguments, const std::vector<Dataset
   if (!arguments.csv.empty()) write_file_atomically(arguments.csv, incremental_results_csv(results));
   std::size_t failed = 0;
   for (const IncrementalImageResult& result : results) failed += result.incremental.ok ? 0 : 1;
-  if (failed > 0) {
-    throw Error(std::to_string(failed) + " of " + std::to_string(results.size()) +
-                " images failed (see FAILED in the table)");
-  }
-  return 0;
+  return failure_exit_code(failed, results.size(), "images");
+}
+
+// Every file a dataset run may read, so that the CSV is never one of them.
+std::vector<std::string> dataset_files(const std::vector<DatasetMap>& maps) {
+  std::vector<std::string> files;
+  for (const DatasetMap& map : maps) files.insert(files.end(), {map.plain, map.furnished, map.ground_truth});
+  return files;
 }
 
 // --maps DIR: maps without ground truth, judged by the rooms no person would draw.
@@ -83,15 +96,22 @@ int run_defects(const DatasetArguments& arguments, const std::string& folder, in
   options.load = arguments.run.load;
   options.floor_repetitions = floor_repetitions;
   options.progress = [](const std::string& line) { progress(line); };
-  const std::vector<MapDefectResult> results = run_map_files(discover_map_files(folder), options);
+  const std::vector<MapFile> files = discover_map_files(folder);
+  if (!arguments.csv.empty()) {
+    std::vector<std::string> inputs;
+    for (const MapFile& file : files) {
+      const std::vector<std::string> read = map_files(file.path);
+      inputs.insert(inputs.end(), read.begin(), read.end());
+    }
+    check_outputs({arguments.csv}, inputs);
+  }
+  const std::vector<MapDefectResult> results = run_map_files(files, options);
   std::cout << "Maps " << folder << ", method: " << method_name(arguments.run.segment) << "\n\n"
             << format_defects_table(results) << std::flush;
   if (!arguments.csv.empty()) write_file_atomically(arguments.csv, defects_csv(results));
   std::size_t failed = 0;
   for (const MapDefectResult& result : results) failed += result.ok ? 0 : 1;
-  if (failed > 0)
-    throw Error(std::to_string(failed) + " of " + std::to_string(results.size()) + " maps failed (see FAILED in the table)");
-  return 0;
+  return failure_exit_code(failed, results.size(), "maps");
 }
 
 int run(const std::vector<std::string>& args) {
@@ -133,7 +153,7 @@ int run(const std::vector<std::string>& args) {
   if (mode != "batch" && mode != "incremental") throw UsageError("--mode must be batch or incremental, not '" + mode + "'");
   const int batch_every = (*vm)["batch-every"].as<int>();
   if (batch_every < 1) throw UsageError("--batch-every must be at least 1");
-  if (!arguments.csv.empty()) check_writable(arguments.csv);
+  if (!arguments.csv.empty()) check_outputs({arguments.csv}, {});
   if (vm->count("maps")) {
     const int floor_repetitions = (*vm)["floor-repetitions"].as<int>();
     if (floor_repetitions < 0) throw UsageError("--floor-repetitions must not be negative");
@@ -142,6 +162,7 @@ int run(const std::vector<std::string>& args) {
   }
 
   const std::vector<DatasetMap> maps = select_maps(discover_dataset(arguments.dataset), arguments.run.maps);
+  if (!arguments.csv.empty()) check_outputs({arguments.csv}, dataset_files(maps));
   if (!arguments.variant_given) {
     arguments.run.variants = present_variants(maps);
     if (arguments.run.variants.empty()) throw Error("the dataset folder has no map image (neither X.png nor X_furnitures.png)");
@@ -158,11 +179,7 @@ int run(const std::vector<std::string>& args) {
 
   std::size_t failed = 0;
   for (const ImageResult& result : results) failed += result.ok ? 0 : 1;
-  if (failed > 0) {
-    throw Error(std::to_string(failed) + " of " + std::to_string(results.size()) +
-                " images failed (see FAILED in the table)");
-  }
-  return 0;
+  return failure_exit_code(failed, results.size(), "images");
 }
 
 const bool registered = register_command({"evaluate", "score segmentations of a dataset against its ground truth", &run});

@@ -10,6 +10,7 @@
 #include "topocut/exploration/exploration_frame.h"
 #include "topocut/exploration/exploration_run.h"
 #include "topocut/io/atomic_file.h"
+#include "topocut/io/output_files.h"
 #include "topocut/io/map_loader.h"
 
 namespace topocut::cli {
@@ -101,7 +102,7 @@ int run(const std::vector<std::string>& args) {
     std::error_code error;
     std::filesystem::create_directories(frames, error);
     if (error || !std::filesystem::is_directory(frames)) throw Error("cannot create the frames folder " + frames);
-    check_writable((std::filesystem::path(frames) / "frame_00001.png").string());
+    check_outputs({(std::filesystem::path(frames) / "frame_00001.png").string()}, {map_path, gt_path});
   }
 
   int frames_written = 0;

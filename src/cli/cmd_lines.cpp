@@ -10,6 +10,7 @@
 #include "cli/command.h"
 #include "topocut/core/error.h"
 #include "topocut/io/atomic_file.h"
+#include "topocut/io/output_files.h"
 #include "topocut/lines/extract.h"
 #include "topocut/lines/lines_format.h"
 #include "topocut/scan/scan_csv.h"
@@ -106,7 +107,7 @@ int run(const std::vector<std::string>& args) {
     if (!std::isfinite(value)) throw UsageError(std::string("--") + option.flag + " must be a finite number");
     option.apply(options, value);
   }
-  if (!output.empty()) check_writable(output);
+  if (!output.empty()) check_outputs({output}, {scan_path});
 
   const Scan scan = read_scan_csv(scan_path);
   const std::vector<Line> lines = extract_lines(scan, options);

@@ -5,7 +5,6 @@
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
-#include <set>
 #include <sstream>
 
 #include <opencv2/imgcodecs.hpp>
@@ -13,6 +12,7 @@
 #include "cli/command.h"
 #include "topocut/core/error.h"
 #include "topocut/io/atomic_file.h"
+#include "topocut/io/output_files.h"
 #include "topocut/io/label_image.h"
 #include "topocut/io/map_loader.h"
 #include "topocut/io/overlay.h"
@@ -146,18 +146,14 @@ int run(const std::vector<std::string>& args) {
   if (no_furniture_rule) options.merge.furniture_size = 0.0;
 
   // Every output is checked before the work starts, so a typo costs no time and leaves nothing behind.
-  std::set<std::string> seen;
   const std::pair<const char*, const std::string*> outputs[] = {
       {"out-labels", &out_labels}, {"out-color", &out_color}, {"out-json", &out_json}, {"out-svg", &out_svg}, {"out-clean", &out_clean}};
+  std::vector<std::string> paths;
   for (const auto& [option, path] : outputs) {
     if (vm->count(option) && path->empty()) throw UsageError("--" + std::string(option) + " was given an empty file name");
-    if (path->empty()) continue;
-    std::error_code ec;
-    std::string canonical = std::filesystem::weakly_canonical(*path, ec).string();
-    if (ec) canonical = std::filesystem::absolute(*path).lexically_normal().string();
-    if (!seen.insert(canonical).second) throw Error("'" + *path + "' is given for two outputs");
-    check_writable(*path);
+    if (!path->empty()) paths.push_back(*path);
   }
+  check_outputs(paths, map_files(map_path));
   if (!out_labels.empty() && lower_extension(out_labels) != ".png")
     throw Error("the label image '" + out_labels + "' must be a .png file (16-bit PNG)");
   if (!out_color.empty() && !cv::haveImageWriter(out_color))

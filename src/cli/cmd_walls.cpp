@@ -5,6 +5,7 @@
 #include "cli/command.h"
 #include "topocut/core/error.h"
 #include "topocut/io/atomic_file.h"
+#include "topocut/io/output_files.h"
 #include "topocut/io/carmen_log.h"
 #include "topocut/io/map_saver.h"
 #include "topocut/io/overlay.h"
@@ -70,8 +71,11 @@ int run(const std::vector<std::string>& args) {
   else if (element == "square") options.extraction.labeling.element = StructuringElement::kSquare;
   else throw UsageError("--element must be 'cross' or 'square', got '" + element + "'");
   const bool segment_rooms = vm->count("segment") || !out_color.empty() || !out_rooms.empty();
+  std::vector<std::string> outputs;
   for (const std::string& path : {out_map, out_walls, out_color, out_rooms})
-    if (!path.empty()) check_writable(path);
+    if (!path.empty()) outputs.push_back(path);
+  if (!out_map.empty()) outputs.push_back(map_image_path(out_map));
+  check_outputs(outputs, {log_path});
 
   const CarmenLog log = read_carmen_log(log_path, read);
   if (log.truncated_last_line) std::cerr << "topocut walls: warning: the last line of '" << log_path << "' is incomplete and was skipped\n";

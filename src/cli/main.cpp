@@ -9,6 +9,7 @@
 #include "cli/command.h"
 #include "topocut/core/allocator.h"
 #include "topocut/core/error.h"
+#include "topocut/io/output_files.h"
 
 namespace {
 
@@ -39,7 +40,13 @@ int dispatch(const std::vector<std::string>& args) {
     return 2;
   }
   try {
-    return found->second.run(std::vector<std::string>(args.begin() + 1, args.end()));
+    // Outputs are put in place only when the command ran to its end: an exception discards them
+    // all (see output_files.h). A command that returns a non-zero code on purpose (evaluate with a
+    // failed map) has written complete outputs that report it.
+    topocut::OutputRun outputs;
+    const int code = found->second.run(std::vector<std::string>(args.begin() + 1, args.end()));
+    outputs.commit();
+    return code;
   } catch (const topocut::cli::UsageError& e) {
     std::cerr << "topocut " << args[0] << ": error: " << e.what() << " (see 'topocut " << args[0] << " --help')\n";
     return 2;

@@ -11,39 +11,15 @@
 #include <opencv2/imgcodecs.hpp>
 #include <unistd.h>
 
+#include "output_staging.h"
 #include "topocut/core/error.h"
 
 namespace topocut {
 
 namespace fs = std::filesystem;
 
-namespace {
-std::string temporary_name(const std::string& path) {
-  return path + ".tmp." + std::to_string(static_cast<long>(::getpid()));
-}
-}  // namespace
-
 void write_file_atomically(const std::string& path, const std::string& contents) {
-  if (path.empty()) throw Error("output path is empty");
-  const std::string tmp = temporary_name(path);
-  {
-    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    if (!out) throw Error("cannot write '" + path + "': " + std::strerror(errno));
-    out.write(contents.data(), static_cast<std::streamsize>(contents.size()));
-    out.flush();
-    if (!out) {
-      std::error_code ignored;
-      fs::remove(tmp, ignored);
-      throw Error("cannot write '" + path + "': write failed");
-    }
-  }
-  std::error_code ec;
-  fs::rename(tmp, path, ec);
-  if (ec) {
-    std::error_code ignored;
-    fs::remove(tmp, ignored);
-    throw Error("cannot write '" + path + "': " + ec.message());
-  }
+  detail::write_output(path, contents);
 }
 
 void write_image_atomically(const std::string& path, const cv::Mat& image) {

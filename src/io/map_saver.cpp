@@ -32,12 +32,15 @@ cv::Mat ros_map_image(const OccupancyGrid& grid) {
   return image;
 }
 
+std::string map_image_path(const std::string& yaml_path, const MapSaveOptions& options) {
+  return fs::path(yaml_path).replace_extension(options.image_extension).string();
+}
+
 void save_map(const std::string& yaml_path, const OccupancyGrid& grid, const MapSaveOptions& options) {
   if (!is_yaml_path(yaml_path)) throw Error("cannot save map '" + yaml_path + "': the file name must end in .yaml");
   if (options.image_extension.empty() || options.image_extension[0] != '.')
     throw Error("cannot save map '" + yaml_path + "': the image extension must start with a dot, e.g. .pgm");
-  const fs::path yaml(yaml_path);
-  const fs::path image = fs::path(yaml).replace_extension(options.image_extension);
+  const fs::path image = map_image_path(yaml_path, options);
   check_writable(yaml_path);
   check_writable(image.string());
   const cv::Mat pixels = ros_map_image(grid);

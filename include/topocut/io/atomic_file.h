@@ -1,6 +1,7 @@
 #pragma once
-// Writing outputs so that a failure never leaves a half-written file behind: data goes to a
-// temporary file next to the target, which is renamed over it only when complete.
+// Writing outputs so that a failure never leaves a half-written file behind: data goes to an
+// exclusive temporary file next to the target, renamed over it only when complete (and, while an
+// OutputRun is open, only when the whole run succeeded: see output_files.h).
 #include <string>
 
 #include <opencv2/core.hpp>

@@ -2,6 +2,7 @@
 // Loading occupancy grids from images and ROS map_server YAML files into the three-state grid.
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <opencv2/core.hpp>
 
@@ -75,6 +76,10 @@ cv::Mat plain_image_cells(const cv::Mat& levels, const cv::Mat& transparent, con
 // read (the detected palette, the fixed thresholds, or the YAML's). Throws Error naming the file and
 // the problem on any bad input.
 OccupancyGrid load_map(const std::string& path, const MapLoadOptions& options = {}, std::string* palette = nullptr);
+
+// The files load_map reads for path: path itself and, for a ROS map YAML, the image it names (so
+// that outputs can be checked against every input before the work starts).
+std::vector<std::string> map_files(const std::string& path);
 
 // True if path names a YAML file by its extension (.yaml or .yml).
 bool is_yaml_path(const std::string& path);

@@ -17,6 +17,9 @@ struct MapSaveOptions {
 // are written atomically, the image first. Throws Error naming the file on failure.
 void save_map(const std::string& yaml_path, const OccupancyGrid& grid, const MapSaveOptions& options = {});
 
+// The image save_map writes beside yaml_path (its name with the image extension).
+std::string map_image_path(const std::string& yaml_path, const MapSaveOptions& options = {});
+
 // The image map_saver would write for grid: free 254, occupied 0, unknown 205 (CV_8UC1).
 cv::Mat ros_map_image(const OccupancyGrid& grid);
 
