@@ -2,6 +2,9 @@
 // every failure into one line on stderr and a non-zero exit code.
 #include <cstdio>
 #include <exception>
+#include <filesystem>
+#include <new>
+#include <stdexcept>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -21,6 +24,11 @@ void print_help() {
     std::cout << "  " << name << std::string(name.size() < 12 ? 12 - name.size() : 1, ' ') << command.summary << "\n";
   }
   std::cout << "\nOptions:\n  --help      show this help\n  --version   print the version\n";
+}
+
+// One line on stderr, whatever the message holds (see one_line_message).
+void report(const std::string& command, const std::string& message) {
+  std::cerr << "topocut " << command << ": error: " << topocut::one_line_message(message) << "\n";
 }
 
 // Runs the command; exceptions become one line on stderr and an exit code.
@@ -48,16 +56,23 @@ int dispatch(const std::vector<std::string>& args) {
     outputs.commit();
     return code;
   } catch (const topocut::cli::UsageError& e) {
-    std::cerr << "topocut " << args[0] << ": error: " << e.what() << " (see 'topocut " << args[0] << " --help')\n";
+    report(args[0], std::string(e.what()) + " (see 'topocut " + args[0] + " --help')");
     return 2;
   } catch (const topocut::Error& e) {
-    std::cerr << "topocut " << args[0] << ": error: " << e.what() << "\n";
+    report(args[0], e.what());
+    return 1;
+  } catch (const std::filesystem::filesystem_error& e) {
+    // A path the user gave that the system refused (too long, no permission, a loop of links).
+    report(args[0], "cannot use '" + e.path1().string() + "': " + e.code().message());
     return 1;
   } catch (const std::bad_alloc&) {
-    std::cerr << "topocut " << args[0] << ": error: out of memory\n";
+    report(args[0], "out of memory: the input needs more memory than this machine has, or declares an impossible size");
+    return 1;
+  } catch (const std::length_error&) {
+    report(args[0], "the input declares a size too large to hold in memory");
     return 1;
   } catch (const std::exception& e) {
-    std::cerr << "topocut " << args[0] << ": error: internal failure: " << e.what() << "\n";
+    report(args[0], std::string("internal failure: ") + e.what());
     return 1;
   }
 }
