@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <optional>
 #include <string>
 #include <tuple>
 #include <utility>
@@ -225,188 +226,226 @@ void validate(const DoorOptions& options) {
     throw Error("the wall opening gap and wall thickness must be positive, the other opening options non-negative");
 }
 
-std::vector<Segment2> find_door_cuts(const PolygonWithHoles& polygon, double resolution, const DoorOptions& options) {
-  validate(options);
-  if (!std::isfinite(resolution) || resolution <= 0.0) throw Error("the map resolution must be a positive number");
-  if (!options.enabled) return {};
-  std::vector<const Ring*> rings{&polygon.outer};
-  for (const Ring& hole : polygon.holes) rings.push_back(&hole);
-  std::vector<Edge> edges;
-  for (std::size_t r = 0; r < rings.size(); ++r) {
-    const Ring& ring = *rings[r];
-    for (std::size_t i = 0; i < ring.size(); ++i)
-      edges.push_back({ring[i], ring[(i + 1) % ring.size()], static_cast<int>(r), static_cast<int>(i)});
-  }
-  if (edges.empty()) return {};
-  const double reach = options.max_width / resolution;  // cells
-  const double depth = options.width_depth / resolution;
-  const EdgeGrid grid(edges, std::max(4.0, reach / 4.0));
+namespace {
 
-  std::vector<Candidate> candidates;
-  for (std::size_t r = 0; r < rings.size(); ++r) {
-    const Ring& ring = *rings[r];
-    const int n = static_cast<int>(ring.size());
-    if (r > 0) {
-      // A door cut joins two points of one ring; around a small obstacle (furniture) the region it
-      // could cut off lies within the obstacle's bounding box, too small to be a room.
-      double x0 = kInfinity, y0 = kInfinity, x1 = -kInfinity, y1 = -kInfinity;
-      for (const Point2& p : ring) {
-        x0 = std::min(x0, p.x);
-        y0 = std::min(y0, p.y);
-        x1 = std::max(x1, p.x);
-        y1 = std::max(y1, p.y);
+// What every phase of the door search reads: the polygon's rings, their edges, and the option
+// lengths in cells.
+struct DoorSearch {
+  const DoorOptions& options;
+  double resolution = 1.0;
+  std::vector<const Ring*> rings;
+  std::vector<Edge> edges;
+  double reach = 0.0;  // widest door, cells
+  double depth = 0.0;  // how far beside a cut the sides are measured, cells
+};
+
+DoorSearch door_search(const PolygonWithHoles& polygon, double resolution, const DoorOptions& options) {
+  DoorSearch search{options, resolution, {&polygon.outer}, {}, options.max_width / resolution, options.width_depth / resolution};
+  for (const Ring& hole : polygon.holes) search.rings.push_back(&hole);
+  for (std::size_t r = 0; r < search.rings.size(); ++r) {
+    const Ring& ring = *search.rings[r];
+    for (std::size_t i = 0; i < ring.size(); ++i)
+      search.edges.push_back({ring[i], ring[(i + 1) % ring.size()], static_cast<int>(r), static_cast<int>(i)});
+  }
+  return search;
+}
+
+// A door cut joins two points of one ring; around a small obstacle (furniture) the region it could
+// cut off lies within the obstacle's bounding box, too small to be a room.
+bool too_small_for_a_room(const Ring& hole, double resolution) {
+  double x0 = kInfinity, y0 = kInfinity, x1 = -kInfinity, y1 = -kInfinity;
+  for (const Point2& p : hole) {
+    x0 = std::min(x0, p.x);
+    y0 = std::min(y0, p.y);
+    x1 = std::max(x1, p.x);
+    y1 = std::max(y1, p.y);
+  }
+  return (x1 - x0) * (y1 - y0) * resolution * resolution < kSmallestRoom;
+}
+
+// The nearest boundary point within reach from the reflex corner v (vertex i of ring r, between p
+// and q), inside the cone that resolves the corner; nullopt unless it lies on ring r itself (a cut
+// to another ring splits nothing).
+std::optional<Candidate> nearest_across_corner(const DoorSearch& search, const EdgeGrid& grid, int r, int i,
+                                               const Point2& p, const Point2& v, const Point2& q) {
+  // Directions that resolve the corner: between the continuations of its two edges.
+  const Point2 e1 = minus(v, p), e2 = minus(v, q);
+  const double l1 = length(e1), l2 = length(e2);
+  const Point2 u1{e1.x / l1, e1.y / l1}, u2{e2.x / l2, e2.y / l2};
+  auto in_cone = [&](const Point2& x) {
+    const Point2 d = minus(x, v);
+    const double tolerance = 1e-9 * (std::abs(d.x) + std::abs(d.y));
+    return cross(u1, d) >= -tolerance && cross(d, u2) >= -tolerance;
+  };
+  const int n = static_cast<int>(search.rings[static_cast<std::size_t>(r)]->size());
+  const int before = (i + n - 1) % n;
+  double best2 = search.reach * search.reach;  // squared distance of the nearest point so far
+  Point2 best_point;
+  int best_ring = -1;
+  grid.visit_nearest(v, search.reach, [&](int id) {
+    const Edge& e = search.edges[static_cast<std::size_t>(id)];
+    if (e.ring == r && (e.index == i || e.index == before)) return;
+    // No point of the edge can beat the best so far if its bounding box is farther.
+    const double gx = std::max({std::min(e.a.x, e.b.x) - v.x, 0.0, v.x - std::max(e.a.x, e.b.x)});
+    const double gy = std::max({std::min(e.a.y, e.b.y) - v.y, 0.0, v.y - std::max(e.a.y, e.b.y)});
+    if (gx * gx + gy * gy >= best2) return;
+    auto consider = [&](const Point2& x) {
+      const Point2 d = minus(x, v);
+      const double d2 = dot(d, d);
+      if (d2 > 0.0 && d2 < best2 && in_cone(x)) {
+        best2 = d2;
+        best_point = x;
+        best_ring = e.ring;
       }
-      if ((x1 - x0) * (y1 - y0) * resolution * resolution < kSmallestRoom) continue;
+    };
+    consider(e.a);
+    consider(e.b);
+    const Point2 d = minus(e.b, e.a);
+    const double dd = dot(d, d);
+    if (dd > 0.0) {
+      const double t = dot(minus(v, e.a), d) / dd;
+      if (t > 0.0 && t < 1.0) consider({e.a.x + t * d.x, e.a.y + t * d.y});
     }
+    for (const Point2& ray : {u1, u2}) {
+      const double denominator = cross(ray, d);
+      if (denominator == 0.0) continue;
+      const Point2 w = minus(e.a, v);
+      const double t = cross(w, d) / denominator, s = cross(w, ray) / denominator;
+      if (t > 0.0 && s > 0.0 && s < 1.0) consider({v.x + t * ray.x, v.y + t * ray.y});
+    }
+  }, [&](double d) { return d * d < best2; });
+  if (best_ring != r) return std::nullopt;
+  return Candidate{{v, best_point}, std::sqrt(best2), r};
+}
+
+// Door candidates: from every reflex corner, the shortest cut across it.
+std::vector<Candidate> corner_cuts(const DoorSearch& search, const EdgeGrid& grid) {
+  std::vector<Candidate> candidates;
+  for (std::size_t r = 0; r < search.rings.size(); ++r) {
+    const Ring& ring = *search.rings[r];
+    if (r > 0 && too_small_for_a_room(ring, search.resolution)) continue;
+    const int n = static_cast<int>(ring.size());
     for (int i = 0; i < n; ++i) {
       const Point2& p = ring[static_cast<std::size_t>((i + n - 1) % n)];
       const Point2& v = ring[static_cast<std::size_t>(i)];
       const Point2& q = ring[static_cast<std::size_t>((i + 1) % n)];
       // Free space lies left of every ring (outer CCW, holes CW): a right turn is a reflex corner.
-      if (turn_angle(p, v, q) > -options.min_turn) continue;
-      // Directions that resolve the corner: between the continuations of its two edges.
-      const Point2 e1 = minus(v, p), e2 = minus(v, q);
-      const double l1 = length(e1), l2 = length(e2);
-      const Point2 u1{e1.x / l1, e1.y / l1}, u2{e2.x / l2, e2.y / l2};
-      auto in_cone = [&](const Point2& x) {
-        const Point2 d = minus(x, v);
-        const double tolerance = 1e-9 * (std::abs(d.x) + std::abs(d.y));
-        return cross(u1, d) >= -tolerance && cross(d, u2) >= -tolerance;
-      };
-      const int before = (i + n - 1) % n;
-      double best2 = reach * reach;  // squared distance of the nearest point so far
-      Point2 best_point;
-      int best_ring = -1;
-      grid.visit_nearest(v, reach, [&](int id) {
-        const Edge& e = edges[static_cast<std::size_t>(id)];
-        if (e.ring == static_cast<int>(r) && (e.index == i || e.index == before)) return;
-        // No point of the edge can beat the best so far if its bounding box is farther.
-        const double gx = std::max({std::min(e.a.x, e.b.x) - v.x, 0.0, v.x - std::max(e.a.x, e.b.x)});
-        const double gy = std::max({std::min(e.a.y, e.b.y) - v.y, 0.0, v.y - std::max(e.a.y, e.b.y)});
-        if (gx * gx + gy * gy >= best2) return;
-        auto consider = [&](const Point2& x) {
-          const Point2 d = minus(x, v);
-          const double d2 = dot(d, d);
-          if (d2 > 0.0 && d2 < best2 && in_cone(x)) {
-            best2 = d2;
-            best_point = x;
-            best_ring = e.ring;
-          }
-        };
-        consider(e.a);
-        consider(e.b);
-        const Point2 d = minus(e.b, e.a);
-        const double l2 = dot(d, d);
-        if (l2 > 0.0) {
-          const double t = dot(minus(v, e.a), d) / l2;
-          if (t > 0.0 && t < 1.0) consider({e.a.x + t * d.x, e.a.y + t * d.y});
-        }
-        for (const Point2& ray : {u1, u2}) {
-          const double denominator = cross(ray, d);
-          if (denominator == 0.0) continue;
-          const Point2 w = minus(e.a, v);
-          const double t = cross(w, d) / denominator, s = cross(w, ray) / denominator;
-          if (t > 0.0 && s > 0.0 && s < 1.0) consider({v.x + t * ray.x, v.y + t * ray.y});
-        }
-      }, [&](double d) { return d * d < best2; });
-      // The nearest point must be on the same ring: a cut to another ring does not split.
-      if (best_ring != static_cast<int>(r)) continue;
-      const double best = std::sqrt(best2);
-      candidates.push_back({{v, best_point}, best, static_cast<int>(r)});
+      if (turn_angle(p, v, q) > -search.options.min_turn) continue;
+      if (auto c = nearest_across_corner(search, grid, static_cast<int>(r), i, p, v, q)) candidates.push_back(*c);
     }
   }
+  return candidates;
+}
 
-  // Door test: both sides much wider than the passage.
-  std::vector<Candidate> doors;
-  if (options.extend_walls) {
-    // Openings in a wall: from the end of a thin wall, along the wall, to the first obstacle (a room
-    // front open to a corridor, a gap between partitions, a wall that stops short of the next).
-    // Such an opening may be as wide as the room behind it, so the width test is replaced by the
-    // wall: it is thin (a partition, not furniture or the building's outline) and points across.
-    const double max_gap = options.max_gap / resolution;
-    const double min_wall = options.min_wall_length / resolution;
-    const double near = 0.15 / resolution;
-    const double max_thickness = options.max_wall_thickness / resolution;
-    const double cos_tolerance = std::cos(options.gap_alignment);
-    struct End {
-      Point2 v, dir;
-      int ring;
-    };
-    std::vector<End> ends;
-    for (std::size_t r = 0; r < rings.size(); ++r) {
-      const Ring& ring = *rings[r];
-      const int n = static_cast<int>(ring.size());
-      for (int i = 0; i < n; ++i) {
-        const Point2& p = ring[static_cast<std::size_t>((i + n - 1) % n)];
-        const Point2& v = ring[static_cast<std::size_t>(i)];
-        const Point2& q = ring[static_cast<std::size_t>((i + 1) % n)];
-        if (turn_angle(p, v, q) > -options.min_turn) continue;
-        for (const Point2& from : {p, q}) {
-          const Point2 e = minus(v, from);
-          const double l = length(e);
-          if (l < min_wall) continue;
-          const Point2 dir{e.x / l, e.y / l};
-          // Thin: across the wall, just behind its end, free space of this component lies within
-          // the thickness limit. Free space is left of ring edges, so the obstacle lies right of
-          // p -> v and left of v -> q.
-          const Point2 into = &from == &p ? Point2{dir.y, -dir.x} : Point2{-dir.y, dir.x};
-          const double back = std::min(0.5 * l, 0.3 / resolution);
-          const Point2 x{v.x - back * dir.x + 1e-3 * into.x, v.y - back * dir.y + 1e-3 * into.y};
-          if (!std::isfinite(grid.cast(x, into, max_thickness))) continue;
-          ends.push_back({v, dir, static_cast<int>(r)});
-        }
+// The end of a thin wall: where it ends, the direction it points in, its ring.
+struct WallEnd {
+  Point2 v, dir;
+  int ring;
+};
+
+// Ends of walls at least min_wall_length long whose obstacle, just behind the end, is no thicker
+// than max_wall_thickness (a partition, not furniture or the building's outline).
+std::vector<WallEnd> thin_wall_ends(const DoorSearch& search, const EdgeGrid& grid) {
+  const double min_wall = search.options.min_wall_length / search.resolution;
+  const double max_thickness = search.options.max_wall_thickness / search.resolution;
+  std::vector<WallEnd> ends;
+  for (std::size_t r = 0; r < search.rings.size(); ++r) {
+    const Ring& ring = *search.rings[r];
+    const int n = static_cast<int>(ring.size());
+    for (int i = 0; i < n; ++i) {
+      const Point2& p = ring[static_cast<std::size_t>((i + n - 1) % n)];
+      const Point2& v = ring[static_cast<std::size_t>(i)];
+      const Point2& q = ring[static_cast<std::size_t>((i + 1) % n)];
+      if (turn_angle(p, v, q) > -search.options.min_turn) continue;
+      for (const Point2& from : {p, q}) {
+        const Point2 e = minus(v, from);
+        const double l = length(e);
+        if (l < min_wall) continue;
+        const Point2 dir{e.x / l, e.y / l};
+        // Thin: across the wall, just behind its end, free space of this component lies within
+        // the thickness limit. Free space is left of ring edges, so the obstacle lies right of
+        // p -> v and left of v -> q.
+        const Point2 into = &from == &p ? Point2{dir.y, -dir.x} : Point2{-dir.y, dir.x};
+        const double back = std::min(0.5 * l, 0.3 / search.resolution);
+        const Point2 x{v.x - back * dir.x + 1e-3 * into.x, v.y - back * dir.y + 1e-3 * into.y};
+        if (!std::isfinite(grid.cast(x, into, max_thickness))) continue;
+        ends.push_back({v, dir, static_cast<int>(r)});
       }
     }
-    std::map<std::pair<double, double>, std::vector<std::size_t>> at;
-    for (std::size_t k = 0; k < ends.size(); ++k) at[{ends[k].v.x, ends[k].v.y}].push_back(k);
-    for (const End& e : ends) {
-      int hit_edge = -1;
-      const double hit = grid.cast(e.v, e.dir, max_gap, &hit_edge);
-      if (!std::isfinite(hit) || edges[static_cast<std::size_t>(hit_edge)].ring != e.ring) continue;
-      const Point2 h{e.v.x + hit * e.dir.x, e.v.y + hit * e.dir.y};
-      // A wall end near the hit whose wall points back along the ray.
-      const End* best = nullptr;
-      double best_d = near;
-      for (auto it = at.lower_bound({h.x - near, -kInfinity}); it != at.end() && it->first.first <= h.x + near; ++it) {
-        for (const std::size_t k : it->second) {
-          const End& o = ends[k];
-          const double d = length(minus(o.v, h));
-          if (o.ring != e.ring || d > best_d || dot(o.dir, e.dir) > -cos_tolerance) continue;
-          const Point2 g = minus(o.v, e.v);
-          const double gl = length(g);
-          if (gl <= 0.0 || dot(g, e.dir) < cos_tolerance * gl) continue;
-          // Nothing in between: the first wall along v -> o is o's own.
-          if (grid.cast(e.v, {g.x / gl, g.y / gl}, gl) < gl - 1e-6) continue;
-          best = &o;
-          best_d = d;
-        }
-      }
-      // The opening ends at the wall end met, or else where the ray meets the wall.
-      const Point2 target = best ? best->v : h;
-      const Point2 g = minus(target, e.v);
+  }
+  return ends;
+}
+
+using WallEndIndex = std::map<std::pair<double, double>, std::vector<std::size_t>>;
+
+// The wall end near the hit h whose wall points back along e's ray with nothing in between, or null.
+const WallEnd* facing_wall_end(const DoorSearch& search, const EdgeGrid& grid, const std::vector<WallEnd>& ends,
+                               const WallEndIndex& at, const WallEnd& e, const Point2& h) {
+  const double near = 0.15 / search.resolution;
+  const double cos_tolerance = std::cos(search.options.gap_alignment);
+  const WallEnd* best = nullptr;
+  double best_d = near;
+  for (auto it = at.lower_bound({h.x - near, -kInfinity}); it != at.end() && it->first.first <= h.x + near; ++it) {
+    for (const std::size_t k : it->second) {
+      const WallEnd& o = ends[k];
+      const double d = length(minus(o.v, h));
+      if (o.ring != e.ring || d > best_d || dot(o.dir, e.dir) > -cos_tolerance) continue;
+      const Point2 g = minus(o.v, e.v);
       const double gl = length(g);
-      const Point2 u{g.x / gl, g.y / gl};
-      const Point2 mid{(e.v.x + target.x) / 2.0, (e.v.y + target.y) / 2.0};
-      const double cap = options.min_side_width / resolution;
-      if (side_width(grid, mid, u, {-u.y, u.x}, depth, cap) < cap) continue;
-      if (side_width(grid, mid, u, {u.y, -u.x}, depth, cap) < cap) continue;
-      Candidate c{{e.v, target}, gl, e.ring};
-      // Openings come after every door: a narrow passage is the stronger evidence.
-      c.width += max_gap;
-      doors.push_back(c);
+      if (gl <= 0.0 || dot(g, e.dir) < cos_tolerance * gl) continue;
+      // Nothing in between: the first wall along v -> o is o's own.
+      if (grid.cast(e.v, {g.x / gl, g.y / gl}, gl) < gl - 1e-6) continue;
+      best = &o;
+      best_d = d;
     }
   }
-  for (const Candidate& c : candidates) {
-    const Point2 d = minus(c.segment.b, c.segment.a);
-    const Point2 u{d.x / c.width, d.y / c.width};
-    const Point2 mid{(c.segment.a.x + c.segment.b.x) / 2.0, (c.segment.a.y + c.segment.b.y) / 2.0};
-    const double cap = c.width / options.door_ratio;
-    if (side_width(grid, mid, u, {-u.y, u.x}, depth, cap) < cap) continue;
-    if (side_width(grid, mid, u, {u.y, -u.x}, depth, cap) < cap) continue;
-    doors.push_back(c);
+  return best;
+}
+
+// Openings in a wall: from the end of a thin wall, along the wall, to the first obstacle (a room
+// front open to a corridor, a gap between partitions, a wall that stops short of the next). Such an
+// opening may be as wide as the room behind it, so the width test is replaced by the wall: it is thin
+// and points across, and both sides are at least min_side_width wide.
+std::vector<Candidate> wall_openings(const DoorSearch& search, const EdgeGrid& grid) {
+  const double max_gap = search.options.max_gap / search.resolution;
+  const std::vector<WallEnd> ends = thin_wall_ends(search, grid);
+  WallEndIndex at;
+  for (std::size_t k = 0; k < ends.size(); ++k) at[{ends[k].v.x, ends[k].v.y}].push_back(k);
+  std::vector<Candidate> openings;
+  for (const WallEnd& e : ends) {
+    int hit_edge = -1;
+    const double hit = grid.cast(e.v, e.dir, max_gap, &hit_edge);
+    if (!std::isfinite(hit) || search.edges[static_cast<std::size_t>(hit_edge)].ring != e.ring) continue;
+    const Point2 h{e.v.x + hit * e.dir.x, e.v.y + hit * e.dir.y};
+    // The opening ends at the wall end met, or else where the ray meets the wall.
+    const WallEnd* facing = facing_wall_end(search, grid, ends, at, e, h);
+    const Point2 target = facing ? facing->v : h;
+    const Point2 g = minus(target, e.v);
+    const double gl = length(g);
+    const Point2 u{g.x / gl, g.y / gl};
+    const Point2 mid{(e.v.x + target.x) / 2.0, (e.v.y + target.y) / 2.0};
+    const double cap = search.options.min_side_width / search.resolution;
+    if (side_width(grid, mid, u, {-u.y, u.x}, search.depth, cap) < cap) continue;
+    if (side_width(grid, mid, u, {u.y, -u.x}, search.depth, cap) < cap) continue;
+    // Openings come after every door: a narrow passage is the stronger evidence.
+    openings.push_back({{e.v, target}, gl + max_gap, e.ring});
   }
-  // Narrowest first; a door found from both of its jambs (or from two corners of one wall end) is
-  // kept once; crossing cuts are not allowed.
+  return openings;
+}
+
+// Door test: both sides much wider than the passage.
+bool has_wide_sides(const DoorSearch& search, const EdgeGrid& grid, const Candidate& c) {
+  const Point2 d = minus(c.segment.b, c.segment.a);
+  const Point2 u{d.x / c.width, d.y / c.width};
+  const Point2 mid{(c.segment.a.x + c.segment.b.x) / 2.0, (c.segment.a.y + c.segment.b.y) / 2.0};
+  const double cap = c.width / search.options.door_ratio;
+  return side_width(grid, mid, u, {-u.y, u.x}, search.depth, cap) >= cap &&
+         side_width(grid, mid, u, {u.y, -u.x}, search.depth, cap) >= cap;
+}
+
+// Narrowest first; a door found from both of its jambs (or from two corners of one wall end) is
+// kept once; crossing cuts are not allowed.
+std::vector<Segment2> narrowest_compatible(std::vector<Candidate> doors, double resolution) {
   std::sort(doors.begin(), doors.end(), [](const Candidate& x, const Candidate& y) {
     return std::tie(x.width, x.segment.a.x, x.segment.a.y, x.segment.b.x, x.segment.b.y) <
            std::tie(y.width, y.segment.a.x, y.segment.a.y, y.segment.b.x, y.segment.b.y);
@@ -426,6 +465,23 @@ std::vector<Segment2> find_door_cuts(const PolygonWithHoles& polygon, double res
     if (ok) accepted.push_back(c.segment);
   }
   return accepted;
+}
+
+}  // namespace
+
+std::vector<Segment2> find_door_cuts(const PolygonWithHoles& polygon, double resolution, const DoorOptions& options) {
+  validate(options);
+  if (!std::isfinite(resolution) || resolution <= 0.0) throw Error("the map resolution must be a positive number");
+  if (!options.enabled) return {};
+  const DoorSearch search = door_search(polygon, resolution, options);
+  if (search.edges.empty()) return {};
+  const EdgeGrid grid(search.edges, std::max(4.0, search.reach / 4.0));
+  std::vector<Candidate> doors;
+  if (options.extend_walls) doors = wall_openings(search, grid);
+  for (const Candidate& c : corner_cuts(search, grid)) {
+    if (has_wide_sides(search, grid, c)) doors.push_back(c);
+  }
+  return narrowest_compatible(std::move(doors), resolution);
 }
 
 std::vector<PolygonWithHoles> split_polygon(const PolygonWithHoles& polygon, const std::vector<Segment2>& chords) {
