@@ -14,20 +14,8 @@ namespace topocut {
 namespace detail {
 
 Line line_from_points(std::vector<std::size_t> support, const std::vector<Point2>& points) {
-  // fit_line without its residual pass (a Line carries no sigma): centroid, centred moments, polar form.
-  const double n = static_cast<double>(points.size());
-  Point2 c;
-  for (const Point2& p : points) c.x += p.x, c.y += p.y;
-  c.x /= n;
-  c.y /= n;
-  double suu = 0.0, suv = 0.0, svv = 0.0;
-  for (const Point2& p : points) {
-    const double u = p.x - c.x, v = p.y - c.y;
-    suu += u * u;
-    suv += u * v;
-    svv += v * v;
-  }
-  const LineFit fit = from_moments(c, suu, suv, svv, n);
+  // fit_line without its residual pass: a Line carries no sigma.
+  const LineFit fit = centred_fit(points);
   Line line;
   line.rho = fit.rho;
   line.alpha = fit.alpha;

@@ -77,36 +77,12 @@ double residual_rms(std::span<const Point2> points, std::span<const double> weig
 
 }  // namespace
 
-LineFit fit_line(std::span<const Point2> points) {
-  if (points.empty()) return {};
-  const double n = static_cast<double>(points.size());
-  Point2 c;
-  for (const Point2& p : points) {
-    c.x += p.x;
-    c.y += p.y;
-  }
-  c.x /= n;
-  c.y /= n;
-  // Two passes (centre first) keep the moments exact enough for noiseless data far from the origin.
-  double suu = 0.0, suv = 0.0, svv = 0.0;
-  for (const Point2& p : points) {
-    const double u = p.x - c.x, v = p.y - c.y;
-    suu += u * u;
-    suv += u * v;
-    svv += v * v;
-  }
-  LineFit fit = from_moments(c, suu, suv, svv, n);
-  fit.sigma = residual_rms(points, {}, fit);
-  return fit;
-}
-
-LineFit fit_line(std::span<const Point2> points, std::span<const double> weights) {
-  if (points.size() != weights.size()) throw Error("fit_line needs one weight per point");
+LineFit centred_fit(std::span<const Point2> points, std::span<const double> weights) {
+  auto weight = [&](std::size_t i) { return weights.empty() ? 1.0 : weights[i]; };
   double w_sum = 0.0;
   Point2 c;
   for (std::size_t i = 0; i < points.size(); ++i) {
-    const double w = weights[i];
-    if (!(w >= 0.0) || !std::isfinite(w)) throw Error("fit_line weights must be finite and >= 0");
+    const double w = weight(i);
     w_sum += w;
     c.x += w * points[i].x;
     c.y += w * points[i].y;
@@ -116,12 +92,28 @@ LineFit fit_line(std::span<const Point2> points, std::span<const double> weights
   c.y /= w_sum;
   double suu = 0.0, suv = 0.0, svv = 0.0;
   for (std::size_t i = 0; i < points.size(); ++i) {
-    const double u = points[i].x - c.x, v = points[i].y - c.y, w = weights[i];
+    const double u = points[i].x - c.x, v = points[i].y - c.y, w = weight(i);
     suu += w * u * u;
     suv += w * u * v;
     svv += w * v * v;
   }
-  LineFit fit = from_moments(c, suu, suv, svv, w_sum);
+  return from_moments(c, suu, suv, svv, w_sum);
+}
+
+LineFit fit_line(std::span<const Point2> points) {
+  if (points.empty()) return {};
+  LineFit fit = centred_fit(points);
+  fit.sigma = residual_rms(points, {}, fit);
+  return fit;
+}
+
+LineFit fit_line(std::span<const Point2> points, std::span<const double> weights) {
+  if (points.size() != weights.size()) throw Error("fit_line needs one weight per point");
+  for (const double w : weights) {
+    if (!(w >= 0.0) || !std::isfinite(w)) throw Error("fit_line weights must be finite and >= 0");
+  }
+  LineFit fit = centred_fit(points, weights);
+  if (fit.weight <= 0.0) return fit;
   fit.sigma = residual_rms(points, weights, fit);
   return fit;
 }

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <span>
 
 #include "topocut/lines/line_fit.h"
 
@@ -12,6 +13,11 @@ namespace topocut {
 
 // Polar fit from a centroid and centred second moments (shared with fit_line).
 LineFit from_moments(const Point2& centroid, double suu, double suv, double svv, double weight);
+
+// Least-squares line through points (weights empty: all 1) in two passes, centroid first, which keeps
+// the moments exact enough for noiseless data far from the origin; sigma is left 0. Empty or
+// zero-weight input gives a default LineFit.
+LineFit centred_fit(std::span<const Point2> points, std::span<const double> weights = {});
 
 // A fitted line with its normal precomputed, for loops that measure many distances to one line.
 struct NormalForm {
