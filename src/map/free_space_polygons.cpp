@@ -284,7 +284,7 @@ FreeSpacePolygons free_space_polygons(const cv::Mat& free_mask, double resolutio
   return result;
 }
 
-Ring remove_collinear_vertices(const Ring& ring) {
+Ring remove_collinear_vertices(const Ring& ring, const std::function<bool(const Point2&)>& keep) {
   Ring out;
   out.reserve(ring.size());
   for (const Point2& p : ring)
@@ -302,7 +302,7 @@ Ring remove_collinear_vertices(const Ring& ring) {
       const Point2& c = out[(i + 1) % n];
       const double cross = (b.x - a.x) * (c.y - b.y) - (b.y - a.y) * (c.x - b.x);
       const double dot = (b.x - a.x) * (c.x - b.x) + (b.y - a.y) * (c.y - b.y);
-      if (cross == 0.0 && dot > 0.0) {
+      if (cross == 0.0 && dot > 0.0 && !(keep && keep(b))) {
         changed = true;
         continue;
       }

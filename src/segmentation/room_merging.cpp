@@ -11,6 +11,7 @@
 #include <utility>
 
 #include "topocut/core/error.h"
+#include "topocut/map/free_space_polygons.h"
 
 namespace topocut {
 
@@ -200,17 +201,7 @@ class Merger {
       // dropped unless a remaining cut ends there (the cut must stay an edge of both rooms).
       PolygonWithHoles room = unions.at(r);
       auto tidy = [&](Ring& ring) {
-        Ring kept;
-        const std::size_t n = ring.size();
-        for (std::size_t i = 0; i < n; ++i) {
-          const Point2& a = ring[(i + n - 1) % n];
-          const Point2& b = ring[i];
-          const Point2& c = ring[(i + 1) % n];
-          const double turn = (b.x - a.x) * (c.y - b.y) - (b.y - a.y) * (c.x - b.x);
-          const double ahead = (b.x - a.x) * (c.x - b.x) + (b.y - a.y) * (c.y - b.y);
-          if (turn == 0.0 && ahead > 0.0 && !ends.count({b.x, b.y})) continue;
-          kept.push_back(b);
-        }
+        Ring kept = remove_collinear_vertices(ring, [&](const Point2& p) { return ends.count({p.x, p.y}) > 0; });
         if (kept.size() >= 3) ring = std::move(kept);
       };
       tidy(room.outer);

@@ -2,6 +2,7 @@
 // Contours -> polygons: every connected component of free space becomes one polygon with holes
 // whose rings follow the pixel edges exactly (so its area is its pixel count), in grid coordinates
 // (x = column, y = height-1-row, cell centres at integers: vertices lie on half-integers).
+#include <functional>
 #include <vector>
 
 #include <opencv2/core.hpp>
@@ -51,7 +52,8 @@ std::vector<FreeSpaceComponent> trace_components(const cv::Mat& pinch_free_mask)
 // m² at the given resolution). Throws Error on an empty or non-8-bit mask or a bad resolution.
 FreeSpacePolygons free_space_polygons(const cv::Mat& free_mask, double resolution, const ContourOptions& options = {});
 
-// Drops vertices where the ring goes straight on (and repeated vertices); exact comparisons.
-Ring remove_collinear_vertices(const Ring& ring);
+// Drops vertices where the ring goes straight on (and repeated vertices); exact comparisons. A
+// vertex for which keep returns true stays even there (e.g. where a cut ends on a straight wall).
+Ring remove_collinear_vertices(const Ring& ring, const std::function<bool(const Point2&)>& keep = nullptr);
 
 }  // namespace topocut
