@@ -9,13 +9,13 @@
 #include <opencv2/imgproc.hpp>
 
 #include "topocut/core/error.h"
+#include "topocut/scan/grid_ray.h"
 #include "topocut/scan/laser_simulator.h"
 
 namespace topocut {
 
 namespace {
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
 
 std::string format_point(const Point2& p) {
   char buffer[96];
@@ -137,35 +137,16 @@ void Explorer::scan() {
   for (std::size_t i = 0; i < angles.size(); ++i) {
     const int hit = simulated.hit[i];
     const double range = simulated.scan.ranges[i];
-    // The same exact cell traversal as the simulator (Amanatides & Woo), from the robot's cell.
+    // The same exact cell traversal as the simulator, from the robot's cell.
     const double a = pose_.theta + angles[i];
-    const double du = std::cos(a), dv = std::sin(a);
-    int column = std::clamp(static_cast<int>(std::floor(pu)), 0, w - 1);
-    int row = std::clamp(static_cast<int>(std::floor(pv)), 0, h - 1);  // counted from the bottom
-    const int step_u = du > 0.0 ? 1 : -1, step_v = dv > 0.0 ? 1 : -1;
-    const double delta_u = du != 0.0 ? 1.0 / std::abs(du) : kInf;
-    const double delta_v = dv != 0.0 ? 1.0 / std::abs(dv) : kInf;
-    double next_u = du != 0.0 ? ((column + (du > 0.0 ? 1 : 0)) - pu) / du : kInf;
-    double next_v = dv != 0.0 ? ((row + (dv > 0.0 ? 1 : 0)) - pv) / dv : kInf;
     // Never mark beyond the measured range, even if rounding made the two traversals differ.
     const double limit = hit >= 0 ? range / res : max_t;
-    double t = 0.0;
-    while (true) {
+    walk_grid_ray(w, h, pu, pv, std::cos(a), std::sin(a), 0.0, max_t, [&](int column, int row, double t) {
       const int image_row = h - 1 - row;
-      if (image_row * w + column == hit) break;
-      if (t > limit) break;
+      if (image_row * w + column == hit || t > limit) return false;
       mark(column, image_row, kFree);
-      if (next_u < next_v) {
-        t = next_u;
-        next_u += delta_u;
-        column += step_u;
-      } else {
-        t = next_v;
-        next_v += delta_v;
-        row += step_v;
-      }
-      if (t > max_t || column < 0 || column >= w || row < 0 || row >= h) break;
-    }
+      return true;
+    });
     if (hit >= 0) mark(hit % w, hit / w, kOccupied);
   }
   // The robot's own cell is free (it stands there), even if no beam started inside it.

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "topocut/core/error.h"
+#include "topocut/scan/grid_ray.h"
 
 namespace topocut {
 
@@ -134,31 +135,12 @@ SimulatedScan simulate_scan(const OccupancyGrid& grid, const Pose2& pose, const 
       t_exit = std::min(t_exit, t1);
     }
     if (misses || t_enter > t_exit) continue;
-    int column = std::clamp(static_cast<int>(std::floor(pu + t_enter * du)), 0, width - 1);
-    int row = std::clamp(static_cast<int>(std::floor(pv + t_enter * dv)), 0, height - 1);
-    const int step_u = du > 0.0 ? 1 : -1, step_v = dv > 0.0 ? 1 : -1;
-    const double delta_u = du != 0.0 ? 1.0 / std::abs(du) : kInf;
-    const double delta_v = dv != 0.0 ? 1.0 / std::abs(dv) : kInf;
-    double next_u = du != 0.0 ? ((column + (du > 0.0 ? 1 : 0)) - pu) / du : kInf;
-    double next_v = dv != 0.0 ? ((row + (dv > 0.0 ? 1 : 0)) - pv) / dv : kInf;
-    double t = t_enter;
-    while (true) {
-      if (blocks(column, row)) {
-        result.scan.ranges[i] = t * res;
-        result.hit[i] = (height - 1 - row) * width + column;
-        break;
-      }
-      if (next_u < next_v) {
-        t = next_u;
-        next_u += delta_u;
-        column += step_u;
-      } else {
-        t = next_v;
-        next_v += delta_v;
-        row += step_v;
-      }
-      if (t > max_t || column < 0 || column >= width || row < 0 || row >= height) break;
-    }
+    walk_grid_ray(width, height, pu, pv, du, dv, t_enter, max_t, [&](int column, int row, double t) {
+      if (!blocks(column, row)) return true;
+      result.scan.ranges[i] = t * res;
+      result.hit[i] = (height - 1 - row) * width + column;
+      return false;
+    });
   }
   add_noise(result, spec, rng);
   return result;
