@@ -54,15 +54,31 @@ std::vector<Point2> initial_centres(std::span<const Point2> points, int wanted) 
   return centres;
 }
 
+// The u^m-weighted sums of the points per centre, from which the next centres follow.
+struct WeightedSums {
+  std::vector<double> x, y, w;
+  explicit WeightedSums(size_t c) : x(c), y(c), w(c) {}
+  // Centres are the u^m-weighted means of the points.
+  void update_centres(std::vector<Point2>& centres) const {
+    for (size_t j = 0; j < centres.size(); ++j)
+      if (w[j] > 0.0) centres[j] = {x[j] / w[j], y[j] / w[j]};
+  }
+};
+
 // Bezdek's membership update u_ij = 1 / Σ_k (d_ij / d_ik)^(2/(m-1)), computed as w_j / Σ_k w_k with
 // w_k = (d_min / d_ik)^(2/(m-1)): c powers per point instead of c², none at all for m = 2 (w_k is a
 // ratio of squared distances), and no overflow for points very near a centre (every w_k <= 1). A
-// point on a centre belongs to it (shared equally among coinciding centres). Returns the largest
+// point on a centre belongs to it (shared equally among coinciding centres). The same pass sums
+// the points weighted by u^m (u² without pow for m = 2) for the next centres. Returns the largest
 // change of any membership, for the convergence test.
-double update_memberships(std::span<const Point2> points, const std::vector<Point2>& centres, double exponent,
-                          std::vector<double>& u) {
+double update_memberships(std::span<const Point2> points, const std::vector<Point2>& centres, double fuzzifier,
+                          std::vector<double>& u, WeightedSums& sums) {
   const size_t c = centres.size();
-  const bool squared = exponent == 1.0;  // m = 2
+  const double exponent = 1.0 / (fuzzifier - 1.0);  // with squared distances
+  const bool squared = fuzzifier == 2.0;
+  std::fill(sums.x.begin(), sums.x.end(), 0.0);
+  std::fill(sums.y.begin(), sums.y.end(), 0.0);
+  std::fill(sums.w.begin(), sums.w.end(), 0.0);
   std::vector<double> w(c);
   double change = 0.0;
   for (size_t i = 0; i < points.size(); ++i) {
@@ -82,28 +98,13 @@ double update_memberships(std::span<const Point2> points, const std::vector<Poin
       const double value = w[j] / sum;
       change = std::max(change, std::abs(value - row[j]));
       row[j] = value;
+      const double weight = squared ? value * value : std::pow(value, fuzzifier);
+      sums.x[j] += weight * points[i].x;
+      sums.y[j] += weight * points[i].y;
+      sums.w[j] += weight;
     }
   }
   return change;
-}
-
-// Centres are the u^m-weighted means of the points (u² without pow for m = 2).
-void update_centres(std::span<const Point2> points, const std::vector<double>& u, double fuzzifier,
-                    std::vector<Point2>& centres) {
-  const size_t c = centres.size();
-  std::vector<double> wx(c, 0.0), wy(c, 0.0), w(c, 0.0);
-  const bool squared = fuzzifier == 2.0;
-  for (size_t i = 0; i < points.size(); ++i) {
-    const double* row = &u[i * c];
-    for (size_t j = 0; j < c; ++j) {
-      const double weight = squared ? row[j] * row[j] : std::pow(row[j], fuzzifier);
-      wx[j] += weight * points[i].x;
-      wy[j] += weight * points[i].y;
-      w[j] += weight;
-    }
-  }
-  for (size_t j = 0; j < c; ++j)
-    if (w[j] > 0.0) centres[j] = {wx[j] / w[j], wy[j] / w[j]};
 }
 
 }  // namespace
@@ -118,18 +119,18 @@ FuzzyCMeansResult fuzzy_c_means(std::span<const Point2> points, const FuzzyCMean
   std::vector<Point2> centres = initial_centres(points, options.clusters);
   const size_t c = centres.size();
   const size_t n = points.size();
-  const double exponent = 1.0 / (options.fuzzifier - 1.0);
   std::vector<double> u(n * c, 0.0);
-  update_memberships(points, centres, exponent, u);
+  WeightedSums sums(c);
+  update_memberships(points, centres, options.fuzzifier, u, sums);
   result.iterations = 1;
   while (true) {
-    update_centres(points, u, options.fuzzifier, centres);
+    sums.update_centres(centres);
     if (result.iterations >= options.max_iterations) break;
-    const double change = update_memberships(points, centres, exponent, u);
+    const double change = update_memberships(points, centres, options.fuzzifier, u, sums);
     ++result.iterations;
     if (change <= options.tolerance) {
       result.converged = true;
-      update_centres(points, u, options.fuzzifier, centres);  // so the centres match the final memberships
+      sums.update_centres(centres);  // so the centres match the final memberships
       break;
     }
   }

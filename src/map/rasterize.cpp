@@ -74,10 +74,10 @@ struct OrphanBlob {
 class LabelPresence {
  public:
   explicit LabelPresence(const cv::Mat& labels) : labels_(labels) {
-    cv::Mat tiles(cv::Size((labels.cols + kTile - 1) / kTile, (labels.rows + kTile - 1) / kTile), CV_32SC1, cv::Scalar(0));
+    cv::Mat tiles(cv::Size((labels.cols + kTile - 1) / kTile, (labels.rows + kTile - 1) / kTile), CV_8UC1, cv::Scalar(0));
     for (int r = 0; r < labels.rows; ++r) {
       const int* row = labels.ptr<int>(r);
-      int* tile_row = tiles.ptr<int>(r / kTile);
+      unsigned char* tile_row = tiles.ptr<unsigned char>(r / kTile);
       for (int c = 0; c < labels.cols; ++c) tile_row[c / kTile] |= row[c] > 0;
     }
     cv::integral(tiles, sums_, CV_32S);
