@@ -115,12 +115,33 @@ void mark_levels(CDT& cdt, IsBoundary boundary) {
 
 bool inside_face(const CDT& cdt, Face f) { return !cdt.is_infinite(f) && f->info().level % 2 == 1; }
 
+// The edges of a triangulation by the local ids of their end points, and each point's degree: what
+// free_segment() asks about many times. CGAL's own edge test circulates around a vertex, which is
+// quadratic when many segments start at a vertex of high degree (the base corners of a comb).
+struct EdgeIndex {
+  std::unordered_map<std::uint64_t, CDT::Edge> edges;
+  std::vector<int> degree;  // per local id
+
+  EdgeIndex(const CDT& cdt, std::size_t points) : degree(points, 0) {
+    edges.reserve(3 * points);
+    for (auto e = cdt.finite_edges_begin(); e != cdt.finite_edges_end(); ++e) {
+      const int u = e->first->vertex(CDT::cw(e->second))->info().id;
+      const int w = e->first->vertex(CDT::ccw(e->second))->info().id;
+      if (u < 0 || w < 0) continue;
+      edges.emplace(pair_key(u, w), *e);
+      ++degree[static_cast<std::size_t>(u)];
+      ++degree[static_cast<std::size_t>(w)];
+    }
+  }
+};
+
 // True when the segment between two vertices crosses no constrained edge and passes through no
-// other vertex: a walk through the triangles it crosses, with exact orientation tests.
-bool free_segment(const CDT& cdt, Vertex va, Vertex vb) {
-  Face fh;
-  int i;
-  if (cdt.is_edge(va, vb, fh, i)) return !cdt.is_constrained(CDT::Edge(fh, i));
+// other vertex: a walk through the triangles it crosses, with exact orientation tests. The walk
+// starts at the end of lower degree (the answer does not depend on the direction).
+bool free_segment(const CDT& cdt, const EdgeIndex& index, Vertex va, Vertex vb) {
+  const int ia = va->info().id, ib = vb->info().id;
+  if (const auto it = index.edges.find(pair_key(ia, ib)); it != index.edges.end()) return !cdt.is_constrained(it->second);
+  if (index.degree[static_cast<std::size_t>(ia)] > index.degree[static_cast<std::size_t>(ib)]) std::swap(va, vb);
   const Pt& a = va->point();
   const Pt& b = vb->point();
   // The triangle at va whose angle contains the direction to b: (va, right, left) counter-clockwise.
@@ -427,10 +448,11 @@ std::vector<std::pair<int, int>> candidate_diagonals(PassState& st) {
     if (va != vb) cdt.insert_constraint(va, vb);
   }
   std::vector<char> s_valid(s_diagonals.size(), 0);
+  const EdgeIndex edge_index(cdt, set.points.size());
   for (std::size_t i = 0; i < s_diagonals.size(); ++i) {
     const auto [a, b] = s_diagonals[i];
     s_valid[i] = poly.vid[a] != poly.vid[b] && in_wedge(poly, a, poly.pt[b]) && in_wedge(poly, b, poly.pt[a]) &&
-                 free_segment(cdt, handle[set.local[a]], handle[set.local[b]]);
+                 free_segment(cdt, edge_index, handle[set.local[a]], handle[set.local[b]]);
   }
   for (std::size_t i = 0; i < s_diagonals.size(); ++i) {
     if (s_valid[i]) {

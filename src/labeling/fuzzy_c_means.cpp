@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numeric>
 #include <string>
 
@@ -53,30 +54,57 @@ std::vector<Point2> initial_centres(std::span<const Point2> points, int wanted) 
   return centres;
 }
 
-// Bezdek's membership update u_ij = 1 / Σ_k (d_ij / d_ik)^(2/(m-1)); a point on a centre belongs
-// to it (shared equally among coinciding centres).
-void update_memberships(std::span<const Point2> points, const std::vector<Point2>& centres, double exponent,
-                        std::vector<double>& u) {
+// The u^m-weighted sums of the points per centre, from which the next centres follow.
+struct WeightedSums {
+  std::vector<double> x, y, w;
+  explicit WeightedSums(size_t c) : x(c), y(c), w(c) {}
+  // Centres are the u^m-weighted means of the points.
+  void update_centres(std::vector<Point2>& centres) const {
+    for (size_t j = 0; j < centres.size(); ++j)
+      if (w[j] > 0.0) centres[j] = {x[j] / w[j], y[j] / w[j]};
+  }
+};
+
+// Bezdek's membership update u_ij = 1 / Σ_k (d_ij / d_ik)^(2/(m-1)), computed as w_j / Σ_k w_k with
+// w_k = (d_min / d_ik)^(2/(m-1)): c powers per point instead of c², none at all for m = 2 (w_k is a
+// ratio of squared distances), and no overflow for points very near a centre (every w_k <= 1). A
+// point on a centre belongs to it (shared equally among coinciding centres). The same pass sums
+// the points weighted by u^m (u² without pow for m = 2) for the next centres. Returns the largest
+// change of any membership, for the convergence test.
+double update_memberships(std::span<const Point2> points, const std::vector<Point2>& centres, double fuzzifier,
+                          std::vector<double>& u, WeightedSums& sums) {
   const size_t c = centres.size();
-  std::vector<double> d2(c);
+  const double exponent = 1.0 / (fuzzifier - 1.0);  // with squared distances
+  const bool squared = fuzzifier == 2.0;
+  std::fill(sums.x.begin(), sums.x.end(), 0.0);
+  std::fill(sums.y.begin(), sums.y.end(), 0.0);
+  std::fill(sums.w.begin(), sums.w.end(), 0.0);
+  std::vector<double> w(c);
+  double change = 0.0;
   for (size_t i = 0; i < points.size(); ++i) {
     double* row = &u[i * c];
-    int zero = 0;
+    double nearest = std::numeric_limits<double>::infinity();
     for (size_t j = 0; j < c; ++j) {
-      d2[j] = squared_distance(points[i], centres[j]);
-      if (d2[j] == 0.0) ++zero;
+      w[j] = squared_distance(points[i], centres[j]);
+      nearest = std::min(nearest, w[j]);
     }
-    if (zero > 0) {
-      for (size_t j = 0; j < c; ++j) row[j] = d2[j] == 0.0 ? 1.0 / zero : 0.0;
-      continue;
+    double sum = 0.0;
+    if (nearest == 0.0) {
+      for (size_t j = 0; j < c; ++j) sum += w[j] = w[j] == 0.0 ? 1.0 : 0.0;
+    } else {
+      for (size_t j = 0; j < c; ++j) sum += w[j] = squared ? nearest / w[j] : std::pow(nearest / w[j], exponent);
     }
-    // With squared distances the exponent is 1/(m-1).
     for (size_t j = 0; j < c; ++j) {
-      double sum = 0.0;
-      for (size_t k = 0; k < c; ++k) sum += std::pow(d2[j] / d2[k], exponent);
-      row[j] = 1.0 / sum;
+      const double value = w[j] / sum;
+      change = std::max(change, std::abs(value - row[j]));
+      row[j] = value;
+      const double weight = squared ? value * value : std::pow(value, fuzzifier);
+      sums.x[j] += weight * points[i].x;
+      sums.y[j] += weight * points[i].y;
+      sums.w[j] += weight;
     }
   }
+  return change;
 }
 
 }  // namespace
@@ -91,42 +119,18 @@ FuzzyCMeansResult fuzzy_c_means(std::span<const Point2> points, const FuzzyCMean
   std::vector<Point2> centres = initial_centres(points, options.clusters);
   const size_t c = centres.size();
   const size_t n = points.size();
-  const double exponent = 1.0 / (options.fuzzifier - 1.0);
   std::vector<double> u(n * c, 0.0);
-  std::vector<double> previous;
-  update_memberships(points, centres, exponent, u);
+  WeightedSums sums(c);
+  update_memberships(points, centres, options.fuzzifier, u, sums);
   result.iterations = 1;
   while (true) {
-    // Centres are the u^m-weighted means of the points.
-    for (size_t j = 0; j < c; ++j) {
-      double wx = 0.0, wy = 0.0, w = 0.0;
-      for (size_t i = 0; i < n; ++i) {
-        const double weight = std::pow(u[i * c + j], options.fuzzifier);
-        wx += weight * points[i].x;
-        wy += weight * points[i].y;
-        w += weight;
-      }
-      if (w > 0.0) centres[j] = {wx / w, wy / w};
-    }
+    sums.update_centres(centres);
     if (result.iterations >= options.max_iterations) break;
-    previous = u;
-    update_memberships(points, centres, exponent, u);
+    const double change = update_memberships(points, centres, options.fuzzifier, u, sums);
     ++result.iterations;
-    double change = 0.0;
-    for (size_t k = 0; k < u.size(); ++k) change = std::max(change, std::abs(u[k] - previous[k]));
     if (change <= options.tolerance) {
       result.converged = true;
-      // One last centre update so the centres match the final memberships.
-      for (size_t j = 0; j < c; ++j) {
-        double wx = 0.0, wy = 0.0, w = 0.0;
-        for (size_t i = 0; i < n; ++i) {
-          const double weight = std::pow(u[i * c + j], options.fuzzifier);
-          wx += weight * points[i].x;
-          wy += weight * points[i].y;
-          w += weight;
-        }
-        if (w > 0.0) centres[j] = {wx / w, wy / w};
-      }
+      sums.update_centres(centres);  // so the centres match the final memberships
       break;
     }
   }

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <deque>
 #include <limits>
+#include <optional>
 #include <unordered_map>
 #include <string>
 
@@ -32,6 +33,140 @@ void add_crossings(const Ring& ring, int height, std::vector<std::vector<double>
     const double slope = (q.x - p.x) / (q.y - p.y);
     for (int y = y_first; y <= y_last; ++y) rows_x[static_cast<std::size_t>(y)].push_back(p.x + (y - p.y) * slope);
   }
+}
+
+// Nearest label in a straight line for each cell of `cells`, from a distance transform of `window`
+// of labels (0 where the window holds no label). Approximate (OpenCV's 5x5 mask), as before.
+void nearest_labels_in(const cv::Mat& labels, const cv::Rect& window, const std::vector<int>& cells,
+                       std::vector<int>& settled_index, std::vector<int>& settled_label) {
+  const int w = labels.cols;
+  const cv::Mat local = labels(window);
+  cv::Mat sources = local <= 0;  // distanceTransform measures distance to zero cells: the labelled ones
+  if (cv::countNonZero(sources == 0) == 0) return;  // no label anywhere
+  cv::Mat distance, nearest;
+  cv::distanceTransform(sources, distance, nearest, cv::DIST_L2, 5, cv::DIST_LABEL_PIXEL);
+  double max_index = 0.0;
+  cv::minMaxLoc(nearest, nullptr, &max_index);
+  std::vector<int> label_of(static_cast<std::size_t>(max_index) + 1, 0);
+  for (int r = 0; r < local.rows; ++r) {
+    const int* l = local.ptr<int>(r);
+    const int* n = nearest.ptr<int>(r);
+    for (int c = 0; c < local.cols; ++c)
+      if (l[c] > 0) label_of[static_cast<std::size_t>(n[c])] = l[c];
+  }
+  for (const int i : cells) {
+    const int r = i / w - window.y, c = i % w - window.x;
+    const int label = label_of[static_cast<std::size_t>(nearest.at<int>(r, c))];
+    if (label == 0) continue;
+    settled_index.push_back(i);
+    settled_label.push_back(label);
+  }
+}
+
+// A cut-off blob of free cells and the window around it that holds its nearest labels.
+struct OrphanBlob {
+  std::vector<int> cells;
+  cv::Rect window;
+};
+
+// Whether a window of the label image holds a label: a tile summary (one count per 16 x 16 tile,
+// summed) rules most windows out in constant time; the cells are counted only when a tile says yes.
+class LabelPresence {
+ public:
+  explicit LabelPresence(const cv::Mat& labels) : labels_(labels) {
+    cv::Mat tiles(cv::Size((labels.cols + kTile - 1) / kTile, (labels.rows + kTile - 1) / kTile), CV_8UC1, cv::Scalar(0));
+    for (int r = 0; r < labels.rows; ++r) {
+      const int* row = labels.ptr<int>(r);
+      unsigned char* tile_row = tiles.ptr<unsigned char>(r / kTile);
+      for (int c = 0; c < labels.cols; ++c) tile_row[c / kTile] |= row[c] > 0;
+    }
+    cv::integral(tiles, sums_, CV_32S);
+  }
+  // False when no tile the window touches holds a label (a window inside the image).
+  bool maybe(const cv::Rect& window) const {
+    const int x0 = window.x / kTile, y0 = window.y / kTile;
+    const int x1 = (window.x + window.width - 1) / kTile + 1, y1 = (window.y + window.height - 1) / kTile + 1;
+    return sums_.at<int>(y1, x1) - sums_.at<int>(y0, x1) - sums_.at<int>(y1, x0) + sums_.at<int>(y0, x0) > 0;
+  }
+  // True when window holds a label; cells_counted grows by the cells counted to decide it.
+  bool holds(const cv::Rect& window, double& cells_counted) const {
+    if (!maybe(window)) return false;
+    cells_counted += window.area();
+    return cv::countNonZero(labels_(window) > 0) > 0;
+  }
+
+ private:
+  static constexpr int kTile = 16;
+  const cv::Mat& labels_;
+  cv::Mat sums_;
+};
+
+// The 8-connected blobs of orphan cells, each with the window around it that holds its nearest
+// labels: grown from the blob's box until it holds labels, then by the blob's own size again, so
+// that the nearest label of every cell of the blob lies inside. Blobs without any label in reach
+// are left out. Returns nothing once the cells counted and the windows together exceed the map
+// (many specks far from any room): one transform of the whole map is then cheaper.
+std::optional<std::vector<OrphanBlob>> orphan_blobs(const cv::Mat& labels, const LabelPresence& presence,
+                                                   const std::vector<int>& orphans) {
+  const int h = labels.rows, w = labels.cols;
+  const double budget = static_cast<double>(labels.total());
+  double work = 0.0;
+  std::vector<unsigned char> seen(orphans.size(), 0);
+  std::unordered_map<int, std::size_t> orphan_at;
+  orphan_at.reserve(orphans.size() * 2);
+  for (std::size_t k = 0; k < orphans.size(); ++k) orphan_at.emplace(orphans[k], k);
+  std::vector<OrphanBlob> blobs;
+  const cv::Rect all(0, 0, w, h);
+  for (std::size_t k = 0; k < orphans.size(); ++k) {
+    if (seen[k]) continue;
+    std::vector<int> blob{orphans[k]};
+    seen[k] = 1;
+    int r0 = h, r1 = -1, c0 = w, c1 = -1;
+    for (std::size_t head = 0; head < blob.size(); ++head) {
+      const int i = blob[head];
+      const int r = i / w, c = i % w;
+      r0 = std::min(r0, r);
+      r1 = std::max(r1, r);
+      c0 = std::min(c0, c);
+      c1 = std::max(c1, c);
+      for (int dr = -1; dr <= 1; ++dr)
+        for (int dc = -1; dc <= 1; ++dc) {
+          if (r + dr < 0 || r + dr >= h || c + dc < 0 || c + dc >= w) continue;
+          const auto it = orphan_at.find(i + dr * w + dc);
+          if (it == orphan_at.end() || seen[it->second]) continue;
+          seen[it->second] = 1;
+          blob.push_back(it->first);
+        }
+    }
+    int margin = 8;
+    cv::Rect window;
+    while (true) {
+      window = cv::Rect(c0 - margin, r0 - margin, c1 - c0 + 1 + 2 * margin, r1 - r0 + 1 + 2 * margin) & all;
+      if (presence.holds(window, work) || window == all) break;
+      margin *= 2;
+    }
+    margin += std::max(r1 - r0, c1 - c0) + 2;
+    window = cv::Rect(c0 - margin, r0 - margin, c1 - c0 + 1 + 2 * margin, r1 - r0 + 1 + 2 * margin) & all;
+    if (!presence.holds(window, work)) continue;  // no label anywhere
+    work += window.area();
+    if (work > budget) return std::nullopt;
+    blobs.push_back({std::move(blob), window});
+  }
+  return blobs;
+}
+
+// Free cells cut off from every label take the nearest label in a straight line. Few blobs are
+// each solved in their own window, instead of a distance transform of the whole map; many specks
+// far from any room share one transform of the whole map, so the work stays linear in its size.
+void settle_orphans(const cv::Mat& labels, const LabelPresence& presence, const std::vector<int>& orphans,
+                    std::vector<int>& settled_index, std::vector<int>& settled_label) {
+  if (orphans.empty()) return;
+  const std::optional<std::vector<OrphanBlob>> blobs = orphan_blobs(labels, presence, orphans);
+  if (!blobs) {
+    nearest_labels_in(labels, cv::Rect(0, 0, labels.cols, labels.rows), orphans, settled_index, settled_label);
+    return;
+  }
+  for (const OrphanBlob& blob : *blobs) nearest_labels_in(labels, blob.window, blob.cells, settled_index, settled_label);
 }
 
 }  // namespace
@@ -168,9 +303,15 @@ void complete_unlabelled_cells(cv::Mat& labels, const cv::Mat& free_mask, const 
   // The labelled cells taken are those present before this step, as in the window below.
   std::vector<int> orphans, settled_index, settled_label;
   constexpr int kRingCap = 24;
+  const LabelPresence presence(labels);
+  const cv::Rect all(0, 0, w, h);
   for (const int i : unlabelled) {
     if (data[i] != 0) continue;
     const int r = i / w, c = i % w;
+    if (!presence.maybe(cv::Rect(c - kRingCap, r - kRingCap, 2 * kRingCap + 1, 2 * kRingCap + 1) & all)) {
+      orphans.push_back(i);  // no label within the rings' reach
+      continue;
+    }
     long best = std::numeric_limits<long>::max();
     int label = 0;
     for (int k = 1; k <= kRingCap && static_cast<long>(k - 1) * (k - 1) < best; ++k) {
@@ -197,64 +338,7 @@ void complete_unlabelled_cells(cv::Mat& labels, const cv::Mat& free_mask, const 
     }
   }
 
-  std::vector<unsigned char> seen(orphans.size(), 0);
-  std::unordered_map<int, std::size_t> orphan_at;
-  orphan_at.reserve(orphans.size() * 2);
-  for (std::size_t k = 0; k < orphans.size(); ++k) orphan_at.emplace(orphans[k], k);
-  for (std::size_t k = 0; k < orphans.size(); ++k) {
-    if (seen[k]) continue;
-    // The blob: 8-connected cut-off cells, found by flood fill over the orphan list.
-    std::vector<int> blob{orphans[k]};
-    seen[k] = 1;
-    int r0 = h, r1 = -1, c0 = w, c1 = -1;
-    for (std::size_t head = 0; head < blob.size(); ++head) {
-      const int i = blob[head];
-      const int r = i / w, c = i % w;
-      r0 = std::min(r0, r);
-      r1 = std::max(r1, r);
-      c0 = std::min(c0, c);
-      c1 = std::max(c1, c);
-      for (int dr = -1; dr <= 1; ++dr)
-        for (int dc = -1; dc <= 1; ++dc) {
-          if (r + dr < 0 || r + dr >= h || c + dc < 0 || c + dc >= w) continue;
-          const auto it = orphan_at.find(i + dr * w + dc);
-          if (it == orphan_at.end() || seen[it->second]) continue;
-          seen[it->second] = 1;
-          blob.push_back(it->first);
-        }
-    }
-    int margin = 8;
-    cv::Rect window;
-    const cv::Rect all(0, 0, w, h);
-    while (true) {
-      window = cv::Rect(c0 - margin, r0 - margin, c1 - c0 + 1 + 2 * margin, r1 - r0 + 1 + 2 * margin) & all;
-      if (cv::countNonZero(labels(window) > 0) > 0 || window == all) break;
-      margin *= 2;
-    }
-    margin += std::max(r1 - r0, c1 - c0) + 2;
-    window = cv::Rect(c0 - margin, r0 - margin, c1 - c0 + 1 + 2 * margin, r1 - r0 + 1 + 2 * margin) & all;
-    const cv::Mat local = labels(window);
-    cv::Mat sources = local <= 0;  // distanceTransform measures distance to zero cells: the labelled ones
-    if (cv::countNonZero(sources == 0) == 0) continue;  // no label anywhere
-    cv::Mat distance, nearest;
-    cv::distanceTransform(sources, distance, nearest, cv::DIST_L2, 5, cv::DIST_LABEL_PIXEL);
-    double max_index = 0.0;
-    cv::minMaxLoc(nearest, nullptr, &max_index);
-    std::vector<int> label_of(static_cast<std::size_t>(max_index) + 1, 0);
-    for (int r = 0; r < local.rows; ++r) {
-      const int* l = local.ptr<int>(r);
-      const int* n = nearest.ptr<int>(r);
-      for (int c = 0; c < local.cols; ++c)
-        if (l[c] > 0) label_of[static_cast<std::size_t>(n[c])] = l[c];
-    }
-    for (const int i : blob) {
-      const int r = i / w - window.y, c = i % w - window.x;
-      const int label = label_of[static_cast<std::size_t>(nearest.at<int>(r, c))];
-      if (label == 0) continue;
-      settled_index.push_back(i);
-      settled_label.push_back(label);
-    }
-  }
+  settle_orphans(labels, presence, orphans, settled_index, settled_label);
   // Written only now, so that no speck takes its label from another speck.
   for (std::size_t k = 0; k < settled_index.size(); ++k) {
     data[settled_index[k]] = settled_label[k];

@@ -90,6 +90,18 @@ TEST(DudeAdversarial, CombBeyondTheRoundCap) {
   expect_valid(p, d, "capped comb", 200);
 }
 
+// A comb whose base corners see every slot: the full-resolution triangulation gives them a degree
+// proportional to the teeth, which the candidate test must not pay per diagonal. With rounds
+// enough for every slot the pieces tile the comb and each is within tau.
+TEST(DudeAdversarial, WideCombTilesWithinTau) {
+  const PolygonWithHoles p = comb(120);
+  const Decomposition d = run(p, 5.0, 100);
+  EXPECT_LT(d.rounds, 100);
+  expect_valid(p, d, "wide comb", 200);
+  EXPECT_GE(d.pieces.size(), 120u);
+  for (const PolygonWithHoles& piece : d.pieces) EXPECT_LE(measure_concavity(piece).max(), 5.0);
+}
+
 TEST(DudeAdversarial, LongCollinearRuns) {
   PolygonWithHoles p;
   const int n = 400;

@@ -124,6 +124,65 @@ TEST(FuzzyCMeans, IsDeterministic) {
   EXPECT_EQ(a.memberships, b.memberships);
 }
 
+// Textbook memberships (Bezdek): u_ij = 1 / sum_k (|x_i - v_j| / |x_i - v_k|)^(2/(m-1)), with pow.
+std::vector<double> reference_memberships(const std::vector<Point2>& points, const std::vector<Point2>& centres, double m) {
+  const std::size_t c = centres.size();
+  std::vector<double> u(points.size() * c);
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    for (std::size_t j = 0; j < c; ++j) {
+      const double dj = std::hypot(points[i].x - centres[j].x, points[i].y - centres[j].y);
+      double sum = 0.0;
+      for (std::size_t k = 0; k < c; ++k)
+        sum += std::pow(dj / std::hypot(points[i].x - centres[k].x, points[i].y - centres[k].y), 2.0 / (m - 1.0));
+      u[i * c + j] = 1.0 / sum;
+    }
+  }
+  return u;
+}
+
+TEST(FuzzyCMeans, MembershipsMatchThePowFormulaAtTheFixedPoint) {
+  // Converged tightly, the memberships are the textbook formula applied to the returned centres,
+  // for m = 2 (no pow in the update) and for another fuzzifier (pow per centre).
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> u(0, 10);
+  std::vector<Point2> points;
+  for (int i = 0; i < 150; ++i) points.push_back({u(rng), 0.3 * u(rng)});
+  for (const double m : {2.0, 1.7, 3.0}) {
+    FuzzyCMeansOptions options;
+    options.clusters = 4;
+    options.fuzzifier = m;
+    options.tolerance = 1e-11;
+    options.max_iterations = 5000;
+    const FuzzyCMeansResult r = fuzzy_c_means(points, options);
+    ASSERT_TRUE(r.converged) << m;
+    ASSERT_EQ(r.centres.size(), 4u);
+    const std::vector<double> expected = reference_memberships(points, r.centres, m);
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      double sum = 0.0;
+      for (std::size_t j = 0; j < 4; ++j) {
+        sum += r.memberships[i * 4 + j];
+        EXPECT_NEAR(r.memberships[i * 4 + j], expected[i * 4 + j], 1e-7) << m << " point " << i << " centre " << j;
+      }
+      EXPECT_NEAR(sum, 1.0, 1e-12) << m;
+    }
+  }
+}
+
+TEST(FuzzyCMeans, PointsNearACentreKeepFiniteMemberships) {
+  // A point 1e-160 from a centre: squared distances underflow to 0 or 1/d^2 overflows unless the
+  // update works with ratios. Memberships stay finite and sum to 1.
+  const std::vector<Point2> points{{0, 0}, {1e-160, 0}, {10, 0}, {10, 1e-160}};
+  const FuzzyCMeansResult r = fuzzy_c_means(points);
+  ASSERT_EQ(r.centres.size(), 2u);
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const double a = r.membership(static_cast<int>(i), 0), b = r.membership(static_cast<int>(i), 1);
+    EXPECT_TRUE(std::isfinite(a) && std::isfinite(b)) << i;
+    EXPECT_NEAR(a + b, 1.0, 1e-12) << i;
+  }
+  EXPECT_NEAR(r.centres[0].x, 0.0, 1e-9);
+  EXPECT_NEAR(r.centres[1].x, 10.0, 1e-9);
+}
+
 TEST(FuzzyCMeans, RejectsInvalidInput) {
   const std::vector<Point2> points{{0, 0}, {1, 1}};
   FuzzyCMeansOptions bad;
