@@ -90,7 +90,9 @@ void add_unique(std::vector<int>& ids, int id) {
   if (std::find(ids.begin(), ids.end(), id) == ids.end()) ids.push_back(id);
 }
 
-bool near_integer(double v) { return std::abs(v - std::round(v)) < 1e-6; }
+// A shift within a thousandth of a cell of a whole number of cells is that number: ROS maps carry
+// their resolution as float32, so an origin moved by 80 cells of 0.05 m reads as 79.9999988 cells.
+bool near_integer(double v) { return std::abs(v - std::round(v)) < 1e-3; }
 
 
 std::size_t polygon_bytes(const PolygonWithHoles& p) {
