@@ -61,13 +61,8 @@ ExplorationRun run_exploration(const OccupancyGrid& ground_truth, const Explorat
   run.window = explorer.window();
   run.incremental = segmenter.result();
   run.incremental.labels = segmenter.result().labels.clone();
-  double batch_final_wall_ms = 0.0;
-  run.batch = detail::timed_segment(run.final_map, options.incremental.segment, &run.batch_final_ms, &batch_final_wall_ms);
-  if (options.compare_batch && !run.updates.empty() && run.updates.back().batch_ms < 0.0) {
-    run.updates.back().batch_ms = run.batch_final_ms;
-    run.updates.back().batch_wall_ms = batch_final_wall_ms;
-    run.updates.back().batch_rooms = static_cast<int>(run.batch.rooms.size());
-  }
+  run.batch = detail::final_batch(run.final_map, options.incremental.segment, options.compare_batch, run.updates,
+                                  &run.batch_final_ms);
   run.stability = stability.report();
   run.known_free_cells = cv::countNonZero(run.final_map.cells == kFree);
   if (!run.path.empty()) run.reachable_free_cells = reachable_free_cells(ground_truth, run.path.front());

@@ -25,13 +25,8 @@ void finish(LogReplay& run, const IncrementalSegmenter& segmenter, const Occupan
   run.final_map.cells = grid.cells.clone();
   run.incremental = segmenter.result();
   run.incremental.labels = segmenter.result().labels.clone();
-  double wall_ms = 0.0;
-  run.batch = detail::timed_segment(run.final_map, options.incremental.segment, &run.batch_final_ms, &wall_ms);
-  if (options.compare_batch && !run.updates.empty() && run.updates.back().batch_ms < 0.0) {
-    run.updates.back().batch_ms = run.batch_final_ms;
-    run.updates.back().batch_wall_ms = wall_ms;
-    run.updates.back().batch_rooms = static_cast<int>(run.batch.rooms.size());
-  }
+  run.batch = detail::final_batch(run.final_map, options.incremental.segment, options.compare_batch, run.updates,
+                                  &run.batch_final_ms);
 }
 
 }  // namespace

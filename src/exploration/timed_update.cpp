@@ -51,4 +51,16 @@ UpdateRecord timed_update(IncrementalSegmenter& segmenter, const OccupancyGrid& 
   return record;
 }
 
+Segmentation final_batch(const OccupancyGrid& final_map, const SegmentOptions& options, bool compare_batch,
+                         std::vector<UpdateRecord>& updates, double* cpu) {
+  double wall = 0.0;
+  Segmentation batch = timed_segment(final_map, options, cpu, &wall);
+  if (compare_batch && !updates.empty() && updates.back().batch_ms < 0.0) {
+    updates.back().batch_ms = *cpu;
+    updates.back().batch_wall_ms = wall;
+    updates.back().batch_rooms = static_cast<int>(batch.rooms.size());
+  }
+  return batch;
+}
+
 }  // namespace topocut::detail
