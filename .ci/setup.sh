@@ -24,6 +24,10 @@ JOBS="${JOBS:-$(nproc)}"
 packages=(build-essential cmake pkg-config libcgal-dev libopencv-dev libeigen3-dev libboost-dev
           libboost-program-options-dev libboost-graph-dev nlohmann-json3-dev libyaml-cpp-dev
           libgtest-dev libgmock-dev libbenchmark-dev zlib1g-dev)
+# ROS 1 from Debian: the node (ros/) and its loopback test (rosmaster, rospy publishing the maps).
+packages+=(libroscpp-dev libnav-msgs-dev libsensor-msgs-dev libvisualization-msgs-dev libstd-msgs-dev
+           python3-rosmaster python3-rospy python3-rosgraph python3-nav-msgs python3-sensor-msgs
+           python3-visualization-msgs python3-std-msgs)
 # libFuzzer comes with clang only; the other modes build with GCC.
 [ "$mode" = fuzz ] && packages+=(clang libclang-rt-14-dev)
 missing=()

@@ -36,13 +36,6 @@ double median(std::vector<double> v) {
   return v.empty() ? 0.0 : v[v.size() / 2];
 }
 
-// The options `topocut walls --segment` uses: the thin fans of single rays are opened away.
-SegmentOptions wall_map_segment_options() {
-  SegmentOptions options;
-  options.binarize.opening_size = 0.15;
-  return options;
-}
-
 std::vector<Point2> laser_hits(const std::vector<PosedScan>& scans) {
   std::vector<Point2> hits;
   for (const PosedScan& s : scans)

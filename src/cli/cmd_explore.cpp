@@ -5,6 +5,7 @@
 #include <iostream>
 
 #include "cli/command.h"
+#include "cli/update_report.h"
 #include "topocut/core/error.h"
 #include "topocut/evaluation/precision_recall.h"
 #include "topocut/exploration/exploration_frame.h"
@@ -99,30 +100,25 @@ int run(const std::vector<std::string>& args) {
                   std::to_string(gt_rooms.rows) + ") differs in size from the map");
   }
   if (!frames.empty()) {
-    std::error_code error;
-    std::filesystem::create_directories(frames, error);
-    if (error || !std::filesystem::is_directory(frames)) throw Error("cannot create the frames folder " + frames);
-    check_outputs({(std::filesystem::path(frames) / "frame_00001.png").string()}, {map_path, gt_path});
+    prepare_frames_folder(frames, {map_path, gt_path});
   }
 
   int frames_written = 0;
   int last_update = 0;
-  auto write_frame = [&](const ExplorationFrame& frame) {
+  auto save_frame = [&](const ExplorationFrame& frame) {
     FrameOptions frame_options;
     frame_options.range = exploration.range;
     frame_options.caption = "update " + std::to_string(frame.update) + ", scan " + std::to_string(frame.explorer.scans()) +
                             ", " + std::to_string(frame.segmentation.rooms.size()) + " rooms";
-    char name[32];
-    std::snprintf(name, sizeof name, "frame_%05d.png", frame.update);
-    write_image_atomically((std::filesystem::path(frames) / name).string(),
-                           render_exploration_frame(frame.grid, frame.segmentation, frame.explorer.path(),
-                                                    frame.explorer.pose(), frame_options));
+    write_frame(frames, frame.update,
+                render_exploration_frame(frame.grid, frame.segmentation, frame.explorer.path(), frame.explorer.pose(),
+                                         frame_options));
     ++frames_written;
   };
   if (!frames.empty()) {
     options.on_update = [&](const ExplorationFrame& frame) {
       last_update = frame.update;
-      if ((frame.update - 1) % frame_every == 0) write_frame(frame);
+      if ((frame.update - 1) % frame_every == 0) save_frame(frame);
     };
   }
   options.progress = [](const std::string& line) { progress(line); };
@@ -134,40 +130,19 @@ int run(const std::vector<std::string>& args) {
     frame_options.range = exploration.range;
     frame_options.caption = "update " + std::to_string(last_update) + ", scan " + std::to_string(run.scans) + ", " +
                             std::to_string(run.incremental.rooms.size()) + " rooms";
-    char name[32];
-    std::snprintf(name, sizeof name, "frame_%05d.png", last_update);
-    write_image_atomically((std::filesystem::path(frames) / name).string(),
-                           render_exploration_frame(run.final_map, run.incremental, run.path, run.final_pose, frame_options));
+    write_frame(frames, last_update,
+                render_exploration_frame(run.final_map, run.incremental, run.path, run.final_pose, frame_options));
     ++frames_written;
   }
 
-  std::vector<double> inc, inc_wall, batch, paired;
-  for (const UpdateRecord& u : run.updates) {
-    inc.push_back(u.incremental_ms);
-    inc_wall.push_back(u.incremental_wall_ms);
-    if (u.batch_ms >= 0.0) {
-      batch.push_back(u.batch_ms);
-      paired.push_back(u.incremental_ms);
-    }
-  }
-  const UpdateTimes inc_t = update_times(inc), wall_t = update_times(inc_wall), batch_t = update_times(batch),
-                    paired_t = update_times(paired);
   std::cout << "map: " << map_path << " (" << world.width() << " x " << world.height() << " cells, "
             << fmt("%g m/cell)\n", world.resolution);
   std::cout << "scans: " << run.scans << ", updates: " << run.updates.size() << " (" << run.stop_reason << "), path "
             << fmt("%.1f m\n", run.path_length);
   if (run.reachable_free_cells > 0)
     std::cout << "explored: " << fmt("%.1f %% of the reachable free space\n", 100.0 * run.known_free_cells / run.reachable_free_cells);
-  std::cout << "incremental per update: " << fmt("median %.3f ms, p95 %.3f ms, ", inc_t.median, inc_t.p95)
-            << fmt("max %.2f ms (total %.1f ms; CPU time)\n", inc_t.max, inc_t.total)
-            << "  wall clock:           " << fmt("median %.3f ms, p95 %.3f ms, ", wall_t.median, wall_t.p95)
-            << fmt("max %.2f ms\n", wall_t.max);
-  if (batch_t.count > 0) {
-    std::cout << "batch per update:       " << fmt("median %.3f ms, p95 %.3f ms, ", batch_t.median, batch_t.p95)
-              << fmt("max %.2f ms (", batch_t.max) << batch_t.count << " updates compared)\n";
-    if (paired_t.median > 0.0)
-      std::cout << "speed-up on the same updates: " << fmt("%.1fx (medians)\n", batch_t.median / paired_t.median);
-  }
+  print_update_times(std::cout, run.updates);
+  std::cout << "stability: " << format_stability(run.stability) << "\n";
   std::cout << "peak segmenter state: " << fmt("%.1f MB\n", run.peak_state_bytes / (1024.0 * 1024.0));
   std::cout << "final rooms: incremental " << run.incremental.rooms.size() << ", batch " << run.batch.rooms.size()
             << "\n";

@@ -18,7 +18,7 @@
 #include "topocut/io/overlay.h"
 #include "topocut/io/rooms_json.h"
 #include "topocut/io/rooms_svg.h"
-#include "topocut/segmentation/segmenter.h"
+#include "topocut/segmentation/grid_segmentation.h"
 
 namespace topocut::cli {
 namespace {
@@ -166,7 +166,8 @@ int run(const std::vector<std::string>& args) {
   const OccupancyGrid grid = load_map(map_path, load, &palette);
   const auto loaded = std::chrono::steady_clock::now();
   SegmentationInput input;
-  const Segmentation segmentation = segment(grid, options, out_clean.empty() ? nullptr : &input);
+  // The array API's call, in the file's frame (an image's rows are top-down; load_map ignores yaw).
+  const Segmentation segmentation = segment_grid(grid, GridFrame{}, options, out_clean.empty() ? nullptr : &input).segmentation;
   const auto done = std::chrono::steady_clock::now();
 
   if (!out_clean.empty()) write_image_atomically(out_clean, render_cleaned_map(grid.cells, input.cleaned));

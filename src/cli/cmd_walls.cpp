@@ -3,7 +3,10 @@
 #include <sstream>
 
 #include "cli/command.h"
+#include "cli/update_report.h"
 #include "topocut/core/error.h"
+#include "topocut/exploration/exploration_frame.h"
+#include "topocut/exploration/log_replay.h"
 #include "topocut/io/atomic_file.h"
 #include "topocut/io/output_files.h"
 #include "topocut/io/carmen_log.h"
@@ -26,15 +29,68 @@ std::string skipped_summary(const CarmenLog& log) {
   return first ? "nothing else" : out.str();
 }
 
+// --incremental: the log replayed scan by scan into the incremental segmenter.
+struct ReplayArguments {
+  bool compare_batch = false;
+  int batch_every = 1;
+  std::string frames;
+  int frame_every = 1;
+};
+
+void replay(const std::vector<PosedScan>& scans, const WallsOptions& walls, const SegmentOptions& segment_options,
+            const ReplayArguments& arguments, const std::string& out_map, const std::string& out_color,
+            const std::string& out_rooms) {
+  LogReplayOptions options;
+  options.walls = walls;
+  options.incremental.segment = segment_options;
+  options.incremental.segment.clean = false;  // not incremental (IncrementalOptions)
+  options.compare_batch = arguments.compare_batch;
+  options.batch_every = arguments.batch_every;
+  options.progress = [](const std::string& line) { progress(line); };
+  int frames_written = 0, last_written = 0;
+  auto save_frame = [&](int update, int scan, const OccupancyGrid& grid, const Segmentation& rooms,
+                        const std::vector<Point2>& path, const Pose2& pose) {
+    FrameOptions frame_options;
+    frame_options.range = 0.0;  // a real laser reaches tens of metres: the circle would hide the map
+    frame_options.caption = "update " + std::to_string(update) + ", scan " + std::to_string(scan) + ", " +
+                            std::to_string(rooms.rooms.size()) + " rooms";
+    write_frame(arguments.frames, update, render_exploration_frame(grid, rooms, path, pose, frame_options));
+    ++frames_written;
+    last_written = update;
+  };
+  if (!arguments.frames.empty()) {
+    options.on_update = [&](const ReplayFrame& frame) {
+      if ((frame.update - 1) % arguments.frame_every == 0)
+        save_frame(frame.update, frame.scan, frame.grid, frame.segmentation, frame.path, frame.pose);
+    };
+  }
+  const LogReplay run = replay_log(scans, options);
+  const int updates = static_cast<int>(run.updates.size());
+  if (!arguments.frames.empty() && updates > 0 && last_written != updates) {  // end on the finished map
+    const int scan = run.updates.back().scan;
+    save_frame(updates, scan, run.final_map, run.incremental, {run.path.begin(), run.path.begin() + scan},
+               scans[scan - 1].pose);
+  }
+  const OccupancyGrid& grid = run.final_map;
+  std::cout << "map: " << grid.width() << " x " << grid.height() << " cells at " << grid.resolution << " m, origin ("
+            << grid.origin.x << ", " << grid.origin.y << "); built scan by scan, walls not merged\n";
+  std::cout << "scans: " << run.scans << ", updates: " << run.updates.size() << "\n";
+  print_update_times(std::cout, run.updates);
+  std::cout << "stability: " << format_stability(run.stability) << "\n";
+  std::cout << "final rooms: incremental " << run.incremental.rooms.size() << ", batch " << run.batch.rooms.size() << "\n";
+  if (!arguments.frames.empty()) std::cout << "frames: " << frames_written << " written to " << arguments.frames << "\n";
+  if (!out_map.empty()) save_map(out_map, grid);
+  if (!out_color.empty()) write_overlay(out_color, grid, run.incremental);
+  if (!out_rooms.empty()) write_rooms_json(out_rooms, run.incremental);
+}
+
 int run(const std::vector<std::string>& args) {
   std::string log_path, method = "iepf", element = "cross";
   std::string out_map, out_walls, out_color, out_rooms;
   WallsOptions options;
   CarmenReadOptions read;
-  SegmentOptions segment_options;
-  // Single rays through doors leave one-cell-wide free spurs; opening them away keeps them out of
-  // the rooms (the benchmark uses the same value).
-  segment_options.binarize.opening_size = 0.15;
+  SegmentOptions segment_options = wall_map_segment_options();
+  ReplayArguments replay_arguments;
   po::options_description described("Walls");
   described.add_options()
       ("log", po::value<std::string>(&log_path)->required(), "CARMEN log with FLASER messages (plain or .gz)")
@@ -51,7 +107,12 @@ int run(const std::vector<std::string>& args) {
       ("concavity", po::value<double>(&segment_options.concavity)->default_value(segment_options.concavity, "2.5"), "tau for --segment, metres")
       ("opening", po::value<double>(&segment_options.binarize.opening_size)->default_value(segment_options.binarize.opening_size, "0.15"), "for --segment: open the free space with a square of this side (m) to drop single-ray spurs; 0: off")
       ("out-color", po::value<std::string>(&out_color), "write the rooms as a colour overlay (implies --segment)")
-      ("out-rooms", po::value<std::string>(&out_rooms), "write the rooms as JSON (implies --segment)");
+      ("out-rooms", po::value<std::string>(&out_rooms), "write the rooms as JSON (implies --segment)")
+      ("incremental", "replay the log: build the grid scan by scan and segment every change incrementally")
+      ("compare-batch", po::bool_switch(&replay_arguments.compare_batch), "with --incremental: also run the batch segmenter on every update, timed")
+      ("batch-every", po::value<int>(&replay_arguments.batch_every)->default_value(1), "with --compare-batch: only every N-th update (and the last)")
+      ("frames", po::value<std::string>(&replay_arguments.frames), "with --incremental: write a PNG frame of every update into this folder")
+      ("frame-every", po::value<int>(&replay_arguments.frame_every)->default_value(1), "with --frames: only every N-th update (and the last)");
   po::positional_options_description positional;
   positional.add("log", 1);
   const auto vm = parse_options(
@@ -59,7 +120,12 @@ int run(const std::vector<std::string>& args) {
       "Builds walls from a CARMEN laser log: each scan is labelled into segments, lines are extracted\n"
       "on every segment and placed in the world by the logged pose, and the segments of all scans are\n"
       "merged into walls. The walls (occupied) and the space the rays crossed (free) make an occupancy\n"
-      "grid; with --segment the grid is segmented into rooms.",
+      "grid; with --segment the grid is segmented into rooms.\n\n"
+      "--incremental replays the log as the robot saw it: after every scan the grid holds the rays\n"
+      "and wall segments seen so far (segments are not merged, since merging needs later scans), and\n"
+      "every scan that changes it goes to the incremental segmenter. Prints the time per update\n"
+      "(median, p95, max), with --compare-batch batch segmentation on the same updates, and the\n"
+      "stability of the room ids (churn: share of labelled cells whose room changed per update).",
       described, positional, args);
   if (!vm) return 0;
   try {
@@ -70,12 +136,19 @@ int run(const std::vector<std::string>& args) {
   if (element == "cross") options.extraction.labeling.element = StructuringElement::kCross;
   else if (element == "square") options.extraction.labeling.element = StructuringElement::kSquare;
   else throw UsageError("--element must be 'cross' or 'square', got '" + element + "'");
+  const bool incremental = vm->count("incremental") > 0;
+  if (!incremental && (replay_arguments.compare_batch || !replay_arguments.frames.empty()))
+    throw UsageError("--compare-batch and --frames need --incremental");
+  if (incremental && !out_walls.empty()) throw UsageError("--out-walls needs merged walls: not with --incremental");
+  if (replay_arguments.batch_every < 1) throw UsageError("--batch-every must be at least 1");
+  if (replay_arguments.frame_every < 1) throw UsageError("--frame-every must be at least 1");
   const bool segment_rooms = vm->count("segment") || !out_color.empty() || !out_rooms.empty();
   std::vector<std::string> outputs;
   for (const std::string& path : {out_map, out_walls, out_color, out_rooms})
     if (!path.empty()) outputs.push_back(path);
   if (!out_map.empty()) outputs.push_back(map_image_path(out_map));
   check_outputs(outputs, {log_path});
+  if (!replay_arguments.frames.empty()) prepare_frames_folder(replay_arguments.frames, {log_path});
 
   const CarmenLog log = read_carmen_log(log_path, read);
   if (log.truncated_last_line) std::cerr << "topocut walls: warning: the last line of '" << log_path << "' is incomplete and was skipped\n";
@@ -86,10 +159,13 @@ int run(const std::vector<std::string>& args) {
     throw Error("'" + log_path + "' contains no usable FLASER laser scans (" + std::to_string(log.lines) + " lines; found " +
                 skipped_summary(log) + ")");
   const std::vector<PosedScan> scans = posed_scans(log);
-  const WallsResult result = walls_from_scans(scans, options);
-
   std::cout << "log: " << log_path << ": " << scans.size() << " scans, no-return range " << log.max_range << " m"
             << (log.max_range_detected ? " (detected)" : "") << "\n";
+  if (incremental) {
+    replay(scans, options, segment_options, replay_arguments, out_map, out_color, out_rooms);
+    return 0;
+  }
+  const WallsResult result = walls_from_scans(scans, options);
   std::cout << "walls: " << result.segments.size() << " segments merged into " << result.walls.size() << " walls ("
             << method << ")\n";
   const OccupancyGrid& grid = result.grid;

@@ -7,8 +7,7 @@
 #include <filesystem>
 #include <sstream>
 
-#include <time.h>
-
+#include "exploration/timed_update.h"
 #include "topocut/core/error.h"
 #include "topocut/evaluation/dataset_report.h"
 #include "topocut/evaluation/precision_recall.h"
@@ -18,19 +17,6 @@
 namespace topocut {
 
 namespace {
-
-using Clock = std::chrono::steady_clock;
-
-double milliseconds_since(Clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-}
-
-// CPU time of the whole process (all threads), in milliseconds.
-double cpu_ms() {
-  timespec t{};
-  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
-  return static_cast<double>(t.tv_sec) * 1e3 + static_cast<double>(t.tv_nsec) / 1e6;
-}
 
 std::string format(const char* pattern, double a, double b = 0.0, double c = 0.0, double d = 0.0) {
   char buffer[160];
@@ -45,30 +31,18 @@ ExplorationRun run_exploration(const OccupancyGrid& ground_truth, const Explorat
   Explorer explorer(ground_truth, options.exploration);
   IncrementalSegmenter segmenter(options.incremental);
   ExplorationRun run;
+  StabilityTracker stability;
   int update = 0;
   while (explorer.next()) {
     const cv::Rect changed = explorer.changed();
     if (changed.empty()) continue;  // the scan saw nothing new: the map did not change
     ++update;
     const OccupancyGrid& grid = explorer.known_map();
-    UpdateRecord record;
+    UpdateRecord record = detail::timed_update(segmenter, grid, options.use_hint ? &changed : nullptr,
+                                               options.compare_batch && update % options.batch_every == 0);
     record.scan = explorer.scans();
-    const Clock::time_point start = Clock::now();
-    const double cpu_start = cpu_ms();
-    const Segmentation& result = options.use_hint ? segmenter.update(grid, changed) : segmenter.update(grid);
-    record.incremental_ms = cpu_ms() - cpu_start;
-    record.incremental_wall_ms = milliseconds_since(start);
-    record.rooms = static_cast<int>(result.rooms.size());
-    record.changed_cells = segmenter.last_update().changed_cells;
-    record.batch_update = segmenter.last_update().kind == IncrementalUpdateReport::Kind::kBatch;
-    if (options.compare_batch && update % options.batch_every == 0) {
-      const Clock::time_point batch_start = Clock::now();
-      const double batch_cpu_start = cpu_ms();
-      const Segmentation batch = segment(grid, options.incremental.segment);
-      record.batch_ms = cpu_ms() - batch_cpu_start;
-      record.batch_wall_ms = milliseconds_since(batch_start);
-      record.batch_rooms = static_cast<int>(batch.rooms.size());
-    }
+    const Segmentation& result = segmenter.result();
+    stability.add(result.labels, grid.origin, grid.resolution);
     run.updates.push_back(record);
     run.peak_state_bytes = std::max(run.peak_state_bytes, segmenter.state_bytes());
     if (options.on_update) options.on_update(ExplorationFrame{update, explorer, grid, result});
@@ -87,16 +61,9 @@ ExplorationRun run_exploration(const OccupancyGrid& ground_truth, const Explorat
   run.window = explorer.window();
   run.incremental = segmenter.result();
   run.incremental.labels = segmenter.result().labels.clone();
-  const Clock::time_point batch_start = Clock::now();
-  const double batch_cpu_start = cpu_ms();
-  run.batch = segment(run.final_map, options.incremental.segment);
-  run.batch_final_ms = cpu_ms() - batch_cpu_start;
-  const double batch_final_wall_ms = milliseconds_since(batch_start);
-  if (options.compare_batch && !run.updates.empty() && run.updates.back().batch_ms < 0.0) {
-    run.updates.back().batch_ms = run.batch_final_ms;
-    run.updates.back().batch_wall_ms = batch_final_wall_ms;
-    run.updates.back().batch_rooms = static_cast<int>(run.batch.rooms.size());
-  }
+  run.batch = detail::final_batch(run.final_map, options.incremental.segment, options.compare_batch, run.updates,
+                                  &run.batch_final_ms);
+  run.stability = stability.report();
   run.known_free_cells = cv::countNonZero(run.final_map.cells == kFree);
   if (!run.path.empty()) run.reachable_free_cells = reachable_free_cells(ground_truth, run.path.front());
   return run;
@@ -196,6 +163,7 @@ std::vector<IncrementalImageResult> run_incremental_dataset(const std::vector<Da
         r.incremental_compared = update_times(r.paired_update_ms);
         r.incremental.time_ms = r.incremental_times.total;
         r.peak_state_bytes = run.peak_state_bytes;
+        r.stability = run.stability;
       } catch (const std::exception& e) {
         r.incremental.ok = r.batch.ok = false;
         r.incremental.error = r.batch.error = e.what();

@@ -90,7 +90,9 @@ void add_unique(std::vector<int>& ids, int id) {
   if (std::find(ids.begin(), ids.end(), id) == ids.end()) ids.push_back(id);
 }
 
-bool near_integer(double v) { return std::abs(v - std::round(v)) < 1e-6; }
+// A shift within a thousandth of a cell of a whole number of cells is that number: ROS maps carry
+// their resolution as float32, so an origin moved by 80 cells of 0.05 m reads as 79.9999988 cells.
+bool near_integer(double v) { return std::abs(v - std::round(v)) < 1e-3; }
 
 
 std::size_t polygon_bytes(const PolygonWithHoles& p) {
@@ -747,8 +749,9 @@ void IncrementalSegmenter::State::redecompose(const OccupancyGrid& grid, std::ve
     passage.room_b = std::max(a, b);
     passage.cut = {to_world(cut.a), to_world(cut.b)};
     passage.width = std::hypot(cut.b.x - cut.a.x, cut.b.y - cut.a.y) * resolution;
+    passage.door = std::find(set.doors.begin(), set.doors.end(), cut) != set.doors.end();
     passages.push_back(passage);
-    doors.push_back(std::find(set.doors.begin(), set.doors.end(), cut) != set.doors.end());
+    doors.push_back(passage.door);
   }
   std::vector<std::size_t> order(passages.size());
   for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;

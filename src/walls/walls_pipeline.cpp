@@ -8,6 +8,12 @@
 
 namespace topocut {
 
+SegmentOptions wall_map_segment_options() {
+  SegmentOptions options;
+  options.binarize.opening_size = 0.15;
+  return options;
+}
+
 WallsResult walls_from_scans(std::span<const PosedScan> scans, const WallsOptions& options) {
   if (scans.empty()) throw Error("there are no laser scans to build walls from");
   WallsResult result;

@@ -208,3 +208,38 @@ TEST_F(WallsCli, WallsRefusesBadLogs) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST_F(WallsCli, IncrementalReplaysTheLogAndWritesFrames) {
+  write_text(path("run.log"), simulated_log());
+  const Outcome o = run("walls '" + path("run.log") + "' --incremental --compare-batch --frames '" + path("frames") +
+                        "' --frame-every 3 --out-rooms '" + path("rooms.json") + "'");
+  ASSERT_EQ(o.exit_code, 0) << o.err;
+  for (const char* line : {"8 scans", "updates: ", "incremental per update: median", "batch per update:",
+                           "speed-up on the same updates", "stability: churn median", "ids used", "final rooms: incremental"})
+    EXPECT_NE(o.out.find(line), std::string::npos) << line << "\n" << o.out;
+  // Updates 1, 4, 7 and the last one (the last scan changes the map: it looks at a new wall).
+  const std::size_t updates = std::stoul(o.out.substr(o.out.find("updates: ") + 9));
+  ASSERT_GE(updates, 2u);
+  ASSERT_LE(updates, 8u);
+  int frames = 0;
+  for (const auto& entry : fs::directory_iterator(path("frames"))) frames += entry.path().extension() == ".png";
+  EXPECT_EQ(frames, static_cast<int>((updates - 1) / 3 + 1 + ((updates - 1) % 3 != 0 ? 1 : 0)));
+  EXPECT_TRUE(fs::exists(path("frames/frame_00001.png")));
+  EXPECT_GE(nlohmann::json::parse(slurp(path("rooms.json")))["rooms"].size(), 1u);
+}
+
+TEST_F(WallsCli, IncrementalOptionsNeedIncremental) {
+  write_text(path("run.log"), simulated_log());
+  const Outcome frames = run("walls '" + path("run.log") + "' --frames '" + path("frames") + "'");
+  EXPECT_EQ(frames.exit_code, 2);
+  EXPECT_NE(frames.err.find("need --incremental"), std::string::npos) << frames.err;
+  const Outcome walls = run("walls '" + path("run.log") + "' --incremental --out-walls '" + path("w.json") + "'");
+  EXPECT_EQ(walls.exit_code, 2);
+  EXPECT_FALSE(fs::exists(path("w.json")));
+  const Outcome every = run("walls '" + path("run.log") + "' --incremental --batch-every 0");
+  EXPECT_EQ(every.exit_code, 2);
+}
+
+}  // namespace

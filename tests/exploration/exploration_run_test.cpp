@@ -58,6 +58,11 @@ TEST(ExplorationRun, EveryUpdateIsSegmentedAndTheEndMatchesBatch) {
   ASSERT_FALSE(run.updates.empty());
   EXPECT_EQ(static_cast<int>(run.updates.size()), seen);
   EXPECT_LE(static_cast<int>(run.updates.size()), run.scans);
+  // Stability is measured on every update after the first; the incremental segmenter hands out
+  // fresh ids only, so the ids ever used are at least the final rooms.
+  EXPECT_EQ(run.stability.churn.size(), run.updates.size() - 1);
+  EXPECT_EQ(run.stability.final_rooms, static_cast<int>(run.incremental.rooms.size()));
+  EXPECT_GE(run.stability.distinct_ids, run.stability.final_rooms);
   EXPECT_EQ(run.stop_reason, "no reachable frontier left");
   int free_changes = 0;
   for (const UpdateRecord& u : run.updates) {

@@ -469,6 +469,22 @@ TEST(IncrementalSegmenter, MapGrowingLeftUpAndDownKeepsRoomsInTheWorld) {
   EXPECT_EQ(last.rooms.size(), after.rooms.size());
 }
 
+TEST(IncrementalSegmenter, GrowthWithAFloat32ResolutionIsAWholeCellShift) {
+  // nav_msgs/MapMetaData carries the resolution as float32: 0.05 becomes 0.0500000007..., and an
+  // origin moved by 80 cells reads as 79.9999988 cells. That is a growth, not a new frame.
+  const FloorPlan plan = floor_plan();
+  OccupancyGrid first = reveal(plan, {plan.corridor, plan.doors[0], plan.rooms[0]});
+  first.resolution = static_cast<float>(kRes);
+  first.origin = {10.0, 2.0};
+  IncrementalSegmenter segmenter;
+  const Segmentation before = segmenter.update(first);
+  OccupancyGrid second = grown_grid(first, 80, 0, 0);
+  second.origin.x = 6.0;  // as a map server writes it: whole metres, not origin - 80 * resolution
+  const Segmentation after = segmenter.update(second);
+  EXPECT_NE(segmenter.last_update().reason, "the origin moved by a fraction of a cell");
+  EXPECT_EQ(cv::countNonZero(after.labels(cv::Rect(80, 0, first.width(), first.height())) != before.labels), 0);
+}
+
 TEST(IncrementalSegmenter, LoopClosureShiftFallsBackToBatchAndKeepsIds) {
   const FloorPlan plan = floor_plan();
   IncrementalSegmenter segmenter;

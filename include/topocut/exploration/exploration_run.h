@@ -14,6 +14,7 @@
 #include "topocut/core/segmentation.h"
 #include "topocut/evaluation/dataset.h"
 #include "topocut/exploration/explorer.h"
+#include "topocut/exploration/room_stability.h"
 #include "topocut/segmentation/incremental_segmenter.h"
 
 namespace topocut {
@@ -68,6 +69,7 @@ struct ExplorationRun {
   int known_free_cells = 0;      // free cells of final_map
   int reachable_free_cells = 0;  // free cells of the ground truth the robot could ever see
   std::size_t peak_state_bytes = 0;  // largest IncrementalSegmenter::state_bytes() over the run
+  StabilityReport stability;     // of the incremental labels, update by update
 };
 
 // Explores ground_truth until no frontier is left (or the scan cap), feeding every changed known
@@ -113,6 +115,7 @@ struct IncrementalImageResult {
   std::vector<double> paired_update_ms;// incremental time of each compared update, same order
   int batch_updates = 0;               // updates on which the segmenter itself fell back to batch
   std::size_t peak_state_bytes = 0;
+  StabilityReport stability;
 };
 
 // Explores every selected image (maps in order, variants in options' order): the robot explores the

@@ -5,6 +5,8 @@
 #include <span>
 #include <vector>
 
+#include <opencv2/core.hpp>
+
 #include "topocut/core/geometry.h"
 #include "topocut/core/occupancy_grid.h"
 #include "topocut/walls/posed_scan.h"
@@ -37,5 +39,27 @@ std::vector<Ring> wall_polygons(std::span<const Wall> walls, double thickness);
 // on invalid options or when the grid would exceed max_cells.
 OccupancyGrid build_wall_map(std::span<const PosedScan> scans, std::span<const Wall> walls,
                              const WallMapOptions& options = {});
+
+// The same grid built scan by scan, as a robot replaying its log would see it: after adding scans
+// 0..k with their wall segments, grid() equals build_wall_map() of those scans with each segment
+// taken as a wall (merging needs the walls of the future, so none happens), in the fixed frame
+// that covers every scan and segment given to the constructor.
+class IncrementalWallMap {
+ public:
+  // The frame of all scans and segments, every cell unknown. Throws Error like build_wall_map().
+  IncrementalWallMap(std::span<const PosedScan> scans, std::span<const WallSegment> segments,
+                     const WallMapOptions& options = {});
+
+  // Adds one scan's free rays and wall segments; returns the bounding box of the cells that
+  // changed (empty when none did). Parts outside the frame are clipped.
+  cv::Rect add(const PosedScan& scan, std::span<const WallSegment> segments);
+
+  const OccupancyGrid& grid() const { return grid_; }
+
+ private:
+  WallMapOptions options_;
+  OccupancyGrid grid_;
+  cv::Mat seen_;  // scratch: the current scan's rays, cleared after each add
+};
 
 }  // namespace topocut

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "topocut/core/occupancy_grid.h"
+#include "topocut/segmentation/segmenter.h"
 #include "topocut/walls/posed_scan.h"
 #include "topocut/walls/wall_extraction.h"
 #include "topocut/walls/wall_map.h"
@@ -23,6 +24,10 @@ struct WallsResult {
   std::vector<Wall> walls;            // merged (Wall::members index segments)
   OccupancyGrid grid;                 // walls occupied, seen space free, the rest unknown
 };
+
+// The segmenter options for the grids of this pipeline: single rays through doors leave one-cell-wide
+// free spurs, so the free space is opened with a 0.15 m square to keep them out of the rooms.
+SegmentOptions wall_map_segment_options();
 
 // Runs the pipeline on the scans. Throws Error if there are no scans or on invalid options.
 WallsResult walls_from_scans(std::span<const PosedScan> scans, const WallsOptions& options = {});

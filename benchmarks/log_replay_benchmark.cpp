@@ -1,0 +1,119 @@
+// Incremental segmentation on real laser logs: each CARMEN log of ../shared/datasets/carmen is
+// replayed scan by scan (replay_log: the wall map grows with every scan, every change goes to the
+// incremental segmenter) and batch segment() runs on the same grids. Prints per log the update
+// times, the speed-up over batch, the stability of the room ids and the final rooms, and checks
+// the targets: update p95 <= 5 ms, incremental >= 5x faster than batch (total time on the same
+// updates), churn median 0 and p95 <= 1 % of the labelled cells.
+//
+//   log_replay_benchmark [--batch-every N] [LOG_NAME ...]   (default: intel aces csail fhw)
+//
+// Times are process CPU time, single-threaded OpenCV; wall clock beside.
+#include <cstdio>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <opencv2/core.hpp>
+
+#include "benchmark_machine.h"
+#include "topocut/core/allocator.h"
+#include "topocut/evaluation/dataset_report.h"
+#include "topocut/exploration/log_replay.h"
+#include "topocut/io/carmen_log.h"
+
+namespace {
+
+using namespace topocut;
+
+std::string fmt(const char* pattern, double a, double b = 0.0) {
+  char buffer[160];
+  std::snprintf(buffer, sizeof buffer, pattern, a, b);
+  return buffer;
+}
+
+struct LogFigures {
+  std::string name;
+  LogReplay run;
+  UpdateTimes inc, wall, batch, paired;
+};
+
+LogFigures replay_file(const std::string& name, const std::string& path, int batch_every) {
+  LogReplayOptions options;
+  options.compare_batch = true;
+  options.batch_every = batch_every;
+  LogFigures f{name, replay_log(posed_scans(read_carmen_log(path)), options), {}, {}, {}, {}};
+  std::vector<double> inc, wall, batch, paired;
+  for (const UpdateRecord& u : f.run.updates) {
+    inc.push_back(u.incremental_ms);
+    wall.push_back(u.incremental_wall_ms);
+    if (u.batch_ms < 0.0) continue;
+    batch.push_back(u.batch_ms);
+    paired.push_back(u.incremental_ms);
+  }
+  f.inc = update_times(inc);
+  f.wall = update_times(wall);
+  f.batch = update_times(batch);
+  f.paired = update_times(paired);
+  return f;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  topocut::keep_freed_memory_for_reuse();
+  int batch_every = 1;
+  std::vector<std::string> names;
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    if (a == "--batch-every" && i + 1 < argc) batch_every = std::max(1, std::atoi(argv[++i]));
+    else names.push_back(a);
+  }
+  if (names.empty()) names = {"intel", "aces", "csail", "fhw"};
+  const std::string folder = std::string(TOPOCUT_SHARED_DIR) + "/datasets/carmen";
+  if (!std::filesystem::exists(folder)) {
+    std::printf("log_replay_benchmark: skipped, the shared logs are not in %s\n", folder.c_str());
+    return 0;
+  }
+  cv::setNumThreads(1);
+  std::printf("# Incremental segmentation replayed from real laser logs\n\nmachine: %s; batch on %s\n\n",
+              topocut::benchmarks::cpu_model().c_str(),
+              batch_every == 1 ? "every update" : ("every " + std::to_string(batch_every) + "th update and the last").c_str());
+  std::vector<LogFigures> logs;
+  for (const std::string& name : names) {
+    const std::string path = folder + "/" + name + "-corrected.log.gz";
+    if (!std::filesystem::exists(path)) {
+      std::printf("(%s missing)\n", name.c_str());
+      continue;
+    }
+    std::fprintf(stderr, "replaying %s ...\n", name.c_str());
+    logs.push_back(replay_file(name, path, batch_every));
+  }
+
+  std::vector<std::vector<std::string>> times{{"log", "grid", "scans", "updates", "inc median ms", "inc p95 ms", "inc max ms",
+                                               "wall p95 ms", "batch median ms", "speed-up (totals)", "speed-up (medians)"}};
+  std::vector<std::vector<std::string>> stability{{"log", "churn median %", "churn p95 %", "churn max %", "updates with churn",
+                                                   "rooms changed / ids", "changes", "ids used", "final rooms inc / batch"}};
+  std::vector<std::vector<std::string>> targets{{"log", "p95 <= 5 ms", ">= 5x (totals)", "churn median 0", "churn p95 <= 1 %"}};
+  for (const LogFigures& f : logs) {
+    const StabilityReport& s = f.run.stability;
+    const double ratio = f.paired.total > 0.0 ? f.batch.total / f.paired.total : 0.0;
+    times.push_back({f.name, std::to_string(f.run.final_map.width()) + " x " + std::to_string(f.run.final_map.height()),
+                     std::to_string(f.run.scans), std::to_string(f.run.updates.size()), fmt("%.3f", f.inc.median),
+                     fmt("%.3f", f.inc.p95), fmt("%.2f", f.inc.max), fmt("%.3f", f.wall.p95), fmt("%.2f", f.batch.median),
+                     fmt("%.1fx", ratio), fmt("%.1fx", f.paired.median > 0.0 ? f.batch.median / f.paired.median : 0.0)});
+    stability.push_back({f.name, fmt("%.3f", 100.0 * s.churn_median), fmt("%.3f", 100.0 * s.churn_p95),
+                         fmt("%.2f", 100.0 * s.churn_max),
+                         std::to_string(s.updates_with_churn) + " / " + std::to_string(s.churn.size()),
+                         std::to_string(s.rooms_changed) + " / " + std::to_string(s.rooms.size()),
+                         std::to_string(s.room_changes), std::to_string(s.distinct_ids),
+                         std::to_string(f.run.incremental.rooms.size()) + " / " + std::to_string(f.run.batch.rooms.size())});
+    targets.push_back({f.name, fmt("%.3f ms ", f.inc.p95) + (f.inc.p95 <= 5.0 ? "yes" : "NO"),
+                       fmt("%.1fx ", ratio) + (ratio >= 5.0 ? "yes" : "NO"),
+                       fmt("%.3f %% ", 100.0 * s.churn_median) + (s.churn_median == 0.0 ? "yes" : "NO"),
+                       fmt("%.3f %% ", 100.0 * s.churn_p95) + (s.churn_p95 <= 0.01 ? "yes" : "NO")});
+  }
+  std::printf("## Time per update (CPU)\n\n%s\n## Room stability\n\n%s\n## Targets\n\n%s\npeak RSS %.0f MB\n",
+              markdown_table(times).c_str(), markdown_table(stability).c_str(), markdown_table(targets).c_str(),
+              topocut::benchmarks::peak_rss_mb());
+  return 0;
+}

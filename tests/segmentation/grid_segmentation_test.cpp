@@ -1,0 +1,105 @@
+#include "topocut/segmentation/grid_segmentation.h"
+
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+namespace topocut {
+namespace {
+
+// A corridor along the bottom and three rooms above it, each opening into it through a 0.9 m door
+// in a 0.2 m wall; origin away from zero so that frame mistakes show.
+OccupancyGrid three_rooms() {
+  OccupancyGrid grid;
+  grid.cells = cv::Mat(120, 200, CV_8UC1, cv::Scalar(kOccupied));
+  grid.resolution = 0.05;
+  grid.origin = {-3.0, 4.0};
+  grid.cells(cv::Rect(4, 84, 192, 32)).setTo(kFree);
+  for (int i = 0; i < 3; ++i) {
+    grid.cells(cv::Rect(4 + 64 * i, 4, 60, 76)).setTo(kFree);
+    grid.cells(cv::Rect(4 + 64 * i + 21, 80, 18, 4)).setTo(kFree);
+  }
+  return grid;
+}
+
+TEST(GridSegmentation, TopDownKeepsTheSegmentationAndPlacesEveryRoom) {
+  const OccupancyGrid grid = three_rooms();
+  const Segmentation plain = segment(grid);
+  const GridSegmentation s = segment_grid(grid, GridFrame{});
+  ASSERT_EQ(s.segmentation.rooms.size(), 4u);
+  EXPECT_EQ(cv::countNonZero(s.segmentation.labels != plain.labels), 0);
+  ASSERT_EQ(s.placements.size(), s.segmentation.rooms.size());
+  for (std::size_t k = 0; k < s.placements.size(); ++k) {
+    const Room& room = s.segmentation.rooms[k];
+    const RoomPlacement& p = s.placements[k];
+    const cv::Point cell = world_to_cell(grid, p.inside);
+    EXPECT_EQ(s.segmentation.labels.at<int>(cell), room.id) << "room " << room.id;
+    for (const Point2& v : room.polygon.outer) {
+      EXPECT_GE(v.x, p.min.x);
+      EXPECT_GE(v.y, p.min.y);
+      EXPECT_LE(v.x, p.max.x);
+      EXPECT_LE(v.y, p.max.y);
+    }
+    EXPECT_LT(p.min.x, p.max.x);
+    EXPECT_LT(p.min.y, p.max.y);
+  }
+  // The three room doors are narrow gaps in a wall: doors, not wider openings.
+  ASSERT_EQ(s.segmentation.passages.size(), 3u);
+  for (const Passage& passage : s.segmentation.passages) {
+    EXPECT_TRUE(passage.door);
+    EXPECT_NEAR(passage.width, 0.9, 0.11);
+  }
+}
+
+TEST(GridSegmentation, BottomUpFlipsLabelsOnly) {
+  const OccupancyGrid grid = three_rooms();
+  const GridSegmentation top = segment_grid(grid, GridFrame{});
+  const GridSegmentation bottom = segment_grid(grid, GridFrame{RowOrder::kBottomUp, 0.0});
+  cv::Mat flipped;
+  cv::flip(top.segmentation.labels, flipped, 0);
+  EXPECT_EQ(cv::countNonZero(bottom.segmentation.labels != flipped), 0);
+  ASSERT_EQ(bottom.segmentation.rooms.size(), top.segmentation.rooms.size());
+  for (std::size_t k = 0; k < top.segmentation.rooms.size(); ++k) {
+    EXPECT_EQ(bottom.segmentation.rooms[k].polygon, top.segmentation.rooms[k].polygon);
+    EXPECT_EQ(bottom.placements[k].inside, top.placements[k].inside);
+  }
+}
+
+TEST(GridSegmentation, YawTurnsTheGeometryAboutTheOrigin) {
+  const OccupancyGrid grid = three_rooms();
+  const double yaw = 0.5;
+  const GridSegmentation flat = segment_grid(grid, GridFrame{});
+  const GridSegmentation turned = segment_grid(grid, GridFrame{RowOrder::kTopDown, yaw});
+  EXPECT_EQ(cv::countNonZero(turned.segmentation.labels != flat.segmentation.labels), 0);
+  const auto turn = [&](const Point2& p) {
+    const double dx = p.x - grid.origin.x, dy = p.y - grid.origin.y;
+    return Point2{grid.origin.x + std::cos(yaw) * dx - std::sin(yaw) * dy, grid.origin.y + std::sin(yaw) * dx + std::cos(yaw) * dy};
+  };
+  for (std::size_t k = 0; k < flat.segmentation.rooms.size(); ++k) {
+    const Room& a = flat.segmentation.rooms[k];
+    const Room& b = turned.segmentation.rooms[k];
+    EXPECT_NEAR(b.centroid.x, turn(a.centroid).x, 1e-9);
+    EXPECT_NEAR(b.centroid.y, turn(a.centroid).y, 1e-9);
+    EXPECT_NEAR(b.area, a.area, 1e-12);
+    ASSERT_EQ(b.polygon.outer.size(), a.polygon.outer.size());
+    EXPECT_NEAR(b.polygon.outer[0].x, turn(a.polygon.outer[0]).x, 1e-9);
+    EXPECT_NEAR(turned.placements[k].inside.y, turn(flat.placements[k].inside).y, 1e-9);
+  }
+  const Segment2& cut = turned.segmentation.passages[0].cut;
+  EXPECT_NEAR(std::hypot(cut.b.x - cut.a.x, cut.b.y - cut.a.y), flat.segmentation.passages[0].width, 1e-9);
+}
+
+TEST(GridSegmentation, IncrementalUpdatesComeInTheSameFrame) {
+  const OccupancyGrid grid = three_rooms();
+  IncrementalSegmenter segmenter;
+  const GridSegmentation first = update_grid(segmenter, grid, GridFrame{RowOrder::kBottomUp, 0.0});
+  const GridSegmentation again = update_grid(segmenter, grid, GridFrame{RowOrder::kBottomUp, 0.0});
+  cv::Mat flipped;
+  cv::flip(segmenter.result().labels, flipped, 0);
+  EXPECT_EQ(cv::countNonZero(again.segmentation.labels != flipped), 0);
+  EXPECT_EQ(cv::countNonZero(again.segmentation.labels != first.segmentation.labels), 0);
+  EXPECT_EQ(again.segmentation.rooms.size(), first.segmentation.rooms.size());
+}
+
+}  // namespace
+}  // namespace topocut
