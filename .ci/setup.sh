@@ -23,7 +23,8 @@ JOBS="${JOBS:-$(nproc)}"
 
 packages=(build-essential cmake pkg-config libcgal-dev libopencv-dev libeigen3-dev libboost-dev
           libboost-program-options-dev libboost-graph-dev nlohmann-json3-dev libyaml-cpp-dev
-          libgtest-dev libgmock-dev libbenchmark-dev zlib1g-dev)
+          libgtest-dev libgmock-dev libbenchmark-dev zlib1g-dev
+          pybind11-dev python3-dev python3-numpy python3-pytest python3-matplotlib)
 # libFuzzer comes with clang only; the other modes build with GCC.
 [ "$mode" = fuzz ] && packages+=(clang libclang-rt-14-dev)
 missing=()
