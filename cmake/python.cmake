@@ -30,11 +30,13 @@ if(TOPOCUT_BUILD_TESTS)
   set(python_test_env PYTHONPATH=${CMAKE_BINARY_DIR}/python TOPOCUT_CLI=$<TARGET_FILE:topocut>
       TOPOCUT_SOURCE_DIR=${CMAKE_CURRENT_SOURCE_DIR} TOPOCUT_SHARED_DIR=${CMAKE_CURRENT_SOURCE_DIR}/../shared)
   if(TOPOCUT_SANITIZE)
-    # pybind11's advice for sanitized extensions: the interpreter is not instrumented, so the ASan
-    # runtime must be loaded first; Python's own allocations are not ours to report as leaks.
-    execute_process(COMMAND ${CMAKE_CXX_COMPILER} -print-file-name=libasan.so OUTPUT_VARIABLE asan_runtime OUTPUT_STRIP_TRAILING_WHITESPACE)
-    execute_process(COMMAND ${CMAKE_CXX_COMPILER} -print-file-name=libubsan.so OUTPUT_VARIABLE ubsan_runtime OUTPUT_STRIP_TRAILING_WHITESPACE)
-    list(APPEND python_test_env "LD_PRELOAD=${asan_runtime} ${ubsan_runtime}" ASAN_OPTIONS=detect_leaks=0)
+    # The interpreter is not instrumented: pybind11's documentation has the ASan runtime preloaded
+    # into it, which also instruments numpy, matplotlib and Python's own allocator. Not tried here
+    # yet, so the sanitizer suite skips the Python tests with a message; the Release suite runs them.
+    add_test(NAME python_tests COMMAND ${CMAKE_COMMAND} -E echo
+             "python_tests skipped under TOPOCUT_SANITIZE: run them in the Release build (bash .ci/setup.sh test)")
+    set_tests_properties(python_tests PROPERTIES SKIP_REGULAR_EXPRESSION "skipped under TOPOCUT_SANITIZE")
+    return()
   endif()
   add_test(NAME python_tests COMMAND ${Python_EXECUTABLE} -m pytest -q -p no:cacheprovider ${CMAKE_CURRENT_SOURCE_DIR}/tests/python)
   set_tests_properties(python_tests PROPERTIES ENVIRONMENT "${python_test_env}" TIMEOUT 600)

@@ -16,6 +16,7 @@
 #include "topocut/io/label_image.h"
 #include "topocut/io/map_loader.h"
 #include "topocut/io/overlay.h"
+#include "topocut/io/rooms_geojson.h"
 #include "topocut/io/rooms_json.h"
 #include "topocut/io/rooms_svg.h"
 #include "topocut/segmentation/grid_segmentation.h"
@@ -39,7 +40,7 @@ std::string lower_extension(const std::string& path) {
 }
 
 int run(const std::vector<std::string>& args) {
-  std::string map_path, out_labels, out_color, out_json, out_svg;
+  std::string map_path, out_labels, out_color, out_json, out_svg, out_geojson;
   double resolution = 0.05;
   SegmentOptions options;
   MapLoadOptions load;
@@ -85,6 +86,8 @@ int run(const std::vector<std::string>& args) {
       ("out-color", po::value<std::string>(&out_color), "write a colour overlay of the rooms over the map (PNG, JPEG, ...)")
       ("out-json", po::value<std::string>(&out_json), "write rooms and passages as JSON (metres)")
       ("out-svg", po::value<std::string>(&out_svg), "write rooms and passages as SVG (metres)")
+      ("out-geojson", po::value<std::string>(&out_geojson),
+       "write rooms (Polygons with holes) and passages (LineStrings) as a GeoJSON FeatureCollection (map frame, metres)")
       ("no-width-steps", po::bool_switch(&switches.no_width_steps),
        "merge a room into a much wider space it opens onto across its whole width (no width-step rule)")
       ("no-furniture-rule", po::bool_switch(&switches.no_furniture_rule),
@@ -134,7 +137,8 @@ int run(const std::vector<std::string>& args) {
   // Every output is checked before the work starts, so a typo costs no time and leaves nothing behind.
   std::set<std::string> seen;
   const std::pair<const char*, const std::string*> outputs[] = {
-      {"out-labels", &out_labels}, {"out-color", &out_color}, {"out-json", &out_json}, {"out-svg", &out_svg}, {"out-clean", &out_clean}};
+      {"out-labels", &out_labels}, {"out-color", &out_color}, {"out-json", &out_json}, {"out-svg", &out_svg}, {"out-clean", &out_clean},
+      {"out-geojson", &out_geojson}};
   for (const auto& [option, path] : outputs) {
     if (vm->count(option) && path->empty()) throw UsageError("--" + std::string(option) + " was given an empty file name");
     if (path->empty()) continue;
@@ -157,7 +161,8 @@ int run(const std::vector<std::string>& args) {
   const auto loaded = std::chrono::steady_clock::now();
   SegmentationInput input;
   // The array API's call, in the file's frame (an image's rows are top-down; load_map ignores yaw).
-  const Segmentation segmentation = segment_grid(grid, GridFrame{}, options, out_clean.empty() ? nullptr : &input).segmentation;
+  const GridSegmentation result = segment_grid(grid, GridFrame{}, options, out_clean.empty() ? nullptr : &input);
+  const Segmentation& segmentation = result.segmentation;
   const auto done = std::chrono::steady_clock::now();
 
   if (!out_clean.empty()) write_image_atomically(out_clean, render_cleaned_map(grid.cells, input.cleaned));
@@ -165,6 +170,7 @@ int run(const std::vector<std::string>& args) {
   if (!out_color.empty()) write_overlay(out_color, grid, segmentation);
   if (!out_json.empty()) write_rooms_json(out_json, segmentation);
   if (!out_svg.empty()) write_rooms_svg(out_svg, grid, segmentation);
+  if (!out_geojson.empty()) write_rooms_geojson(out_geojson, segmentation, result.placements);
 
   const auto ms = [](auto a, auto b) { return std::chrono::duration<double, std::milli>(b - a).count(); };
   std::ostringstream summary;
@@ -186,6 +192,7 @@ int run(const std::vector<std::string>& args) {
   if (!out_color.empty()) summary << "wrote overlay: " << out_color << "\n";
   if (!out_json.empty()) summary << "wrote JSON:    " << out_json << "\n";
   if (!out_svg.empty()) summary << "wrote SVG:     " << out_svg << "\n";
+  if (!out_geojson.empty()) summary << "wrote GeoJSON: " << out_geojson << "\n";
   if (!out_clean.empty()) summary << "wrote cleaned map: " << out_clean << "\n";
   std::cout << summary.str() << std::flush;
   return 0;

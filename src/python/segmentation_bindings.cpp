@@ -8,6 +8,7 @@
 #include "python/bindings.h"
 #include "python/options.h"
 #include "topocut/io/map_loader.h"
+#include "topocut/io/rooms_geojson.h"
 #include "topocut/io/rooms_json.h"
 #include "topocut/topocut.h"
 
@@ -163,7 +164,10 @@ void bind_results(py::module_& m) {
       .def_property_readonly("passages", [](const Result& r) { return r.result->segmentation.passages; }, "list of Passage")
       .def_property_readonly("resolution", [](const Result& r) { return r.result->segmentation.resolution; })
       .def("to_json", [](const Result& r) { return rooms_to_json(r.result->segmentation); },
-           "The rooms JSON the topocut command writes with --out-json (metres, map frame).");
+           "The rooms JSON the topocut command writes with --out-json (metres, map frame).")
+      .def("to_geojson", [](const Result& r) { return rooms_to_geojson(r.result->segmentation, r.result->placements); },
+           "The GeoJSON FeatureCollection the topocut command writes with --out-geojson (map frame, metres):\n"
+           "rooms as Polygons (RFC 7946 ring order, closed rings), passages as LineStrings.");
   py::class_<Map>(m, "Map", "A loaded map: grid (int8, -1 unknown / 0 free / 100 occupied, row 0 at the origin as in ROS), resolution, origin.")
       .def_readonly("grid", &Map::grid)
       .def_readonly("resolution", &Map::resolution)

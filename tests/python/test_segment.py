@@ -89,3 +89,39 @@ def test_labels_outlive_the_result(bundled_map):
 
     gc.collect()
     assert labels.max() >= 3
+
+
+def test_geojson_matches_the_command(cli, bundled_map, tmp_path):
+    import json
+
+    out = tmp_path / "rooms.geojson"
+    subprocess.run([cli, "segment", bundled_map, "--out-geojson", str(out)], check=True, capture_output=True)
+    m = topocut.load_map(bundled_map)
+    r = topocut.segment(m.grid, m.resolution, m.origin)
+    assert json.loads(r.to_geojson()) == json.loads(out.read_text())
+    features = json.loads(out.read_text())["features"]
+    rooms = [f for f in features if f["geometry"]["type"] == "Polygon"]
+    assert [f["properties"]["id"] for f in rooms] == [room.id for room in r.rooms]
+    for f in rooms:
+        exterior = np.array(f["geometry"]["coordinates"][0])
+        assert (exterior[0] == exterior[-1]).all()
+        x, y = exterior[:, 0], exterior[:, 1]
+        assert np.sum(x[:-1] * y[1:] - x[1:] * y[:-1]) > 0  # counter-clockwise
+    lines = [f for f in features if f["geometry"]["type"] == "LineString"]
+    assert len(lines) == len(r.passages)
+    assert {f["properties"]["kind"] for f in lines} <= {"door", "opening"}
+
+
+def test_example_script_draws_the_rooms(bundled_map, tmp_path):
+    import os
+    import sys
+
+    from conftest import SOURCE_DIR
+
+    out = tmp_path / "rooms.png"
+    run = subprocess.run([sys.executable, str(SOURCE_DIR / "examples" / "segment_map.py"), bundled_map, str(out)],
+                         capture_output=True, text=True, env=os.environ.copy())
+    assert run.returncode == 0, run.stderr
+    assert "room 1:" in run.stdout
+    picture = np.array(Image.open(out))
+    assert picture.shape[0] > 200 and picture.shape[1] > 200

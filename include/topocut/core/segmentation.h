@@ -15,6 +15,13 @@ struct Room {
   Point2 centroid;           // world metres, of the room's labelled cells
 };
 
+// Where a room is, beyond its polygon (map frame, metres).
+struct RoomPlacement {
+  Point2 inside;  // centre of the room's labelled cell farthest from the room's edge (always in the room)
+  Point2 min;     // lower-left corner of the polygon's bounding box
+  Point2 max;     // upper-right corner
+};
+
 // A passage (door, opening) between two rooms: the cut that separates them.
 struct Passage {
   int room_a = 0;
