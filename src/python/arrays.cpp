@@ -8,8 +8,8 @@ namespace topocut::python {
 
 GridArray grid_view(const py::array& grid) {
   const py::dtype dtype = grid.dtype();
-  const bool int8 = dtype.is(py::dtype::of<std::int8_t>());
-  const bool uint8 = dtype.is(py::dtype::of<std::uint8_t>());
+  const bool int8 = dtype.kind() == 'i' && dtype.itemsize() == 1;
+  const bool uint8 = dtype.kind() == 'u' && dtype.itemsize() == 1;
   if (!int8 && !uint8)
     throw Error("the grid must be an int8 (occupancy -1/0..100) or uint8 (grey) array, got dtype " +
                 py::str(static_cast<py::object>(dtype)).cast<std::string>());
@@ -38,12 +38,18 @@ py::array_t<double> points_array(const std::vector<Point2>& points) {
   return out;
 }
 
+namespace {
+
+using Doubles = py::array_t<double, py::array::c_style | py::array::forcecast>;
+
+// values as a contiguous float array, or an empty one if numpy cannot convert them (ensure() clears
+// numpy's error, so the caller raises its own message).
+Doubles as_doubles(const py::handle& values) { return Doubles::ensure(values); }
+
+}  // namespace
+
 std::vector<Point2> points_from(const py::handle& points, const std::string& name) {
-  py::array_t<double, py::array::c_style | py::array::forcecast> a;
-  try {
-    a = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(points);
-  } catch (const py::error_already_set&) {
-  }
+  const Doubles a = as_doubles(points);
   if (!a || a.ndim() != 2 || (a.shape(0) > 0 && a.shape(1) != 2))
     throw Error(name + " must be an (n, 2) array of x, y coordinates");
   std::vector<Point2> out;
@@ -57,11 +63,7 @@ std::vector<Point2> points_from(const py::handle& points, const std::string& nam
 }
 
 std::vector<double> values_from(const py::handle& values, const std::string& name) {
-  py::array_t<double, py::array::c_style | py::array::forcecast> a;
-  try {
-    a = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(values);
-  } catch (const py::error_already_set&) {
-  }
+  const Doubles a = as_doubles(values);
   if (!a || a.ndim() != 1) throw Error(name + " must be a one-dimensional array of numbers");
   return std::vector<double>(a.data(), a.data() + a.shape(0));
 }

@@ -4,6 +4,8 @@
 #include <functional>
 #include <map>
 
+#include <pybind11/stl.h>
+
 #include "topocut/core/error.h"
 #include "topocut/segmentation/segment_switches.h"
 
