@@ -47,5 +47,8 @@ foreach(module IN LISTS reversed_modules)
     string(APPEND TOPOCUT_PC_LIBS " -ltopocut_${module}")
   endif()
 endforeach()
+# Relocatable: the prefix is found from the .pc file's own place, so `cmake --install --prefix DIR` works.
+file(RELATIVE_PATH TOPOCUT_PC_TO_PREFIX /${CMAKE_INSTALL_LIBDIR}/pkgconfig /)
+string(REGEX REPLACE "/$" "" TOPOCUT_PC_TO_PREFIX "${TOPOCUT_PC_TO_PREFIX}")
 configure_file(${CMAKE_CURRENT_SOURCE_DIR}/cmake/topocut.pc.in ${CMAKE_CURRENT_BINARY_DIR}/topocut.pc @ONLY)
 install(FILES ${CMAKE_CURRENT_BINARY_DIR}/topocut.pc DESTINATION ${CMAKE_INSTALL_LIBDIR}/pkgconfig)
