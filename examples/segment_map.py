@@ -36,7 +36,12 @@ def draw(m, result, path):
     ax.set_xlabel("x (m)")
     ax.set_ylabel("y (m)")
     doors = sum(p.kind == "door" for p in result.passages)
-    ax.set_title(f"{len(result.rooms)} rooms, {doors} doors (red), {len(result.passages) - doors} openings (orange)")
+    openings = len(result.passages) - doors
+
+    def count(n, word):
+        return f"{n} {word}" + ("" if n == 1 else "s")
+
+    ax.set_title(f"{count(len(result.rooms), 'room')}, {count(doors, 'door')} (red), {count(openings, 'opening')} (orange)")
     fig.tight_layout()
     fig.savefig(path, dpi=110)
 

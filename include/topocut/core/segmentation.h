@@ -28,7 +28,7 @@ struct Passage {
   int room_b = 0;
   Segment2 cut;         // world metres
   double width = 0.0;   // metres, length of the cut
-  bool door = false;    // the cut was found as a door (a narrow gap in a wall), not a wider opening
+  bool door = false;    // a door (a cut at most the door width, DoorOptions::max_width), not a wider opening
 };
 
 struct Segmentation {
