@@ -16,9 +16,11 @@
 #include "topocut/io/label_image.h"
 #include "topocut/io/map_loader.h"
 #include "topocut/io/overlay.h"
+#include "topocut/io/rooms_geojson.h"
 #include "topocut/io/rooms_json.h"
 #include "topocut/io/rooms_svg.h"
 #include "topocut/segmentation/grid_segmentation.h"
+#include "topocut/segmentation/segment_switches.h"
 
 namespace topocut::cli {
 namespace {
@@ -38,14 +40,13 @@ std::string lower_extension(const std::string& path) {
 }
 
 int run(const std::vector<std::string>& args) {
-  std::string map_path, out_labels, out_color, out_json, out_svg;
+  std::string map_path, out_labels, out_color, out_json, out_svg, out_geojson;
   double resolution = 0.05;
   SegmentOptions options;
   MapLoadOptions load;
-  bool trivial = false, parity = false, no_doors = false, no_openings = false, no_merge = false, no_simplify = false;
-  bool no_clean = false, fixed_thresholds = false;
+  SegmentSwitches switches;
+  bool fixed_thresholds = false;
   std::string out_clean;
-  bool no_width_steps = false, no_furniture_rule = false;
   po::options_description described("Segmentation");
   described.add_options()
       ("map", po::value<std::string>(&map_path)->required(), "map: ROS map_server YAML, or an image (PNG, PGM, ...)")
@@ -53,18 +54,18 @@ int run(const std::vector<std::string>& args) {
        "metres per cell of a plain image (a YAML's own resolution always wins)")
       ("concavity", po::value<double>(&options.concavity)->default_value(options.concavity),
        "maximum concavity tau in metres: larger values give fewer, less convex rooms")
-      ("trivial", po::bool_switch(&trivial), "no decomposition: one room per free-space component (baseline)")
-      ("parity", po::bool_switch(&parity),
+      ("trivial", po::bool_switch(&switches.trivial), "no decomposition: one room per free-space component (baseline)")
+      ("parity", po::bool_switch(&switches.parity),
        "the reference behaviour: DuDe's pieces are the rooms (no door cuts, merging or simplification)")
       ("door-width", po::value<double>(&options.doors.max_width)->default_value(options.doors.max_width),
        "widest passage in metres taken for a door (cut before the decomposition)")
-      ("no-doors", po::bool_switch(&no_doors), "no door cuts before the decomposition")
-      ("no-wall-openings", po::bool_switch(&no_openings),
+      ("no-doors", po::bool_switch(&switches.no_doors), "no door cuts before the decomposition")
+      ("no-wall-openings", po::bool_switch(&switches.no_wall_openings),
        "door cuts only at narrow passages, not where a thin wall stops short of the next obstacle")
-      ("no-merge", po::bool_switch(&no_merge), "keep DuDe's pieces as rooms instead of merging them across wide cuts")
+      ("no-merge", po::bool_switch(&switches.no_merge), "keep DuDe's pieces as rooms instead of merging them across wide cuts")
       ("fold-area", po::value<double>(&options.merge.min_room_area)->default_value(options.merge.min_room_area),
        "rooms smaller than this (m²) are folded into the neighbour they share the longest cut with")
-      ("no-simplify", po::bool_switch(&no_simplify), "decompose the exact pixel-edge polygons (slower)")
+      ("no-simplify", po::bool_switch(&switches.no_simplify), "decompose the exact pixel-edge polygons (slower)")
       ("cover-obstacles", po::bool_switch(&options.labels.cover_absorbed_obstacles),
        "label the obstacles a room absorbed (furniture) with the room, not with 0")
       ("robot-radius", po::value<double>(&options.binarize.robot_radius)->default_value(0.0),
@@ -73,7 +74,7 @@ int run(const std::vector<std::string>& args) {
        "free-space components smaller than this (m²) are not rooms; their cells join the nearest room")
       ("min-hole-area", po::value<double>(&options.contours.min_hole_area)->default_value(options.contours.min_hole_area),
        "obstacles inside free space smaller than this (m²) are ignored by the decomposition")
-      ("no-clean", po::bool_switch(&no_clean),
+      ("no-clean", po::bool_switch(&switches.no_clean),
        "decompose the free space as it is: keep laser-ray fans, slivers, free and obstacle specks")
       ("fixed-thresholds", po::bool_switch(&fixed_thresholds),
        "plain images: use --free-threshold and --occupied-threshold instead of reading the palette from the image")
@@ -85,9 +86,11 @@ int run(const std::vector<std::string>& args) {
       ("out-color", po::value<std::string>(&out_color), "write a colour overlay of the rooms over the map (PNG, JPEG, ...)")
       ("out-json", po::value<std::string>(&out_json), "write rooms and passages as JSON (metres)")
       ("out-svg", po::value<std::string>(&out_svg), "write rooms and passages as SVG (metres)")
-      ("no-width-steps", po::bool_switch(&no_width_steps),
+      ("out-geojson", po::value<std::string>(&out_geojson),
+       "write rooms (Polygons with holes) and passages (LineStrings) as a GeoJSON FeatureCollection (map frame, metres)")
+      ("no-width-steps", po::bool_switch(&switches.no_width_steps),
        "merge a room into a much wider space it opens onto across its whole width (no width-step rule)")
-      ("no-furniture-rule", po::bool_switch(&no_furniture_rule),
+      ("no-furniture-rule", po::bool_switch(&switches.no_furniture_rule),
        "cuts that end on furniture-sized obstacles (at most 2.5 m a side) may separate rooms")
       ("out-clean", po::value<std::string>(&out_clean),
        "write the map as the segmenter saw it (PNG): free, occupied, unknown, and what the cleaning removed in colour");
@@ -121,33 +124,20 @@ int run(const std::vector<std::string>& args) {
   if (load.free_min < 0 || load.free_min > 255 || load.occupied_max < 0 || load.occupied_max > 255)
     throw UsageError("--free-threshold and --occupied-threshold must lie in 0..255");
   if (load.occupied_max > load.free_min) throw UsageError("--occupied-threshold must not exceed --free-threshold");
-  if (parity && (no_doors || no_openings || no_merge || no_simplify || options.labels.cover_absorbed_obstacles || no_clean ||
-                 no_width_steps || no_furniture_rule))
-    throw UsageError("--parity already switches every improvement off; give it alone");
-  if (parity) {
-    const SegmentOptions reference = parity_segment_options(options.concavity);
-    options.doors = reference.doors;
-    options.merge = reference.merge;
-    options.simplify = reference.simplify;
-    options.labels = reference.labels;
-    options.clean = reference.clean;
-    if (vm->at("min-room-area").defaulted()) options.contours.min_component_area = reference.contours.min_component_area;
+  switches.min_room_area_given = !vm->at("min-room-area").defaulted();
+  try {
+    apply(switches, options);
+  } catch (const Error& e) {
+    throw UsageError(e.what());
   }
-  if (no_doors) options.doors.enabled = false;
-  if (no_openings) options.doors.extend_walls = false;
-  if (no_merge) options.merge.enabled = false;
-  if (no_simplify) options.simplify = 0.0;
-  if (no_clean) options.clean = false;
   if (fixed_thresholds || !vm->at("free-threshold").defaulted() || !vm->at("occupied-threshold").defaulted())
     load.detect_palette = false;
-  options.decompose = !trivial;
   load.resolution = resolution;
-  if (no_width_steps) options.merge.step_ratio = 0.0;
-  if (no_furniture_rule) options.merge.furniture_size = 0.0;
 
   // Every output is checked before the work starts, so a typo costs no time and leaves nothing behind.
   const std::pair<const char*, const std::string*> outputs[] = {
-      {"out-labels", &out_labels}, {"out-color", &out_color}, {"out-json", &out_json}, {"out-svg", &out_svg}, {"out-clean", &out_clean}};
+      {"out-labels", &out_labels}, {"out-color", &out_color}, {"out-json", &out_json}, {"out-svg", &out_svg}, {"out-clean", &out_clean},
+      {"out-geojson", &out_geojson}};
   std::vector<std::string> paths;
   for (const auto& [option, path] : outputs) {
     if (vm->count(option) && path->empty()) throw UsageError("--" + std::string(option) + " was given an empty file name");
@@ -167,7 +157,8 @@ int run(const std::vector<std::string>& args) {
   const auto loaded = std::chrono::steady_clock::now();
   SegmentationInput input;
   // The array API's call, in the file's frame (an image's rows are top-down; load_map ignores yaw).
-  const Segmentation segmentation = segment_grid(grid, GridFrame{}, options, out_clean.empty() ? nullptr : &input).segmentation;
+  const GridSegmentation result = segment_grid(grid, GridFrame{}, options, out_clean.empty() ? nullptr : &input);
+  const Segmentation& segmentation = result.segmentation;
   const auto done = std::chrono::steady_clock::now();
 
   if (!out_clean.empty()) write_image_atomically(out_clean, render_cleaned_map(grid.cells, input.cleaned));
@@ -175,14 +166,15 @@ int run(const std::vector<std::string>& args) {
   if (!out_color.empty()) write_overlay(out_color, grid, segmentation);
   if (!out_json.empty()) write_rooms_json(out_json, segmentation);
   if (!out_svg.empty()) write_rooms_svg(out_svg, grid, segmentation);
+  if (!out_geojson.empty()) write_rooms_geojson(out_geojson, segmentation, result.placements);
 
   const auto ms = [](auto a, auto b) { return std::chrono::duration<double, std::milli>(b - a).count(); };
   std::ostringstream summary;
   summary << map_path << ": " << grid.width() << " x " << grid.height() << " cells at " << grid.resolution << " m; "
           << segmentation.rooms.size() << (segmentation.rooms.size() == 1 ? " room, " : " rooms, ")
           << segmentation.passages.size() << (segmentation.passages.size() == 1 ? " passage" : " passages") << " ("
-          << (trivial ? "trivial: one room per component"
-                      : std::string(parity ? "DuDe pieces, parity" : options.clean ? "cleaning + doors + DuDe + merging" : "doors + DuDe + merging") + ", concavity " + [&] {
+          << (switches.trivial ? "trivial: one room per component"
+                      : std::string(switches.parity ? "DuDe pieces, parity" : options.clean ? "cleaning + doors + DuDe + merging" : "doors + DuDe + merging") + ", concavity " + [&] {
                           std::ostringstream t;
                           t << options.concavity;
                           return t.str();
@@ -196,6 +188,7 @@ int run(const std::vector<std::string>& args) {
   if (!out_color.empty()) summary << "wrote overlay: " << out_color << "\n";
   if (!out_json.empty()) summary << "wrote JSON:    " << out_json << "\n";
   if (!out_svg.empty()) summary << "wrote SVG:     " << out_svg << "\n";
+  if (!out_geojson.empty()) summary << "wrote GeoJSON: " << out_geojson << "\n";
   if (!out_clean.empty()) summary << "wrote cleaned map: " << out_clean << "\n";
   std::cout << summary.str() << std::flush;
   return 0;

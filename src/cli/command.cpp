@@ -1,4 +1,5 @@
 #include "cli/command.h"
+#include "cli/config_file.h"
 
 #include <iostream>
 
@@ -45,6 +46,8 @@ std::optional<po::variables_map> parse_options(const std::string& usage, const s
                                                const std::vector<std::string>& args) {
   po::options_description all("Options");
   all.add_options()("help,h", "show this help and exit");
+  all.add_options()("config", po::value<std::string>(),
+                    "read options from this YAML file (keys: long option names; the command line wins)");
   all.add(options);
   po::variables_map vm;
   try {
@@ -53,6 +56,8 @@ std::optional<po::variables_map> parse_options(const std::string& usage, const s
       std::cout << "Usage: " << usage << "\n\n" << description << "\n\n" << all << std::flush;
       return std::nullopt;
     }
+    // Stored second, so every option the command line gave keeps its value.
+    if (vm.count("config")) po::store(config_file_options(vm["config"].as<std::string>(), all), vm);
     po::notify(vm);
   } catch (const po::error& e) {
     throw UsageError(e.what());

@@ -4,28 +4,15 @@
 
 #include <nlohmann/json.hpp>
 
+#include "io/json_coordinates.h"
 #include "topocut/io/atomic_file.h"
 
 namespace topocut {
 
-namespace {
-
+using json_coordinates::point;
+using json_coordinates::ring;
+using json_coordinates::rounded;
 using nlohmann::json;
-
-double rounded(double v) {
-  const double r = std::round(v * 1e6) / 1e6;
-  return r == 0.0 ? 0.0 : r;  // no "-0.0" in the output
-}
-
-json point(const Point2& p) { return json::array({rounded(p.x), rounded(p.y)}); }
-
-json ring(const Ring& r) {
-  json out = json::array();
-  for (const Point2& p : r) out.push_back(point(p));
-  return out;
-}
-
-}  // namespace
 
 std::string rooms_to_json(const Segmentation& s) {
   // One room or passage per line: compact enough for big maps, still readable and diffable.

@@ -1,5 +1,7 @@
 #include "topocut/segmentation/incremental_segmenter.h"
 
+#include "segmentation/passage_kind.h"
+
 #include <algorithm>
 #include <climits>
 #include <cmath>
@@ -749,9 +751,9 @@ void IncrementalSegmenter::State::redecompose(const OccupancyGrid& grid, std::ve
     passage.room_b = std::max(a, b);
     passage.cut = {to_world(cut.a), to_world(cut.b)};
     passage.width = std::hypot(cut.b.x - cut.a.x, cut.b.y - cut.a.y) * resolution;
-    passage.door = std::find(set.doors.begin(), set.doors.end(), cut) != set.doors.end();
+    passage.door = is_door(passage, options.segment.doors);
     passages.push_back(passage);
-    doors.push_back(passage.door);
+    doors.push_back(std::find(set.doors.begin(), set.doors.end(), cut) != set.doors.end());
   }
   std::vector<std::size_t> order(passages.size());
   for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;

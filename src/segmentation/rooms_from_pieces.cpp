@@ -314,7 +314,6 @@ Segmentation rooms_from_pieces(const OccupancyGrid& grid, const PieceSet& set, c
     p.room_b = std::max(a, b);
     p.cut = {grid_to_world(grid, cut.a), grid_to_world(grid, cut.b)};
     p.width = length * grid.resolution;
-    p.door = std::find(set.doors.begin(), set.doors.end(), cut) != set.doors.end();
     s.passages.push_back(p);
   }
   std::sort(s.passages.begin(), s.passages.end(), [](const Passage& x, const Passage& y) {

@@ -1,5 +1,7 @@
 #include "topocut/segmentation/segmenter.h"
 
+#include "segmentation/passage_kind.h"
+
 #include <cmath>
 #include <string>
 
@@ -111,7 +113,9 @@ Segmentation segment(const OccupancyGrid& grid, const SegmentOptions& options, S
   PieceSet pieces;
   for (const FreeSpaceComponent& component : polygons.components)
     pieces.append(decompose_component(component, grid.resolution, options));
-  return rooms_from_pieces(input.labelled, pieces, options.labels);
+  Segmentation segmentation = rooms_from_pieces(input.labelled, pieces, options.labels);
+  for (Passage& passage : segmentation.passages) passage.door = is_door(passage, options.doors);
+  return segmentation;
 }
 
 }  // namespace topocut

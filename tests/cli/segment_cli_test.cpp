@@ -272,3 +272,50 @@ TEST(SegmentCli, AnOptionWhereAValueBelongsIsAMissingValue) {
 }
 
 }  // namespace
+
+// --config: a robot's options from a YAML file give what the same options on the command line
+// give; the command line wins; a key that is no option is one clear error.
+TEST(SegmentCli, ConfigFileGivesTheSameRoomsAsTheCommandLine) {
+  TempDir dir;
+  {
+    std::ofstream config(dir.file("robot.yaml"));
+    config << "# the robot's parameters\nconcavity: 1.5\nno-merge: true\nno-doors: false\nout-json: " << dir.file("config.json") << "\n";
+  }
+  Result r = run(dir, {bundled("floorplan.yaml"), "--config", dir.file("robot.yaml")});
+  ASSERT_EQ(r.code, 0) << r.err;
+  r = run(dir, {bundled("floorplan.yaml"), "--concavity", "1.5", "--no-merge", "--out-json", dir.file("flags.json")});
+  ASSERT_EQ(r.code, 0) << r.err;
+  const nlohmann::json from_config = nlohmann::json::parse(slurp(dir.file("config.json")));
+  EXPECT_EQ(from_config, nlohmann::json::parse(slurp(dir.file("flags.json"))));
+  // The command line's concavity wins over the file's.
+  r = run(dir, {bundled("floorplan.yaml"), "--config", dir.file("robot.yaml"), "--concavity", "2.5", "--out-json", dir.file("mixed.json")});
+  ASSERT_EQ(r.code, 0) << r.err;
+  r = run(dir, {bundled("floorplan.yaml"), "--concavity", "2.5", "--no-merge", "--out-json", dir.file("expected.json")});
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(nlohmann::json::parse(slurp(dir.file("mixed.json"))), nlohmann::json::parse(slurp(dir.file("expected.json"))));
+
+  std::ofstream(dir.file("typo.yaml")) << "concavty: 1.5\n";
+  expect_error(run(dir, {bundled("floorplan.yaml"), "--config", dir.file("typo.yaml")}), "'concavty' in config file", 2);
+  std::ofstream(dir.file("bad.yaml")) << "concavity: [1.5\n";
+  expect_error(run(dir, {bundled("floorplan.yaml"), "--config", dir.file("bad.yaml")}), "is not valid YAML");
+  std::ofstream(dir.file("switch.yaml")) << "no-merge: maybe\n";
+  expect_error(run(dir, {bundled("floorplan.yaml"), "--config", dir.file("switch.yaml")}), "give true or false", 2);
+  expect_error(run(dir, {bundled("floorplan.yaml"), "--config", dir.file("missing.yaml")}), "missing.yaml");
+}
+
+TEST(SegmentCli, GeoJsonHasOneFeaturePerRoomAndPassage) {
+  TempDir dir;
+  const Result r = run(dir, {bundled("floorplan.yaml"), "--out-json", dir.file("rooms.json"), "--out-geojson", dir.file("rooms.geojson")});
+  ASSERT_EQ(r.code, 0) << r.err;
+  const nlohmann::json rooms = nlohmann::json::parse(slurp(dir.file("rooms.json")));
+  const nlohmann::json geo = nlohmann::json::parse(slurp(dir.file("rooms.geojson")));
+  ASSERT_EQ(geo["features"].size(), rooms["rooms"].size() + rooms["passages"].size());
+  for (std::size_t k = 0; k < rooms["rooms"].size(); ++k) {
+    const nlohmann::json& feature = geo["features"][k];
+    EXPECT_EQ(feature["properties"]["id"], rooms["rooms"][k]["id"]);
+    // The exterior is the rooms JSON's outer ring, closed.
+    nlohmann::json ring = rooms["rooms"][k]["outer"];
+    ring.push_back(ring.front());
+    EXPECT_EQ(feature["geometry"]["coordinates"][0], ring);
+  }
+}

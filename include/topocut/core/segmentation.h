@@ -15,13 +15,20 @@ struct Room {
   Point2 centroid;           // world metres, of the room's labelled cells
 };
 
+// Where a room is, beyond its polygon (map frame, metres).
+struct RoomPlacement {
+  Point2 inside;  // centre of the room's labelled cell farthest from the room's edge (always in the room)
+  Point2 min;     // lower-left corner of the polygon's bounding box
+  Point2 max;     // upper-right corner
+};
+
 // A passage (door, opening) between two rooms: the cut that separates them.
 struct Passage {
   int room_a = 0;
   int room_b = 0;
   Segment2 cut;         // world metres
   double width = 0.0;   // metres, length of the cut
-  bool door = false;    // the cut was found as a door (a narrow gap in a wall), not a wider opening
+  bool door = false;    // a door (a cut at most the door width, DoorOptions::max_width), not a wider opening
 };
 
 struct Segmentation {

@@ -12,13 +12,6 @@
 
 namespace topocut {
 
-// Where a room is, beyond its polygon (map frame, metres).
-struct RoomPlacement {
-  Point2 inside;  // centre of the room's labelled cell farthest from the room's edge (always in the room)
-  Point2 min;     // lower-left corner of the polygon's bounding box
-  Point2 max;     // upper-right corner
-};
-
 struct GridSegmentation {
   // labels in frame.row_order; room polygons and centroids, passage cuts in the map frame.
   // A passage's door flag tells a door (a narrow gap in a wall) from a wider opening.

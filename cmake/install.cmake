@@ -1,0 +1,54 @@
+# Why: `cmake --install` makes topocut a package other projects use: headers, the module libraries,
+# the command, a CMake config package (find_package(topocut CONFIG REQUIRED) -> topocut::topocut)
+# and a pkg-config file. Included from the top-level CMakeLists.txt after the targets exist.
+include(GNUInstallDirs)
+include(CMakePackageConfigHelpers)
+
+set(TOPOCUT_INSTALL_CMAKEDIR ${CMAKE_INSTALL_LIBDIR}/cmake/topocut)
+
+# The modules' include path is the source tree while building and <prefix>/include once installed.
+foreach(module IN LISTS TOPOCUT_MODULES)
+  get_target_property(module_type topocut_${module} TYPE)
+  if(module_type STREQUAL "INTERFACE_LIBRARY")
+    set(scope INTERFACE)
+  else()
+    set(scope PUBLIC)
+  endif()
+  set_property(TARGET topocut_${module} PROPERTY INTERFACE_INCLUDE_DIRECTORIES
+               $<BUILD_INTERFACE:${CMAKE_CURRENT_SOURCE_DIR}/include> $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}>)
+endforeach()
+set_target_properties(topocut_lib PROPERTIES EXPORT_NAME topocut)
+add_library(topocut::topocut ALIAS topocut_lib)
+
+set(topocut_module_targets)
+foreach(module IN LISTS TOPOCUT_MODULES)
+  list(APPEND topocut_module_targets topocut_${module})
+endforeach()
+install(TARGETS ${topocut_module_targets} topocut_lib EXPORT topocutTargets
+        ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR} LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
+        INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+install(TARGETS topocut RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+install(DIRECTORY include/topocut DESTINATION ${CMAKE_INSTALL_INCLUDEDIR} FILES_MATCHING PATTERN "*.h")
+install(EXPORT topocutTargets NAMESPACE topocut:: DESTINATION ${TOPOCUT_INSTALL_CMAKEDIR})
+
+configure_package_config_file(${CMAKE_CURRENT_SOURCE_DIR}/cmake/topocutConfig.cmake.in
+                              ${CMAKE_CURRENT_BINARY_DIR}/topocutConfig.cmake INSTALL_DESTINATION ${TOPOCUT_INSTALL_CMAKEDIR})
+write_basic_package_version_file(${CMAKE_CURRENT_BINARY_DIR}/topocutConfigVersion.cmake COMPATIBILITY SameMinorVersion)
+install(FILES ${CMAKE_CURRENT_BINARY_DIR}/topocutConfig.cmake ${CMAKE_CURRENT_BINARY_DIR}/topocutConfigVersion.cmake
+        DESTINATION ${TOPOCUT_INSTALL_CMAKEDIR})
+
+# pkg-config: static libraries, so every module (users first) and what they link privately.
+set(TOPOCUT_PC_LIBS)
+set(reversed_modules ${TOPOCUT_MODULES})
+list(REVERSE reversed_modules)
+foreach(module IN LISTS reversed_modules)
+  get_target_property(module_type topocut_${module} TYPE)
+  if(NOT module_type STREQUAL "INTERFACE_LIBRARY")
+    string(APPEND TOPOCUT_PC_LIBS " -ltopocut_${module}")
+  endif()
+endforeach()
+# Relocatable: the prefix is found from the .pc file's own place, so `cmake --install --prefix DIR` works.
+file(RELATIVE_PATH TOPOCUT_PC_TO_PREFIX /${CMAKE_INSTALL_LIBDIR}/pkgconfig /)
+string(REGEX REPLACE "/$" "" TOPOCUT_PC_TO_PREFIX "${TOPOCUT_PC_TO_PREFIX}")
+configure_file(${CMAKE_CURRENT_SOURCE_DIR}/cmake/topocut.pc.in ${CMAKE_CURRENT_BINARY_DIR}/topocut.pc @ONLY)
+install(FILES ${CMAKE_CURRENT_BINARY_DIR}/topocut.pc DESTINATION ${CMAKE_INSTALL_LIBDIR}/pkgconfig)

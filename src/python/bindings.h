@@ -1,0 +1,10 @@
+#pragma once
+// The parts of the Python module, each adding its functions and classes to the module.
+#include <pybind11/pybind11.h>
+
+namespace topocut::python {
+
+void bind_segmentation(pybind11::module_& m);  // segment, load_map, IncrementalSegmenter, results
+void bind_geometry(pybind11::module_& m);      // decompose, line extractors
+
+}  // namespace topocut::python

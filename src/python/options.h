@@ -1,0 +1,45 @@
+#pragma once
+// Keyword arguments -> the library's option structs, with the segment command's option names
+// (dashes become underscores) and the structs' own defaults.
+#include <string>
+#include <vector>
+
+#include <pybind11/pybind11.h>
+
+#include "topocut/core/grid_array.h"
+#include "topocut/segmentation/incremental_segmenter.h"
+#include "topocut/segmentation/segmenter.h"
+
+namespace topocut::python {
+
+namespace py = pybind11;
+
+// How the cells of an array are read: row order and thresholds (kwargs row_order, free_thresh,
+// occupied_thresh, fixed_thresholds, free_threshold, occupied_threshold).
+struct GridReading {
+  std::string row_order;  // "", "bottom-up" or "top-down"; "" = bottom-up for int8, top-down for uint8
+  double free_thresh = GridArray{}.free_thresh;
+  double occupied_thresh = GridArray{}.occupied_thresh;
+  bool fixed_thresholds = false;
+  int free_threshold = GridArray{}.free_min;
+  int occupied_threshold = GridArray{}.occupied_max;
+};
+
+// Takes the grid-reading keywords out of kwargs (the rest stay).
+GridReading take_grid_reading(py::dict& kwargs);
+
+// Fills array's frame and thresholds from resolution, origin (x, y[, yaw]) and reading.
+void apply(const GridReading& reading, double resolution, const py::handle& origin, GridArray& array);
+
+// Segment options from the segment command's keywords; an unknown keyword raises TypeError, a bad
+// value ValueError with the command's message.
+SegmentOptions segment_options(const py::dict& kwargs);
+
+// Incremental options: absorb_area, absorb_fraction, batch_fraction, neighbours_across_doors and
+// every segment option (the real-map cleaning stays off, as IncrementalOptions says).
+IncrementalOptions incremental_options(py::dict kwargs);
+
+// The names segment() accepts, for docstrings.
+std::string segment_option_names();
+
+}  // namespace topocut::python

@@ -1,0 +1,209 @@
+// segment(), load_map(), IncrementalSegmenter and their result types.
+#include <memory>
+
+#include <pybind11/numpy.h>
+#include <pybind11/stl.h>
+
+#include "python/arrays.h"
+#include "python/bindings.h"
+#include "python/options.h"
+#include "topocut/io/map_loader.h"
+#include "topocut/io/rooms_geojson.h"
+#include "topocut/io/rooms_json.h"
+#include "topocut/topocut.h"
+
+namespace topocut::python {
+namespace {
+
+using Shared = std::shared_ptr<const GridSegmentation>;
+
+struct RoomView {
+  Room room;
+  RoomPlacement placement;
+};
+
+struct Result {
+  Shared result;
+};
+
+struct Map {
+  py::array_t<std::int8_t> grid;
+  double resolution = 0.0;
+  py::tuple origin;
+  std::string cells;  // how the cells were read (palette or YAML thresholds)
+};
+
+py::tuple xy(const Point2& p) { return py::make_tuple(p.x, p.y); }
+
+// The label image as a read-only numpy view of the result's own buffer (no copy); the array keeps
+// the result alive.
+py::array labels_view(const Shared& result) {
+  const cv::Mat& labels = result->segmentation.labels;
+  auto* owner = new Shared(result);
+  py::capsule base(owner, [](void* p) { delete static_cast<Shared*>(p); });
+  py::array_t<std::int32_t> view({static_cast<py::ssize_t>(labels.rows), static_cast<py::ssize_t>(labels.cols)},
+                                 {static_cast<py::ssize_t>(labels.step[0]), static_cast<py::ssize_t>(sizeof(std::int32_t))},
+                                 labels.ptr<std::int32_t>(), base);
+  view.attr("setflags")(py::arg("write") = false);
+  return view;
+}
+
+std::vector<RoomView> rooms_of(const Shared& result) {
+  std::vector<RoomView> rooms;
+  for (std::size_t k = 0; k < result->segmentation.rooms.size(); ++k)
+    rooms.push_back({result->segmentation.rooms[k], result->placements[k]});
+  return rooms;
+}
+
+// The grid and its frame as the library wants them; checks raise ValueError.
+GridArray grid_array(const py::array& grid, double resolution, const py::handle& origin, const GridReading& reading) {
+  GridArray a = grid_view(grid);
+  apply(reading, resolution, origin, a);
+  return a;
+}
+
+Result segment_py(const py::array& grid, double resolution, const py::object& origin, py::kwargs kwargs) {
+  const GridReading reading = take_grid_reading(kwargs);
+  const GridArray array = grid_array(grid, resolution, origin, reading);
+  const SegmentOptions options = segment_options(kwargs);
+  std::shared_ptr<GridSegmentation> out;
+  {
+    py::gil_scoped_release release;
+    out = std::make_shared<GridSegmentation>(segment_grid(array, options));
+  }
+  return {out};
+}
+
+Map load_map_py(const std::string& path, double resolution, bool fixed_thresholds, int free_threshold, int occupied_threshold) {
+  MapLoadOptions load;
+  load.resolution = resolution;
+  load.detect_palette = !fixed_thresholds;
+  load.free_min = free_threshold;
+  load.occupied_max = occupied_threshold;
+  OccupancyGrid grid;
+  std::string cells;
+  {
+    py::gil_scoped_release release;
+    grid = load_map(path, load, &cells);
+  }
+  // ROS's encoding and row order: -1 unknown, 0 free, 100 occupied, row 0 at the origin.
+  Map map;
+  map.grid = py::array_t<std::int8_t>({static_cast<py::ssize_t>(grid.height()), static_cast<py::ssize_t>(grid.width())});
+  auto out = map.grid.mutable_unchecked<2>();
+  for (int r = 0; r < grid.height(); ++r) {
+    const unsigned char* row = grid.cells.ptr<unsigned char>(grid.height() - 1 - r);
+    for (int c = 0; c < grid.width(); ++c) out(r, c) = row[c] == kFree ? 0 : row[c] == kOccupied ? 100 : -1;
+  }
+  map.resolution = grid.resolution;
+  map.origin = py::make_tuple(grid.origin.x, grid.origin.y, 0.0);
+  map.cells = cells;
+  return map;
+}
+
+class PyIncremental {
+ public:
+  explicit PyIncremental(py::kwargs kwargs) : segmenter_(incremental_options(kwargs)) {}
+  Result update(const py::array& grid, double resolution, const py::object& origin, py::kwargs kwargs) {
+    const GridReading reading = take_grid_reading(kwargs);
+    if (!kwargs.empty()) throw py::type_error("update() takes only the grid-reading options; give segmentation options to IncrementalSegmenter()");
+    const GridArray array = grid_array(grid, resolution, origin, reading);
+    std::shared_ptr<GridSegmentation> out;
+    {
+      py::gil_scoped_release release;
+      out = std::make_shared<GridSegmentation>(update_grid(segmenter_, array));
+    }
+    return {out};
+  }
+  std::string last_update() const {
+    switch (segmenter_.last_update().kind) {
+      case IncrementalUpdateReport::Kind::kUnchanged: return "unchanged";
+      case IncrementalUpdateReport::Kind::kIncremental: return "incremental";
+      case IncrementalUpdateReport::Kind::kBatch: return "batch";
+    }
+    return "";
+  }
+  void reset() { segmenter_.reset(); }
+
+ private:
+  IncrementalSegmenter segmenter_;
+};
+
+void bind_results(py::module_& m) {
+  py::class_<RoomView>(m, "Room", "A room: id (its label), polygon in the map frame (metres), area, centroid, a point inside, bounding box.")
+      .def_property_readonly("id", [](const RoomView& r) { return r.room.id; })
+      .def_property_readonly("area", [](const RoomView& r) { return r.room.area; }, "m², of the room's labelled cells")
+      .def_property_readonly("centroid", [](const RoomView& r) { return xy(r.room.centroid); }, "(x, y) of the labelled cells")
+      .def_property_readonly("inside", [](const RoomView& r) { return xy(r.placement.inside); },
+                             "(x, y) of the room's cell farthest from its edge: always in the room, a place for its name")
+      .def_property_readonly("bbox", [](const RoomView& r) {
+        return py::make_tuple(r.placement.min.x, r.placement.min.y, r.placement.max.x, r.placement.max.y);
+      }, "(xmin, ymin, xmax, ymax) of the polygon")
+      .def_property_readonly("outer", [](const RoomView& r) { return points_array(r.room.polygon.outer); },
+                             "outer ring, (n, 2) array, counter-clockwise, not closed")
+      .def_property_readonly("holes", [](const RoomView& r) {
+        py::list holes;
+        for (const Ring& h : r.room.polygon.holes) holes.append(points_array(h));
+        return holes;
+      }, "list of (n, 2) arrays, clockwise")
+      .def("__repr__", [](const RoomView& r) {
+        return "<topocut.Room " + std::to_string(r.room.id) + ", " + std::to_string(r.room.area) + " m²>";
+      });
+  py::class_<Passage>(m, "Passage", "A passage between two rooms: the cut that separates them.")
+      .def_property_readonly("rooms", [](const Passage& p) { return py::make_tuple(p.room_a, p.room_b); }, "(room a, room b), a < b")
+      .def_property_readonly("cut", [](const Passage& p) { return points_array({p.cut.a, p.cut.b}); }, "(2, 2) array: the cut's end points")
+      .def_property_readonly("width", [](const Passage& p) { return p.width; }, "metres")
+      .def_property_readonly("kind", [](const Passage& p) { return p.door ? "door" : "opening"; },
+                             "'door' (a narrow gap in a wall) or 'opening' (a wider one)")
+      .def("__repr__", [](const Passage& p) {
+        return "<topocut.Passage " + std::to_string(p.room_a) + "-" + std::to_string(p.room_b) + ", " + (p.door ? "door" : "opening") + ">";
+      });
+  py::class_<Result>(m, "Segmentation", "The rooms of a grid: labels, rooms, passages.")
+      .def_property_readonly("labels", [](const Result& r) { return labels_view(r.result); },
+                             "int32 array, the grid's shape and row order: 0 no room, else the room id (read-only view, no copy)")
+      .def_property_readonly("rooms", [](const Result& r) { return rooms_of(r.result); }, "list of Room, by id")
+      .def_property_readonly("passages", [](const Result& r) { return r.result->segmentation.passages; }, "list of Passage")
+      .def_property_readonly("resolution", [](const Result& r) { return r.result->segmentation.resolution; })
+      .def("to_json", [](const Result& r) { return rooms_to_json(r.result->segmentation); },
+           "The rooms JSON the topocut command writes with --out-json (metres, map frame).")
+      .def("to_geojson", [](const Result& r) { return rooms_to_geojson(r.result->segmentation, r.result->placements); },
+           "The GeoJSON FeatureCollection the topocut command writes with --out-geojson (map frame, metres):\n"
+           "rooms as Polygons (RFC 7946 ring order, closed rings), passages as LineStrings.");
+  py::class_<Map>(m, "Map", "A loaded map: grid (int8, -1 unknown / 0 free / 100 occupied, row 0 at the origin as in ROS), resolution, origin.")
+      .def_readonly("grid", &Map::grid)
+      .def_readonly("resolution", &Map::resolution)
+      .def_readonly("origin", &Map::origin, "(x, y, yaw) of the lower-left corner")
+      .def_readonly("cells", &Map::cells, "how the file's values were read (palette or thresholds)");
+}
+
+}  // namespace
+
+void bind_segmentation(py::module_& m) {
+  bind_results(m);
+  m.def("segment", &segment_py, py::arg("grid"), py::arg("resolution") = 0.05, py::arg("origin") = py::make_tuple(0.0, 0.0, 0.0),
+        ("Segments a grid into rooms.\n\n"
+         "grid: 2-D int8 array (nav_msgs/OccupancyGrid values: -1 unknown, 0..100 occupancy; row 0 at the\n"
+         "origin unless row_order='top-down') or uint8 grey image (255 free, 0 occupied; rows top-down unless\n"
+         "row_order='bottom-up'). resolution: metres per cell. origin: (x, y[, yaw]) of the lower-left corner.\n"
+         "int8 cells are free below free_thresh (0.196) and occupied above occupied_thresh (0.65); grey cells\n"
+         "follow the palette read from the image, or free_threshold (250) / occupied_threshold (50) with\n"
+         "fixed_thresholds=True. Other keywords are the topocut segment command's options with '_' for '-': " +
+         segment_option_names() +
+         ".\nReturns a Segmentation (labels in the grid's row order, rooms and passages in the map frame).\n"
+         "Raises ValueError on bad input. The GIL is released while segmenting.").c_str());
+  m.def("load_map", &load_map_py, py::arg("path"), py::arg("resolution") = 0.05, py::arg("fixed_thresholds") = false,
+        py::arg("free_threshold") = MapLoadOptions{}.free_min, py::arg("occupied_threshold") = MapLoadOptions{}.occupied_max,
+        "Loads a ROS map_server YAML or an image as the topocut command does; returns a Map whose int8 grid\n"
+        "(ROS encoding and row order) segment() takes as it is. Raises ValueError on a bad file.");
+  py::class_<PyIncremental>(m, "IncrementalSegmenter",
+                            "Segments a growing map update by update, reusing the rooms a change did not reach (ids stay).\n"
+                            "Keywords: segment()'s options and absorb_area, absorb_fraction, batch_fraction, neighbours_across_doors.")
+      .def(py::init<py::kwargs>())
+      .def("update", &PyIncremental::update, py::arg("grid"), py::arg("resolution") = 0.05,
+           py::arg("origin") = py::make_tuple(0.0, 0.0, 0.0),
+           "Segments the new grid (as segment() takes it; row_order and thresholds as keywords); returns a Segmentation\n"
+           "whose room ids are stable across updates. The GIL is released while segmenting.")
+      .def_property_readonly("last_update", &PyIncremental::last_update, "'unchanged', 'incremental' or 'batch'")
+      .def("reset", &PyIncremental::reset, "Forgets everything; the next update starts afresh.");
+}
+
+}  // namespace topocut::python
