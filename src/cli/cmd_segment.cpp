@@ -11,6 +11,7 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "cli/command.h"
+#include "cli/input_options.h"
 #include "topocut/core/error.h"
 #include "topocut/io/atomic_file.h"
 #include "topocut/io/label_image.h"
@@ -91,6 +92,8 @@ int run(const std::vector<std::string>& args) {
        "cuts that end on furniture-sized obstacles (at most 2.5 m a side) may separate rooms")
       ("out-clean", po::value<std::string>(&out_clean),
        "write the map as the segmenter saw it (PNG): free, occupied, unknown, and what the cleaning removed in colour");
+  std::string max_megapixels;
+  add_image_limit_option(described, max_megapixels);
   po::positional_options_description positional;
   positional.add("map", 1);
   const auto vm = parse_options(
@@ -142,6 +145,12 @@ int run(const std::vector<std::string>& args) {
     load.detect_palette = false;
   options.decompose = !trivial;
   load.resolution = resolution;
+  apply_image_limit_option(max_megapixels, load.limits);
+  try {  // the library's ranges, reported before any work
+    validate(options);
+  } catch (const Error& e) {
+    throw UsageError(e.what());
+  }
   if (no_width_steps) options.merge.step_ratio = 0.0;
   if (no_furniture_rule) options.merge.furniture_size = 0.0;
 

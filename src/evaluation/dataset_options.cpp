@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "topocut/core/error.h"
+#include "topocut/io/image_input.h"
 
 namespace topocut {
 
@@ -62,6 +63,7 @@ const std::vector<DatasetOption>& dataset_options() {
         {"no-furniture-rule", "", "cuts that end on furniture-sized obstacles may separate rooms", false},
         {"resolution", "M", "metres per cell of images without a YAML (default " + number(defaults.run.load.resolution) + ")",
          false},
+        {kMaxMegapixelsOption, "MP", max_megapixels_help(), false},
         {"oversegment", "F", "with merging, DuDe cuts at F x tau, 0 < F <= 1 (default " +
                                   number(defaults.run.segment.oversegment) + ")", false},
     };
@@ -116,6 +118,8 @@ void apply_dataset_option(DatasetArguments& arguments, const std::string& name, 
     arguments.run.segment.merge.furniture_size = 0.0;
   } else if (name == "resolution") {
     arguments.run.load.resolution = parse_positive_metres(name, value);
+  } else if (name == kMaxMegapixelsOption) {
+    apply_max_megapixels(arguments.run.load.limits, value);
   } else if (name == "oversegment") {
     std::size_t used = 0;
     double factor = 0.0;
