@@ -57,8 +57,8 @@ int run(const std::vector<std::string>& args) {
       ("gt", po::value<std::string>(&gt_path), "ground-truth segmentation image (default: X_gt_segmentation.png next to the map)")
       ("frames", po::value<std::string>(&frames), "write a PNG frame of every update into this folder")
       ("frame-every", po::value<int>(&frame_every)->default_value(frame_every), "with --frames: only every N-th update (and the last)");
-  std::string max_megapixels;
-  add_image_limit_option(described, max_megapixels);
+  ImageLimits limits;
+  add_image_limit_option(described, limits);
   po::positional_options_description positional;
   positional.add("map", 1);
   const auto vm = parse_options(
@@ -91,7 +91,8 @@ int run(const std::vector<std::string>& args) {
 
   MapLoadOptions load;
   load.resolution = resolution;
-  apply_image_limit_option(max_megapixels, load.limits);
+  load.limits = limits;
+  check_image_limit_option(load.limits);
   const OccupancyGrid world = load_map(map_path, load);
   if (gt_path.empty()) gt_path = find_ground_truth(map_path);
   cv::Mat gt_rooms;

@@ -92,8 +92,7 @@ int run(const std::vector<std::string>& args) {
        "cuts that end on furniture-sized obstacles (at most 2.5 m a side) may separate rooms")
       ("out-clean", po::value<std::string>(&out_clean),
        "write the map as the segmenter saw it (PNG): free, occupied, unknown, and what the cleaning removed in colour");
-  std::string max_megapixels;
-  add_image_limit_option(described, max_megapixels);
+  add_image_limit_option(described, load.limits);
   po::positional_options_description positional;
   positional.add("map", 1);
   const auto vm = parse_options(
@@ -145,7 +144,7 @@ int run(const std::vector<std::string>& args) {
     load.detect_palette = false;
   options.decompose = !trivial;
   load.resolution = resolution;
-  apply_image_limit_option(max_megapixels, load.limits);
+  check_image_limit_option(load.limits);
   try {  // the library's ranges, reported before any work
     validate(options);
   } catch (const Error& e) {

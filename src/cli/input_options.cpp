@@ -4,14 +4,15 @@
 
 namespace topocut::cli {
 
-void add_image_limit_option(po::options_description& options, std::string& value) {
-  options.add_options()(kMaxMegapixelsOption, po::value<std::string>(&value)->value_name("MP"), max_megapixels_help().c_str());
+void add_image_limit_option(po::options_description& options, ImageLimits& limits) {
+  options.add_options()(kMaxMegapixelsOption,
+                        po::value<double>(&limits.max_megapixels)->default_value(limits.max_megapixels)->value_name("MP"),
+                        max_megapixels_help().c_str());
 }
 
-void apply_image_limit_option(const std::string& value, ImageLimits& limits) {
-  if (value.empty()) return;
+void check_image_limit_option(const ImageLimits& limits) {
   try {
-    apply_max_megapixels(limits, value);
+    validate(limits);
   } catch (const Error& e) {
     throw UsageError(e.what());
   }

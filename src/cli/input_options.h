@@ -5,10 +5,10 @@
 
 namespace topocut::cli {
 
-// Adds --max-megapixels (image_input.h's name and help) writing its text value to *value.
-void add_image_limit_option(po::options_description& options, std::string& value);
+// Adds --max-megapixels (image_input.h's name and help), writing into limits.
+void add_image_limit_option(po::options_description& options, ImageLimits& limits);
 
-// Applies the option's value (if given) to limits; a bad value is a UsageError naming the range.
-void apply_image_limit_option(const std::string& value, ImageLimits& limits);
+// Validates limits after parsing; a bad value is a UsageError naming the range.
+void check_image_limit_option(const ImageLimits& limits);
 
 }  // namespace topocut::cli

@@ -204,22 +204,6 @@ std::string max_megapixels_help() {
   return text.str();
 }
 
-void apply_max_megapixels(ImageLimits& limits, const std::string& value) {
-  std::size_t used = 0;
-  double parsed = 0.0;
-  try {
-    parsed = std::stod(value, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
-  if (used == 0 || used != value.size())
-    throw Error(std::string("--") + kMaxMegapixelsOption + " needs a number of megapixels, not '" + value + "'");
-  ImageLimits candidate = limits;
-  candidate.max_megapixels = parsed;
-  validate(candidate);
-  limits = candidate;
-}
-
 ImageHeader read_image_header(std::string_view bytes, const std::string& source) {
   if (bytes.empty()) throw Error("image " + quoted(source) + " is empty (0 bytes)");
   const HeaderBytes b(bytes);

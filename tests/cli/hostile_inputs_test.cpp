@@ -82,7 +82,7 @@ TEST(HostileInputs, StandardInputIsBoundedToo) {
   ASSERT_EQ(ok.code, 0) << ok.err;
   EXPECT_EQ(nlohmann::json::parse(ok.out)["pieces"].size(), 2u);
   // /dev/zero on standard input: refused at the limit, not read until memory runs out.
-  expect_clean_error(run_cli(dir, "decompose", {"-", "--tau", "1"}, 10, "/dev/zero"), "decompose", "16 MiB");
+  expect_clean_error(run_cli(dir, "decompose", {"-", "--tau", "1"}, 10, "/dev/zero"), "decompose", "4 MiB");
 }
 
 TEST(HostileInputs, ImageDeclaringTooManyPixelsIsRefusedBeforeDecoding) {

@@ -104,10 +104,6 @@ TEST(ImageInput, PixelLimitIsCheckedOnTheHeader) {
   EXPECT_NE(message.find("--max-megapixels"), std::string::npos) << message;
   EXPECT_NE(error_of([] { validate(ImageLimits{0.0}); }).find("(0, 1000]"), std::string::npos);
   EXPECT_NE(error_of([] { validate(ImageLimits{1e9}); }).find("(0, 1000]"), std::string::npos);
-  ImageLimits limits;
-  apply_max_megapixels(limits, "2.5");
-  EXPECT_DOUBLE_EQ(limits.max_megapixels, 2.5);
-  EXPECT_NE(error_of([&] { apply_max_megapixels(limits, "many"); }).find("--max-megapixels"), std::string::npos);
 }
 
 TEST(MapLoaderLimits, DevicesAndRangesAreRefusedBeforeDecoding) {
@@ -141,7 +137,7 @@ TEST(ValueRanges, MessagesGiveTheRange) {
 }
 
 std::string gzip_file(const TempDir& dir, const std::string& name, const std::string& unit, std::size_t repeats) {
-  gzFile file = gzopen(dir.file(name).c_str(), "wb9");
+  gzFile file = gzopen(dir.file(name).c_str(), "wb1");
   for (std::size_t i = 0; i < repeats; ++i) gzwrite(file, unit.data(), static_cast<unsigned>(unit.size()));
   gzclose(file);
   return dir.file(name);
@@ -150,9 +146,9 @@ std::string gzip_file(const TempDir& dir, const std::string& name, const std::st
 TEST(CarmenLimits, GzipIsInflatedAsAStreamWithinBounds) {
   const TempDir dir;
   const std::string line = "FLASER 2 1 2 0 0 0 0 0 0 1 h 1\n";
-  // Lines split across the reader's chunks still parse: 100k lines of 31 bytes span many chunks.
-  EXPECT_EQ(read_carmen_log(gzip_file(dir, "ok.gz", line, 100000)).scans.size(), 100000u);
-  const std::string zeros = gzip_file(dir, "zeros.gz", std::string(1 << 20, '\0'), 64);
+  // Lines split across the reader's 128 KiB chunks still parse: 20k lines of 31 bytes span five.
+  EXPECT_EQ(read_carmen_log(gzip_file(dir, "ok.gz", line, 20000)).scans.size(), 20000u);
+  const std::string zeros = gzip_file(dir, "zeros.gz", std::string(1 << 20, '\0'), 8);
   EXPECT_NE(error_of([&] { read_carmen_log(zeros); }).find("longer than 4 MiB"), std::string::npos);
   CarmenReadOptions options;
   options.max_total_beams = 1000;
@@ -160,7 +156,7 @@ TEST(CarmenLimits, GzipIsInflatedAsAStreamWithinBounds) {
             std::string::npos);
   options = {};
   options.max_text_bytes = 1 << 20;
-  const std::string odometry = gzip_file(dir, "odom.gz", "ODOM 0 0 0 0 0 0 1 h 1\n", 100000);
+  const std::string odometry = gzip_file(dir, "odom.gz", "ODOM 0 0 0 0 0 0 1 h 1\n", 50000);
   EXPECT_NE(error_of([&] { read_carmen_log(odometry, options); }).find("more than 1 MiB of text"), std::string::npos);
   EXPECT_NE(error_of([] { read_carmen_log("/dev/zero"); }).find("not a regular file"), std::string::npos);
 }

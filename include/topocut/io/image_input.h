@@ -21,8 +21,6 @@ inline constexpr double kMaxMegapixelsCeiling = 1000.0;  // OpenCV refuses image
 inline constexpr const char* kMaxMegapixelsOption = "max-megapixels";
 // Its help line, with the default and the allowed range.
 std::string max_megapixels_help();
-// Parses the option's value into limits; throws Error naming the option and the range.
-void apply_max_megapixels(ImageLimits& limits, const std::string& value);
 
 enum class ImageFormat { kPng, kNetpbm, kJpeg, kBmp, kTiff };
 
