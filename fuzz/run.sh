@@ -19,9 +19,11 @@ printf '| target | seconds | executions | exec/s | corpus | findings |\n|---|---
 for t in "${targets[@]}"; do
   mkdir -p "$build/corpus/$t" "$build/findings/$t"
   log="$build/findings/$t.log"
+  # stderr stays visible: libFuzzer's reports (and a sanitizer's, from inside any library) go to the
+  # terminal as well as to the log, which is kept.
   "$build/$t" "$build/corpus/$t" "fuzz/corpus/$t" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 \
-    -artifact_prefix="$build/findings/$t/" -print_final_stats=1 > "$log" 2>&1
-  rc=$?
+    -artifact_prefix="$build/findings/$t/" -print_final_stats=1 2>&1 | tee "$log" | grep -v -E '^#[0-9]+\s+(NEW|REDUCE|pulse|INITED)'
+  rc=${PIPESTATUS[0]}
   execs=$(grep -o 'stat::number_of_executed_units: *[0-9]*' "$log" | grep -o '[0-9]*$' | tail -1)
   rate=$(grep -o 'stat::average_exec_per_sec: *[0-9]*' "$log" | grep -o '[0-9]*$' | tail -1)
   corpus=$(find "$build/corpus/$t" -type f | wc -l)

@@ -39,7 +39,7 @@ int run(const std::vector<std::string>& args) {
   double tau = 0.0;
   po::options_description described("Decomposition");
   described.add_options()
-      ("polygon", po::value<std::string>(&input)->required(), "polygon JSON: {\"outer\": [[x,y],...], \"holes\": [[[x,y],...],...]}")
+      ("polygon", po::value<std::string>(&input)->required(), "polygon JSON (- for standard input): {\"outer\": [[x,y],...], \"holes\": [[[x,y],...],...]}")
       ("tau", po::value<double>(&tau)->required(), "maximum concavity, in the polygon's units (> 0)")
       ("output,o", po::value<std::string>(&output), "write the JSON here instead of standard output")
       ("selection", po::value<std::string>(&selection)->default_value(selection), "cut selection: greedy or reference (the authors' DP)")
@@ -75,7 +75,7 @@ int run(const std::vector<std::string>& args) {
   if (options.max_rounds < 1) throw UsageError("--max-rounds must be at least 1");
   if (!output.empty()) check_outputs({output}, {input});
 
-  const PolygonWithHoles polygon = parse_polygon_json(read_file(input), input);
+  const PolygonWithHoles polygon = read_polygon_json(input);
   const Decomposition result = decompose(polygon, options);
 
   // Keys in the documented order: pieces, cuts, absorbed_holes; outer, holes, area.

@@ -5,6 +5,7 @@
 #include <iostream>
 
 #include "cli/command.h"
+#include "cli/input_options.h"
 #include "cli/update_report.h"
 #include "topocut/core/error.h"
 #include "topocut/evaluation/precision_recall.h"
@@ -58,6 +59,8 @@ int run(const std::vector<std::string>& args) {
       ("gt", po::value<std::string>(&gt_path), "ground-truth segmentation image (default: X_gt_segmentation.png next to the map)")
       ("frames", po::value<std::string>(&frames), "write a PNG frame of every update into this folder")
       ("frame-every", po::value<int>(&frame_every)->default_value(frame_every), "with --frames: only every N-th update (and the last)");
+  ImageLimits limits;
+  add_image_limit_option(described, limits);
   po::positional_options_description positional;
   positional.add("map", 1);
   const auto vm = parse_options(
@@ -90,11 +93,13 @@ int run(const std::vector<std::string>& args) {
 
   MapLoadOptions load;
   load.resolution = resolution;
+  load.limits = limits;
+  check_image_limit_option(load.limits);
   const OccupancyGrid world = load_map(map_path, load);
   if (gt_path.empty()) gt_path = find_ground_truth(map_path);
   cv::Mat gt_rooms;
   if (!gt_path.empty()) {
-    gt_rooms = ground_truth_rooms(load_ground_truth(gt_path));
+    gt_rooms = ground_truth_rooms(load_ground_truth(gt_path, load.limits));
     if (gt_rooms.size() != world.cells.size())
       throw Error("the ground truth " + gt_path + " (" + std::to_string(gt_rooms.cols) + " x " +
                   std::to_string(gt_rooms.rows) + ") differs in size from the map");

@@ -25,7 +25,7 @@ int run(const std::vector<std::string>& args) {
   int clusters = 0;
   po::options_description described("Labeling");
   described.add_options()
-      ("scan", po::value<std::string>(&scan_path)->required(), "scan CSV (header angle,range; radians, metres)")
+      ("scan", po::value<std::string>(&scan_path)->required(), "scan CSV (header angle,range; radians, metres; - for standard input)")
       ("cell", po::value<double>(&options.cell_size)->default_value(options.cell_size, "0.05"), "raster cell size in metres")
       ("dilate", po::value<int>(&options.dilation)->default_value(options.dilation), "dilation iterations of the 3x3 element")
       ("element", po::value<std::string>(&element)->default_value(element), "structuring element: cross or square")

@@ -73,7 +73,7 @@ int run(const std::vector<std::string>& args) {
   std::string scan_path, method_name = "smf", format = "json", output;
   po::options_description described("Line extraction");
   described.add_options()
-      ("scan", po::value<std::string>(&scan_path)->required(), "scan CSV (header angle,range; radians, metres)")
+      ("scan", po::value<std::string>(&scan_path)->required(), "scan CSV (header angle,range; radians, metres; - for standard input)")
       ("method", po::value<std::string>(&method_name)->default_value(method_name), "sef, lt, iepf, smf or ale")
       ("format", po::value<std::string>(&format)->default_value(format), "json or csv")
       ("output,o", po::value<std::string>(&output), "write to this file instead of standard output");

@@ -10,6 +10,7 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "cli/command.h"
+#include "cli/input_options.h"
 #include "topocut/core/error.h"
 #include "topocut/io/atomic_file.h"
 #include "topocut/io/output_files.h"
@@ -94,6 +95,7 @@ int run(const std::vector<std::string>& args) {
        "cuts that end on furniture-sized obstacles (at most 2.5 m a side) may separate rooms")
       ("out-clean", po::value<std::string>(&out_clean),
        "write the map as the segmenter saw it (PNG): free, occupied, unknown, and what the cleaning removed in colour");
+  add_image_limit_option(described, load.limits);
   po::positional_options_description positional;
   positional.add("map", 1);
   const auto vm = parse_options(
@@ -133,6 +135,12 @@ int run(const std::vector<std::string>& args) {
   if (fixed_thresholds || !vm->at("free-threshold").defaulted() || !vm->at("occupied-threshold").defaulted())
     load.detect_palette = false;
   load.resolution = resolution;
+  check_image_limit_option(load.limits);
+  try {  // the library's ranges, reported before any work
+    validate(options);
+  } catch (const Error& e) {
+    throw UsageError(e.what());
+  }
 
   // Every output is checked before the work starts, so a typo costs no time and leaves nothing behind.
   const std::pair<const char*, const std::string*> outputs[] = {

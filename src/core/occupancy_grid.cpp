@@ -4,6 +4,7 @@
 #include <string>
 
 #include "topocut/core/error.h"
+#include "topocut/core/value_ranges.h"
 
 namespace topocut {
 
@@ -29,11 +30,9 @@ Point2 world_to_grid(const OccupancyGrid& grid, const Point2& w) {
 void validate(const OccupancyGrid& grid) {
   if (grid.cells.empty()) throw Error("the map is empty (0 cells)");
   if (grid.cells.type() != CV_8UC1) throw Error("the occupancy grid must be a single-channel 8-bit image");
-  if (!std::isfinite(grid.resolution) || grid.resolution <= 0.0)
-    throw Error("the map resolution must be a positive number of metres per cell, got " +
-                std::to_string(grid.resolution));
-  if (!std::isfinite(grid.origin.x) || !std::isfinite(grid.origin.y))
-    throw Error("the map origin must be finite");
+  check_resolution(grid.resolution, "the map resolution");
+  check_world_coordinate(grid.origin.x, "the map origin's x");
+  check_world_coordinate(grid.origin.y, "the map origin's y");
 }
 
 }  // namespace topocut

@@ -3,6 +3,7 @@
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <array>
@@ -14,6 +15,7 @@
 
 #include "core/cgal_geometry.h"
 #include "topocut/core/error.h"
+#include "topocut/core/value_ranges.h"
 
 namespace topocut::dude {
 
@@ -335,10 +337,39 @@ Ring reversed_keep_first(const Ring& ring) {
   return out;
 }
 
+namespace {
+
+// Why: far from unit scale the pieces' areas and the decomposition's products overflow or vanish
+// (a square of side 1e308 has no finite area); value_ranges.h gives the accepted scale.
+void check_scale(const PolygonWithHoles& polygon) {
+  double largest = 0.0;
+  double min_x = INFINITY, max_x = -INFINITY, min_y = INFINITY, max_y = -INFINITY;
+  for (const Point2& p : polygon.outer) {
+    largest = std::max({largest, std::abs(p.x), std::abs(p.y)});
+    min_x = std::min(min_x, p.x), max_x = std::max(max_x, p.x), min_y = std::min(min_y, p.y), max_y = std::max(max_y, p.y);
+  }
+  for (const Ring& hole : polygon.holes)
+    for (const Point2& p : hole) largest = std::max({largest, std::abs(p.x), std::abs(p.y)});
+  std::ostringstream text;
+  if (largest > kMaxPolygonCoordinate) {
+    text << "polygon coordinates must lie in [-" << kMaxPolygonCoordinate << ", " << kMaxPolygonCoordinate
+         << "], got one of magnitude " << largest << " (rescale the polygon and tau)";
+  } else if (std::max(max_x - min_x, max_y - min_y) < kMinPolygonExtent) {
+    text << "the polygon must be at least " << kMinPolygonExtent << " units wide or high, got "
+         << std::max(max_x - min_x, max_y - min_y) << " (rescale the polygon and tau)";
+  } else {
+    return;
+  }
+  throw Error(text.str());
+}
+
+}  // namespace
+
 PolygonWithHoles clean_and_validate(const PolygonWithHoles& polygon) {
   PolygonWithHoles result;
   result.outer = without_repeats(polygon.outer, 0);
   for (std::size_t h = 0; h < polygon.holes.size(); ++h) result.holes.push_back(without_repeats(polygon.holes[h], h + 1));
+  check_scale(result);
 
   std::vector<std::vector<CPoint>> rings;
   rings.reserve(1 + result.holes.size());

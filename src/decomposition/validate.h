@@ -8,7 +8,8 @@ namespace topocut::dude {
 // the outer ring counter-clockwise and the holes clockwise. A reversed ring keeps its first vertex,
 // so the result does not depend on the input orientation. Throws Error when a ring has non-finite
 // coordinates or fewer than 3 distinct vertices, when rings intersect or touch (themselves or each
-// other), when a hole is not strictly inside the outer ring, or when a hole lies inside another.
+// other), when a hole is not strictly inside the outer ring, when a hole lies inside another, or
+// when the polygon is outside the scale of value_ranges.h (|coordinate| <= 1e12, extent >= 1e-6).
 PolygonWithHoles clean_and_validate(const PolygonWithHoles& polygon);
 
 // The intersection test used for inputs whose edges are too long for the grid: throws Error unless

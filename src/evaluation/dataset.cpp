@@ -101,7 +101,7 @@ std::vector<ImageResult> run_dataset(const std::vector<DatasetMap>& maps, const 
     std::optional<cv::Mat> rooms;
     std::string ground_truth_error;
     try {
-      rooms = ground_truth_rooms(load_ground_truth(map.ground_truth), options.evaluation);
+      rooms = ground_truth_rooms(load_ground_truth(map.ground_truth, options.load.limits), options.evaluation);
     } catch (const std::exception& e) {
       ground_truth_error = e.what();
     }

@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "topocut/core/error.h"
+#include "topocut/io/image_input.h"
 
 namespace topocut {
 
@@ -16,7 +17,9 @@ std::string number(double value) {
   return buffer;
 }
 
-double parse_positive_metres(const std::string& name, const std::string& value) {
+// The whole of value as a number satisfying ok; otherwise Error "--name needs <what>, not 'value'".
+template <typename Ok>
+double parse_number(const std::string& name, const std::string& value, const std::string& what, Ok ok) {
   std::size_t used = 0;
   double parsed = 0.0;
   try {
@@ -24,10 +27,12 @@ double parse_positive_metres(const std::string& name, const std::string& value) 
   } catch (const std::exception&) {
     used = 0;
   }
-  if (used == 0 || used != value.size() || !std::isfinite(parsed) || parsed <= 0.0) {
-    throw Error("--" + name + " needs a positive number of metres, not '" + value + "'");
-  }
+  if (used == 0 || used != value.size() || !ok(parsed)) throw Error("--" + name + " needs " + what + ", not '" + value + "'");
   return parsed;
+}
+
+double parse_positive_metres(const std::string& name, const std::string& value) {
+  return parse_number(name, value, "a positive number of metres", [](double v) { return std::isfinite(v) && v > 0.0; });
 }
 
 const DatasetOption* find_option(const std::string& name) {
@@ -62,6 +67,7 @@ const std::vector<DatasetOption>& dataset_options() {
         {"no-furniture-rule", "", "cuts that end on furniture-sized obstacles may separate rooms", false},
         {"resolution", "M", "metres per cell of images without a YAML (default " + number(defaults.run.load.resolution) + ")",
          false},
+        {kMaxMegapixelsOption, "MP", max_megapixels_help(), false},
         {"oversegment", "F", "with merging, DuDe cuts at F x tau, 0 < F <= 1 (default " +
                                   number(defaults.run.segment.oversegment) + ")", false},
     };
@@ -116,17 +122,12 @@ void apply_dataset_option(DatasetArguments& arguments, const std::string& name, 
     arguments.run.segment.merge.furniture_size = 0.0;
   } else if (name == "resolution") {
     arguments.run.load.resolution = parse_positive_metres(name, value);
+  } else if (name == kMaxMegapixelsOption) {
+    arguments.run.load.limits.max_megapixels = parse_number(name, value, "a number of megapixels", [](double) { return true; });
+    validate(arguments.run.load.limits);
   } else if (name == "oversegment") {
-    std::size_t used = 0;
-    double factor = 0.0;
-    try {
-      factor = std::stod(value, &used);
-    } catch (const std::exception&) {
-      used = 0;
-    }
-    if (used == 0 || used != value.size() || !(factor > 0.0 && factor <= 1.0))
-      throw Error("--oversegment needs a factor in (0, 1], not '" + value + "'");
-    arguments.run.segment.oversegment = factor;
+    arguments.run.segment.oversegment =
+        parse_number(name, value, "a factor in (0, 1]", [](double v) { return v > 0.0 && v <= 1.0; });
   } else {
     throw Error("unknown option '--" + name + "'");
   }

@@ -12,6 +12,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "topocut/core/error.h"
+#include "topocut/io/image_input.h"
 
 namespace topocut {
 
@@ -46,18 +47,8 @@ std::uint64_t pair_key(int segment, int room) {
 
 }  // namespace
 
-cv::Mat load_ground_truth(const std::string& path) {
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec)) {
-    throw Error("cannot read ground truth '" + path + "': no such file");
-  }
-  cv::Mat image;
-  try {
-    image = cv::imread(path, cv::IMREAD_UNCHANGED);
-  } catch (const cv::Exception&) {
-    image.release();
-  }
-  if (image.empty()) throw Error("cannot read ground truth '" + path + "': not an image OpenCV can decode");
+cv::Mat load_ground_truth(const std::string& path, const ImageLimits& limits) {
+  cv::Mat image = read_image(path, "ground truth", limits);
   if (image.depth() == CV_16U) {
     image.convertTo(image, CV_8U, 1.0 / 257.0);
   } else if (image.depth() != CV_8U) {

@@ -13,7 +13,8 @@
 
 #include "topocut/core/error.h"
 #include "topocut/evaluation/dataset_report.h"
-#include "topocut/io/atomic_file.h"
+#include "topocut/core/input_file.h"
+#include "topocut/io/image_input.h"
 
 namespace topocut {
 
@@ -123,7 +124,7 @@ std::vector<MapFile> discover_map_files(const std::string& folder) {
     if (is_yaml_path(name)) {
       maps.push_back({name, entry.path().string()});
       try {
-        named_by_yaml.insert(fs::path(parse_ros_map_yaml(read_file(entry.path().string()), name).image).filename().string());
+        named_by_yaml.insert(fs::path(parse_ros_map_yaml(read_input_file(entry.path().string(), "map YAML", kMaxMapYamlBytes), name).image).filename().string());
       } catch (const Error&) {
         // A broken YAML fails as a map of its own.
       }
@@ -157,15 +158,14 @@ std::vector<MapDefectResult> run_map_files(const std::vector<MapFile>& maps, con
 double contour_floor_ms(const std::string& path, int free_min, int repetitions) {
   std::string image_path = path;
   if (is_yaml_path(path)) {
-    fs::path image = parse_ros_map_yaml(read_file(path), path).image;
+    fs::path image = parse_ros_map_yaml(read_input_file(path, "map YAML", kMaxMapYamlBytes), path).image;
     if (image.is_relative()) image = fs::path(path).parent_path() / image;
     image_path = image.string();
   }
   std::vector<double> times;
   for (int i = 0; i < std::max(1, repetitions); ++i) {
     const auto start = std::chrono::steady_clock::now();
-    const cv::Mat image = cv::imread(image_path, cv::IMREAD_GRAYSCALE);
-    if (image.empty()) throw Error("cannot read '" + image_path + "' as an image");
+    const cv::Mat image = read_image(image_path, "map image", ImageLimits{}, cv::IMREAD_GRAYSCALE);
     cv::Mat free;
     cv::threshold(image, free, free_min, 255, cv::THRESH_BINARY);
     std::vector<std::vector<cv::Point>> contours;

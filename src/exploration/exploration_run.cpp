@@ -113,7 +113,7 @@ std::vector<IncrementalImageResult> run_incremental_dataset(const std::vector<Da
     cv::Mat gt_rooms;
     std::string gt_error;
     try {
-      gt_rooms = ground_truth_rooms(load_ground_truth(map.ground_truth), options.run.evaluation);
+      gt_rooms = ground_truth_rooms(load_ground_truth(map.ground_truth, options.run.load.limits), options.run.evaluation);
     } catch (const std::exception& e) {
       gt_error = e.what();
     }

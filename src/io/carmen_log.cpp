@@ -4,13 +4,14 @@
 #include <cctype>
 #include <charconv>
 #include <cmath>
-#include <filesystem>
 #include <limits>
 #include <system_error>
+#include <utility>
 
 #include <zlib.h>
 
 #include "topocut/core/error.h"
+#include "topocut/core/input_file.h"
 
 namespace topocut {
 
@@ -46,6 +47,18 @@ struct Malformed {
 
 constexpr std::size_t kTrailingValues = 3;  // timestamp host logger_timestamp
 
+// Whether the values after the count are n ranges, the pose and nothing, a timestamp, or all three
+// trailing fields with a host name (not a number). Why so strict: a line with more ranges than it
+// announces would otherwise be read with its pose taken from range values.
+bool value_count_matches(const std::vector<std::string_view>& tokens, std::size_t beams, bool complete) {
+  const std::size_t values = tokens.size() - 2, base = beams + kPoseValues;
+  if (values < base) return false;
+  if (values <= base + 1) return true;
+  if (!complete && values < base + kTrailingValues) return true;  // cut short: judged as incomplete
+  double ignored = 0.0;
+  return values == base + kTrailingValues && !parse_double(tokens[2 + base + 1], ignored);
+}
+
 CarmenLaserScan parse_flaser(const std::vector<std::string_view>& tokens, double step, bool complete,
                              Malformed& error) {
   CarmenLaserScan scan;
@@ -64,9 +77,10 @@ CarmenLaserScan parse_flaser(const std::vector<std::string_view>& tokens, double
     return scan;
   }
   const auto beams = static_cast<std::size_t>(n);
-  if (tokens.size() < 2 + beams + kPoseValues) {
-    error.reason = "FLASER announces " + std::to_string(beams) + " ranges and a 6-value pose but the line has " +
-                   std::to_string(tokens.size() - 2) + " values";
+  if (!value_count_matches(tokens, beams, complete)) {
+    error.reason = "FLASER announces " + std::to_string(beams) + " ranges but the line has " +
+                   std::to_string(tokens.size() - 2) + " values (expected " + std::to_string(beams + kPoseValues) +
+                   " to " + std::to_string(beams + kPoseValues + kTrailingValues) + ": ranges, pose, timestamp host logger_timestamp)";
     return scan;
   }
   // A last line without its newline may have been cut anywhere, even inside the pose: it is trusted
@@ -141,75 +155,146 @@ void choose_max_range(CarmenLog& log, const CarmenReadOptions& options) {
 
 }  // namespace
 
+namespace {
+
+// Parses a log line by line, so that read_carmen_log can feed it from a stream of any length.
+class LogParser {
+ public:
+  LogParser(const std::string& source, const CarmenReadOptions& options) : source_(source), options_(options) {
+    validate(options);
+  }
+
+  // Parses one line (without its newline); complete is false for a last line without a newline.
+  void add(std::string_view line, bool complete) {
+    ++log_.lines;
+    split(line, tokens_);
+    if (tokens_.empty() || tokens_.front().front() == '#') return;
+    if (tokens_.front() != "FLASER") {
+      // Message names are short identifiers; anything else is counted as unreadable text.
+      const bool name = tokens_.front().size() <= 32 &&
+                        std::all_of(tokens_.front().begin(), tokens_.front().end(),
+                                    [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; });
+      ++log_.skipped_messages[name ? std::string(tokens_.front()) : std::string("(unreadable)")];
+      return;
+    }
+    Malformed error;
+    CarmenLaserScan scan = parse_flaser(tokens_, options_.field_of_view, complete, error);
+    if (!error.reason.empty()) {
+      if (complete) throw Error(where() + error.reason);
+      log_.truncated_last_line = true;
+      return;
+    }
+    scan.line = log_.lines;
+    if (!std::isfinite(scan.pose.x) || !std::isfinite(scan.pose.y) || !std::isfinite(scan.pose.theta)) {
+      log_.dropped_lines.push_back(log_.lines);
+      return;
+    }
+    beams_ += scan.ranges.size();
+    if (beams_ > options_.max_total_beams)
+      throw Error(where() + "the log holds more than " + std::to_string(options_.max_total_beams) +
+                  " laser readings, the limit (CarmenReadOptions::max_total_beams)");
+    log_.scans.push_back(std::move(scan));
+  }
+
+  // "source:line: " of the line last added, or (next) of the line about to be.
+  std::string where(bool next = false) const {
+    return source_ + ":" + std::to_string(log_.lines + (next ? 1 : 0)) + ": ";
+  }
+
+  CarmenLog finish() {
+    choose_max_range(log_, options_);
+    return std::move(log_);
+  }
+
+ private:
+  const std::string& source_;
+  const CarmenReadOptions& options_;
+  CarmenLog log_;
+  std::vector<std::string_view> tokens_;
+  std::size_t beams_ = 0;
+};
+
+void check_line_length(std::size_t length, const LogParser& parser) {
+  if (length > kMaxCarmenLineBytes)
+    throw Error(parser.where(/*next=*/true) + "a line longer than " + byte_size_text(kMaxCarmenLineBytes) +
+                " (a FLASER message of 100000 readings needs less): not a CARMEN log");
+}
+
+}  // namespace
+
 CarmenLog parse_carmen_log(std::string_view text, const std::string& source, const CarmenReadOptions& options) {
-  validate(options);
-  CarmenLog log;
-  std::vector<std::string_view> tokens;
+  LogParser parser(source, options);
   std::size_t position = 0;
-  std::size_t line_number = 0;
   while (position < text.size()) {
     const std::size_t newline = text.find('\n', position);
     const bool complete = newline != std::string_view::npos;
-    const std::string_view line = text.substr(position, complete ? newline - position : std::string_view::npos);
-    position = complete ? newline + 1 : text.size();
-    ++line_number;
-    split(line, tokens);
-    if (tokens.empty() || tokens.front().front() == '#') continue;
-    if (tokens.front() != "FLASER") {
-      // Message names are short identifiers; anything else is counted as unreadable text.
-      const bool name = tokens.front().size() <= 32 &&
-                        std::all_of(tokens.front().begin(), tokens.front().end(),
-                                    [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; });
-      ++log.skipped_messages[name ? std::string(tokens.front()) : std::string("(unreadable)")];
-      continue;
-    }
-    Malformed error;
-    CarmenLaserScan scan = parse_flaser(tokens, options.field_of_view, complete, error);
-    if (!error.reason.empty()) {
-      if (!complete) {
-        log.truncated_last_line = true;
-        break;
-      }
-      throw Error(source + ":" + std::to_string(line_number) + ": " + error.reason);
-    }
-    scan.line = line_number;
-    if (!std::isfinite(scan.pose.x) || !std::isfinite(scan.pose.y) || !std::isfinite(scan.pose.theta)) {
-      log.dropped_lines.push_back(line_number);
-      continue;
-    }
-    log.scans.push_back(std::move(scan));
+    const std::size_t length = complete ? newline - position : text.size() - position;
+    check_line_length(length, parser);
+    parser.add(text.substr(position, length), complete);
+    position += length + (complete ? 1 : 0);
   }
-  log.lines = line_number;
-  choose_max_range(log, options);
-  return log;
+  return parser.finish();
 }
 
+namespace {
+
+// Passes the complete lines of a chunk to the parser; the unfinished rest stays in pending.
+void feed(std::string_view chunk, std::string& pending, LogParser& parser) {
+  while (!chunk.empty()) {
+    const std::size_t newline = chunk.find('\n');
+    const std::size_t length = newline == std::string_view::npos ? chunk.size() : newline;
+    check_line_length(pending.size() + length, parser);
+    if (newline == std::string_view::npos) {
+      pending.append(chunk);
+      return;
+    }
+    if (pending.empty()) {
+      parser.add(chunk.substr(0, length), true);
+    } else {
+      pending.append(chunk.substr(0, length));
+      parser.add(pending, true);
+      pending.clear();
+    }
+    chunk.remove_prefix(length + 1);
+  }
+}
+
+}  // namespace
+
 CarmenLog read_carmen_log(const std::string& path, const CarmenReadOptions& options) {
-  namespace fs = std::filesystem;
-  std::error_code ec;
-  if (!fs::exists(path, ec)) throw Error("cannot read log '" + path + "': no such file");
-  if (fs::is_directory(path, ec)) throw Error("cannot read log '" + path + "': it is a directory");
+  // Regular files only: a FIFO would block, /dev/zero never end.
+  require_regular_file(path, "log");
+  LogParser parser(path, options);
   gzFile file = gzopen(path.c_str(), "rb");
   if (file == nullptr) throw Error("cannot open log '" + path + "'");
   gzbuffer(file, 1 << 17);
-  std::string text;
+  std::string pending;  // the current line so far, bounded by kMaxCarmenLineBytes
   std::vector<char> chunk(1 << 17);
-  while (true) {
-    const int got = gzread(file, chunk.data(), static_cast<unsigned>(chunk.size()));
-    if (got < 0) {
-      int code = 0;
-      const std::string message = gzerror(file, &code);
-      gzclose(file);
-      throw Error("cannot read log '" + path + "': " + message);
+  std::uint64_t total = 0;
+  try {
+    while (true) {
+      const int got = gzread(file, chunk.data(), static_cast<unsigned>(chunk.size()));
+      if (got < 0) {
+        int code = 0;
+        throw Error("cannot read log '" + path + "': " + gzerror(file, &code));
+      }
+      if (got == 0) break;
+      total += static_cast<std::uint64_t>(got);
+      if (total > options.max_text_bytes)
+        throw Error("cannot read log '" + path + "': more than " + byte_size_text(options.max_text_bytes) +
+                    " of text (inflated), the limit (CarmenReadOptions::max_text_bytes)");
+      feed(std::string_view(chunk.data(), static_cast<std::size_t>(got)), pending, parser);
     }
-    if (got == 0) break;
-    text.append(chunk.data(), static_cast<std::size_t>(got));
+  } catch (...) {
+    gzclose(file);
+    throw;
   }
   // A gzip stream cut short reads as end of file; zlib reports it on close.
   const int closed = gzclose(file);
   if (closed == Z_BUF_ERROR) throw Error("cannot read log '" + path + "': the gzip data is truncated");
   if (closed != Z_OK) throw Error("cannot read log '" + path + "': the gzip data is corrupt");
-  return parse_carmen_log(text, path, options);
+  if (!pending.empty()) parser.add(pending, false);
+  return parser.finish();
 }
 
 }  // namespace topocut

@@ -6,6 +6,7 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "topocut/core/error.h"
+#include "topocut/io/image_input.h"
 #include "topocut/io/atomic_file.h"
 
 namespace topocut {
@@ -29,14 +30,7 @@ void write_label_image(const std::string& path, const cv::Mat& labels) {
 }
 
 cv::Mat read_label_image(const std::string& path) {
-  const std::string bytes = read_file(path);
-  cv::Mat image;
-  try {
-    image = cv::imdecode(std::vector<unsigned char>(bytes.begin(), bytes.end()), cv::IMREAD_UNCHANGED);
-  } catch (const cv::Exception&) {
-    image.release();
-  }
-  if (image.empty()) throw Error("cannot read '" + path + "' as an image");
+  const cv::Mat image = read_image(path, "label image", ImageLimits{});
   if (image.channels() != 1) throw Error("label image '" + path + "' must have one channel, it has " + std::to_string(image.channels()));
   if (image.depth() != CV_8U && image.depth() != CV_16U)
     throw Error("label image '" + path + "' must be 8- or 16-bit");

@@ -7,15 +7,13 @@
 #include <sstream>
 #include <vector>
 
-#include <fcntl.h>
-#include <unistd.h>
-
-#include <opencv2/core/utils/logger.hpp>
 #include <opencv2/imgcodecs.hpp>
 #include <yaml-cpp/yaml.h>
 
 #include "topocut/core/error.h"
-#include "topocut/io/atomic_file.h"
+#include "topocut/core/input_file.h"
+#include "topocut/core/value_ranges.h"
+#include "topocut/io/image_input.h"
 
 namespace topocut {
 
@@ -47,34 +45,6 @@ double number_field(const YAML::Node& root, const char* key, const std::string& 
   return value;
 }
 
-// Silences standard error (and OpenCV's logger) for its lifetime. Why: the decoders under
-// cv::imdecode (libpng, OpenJPEG, ...) print their own warnings on corrupt input, but a bad map must
-// give exactly one clear error line. Process-wide while it lives; decoding is short and single-threaded.
-class QuietStderr {
- public:
-  QuietStderr() : level_(cv::utils::logging::setLogLevel(cv::utils::logging::LOG_LEVEL_SILENT)) {
-    std::fflush(stderr);
-    saved_ = ::dup(STDERR_FILENO);
-    const int null = ::open("/dev/null", O_WRONLY | O_CLOEXEC);
-    if (saved_ >= 0 && null >= 0) ::dup2(null, STDERR_FILENO);
-    if (null >= 0) ::close(null);
-  }
-  ~QuietStderr() {
-    std::fflush(stderr);
-    if (saved_ >= 0) {
-      ::dup2(saved_, STDERR_FILENO);
-      ::close(saved_);
-    }
-    cv::utils::logging::setLogLevel(level_);
-  }
-  QuietStderr(const QuietStderr&) = delete;
-  QuietStderr& operator=(const QuietStderr&) = delete;
-
- private:
-  cv::utils::logging::LogLevel level_;
-  int saved_ = -1;
-};
-
 }  // namespace
 
 bool is_yaml_path(const std::string& path) {
@@ -99,7 +69,7 @@ RosMapMetadata parse_ros_map_yaml(const std::string& yaml_text, const std::strin
   m.image = image.as<std::string>();
 
   m.resolution = number_field(root, "resolution", source, std::nullopt);
-  if (m.resolution <= 0.0) throw Error("map YAML " + quoted(source) + ": 'resolution' must be positive");
+  check_resolution(m.resolution, "map YAML " + quoted(source) + ": 'resolution'");
 
   const YAML::Node origin = root["origin"];
   if (!origin) throw Error("map YAML " + quoted(source) + " has no 'origin' field");
@@ -114,6 +84,8 @@ RosMapMetadata parse_ros_map_yaml(const std::string& yaml_text, const std::strin
     }
     if (!std::isfinite(xyz[i])) throw Error("map YAML " + quoted(source) + ": 'origin' must be finite");
   }
+  check_world_coordinate(xyz[0], "map YAML " + quoted(source) + ": the 'origin' x");
+  check_world_coordinate(xyz[1], "map YAML " + quoted(source) + ": the 'origin' y");
   m.origin = {xyz[0], xyz[1]};
   m.yaw = xyz[2];
 
@@ -165,23 +137,6 @@ RosMapMetadata parse_ros_map_yaml(const std::string& yaml_text, const std::strin
 
 namespace {
 
-// The image as stored (any depth and channel count); throws Error naming source if it is not one.
-cv::Mat decode_image(const std::string& bytes, const std::string& source) {
-  if (bytes.empty()) throw Error("map image " + quoted(source) + " is empty (0 bytes)");
-  cv::Mat image;
-  try {
-    // A header over the bytes, not a copy of them.
-    const cv::Mat buffer(1, static_cast<int>(bytes.size()), CV_8UC1, const_cast<char*>(bytes.data()));
-    const QuietStderr quiet;
-    image = cv::imdecode(buffer, cv::IMREAD_UNCHANGED);
-  } catch (const cv::Exception&) {
-    image.release();
-  }
-  if (image.empty() || image.rows == 0 || image.cols == 0)
-    throw Error("cannot read " + quoted(source) + " as an image (not a format OpenCV decodes, or corrupt)");
-  return image;
-}
-
 // The level of one pixel: the rounded mean of its colour channels on the 0..255 scale.
 template <typename T>
 unsigned char pixel_level(const T* px, int colour_channels, double scale) {
@@ -228,8 +183,9 @@ void levels_of(const cv::Mat& image, const std::string& source, cv::Mat& levels,
 
 }  // namespace
 
-void decode_map_image(const std::string& bytes, const std::string& source, cv::Mat& grey, cv::Mat& transparent) {
-  const cv::Mat image = decode_image(bytes, source);
+void decode_map_image(const std::string& bytes, const std::string& source, cv::Mat& grey, cv::Mat& transparent,
+                      const ImageLimits& limits) {
+  const cv::Mat image = decode_image(bytes, source, limits);
 
   // Work in floats on the 0..255 scale so the channel mean is exact, as in map_server.
   double scale = 1.0;
@@ -288,8 +244,9 @@ cv::Mat ros_cells(const cv::Mat& grey, const cv::Mat& transparent, const RosMapM
   return cells;
 }
 
-void decode_map_levels(const std::string& bytes, const std::string& source, cv::Mat& levels, cv::Mat& transparent) {
-  levels_of(decode_image(bytes, source), source, levels, transparent);
+void decode_map_levels(const std::string& bytes, const std::string& source, cv::Mat& levels, cv::Mat& transparent,
+                       const ImageLimits& limits) {
+  levels_of(decode_image(bytes, source, limits), source, levels, transparent);
 }
 
 MapPalette plain_image_palette(const cv::Mat& levels, const cv::Mat& transparent, const MapLoadOptions& options) {
@@ -305,39 +262,56 @@ cv::Mat plain_image_cells(const cv::Mat& levels, const cv::Mat& transparent, con
   return cells;
 }
 
+namespace {
+
+// The image a ROS map_server YAML names, relative to the YAML's folder unless absolute.
+std::string yaml_image_path(const std::string& yaml_path, const RosMapMetadata& m) {
+  fs::path image = m.image;
+  if (image.is_relative()) image = fs::path(yaml_path).parent_path() / image;
+  return image.string();
+}
+
+OccupancyGrid load_yaml_map(const std::string& path, const MapLoadOptions& options, std::string* palette) {
+  const RosMapMetadata m = parse_ros_map_yaml(read_input_file(path, "map YAML", kMaxMapYamlBytes), path);
+  const std::string image = yaml_image_path(path, m);
+  if (!fs::exists(image)) throw Error("map YAML " + quoted(path) + " names image " + quoted(image) + ", which does not exist");
+  cv::Mat grey, transparent;
+  decode_map_image(read_input_file(image, "map image", max_image_file_bytes(options.limits)), image, grey, transparent,
+                   options.limits);
+  OccupancyGrid grid;
+  grid.cells = ros_cells(grey, transparent, m);
+  if (palette) {
+    std::ostringstream text;
+    text << "YAML: free below " << m.free_thresh << ", occupied above " << m.occupied_thresh << (m.negate ? ", negated" : "");
+    *palette = text.str();
+  }
+  grid.resolution = m.resolution;
+  grid.origin = m.origin;
+  return grid;
+}
+
+OccupancyGrid load_image_map(const std::string& path, const MapLoadOptions& options, std::string* palette) {
+  check_resolution(options.resolution, "the map resolution (--resolution)");
+  if (options.free_min < options.occupied_max) throw Error("the free threshold must not be below the occupied threshold");
+  cv::Mat levels, transparent;
+  decode_map_levels(read_input_file(path, "map image", max_image_file_bytes(options.limits)), path, levels, transparent,
+                    options.limits);
+  const MapPalette plain = plain_image_palette(levels, transparent, options);
+  OccupancyGrid grid;
+  grid.cells = plain_image_cells(levels, transparent, plain);
+  if (palette) *palette = plain.description;
+  grid.resolution = options.resolution;
+  grid.origin = {0.0, 0.0};
+  return grid;
+}
+
+}  // namespace
+
 OccupancyGrid load_map(const std::string& path, const MapLoadOptions& options, std::string* palette) {
   if (path.empty()) throw Error("no map file given");
   if (!fs::exists(path)) throw Error("map file " + quoted(path) + " does not exist");
-  OccupancyGrid grid;
-  cv::Mat grey, transparent;
-  if (is_yaml_path(path)) {
-    const RosMapMetadata m = parse_ros_map_yaml(read_file(path), path);
-    fs::path image = m.image;
-    if (image.is_relative()) image = fs::path(path).parent_path() / image;
-    if (!fs::exists(image))
-      throw Error("map YAML " + quoted(path) + " names image " + quoted(image.string()) + ", which does not exist");
-    decode_map_image(read_file(image.string()), image.string(), grey, transparent);
-    grid.cells = ros_cells(grey, transparent, m);
-    if (palette) {
-      std::ostringstream text;
-      text << "YAML: free below " << m.free_thresh << ", occupied above " << m.occupied_thresh << (m.negate ? ", negated" : "");
-      *palette = text.str();
-    }
-    grid.resolution = m.resolution;
-    grid.origin = m.origin;
-  } else {
-    if (!std::isfinite(options.resolution) || options.resolution <= 0.0)
-      throw Error("the map resolution must be a positive number of metres per cell");
-    if (options.free_min < options.occupied_max)
-      throw Error("the free threshold must not be below the occupied threshold");
-    cv::Mat levels;
-    decode_map_levels(read_file(path), path, levels, transparent);
-    const MapPalette plain = plain_image_palette(levels, transparent, options);
-    grid.cells = plain_image_cells(levels, transparent, plain);
-    if (palette) *palette = plain.description;
-    grid.resolution = options.resolution;
-    grid.origin = {0.0, 0.0};
-  }
+  validate(options.limits);
+  OccupancyGrid grid = is_yaml_path(path) ? load_yaml_map(path, options, palette) : load_image_map(path, options, palette);
   validate(grid);
   return grid;
 }

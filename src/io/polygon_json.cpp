@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include "topocut/core/error.h"
+#include "topocut/core/input_file.h"
 
 namespace topocut {
 namespace {
@@ -47,6 +48,10 @@ PolygonWithHoles parse_polygon_json(const std::string& text, const std::string& 
     }
   }
   return polygon;
+}
+
+PolygonWithHoles read_polygon_json(const std::string& path) {
+  return parse_polygon_json(read_input_file(path, "polygon JSON", kMaxPolygonJsonBytes, /*allow_stdin=*/true), path);
 }
 
 }  // namespace topocut

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "topocut/core/error.h"
+#include "topocut/core/input_file.h"
 
 namespace topocut {
 
@@ -91,12 +92,7 @@ Scan parse_scan_csv(const std::string& text, const std::string& source) {
 }
 
 Scan read_scan_csv(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw Error("cannot open the scan file '" + path + "'");
-  std::ostringstream contents;
-  contents << in.rdbuf();
-  if (in.bad()) throw Error("cannot read the scan file '" + path + "'");
-  return parse_scan_csv(contents.str(), path);
+  return parse_scan_csv(read_input_file(path, "scan file", kMaxScanCsvBytes, /*allow_stdin=*/true), path);
 }
 
 std::string format_scan_csv(const Scan& scan) {

@@ -6,13 +6,18 @@
 #include <string>
 
 #include "topocut/core/error.h"
+#include "topocut/core/value_ranges.h"
 #include "topocut/map/simplify.h"
 
 namespace topocut {
 
 void validate(const SegmentOptions& options) {
-  if (!std::isfinite(options.concavity) || options.concavity <= 0.0)
-    throw Error("the concavity must be a positive number of metres");
+  check_length(options.concavity, "the concavity (tau)", /*zero_allowed=*/false);
+  check_length(options.binarize.robot_radius, "the robot radius");
+  check_area(options.contours.min_component_area, "the smallest room area");
+  check_area(options.contours.min_hole_area, "the smallest hole area");
+  check_area(options.merge.min_room_area, "the fold area");
+  check_length(options.doors.max_width, "the door width");
   if (options.decomposition.max_rounds < 1) throw Error("the decomposition needs at least one round");
   validate(options.merge);
   validate(options.doors);

@@ -7,6 +7,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "topocut/core/error.h"
+#include "topocut/core/value_ranges.h"
 
 namespace topocut {
 
@@ -16,14 +17,12 @@ constexpr int kShift = 4;  // sub-pixel bits for OpenCV drawing
 constexpr double kScale = 1 << kShift;
 
 void validate(const WallMapOptions& o) {
-  auto positive = [](double v) { return std::isfinite(v) && v > 0.0; };
   auto non_negative = [](double v) { return std::isfinite(v) && v >= 0.0; };
-  if (!positive(o.resolution))
-    throw Error("the map resolution must be a positive number of metres per cell, got " + std::to_string(o.resolution));
-  if (!non_negative(o.wall_thickness)) throw Error("the wall thickness must be a non-negative number of metres");
+  check_resolution(o.resolution, "the map resolution");
+  check_length(o.wall_thickness, "the wall thickness");
+  check_length(o.margin, "the map margin");
   if (!non_negative(o.no_return_free_range)) throw Error("the no-return free range must be a non-negative number of metres");
   if (!non_negative(o.max_free_range)) throw Error("the maximum free range must be a non-negative number of metres");
-  if (!non_negative(o.margin)) throw Error("the map margin must be a non-negative number of metres");
 }
 
 struct Ray {

@@ -33,7 +33,8 @@ Point2 grid_to_world(const OccupancyGrid& grid, const Point2& grid_point);
 // Converts a world point to grid coordinates (inverse of grid_to_world).
 Point2 world_to_grid(const OccupancyGrid& grid, const Point2& world);
 
-// Throws Error unless the grid is non-empty, CV_8UC1, and the resolution is finite and positive.
+// Throws Error unless the grid is non-empty, CV_8UC1, and its resolution and origin lie in the ranges
+// of value_ranges.h.
 void validate(const OccupancyGrid& grid);
 
 }  // namespace topocut

@@ -5,6 +5,7 @@
 // Every other message type (ODOM, PARAM, NEFF, RLASER, ROBOTLASER1, comments, …) is skipped and
 // counted. Files may be gzip-compressed or plain (zlib reads both).
 #include <cstddef>
+#include <cstdint>
 #include <map>
 #include <string>
 #include <string_view>
@@ -52,18 +53,28 @@ struct CarmenReadOptions {
   std::size_t saturation_count = 3;
   double hard_max_range = 80.0;       // metres: the SICK LMS 2xx's longest measurable range
   double field_of_view = 3.14159265358979323846;  // radians covered from the first to the last beam
+  // Bounds on what a log may hold (README "Limits"): the inflated text, and the laser readings kept
+  // (the walls pipeline holds every one; the largest shared log has 164 k).
+  std::uint64_t max_text_bytes = 1ull << 30;     // 1 GiB
+  std::size_t max_total_beams = 5'000'000;
 };
 
+// The longest line a log may have: a FLASER message of 100000 readings of up to 40 characters.
+inline constexpr std::size_t kMaxCarmenLineBytes = 4u << 20;
+
 // Parses log text; `source` names it in errors ("source:line: problem"). Throws Error on a malformed
-// FLASER message (beam count not an integer or < 2, fewer values than announced, a non-numeric range,
-// pose or timestamp) — except on an incomplete last line without a newline, which is dropped and
-// flagged — and on invalid options. Never throws for a log without FLASER messages: the result has no
+// FLASER message (beam count not an integer or < 2, a value count other than the announced ranges,
+// the 6-value pose and optionally the timestamp or all of "timestamp host logger_timestamp", a
+// non-numeric range, pose or timestamp) — except on an incomplete last line without a newline, which
+// is dropped and flagged — on a line longer than kMaxCarmenLineBytes, more readings than
+// options.max_total_beams, and on invalid options. Never throws for a log without FLASER messages: the result has no
 // scans and says which messages it skipped.
 CarmenLog parse_carmen_log(std::string_view text, const std::string& source = "log",
                            const CarmenReadOptions& options = {});
 
-// Reads a log file, gzip-compressed or plain, and parses it as parse_carmen_log. Throws Error naming
-// the path if it is missing, a directory, unreadable or a corrupt gzip stream.
+// Reads a log file, gzip-compressed or plain, inflating it as a stream (never whole in memory) and
+// parsing it as parse_carmen_log. Throws Error naming the path if it is missing, not a regular file,
+// unreadable, a corrupt gzip stream, or more than options.max_text_bytes of text.
 CarmenLog read_carmen_log(const std::string& path, const CarmenReadOptions& options = {});
 
 }  // namespace topocut

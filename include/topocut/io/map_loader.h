@@ -7,6 +7,7 @@
 #include <opencv2/core.hpp>
 
 #include "topocut/core/occupancy_grid.h"
+#include "topocut/io/image_input.h"
 #include "topocut/io/map_palette.h"
 
 namespace topocut {
@@ -21,6 +22,7 @@ struct MapLoadOptions {
   bool detect_palette = true;
   int free_min = 250;
   int occupied_max = 50;
+  ImageLimits limits;  // pixel limit of the image, checked on its header before decoding
 };
 
 // How a ROS map_server image is interpreted (the YAML's `mode`).
@@ -47,11 +49,12 @@ struct RosMapMetadata {
 // trinary). Throws Error naming source_name and the field on a missing or invalid field.
 RosMapMetadata parse_ros_map_yaml(const std::string& yaml_text, const std::string& source_name);
 
-// Decodes image bytes (any format OpenCV reads) into one grey channel (CV_32FC1 on the 0..255 scale,
+// Decodes image bytes (PNG, PGM/PPM, JPEG, BMP or TIFF within limits: image_input.h) into one grey
+// channel (CV_32FC1 on the 0..255 scale,
 // the mean of the colour channels as ROS does; 16-bit scaled down) and a transparency mask (CV_8UC1, 255 where
 // the pixel is transparent, alpha < 128). Throws Error naming source_name if it is not an image.
 void decode_map_image(const std::string& bytes, const std::string& source_name, cv::Mat& grey,
-                      cv::Mat& transparent);
+                      cv::Mat& transparent, const ImageLimits& limits = {});
 
 // Three-state cells from a grey image and its transparency mask with ROS map_server semantics:
 // p = (255 - v) / 255 (p = v / 255 when negate; raw mode: p = v / 100 for v <= 100); occupied if
@@ -61,7 +64,8 @@ cv::Mat ros_cells(const cv::Mat& grey, const cv::Mat& transparent, const RosMapM
 // The grey level of every pixel of a plain image (CV_8UC1: the rounded mean of the colour channels,
 // 16-bit scaled to 8) and its transparency mask (CV_8UC1, 255 where alpha < half). Throws Error naming
 // source_name if the bytes are not an image.
-void decode_map_levels(const std::string& bytes, const std::string& source_name, cv::Mat& levels, cv::Mat& transparent);
+void decode_map_levels(const std::string& bytes, const std::string& source_name, cv::Mat& levels, cv::Mat& transparent,
+                       const ImageLimits& limits = {});
 
 // The palette load_map() uses for a plain image: detected (options.detect_palette) or the fixed
 // thresholds options.free_min / occupied_max.
@@ -71,8 +75,9 @@ MapPalette plain_image_palette(const cv::Mat& levels, const cv::Mat& transparent
 cv::Mat plain_image_cells(const cv::Mat& levels, const cv::Mat& transparent, const MapPalette& palette);
 
 // Loads a map: a ROS map_server YAML (image, resolution, origin, negate, occupied_thresh,
-// free_thresh, mode trinary/scale/raw, with ROS semantics) or any image OpenCV reads (grey, RGB,
-// RGBA, grey+alpha). If palette is given, it receives a one-line description of how the cells were
+// free_thresh, mode trinary/scale/raw, with ROS semantics) or an image (PNG, PGM/PPM, JPEG, BMP, TIFF;
+// grey, RGB, RGBA, grey+alpha) within options.limits; both only from regular files. If palette is
+// given, it receives a one-line description of how the cells were
 // read (the detected palette, the fixed thresholds, or the YAML's). Throws Error naming the file and
 // the problem on any bad input.
 OccupancyGrid load_map(const std::string& path, const MapLoadOptions& options = {}, std::string* palette = nullptr);

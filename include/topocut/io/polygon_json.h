@@ -12,4 +12,8 @@ namespace topocut {
 // missing "outer", a ring that is not an array of [x, y] number pairs, or a non-finite coordinate.
 PolygonWithHoles parse_polygon_json(const std::string& text, const std::string& source = "polygon");
 
+// Reads and parses a polygon JSON file ("-": standard input) of at most kMaxPolygonJsonBytes
+// (core/input_file.h); only regular files. Throws Error naming the path.
+PolygonWithHoles read_polygon_json(const std::string& path);
+
 }  // namespace topocut

@@ -13,7 +13,8 @@ namespace topocut {
 // or wrong header, a wrong column count, a non-numeric field, a non-finite or non-increasing angle.
 Scan parse_scan_csv(const std::string& text, const std::string& source = "scan");
 
-// Reads a scan CSV file (see parse_scan_csv); errors name the path and the line.
+// Reads a scan CSV file ("-": standard input; regular files only, at most kMaxScanCsvBytes) and
+// parses it (see parse_scan_csv); errors name the path and the line.
 Scan read_scan_csv(const std::string& path);
 
 // Formats a scan as CSV that parse_scan_csv reads back bit for bit (shortest round-trip digits).

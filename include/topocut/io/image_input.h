@@ -1,0 +1,56 @@
+#pragma once
+// Decoding input images within bounds: only the formats a map comes in (PNG, PGM/PPM/PBM, JPEG, BMP,
+// TIFF), recognised by their magic bytes, and only up to a pixel limit read from the header before
+// anything is decoded, so that no other codec ever sees a map and a small file declaring a huge image
+// ends in one clear error instead of gigabytes of memory.
+#include <cstdint>
+#include <string>
+#include <string_view>
+
+#include <opencv2/core.hpp>
+
+namespace topocut {
+
+// The pixel limit of every input image (map, a YAML's image, ground truth, label image).
+struct ImageLimits {
+  double max_megapixels = 100.0;  // default: the largest map measured (README "Limits"); range below
+};
+inline constexpr double kMaxMegapixelsCeiling = 1000.0;  // OpenCV refuses images above 2^30 pixels
+
+// The command-line option that sets ImageLimits::max_megapixels in every command and program.
+inline constexpr const char* kMaxMegapixelsOption = "max-megapixels";
+// Its help line, with the default and the allowed range.
+std::string max_megapixels_help();
+
+enum class ImageFormat { kPng, kNetpbm, kJpeg, kBmp, kTiff };
+
+struct ImageHeader {
+  ImageFormat format = ImageFormat::kPng;
+  std::uint64_t width = 0;
+  std::uint64_t height = 0;
+};
+
+// Throws Error naming the allowed range unless 0 < max_megapixels <= kMaxMegapixelsCeiling.
+void validate(const ImageLimits& limits);
+
+// The format and size the image's header declares. Throws Error naming source if the bytes are not
+// one of the accepted formats or the header is truncated or declares an empty image.
+ImageHeader read_image_header(std::string_view bytes, const std::string& source);
+
+// Throws Error naming source, the limit and how to change it if header exceeds limits.
+void check_image_size(const ImageHeader& header, const ImageLimits& limits, const std::string& source);
+
+// cv::imdecode(bytes, flags) after read_image_header() and check_image_size(); decoder warnings are
+// kept off stderr. Throws Error naming source if it is refused or does not decode.
+cv::Mat decode_image(std::string_view bytes, const std::string& source, const ImageLimits& limits,
+                     int flags = -1 /* cv::IMREAD_UNCHANGED */);
+
+// The byte limit of an image file under limits: 8 bytes a pixel (16-bit RGBA, uncompressed) plus 1 MiB.
+std::uint64_t max_image_file_bytes(const ImageLimits& limits);
+
+// read_input_file() within max_image_file_bytes(), then decode_image(); `what` names the input
+// ("map image", "ground truth", ...) in errors.
+cv::Mat read_image(const std::string& path, const std::string& what, const ImageLimits& limits,
+                   int flags = -1 /* cv::IMREAD_UNCHANGED */);
+
+}  // namespace topocut
