@@ -320,9 +320,7 @@ std::vector<std::string> map_files(const std::string& path) {
   std::vector<std::string> files{path};
   if (!is_yaml_path(path) || !fs::is_regular_file(path)) return files;
   try {
-    fs::path image = parse_ros_map_yaml(read_file(path), path).image;
-    if (image.is_relative()) image = fs::path(path).parent_path() / image;
-    files.push_back(image.string());
+    files.push_back(yaml_image_path(path, parse_ros_map_yaml(read_input_file(path, "map YAML", kMaxMapYamlBytes), path)));
   } catch (const Error&) {
     // load_map reports a broken YAML with its own message; no image means no second input.
   }

@@ -114,7 +114,10 @@ void write_device(const std::string& target, const std::string& contents) {
 std::string write_temporary(const std::string& target, const std::string& contents) {
   const fs::path path(target);
   const fs::path directory = path.has_parent_path() ? path.parent_path() : fs::path(".");
-  std::string name = (directory / ("." + path.filename().string() + ".XXXXXX")).string();
+  std::string hidden = ".";  // appended, not "." + ...: GCC 12 warns falsely (-Wrestrict) on the latter
+  hidden += path.filename().string();
+  hidden += ".XXXXXX";
+  std::string name = (directory / hidden).string();
   const int fd = ::mkostemp(name.data(), O_CLOEXEC);
   if (fd < 0) throw Error("cannot write '" + target + "': " + error_text(errno));
   try {

@@ -17,7 +17,7 @@ PYBIND11_MODULE(topocut, m) {
     try {
       if (p) std::rethrow_exception(p);
     } catch (const topocut::Error& e) {
-      PyErr_SetString(PyExc_ValueError, e.what());
+      PyErr_SetString(PyExc_ValueError, topocut::one_line_message(e.what()).c_str());
     }
   });
   topocut::python::bind_segmentation(m);

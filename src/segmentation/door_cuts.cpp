@@ -318,12 +318,13 @@ std::optional<Candidate> nearest_across_corner(const DoorSearch& search, const E
   return Candidate{{v, best_point}, std::sqrt(best2), r};
 }
 
-// Door candidates: from every reflex corner, the shortest cut across it.
-std::vector<Candidate> corner_cuts(const DoorSearch& search, const EdgeGrid& grid) {
-  std::vector<Candidate> candidates;
+// Calls visit(r, i, p, v, q) for every reflex corner v (vertex i of ring r, between p and q) that
+// turns by at least min_turn, skipping holes for which skip_hole(hole) is true.
+template <typename SkipHole, typename Visit>
+void for_each_reflex_corner(const DoorSearch& search, SkipHole&& skip_hole, Visit&& visit) {
   for (std::size_t r = 0; r < search.rings.size(); ++r) {
     const Ring& ring = *search.rings[r];
-    if (r > 0 && too_small_for_a_room(ring, search.resolution)) continue;
+    if (r > 0 && skip_hole(ring)) continue;
     const int n = static_cast<int>(ring.size());
     for (int i = 0; i < n; ++i) {
       const Point2& p = ring[static_cast<std::size_t>((i + n - 1) % n)];
@@ -331,9 +332,19 @@ std::vector<Candidate> corner_cuts(const DoorSearch& search, const EdgeGrid& gri
       const Point2& q = ring[static_cast<std::size_t>((i + 1) % n)];
       // Free space lies left of every ring (outer CCW, holes CW): a right turn is a reflex corner.
       if (turn_angle(p, v, q) > -search.options.min_turn) continue;
-      if (auto c = nearest_across_corner(search, grid, static_cast<int>(r), i, p, v, q)) candidates.push_back(*c);
+      visit(static_cast<int>(r), i, p, v, q);
     }
   }
+}
+
+// Door candidates: from every reflex corner, the shortest cut across it.
+std::vector<Candidate> corner_cuts(const DoorSearch& search, const EdgeGrid& grid) {
+  std::vector<Candidate> candidates;
+  for_each_reflex_corner(
+      search, [&](const Ring& hole) { return too_small_for_a_room(hole, search.resolution); },
+      [&](int r, int i, const Point2& p, const Point2& v, const Point2& q) {
+        if (auto c = nearest_across_corner(search, grid, r, i, p, v, q)) candidates.push_back(*c);
+      });
   return candidates;
 }
 
@@ -349,30 +360,23 @@ std::vector<WallEnd> thin_wall_ends(const DoorSearch& search, const EdgeGrid& gr
   const double min_wall = search.options.min_wall_length / search.resolution;
   const double max_thickness = search.options.max_wall_thickness / search.resolution;
   std::vector<WallEnd> ends;
-  for (std::size_t r = 0; r < search.rings.size(); ++r) {
-    const Ring& ring = *search.rings[r];
-    const int n = static_cast<int>(ring.size());
-    for (int i = 0; i < n; ++i) {
-      const Point2& p = ring[static_cast<std::size_t>((i + n - 1) % n)];
-      const Point2& v = ring[static_cast<std::size_t>(i)];
-      const Point2& q = ring[static_cast<std::size_t>((i + 1) % n)];
-      if (turn_angle(p, v, q) > -search.options.min_turn) continue;
-      for (const Point2& from : {p, q}) {
-        const Point2 e = minus(v, from);
-        const double l = length(e);
-        if (l < min_wall) continue;
-        const Point2 dir{e.x / l, e.y / l};
-        // Thin: across the wall, just behind its end, free space of this component lies within
-        // the thickness limit. Free space is left of ring edges, so the obstacle lies right of
-        // p -> v and left of v -> q.
-        const Point2 into = &from == &p ? Point2{dir.y, -dir.x} : Point2{-dir.y, dir.x};
-        const double back = std::min(0.5 * l, 0.3 / search.resolution);
-        const Point2 x{v.x - back * dir.x + 1e-3 * into.x, v.y - back * dir.y + 1e-3 * into.y};
-        if (!std::isfinite(grid.cast(x, into, max_thickness))) continue;
-        ends.push_back({v, dir, static_cast<int>(r)});
-      }
+  for_each_reflex_corner(search, [](const Ring&) { return false; },
+                         [&](int r, int, const Point2& p, const Point2& v, const Point2& q) {
+    for (const Point2& from : {p, q}) {
+      const Point2 e = minus(v, from);
+      const double l = length(e);
+      if (l < min_wall) continue;
+      const Point2 dir{e.x / l, e.y / l};
+      // Thin: across the wall, just behind its end, free space of this component lies within
+      // the thickness limit. Free space is left of ring edges, so the obstacle lies right of
+      // p -> v and left of v -> q.
+      const Point2 into = &from == &p ? Point2{dir.y, -dir.x} : Point2{-dir.y, dir.x};
+      const double back = std::min(0.5 * l, 0.3 / search.resolution);
+      const Point2 x{v.x - back * dir.x + 1e-3 * into.x, v.y - back * dir.y + 1e-3 * into.y};
+      if (!std::isfinite(grid.cast(x, into, max_thickness))) continue;
+      ends.push_back({v, dir, r});
     }
-  }
+  });
   return ends;
 }
 

@@ -9,12 +9,16 @@
 
 namespace topocut {
 
-std::vector<WallSegment> extract_wall_segments(const Scan& scan, const Pose2& pose, const WallExtractionOptions& options,
-                                               int scan_index) {
-  validate(scan);
+void validate(const WallExtractionOptions& options) {
   if (!(options.max_range > 0.0)) throw Error("the maximum wall range must be positive");
   if (options.min_points < 2) throw Error("a wall line needs at least 2 supporting points");
   if (!(options.max_gap > 0.0)) throw Error("the largest gap inside a wall must be a positive number of metres");
+}
+
+std::vector<WallSegment> extract_wall_segments(const Scan& scan, const Pose2& pose, const WallExtractionOptions& options,
+                                               int scan_index) {
+  validate(scan);
+  validate(options);
   if (!std::isfinite(pose.x) || !std::isfinite(pose.y) || !std::isfinite(pose.theta))
     throw Error("scan " + std::to_string(scan_index) + " has a non-finite pose");
 

@@ -16,6 +16,8 @@ namespace {
 constexpr int kShift = 4;  // sub-pixel bits for OpenCV drawing
 constexpr double kScale = 1 << kShift;
 
+}  // namespace
+
 void validate(const WallMapOptions& o) {
   auto non_negative = [](double v) { return std::isfinite(v) && v >= 0.0; };
   check_resolution(o.resolution, "the map resolution");
@@ -24,6 +26,8 @@ void validate(const WallMapOptions& o) {
   if (!non_negative(o.no_return_free_range)) throw Error("the no-return free range must be a non-negative number of metres");
   if (!non_negative(o.max_free_range)) throw Error("the maximum free range must be a non-negative number of metres");
 }
+
+namespace {
 
 struct Ray {
   Point2 from, to;

@@ -205,6 +205,8 @@ std::vector<Item> merge_pass(std::vector<Item> items, std::span<const WallSegmen
   return clusters;
 }
 
+}  // namespace
+
 void validate(const WallMergeOptions& o) {
   auto positive = [](double v) { return std::isfinite(v) && v > 0.0; };
   auto non_negative = [](double v) { return std::isfinite(v) && v >= 0.0; };
@@ -216,8 +218,6 @@ void validate(const WallMergeOptions& o) {
   if (o.max_rounds < 0) throw Error("the number of wall merge rounds must not be negative");
   if (!positive(o.index_cell)) throw Error("the wall index cell must be a positive number of metres");
 }
-
-}  // namespace
 
 std::vector<Wall> merge_wall_segments(std::span<const WallSegment> segments, const WallMergeOptions& options) {
   validate(options);

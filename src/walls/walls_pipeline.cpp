@@ -14,6 +14,12 @@ SegmentOptions wall_map_segment_options() {
   return options;
 }
 
+void validate(const WallsOptions& options) {
+  validate(options.extraction);
+  validate(options.merge);
+  validate(options.map);
+}
+
 WallsResult walls_from_scans(std::span<const PosedScan> scans, const WallsOptions& options) {
   if (scans.empty()) throw Error("there are no laser scans to build walls from");
   WallsResult result;

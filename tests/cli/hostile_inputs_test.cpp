@@ -141,7 +141,7 @@ TEST(HostileInputs, ResolutionsOutsideTheRangeAreRefusedWithTheRange) {
   expect_clean_error(run_cli(dir, "segment", {far}), "segment", "[-1e+09, 1e+09] metres");
   expect_clean_error(run_cli(dir, "segment", {map, "--concavity", "1e308"}), "segment", "(0, 100000] metres", 2);
   expect_clean_error(run_cli(dir, "walls", {bundled("../fuzz/corpus/fuzz_carmen_log/small.log"), "--resolution", "1e308"}),
-                     "walls", "[0.0001, 1000] metres per cell");
+                     "walls", "[0.0001, 1000] metres per cell", 2);  // a bad option: usage error, before the log is read
   // The edges of the range work and give finite numbers.
   for (const char* r : {"0.0001", "1000"}) {
     const CliResult ok =
@@ -173,6 +173,14 @@ TEST(HostileInputs, DecomposeFarFromUnitScaleIsRefusedNotEmptied) {
     for (const auto& piece : pieces) total += piece["area"].get<double>();
     EXPECT_NEAR(total, 65.0 * scale * scale, 1e-9 * 65.0 * scale * scale);
   }
+}
+
+// A bad option of a later stage is reported before the log is read (here the log does not even
+// exist, so any other order would report the missing file instead).
+TEST(HostileInputs, WallsRefusesBadOptionsBeforeReadingTheLog) {
+  TempDir dir;
+  expect_clean_error(run_cli(dir, "walls", {dir.file("missing.log"), "--thickness", "-1"}), "walls",
+                     "wall thickness", 2);
 }
 
 }  // namespace

@@ -10,7 +10,7 @@
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
 
-#include "cli/cli_runner.h"
+#include "cli/cli_run.h"
 
 namespace topocut::testing {
 namespace {
@@ -29,34 +29,34 @@ std::vector<std::string> names_in(const TempDir& dir) {
 TEST(OutputsCli, AnOutputOnTheInputIsRefusedAndTheInputKept) {
   TempDir dir;
   fs::copy_file(bundled("floorplan.png"), dir.file("map.png"));
-  const std::string before = slurp_file(dir.file("map.png"));
-  expect_one_line_error(run_topocut(dir, {"segment", dir.file("map.png"), "--out-color", dir.file("map.png")}),
+  const std::string before = file_text(dir.file("map.png"));
+  expect_clean_error(run_cli(dir, "segment", {dir.file("map.png"), "--out-color", dir.file("map.png")}), "segment",
                         "both an input and an output");
-  EXPECT_EQ(slurp_file(dir.file("map.png")), before);
+  EXPECT_EQ(file_text(dir.file("map.png")), before);
 
   // The image a YAML names is an input too.
   fs::copy_file(bundled("floorplan.yaml"), dir.file("floorplan.yaml"));
   fs::copy_file(bundled("floorplan.png"), dir.file("floorplan.png"));
-  expect_one_line_error(run_topocut(dir, {"segment", dir.file("floorplan.yaml"), "--out-labels", dir.file("floorplan.png")}),
+  expect_clean_error(run_cli(dir, "segment", {dir.file("floorplan.yaml"), "--out-labels", dir.file("floorplan.png")}), "segment",
                         "both an input and an output");
-  EXPECT_EQ(slurp_file(dir.file("floorplan.png")), before);
+  EXPECT_EQ(file_text(dir.file("floorplan.png")), before);
 
   const std::string polygon = dir.write("p.json", R"({"outer": [[0,0],[10,0],[10,4],[4,4],[4,10],[0,10]]})");
-  expect_one_line_error(run_topocut(dir, {"decompose", polygon, "--tau", "1", "-o", polygon}), "both an input and an output");
-  EXPECT_NE(slurp_file(polygon).find("outer"), std::string::npos);
+  expect_clean_error(run_cli(dir, "decompose", {polygon, "--tau", "1", "-o", polygon}), "decompose", "both an input and an output");
+  EXPECT_NE(file_text(polygon).find("outer"), std::string::npos);
 }
 
 TEST(OutputsCli, TwoOutputsOnOneFileAreRefusedBeforeAnyWork) {
   TempDir dir;
   // The log does not exist: the outputs are checked first, so that is not the error reported.
-  expect_one_line_error(run_topocut(dir, {"walls", dir.file("no.log"), "--out-walls", dir.file("d.json"), "--out-rooms",
-                                          dir.file("d.json")}),
+  expect_clean_error(run_cli(dir, "walls", {dir.file("no.log"), "--out-walls", dir.file("d.json"), "--out-rooms",
+                                          dir.file("d.json")}), "walls",
                         "two outputs name the same file");
-  expect_one_line_error(run_topocut(dir, {"walls", dir.file("no.log"), "--out-map", dir.file("m.yaml"), "--out-color",
-                                          dir.file("m.pgm")}),
+  expect_clean_error(run_cli(dir, "walls", {dir.file("no.log"), "--out-map", dir.file("m.yaml"), "--out-color",
+                                          dir.file("m.pgm")}), "walls",
                         "two outputs name the same file");
-  expect_one_line_error(run_topocut(dir, {"segment", bundled("floorplan.png"), "--out-json", dir.file("a.json"),
-                                          "--out-svg", (dir.path() / "." / "a.json").string()}),
+  expect_clean_error(run_cli(dir, "segment", {bundled("floorplan.png"), "--out-json", dir.file("a.json"),
+                                          "--out-svg", (dir.path() / "." / "a.json").string()}), "segment",
                         "two outputs name the same file");
   EXPECT_TRUE(names_in(dir).empty());
 }
@@ -64,15 +64,15 @@ TEST(OutputsCli, TwoOutputsOnOneFileAreRefusedBeforeAnyWork) {
 TEST(OutputsCli, AFifoIsRefusedAndADeviceWrittenWithoutReplacingIt) {
   TempDir dir;
   ASSERT_EQ(::mkfifo(dir.file("pipe.json").c_str(), 0600), 0);
-  expect_one_line_error(run_topocut(dir, {"segment", bundled("floorplan.png"), "--out-json", dir.file("pipe.json")}),
+  expect_clean_error(run_cli(dir, "segment", {bundled("floorplan.png"), "--out-json", dir.file("pipe.json")}), "segment",
                         "not a regular file");
-  const CliResult ok = run_topocut(dir, {"segment", bundled("floorplan.png"), "--out-json", "/dev/null", "--out-svg", "/dev/null"});
+  const CliResult ok = run_cli(dir, "segment", {bundled("floorplan.png"), "--out-json", "/dev/null", "--out-svg", "/dev/null"});
   EXPECT_EQ(ok.code, 0) << ok.err;
   struct stat info {};
   ASSERT_EQ(::stat("/dev/null", &info), 0);
   EXPECT_TRUE(S_ISCHR(info.st_mode));
   if (fs::exists("/dev/full")) {
-    expect_one_line_error(run_topocut(dir, {"segment", bundled("floorplan.png"), "--out-json", "/dev/full"}),
+    expect_clean_error(run_cli(dir, "segment", {bundled("floorplan.png"), "--out-json", "/dev/full"}), "segment",
                           "/dev/full");
   }
 }
@@ -81,7 +81,7 @@ TEST(OutputsCli, AFifoIsRefusedAndADeviceWrittenWithoutReplacingIt) {
 TEST(OutputsCli, AFailedOutputLeavesNoEarlierOutputBehind) {
   TempDir dir;
   cv::imwrite(dir.file("long.png"), cv::Mat(1, 100000, CV_8UC1, cv::Scalar(255)));
-  const CliResult r = run_topocut(dir, {"segment", dir.file("long.png"), "--out-labels", dir.file("l.png"), "--out-color",
+  const CliResult r = run_cli(dir, "segment", {dir.file("long.png"), "--out-labels", dir.file("l.png"), "--out-color",
                                         dir.file("w.jpg")});
   EXPECT_EQ(r.code, 1) << r.err;
   EXPECT_EQ(names_in(dir), (std::vector<std::string>{"long.png"}));

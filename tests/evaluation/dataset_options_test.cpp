@@ -61,7 +61,9 @@ TEST(DatasetOptions, EveryOptionIsInTheHelpAndAccepted) {
     EXPECT_NE(help.find("--" + option.name), std::string::npos) << option.name;
     DatasetArguments arguments;
     const std::string value = option.name == "variant"                                   ? "plain"
-                              : option.name == "concavity" || option.name == "oversegment" || option.name == "resolution" ? "1"
+                              : option.name == "concavity" || option.name == "oversegment" || option.name == "resolution" ||
+                                      option.name == "max-megapixels"
+                                  ? "1"
                                                                                           : "x";
     EXPECT_NO_THROW(apply_dataset_option(arguments, option.name, option.value_name.empty() ? "" : value))
         << option.name;

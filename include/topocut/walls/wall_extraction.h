@@ -42,6 +42,9 @@ struct WallExtractionOptions {
   double max_range = std::numeric_limits<double>::infinity();
 };
 
+// Throws Error naming the first option outside its range.
+void validate(const WallExtractionOptions& options);
+
 // The world-frame wall segments of one scan taken from `pose`, in the order of their first beam,
 // each tagged with scan_index. Throws Error on an inconsistent scan or invalid options.
 std::vector<WallSegment> extract_wall_segments(const Scan& scan, const Pose2& pose,

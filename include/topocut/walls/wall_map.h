@@ -37,6 +37,9 @@ std::vector<Ring> wall_polygons(std::span<const Wall> walls, double thickness);
 // ray passes before its hit is free, every cell under a wall polygon occupied (a wall's centre line
 // is also drawn 4-connected so no free path crosses it diagonally), the rest unknown. Throws Error
 // on invalid options or when the grid would exceed max_cells.
+// Throws Error naming the first option outside its range.
+void validate(const WallMapOptions& options);
+
 OccupancyGrid build_wall_map(std::span<const PosedScan> scans, std::span<const Wall> walls,
                              const WallMapOptions& options = {});
 

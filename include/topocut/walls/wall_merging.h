@@ -40,6 +40,9 @@ struct WallMergeOptions {
 // the walls are then merged with each other the same way until nothing changes. A spatial hash of
 // the walls' extents keeps each look-up local. Degenerate segments (zero length or non-finite) are
 // skipped. Walls are ordered by their first member. Throws Error on invalid options.
+// Throws Error naming the first option outside its range.
+void validate(const WallMergeOptions& options);
+
 std::vector<Wall> merge_wall_segments(std::span<const WallSegment> segments, const WallMergeOptions& options = {});
 
 }  // namespace topocut

@@ -29,6 +29,10 @@ struct WallsResult {
 // free spurs, so the free space is opened with a 0.15 m square to keep them out of the rooms.
 SegmentOptions wall_map_segment_options();
 
+// Throws Error naming the first option of any stage outside its range, so that a command can
+// refuse bad options before it reads a log.
+void validate(const WallsOptions& options);
+
 // Runs the pipeline on the scans. Throws Error if there are no scans or on invalid options.
 WallsResult walls_from_scans(std::span<const PosedScan> scans, const WallsOptions& options = {});
 
