@@ -84,12 +84,10 @@ int run(const std::vector<std::string>& args) {
   if (vm->count("start")) exploration.start = parse_point(start);
   options.incremental.segment.concavity = concavity;
   options.use_hint = !no_hint;
-  try {
+  check_usage([&] {
     validate(exploration);
     validate(options.incremental.segment);
-  } catch (const Error& e) {
-    throw UsageError(e.what());
-  }
+  });
 
   MapLoadOptions load;
   load.resolution = resolution;

@@ -93,11 +93,7 @@ int run(const std::vector<std::string>& args) {
   if (!vm) return 0;
 
   LineExtractionOptions options;
-  try {
-    options.method = parse_line_method(method_name);
-  } catch (const Error& e) {
-    throw UsageError(e.what());
-  }
+  check_usage([&] { options.method = parse_line_method(method_name); });
   if (format != "json" && format != "csv") throw UsageError("--format must be 'json' or 'csv', got '" + format + "'");
   for (const MethodOption& option : method_options()) {
     if (!vm->count(option.flag)) continue;

@@ -127,20 +127,12 @@ int run(const std::vector<std::string>& args) {
     throw UsageError("--free-threshold and --occupied-threshold must lie in 0..255");
   if (load.occupied_max > load.free_min) throw UsageError("--occupied-threshold must not exceed --free-threshold");
   switches.min_room_area_given = !vm->at("min-room-area").defaulted();
-  try {
-    apply(switches, options);
-  } catch (const Error& e) {
-    throw UsageError(e.what());
-  }
+  check_usage([&] { apply(switches, options); });
   if (fixed_thresholds || !vm->at("free-threshold").defaulted() || !vm->at("occupied-threshold").defaulted())
     load.detect_palette = false;
   load.resolution = resolution;
   check_image_limit_option(load.limits);
-  try {  // the library's ranges, reported before any work
-    validate(options);
-  } catch (const Error& e) {
-    throw UsageError(e.what());
-  }
+  check_usage([&] { validate(options); });  // the library's ranges, reported before any work
 
   // Every output is checked before the work starts, so a typo costs no time and leaves nothing behind.
   const std::pair<const char*, const std::string*> outputs[] = {

@@ -148,11 +148,7 @@ int run(const std::vector<std::string>& args) {
     if (!path.empty()) outputs.push_back(path);
   if (!out_map.empty()) outputs.push_back(map_image_path(out_map));
   check_outputs(outputs, {log_path});
-  try {  // every stage's options, before the log is read
-    validate(options);
-  } catch (const Error& e) {
-    throw UsageError(e.what());
-  }
+  check_usage([&] { validate(options); });  // every stage's options, before the log is read
   if (!replay_arguments.frames.empty()) prepare_frames_folder(replay_arguments.frames, {log_path});
 
   const CarmenLog log = read_carmen_log(log_path, read);

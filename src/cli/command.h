@@ -10,6 +10,8 @@
 
 #include <boost/program_options.hpp>
 
+#include "topocut/core/error.h"
+
 namespace topocut::cli {
 
 namespace po = boost::program_options;
@@ -38,6 +40,17 @@ std::optional<po::variables_map> parse_options(const std::string& usage, const s
                                                const po::options_description& options,
                                                const po::positional_options_description& positional,
                                                const std::vector<std::string>& args);
+
+// Runs a library check of the command's options (validate(...), apply(...)); the Error it throws
+// becomes a UsageError, so a bad option exits 2 whichever layer found it.
+template <typename Check>
+void check_usage(Check&& check) {
+  try {
+    check();
+  } catch (const Error& e) {
+    throw UsageError(e.what());
+  }
+}
 
 // Prints progress on stderr ("\r" updates) unless stderr is not a terminal and quiet is set.
 void progress(const std::string& message);

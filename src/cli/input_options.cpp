@@ -11,11 +11,7 @@ void add_image_limit_option(po::options_description& options, ImageLimits& limit
 }
 
 void check_image_limit_option(const ImageLimits& limits) {
-  try {
-    validate(limits);
-  } catch (const Error& e) {
-    throw UsageError(e.what());
-  }
+  check_usage([&] { validate(limits); });
 }
 
 }  // namespace topocut::cli
