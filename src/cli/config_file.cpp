@@ -3,7 +3,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include "topocut/core/error.h"
-#include "topocut/io/atomic_file.h"
+#include "topocut/core/input_file.h"
 
 namespace topocut::cli {
 namespace {
@@ -30,7 +30,7 @@ std::vector<std::string> tokens(const YAML::Node& value, const po::option_descri
 }  // namespace
 
 po::parsed_options config_file_options(const std::string& path, const po::options_description& options) {
-  const std::string text = read_file(path);
+  const std::string text = read_input_file(path, "config file", kMaxConfigYamlBytes);
   YAML::Node root;
   try {
     root = YAML::Load(text);

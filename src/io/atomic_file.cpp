@@ -1,11 +1,6 @@
 #include "topocut/io/atomic_file.h"
 
-#include <cerrno>
-#include <cstdio>
-#include <cstring>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <vector>
 
 #include <opencv2/imgcodecs.hpp>
@@ -43,15 +38,6 @@ void check_writable(const std::string& path) {
   const fs::path parent = p.has_parent_path() ? p.parent_path() : fs::path(".");
   if (!fs::is_directory(parent)) throw Error("cannot write '" + path + "': directory '" + parent.string() + "' does not exist");
   if (::access(parent.c_str(), W_OK) != 0) throw Error("cannot write '" + path + "': directory is not writable");
-}
-
-std::string read_file(const std::string& path) {
-  if (fs::is_directory(path)) throw Error("cannot read '" + path + "': it is a directory");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw Error("cannot read '" + path + "': " + std::strerror(errno));
-  std::ostringstream buffer;
-  buffer << in.rdbuf();
-  return buffer.str();
 }
 
 }  // namespace topocut

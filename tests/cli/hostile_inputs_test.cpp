@@ -67,6 +67,15 @@ TEST(HostileInputs, FifoAsMapIsRefusedWithoutWaiting) {
   expect_clean_error(run_cli(dir, "walls", {dir.file("log")}), "walls", "not a regular file");
 }
 
+TEST(HostileInputs, FifoOrDeviceAsConfigFileIsRefusedWithoutWaiting) {
+  const TempDir dir;
+  ASSERT_EQ(::mkfifo(dir.file("robot.yaml").c_str(), 0600), 0);
+  expect_clean_error(run_cli(dir, "segment", {bundled("floorplan.png"), "--config", dir.file("robot.yaml")}), "segment",
+                     "not a regular file");
+  expect_clean_error(run_cli(dir, "segment", {bundled("floorplan.png"), "--config", "/dev/zero"}), "segment",
+                     "not a regular file");
+}
+
 TEST(HostileInputs, DevZeroAsMapYamlImageOrPolygonIsRefused) {
   const TempDir dir;
   expect_clean_error(run_cli(dir, "segment", {"/dev/zero"}), "segment", "not a regular file");

@@ -8,7 +8,7 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "io/temp_dir.h"
-#include "topocut/io/atomic_file.h"
+#include "topocut/core/input_file.h"
 #include "topocut/io/map_loader.h"
 
 namespace topocut {
@@ -54,7 +54,7 @@ TEST(LoadMapFastPath, AgreesWithTheGeneralPathForEveryChannelLayout) {
       options.detect_palette = false;
       const OccupancyGrid grid = load_map(path, options);
       cv::Mat grey, transparent, levels;
-      decode_map_image(read_file(path), path, grey, transparent);
+      decode_map_image(read_input_file(path, "map image", 1ull << 26), path, grey, transparent);
       grey.convertTo(levels, CV_8U);  // rounds to the nearest level, as load_map does
       const cv::Mat expected = plain_image_cells(levels, transparent, threshold_palette(free_min, options.occupied_max));
       ASSERT_EQ(grid.cells.size(), expected.size());

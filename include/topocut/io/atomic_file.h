@@ -17,7 +17,4 @@ void write_image_atomically(const std::string& path, const cv::Mat& image);
 // Throws Error unless a file could be created at path (checked before long work starts).
 void check_writable(const std::string& path);
 
-// Reads a whole file; throws Error naming the path if it is missing or unreadable.
-std::string read_file(const std::string& path);
-
 }  // namespace topocut
