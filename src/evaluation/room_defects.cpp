@@ -13,7 +13,6 @@
 
 #include "topocut/core/error.h"
 #include "topocut/evaluation/dataset_report.h"
-#include "topocut/core/input_file.h"
 #include "topocut/io/image_input.h"
 
 namespace topocut {
@@ -124,7 +123,7 @@ std::vector<MapFile> discover_map_files(const std::string& folder) {
     if (is_yaml_path(name)) {
       maps.push_back({name, entry.path().string()});
       try {
-        named_by_yaml.insert(fs::path(parse_ros_map_yaml(read_input_file(entry.path().string(), "map YAML", kMaxMapYamlBytes), name).image).filename().string());
+        named_by_yaml.insert(fs::path(ros_map_image_path(entry.path().string())).filename().string());
       } catch (const Error&) {
         // A broken YAML fails as a map of its own.
       }
@@ -156,12 +155,7 @@ std::vector<MapDefectResult> run_map_files(const std::vector<MapFile>& maps, con
 }
 
 double contour_floor_ms(const std::string& path, int free_min, int repetitions) {
-  std::string image_path = path;
-  if (is_yaml_path(path)) {
-    fs::path image = parse_ros_map_yaml(read_input_file(path, "map YAML", kMaxMapYamlBytes), path).image;
-    if (image.is_relative()) image = fs::path(path).parent_path() / image;
-    image_path = image.string();
-  }
+  const std::string image_path = is_yaml_path(path) ? ros_map_image_path(path) : path;
   std::vector<double> times;
   for (int i = 0; i < std::max(1, repetitions); ++i) {
     const auto start = std::chrono::steady_clock::now();

@@ -316,11 +316,15 @@ OccupancyGrid load_map(const std::string& path, const MapLoadOptions& options, s
   return grid;
 }
 
+std::string ros_map_image_path(const std::string& yaml_path) {
+  return yaml_image_path(yaml_path, parse_ros_map_yaml(read_input_file(yaml_path, "map YAML", kMaxMapYamlBytes), yaml_path));
+}
+
 std::vector<std::string> map_files(const std::string& path) {
   std::vector<std::string> files{path};
   if (!is_yaml_path(path) || !fs::is_regular_file(path)) return files;
   try {
-    files.push_back(yaml_image_path(path, parse_ros_map_yaml(read_input_file(path, "map YAML", kMaxMapYamlBytes), path)));
+    files.push_back(ros_map_image_path(path));
   } catch (const Error&) {
     // load_map reports a broken YAML with its own message; no image means no second input.
   }

@@ -82,6 +82,10 @@ cv::Mat plain_image_cells(const cv::Mat& levels, const cv::Mat& transparent, con
 // the problem on any bad input.
 OccupancyGrid load_map(const std::string& path, const MapLoadOptions& options = {}, std::string* palette = nullptr);
 
+// The image a ROS map YAML names (relative to the YAML's folder unless absolute). Throws Error on a
+// YAML load_map would refuse.
+std::string ros_map_image_path(const std::string& yaml_path);
+
 // The files load_map reads for path: path itself and, for a ROS map YAML, the image it names (so
 // that outputs can be checked against every input before the work starts).
 std::vector<std::string> map_files(const std::string& path);
