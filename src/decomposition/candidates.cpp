@@ -166,7 +166,10 @@ bool free_segment(const CDT& cdt, const EdgeIndex& index, Vertex va, Vertex vb) 
   } while (++fc != done);
   if (f == Face()) return false;
   Vertex third = va;
-  for (std::size_t steps = 0; steps <= cdt.number_of_faces(); ++steps) {
+  // number_of_faces() circulates around the infinite vertex: asked once, not per step, since the
+  // hull of a comb holds every tooth and the walk would grow quadratic.
+  const std::size_t max_steps = cdt.number_of_faces();
+  for (std::size_t steps = 0; steps <= max_steps; ++steps) {
     const int k = f->index(third);
     if (cdt.is_constrained(CDT::Edge(f, k))) return false;
     const Face g = f->neighbor(k);
