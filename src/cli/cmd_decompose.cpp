@@ -77,6 +77,10 @@ int run(const std::vector<std::string>& args) {
 
   const PolygonWithHoles polygon = read_polygon_json(input);
   const Decomposition result = decompose(polygon, options);
+  if (!result.complete) {
+    std::cerr << "warning: stopped after " << result.rounds << " rounds (--max-rounds) with cuts still to make: "
+              << "the pieces tile the polygon but some may be deeper than tau\n";
+  }
 
   // Keys in the documented order: pieces, cuts, absorbed_holes; outer, holes, area.
   nlohmann::ordered_json out;

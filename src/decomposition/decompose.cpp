@@ -126,6 +126,7 @@ Decomposition decompose(const PolygonWithHoles& polygon, const DecompositionOpti
   std::vector<Poly> done;
   for (int round = 0; !todo.empty(); ++round) {
     if (round >= options.max_rounds) {
+      result.complete = false;
       for (Poly& p : todo) done.push_back(std::move(p));
       break;
     }

@@ -86,6 +86,7 @@ TEST(DudeAdversarial, CombBeyondTheRoundCap) {
   const PolygonWithHoles p = comb(300);
   const Decomposition d = run(p, 5.0, 20);
   EXPECT_EQ(d.rounds, 20);
+  EXPECT_FALSE(d.complete);
   EXPECT_EQ(d.cuts.size(), 40u);
   expect_valid(p, d, "capped comb", 200);
 }
@@ -97,6 +98,7 @@ TEST(DudeAdversarial, WideCombTilesWithinTau) {
   const PolygonWithHoles p = comb(120);
   const Decomposition d = run(p, 5.0, 100);
   EXPECT_LT(d.rounds, 100);
+  EXPECT_TRUE(d.complete);
   expect_valid(p, d, "wide comb", 200);
   EXPECT_GE(d.pieces.size(), 120u);
   for (const PolygonWithHoles& piece : d.pieces) EXPECT_LE(measure_concavity(piece).max(), 5.0);

@@ -96,6 +96,9 @@ struct Decomposition {
   std::vector<PocketMinimum> pocket_minima;   // of every pass on every piece, diagnostics
   std::vector<Ring> absorbed_holes;           // holes judged too small for tau and covered by pieces
   int rounds = 0;                             // rounds of passes run (at most options.max_rounds)
+  // False when max_rounds stopped the work while a pass still had cuts to make: the pieces tile
+  // the input, but some may be deeper than tau.
+  bool complete = true;
 };
 
 // Decomposes polygon (rings in any orientation) into pieces that no further DuDe pass would cut:
