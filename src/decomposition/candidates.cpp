@@ -194,8 +194,8 @@ bool free_segment(const CDT& cdt, const EdgeIndex& index, Vertex va, Vertex vb) 
 // Whether segments a-b and c-d (corner pairs of poly) cannot both stand: the same segment, one
 // running along the other from a shared end point, or any other contact (touching included).
 // Exact predicates on the corners' points, shared end points by vertex id. Not door_cuts'
-// segments_conflict: that one works on loose points in floating point and lets two segments with
-// a shared end point overlap.
+// segments_conflict, which is floating point on loose points and lets two segments with a shared
+// end point overlap: using either for the other would change results.
 bool segments_conflict(const Poly& poly, int a, int b, int c, int d) {
   const int va = poly.vid[a], vb = poly.vid[b], vc = poly.vid[c], vd = poly.vid[d];
   const bool c_shared = vc == va || vc == vb;

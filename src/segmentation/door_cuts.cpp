@@ -183,8 +183,10 @@ double side_width(const EdgeGrid& grid, const Point2& mid, const Point2& u, cons
 }
 
 // Proper crossing or touching of two segments other than at shared end points. Not the
-// decomposition's conflict test (candidates.cpp): door cuts are loose points in floating point,
-// not polygon corners, and two doors from one jamb may share an end point even when collinear.
+// decomposition's conflict test (candidates.cpp), on purpose: that one uses exact predicates on
+// polygon corners (shared ends by vertex id) and counts a segment running along another from a
+// shared end, or the same segment, as a conflict; this one is floating point on loose points and
+// lets segments with a shared end overlap (narrowest_compatible's distance test drops those).
 bool segments_conflict(const Segment2& s, const Segment2& t) {
   auto orient = [](const Point2& a, const Point2& b, const Point2& c) { return cross(minus(b, a), minus(c, a)); };
   const bool shared = s.a == t.a || s.a == t.b || s.b == t.a || s.b == t.b;

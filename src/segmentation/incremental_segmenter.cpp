@@ -533,8 +533,8 @@ ChangeMask IncrementalSegmenter::State::take_changes(const OccupancyGrid& grid, 
   return mask;
 }
 
-// Blobs of changed cells (8-connected) with the rooms each one touches, listed in raster order of
-// first contact, so that what follows depends on the change alone.
+// Blobs of changed cells (8-connected), each with the rooms it touches in raster order of first
+// contact: the order in which choose_region adds them, so region ids never depend on history.
 std::vector<Blob> IncrementalSegmenter::State::find_blobs(const ChangeMask& mask, cv::Mat& blob_of) const {
   const cv::Rect& window = mask.window;
   const cv::Mat& labels = result.labels;
