@@ -193,6 +193,26 @@ bool free_segment(const CDT& cdt, const EdgeIndex& index, Vertex va, Vertex vb) 
   return false;
 }
 
+
+// Whether segments a-b and c-d (corner pairs of poly) cannot both stand: the same segment, one
+// running along the other from a shared end point, or any other contact (touching included).
+// Exact predicates on the corners' points, shared end points by vertex id. Not door_cuts'
+// segments_conflict, which is floating point on loose points and lets two segments with a shared
+// end point overlap: using either for the other would change results.
+bool segments_conflict(const Poly& poly, int a, int b, int c, int d) {
+  const int va = poly.vid[a], vb = poly.vid[b], vc = poly.vid[c], vd = poly.vid[d];
+  const bool c_shared = vc == va || vc == vb;
+  const bool d_shared = vd == va || vd == vb;
+  if (c_shared && d_shared) return true;
+  if (c_shared || d_shared) {
+    const Pt& s = c_shared ? poly.pt[c] : poly.pt[d];
+    const Pt& other = c_shared ? poly.pt[d] : poly.pt[c];
+    const Pt& far = (c_shared ? vc : vd) == va ? poly.pt[b] : poly.pt[a];
+    return CGAL::orientation(s, far, other) == CGAL::COLLINEAR && CGAL::angle(other, s, far) == CGAL::ACUTE;
+  }
+  return CGAL::do_intersect(K::Segment_2(poly.pt[a], poly.pt[b]), K::Segment_2(poly.pt[c], poly.pt[d]));
+}
+
 }  // namespace
 
 std::vector<char> segments_inside(const Poly& poly, const std::vector<std::pair<int, int>>& segments,
@@ -219,22 +239,8 @@ std::vector<char> segments_inside(const Poly& poly, const std::vector<std::pair<
     if (!ok[i]) return;
     const auto [a, b] = segments[i];
     const int c = eb.info();
-    const int d = poly.next(c);
-    const int va = poly.vid[a], vb = poly.vid[b], vc = poly.vid[c], vd = poly.vid[d];
-    const bool c_shared = vc == va || vc == vb;
-    const bool d_shared = vd == va || vd == vb;
-    bool bad;
-    if (c_shared && d_shared) {
-      bad = true;  // the segment is a boundary edge
-    } else if (c_shared || d_shared) {
-      const Pt& s = c_shared ? poly.pt[c] : poly.pt[d];
-      const Pt& other = c_shared ? poly.pt[d] : poly.pt[c];
-      const Pt& far = (c_shared ? vc : vd) == va ? poly.pt[b] : poly.pt[a];
-      bad = CGAL::orientation(s, far, other) == CGAL::COLLINEAR && CGAL::angle(other, s, far) == CGAL::ACUTE;
-    } else {
-      bad = CGAL::do_intersect(K::Segment_2(poly.pt[a], poly.pt[b]), K::Segment_2(poly.pt[c], poly.pt[d]));
-    }
-    if (bad) ok[i] = 0;
+    // Sharing both end points with a boundary edge, the segment is that edge.
+    if (segments_conflict(poly, a, b, c, poly.next(c))) ok[i] = 0;
   };
   CGAL::box_intersection_d(seg_boxes.begin(), seg_boxes.end(), edge_boxes.begin(), edge_boxes.end(), test);
   return ok;
@@ -253,21 +259,7 @@ std::vector<char> non_crossing_prefix(const Poly& poly, const std::vector<std::p
     if (i > j) std::swap(i, j);
     const auto [a, b] = segments[i];
     const auto [c, d] = segments[j];
-    const int va = poly.vid[a], vb = poly.vid[b], vc = poly.vid[c], vd = poly.vid[d];
-    const bool c_shared = vc == va || vc == vb;
-    const bool d_shared = vd == va || vd == vb;
-    bool bad;
-    if (c_shared && d_shared) {
-      bad = true;
-    } else if (c_shared || d_shared) {
-      const Pt& s = c_shared ? poly.pt[c] : poly.pt[d];
-      const Pt& other = c_shared ? poly.pt[d] : poly.pt[c];
-      const Pt& far = (c_shared ? vc : vd) == va ? poly.pt[b] : poly.pt[a];
-      bad = CGAL::orientation(s, far, other) == CGAL::COLLINEAR && CGAL::angle(other, s, far) == CGAL::ACUTE;
-    } else {
-      bad = CGAL::do_intersect(K::Segment_2(poly.pt[a], poly.pt[b]), K::Segment_2(poly.pt[c], poly.pt[d]));
-    }
-    if (bad) earlier[j].push_back(i);
+    if (segments_conflict(poly, a, b, c, d)) earlier[j].push_back(i);
   };
   CGAL::box_self_intersection_d(boxes.begin(), boxes.end(), test);
   for (std::size_t j = 0; j < segments.size(); ++j) {
@@ -279,6 +271,8 @@ std::vector<char> non_crossing_prefix(const Poly& poly, const std::vector<std::p
 }
 
 namespace {
+
+using CornerPairs = std::vector<std::pair<int, int>>;
 
 // §5.3 bridge-breaking test: a cut must involve some concavity and must leave its pocket.
 bool bridge_breaking(const PassState& st, int a, int b) {
@@ -314,6 +308,9 @@ bool hole_span_ok(const PassState& st, int a, int b) {
   return true;
 }
 
+// §5.3: both tests a candidate diagonal must pass.
+bool acceptable(const PassState& st, int a, int b) { return bridge_breaking(st, a, b) && hole_span_ok(st, a, b); }
+
 // The corner of local point `lp` whose interior wedge contains the direction to q, or -1.
 int corner_toward(const Poly& poly, const PointSet& set, int lp, const Pt& q) {
   const int c0 = set.first[lp];
@@ -324,13 +321,28 @@ int corner_toward(const Poly& poly, const PointSet& set, int lp, const Pt& q) {
   return -1;
 }
 
+// The unconstrained edges of a triangulation with both faces inside, by local point ids: the
+// candidate diagonals before they are tied to corners.
+template <class Triangulation>
+CornerPairs inside_edges(const Triangulation& cdt) {
+  CornerPairs edges;
+  for (auto e = cdt.finite_edges_begin(); e != cdt.finite_edges_end(); ++e) {
+    const Face f = e->first;
+    const int i = e->second;
+    if (cdt.is_constrained(*e)) continue;
+    if (!inside_face(cdt, f) || !inside_face(cdt, f->neighbor(i))) continue;
+    const int u = f->vertex(CDT::cw(i))->info().id, w = f->vertex(CDT::ccw(i))->info().id;
+    if (u >= 0 && w >= 0) edges.emplace_back(u, w);
+  }
+  return edges;
+}
+
 // The reference's second triangulation (§5.2.2): all simplified-polygon diagonals are constraints,
 // including those that cross the boundary, for which CGAL inserts crossing points. Those points
 // change the triangulation nearby (this is how the reference loses the cut of §8.5.1). The
 // constraint hierarchy tells boundary sub-edges from diagonal sub-edges for the inside test.
-std::vector<std::pair<int, int>> reference_fine_edges(const Poly& poly, const PointSet& set,
-                                                      const std::vector<int>& corners,
-                                                      const std::vector<std::pair<int, int>>& s_diagonals) {
+CornerPairs reference_fine_edges(const Poly& poly, const PointSet& set, const std::vector<int>& corners,
+                                 const CornerPairs& s_diagonals) {
   using CDTP = CGAL::Constrained_triangulation_plus_2<CDT>;
   CDTP cdt;
   std::vector<Vertex> handle(set.points.size());
@@ -354,27 +366,19 @@ std::vector<std::pair<int, int>> reference_fine_edges(const Poly& poly, const Po
     }
     return false;
   });
-  std::vector<std::pair<int, int>> edges;  // local point ids
-  for (auto e = cdt.finite_edges_begin(); e != cdt.finite_edges_end(); ++e) {
-    const Face f = e->first;
-    const int i = e->second;
-    if (cdt.is_constrained(*e)) continue;
-    if (!inside_face(cdt, f) || !inside_face(cdt, f->neighbor(i))) continue;
-    const int u = f->vertex(CDT::cw(i))->info().id, w = f->vertex(CDT::ccw(i))->info().id;
-    if (u >= 0 && w >= 0) edges.emplace_back(u, w);
-  }
-  return edges;
+  return inside_edges(cdt);
 }
 
-}  // namespace
+// §5.1 simplified polygon: the features of each ring kept, linked by dpre/dnext (in st); a ring
+// with fewer than 3 features is dropped from it, its features linked to their plain neighbours.
+struct SimplifiedPolygon {
+  std::vector<int> feature_corners;  // of rings kept
+  CornerPairs edges;                 // feature -> next feature
+};
 
-std::vector<std::pair<int, int>> candidate_diagonals(PassState& st) {
+SimplifiedPolygon simplified_polygon(PassState& st) {
   const Poly& poly = st.poly;
-  const bool reference = st.settings.options.candidates == CandidateCuts::kReference;
-
-  // §5.1 simplified polygon: features per ring, rings with fewer than 3 features dropped.
-  std::vector<int> feature_corners;  // of rings kept in S
-  std::vector<std::pair<int, int>> s_edges;
+  SimplifiedPolygon s;
   for (int r = 0; r < poly.rings(); ++r) {
     if (st.deleted[r]) continue;
     std::vector<int> f;
@@ -392,116 +396,133 @@ std::vector<std::pair<int, int>> candidate_diagonals(PassState& st) {
       const int c = f[i];
       st.dpre[c] = f[(i + f.size() - 1) % f.size()];
       st.dnext[c] = f[(i + 1) % f.size()];
-      feature_corners.push_back(c);
-      s_edges.emplace_back(c, st.dnext[c]);
+      s.feature_corners.push_back(c);
+      s.edges.emplace_back(c, st.dnext[c]);
     }
   }
+  return s;
+}
 
-  auto accept = [&](int a, int b) { return bridge_breaking(st, a, b) && hole_span_ok(st, a, b); };
-
-  // Step 1: diagonals of the simplified polygon.
-  std::vector<std::pair<int, int>> s_diagonals;
-  if (!feature_corners.empty()) {
-    PointSet set(poly, feature_corners);
-    CDT cdt;
-    const std::vector<Vertex> handle = insert_points(cdt, set);
-    for (const auto& [a, b] : s_edges) {
-      const Vertex va = handle[set.local[a]], vb = handle[set.local[b]];
-      if (va != vb) cdt.insert_constraint(va, vb);
-    }
-    mark_levels(cdt, [&](Face f, int i) { return cdt.is_constrained(CDT::Edge(f, i)); });
-    std::unordered_set<std::uint64_t> seen;
-    for (auto e = cdt.finite_edges_begin(); e != cdt.finite_edges_end(); ++e) {
-      const Face f = e->first;
-      const int i = e->second;
-      if (cdt.is_constrained(*e)) continue;
-      if (!inside_face(cdt, f) || !inside_face(cdt, f->neighbor(i))) continue;
-      const int u = f->vertex(CDT::cw(i))->info().id, w = f->vertex(CDT::ccw(i))->info().id;
-      if (u < 0 || w < 0) continue;
-      int a = corner_toward(poly, set, u, set.points[w]);
-      int b = corner_toward(poly, set, w, set.points[u]);
-      if (reference) {
-        // The reference stores the diagonal with the feature vertices whatever the real boundary does.
-        if (a < 0) a = set.first[u];
-        if (b < 0) b = set.first[w];
-      }
-      if (a < 0 || b < 0) continue;
-      if (a > b) std::swap(a, b);
-      if (!accept(a, b)) continue;
-      if (seen.insert(pair_key(poly.vid[a], poly.vid[b])).second) s_diagonals.emplace_back(a, b);
-    }
-    std::sort(s_diagonals.begin(), s_diagonals.end());
-  }
-  std::vector<int> all_corners;
-  all_corners.reserve(poly.corners());
-  for (int c = 0; c < poly.corners(); ++c) {
-    if (!st.deleted[poly.ring[c]]) all_corners.push_back(c);
-  }
-  PointSet set(poly, all_corners);
-  std::vector<std::pair<int, int>> result;
-  std::vector<std::pair<int, int>> invalid_s;  // reference mode only
-  std::unordered_set<std::uint64_t> diagonal_keys;
-  std::vector<std::pair<int, int>> fine_edges;  // local point ids
-
-  // Step 2: the full-resolution polygon; simplified diagonals that lie inside it become constraints.
+// Step 1: the accepted diagonals of the simplified polygon's triangulation, one per vertex pair,
+// sorted. They need not lie inside the full polygon (step 2 checks).
+CornerPairs simplified_diagonals(const PassState& st, const SimplifiedPolygon& simplified, bool reference) {
+  const Poly& poly = st.poly;
+  CornerPairs s_diagonals;
+  if (simplified.feature_corners.empty()) return s_diagonals;
+  PointSet set(poly, simplified.feature_corners);
   CDT cdt;
   const std::vector<Vertex> handle = insert_points(cdt, set);
-  for (int c : all_corners) {
-    const Vertex va = handle[set.local[c]], vb = handle[set.local[poly.next(c)]];
+  for (const auto& [a, b] : simplified.edges) {
+    const Vertex va = handle[set.local[a]], vb = handle[set.local[b]];
     if (va != vb) cdt.insert_constraint(va, vb);
   }
+  mark_levels(cdt, [&](Face f, int i) { return cdt.is_constrained(CDT::Edge(f, i)); });
+  std::unordered_set<std::uint64_t> seen;
+  for (const auto& [u, w] : inside_edges(cdt)) {
+    int a = corner_toward(poly, set, u, set.points[w]);
+    int b = corner_toward(poly, set, w, set.points[u]);
+    if (reference) {
+      // The reference stores the diagonal with the feature vertices whatever the real boundary does.
+      if (a < 0) a = set.first[u];
+      if (b < 0) b = set.first[w];
+    }
+    if (a < 0 || b < 0) continue;
+    if (a > b) std::swap(a, b);
+    if (!acceptable(st, a, b)) continue;
+    if (seen.insert(pair_key(poly.vid[a], poly.vid[b])).second) s_diagonals.emplace_back(a, b);
+  }
+  std::sort(s_diagonals.begin(), s_diagonals.end());
+  return s_diagonals;
+}
+
+// The full-resolution polygon (rings not deleted), triangulated with its boundary as constraints.
+struct FullTriangulation {
+  std::vector<int> all_corners;
+  PointSet set;
+  CDT cdt;
+  std::vector<Vertex> handle;  // per local point id
+
+  FullTriangulation(const Poly& poly, const std::vector<char>& deleted)
+      : all_corners(kept_corners(poly, deleted)), set(poly, all_corners), handle(insert_points(cdt, set)) {
+    for (int c : all_corners) {
+      const Vertex va = handle[set.local[c]], vb = handle[set.local[poly.next(c)]];
+      if (va != vb) cdt.insert_constraint(va, vb);
+    }
+  }
+
+  static std::vector<int> kept_corners(const Poly& poly, const std::vector<char>& deleted) {
+    std::vector<int> corners;
+    corners.reserve(poly.corners());
+    for (int c = 0; c < poly.corners(); ++c) {
+      if (!deleted[poly.ring[c]]) corners.push_back(c);
+    }
+    return corners;
+  }
+};
+
+// Step 2 check: the simplified diagonals that lie inside the full polygon (valid), and, in
+// reference mode only, the others (kept by the reference as unchecked constraints).
+struct CheckedDiagonals {
+  CornerPairs valid, invalid;
+};
+
+CheckedDiagonals check_inside(const Poly& poly, const FullTriangulation& full, const CornerPairs& s_diagonals,
+                              bool reference) {
+  const PointSet& set = full.set;
   std::vector<char> s_valid(s_diagonals.size(), 0);
-  const EdgeIndex edge_index(cdt, set.points.size());
+  const EdgeIndex edge_index(full.cdt, set.points.size());
   for (std::size_t i = 0; i < s_diagonals.size(); ++i) {
     const auto [a, b] = s_diagonals[i];
     s_valid[i] = poly.vid[a] != poly.vid[b] && in_wedge(poly, a, poly.pt[b]) && in_wedge(poly, b, poly.pt[a]) &&
-                 free_segment(cdt, edge_index, handle[set.local[a]], handle[set.local[b]]);
+                 free_segment(full.cdt, edge_index, full.handle[set.local[a]], full.handle[set.local[b]]);
   }
+  CheckedDiagonals checked;
   for (std::size_t i = 0; i < s_diagonals.size(); ++i) {
     if (s_valid[i]) {
-      result.push_back(s_diagonals[i]);
-      diagonal_keys.insert(pair_key(poly.vid[s_diagonals[i].first], poly.vid[s_diagonals[i].second]));
+      checked.valid.push_back(s_diagonals[i]);
     } else if (reference) {
-      invalid_s.push_back(s_diagonals[i]);
+      checked.invalid.push_back(s_diagonals[i]);
     }
   }
-  if (invalid_s.empty()) {
-    std::unordered_set<std::uint64_t> constraint_diagonals;
-    for (const auto& [a, b] : result) {
-      cdt.insert_constraint(handle[set.local[a]], handle[set.local[b]]);
-      constraint_diagonals.insert(pair_key(set.local[a], set.local[b]));
-    }
-    mark_levels(cdt, [&](Face f, int i) {
-      if (!cdt.is_constrained(CDT::Edge(f, i))) return false;
-      const int u = f->vertex(CDT::cw(i))->info().id, w = f->vertex(CDT::ccw(i))->info().id;
-      return constraint_diagonals.count(pair_key(u, w)) == 0;
-    });
-    for (auto e = cdt.finite_edges_begin(); e != cdt.finite_edges_end(); ++e) {
-      const Face f = e->first;
-      const int i = e->second;
-      if (cdt.is_constrained(*e)) continue;
-      if (!inside_face(cdt, f) || !inside_face(cdt, f->neighbor(i))) continue;
-      const int u = f->vertex(CDT::cw(i))->info().id, w = f->vertex(CDT::ccw(i))->info().id;
-      if (u >= 0 && w >= 0) fine_edges.emplace_back(u, w);
-    }
-  } else {
-    fine_edges = reference_fine_edges(poly, set, all_corners, s_diagonals);
+  return checked;
+}
+
+// Step 2 triangulation: the valid simplified diagonals become constraints of the full polygon's
+// triangulation, and its inside edges (local point ids) are the fine candidates; with unchecked
+// diagonals, the reference's own triangulation instead.
+CornerPairs fine_edges(const Poly& poly, FullTriangulation& full, const CheckedDiagonals& checked,
+                       const CornerPairs& s_diagonals) {
+  if (!checked.invalid.empty()) return reference_fine_edges(poly, full.set, full.all_corners, s_diagonals);
+  CDT& cdt = full.cdt;
+  std::unordered_set<std::uint64_t> constraint_diagonals;
+  for (const auto& [a, b] : checked.valid) {
+    cdt.insert_constraint(full.handle[full.set.local[a]], full.handle[full.set.local[b]]);
+    constraint_diagonals.insert(pair_key(full.set.local[a], full.set.local[b]));
   }
-  std::vector<std::pair<int, int>> fine;
-  for (const auto& [u, w] : fine_edges) {
-    int a = corner_toward(poly, set, u, set.points[w]);
-    int b = corner_toward(poly, set, w, set.points[u]);
-    if (a < 0 || b < 0) continue;
-    if (a > b) std::swap(a, b);
-    if (!accept(a, b)) continue;
-    fine.emplace_back(a, b);
+  mark_levels(cdt, [&](Face f, int i) {
+    if (!cdt.is_constrained(CDT::Edge(f, i))) return false;
+    const int u = f->vertex(CDT::cw(i))->info().id, w = f->vertex(CDT::ccw(i))->info().id;
+    return constraint_diagonals.count(pair_key(u, w)) == 0;
+  });
+  return inside_edges(cdt);
+}
+
+// The final list: valid simplified diagonals, then (reference) the unchecked ones with the fine
+// diagonals that cross none of them, then the other fine diagonals, one per vertex pair, sorted.
+CornerPairs merged_diagonals(const Poly& poly, const CheckedDiagonals& checked, CornerPairs fine) {
+  CornerPairs result;
+  std::unordered_set<std::uint64_t> diagonal_keys;
+  for (const auto& d : checked.valid) {
+    result.push_back(d);
+    diagonal_keys.insert(pair_key(poly.vid[d.first], poly.vid[d.second]));
   }
+  const CornerPairs& invalid_s = checked.invalid;
   if (!invalid_s.empty()) {
     // The reference has its unchecked diagonals as constraints here, so nothing may cross them.
-    std::vector<std::pair<int, int>> both = invalid_s;
+    CornerPairs both = invalid_s;
     both.insert(both.end(), fine.begin(), fine.end());
     const std::vector<char> keep = non_crossing_prefix(poly, both);
-    std::vector<std::pair<int, int>> kept;
+    CornerPairs kept;
     for (std::size_t i = invalid_s.size(); i < both.size(); ++i) {
       if (keep[i]) kept.push_back(both[i]);
     }
@@ -516,6 +537,28 @@ std::vector<std::pair<int, int>> candidate_diagonals(PassState& st) {
   }
   std::sort(result.begin(), result.end());
   return result;
+}
+
+}  // namespace
+
+std::vector<std::pair<int, int>> candidate_diagonals(PassState& st) {
+  const Poly& poly = st.poly;
+  const bool reference = st.settings.options.candidates == CandidateCuts::kReference;
+  const SimplifiedPolygon simplified = simplified_polygon(st);
+  const CornerPairs s_diagonals = simplified_diagonals(st, simplified, reference);
+
+  FullTriangulation full(poly, st.deleted);
+  const CheckedDiagonals checked = check_inside(poly, full, s_diagonals, reference);
+  CornerPairs fine;
+  for (const auto& [u, w] : fine_edges(poly, full, checked, s_diagonals)) {
+    int a = corner_toward(poly, full.set, u, full.set.points[w]);
+    int b = corner_toward(poly, full.set, w, full.set.points[u]);
+    if (a < 0 || b < 0) continue;
+    if (a > b) std::swap(a, b);
+    if (!acceptable(st, a, b)) continue;
+    fine.emplace_back(a, b);
+  }
+  return merged_diagonals(poly, checked, std::move(fine));
 }
 
 }  // namespace topocut::dude

@@ -122,34 +122,39 @@ int nesting_depth(std::vector<std::pair<int, int>> intervals) {
   return depth;
 }
 
-// §4.3: a hole whose dual pass produced cuts (corner pairs on ring h).
-void complex_hole(PassState& st, int h, const std::vector<std::pair<int, int>>& cuts) {
-  const Poly& poly = st.poly;
-  const double tau = st.tau();
-  const int m = poly.ring_size(h);
-  const int k = static_cast<int>(cuts.size());
+// The other cuts of a complex hole, as intervals of ring offsets when the ring is numbered from
+// one cut's first end point: those on its first side (a) and on its second (b).
+struct CutSides {
+  std::vector<std::pair<int, int>> a, b;
+  std::vector<int> a_ids, b_ids;  // the cut of each interval
+};
 
-  // Intervals of the other cuts when the ring is numbered from cut i's first end point.
-  auto sides = [&](int i, std::vector<std::pair<int, int>>& a, std::vector<std::pair<int, int>>& b,
-                   std::vector<int>& a_ids, std::vector<int>& b_ids) {
-    const int s = cuts[i].first;
-    const int t = poly.offset(s, cuts[i].second);
-    for (int j = 0; j < k; ++j) {
-      if (j == i) continue;
-      int pu = poly.offset(s, cuts[j].first), pw = poly.offset(s, cuts[j].second);
-      if (pu <= t && pw <= t) {
-        a.emplace_back(std::min(pu, pw), std::max(pu, pw));
-        a_ids.push_back(j);
-      } else {
-        if (pu == 0) pu = m;
-        if (pw == 0) pw = m;
-        b.emplace_back(std::min(pu, pw), std::max(pu, pw));
-        b_ids.push_back(j);
-      }
+CutSides sides_of(const Poly& poly, const std::vector<std::pair<int, int>>& cuts, int i, int m) {
+  const int k = static_cast<int>(cuts.size());
+  CutSides sides;
+  const int s = cuts[i].first;
+  const int t = poly.offset(s, cuts[i].second);
+  for (int j = 0; j < k; ++j) {
+    if (j == i) continue;
+    int pu = poly.offset(s, cuts[j].first), pw = poly.offset(s, cuts[j].second);
+    if (pu <= t && pw <= t) {
+      sides.a.emplace_back(std::min(pu, pw), std::max(pu, pw));
+      sides.a_ids.push_back(j);
+    } else {
+      if (pu == 0) pu = m;
+      if (pw == 0) pw = m;
+      sides.b.emplace_back(std::min(pu, pw), std::max(pu, pw));
+      sides.b_ids.push_back(j);
     }
-  };
-  // Ties between equally deep roots go to the geometrically smallest cut, not to ring order, so
-  // the result does not depend on where the ring starts.
+  }
+  return sides;
+}
+
+// §4.3.1 the root of the cut tree: the cut whose sides nest least deep. Ties between equally deep
+// roots go to the geometrically smallest cut, not to ring order, so the result does not depend on
+// where the ring starts.
+int root_cut(const Poly& poly, const std::vector<std::pair<int, int>>& cuts, int m) {
+  const int k = static_cast<int>(cuts.size());
   auto ends_sorted = [&](int i) {
     Pt a = poly.pt[cuts[i].first], b = poly.pt[cuts[i].second];
     if (b < a) std::swap(a, b);
@@ -157,63 +162,76 @@ void complex_hole(PassState& st, int h, const std::vector<std::pair<int, int>>& 
   };
   int root = 0, best = std::numeric_limits<int>::max();
   for (int i = 0; i < k; ++i) {
-    std::vector<std::pair<int, int>> a, b;
-    std::vector<int> ai, bi;
-    sides(i, a, b, ai, bi);
-    const int depth = 1 + std::max(nesting_depth(a), nesting_depth(b));
+    const CutSides sides = sides_of(poly, cuts, i, m);
+    const int depth = 1 + std::max(nesting_depth(sides.a), nesting_depth(sides.b));
     if (depth < best || (depth == best && ends_sorted(i) < ends_sorted(root))) {
       best = depth;
       root = i;
     }
   }
+  return root;
+}
 
-  // Cut tree below the root and the skeleton-like cut concavity hc (§4.3.2).
-  std::vector<double> hc(k, 0.0);
-  {
-    std::vector<std::pair<int, int>> a, b;
-    std::vector<int> ai, bi;
-    sides(root, a, b, ai, bi);
-    auto mid = [&](int j) {
-      const Pt& p = poly.pt[cuts[j].first];
-      const Pt& q = poly.pt[cuts[j].second];
-      return Pt((p.x() + q.x()) / 2, (p.y() + q.y()) / 2);
-    };
-    for (auto* side : {&a, &b}) {
-      const std::vector<int>& ids = side == &a ? ai : bi;
-      std::vector<int> order(ids.size());
-      for (std::size_t i = 0; i < order.size(); ++i) order[i] = static_cast<int>(i);
-      std::sort(order.begin(), order.end(), [&](int x, int y) {
-        const auto& u = (*side)[x];
-        const auto& w = (*side)[y];
-        return u.first != w.first ? u.first < w.first : u.second > w.second;
-      });
-      std::vector<int> stack;  // positions in side
-      for (int x : order) {
-        while (!stack.empty() && !((*side)[stack.back()].first <= (*side)[x].first &&
-                                   (*side)[x].second <= (*side)[stack.back()].second)) {
-          stack.pop_back();
-        }
-        const int parent = stack.empty() ? root : ids[stack.back()];
-        hc[ids[x]] = hc[parent] + dist(mid(parent), mid(ids[x]));
-        stack.push_back(x);
+// §4.3.2 the skeleton-like cut concavity hc of every cut: the path length from the root's midpoint
+// down the cut tree (intervals nested on each side) to the cut's midpoint.
+std::vector<double> cut_concavity(const Poly& poly, const std::vector<std::pair<int, int>>& cuts, int root, int m) {
+  std::vector<double> hc(cuts.size(), 0.0);
+  CutSides sides = sides_of(poly, cuts, root, m);
+  auto mid = [&](int j) {
+    const Pt& p = poly.pt[cuts[j].first];
+    const Pt& q = poly.pt[cuts[j].second];
+    return Pt((p.x() + q.x()) / 2, (p.y() + q.y()) / 2);
+  };
+  for (auto* side : {&sides.a, &sides.b}) {
+    const std::vector<int>& ids = side == &sides.a ? sides.a_ids : sides.b_ids;
+    std::vector<int> order(ids.size());
+    for (std::size_t i = 0; i < order.size(); ++i) order[i] = static_cast<int>(i);
+    std::sort(order.begin(), order.end(), [&](int x, int y) {
+      const auto& u = (*side)[x];
+      const auto& w = (*side)[y];
+      return u.first != w.first ? u.first < w.first : u.second > w.second;
+    });
+    std::vector<int> stack;  // positions in side
+    for (int x : order) {
+      while (!stack.empty() && !((*side)[stack.back()].first <= (*side)[x].first &&
+                                 (*side)[x].second <= (*side)[stack.back()].second)) {
+        stack.pop_back();
       }
+      const int parent = stack.empty() ? root : ids[stack.back()];
+      hc[ids[x]] = hc[parent] + dist(mid(parent), mid(ids[x]));
+      stack.push_back(x);
     }
   }
-  std::vector<double> end_hc(poly.corners(), std::numeric_limits<double>::infinity());
-  std::vector<int> ends;
-  for (int j = 0; j < k; ++j) {
-    for (int c : {cuts[j].first, cuts[j].second}) {
-      end_hc[c] = std::min(end_hc[c], hc[j]);
-      ends.push_back(c);
-    }
-  }
-  std::sort(ends.begin(), ends.end());
-  ends.erase(std::unique(ends.begin(), ends.end()), ends.end());
+  return hc;
+}
 
+// The distinct cut end points in corner order, each with the least hc of the cuts ending there.
+struct CutEnds {
+  std::vector<int> corners;
+  std::vector<double> hc;  // per corner of the polygon; infinity where no cut ends
+};
+
+CutEnds cut_ends(const Poly& poly, const std::vector<std::pair<int, int>>& cuts, const std::vector<double>& hc) {
+  CutEnds ends{{}, std::vector<double>(poly.corners(), std::numeric_limits<double>::infinity())};
+  for (std::size_t j = 0; j < cuts.size(); ++j) {
+    for (int c : {cuts[j].first, cuts[j].second}) {
+      ends.hc[c] = std::min(ends.hc[c], hc[j]);
+      ends.corners.push_back(c);
+    }
+  }
+  std::sort(ends.corners.begin(), ends.corners.end());
+  ends.corners.erase(std::unique(ends.corners.begin(), ends.corners.end()), ends.corners.end());
+  return ends;
+}
+
+// §4.3.3 features of the chains between consecutive cut end points; a reflex one's concavity is
+// its depth below the chain's chord on top of the nearer end's hc.
+std::vector<int> chain_features(PassState& st, const CutEnds& ends) {
+  const Poly& poly = st.poly;
+  const double tau = st.tau();
   std::vector<int> features;
-  // §4.3.3 chains between consecutive cut end points.
-  for (std::size_t i = 0; i < ends.size(); ++i) {
-    const int first = ends[i], last = ends[(i + 1) % ends.size()];
+  for (std::size_t i = 0; i < ends.corners.size(); ++i) {
+    const int first = ends.corners[i], last = ends.corners[(i + 1) % ends.corners.size()];
     const std::vector<int> chain = chain_between(poly, first, last);
     const std::vector<int> kept = approx(poly, chain, 0.8 * tau);
     for (std::size_t j = 1; j + 1 < kept.size(); ++j) {
@@ -221,17 +239,18 @@ void complex_hole(PassState& st, int h, const std::vector<std::pair<int, int>>& 
       features.push_back(v);
       if (!is_reflex(poly, v)) continue;
       const double depth = dline(poly.pt[v], poly.pt[first], poly.pt[last]);
-      st.concavity[v] = std::min(end_hc[first], end_hc[last]) + depth;
+      st.concavity[v] = std::min(ends.hc[first], ends.hc[last]) + depth;
       if (depth > tau) st.pm[v] = 1;
     }
   }
-  // §4.3.4 cut end points.
-  for (int c : ends) {
-    features.push_back(c);
-    if (is_reflex(poly, c)) st.concavity[c] = end_hc[c];
-  }
-  // §4.3.5 the root's end points.
-  int rs = cuts[root].first, rt = cuts[root].second;
+  return features;
+}
+
+// §4.3.5 the root's first reflex end point (the smaller point first): its concavity reaches across
+// the root to the other end's reflex neighbours.
+void root_end_concavity(PassState& st, const std::pair<int, int>& root) {
+  const Poly& poly = st.poly;
+  int rs = root.first, rt = root.second;
   if (poly.pt[rt] < poly.pt[rs]) std::swap(rs, rt);  // "start" end point: the smaller point
   for (const auto& [r, q] : {std::pair{rs, rt}, std::pair{rt, rs}}) {
     if (!is_reflex(poly, r)) continue;
@@ -251,10 +270,25 @@ void complex_hole(PassState& st, int h, const std::vector<std::pair<int, int>>& 
     if (pre >= 0 && nxt >= 0) {
       const double c = dist(poly.pt[r], poly.pt[q]) + dseg(poly.pt[q], poly.pt[pre], poly.pt[nxt]);
       st.concavity[r] = c;
-      if (c > tau) st.pm[r] = 1;
+      if (c > st.tau()) st.pm[r] = 1;
     }
     break;
   }
+}
+
+// §4.3: a hole whose dual pass produced cuts (corner pairs on ring h).
+void complex_hole(PassState& st, int h, const std::vector<std::pair<int, int>>& cuts) {
+  const Poly& poly = st.poly;
+  const int m = poly.ring_size(h);
+  const int root = root_cut(poly, cuts, m);
+  const CutEnds ends = cut_ends(poly, cuts, cut_concavity(poly, cuts, root, m));
+  std::vector<int> features = chain_features(st, ends);
+  // §4.3.4 cut end points.
+  for (int c : ends.corners) {
+    features.push_back(c);
+    if (is_reflex(poly, c)) st.concavity[c] = ends.hc[c];
+  }
+  root_end_concavity(st, cuts[root]);
   for (int v : features) {
     st.feature[v] = 1;
     st.hole_owner[v] = h;

@@ -24,43 +24,58 @@ double area2_of(const Poly& poly, const std::vector<int>& cycle) {
   return twice;
 }
 
-}  // namespace
+// The rays leaving each corner: index 0 = predecessor, 1..m = its cuts clockwise, m+1 = successor.
+struct CornerRays {
+  std::vector<std::vector<int>> at;      // per corner: its cut indices, clockwise inside its wedge
+  std::vector<std::pair<int, int>> slot; // per cut: its position in the ray list of either end
+  std::vector<int> base;                 // outgoing rays of corner c: base[c] + (1..m+1) - 1
+};
 
-std::vector<Poly> split(const Poly& poly, const std::vector<std::pair<int, int>>& cuts,
-                        const std::vector<int>& deleted_holes) {
+int other_end(const std::vector<std::pair<int, int>>& cuts, int cut, int c) {
+  return cuts[cut].first == c ? cuts[cut].second : cuts[cut].first;
+}
+
+// Cuts are ordered clockwise from the predecessor at each corner (ties by index), so that leaving
+// along the next ray clockwise traces a face whatever the keyholes.
+CornerRays corner_rays(const Poly& poly, const std::vector<std::pair<int, int>>& cuts) {
   const int n = poly.corners();
-  std::vector<char> deleted(poly.rings(), 0);
-  for (int h : deleted_holes) deleted[h] = 1;
-
-  // Rays at each corner: index 0 = predecessor, 1..m = cuts clockwise, m+1 = successor.
-  std::vector<std::vector<int>> at(n);  // cut indices
+  CornerRays rays;
+  std::vector<std::vector<int>>& at = rays.at;
+  at.resize(n);
   for (int i = 0; i < static_cast<int>(cuts.size()); ++i) {
     at[cuts[i].first].push_back(i);
     at[cuts[i].second].push_back(i);
   }
-  auto other = [&](int cut, int c) { return cuts[cut].first == c ? cuts[cut].second : cuts[cut].first; };
   for (int c = 0; c < n; ++c) {
     if (at[c].size() < 2) continue;
     const Pt& v = poly.pt[c];
     const Pt& ref = poly.pt[poly.prev(c)];
     std::sort(at[c].begin(), at[c].end(), [&](int x, int y) {
-      const int cmp = cw_compare(v, ref, poly.pt[other(x, c)], poly.pt[other(y, c)]);
+      const int cmp = cw_compare(v, ref, poly.pt[other_end(cuts, x, c)], poly.pt[other_end(cuts, y, c)]);
       return cmp != 0 ? cmp < 0 : x < y;
     });
   }
-  // Position of each cut in the ray list of either end.
-  std::vector<std::pair<int, int>> slot(cuts.size());
+  rays.slot.resize(cuts.size());
   for (int c = 0; c < n; ++c) {
     for (int k = 0; k < static_cast<int>(at[c].size()); ++k) {
       const int cut = at[c][k];
-      (cuts[cut].first == c ? slot[cut].first : slot[cut].second) = k + 1;
+      (cuts[cut].first == c ? rays.slot[cut].first : rays.slot[cut].second) = k + 1;
     }
   }
-  std::vector<int> base(n + 1, 0);  // outgoing rays of corner c: base[c] + (1..m+1) - 1
-  for (int c = 0; c < n; ++c) base[c + 1] = base[c] + static_cast<int>(at[c].size()) + 1;
-  std::vector<char> used(base[n], 0);
+  rays.base.assign(n + 1, 0);
+  for (int c = 0; c < n; ++c) rays.base[c + 1] = rays.base[c] + static_cast<int>(at[c].size()) + 1;
+  return rays;
+}
 
-  std::vector<std::vector<int>> outers, holes;
+// Every ray of a kept ring is walked once; counter-clockwise cycles are pieces' outer rings,
+// clockwise ones holes (zero-area cycles are dropped).
+void trace_cycles(const Poly& poly, const std::vector<std::pair<int, int>>& cuts, const CornerRays& rays,
+                  const std::vector<char>& deleted, std::vector<std::vector<int>>& outers,
+                  std::vector<std::vector<int>>& holes) {
+  const int n = poly.corners();
+  const std::vector<std::vector<int>>& at = rays.at;
+  const std::vector<int>& base = rays.base;
+  std::vector<char> used(base[n], 0);
   for (int c0 = 0; c0 < n; ++c0) {
     if (deleted[poly.ring[c0]]) continue;
     for (int k0 = 1; k0 <= static_cast<int>(at[c0].size()) + 1; ++k0) {
@@ -76,8 +91,8 @@ std::vector<Poly> split(const Poly& poly, const std::vector<std::pair<int, int>>
           k = 1;
         } else {
           const int cut = at[c][k - 1];
-          const int d = other(cut, c);
-          const int arrive = cuts[cut].first == d ? slot[cut].first : slot[cut].second;
+          const int d = other_end(cuts, cut, c);
+          const int arrive = cuts[cut].first == d ? rays.slot[cut].first : rays.slot[cut].second;
           c = d;
           k = arrive + 1;
         }
@@ -90,8 +105,13 @@ std::vector<Poly> split(const Poly& poly, const std::vector<std::pair<int, int>>
       }
     }
   }
+}
 
-  // Each hole cycle belongs to the outer cycle that contains it.
+// Each hole cycle belongs to the outer cycle that contains it: per outer cycle, its holes. A hole
+// whose corners all lie on outer boundaries or in no piece is dropped (cannot happen for a valid
+// split).
+std::vector<std::vector<int>> holes_by_owner(const Poly& poly, const std::vector<std::vector<int>>& outers,
+                                             const std::vector<std::vector<int>>& holes) {
   std::vector<std::vector<Pt>> outer_pts(outers.size());
   std::vector<CGAL::Bbox_2> boxes(outers.size());
   for (std::size_t i = 0; i < outers.size(); ++i) {
@@ -117,6 +137,19 @@ std::vector<Poly> split(const Poly& poly, const std::vector<std::pair<int, int>>
     }
     if (owner >= 0) holes_of[owner].push_back(static_cast<int>(h));
   }
+  return holes_of;
+}
+
+}  // namespace
+
+std::vector<Poly> split(const Poly& poly, const std::vector<std::pair<int, int>>& cuts,
+                        const std::vector<int>& deleted_holes) {
+  std::vector<char> deleted(poly.rings(), 0);
+  for (int h : deleted_holes) deleted[h] = 1;
+  const CornerRays rays = corner_rays(poly, cuts);
+  std::vector<std::vector<int>> outers, holes;
+  trace_cycles(poly, cuts, rays, deleted, outers, holes);
+  const std::vector<std::vector<int>> holes_of = holes_by_owner(poly, outers, holes);
 
   std::vector<Poly> pieces;
   pieces.reserve(outers.size());

@@ -94,6 +94,100 @@ class Tracer {
   std::vector<std::vector<std::pair<int, int>>> vertical_;  // per row: (x, ring id) of traced vertical edges
 };
 
+
+// Every ring of a mask in discovery order (raster order of its top edge), with what it is and
+// where it belongs.
+struct TracedRings {
+  struct RingInfo {
+    int component = -1;  // the free component it bounds
+    int hole = -1;       // index into that component's holes, or -1 for its outer ring
+  };
+  std::vector<RingInfo> rings;
+  std::vector<FreeSpaceComponent> components;  // polygons and first pixels only, no cell counts yet
+  std::vector<int> parent_hole_ring;           // per component: the hole ring it lies in, -1 outside
+  std::vector<std::vector<int>> hole_rings;    // per component: ring id of each hole
+};
+
+// One scan over the horizontal edges, boundary row by boundary row: the first untraced edge with
+// free space below is the top of a new component's first cell (its outer ring); one with free
+// space above is the top of a hole's first cell. Each ring is traced once, when first met, so
+// components and holes come out in raster order. Rows are compared eight cells at a time.
+TracedRings trace_rings(const cv::Mat& mask) {
+  const int h = mask.rows, w = mask.cols;
+  Tracer tracer(mask);
+  TracedRings t;
+  const std::vector<unsigned char> nothing(static_cast<std::size_t>(w), 0);
+  for (int y = 0; y <= h; ++y) {
+    const unsigned char* above = y > 0 ? mask.ptr<unsigned char>(y - 1) : nothing.data();
+    const unsigned char* below = y < h ? mask.ptr<unsigned char>(y) : nothing.data();
+    for (int c = 0; c < w; ++c) {
+      if (c + 8 <= w && (c & 7) == 0 && load8(above + c) == load8(below + c)) {
+        c += 7;
+        continue;
+      }
+      const bool up = above[c] != 0, down = below[c] != 0;
+      if (up == down || tracer.visited(y, c)) continue;
+      const int id = static_cast<int>(t.rings.size());
+      if (down) {
+        // A new component; it lies in the region of the non-free cell above it.
+        FreeSpaceComponent component;
+        component.first_pixel = {c, y};
+        component.polygon.outer = tracer.trace(c, y, 1, 0, id);
+        int parent = -1;
+        if (y > 0) {
+          const int ring = tracer.ring_left_of(c, y - 1, false);
+          if (ring >= 0) {
+            const TracedRings::RingInfo& info = t.rings[static_cast<std::size_t>(ring)];
+            parent = info.hole >= 0 ? ring : t.parent_hole_ring[static_cast<std::size_t>(info.component)];
+          }
+        }
+        t.rings.push_back({static_cast<int>(t.components.size()), -1});
+        t.components.push_back(std::move(component));
+        t.parent_hole_ring.push_back(parent);
+        t.hole_rings.emplace_back();
+      } else {
+        // A hole of the component that holds the free cell above it.
+        const int ring = tracer.ring_left_of(c, y - 1, true);
+        if (ring < 0) throw Error("internal: a hole without an enclosing free-space component");
+        const int owner = t.rings[static_cast<std::size_t>(ring)].component;
+        FreeSpaceComponent& component = t.components[static_cast<std::size_t>(owner)];
+        t.rings.push_back({owner, static_cast<int>(component.polygon.holes.size())});
+        component.polygon.holes.push_back(tracer.trace(c + 1, y, -1, 0, id));
+        t.hole_rings[static_cast<std::size_t>(owner)].push_back(id);
+      }
+    }
+  }
+  return t;
+}
+
+// Cell counts from the rings' areas (pixel-edge rings enclose exactly their cells): a component
+// is its outer ring minus its holes; a hole's own cells are its ring minus the islands in it.
+void count_cells(TracedRings& t) {
+  std::vector<double> ring_area(t.rings.size(), 0.0);
+  for (std::size_t k = 0; k < t.rings.size(); ++k) {
+    const FreeSpaceComponent& component = t.components[static_cast<std::size_t>(t.rings[k].component)];
+    const Ring& ring = t.rings[k].hole < 0 ? component.polygon.outer
+                                           : component.polygon.holes[static_cast<std::size_t>(t.rings[k].hole)];
+    ring_area[k] = std::abs(signed_area(ring));
+  }
+  std::vector<double> island_area(t.rings.size(), 0.0);
+  for (std::size_t i = 0; i < t.components.size(); ++i) {
+    if (t.parent_hole_ring[i] >= 0)
+      island_area[static_cast<std::size_t>(t.parent_hole_ring[i])] += std::abs(signed_area(t.components[i].polygon.outer));
+  }
+  for (std::size_t i = 0; i < t.components.size(); ++i) {
+    FreeSpaceComponent& component = t.components[i];
+    double cells = std::abs(signed_area(component.polygon.outer));
+    component.hole_cells.clear();
+    for (const int ring : t.hole_rings[i]) {
+      cells -= ring_area[static_cast<std::size_t>(ring)];
+      component.hole_cells.push_back(static_cast<int>(std::lround(ring_area[static_cast<std::size_t>(ring)] -
+                                                                  island_area[static_cast<std::size_t>(ring)])));
+    }
+    component.pixel_count = static_cast<int>(std::lround(cells));
+  }
+}
+
 }  // namespace
 
 cv::Mat remove_diagonal_pinches(const cv::Mat& free_mask, int* removed) {
@@ -151,89 +245,9 @@ cv::Mat remove_diagonal_pinches(const cv::Mat& free_mask, int* removed) {
 std::vector<FreeSpaceComponent> trace_components(const cv::Mat& mask_in) {
   if (mask_in.empty() || mask_in.type() != CV_8UC1) throw Error("the free-space mask must be a non-empty 8-bit image");
   const cv::Mat mask = mask_in.isContinuous() ? mask_in : mask_in.clone();
-  const int h = mask.rows, w = mask.cols;
-  Tracer tracer(mask);
-
-  // Rings in discovery order: what each one is and where it belongs.
-  struct RingInfo {
-    int component = -1;  // the free component it bounds
-    int hole = -1;       // index into that component's holes, or -1 for its outer ring
-  };
-  std::vector<RingInfo> rings;
-  std::vector<FreeSpaceComponent> components;
-  std::vector<int> parent_hole_ring;  // per component: the hole ring it lies in, -1 outside
-  std::vector<std::vector<int>> hole_rings;  // per component: ring id of each hole
-  const std::vector<unsigned char> nothing(static_cast<std::size_t>(w), 0);
-
-  // One scan over the horizontal edges, boundary row by boundary row: the first untraced edge
-  // with free space below is the top of a new component's first cell (its outer ring); one with
-  // free space above is the top of a hole's first cell. Rows are compared eight cells at a time.
-  for (int y = 0; y <= h; ++y) {
-    const unsigned char* above = y > 0 ? mask.ptr<unsigned char>(y - 1) : nothing.data();
-    const unsigned char* below = y < h ? mask.ptr<unsigned char>(y) : nothing.data();
-    for (int c = 0; c < w; ++c) {
-      if (c + 8 <= w && (c & 7) == 0 && load8(above + c) == load8(below + c)) {
-        c += 7;
-        continue;
-      }
-      const bool up = above[c] != 0, down = below[c] != 0;
-      if (up == down || tracer.visited(y, c)) continue;
-      const int id = static_cast<int>(rings.size());
-      if (down) {
-        // A new component; it lies in the region of the non-free cell above it.
-        FreeSpaceComponent component;
-        component.first_pixel = {c, y};
-        component.polygon.outer = tracer.trace(c, y, 1, 0, id);
-        int parent = -1;
-        if (y > 0) {
-          const int ring = tracer.ring_left_of(c, y - 1, false);
-          if (ring >= 0) {
-            const RingInfo& info = rings[static_cast<std::size_t>(ring)];
-            parent = info.hole >= 0 ? ring : parent_hole_ring[static_cast<std::size_t>(info.component)];
-          }
-        }
-        rings.push_back({static_cast<int>(components.size()), -1});
-        components.push_back(std::move(component));
-        parent_hole_ring.push_back(parent);
-        hole_rings.emplace_back();
-      } else {
-        // A hole of the component that holds the free cell above it.
-        const int ring = tracer.ring_left_of(c, y - 1, true);
-        if (ring < 0) throw Error("internal: a hole without an enclosing free-space component");
-        const int owner = rings[static_cast<std::size_t>(ring)].component;
-        FreeSpaceComponent& component = components[static_cast<std::size_t>(owner)];
-        rings.push_back({owner, static_cast<int>(component.polygon.holes.size())});
-        component.polygon.holes.push_back(tracer.trace(c + 1, y, -1, 0, id));
-        hole_rings[static_cast<std::size_t>(owner)].push_back(id);
-      }
-    }
-  }
-
-  // Cell counts from the rings' areas (pixel-edge rings enclose exactly their cells): a component
-  // is its outer ring minus its holes; a hole's own cells are its ring minus the islands in it.
-  std::vector<double> ring_area(rings.size(), 0.0);
-  for (std::size_t k = 0; k < rings.size(); ++k) {
-    const FreeSpaceComponent& component = components[static_cast<std::size_t>(rings[k].component)];
-    const Ring& ring = rings[k].hole < 0 ? component.polygon.outer : component.polygon.holes[static_cast<std::size_t>(rings[k].hole)];
-    ring_area[k] = std::abs(signed_area(ring));
-  }
-  std::vector<double> island_area(rings.size(), 0.0);
-  for (std::size_t i = 0; i < components.size(); ++i) {
-    if (parent_hole_ring[i] >= 0)
-      island_area[static_cast<std::size_t>(parent_hole_ring[i])] += std::abs(signed_area(components[i].polygon.outer));
-  }
-  for (std::size_t i = 0; i < components.size(); ++i) {
-    FreeSpaceComponent& component = components[i];
-    double cells = std::abs(signed_area(component.polygon.outer));
-    component.hole_cells.clear();
-    for (const int ring : hole_rings[i]) {
-      cells -= ring_area[static_cast<std::size_t>(ring)];
-      component.hole_cells.push_back(static_cast<int>(std::lround(ring_area[static_cast<std::size_t>(ring)] -
-                                                                  island_area[static_cast<std::size_t>(ring)])));
-    }
-    component.pixel_count = static_cast<int>(std::lround(cells));
-  }
-  return components;
+  TracedRings traced = trace_rings(mask);
+  count_cells(traced);
+  return std::move(traced.components);
 }
 
 FreeSpacePolygons free_space_polygons(const cv::Mat& free_mask, double resolution, const ContourOptions& options) {

@@ -169,6 +169,91 @@ void settle_orphans(const cv::Mat& labels, const LabelPresence& presence, const 
   for (const OrphanBlob& blob : *blobs) nearest_labels_in(labels, blob.window, blob.cells, settled_index, settled_label);
 }
 
+
+// Breadth-first search through free space from the labelled free cells next to unlabelled ones,
+// in raster order (ties between equally near labels are broken the same way every time, as if
+// every labelled cell were a source). Returns how many unlabelled cells it could not reach.
+std::size_t flood_from_labels(cv::Mat& labels, const cv::Mat& free_mask, const std::vector<int>& unlabelled,
+                              std::vector<LabelChange>* changes) {
+  const int h = labels.rows, w = labels.cols;
+  int* data = labels.ptr<int>(0);
+  const unsigned char* free = free_mask.ptr<unsigned char>(0);
+  std::vector<int> queue;
+  queue.reserve(unlabelled.size() * 2);
+  for (const int i : unlabelled) {
+    const int r = i / w, c = i % w;
+    const int neighbours[4] = {r > 0 ? i - w : -1, c > 0 ? i - 1 : -1, c + 1 < w ? i + 1 : -1, r + 1 < h ? i + w : -1};
+    for (const int j : neighbours)
+      if (j >= 0 && free[j] && data[j] > 0) queue.push_back(j);
+  }
+  std::sort(queue.begin(), queue.end());
+  queue.erase(std::unique(queue.begin(), queue.end()), queue.end());
+  std::size_t left = unlabelled.size();
+  for (std::size_t head = 0; head < queue.size() && left > 0; ++head) {
+    const int i = queue[head];
+    const int r = i / w, c = i % w;
+    const int neighbours[4] = {r > 0 ? i - w : -1, c > 0 ? i - 1 : -1, c + 1 < w ? i + 1 : -1, r + 1 < h ? i + w : -1};
+    for (const int j : neighbours) {
+      if (j < 0 || !free[j] || data[j] != 0) continue;
+      data[j] = data[i];
+      if (changes) changes->push_back({j, 0, data[i]});
+      queue.push_back(j);
+      --left;
+    }
+  }
+  return left;
+}
+
+// Specks settled by the ring search (index, label: not yet written) and those left for a window.
+struct SpeckLabels {
+  std::vector<int> orphans, settled_index, settled_label;
+};
+
+// Most specks lie next to a room: a search in square rings around the cell, stopped once the
+// rings are farther than the nearest label found (or at a cap), settles them without a window.
+// Nothing is written here, so the labelled cells taken are those present before this step, as in
+// settle_orphans' windows.
+SpeckLabels nearest_in_rings(const cv::Mat& labels, const LabelPresence& presence, const std::vector<int>& unlabelled) {
+  constexpr int kRingCap = 24;
+  const int h = labels.rows, w = labels.cols;
+  const int* data = labels.ptr<int>(0);
+  const cv::Rect all(0, 0, w, h);
+  SpeckLabels specks;
+  for (const int i : unlabelled) {
+    if (data[i] != 0) continue;
+    const int r = i / w, c = i % w;
+    if (!presence.maybe(cv::Rect(c - kRingCap, r - kRingCap, 2 * kRingCap + 1, 2 * kRingCap + 1) & all)) {
+      specks.orphans.push_back(i);  // no label within the rings' reach
+      continue;
+    }
+    long best = std::numeric_limits<long>::max();
+    int label = 0;
+    for (int k = 1; k <= kRingCap && static_cast<long>(k - 1) * (k - 1) < best; ++k) {
+      for (int y = r - k; y <= r + k; ++y) {
+        if (y < 0 || y >= h) continue;
+        const bool edge_row = y == r - k || y == r + k;
+        for (int x = c - k; x <= c + k; x += edge_row ? 1 : 2 * k) {
+          if (x < 0 || x >= w) continue;
+          const int l = data[y * w + x];
+          if (l <= 0) continue;
+          const long d = static_cast<long>(y - r) * (y - r) + static_cast<long>(x - c) * (x - c);
+          if (d < best) {
+            best = d;
+            label = l;
+          }
+        }
+      }
+    }
+    if (label > 0) {
+      specks.settled_index.push_back(i);
+      specks.settled_label.push_back(label);
+    } else {
+      specks.orphans.push_back(i);
+    }
+  }
+  return specks;
+}
+
 }  // namespace
 
 std::vector<CellSpan> polygon_spans(const std::vector<PolygonWithHoles>& polygons, cv::Size size) {
@@ -262,87 +347,21 @@ void complete_unlabelled_cells(cv::Mat& labels, const cv::Mat& free_mask, const 
   if (labels.type() != CV_32SC1 || free_mask.type() != CV_8UC1 || labels.size() != free_mask.size())
     throw Error("labels (CV_32SC1) and free-space mask (CV_8UC1) must have the same size");
   CV_Assert(labels.isContinuous() && free_mask.isContinuous());
-  const int h = labels.rows, w = labels.cols;
-  int* data = labels.ptr<int>(0);
-  const unsigned char* free = free_mask.ptr<unsigned char>(0);
-
-  // Breadth-first search through free space from the labelled free cells next to unlabelled ones,
-  // in raster order (ties between equally near labels are broken the same way every time, as if
-  // every labelled cell were a source).
-  std::vector<int> queue;
-  queue.reserve(unlabelled.size() * 2);
-  for (const int i : unlabelled) {
-    const int r = i / w, c = i % w;
-    const int neighbours[4] = {r > 0 ? i - w : -1, c > 0 ? i - 1 : -1, c + 1 < w ? i + 1 : -1, r + 1 < h ? i + w : -1};
-    for (const int j : neighbours)
-      if (j >= 0 && free[j] && data[j] > 0) queue.push_back(j);
-  }
-  std::sort(queue.begin(), queue.end());
-  queue.erase(std::unique(queue.begin(), queue.end()), queue.end());
-  std::size_t left = unlabelled.size();
-  for (std::size_t head = 0; head < queue.size() && left > 0; ++head) {
-    const int i = queue[head];
-    const int r = i / w, c = i % w;
-    const int neighbours[4] = {r > 0 ? i - w : -1, c > 0 ? i - 1 : -1, c + 1 < w ? i + 1 : -1, r + 1 < h ? i + w : -1};
-    for (const int j : neighbours) {
-      if (j < 0 || !free[j] || data[j] != 0) continue;
-      data[j] = data[i];
-      if (changes) changes->push_back({j, 0, data[i]});
-      queue.push_back(j);
-      --left;
-    }
-  }
-  if (left == 0) return;
+  if (flood_from_labels(labels, free_mask, unlabelled, changes) == 0) return;
 
   // Free cells cut off from every label (specks too small to be rooms): nearest label in a
-  // straight line. They are few and small; each cut-off blob is solved in a window around it that
-  // grows until it holds labels, then by the blob's own size again (so the nearest label of every
-  // cell of the blob lies inside), instead of a distance transform of the whole map.
-  // Most specks lie next to a room: a search in square rings around the cell, stopped once the
-  // rings are farther than the nearest label found (or at a cap), settles them without a window.
-  // The labelled cells taken are those present before this step, as in the window below.
-  std::vector<int> orphans, settled_index, settled_label;
-  constexpr int kRingCap = 24;
+  // straight line. They are few and small: most are settled by a ring search around them, the
+  // rest in a window around each blob that grows until it holds labels, then by the blob's own
+  // size again (so the nearest label of every cell of the blob lies inside), instead of a distance
+  // transform of the whole map.
   const LabelPresence presence(labels);
-  const cv::Rect all(0, 0, w, h);
-  for (const int i : unlabelled) {
-    if (data[i] != 0) continue;
-    const int r = i / w, c = i % w;
-    if (!presence.maybe(cv::Rect(c - kRingCap, r - kRingCap, 2 * kRingCap + 1, 2 * kRingCap + 1) & all)) {
-      orphans.push_back(i);  // no label within the rings' reach
-      continue;
-    }
-    long best = std::numeric_limits<long>::max();
-    int label = 0;
-    for (int k = 1; k <= kRingCap && static_cast<long>(k - 1) * (k - 1) < best; ++k) {
-      for (int y = r - k; y <= r + k; ++y) {
-        if (y < 0 || y >= h) continue;
-        const bool edge_row = y == r - k || y == r + k;
-        for (int x = c - k; x <= c + k; x += edge_row ? 1 : 2 * k) {
-          if (x < 0 || x >= w) continue;
-          const int l = data[y * w + x];
-          if (l <= 0) continue;
-          const long d = static_cast<long>(y - r) * (y - r) + static_cast<long>(x - c) * (x - c);
-          if (d < best) {
-            best = d;
-            label = l;
-          }
-        }
-      }
-    }
-    if (label > 0) {
-      settled_index.push_back(i);
-      settled_label.push_back(label);
-    } else {
-      orphans.push_back(i);
-    }
-  }
-
-  settle_orphans(labels, presence, orphans, settled_index, settled_label);
+  SpeckLabels specks = nearest_in_rings(labels, presence, unlabelled);
+  settle_orphans(labels, presence, specks.orphans, specks.settled_index, specks.settled_label);
   // Written only now, so that no speck takes its label from another speck.
-  for (std::size_t k = 0; k < settled_index.size(); ++k) {
-    data[settled_index[k]] = settled_label[k];
-    if (changes) changes->push_back({settled_index[k], 0, settled_label[k]});
+  int* data = labels.ptr<int>(0);
+  for (std::size_t k = 0; k < specks.settled_index.size(); ++k) {
+    data[specks.settled_index[k]] = specks.settled_label[k];
+    if (changes) changes->push_back({specks.settled_index[k], 0, specks.settled_label[k]});
   }
 }
 

@@ -182,7 +182,11 @@ double side_width(const EdgeGrid& grid, const Point2& mid, const Point2& u, cons
   return widest;
 }
 
-// Proper crossing or touching of two segments other than at shared end points.
+// Proper crossing or touching of two segments other than at shared end points. Not the
+// decomposition's conflict test (candidates.cpp), on purpose: that one uses exact predicates on
+// polygon corners (shared ends by vertex id) and counts a segment running along another from a
+// shared end, or the same segment, as a conflict; this one is floating point on loose points and
+// lets segments with a shared end overlap (narrowest_compatible's distance test drops those).
 bool segments_conflict(const Segment2& s, const Segment2& t) {
   auto orient = [](const Point2& a, const Point2& b, const Point2& c) { return cross(minus(b, a), minus(c, a)); };
   const bool shared = s.a == t.a || s.a == t.b || s.b == t.a || s.b == t.b;
@@ -488,14 +492,25 @@ std::vector<Segment2> find_door_cuts(const PolygonWithHoles& polygon, double res
   return narrowest_compatible(std::move(doors), resolution);
 }
 
-std::vector<PolygonWithHoles> split_polygon(const PolygonWithHoles& polygon, const std::vector<Segment2>& chords) {
-  if (chords.empty()) return {polygon};
+namespace {
+
+// A polygon's rings as one graph: directed half-edges between distinct vertices.
+struct HalfEdge {
+  int from, to, twin;
+};
+struct HalfEdgeGraph {
+  std::vector<Point2> vertices;
+  std::vector<HalfEdge> half;
+  std::vector<std::vector<int>> outgoing;  // per vertex: its half-edges, in insertion order
+};
+
+// The rings with every chord end point that is not a vertex inserted as a vertex of the edge it
+// lies on (in order along the edge), so chords meet the rings only at vertices. Throws if a chord
+// end lies on no edge.
+std::vector<Ring> rings_with_chord_ends(const PolygonWithHoles& polygon, const std::vector<Segment2>& chords) {
   std::vector<Ring> rings{polygon.outer};
   for (const Ring& hole : polygon.holes) rings.push_back(hole);
-
-  // Chord end points that are not vertices become vertices of the edge they lie on.
-  using Key = std::pair<double, double>;
-  std::map<Key, bool> is_vertex;
+  std::map<std::pair<double, double>, bool> is_vertex;
   for (const Ring& ring : rings)
     for (const Point2& p : ring) is_vertex[{p.x, p.y}] = true;
   std::map<std::pair<int, int>, std::vector<std::pair<double, Point2>>> inserts;  // (ring, edge) -> (t, point)
@@ -538,40 +553,46 @@ std::vector<PolygonWithHoles> split_polygon(const PolygonWithHoles& polygon, con
     }
     rings[r] = std::move(out);
   }
+  return rings;
+}
 
-  // Half-edges: ring edges (free space on their left) and both directions of every chord.
-  std::map<Key, int> vertex_id;
-  std::vector<Point2> vertices;
+// Half-edges: ring edges (free space on their left) and both directions of every chord, with
+// vertices numbered by first appearance so that the walk below is deterministic.
+HalfEdgeGraph half_edge_graph(const std::vector<Ring>& rings, const std::vector<Segment2>& chords) {
+  HalfEdgeGraph g;
+  std::map<std::pair<double, double>, int> vertex_id;
   auto id_of = [&](const Point2& p) {
-    const auto [it, added] = vertex_id.emplace(Key{p.x, p.y}, static_cast<int>(vertices.size()));
-    if (added) vertices.push_back(p);
+    const auto [it, added] = vertex_id.emplace(std::pair<double, double>{p.x, p.y}, static_cast<int>(g.vertices.size()));
+    if (added) g.vertices.push_back(p);
     return it->second;
   };
-  struct HalfEdge {
-    int from, to, twin;
-  };
-  std::vector<HalfEdge> half;
   for (const Ring& ring : rings)
-    for (std::size_t i = 0; i < ring.size(); ++i) half.push_back({id_of(ring[i]), id_of(ring[(i + 1) % ring.size()]), -1});
+    for (std::size_t i = 0; i < ring.size(); ++i) g.half.push_back({id_of(ring[i]), id_of(ring[(i + 1) % ring.size()]), -1});
   for (const Segment2& chord : chords) {
     const int a = id_of(chord.a), b = id_of(chord.b);
-    const int k = static_cast<int>(half.size());
-    half.push_back({a, b, k + 1});
-    half.push_back({b, a, k});
+    const int k = static_cast<int>(g.half.size());
+    g.half.push_back({a, b, k + 1});
+    g.half.push_back({b, a, k});
   }
-  std::vector<std::vector<int>> outgoing(vertices.size());
-  for (std::size_t k = 0; k < half.size(); ++k) outgoing[static_cast<std::size_t>(half[k].from)].push_back(static_cast<int>(k));
+  g.outgoing.resize(g.vertices.size());
+  for (std::size_t k = 0; k < g.half.size(); ++k) g.outgoing[static_cast<std::size_t>(g.half[k].from)].push_back(static_cast<int>(k));
+  return g;
+}
 
-  // Faces on the left: at each vertex leave along the edge that turns most to the left (never
-  // straight back along the chord just walked, unless it is the only way on).
+// Faces on the left of the half-edges, each used once: counter-clockwise cycles are the parts'
+// outer rings, clockwise ones their holes. Throws if a walk does not close (a cut leaves the
+// polygon).
+void trace_faces(const HalfEdgeGraph& g, std::vector<Ring>& outers, std::vector<Ring>& holes) {
+  // At each vertex leave along the edge that turns most to the left (never straight back along
+  // the chord just walked, unless it is the only way on).
   auto next_of = [&](int k) {
-    const HalfEdge& h = half[static_cast<std::size_t>(k)];
+    const HalfEdge& h = g.half[static_cast<std::size_t>(k)];
     int best = -1;
     double best_turn = -kInfinity;
-    for (const int o : outgoing[static_cast<std::size_t>(h.to)]) {
+    for (const int o : g.outgoing[static_cast<std::size_t>(h.to)]) {
       if (o == h.twin) continue;
-      const double t = turn_angle(vertices[static_cast<std::size_t>(h.from)], vertices[static_cast<std::size_t>(h.to)],
-                                  vertices[static_cast<std::size_t>(half[static_cast<std::size_t>(o)].to)]);
+      const double t = turn_angle(g.vertices[static_cast<std::size_t>(h.from)], g.vertices[static_cast<std::size_t>(h.to)],
+                                  g.vertices[static_cast<std::size_t>(g.half[static_cast<std::size_t>(o)].to)]);
       if (t > best_turn) {
         best_turn = t;
         best = o;
@@ -579,15 +600,14 @@ std::vector<PolygonWithHoles> split_polygon(const PolygonWithHoles& polygon, con
     }
     return best >= 0 ? best : h.twin;
   };
-  std::vector<bool> used(half.size(), false);
-  std::vector<Ring> outers, holes;
-  for (std::size_t start = 0; start < half.size(); ++start) {
+  std::vector<bool> used(g.half.size(), false);
+  for (std::size_t start = 0; start < g.half.size(); ++start) {
     if (used[start]) continue;
     Ring cycle;
     int k = static_cast<int>(start);
     while (k >= 0 && !used[static_cast<std::size_t>(k)]) {
       used[static_cast<std::size_t>(k)] = true;
-      cycle.push_back(vertices[static_cast<std::size_t>(half[static_cast<std::size_t>(k)].from)]);
+      cycle.push_back(g.vertices[static_cast<std::size_t>(g.half[static_cast<std::size_t>(k)].from)]);
       k = next_of(k);
     }
     if (k != static_cast<int>(start)) throw Error("the cuts do not split the polygon into faces (a cut leaves the polygon?)");
@@ -598,10 +618,14 @@ std::vector<PolygonWithHoles> split_polygon(const PolygonWithHoles& polygon, con
       holes.push_back(std::move(cycle));
     }
   }
+}
+
+// Every hole goes to the smallest part whose outer ring contains a point just left of the hole's
+// first edge: the part that owns it, even when parts nest.
+std::vector<PolygonWithHoles> parts_with_holes(std::vector<Ring>& outers, std::vector<Ring>& holes) {
   std::vector<PolygonWithHoles> parts;
   for (Ring& outer : outers) parts.push_back({std::move(outer), {}});
   for (Ring& hole : holes) {
-    // A point just left of the hole's first edge lies in the part that owns the hole.
     const Point2 d = minus(hole[1], hole[0]);
     const double l = length(d);
     const double e = 1e-4 * std::min(1.0, l);
@@ -620,6 +644,17 @@ std::vector<PolygonWithHoles> split_polygon(const PolygonWithHoles& polygon, con
     parts[static_cast<std::size_t>(owner)].holes.push_back(std::move(hole));
   }
   return parts;
+}
+
+}  // namespace
+
+std::vector<PolygonWithHoles> split_polygon(const PolygonWithHoles& polygon, const std::vector<Segment2>& chords) {
+  if (chords.empty()) return {polygon};
+  const std::vector<Ring> rings = rings_with_chord_ends(polygon, chords);
+  const HalfEdgeGraph graph = half_edge_graph(rings, chords);
+  std::vector<Ring> outers, holes;
+  trace_faces(graph, outers, holes);
+  return parts_with_holes(outers, holes);
 }
 
 }  // namespace topocut

@@ -103,6 +103,172 @@ std::size_t polygon_bytes(const PolygonWithHoles& p) {
   return n * sizeof(Point2) + p.holes.capacity() * sizeof(Ring);
 }
 
+// The binarized free space over window (255 free), computed with `reach` cells of context around
+// it, so that it equals the whole map's binarization there.
+cv::Mat binarized_window(const OccupancyGrid& grid, const cv::Rect& window, const BinarizeOptions& binarize,
+                         int reach) {
+  cv::Mat new_bin;
+  if (window.empty()) return new_bin;
+  if (trivial_binarization(binarize)) {
+    new_bin = grid.cells(window) == kFree;
+    return new_bin;
+  }
+  const cv::Rect context = grown(window, reach, grid.cells.size());
+  OccupancyGrid sub;
+  sub.cells = grid.cells(context);
+  sub.resolution = grid.resolution;
+  new_bin = free_space_mask(sub, binarize)(window - context.tl()).clone();
+  return new_bin;
+}
+
+// Points just left and right of the middle of cut a-b (as rooms_from_pieces), false for a cut of
+// no length: what decides which rooms a cut separates.
+bool cut_sides(const Point2& a, const Point2& b, Point2& left, Point2& right) {
+  const double dx = b.x - a.x, dy = b.y - a.y;
+  const double length = std::hypot(dx, dy);
+  if (!(length > 0.0) || !std::isfinite(length)) return false;
+  const double eps = 1e-3;  // cells; as rooms_from_pieces
+  const Point2 mid{(a.x + b.x) / 2.0, (a.y + b.y) / 2.0};
+  left = {mid.x - dy / length * eps, mid.y + dx / length * eps};
+  right = {mid.x + dy / length * eps, mid.y - dx / length * eps};
+  return true;
+}
+
+// The room of the region (region_room[id] set) on the other side of an old cut a-b (window
+// coordinates) from `outside`, or 0. The region's pieces follow pixel edges while an old cut may
+// run diagonally, so the cut's own side test can miss them: look at the labelled cells across the
+// cut instead, nearest first.
+int region_room_beside(const cv::Mat& labels, const cv::Rect& window, const std::vector<char>& region_room,
+                       const Point2& a, const Point2& b, int outside) {
+  const double dx = b.x - a.x, dy = b.y - a.y;
+  const double length = std::hypot(dx, dy);
+  if (!(length > 0.0) || !std::isfinite(length)) return 0;
+  const Point2 normal{-dy / length, dx / length};
+  for (const double t : {0.5, 0.25, 0.75})
+    for (const double k : {0.5, 1.0, 1.5, 2.0, 3.0})
+      for (const double side : {1.0, -1.0}) {
+        const double x = a.x + t * dx + side * k * normal.x, y = a.y + t * dy + side * k * normal.y;
+        const int column = static_cast<int>(std::floor(x + 0.5));
+        const int row = window.height - 1 - static_cast<int>(std::floor(y + 0.5));
+        if (column < 0 || row < 0 || column >= window.width || row >= window.height) continue;
+        const int id = labels.at<int>(window.y + row, window.x + column);
+        if (id > 0 && id != outside && region_room[static_cast<std::size_t>(id)]) return id;
+      }
+  return 0;
+}
+
+// The changed cells of one update, over the window where the binarized free space may differ.
+struct ChangeMask {
+  cv::Rect window;  // the changed box grown by the binarization's reach
+  cv::Mat change;   // per window cell: kGained, kLost, kReshaped or 0
+  int changed_cells = 0;
+};
+
+// A connected blob of changed cells and the rooms it touches (old labels of its cells and of the
+// cells around its newly free cells).
+struct Blob {
+  int gained = 0;
+  bool structural = false;  // lost or reshaped cells: the touched rooms must be decomposed again
+  std::vector<int> touched;
+  cv::Rect box;
+  bool absorb = false;
+};
+
+// The old rooms and pending cells one update decomposes again.
+struct Region {
+  std::vector<int> ids;        // old rooms: those the change touched first, then their neighbours
+  std::vector<char> member;    // by room id: 1 if in ids
+  cv::Rect window;             // contains the pending cells and every cell of the rooms in ids
+  bool whole_map = false;
+};
+
+// What one pass over the re-decomposed region learns about each piece (index 1..pieces).
+struct PieceTally {
+  int n_old = 0;                   // old rooms of the region
+  std::vector<long long> overlap;  // [piece * (n_old + 1) + j]: cells shared with old room j; j = n_old: pending
+  std::vector<long long> cells, first_cell, sum_c, sum_r;
+  std::vector<int> min_c, max_c, min_r, max_r;
+};
+
+// The region's new decomposition and the ids its pieces take.
+struct RegionPieces {
+  cv::Mat raw;               // 255 where a cell of the region is free (to be labelled)
+  int region_cells = 0;
+  PieceSet set;              // pieces and cuts in window grid coordinates
+  int pieces = 0;
+  cv::Mat local;             // piece index + 1 of each cell of the window (0 outside the region)
+  PieceTally tally;
+  std::vector<int> id_of_piece;  // by piece index + 1: its room id
+  std::vector<char> reused;      // by old room id: its id went to a piece
+};
+
+// Window grid coordinates (pixel centres at integers, y up) against world metres.
+struct WindowFrame {
+  Point2 origin;
+  double resolution;
+  cv::Rect window;
+  double y_offset;  // rows of the map below the window
+
+  Point2 to_world(const Point2& p) const {
+    return Point2{origin.x + (p.x + window.x + 0.5) * resolution, origin.y + (p.y + y_offset + 0.5) * resolution};
+  }
+  Point2 to_window(const Point2& p) const {
+    return Point2{(p.x - origin.x) / resolution - 0.5 - window.x, (p.y - origin.y) / resolution - 0.5 - y_offset};
+  }
+};
+
+// Passages with their door flags, in the order they were found.
+struct PassageList {
+  std::vector<Passage> passages;
+  std::vector<char> doors;
+};
+
+// One pass over the region: every piece's overlap with every old room of the region, its cell
+// count, first cell, coordinate sums and bounding box. A free cell of the region without a piece
+// is a broken decomposition: thrown, never labelled 0.
+PieceTally tally_pieces(const cv::Mat& labels, const RegionPieces& found, const Region& region) {
+  const cv::Rect& window = region.window;
+  const std::vector<int>& region_ids = region.ids;
+  PieceTally t;
+  const int n_old = static_cast<int>(region_ids.size());
+  t.n_old = n_old;
+  std::vector<int> old_index(region.member.size(), -1);
+  for (int j = 0; j < n_old; ++j) old_index[static_cast<std::size_t>(region_ids[static_cast<std::size_t>(j)])] = j;
+  const std::size_t slots = static_cast<std::size_t>(found.pieces) + 1;
+  t.overlap.assign(slots * static_cast<std::size_t>(n_old + 1), 0);  // column n_old: pending
+  t.cells.assign(slots, 0);
+  t.first_cell.assign(slots, LLONG_MAX);
+  t.sum_c.assign(slots, 0);
+  t.sum_r.assign(slots, 0);
+  t.min_c.assign(slots, INT_MAX);
+  t.max_c.assign(slots, -1);
+  t.min_r.assign(slots, INT_MAX);
+  t.max_r.assign(slots, -1);
+  for (int r = 0; r < window.height; ++r) {
+    const int* l = labels.ptr<int>(window.y + r) + window.x;
+    const int* k = found.local.ptr<int>(r);
+    const unsigned char* in = found.raw.ptr<unsigned char>(r);
+    const int gr = window.y + r;
+    for (int c = 0; c < window.width; ++c) {
+      if (!in[c]) continue;
+      const int piece = k[c];
+      if (piece <= 0) throw Error("internal: a free cell of the re-decomposed region got no room");
+      const std::size_t p = static_cast<std::size_t>(piece);
+      if (t.cells[p]++ == 0) t.first_cell[p] = static_cast<long long>(r) * window.width + c;
+      const int j = l[c] > 0 ? old_index[static_cast<std::size_t>(l[c])] : n_old;
+      ++t.overlap[p * static_cast<std::size_t>(n_old + 1) + static_cast<std::size_t>(j)];
+      const int gc = window.x + c;
+      t.sum_c[p] += gc;
+      t.sum_r[p] += gr;
+      t.min_c[p] = std::min(t.min_c[p], gc);
+      t.max_c[p] = std::max(t.max_c[p], gc);
+      t.min_r[p] = std::min(t.min_r[p], gr);
+      t.max_r[p] = std::max(t.max_r[p], gr);
+    }
+  }
+  return t;
+}
+
 }  // namespace
 
 struct IncrementalSegmenter::State {
@@ -126,8 +292,21 @@ struct IncrementalSegmenter::State {
   bool move_frame(const OccupancyGrid& grid, bool& restarted);
   void recount_rooms();
   void process(const OccupancyGrid& grid, const cv::Rect& changed, const std::string& batch_reason);
-  void redecompose(const OccupancyGrid& grid, std::vector<int> region_ids, cv::Rect window, bool whole_map,
-                   std::vector<int>& touched_rooms);
+  ChangeMask take_changes(const OccupancyGrid& grid, const cv::Rect& changed);
+  std::vector<Blob> find_blobs(const ChangeMask& mask, cv::Mat& blob_of) const;
+  Region choose_region(std::vector<Blob>& blobs, bool whole_map);
+  std::vector<int> apply_changes(const ChangeMask& mask, const cv::Mat& blob_of, const std::vector<Blob>& blobs);
+  void redecompose(Region region, std::vector<int>& touched_rooms);
+  void add_neighbour_rooms(Region& region) const;
+  RegionPieces decompose_region(Region& region);
+  void report_region(const Region& region, int region_cells);
+  void match_ids(const Region& region, RegionPieces& found);
+  std::vector<int> retire_old_rooms(const Region& region, const RegionPieces& found);
+  void adopt_pieces(const RegionPieces& found, const WindowFrame& frame);
+  void keep_border_passages(const Region& region, const RegionPieces& found, const WindowFrame& frame,
+                            PassageList& out) const;
+  void add_new_passages(const RegionPieces& found, const WindowFrame& frame, PassageList& out) const;
+  void store_sorted(const PassageList& list);
   void refresh_room(int id, const PolygonWithHoles* polygon);
   Point2 room_centroid(const RoomState& room, int height) const;
 };
@@ -293,120 +472,123 @@ const Segmentation& IncrementalSegmenter::State::update(const OccupancyGrid& gri
 
 void IncrementalSegmenter::State::process(const OccupancyGrid& grid, const cv::Rect& changed,
                                           const std::string& batch_reason) {
-  const cv::Size size = grid.cells.size();
-  const BinarizeOptions& binarize = options.segment.binarize;
-  const bool trivial = trivial_binarization(binarize);
-  const int reach = binarization_reach(binarize, resolution);
-
-  // The binarized free space can change up to `reach` cells away from a changed cell; computing
-  // it there needs the cells up to `reach` farther again.
-  const cv::Rect window = grown(changed, reach, size);
-  cv::Mat new_bin;
-  if (!window.empty()) {
-    if (trivial) {
-      new_bin = grid.cells(window) == kFree;
-    } else {
-      const cv::Rect context = grown(window, reach, size);
-      OccupancyGrid sub;
-      sub.cells = grid.cells(context);
-      sub.resolution = grid.resolution;
-      new_bin = free_space_mask(sub, binarize)(window - context.tl()).clone();
-    }
-  }
-
-  // The change mask over the window, then the new cells and free space become the state.
-  cv::Mat change = cv::Mat::zeros(window.size(), CV_8UC1);
-  int changed_cells = 0;
-  for (int r = 0; r < window.height; ++r) {
-    const unsigned char* old_cell = cells.ptr<unsigned char>(window.y + r) + window.x;
-    const unsigned char* new_cell = grid.cells.ptr<unsigned char>(window.y + r) + window.x;
-    const unsigned char* old_bin = bin.ptr<unsigned char>(window.y + r) + window.x;
-    const unsigned char* nb = new_bin.ptr<unsigned char>(r);
-    unsigned char* d = change.ptr<unsigned char>(r);
-    for (int c = 0; c < window.width; ++c) {
-      const bool was = old_cell[c] == kFree, is = new_cell[c] == kFree;
-      if (is && !was) d[c] = kGained;
-      else if (was && !is) d[c] = kLost;
-      else if (was && is && (old_bin[c] != 0) != (nb[c] != 0)) d[c] = kReshaped;
-      changed_cells += d[c] != 0;
-    }
-  }
-  if (!changed.empty()) grid.cells(changed).copyTo(cells(changed));
-  if (!window.empty()) new_bin.copyTo(bin(window));
-  report.changed_cells = changed_cells;
-  if (changed_cells == 0 && batch_reason.empty()) {
+  const ChangeMask mask = take_changes(grid, changed);
+  report.changed_cells = mask.changed_cells;
+  if (mask.changed_cells == 0 && batch_reason.empty()) {
     report.kind = IncrementalUpdateReport::Kind::kUnchanged;
     return;
   }
 
   bool whole_map = !batch_reason.empty();
   report.reason = batch_reason;
-  if (!whole_map && static_cast<double>(changed_cells) > options.batch_fraction * static_cast<double>(free_cells)) {
+  if (!whole_map &&
+      static_cast<double>(mask.changed_cells) > options.batch_fraction * static_cast<double>(free_cells)) {
     whole_map = true;
     report.reason = free_cells == 0 ? "first free space" : "more than the batch fraction of the free space changed";
   }
 
-  // Blobs of changed cells and the rooms each one touches (old labels of its cells and of the
-  // cells around its newly free cells).
-  struct Blob {
-    int gained = 0;
-    bool structural = false;  // lost or reshaped cells: the touched rooms must be decomposed again
-    std::vector<int> touched;
-    cv::Rect box;
-    bool absorb = false;
-  };
-  std::vector<Blob> blobs;
   cv::Mat blob_of;
-  cv::Mat& labels = result.labels;
-  const int h = size.height, w = size.width;
-  if (changed_cells > 0) {
-    cv::Mat stats, centroids;
-    const int n = cv::connectedComponentsWithStats(change != 0, blob_of, stats, centroids, 8, CV_32S);
-    blobs.resize(static_cast<std::size_t>(n));
-    for (int b = 1; b < n; ++b)
-      blobs[static_cast<std::size_t>(b)].box =
-          cv::Rect(stats.at<int>(b, cv::CC_STAT_LEFT) + window.x, stats.at<int>(b, cv::CC_STAT_TOP) + window.y,
-                   stats.at<int>(b, cv::CC_STAT_WIDTH), stats.at<int>(b, cv::CC_STAT_HEIGHT));
-    for (int r = 0; r < window.height; ++r) {
-      const unsigned char* d = change.ptr<unsigned char>(r);
-      const int* b = blob_of.ptr<int>(r);
-      for (int c = 0; c < window.width; ++c) {
-        if (d[c] == 0) continue;
-        Blob& blob = blobs[static_cast<std::size_t>(b[c])];
-        const int gr = window.y + r, gc = window.x + c;
-        if (d[c] & (kLost | kReshaped)) {
-          blob.structural = true;
-          const int id = labels.at<int>(gr, gc);
-          if (id > 0) add_unique(blob.touched, id);
-        }
-        if (d[c] & kGained) {
-          ++blob.gained;
-          for (int nr = std::max(0, gr - 1); nr <= std::min(h - 1, gr + 1); ++nr) {
-            const int* row = labels.ptr<int>(nr);
-            for (int nc = std::max(0, gc - 1); nc <= std::min(w - 1, gc + 1); ++nc)
-              if (row[nc] > 0) add_unique(blob.touched, row[nc]);
-          }
+  std::vector<Blob> blobs;
+  if (mask.changed_cells > 0) blobs = find_blobs(mask, blob_of);
+  Region region = choose_region(blobs, whole_map);
+  std::vector<int> touched_rooms = apply_changes(mask, blob_of, blobs);  // rooms whose area or cells changed
+
+  report.kind = whole_map ? IncrementalUpdateReport::Kind::kBatch : IncrementalUpdateReport::Kind::kIncremental;
+  if (!region.ids.empty() || !region.window.empty()) {
+    redecompose(std::move(region), touched_rooms);
+  }
+  for (const int id : touched_rooms) refresh_room(id, nullptr);
+}
+
+// The state's cells and free space are the grid's from here on; the returned mask is all that
+// remains of how they were.
+ChangeMask IncrementalSegmenter::State::take_changes(const OccupancyGrid& grid, const cv::Rect& changed) {
+  const BinarizeOptions& binarize = options.segment.binarize;
+  const int reach = binarization_reach(binarize, resolution);
+
+  // The binarized free space can change up to `reach` cells away from a changed cell; computing
+  // it there needs the cells up to `reach` farther again.
+  ChangeMask mask;
+  mask.window = grown(changed, reach, grid.cells.size());
+  const cv::Rect& window = mask.window;
+  const cv::Mat new_bin = binarized_window(grid, window, binarize, reach);
+
+  mask.change = cv::Mat::zeros(window.size(), CV_8UC1);
+  for (int r = 0; r < window.height; ++r) {
+    const unsigned char* old_cell = cells.ptr<unsigned char>(window.y + r) + window.x;
+    const unsigned char* new_cell = grid.cells.ptr<unsigned char>(window.y + r) + window.x;
+    const unsigned char* old_bin = bin.ptr<unsigned char>(window.y + r) + window.x;
+    const unsigned char* nb = new_bin.ptr<unsigned char>(r);
+    unsigned char* d = mask.change.ptr<unsigned char>(r);
+    for (int c = 0; c < window.width; ++c) {
+      const bool was = old_cell[c] == kFree, is = new_cell[c] == kFree;
+      if (is && !was) d[c] = kGained;
+      else if (was && !is) d[c] = kLost;
+      else if (was && is && (old_bin[c] != 0) != (nb[c] != 0)) d[c] = kReshaped;
+      mask.changed_cells += d[c] != 0;
+    }
+  }
+  if (!changed.empty()) grid.cells(changed).copyTo(cells(changed));
+  if (!window.empty()) new_bin.copyTo(bin(window));
+  return mask;
+}
+
+// Blobs of changed cells (8-connected), each with the rooms it touches in raster order of first
+// contact: the order in which choose_region adds them, so region ids never depend on history.
+std::vector<Blob> IncrementalSegmenter::State::find_blobs(const ChangeMask& mask, cv::Mat& blob_of) const {
+  const cv::Rect& window = mask.window;
+  const cv::Mat& labels = result.labels;
+  const int h = labels.rows, w = labels.cols;
+  cv::Mat stats, centroids;
+  const int n = cv::connectedComponentsWithStats(mask.change != 0, blob_of, stats, centroids, 8, CV_32S);
+  std::vector<Blob> blobs(static_cast<std::size_t>(n));
+  for (int b = 1; b < n; ++b)
+    blobs[static_cast<std::size_t>(b)].box =
+        cv::Rect(stats.at<int>(b, cv::CC_STAT_LEFT) + window.x, stats.at<int>(b, cv::CC_STAT_TOP) + window.y,
+                 stats.at<int>(b, cv::CC_STAT_WIDTH), stats.at<int>(b, cv::CC_STAT_HEIGHT));
+  for (int r = 0; r < window.height; ++r) {
+    const unsigned char* d = mask.change.ptr<unsigned char>(r);
+    const int* b = blob_of.ptr<int>(r);
+    for (int c = 0; c < window.width; ++c) {
+      if (d[c] == 0) continue;
+      Blob& blob = blobs[static_cast<std::size_t>(b[c])];
+      const int gr = window.y + r, gc = window.x + c;
+      if (d[c] & (kLost | kReshaped)) {
+        blob.structural = true;
+        const int id = labels.at<int>(gr, gc);
+        if (id > 0) add_unique(blob.touched, id);
+      }
+      if (d[c] & kGained) {
+        ++blob.gained;
+        for (int nr = std::max(0, gr - 1); nr <= std::min(h - 1, gr + 1); ++nr) {
+          const int* row = labels.ptr<int>(nr);
+          for (int nc = std::max(0, gc - 1); nc <= std::min(w - 1, gc + 1); ++nc)
+            if (row[nc] > 0) add_unique(blob.touched, row[nc]);
         }
       }
     }
   }
+  return blobs;
+}
 
-  // Decide per blob: join the one room it touches (small, only newly free cells) or be decomposed
-  // again together with every room it touches.
+// Decides per blob: join the one room it touches (small, only newly free cells) or be decomposed
+// again together with every room it touches. A room's allowance is charged as its blobs are seen,
+// so later blobs see what earlier ones took.
+Region IncrementalSegmenter::State::choose_region(std::vector<Blob>& blobs, bool whole_map) {
   const long long absorb_cells =
       static_cast<long long>(std::floor(options.absorb_area / (resolution * resolution) + 1e-9));
-  std::vector<int> region_ids;
+  Region region;
+  region.whole_map = whole_map;
   std::vector<char> in_region(rooms.size(), 0);
   auto add_region = [&](int id) {
     if (!in_region[static_cast<std::size_t>(id)]) {
       in_region[static_cast<std::size_t>(id)] = 1;
-      region_ids.push_back(id);
+      region.ids.push_back(id);
     }
   };
   if (whole_map)
     for (std::size_t id = 1; id < rooms.size(); ++id)
       if (rooms[id].alive) add_region(static_cast<int>(id));
-  cv::Rect region_box;
   // A room takes newly seen cells without a decomposition until they add up to its allowance.
   auto allowance = [&](const RoomState& room) {
     return std::max(absorb_cells, static_cast<long long>(options.absorb_fraction * static_cast<double>(room.cells)));
@@ -424,15 +606,21 @@ void IncrementalSegmenter::State::process(const OccupancyGrid& grid, const cv::R
       ++report.absorbed_blobs;
     } else {
       for (const int id : blob.touched) add_region(id);
-      region_box = unite(region_box, blob.box);
+      region.window = unite(region.window, blob.box);
     }
   }
+  return region;
+}
 
-  // Apply the cell changes to the labels: lost cells leave their room, absorbed ones join theirs,
-  // the others wait for the decomposition.
-  std::vector<int> touched_rooms;  // rooms whose area or cells changed (for result.rooms)
+// Applies the cell changes to the labels: lost cells leave their room, absorbed ones join theirs,
+// the others wait (kPending) for the decomposition. Returns the rooms whose cells changed.
+std::vector<int> IncrementalSegmenter::State::apply_changes(const ChangeMask& mask, const cv::Mat& blob_of,
+                                                            const std::vector<Blob>& blobs) {
+  const cv::Rect& window = mask.window;
+  cv::Mat& labels = result.labels;
+  std::vector<int> touched_rooms;
   for (int r = 0; r < window.height; ++r) {
-    const unsigned char* d = change.ptr<unsigned char>(r);
+    const unsigned char* d = mask.change.ptr<unsigned char>(r);
     const int* b = blob_of.empty() ? nullptr : blob_of.ptr<int>(r);
     int* l = labels.ptr<int>(window.y + r) + window.x;
     for (int c = 0; c < window.width; ++c) {
@@ -461,27 +649,56 @@ void IncrementalSegmenter::State::process(const OccupancyGrid& grid, const cv::R
       }
     }
   }
-
-  report.kind = whole_map ? IncrementalUpdateReport::Kind::kBatch : IncrementalUpdateReport::Kind::kIncremental;
-  if (!region_ids.empty() || !region_box.empty()) {
-    redecompose(grid, region_ids, region_box, whole_map, touched_rooms);
-  }
-  for (const int id : touched_rooms) refresh_room(id, nullptr);
+  return touched_rooms;
 }
 
-// Decomposes again the free cells of the rooms in region_ids plus the pending cells in window, with
+// Decomposes again the free cells of the rooms in region plus the pending cells in its window, with
 // the batch stages, and gives the pieces ids (an old room's id goes to the piece that covers at
 // least half of it). Updates labels, room states, result.rooms and passages.
-void IncrementalSegmenter::State::redecompose(const OccupancyGrid& grid, std::vector<int> region_ids, cv::Rect window,
-                                              bool whole_map, std::vector<int>& touched_rooms) {
-  cv::Mat& labels = result.labels;
-  const int h = labels.rows;
-  std::vector<char> in_region(rooms.size(), 0);
+void IncrementalSegmenter::State::redecompose(Region region, std::vector<int>& touched_rooms) {
+  add_neighbour_rooms(region);
+  RegionPieces found = decompose_region(region);
+  report_region(region, found.region_cells);
+  const cv::Rect& window = region.window;
+
+  found.pieces = static_cast<int>(found.set.pieces.size());
+  if (found.pieces > 0) {
+    found.local = rasterize_polygons(found.set.pieces, window.size());
+    fill_free_space_labels(found.local, found.raw);
+  } else {
+    found.local = cv::Mat::zeros(window.size(), CV_32SC1);
+  }
+  found.tally = tally_pieces(result.labels, found, region);
+  match_ids(region, found);
+
+  const std::vector<int> removed = retire_old_rooms(region, found);
+  const double y_offset = result.labels.rows - window.height - window.y;
+  const WindowFrame frame{origin, resolution, window, y_offset};
+  for (const int id : removed) refresh_room(id, nullptr);
+  adopt_pieces(found, frame);
+  // Rooms absorbed into this decomposition are refreshed here; the caller must not revive them.
+  touched_rooms.erase(std::remove_if(touched_rooms.begin(), touched_rooms.end(),
+                                     [&](int id) { return region.member[static_cast<std::size_t>(id)] != 0; }),
+                      touched_rooms.end());
+
+  // Passages: cuts on the region's border keep their outside room and find their inside one again;
+  // cuts inside the region are replaced by the new decomposition's cuts.
+  PassageList list;
+  list.passages.reserve(result.passages.size() + found.set.cuts.size());
+  keep_border_passages(region, found, frame, list);
+  add_new_passages(found, frame, list);
+  store_sorted(list);
+}
+
+// The rooms next to the region go with it (one ring, through the passages): batch decides on
+// the cuts between them again when it finds doors and merges pieces into rooms, and can only do
+// so with both sides in view. A door found while one side was only partly seen (or cut short by
+// the region's border) is not final, hence doors too unless options say otherwise.
+void IncrementalSegmenter::State::add_neighbour_rooms(Region& region) const {
+  std::vector<int>& region_ids = region.ids;
+  std::vector<char>& in_region = region.member;
+  in_region.assign(rooms.size(), 0);
   for (const int id : region_ids) in_region[static_cast<std::size_t>(id)] = 1;
-  // The rooms next to the region go with it (one ring, through the passages): batch decides on
-  // the cuts between them again when it finds doors and merges pieces into rooms, and can only do
-  // so with both sides in view. A door found while one side was only partly seen (or cut short by
-  // the region's border) is not final, hence doors too unless options say otherwise.
   const std::size_t core = region_ids.size();
   for (std::size_t k = 0; k < result.passages.size(); ++k) {
     if (passage_door[k] && !options.neighbours_across_doors) continue;
@@ -494,17 +711,23 @@ void IncrementalSegmenter::State::redecompose(const OccupancyGrid& grid, std::ve
       region_ids.push_back(other);
   }
   for (std::size_t k = core; k < region_ids.size(); ++k) in_region[static_cast<std::size_t>(region_ids[k])] = 1;
-  for (const int id : region_ids) window = unite(window, rooms[static_cast<std::size_t>(id)].box);
+  for (const int id : region_ids) region.window = unite(region.window, rooms[static_cast<std::size_t>(id)].box);
+}
 
-  // The region's masks: raw free cells (to be labelled) and binarized ones (to be decomposed).
-  cv::Mat raw, binarized;
-  PieceSet set;
-  cv::Mat local;
-  int region_cells = 0;
+// The region's free cells (raw) and their decomposition into pieces, in window grid coordinates.
+// Where binarization leaves nothing of a region that has free cells, the region grows to the whole
+// map, as batch would take it; a map with no binarized free space at all throws.
+RegionPieces IncrementalSegmenter::State::decompose_region(Region& region) {
+  const cv::Mat& labels = result.labels;
+  std::vector<char>& in_region = region.member;
+  cv::Rect& window = region.window;
+  RegionPieces found;
+  cv::Mat& raw = found.raw;
+  cv::Mat binarized;
   for (int attempt = 0; attempt < 2; ++attempt) {
     raw.create(window.size(), CV_8UC1);
     binarized.create(window.size(), CV_8UC1);
-    region_cells = 0;
+    found.region_cells = 0;
     int binarized_cells = 0;
     // member[id + 1]: 255 if cells labelled id are in the region (kPending = -1 always is).
     std::vector<unsigned char> member(rooms.size() + 1, 0);
@@ -520,79 +743,52 @@ void IncrementalSegmenter::State::redecompose(const OccupancyGrid& grid, std::ve
         const unsigned char in = lut[l[c]];  // labels are >= kPending
         out_raw[c] = in;
         out_bin[c] = in & b[c];
-        region_cells += in & 1;
+        found.region_cells += in & 1;
         binarized_cells += out_bin[c] & 1;
       }
     }
-    set = PieceSet{};
+    found.set = PieceSet{};
     if (binarized_cells > 0) {
       const FreeSpacePolygons polygons = free_space_polygons(binarized, resolution, options.segment.contours);
       for (const FreeSpaceComponent& component : polygons.components)
-        set.append(decompose_component(component, resolution, options.segment));
+        found.set.append(decompose_component(component, resolution, options.segment));
     }
-    if (region_cells == 0 || !set.pieces.empty()) break;
+    if (found.region_cells == 0 || !found.set.pieces.empty()) break;
     // Free cells but nothing left after binarization here: as batch would, take the whole map.
-    if (whole_map || attempt == 1)
+    if (region.whole_map || attempt == 1)
       throw Error("no free space is left after inflating obstacles by the robot radius and filtering");
-    whole_map = true;
+    region.whole_map = true;
     for (std::size_t id = 1; id < rooms.size(); ++id)
       if (rooms[id].alive && !in_region[id]) {
         in_region[id] = 1;
-        region_ids.push_back(static_cast<int>(id));
+        region.ids.push_back(static_cast<int>(id));
         window = unite(window, rooms[id].box);
       }
     report.kind = IncrementalUpdateReport::Kind::kBatch;
     report.reason = "no binarized free space in the changed region";
   }
-  report.region = window;
+  return found;
+}
+
+// The report names the region as finally decomposed, and calls it batch when it took every room.
+void IncrementalSegmenter::State::report_region(const Region& region, int region_cells) {
+  report.region = region.window;
   report.region_cells = region_cells;
-  report.redecomposed_rooms = static_cast<int>(region_ids.size());
-  bool every_room = !region_ids.empty();
-  for (std::size_t id = 1; id < rooms.size() && every_room; ++id) every_room = !rooms[id].alive || in_region[id];
-  if (!whole_map && every_room) {
+  report.redecomposed_rooms = static_cast<int>(region.ids.size());
+  bool every_room = !region.ids.empty();
+  for (std::size_t id = 1; id < rooms.size() && every_room; ++id) every_room = !rooms[id].alive || region.member[id];
+  if (!region.whole_map && every_room) {
     report.kind = IncrementalUpdateReport::Kind::kBatch;
     report.reason = "the change touched every room";
   }
+}
 
-  const int pieces = static_cast<int>(set.pieces.size());
-  if (pieces > 0) {
-    local = rasterize_polygons(set.pieces, window.size());
-    fill_free_space_labels(local, raw);
-  } else {
-    local = cv::Mat::zeros(window.size(), CV_32SC1);
-  }
-
-  // One pass over the region: every piece's overlap with every old room of the region, its cell
-  // count, first cell, coordinate sums and bounding box.
-  const int n_old = static_cast<int>(region_ids.size());
-  std::vector<int> old_index(rooms.size(), -1);
-  for (int j = 0; j < n_old; ++j) old_index[static_cast<std::size_t>(region_ids[static_cast<std::size_t>(j)])] = j;
-  const std::size_t slots = static_cast<std::size_t>(pieces) + 1;
-  std::vector<long long> overlap(slots * static_cast<std::size_t>(n_old + 1), 0);  // column n_old: pending
-  std::vector<long long> piece_cells(slots, 0), first_cell(slots, LLONG_MAX), sum_c(slots, 0), sum_r(slots, 0);
-  std::vector<int> min_c(slots, INT_MAX), max_c(slots, -1), min_r(slots, INT_MAX), max_r(slots, -1);
-  for (int r = 0; r < window.height; ++r) {
-    const int* l = labels.ptr<int>(window.y + r) + window.x;
-    const int* k = local.ptr<int>(r);
-    const unsigned char* in = raw.ptr<unsigned char>(r);
-    const int gr = window.y + r;
-    for (int c = 0; c < window.width; ++c) {
-      if (!in[c]) continue;
-      const int piece = k[c];
-      if (piece <= 0) throw Error("internal: a free cell of the re-decomposed region got no room");
-      const std::size_t p = static_cast<std::size_t>(piece);
-      if (piece_cells[p]++ == 0) first_cell[p] = static_cast<long long>(r) * window.width + c;
-      const int j = l[c] > 0 ? old_index[static_cast<std::size_t>(l[c])] : n_old;
-      ++overlap[p * static_cast<std::size_t>(n_old + 1) + static_cast<std::size_t>(j)];
-      const int gc = window.x + c;
-      sum_c[p] += gc;
-      sum_r[p] += gr;
-      min_c[p] = std::min(min_c[p], gc);
-      max_c[p] = std::max(max_c[p], gc);
-      min_r[p] = std::min(min_r[p], gr);
-      max_r[p] = std::max(max_r[p], gr);
-    }
-  }
+// An old room's id goes to the piece sharing the most cells with it if that is at least half of
+// the room (largest overlaps first, ties by piece, then room); the other pieces get new ids in
+// raster order of their first cells, deterministic like batch numbering.
+void IncrementalSegmenter::State::match_ids(const Region& region, RegionPieces& found) {
+  const PieceTally& t = found.tally;
+  const int pieces = found.pieces, n_old = t.n_old;
   struct Candidate {
     long long count;
     int piece;
@@ -601,160 +797,142 @@ void IncrementalSegmenter::State::redecompose(const OccupancyGrid& grid, std::ve
   std::vector<Candidate> candidates;
   for (int p = 1; p <= pieces; ++p)
     for (int j = 0; j < n_old; ++j) {
-      const long long count = overlap[static_cast<std::size_t>(p) * static_cast<std::size_t>(n_old + 1) + static_cast<std::size_t>(j)];
-      if (count > 0) candidates.push_back({count, p, region_ids[static_cast<std::size_t>(j)]});
+      const long long count = t.overlap[static_cast<std::size_t>(p) * static_cast<std::size_t>(n_old + 1) + static_cast<std::size_t>(j)];
+      if (count > 0) candidates.push_back({count, p, region.ids[static_cast<std::size_t>(j)]});
     }
   std::sort(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) {
     return std::tie(b.count, a.piece, a.old) < std::tie(a.count, b.piece, b.old);
   });
-  std::vector<int> id_of_piece(static_cast<std::size_t>(pieces) + 1, 0);
-  std::vector<char> reused(rooms.size(), 0);
+  std::vector<int>& id_of_piece = found.id_of_piece;
+  std::vector<char>& reused = found.reused;
+  id_of_piece.assign(static_cast<std::size_t>(pieces) + 1, 0);
+  reused.assign(rooms.size(), 0);
   for (const Candidate& candidate : candidates) {
     if (id_of_piece[static_cast<std::size_t>(candidate.piece)] != 0 || reused[static_cast<std::size_t>(candidate.old)]) continue;
     if (2 * candidate.count < rooms[static_cast<std::size_t>(candidate.old)].cells) continue;
     id_of_piece[static_cast<std::size_t>(candidate.piece)] = candidate.old;
     reused[static_cast<std::size_t>(candidate.old)] = 1;
   }
-  // New ids in raster order of the pieces' first cells (deterministic, like batch numbering).
   std::vector<int> fresh;
   for (int p = 1; p <= pieces; ++p)
-    if (id_of_piece[static_cast<std::size_t>(p)] == 0 && piece_cells[static_cast<std::size_t>(p)] > 0) fresh.push_back(p);
+    if (id_of_piece[static_cast<std::size_t>(p)] == 0 && t.cells[static_cast<std::size_t>(p)] > 0) fresh.push_back(p);
   std::sort(fresh.begin(), fresh.end(), [&](int a, int b) {
-    return first_cell[static_cast<std::size_t>(a)] < first_cell[static_cast<std::size_t>(b)];
+    return t.first_cell[static_cast<std::size_t>(a)] < t.first_cell[static_cast<std::size_t>(b)];
   });
   for (const int p : fresh) id_of_piece[static_cast<std::size_t>(p)] = next_id++;
   report.new_rooms = static_cast<int>(fresh.size());
   rooms.resize(static_cast<std::size_t>(next_id));
+}
 
-  // Old rooms of the region die unless reused; pieces' rooms are rebuilt from their cells.
+// Old rooms of the region die unless reused, and every cell of the region takes its piece's id.
+// Returns the dead rooms.
+std::vector<int> IncrementalSegmenter::State::retire_old_rooms(const Region& region, const RegionPieces& found) {
+  const cv::Rect& window = region.window;
   std::vector<int> removed;
-  for (const int id : region_ids)
-    if (!reused[static_cast<std::size_t>(id)]) {
+  for (const int id : region.ids)
+    if (!found.reused[static_cast<std::size_t>(id)]) {
       rooms[static_cast<std::size_t>(id)] = RoomState{};
       removed.push_back(id);
     }
   report.removed_rooms = static_cast<int>(removed.size());
   for (int r = 0; r < window.height; ++r) {
-    int* l = labels.ptr<int>(window.y + r) + window.x;
-    const int* k = local.ptr<int>(r);
-    const unsigned char* in = raw.ptr<unsigned char>(r);
+    int* l = result.labels.ptr<int>(window.y + r) + window.x;
+    const int* k = found.local.ptr<int>(r);
+    const unsigned char* in = found.raw.ptr<unsigned char>(r);
     for (int c = 0; c < window.width; ++c)
-      if (in[c]) l[c] = id_of_piece[static_cast<std::size_t>(k[c])];
+      if (in[c]) l[c] = found.id_of_piece[static_cast<std::size_t>(k[c])];
   }
+  return removed;
+}
 
-  // Pieces' polygons in world metres: window grid coordinates -> world.
-  const double y_offset = h - window.height - window.y;
-  auto to_world = [&](const Point2& p) {
-    return Point2{origin.x + (p.x + window.x + 0.5) * resolution, origin.y + (p.y + y_offset + 0.5) * resolution};
-  };
-  auto to_window = [&](const Point2& p) {
-    return Point2{(p.x - origin.x) / resolution - 0.5 - window.x, (p.y - origin.y) / resolution - 0.5 - y_offset};
-  };
-  for (const int id : removed) refresh_room(id, nullptr);
-  for (int p = 1; p <= pieces; ++p) {
+// Every piece that labels a cell is a live room, its state rebuilt from its cells alone (nothing
+// absorbed since) and its polygon in world metres.
+void IncrementalSegmenter::State::adopt_pieces(const RegionPieces& found, const WindowFrame& frame) {
+  const PieceTally& t = found.tally;
+  for (int p = 1; p <= found.pieces; ++p) {
     const std::size_t piece = static_cast<std::size_t>(p);
-    if (piece_cells[piece] == 0) continue;
-    const int id = id_of_piece[piece];
+    if (t.cells[piece] == 0) continue;
+    const int id = found.id_of_piece[piece];
     RoomState& room = rooms[static_cast<std::size_t>(id)];
     room.alive = true;
-    room.cells = piece_cells[piece];
-    room.sum_c = static_cast<double>(sum_c[piece]);
-    room.sum_r = static_cast<double>(sum_r[piece]);
+    room.cells = t.cells[piece];
+    room.sum_c = static_cast<double>(t.sum_c[piece]);
+    room.sum_r = static_cast<double>(t.sum_r[piece]);
     room.absorbed = 0;
-    room.box = cv::Rect(min_c[piece], min_r[piece], max_c[piece] - min_c[piece] + 1, max_r[piece] - min_r[piece] + 1);
+    room.box = cv::Rect(t.min_c[piece], t.min_r[piece], t.max_c[piece] - t.min_c[piece] + 1,
+                        t.max_r[piece] - t.min_r[piece] + 1);
     PolygonWithHoles world;
-    for (const Point2& v : set.pieces[piece - 1].outer) world.outer.push_back(to_world(v));
-    for (const Ring& hole : set.pieces[piece - 1].holes) {
+    for (const Point2& v : found.set.pieces[piece - 1].outer) world.outer.push_back(frame.to_world(v));
+    for (const Ring& hole : found.set.pieces[piece - 1].holes) {
       Ring ring;
       ring.reserve(hole.size());
-      for (const Point2& v : hole) ring.push_back(to_world(v));
+      for (const Point2& v : hole) ring.push_back(frame.to_world(v));
       world.holes.push_back(std::move(ring));
     }
     world = normalized_orientation(world);
     refresh_room(id, &world);
   }
-  // Rooms absorbed into this decomposition are refreshed here; the caller must not revive them.
-  touched_rooms.erase(std::remove_if(touched_rooms.begin(), touched_rooms.end(),
-                                     [&](int id) { return in_region[static_cast<std::size_t>(id)] != 0; }),
-                      touched_rooms.end());
+}
 
-  // Passages: cuts on the region's border keep their outside room and find their inside one again;
-  // cuts inside the region are replaced by the new decomposition's cuts.
-  auto room_of = [&](const Point2& window_point) {
-    const int piece = piece_containing(set.pieces, window_point);
-    if (piece < 0) return 0;
-    const std::size_t p = static_cast<std::size_t>(piece) + 1;
-    return piece_cells[p] > 0 ? id_of_piece[p] : 0;
-  };
-  auto sides = [&](const Point2& a, const Point2& b, Point2& left, Point2& right) {
-    const double dx = b.x - a.x, dy = b.y - a.y;
-    const double length = std::hypot(dx, dy);
-    if (!(length > 0.0) || !std::isfinite(length)) return false;
-    const double eps = 1e-3;  // cells; as rooms_from_pieces
-    const Point2 mid{(a.x + b.x) / 2.0, (a.y + b.y) / 2.0};
-    left = {mid.x - dy / length * eps, mid.y + dx / length * eps};
-    right = {mid.x + dy / length * eps, mid.y - dx / length * eps};
-    return true;
-  };
-  // The room of this region on the other side of an old cut from `outside`. The region's pieces
-  // follow pixel edges while an old cut may run diagonally, so the cut's own side test can miss
-  // them: look at the labelled cells across the cut instead, nearest first.
+// Old passages outside the region stay as they were; one crossing its border keeps its outside
+// room and finds its inside one again (dropped if none); those inside it are gone.
+void IncrementalSegmenter::State::keep_border_passages(const Region& region, const RegionPieces& found,
+                                                       const WindowFrame& frame, PassageList& out) const {
   std::vector<char> region_room(rooms.size(), 0);
-  for (int p = 1; p <= pieces; ++p)
-    if (piece_cells[static_cast<std::size_t>(p)] > 0) region_room[static_cast<std::size_t>(id_of_piece[static_cast<std::size_t>(p)])] = 1;
-  auto region_room_beside = [&](const Point2& a, const Point2& b, int outside) {
-    const double dx = b.x - a.x, dy = b.y - a.y;
-    const double length = std::hypot(dx, dy);
-    if (!(length > 0.0) || !std::isfinite(length)) return 0;
-    const Point2 normal{-dy / length, dx / length};
-    for (const double t : {0.5, 0.25, 0.75})
-      for (const double k : {0.5, 1.0, 1.5, 2.0, 3.0})
-        for (const double side : {1.0, -1.0}) {
-          const double x = a.x + t * dx + side * k * normal.x, y = a.y + t * dy + side * k * normal.y;
-          const int column = static_cast<int>(std::floor(x + 0.5));
-          const int row = window.height - 1 - static_cast<int>(std::floor(y + 0.5));
-          if (column < 0 || row < 0 || column >= window.width || row >= window.height) continue;
-          const int id = labels.at<int>(window.y + row, window.x + column);
-          if (id > 0 && id != outside && region_room[static_cast<std::size_t>(id)]) return id;
-        }
-    return 0;
-  };
-  std::vector<Passage> passages;
-  std::vector<char> doors;
-  passages.reserve(result.passages.size() + set.cuts.size());
+  for (int p = 1; p <= found.pieces; ++p)
+    if (found.tally.cells[static_cast<std::size_t>(p)] > 0)
+      region_room[static_cast<std::size_t>(found.id_of_piece[static_cast<std::size_t>(p)])] = 1;
   for (std::size_t k = 0; k < result.passages.size(); ++k) {
     const Passage& passage = result.passages[k];
-    const bool a_in = in_region[static_cast<std::size_t>(passage.room_a)] != 0;
-    const bool b_in = in_region[static_cast<std::size_t>(passage.room_b)] != 0;
+    const bool a_in = region.member[static_cast<std::size_t>(passage.room_a)] != 0;
+    const bool b_in = region.member[static_cast<std::size_t>(passage.room_b)] != 0;
     if (!a_in && !b_in) {
-      passages.push_back(passage);
-      doors.push_back(passage_door[k]);
+      out.passages.push_back(passage);
+      out.doors.push_back(passage_door[k]);
       continue;
     }
     if (a_in && b_in) continue;
     const int outside = a_in ? passage.room_b : passage.room_a;
-    const int inside = region_room_beside(to_window(passage.cut.a), to_window(passage.cut.b), outside);
+    const int inside = region_room_beside(result.labels, region.window, region_room, frame.to_window(passage.cut.a),
+                                          frame.to_window(passage.cut.b), outside);
     if (inside == 0) continue;
     Passage kept = passage;
     kept.room_a = std::min(inside, outside);
     kept.room_b = std::max(inside, outside);
-    passages.push_back(kept);
-    doors.push_back(passage_door[k]);
+    out.passages.push_back(kept);
+    out.doors.push_back(passage_door[k]);
   }
-  for (const Segment2& cut : set.cuts) {
+}
+
+// Every cut of the new decomposition between two different rooms is a passage, a door if the
+// decomposition found it as one.
+void IncrementalSegmenter::State::add_new_passages(const RegionPieces& found, const WindowFrame& frame,
+                                                   PassageList& out) const {
+  auto room_of = [&](const Point2& window_point) {
+    const int piece = piece_containing(found.set.pieces, window_point);
+    if (piece < 0) return 0;
+    const std::size_t p = static_cast<std::size_t>(piece) + 1;
+    return found.tally.cells[p] > 0 ? found.id_of_piece[p] : 0;
+  };
+  for (const Segment2& cut : found.set.cuts) {
     Point2 left, right;
-    if (!sides(cut.a, cut.b, left, right)) continue;
+    if (!cut_sides(cut.a, cut.b, left, right)) continue;
     const int a = room_of(left), b = room_of(right);
     if (a == 0 || b == 0 || a == b) continue;
     Passage passage;
     passage.room_a = std::min(a, b);
     passage.room_b = std::max(a, b);
-    passage.cut = {to_world(cut.a), to_world(cut.b)};
+    passage.cut = {frame.to_world(cut.a), frame.to_world(cut.b)};
     passage.width = std::hypot(cut.b.x - cut.a.x, cut.b.y - cut.a.y) * resolution;
     passage.door = is_door(passage, options.segment.doors);
-    passages.push_back(passage);
-    doors.push_back(std::find(set.doors.begin(), set.doors.end(), cut) != set.doors.end());
+    out.passages.push_back(passage);
+    out.doors.push_back(std::find(found.set.doors.begin(), found.set.doors.end(), cut) != found.set.doors.end());
   }
+}
+
+// result.passages in one order whatever the update history: by rooms, then cut, then as found.
+void IncrementalSegmenter::State::store_sorted(const PassageList& list) {
+  const std::vector<Passage>& passages = list.passages;
   std::vector<std::size_t> order(passages.size());
   for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;
   std::sort(order.begin(), order.end(), [&](std::size_t i, std::size_t j) {
@@ -767,7 +945,7 @@ void IncrementalSegmenter::State::redecompose(const OccupancyGrid& grid, std::ve
   passage_door.clear();
   for (const std::size_t k : order) {
     result.passages.push_back(passages[k]);
-    passage_door.push_back(doors[k]);
+    passage_door.push_back(list.doors[k]);
   }
 }
 
