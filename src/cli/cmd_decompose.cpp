@@ -3,23 +3,16 @@
 #include <iostream>
 #include <string>
 
-#include <nlohmann/json.hpp>
-
 #include "cli/command.h"
 #include "topocut/core/error.h"
 #include "topocut/decomposition/decompose.h"
+#include "topocut/decomposition/decomposition_json.h"
 #include "topocut/io/atomic_file.h"
 #include "topocut/io/output_files.h"
 #include "topocut/io/polygon_json.h"
 
 namespace topocut::cli {
 namespace {
-
-nlohmann::ordered_json ring_json(const Ring& ring) {
-  nlohmann::ordered_json out = nlohmann::ordered_json::array();
-  for (const Point2& p : ring) out.push_back({p.x, p.y});
-  return out;
-}
 
 template <class E>
 E pick(const std::string& option, const std::string& value, std::initializer_list<std::pair<const char*, E>> choices) {
@@ -82,24 +75,7 @@ int run(const std::vector<std::string>& args) {
               << "the pieces tile the polygon but some may be deeper than tau\n";
   }
 
-  // Keys in the documented order: pieces, cuts, absorbed_holes; outer, holes, area.
-  nlohmann::ordered_json out;
-  nlohmann::ordered_json pieces = nlohmann::ordered_json::array();
-  for (const PolygonWithHoles& piece : result.pieces) {
-    nlohmann::ordered_json holes = nlohmann::ordered_json::array();
-    for (const Ring& hole : piece.holes) holes.push_back(ring_json(hole));
-    pieces.push_back({{"outer", ring_json(piece.outer)}, {"holes", holes}, {"area", area(piece)}});
-  }
-  out["pieces"] = pieces;
-  nlohmann::ordered_json cuts = nlohmann::ordered_json::array();
-  for (const Cut& cut : result.cuts) {
-    cuts.push_back({{cut.segment.a.x, cut.segment.a.y}, {cut.segment.b.x, cut.segment.b.y}});
-  }
-  out["cuts"] = cuts;
-  nlohmann::ordered_json absorbed = nlohmann::ordered_json::array();
-  for (const Ring& hole : result.absorbed_holes) absorbed.push_back(ring_json(hole));
-  out["absorbed_holes"] = absorbed;
-  const std::string text = out.dump() + "\n";
+  const std::string text = decomposition_to_json(result);
   if (output.empty()) {
     std::cout << text;
   } else {

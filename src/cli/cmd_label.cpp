@@ -1,12 +1,9 @@
 // topocut label: sparse connected-component labeling of one laser scan, printed as JSON.
 #include <iostream>
 
-#include <nlohmann/json.hpp>
-
 #include "cli/command.h"
 #include "topocut/core/error.h"
-#include "topocut/labeling/fuzzy_c_means.h"
-#include "topocut/labeling/sparse_labeling.h"
+#include "topocut/labeling/labeling_json.h"
 #include "topocut/scan/scan_csv.h"
 
 namespace topocut::cli {
@@ -46,35 +43,13 @@ int run(const std::vector<std::string>& args) {
   const Scan scan = read_scan_csv(scan_path);
   const Labeling labeling = label_scan(scan, options);
 
-  nlohmann::json out;
-  out["scan"] = scan_path;
-  out["beams"] = scan.size();
-  out["cell"] = options.cell_size;
-  out["dilate"] = options.dilation;
-  out["element"] = element;
-  out["connectivity"] = options.connectivity;
-  nlohmann::json segments = nlohmann::json::array();
-  for (std::size_t s = 0; s < labeling.segments.size(); ++s) {
-    nlohmann::json segment;
-    segment["id"] = s;
-    segment["beams"] = labeling.segments[s];
-    if (clusters > 0) {
-      std::vector<Point2> points;
-      for (int beam : labeling.segments[s]) points.push_back(beam_point(scan, static_cast<std::size_t>(beam)));
-      FuzzyCMeansOptions fcm;
-      fcm.clusters = clusters;
-      nlohmann::json centres = nlohmann::json::array();
-      for (const Point2& c : fuzzy_c_means(points, fcm).centres) centres.push_back({c.x, c.y});
-      segment["centres"] = centres;
-    }
-    segments.push_back(segment);
+  std::vector<std::vector<Point2>> centres;
+  if (clusters > 0) {
+    FuzzyCMeansOptions fcm;
+    fcm.clusters = clusters;
+    centres = segment_centres(scan, labeling, fcm);
   }
-  out["segments"] = segments;
-  nlohmann::json invalid = nlohmann::json::array();
-  for (std::size_t i = 0; i < labeling.labels.size(); ++i)
-    if (labeling.labels[i] < 0) invalid.push_back(i);
-  out["invalid_beams"] = invalid;
-  std::cout << out.dump(2) << "\n";
+  std::cout << labeling_to_json(scan_path, scan, options, labeling, centres);
   return 0;
 }
 
