@@ -121,19 +121,6 @@ cv::Mat binarized_window(const OccupancyGrid& grid, const cv::Rect& window, cons
   return new_bin;
 }
 
-// Points just left and right of the middle of cut a-b (as rooms_from_pieces), false for a cut of
-// no length: what decides which rooms a cut separates.
-bool cut_sides(const Point2& a, const Point2& b, Point2& left, Point2& right) {
-  const double dx = b.x - a.x, dy = b.y - a.y;
-  const double length = std::hypot(dx, dy);
-  if (!(length > 0.0) || !std::isfinite(length)) return false;
-  const double eps = 1e-3;  // cells; as rooms_from_pieces
-  const Point2 mid{(a.x + b.x) / 2.0, (a.y + b.y) / 2.0};
-  left = {mid.x - dy / length * eps, mid.y + dx / length * eps};
-  right = {mid.x + dy / length * eps, mid.y - dx / length * eps};
-  return true;
-}
-
 // The room of the region (region_room[id] set) on the other side of an old cut a-b (window
 // coordinates) from `outside`, or 0. The region's pieces follow pixel edges while an old cut may
 // run diagonally, so the cut's own side test can miss them: look at the labelled cells across the

@@ -323,13 +323,8 @@ std::vector<Passage> passages_between(const OccupancyGrid& grid, const PieceSet&
                                       const std::vector<int>& room_of_piece) {
   std::vector<Passage> passages;
   for (const Segment2& cut : set.cuts) {
-    const double dx = cut.b.x - cut.a.x, dy = cut.b.y - cut.a.y;
-    const double length = std::hypot(dx, dy);
-    if (!(length > 0.0) || !std::isfinite(length)) continue;
-    const double eps = 1e-3;  // cells; far below any feature of a pixel polygon
-    const Point2 mid{(cut.a.x + cut.b.x) / 2.0, (cut.a.y + cut.b.y) / 2.0};
-    const Point2 left{mid.x - dy / length * eps, mid.y + dx / length * eps};
-    const Point2 right{mid.x + dy / length * eps, mid.y - dx / length * eps};
+    Point2 left, right;
+    if (!cut_sides(cut.a, cut.b, left, right)) continue;
     const int piece_a = piece_containing(set.pieces, left);
     const int piece_b = piece_containing(set.pieces, right);
     if (piece_a < 0 || piece_b < 0) continue;
@@ -340,7 +335,7 @@ std::vector<Passage> passages_between(const OccupancyGrid& grid, const PieceSet&
     p.room_a = std::min(a, b);
     p.room_b = std::max(a, b);
     p.cut = {grid_to_world(grid, cut.a), grid_to_world(grid, cut.b)};
-    p.width = length * grid.resolution;
+    p.width = std::hypot(cut.b.x - cut.a.x, cut.b.y - cut.a.y) * grid.resolution;
     passages.push_back(p);
   }
   std::sort(passages.begin(), passages.end(), [](const Passage& x, const Passage& y) {
@@ -356,6 +351,17 @@ void PieceSet::append(const PieceSet& other) {
   pieces.insert(pieces.end(), other.pieces.begin(), other.pieces.end());
   cuts.insert(cuts.end(), other.cuts.begin(), other.cuts.end());
   doors.insert(doors.end(), other.doors.begin(), other.doors.end());
+}
+
+bool cut_sides(const Point2& a, const Point2& b, Point2& left, Point2& right) {
+  const double dx = b.x - a.x, dy = b.y - a.y;
+  const double length = std::hypot(dx, dy);
+  if (!(length > 0.0) || !std::isfinite(length)) return false;
+  const double eps = 1e-3;
+  const Point2 mid{(a.x + b.x) / 2.0, (a.y + b.y) / 2.0};
+  left = {mid.x - dy / length * eps, mid.y + dx / length * eps};
+  right = {mid.x + dy / length * eps, mid.y - dx / length * eps};
+  return true;
 }
 
 int piece_containing(const std::vector<PolygonWithHoles>& pieces, const Point2& p) {

@@ -41,4 +41,9 @@ Segmentation rooms_from_pieces(const OccupancyGrid& grid, const PieceSet& pieces
 // Index of the piece containing point p (grid coordinates, even-odd over all rings), or -1.
 int piece_containing(const std::vector<PolygonWithHoles>& pieces, const Point2& p);
 
+// The points just left and right of cut a-b's midpoint (1e-3 cells off it, far below any feature of
+// a pixel polygon): the two pieces a cut separates contain one each. False for a zero-length or
+// non-finite cut.
+bool cut_sides(const Point2& a, const Point2& b, Point2& left, Point2& right);
+
 }  // namespace topocut
