@@ -21,7 +21,7 @@ case "$mode" in
 esac
 JOBS="${JOBS:-$(nproc)}"
 
-packages=(build-essential cmake pkg-config libcgal-dev libopencv-dev libeigen3-dev libboost-dev
+packages=(build-essential cmake pkg-config libcgal-dev libopencv-dev libboost-dev
           libboost-program-options-dev libboost-graph-dev nlohmann-json3-dev libyaml-cpp-dev
           libgtest-dev libgmock-dev libbenchmark-dev zlib1g-dev
           pybind11-dev python3-dev python3-numpy python3-pytest python3-matplotlib)

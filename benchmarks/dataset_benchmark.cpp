@@ -18,6 +18,7 @@
 #include "benchmark_machine.h"
 #include "topocut/core/allocator.h"
 #include "topocut/core/error.h"
+#include "topocut/core/format.h"
 #include "topocut/evaluation/dataset.h"
 #include "topocut/evaluation/dataset_options.h"
 #include "topocut/evaluation/dataset_report.h"
@@ -42,12 +43,6 @@ int parse_count(const std::string& name, const std::string& value) {
   }
   if (used == 0 || used != value.size() || parsed < 1) throw Error(name + " needs a positive whole number");
   return parsed;
-}
-
-std::string fixed(double value, int decimals) {
-  char buffer[64];
-  std::snprintf(buffer, sizeof buffer, "%.*f", decimals, value);
-  return buffer;
 }
 
 int run(std::vector<std::string> args) {

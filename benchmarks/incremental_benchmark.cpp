@@ -24,9 +24,11 @@
 
 #include "topocut/core/allocator.h"
 #include "topocut/core/error.h"
+#include "topocut/core/format.h"
 #include "topocut/evaluation/dataset_options.h"
 #include "topocut/evaluation/dataset_report.h"
-#include "topocut/exploration/exploration_run.h"
+#include "topocut/evaluation/incremental_dataset.h"
+#include "topocut/evaluation/incremental_dataset_report.h"
 #include "topocut/io/atomic_file.h"
 
 namespace {
@@ -46,12 +48,6 @@ std::string load_average() {
   std::string a, b, c;
   in >> a >> b >> c;
   return a + " " + b + " " + c;
-}
-
-std::string fmt(const char* pattern, double a, double b = 0.0, double c = 0.0) {
-  char buffer[200];
-  std::snprintf(buffer, sizeof buffer, pattern, a, b, c);
-  return buffer;
 }
 
 int run(int argc, char** argv) {
@@ -102,10 +98,10 @@ int run(int argc, char** argv) {
                                                 "inc R / P %", "batch R / P %"}};
     for (const IncrementalImageResult& r : results) {
       if (!r.incremental.ok) continue;
-      rows.push_back({r.incremental.map, to_string(r.incremental.variant), fmt("%.1f", 100.0 * r.explored),
+      rows.push_back({r.incremental.map, to_string(r.incremental.variant), format("%.1f", 100.0 * r.explored),
                       std::to_string(r.incremental.rooms) + " / " + std::to_string(r.batch.rooms),
-                      fmt("%.1f / %.1f", 100.0 * r.incremental.recall, 100.0 * r.incremental.precision),
-                      fmt("%.1f / %.1f", 100.0 * r.batch.recall, 100.0 * r.batch.precision)});
+                      format("%.1f / %.1f", 100.0 * r.incremental.recall, 100.0 * r.incremental.precision),
+                      format("%.1f / %.1f", 100.0 * r.batch.recall, 100.0 * r.batch.precision)});
     }
     std::cout << "## Final quality per image (rooms = segments > 100 px)\n\n" << markdown_table(rows) << "\n";
   }
@@ -125,8 +121,8 @@ int run(int argc, char** argv) {
       churn.insert(churn.end(), s.churn.begin(), s.churn.end());
       ++stable_images;
       maps_meeting_churn += s.churn_median == 0.0 && s.churn_p95 <= 0.01 ? 1 : 0;
-      rows.push_back({r.incremental.map, to_string(r.incremental.variant), fmt("%.3f", 100.0 * s.churn_median),
-                      fmt("%.3f", 100.0 * s.churn_p95), fmt("%.2f", 100.0 * s.churn_max),
+      rows.push_back({r.incremental.map, to_string(r.incremental.variant), format("%.3f", 100.0 * s.churn_median),
+                      format("%.3f", 100.0 * s.churn_p95), format("%.2f", 100.0 * s.churn_max),
                       std::to_string(s.rooms_changed) + " / " + std::to_string(s.rooms.size()),
                       std::to_string(s.room_changes),
                       std::to_string(s.distinct_ids) + " / " + std::to_string(s.final_rooms)});
@@ -135,7 +131,7 @@ int run(int argc, char** argv) {
                  "changed)\n\n"
               << markdown_table(rows) << "\n";
   }
-  const UpdateTimes churn_pooled = update_times(churn);
+  const TimeStatistics churn_pooled = time_statistics(churn);
 
   // Targets.
   std::vector<double> all, batch, paired;
@@ -147,15 +143,15 @@ int run(int argc, char** argv) {
     paired.insert(paired.end(), r.paired_update_ms.begin(), r.paired_update_ms.end());
     if (r.peak_state_bytes > peak) peak = r.peak_state_bytes;
   }
-  const UpdateTimes t = update_times(all), b = update_times(batch), p = update_times(paired);
+  const TimeStatistics t = time_statistics(all), b = time_statistics(batch), p = time_statistics(paired);
   std::cout << "## Targets\n\n";
   std::vector<std::vector<std::string>> rows{{"target", "measured", "met"}};
   const bool timed = t.count > 0;
-  rows.push_back({"incremental median per update <= 1 ms", fmt("%.3f ms", t.median), timed && t.median <= 1.0 ? "yes" : "NO"});
-  rows.push_back({"incremental p95 per update <= 5 ms", fmt("%.3f ms", t.p95), timed && t.p95 <= 5.0 ? "yes" : "NO"});
+  rows.push_back({"incremental median per update <= 1 ms", format("%.3f ms", t.median), timed && t.median <= 1.0 ? "yes" : "NO"});
+  rows.push_back({"incremental p95 per update <= 5 ms", format("%.3f ms", t.p95), timed && t.p95 <= 5.0 ? "yes" : "NO"});
   if (b.count > 0 && p.median > 0.0) {
     const double ratio = b.median / p.median;
-    rows.push_back({">= 5x faster than batch on the same updates", fmt("%.1fx (medians), %.1fx (totals)", ratio, b.total / p.total),
+    rows.push_back({">= 5x faster than batch on the same updates", format("%.1fx (medians), %.1fx (totals)", ratio, b.total / p.total),
                     ratio >= 5.0 ? "yes" : "NO"});
   }
   for (const Variant variant : {Variant::kPlain, Variant::kFurnished}) {
@@ -163,21 +159,21 @@ int run(int argc, char** argv) {
     if (a.images == a.failed) continue;
     const double dr = 100.0 * (a.recall_mean - c.recall_mean), dp = 100.0 * (a.precision_mean - c.precision_mean);
     rows.push_back({to_string(variant) + ": mean recall, precision at most 1.5 points below batch",
-                    fmt("%+.1f, %+.1f points", dr, dp), (dr >= -1.5 && dp >= -1.5) ? "yes" : "NO"});
+                    format("%+.1f, %+.1f points", dr, dp), (dr >= -1.5 && dp >= -1.5) ? "yes" : "NO"});
   }
-  rows.push_back({"churn median 0 (all updates pooled)", fmt("%.4f %%", 100.0 * churn_pooled.median),
+  rows.push_back({"churn median 0 (all updates pooled)", format("%.4f %%", 100.0 * churn_pooled.median),
                   churn_pooled.median == 0.0 ? "yes" : "NO"});
-  rows.push_back({"churn p95 <= 1 % (all updates pooled)", fmt("%.4f %%", 100.0 * churn_pooled.p95),
+  rows.push_back({"churn p95 <= 1 % (all updates pooled)", format("%.4f %%", 100.0 * churn_pooled.p95),
                   churn_pooled.p95 <= 0.01 ? "yes" : "NO"});
   rows.push_back({"images meeting both churn targets", std::to_string(maps_meeting_churn) + " of " + std::to_string(stable_images),
                   maps_meeting_churn == stable_images ? "yes" : "NO"});
   rusage usage{};
   getrusage(RUSAGE_SELF, &usage);
-  rows.push_back({"state proportional to the map", fmt("peak %.1f MB segmenter state (6 bytes per cell + rooms); process peak RSS %.0f MB",
+  rows.push_back({"state proportional to the map", format("peak %.1f MB segmenter state (6 bytes per cell + rooms); process peak RSS %.0f MB",
                                                        peak / (1024.0 * 1024.0), usage.ru_maxrss / 1024.0),
                   "-"});
   std::cout << markdown_table(rows) << "\n"
-            << fmt("Run time %.1f min; load average at the end ", minutes) << load_average() << "\n";
+            << format("Run time %.1f min; load average at the end ", minutes) << load_average() << "\n";
   if (!arguments.csv.empty()) write_file_atomically(arguments.csv, incremental_results_csv(results));
   return 0;
 }

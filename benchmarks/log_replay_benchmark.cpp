@@ -1,6 +1,6 @@
 // Incremental segmentation on real laser logs: each CARMEN log of ../shared/datasets/carmen is
-// replayed scan by scan (replay_log: the wall map grows with every scan, every change goes to the
-// incremental segmenter) and batch segment() runs on the same grids. Prints per log the update
+// replayed scan by scan (WallMapReplay: the wall map grows with every scan; replay_grids: every
+// change goes to the incremental segmenter) and batch segment() runs on the same grids. Prints per log the update
 // times, the speed-up over batch, the stability of the room ids and the final rooms, and checks
 // the targets: update p95 <= 5 ms, incremental >= 5x faster than batch (total time on the same
 // updates), churn median 0 and p95 <= 1 % of the labelled cells.
@@ -18,30 +18,31 @@
 #include "benchmark_machine.h"
 #include "topocut/core/allocator.h"
 #include "topocut/evaluation/dataset_report.h"
-#include "topocut/exploration/log_replay.h"
+#include "topocut/core/format.h"
+#include "topocut/exploration/grid_replay.h"
 #include "topocut/io/carmen_log.h"
+#include "topocut/segmentation/wall_map_segment_options.h"
+#include "topocut/walls/wall_map_replay.h"
 
 namespace {
 
 using namespace topocut;
 
-std::string fmt(const char* pattern, double a, double b = 0.0) {
-  char buffer[160];
-  std::snprintf(buffer, sizeof buffer, pattern, a, b);
-  return buffer;
-}
-
 struct LogFigures {
   std::string name;
-  LogReplay run;
-  UpdateTimes inc, wall, batch, paired;
+  GridReplay run;
+  TimeStatistics inc, wall, batch, paired;
 };
 
 LogFigures replay_file(const std::string& name, const std::string& path, int batch_every) {
-  LogReplayOptions options;
+  GridReplayOptions options;
+  options.incremental.segment = wall_map_segment_options();  // as `walls --incremental`, without the
+  options.incremental.segment.clean = false;                  // cleaning, which is not incremental
   options.compare_batch = true;
   options.batch_every = batch_every;
-  LogFigures f{name, replay_log(posed_scans(read_carmen_log(path)), options), {}, {}, {}, {}};
+  const std::vector<PosedScan> scans = posed_scans(read_carmen_log(path));
+  WallMapReplay log_map(scans);
+  LogFigures f{name, replay_grids(steps_of(log_map), options), {}, {}, {}, {}};
   std::vector<double> inc, wall, batch, paired;
   for (const UpdateRecord& u : f.run.updates) {
     inc.push_back(u.incremental_ms);
@@ -50,10 +51,10 @@ LogFigures replay_file(const std::string& name, const std::string& path, int bat
     batch.push_back(u.batch_ms);
     paired.push_back(u.incremental_ms);
   }
-  f.inc = update_times(inc);
-  f.wall = update_times(wall);
-  f.batch = update_times(batch);
-  f.paired = update_times(paired);
+  f.inc = time_statistics(inc);
+  f.wall = time_statistics(wall);
+  f.batch = time_statistics(batch);
+  f.paired = time_statistics(paired);
   return f;
 }
 
@@ -98,19 +99,19 @@ int main(int argc, char** argv) {
     const StabilityReport& s = f.run.stability;
     const double ratio = f.paired.total > 0.0 ? f.batch.total / f.paired.total : 0.0;
     times.push_back({f.name, std::to_string(f.run.final_map.width()) + " x " + std::to_string(f.run.final_map.height()),
-                     std::to_string(f.run.scans), std::to_string(f.run.updates.size()), fmt("%.3f", f.inc.median),
-                     fmt("%.3f", f.inc.p95), fmt("%.2f", f.inc.max), fmt("%.3f", f.wall.p95), fmt("%.2f", f.batch.median),
-                     fmt("%.1fx", ratio), fmt("%.1fx", f.paired.median > 0.0 ? f.batch.median / f.paired.median : 0.0)});
-    stability.push_back({f.name, fmt("%.3f", 100.0 * s.churn_median), fmt("%.3f", 100.0 * s.churn_p95),
-                         fmt("%.2f", 100.0 * s.churn_max),
+                     std::to_string(f.run.scans), std::to_string(f.run.updates.size()), format("%.3f", f.inc.median),
+                     format("%.3f", f.inc.p95), format("%.2f", f.inc.max), format("%.3f", f.wall.p95), format("%.2f", f.batch.median),
+                     format("%.1fx", ratio), format("%.1fx", f.paired.median > 0.0 ? f.batch.median / f.paired.median : 0.0)});
+    stability.push_back({f.name, format("%.3f", 100.0 * s.churn_median), format("%.3f", 100.0 * s.churn_p95),
+                         format("%.2f", 100.0 * s.churn_max),
                          std::to_string(s.updates_with_churn) + " / " + std::to_string(s.churn.size()),
                          std::to_string(s.rooms_changed) + " / " + std::to_string(s.rooms.size()),
                          std::to_string(s.room_changes), std::to_string(s.distinct_ids),
                          std::to_string(f.run.incremental.rooms.size()) + " / " + std::to_string(f.run.batch.rooms.size())});
-    targets.push_back({f.name, fmt("%.3f ms ", f.inc.p95) + (f.inc.p95 <= 5.0 ? "yes" : "NO"),
-                       fmt("%.1fx ", ratio) + (ratio >= 5.0 ? "yes" : "NO"),
-                       fmt("%.3f %% ", 100.0 * s.churn_median) + (s.churn_median == 0.0 ? "yes" : "NO"),
-                       fmt("%.3f %% ", 100.0 * s.churn_p95) + (s.churn_p95 <= 0.01 ? "yes" : "NO")});
+    targets.push_back({f.name, format("%.3f ms ", f.inc.p95) + (f.inc.p95 <= 5.0 ? "yes" : "NO"),
+                       format("%.1fx ", ratio) + (ratio >= 5.0 ? "yes" : "NO"),
+                       format("%.3f %% ", 100.0 * s.churn_median) + (s.churn_median == 0.0 ? "yes" : "NO"),
+                       format("%.3f %% ", 100.0 * s.churn_p95) + (s.churn_p95 <= 0.01 ? "yes" : "NO")});
   }
   std::printf("## Time per update (CPU)\n\n%s\n## Room stability\n\n%s\n## Targets\n\n%s\npeak RSS %.0f MB\n",
               markdown_table(times).c_str(), markdown_table(stability).c_str(), markdown_table(targets).c_str(),

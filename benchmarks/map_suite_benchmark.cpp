@@ -24,6 +24,7 @@
 #include "benchmark_machine.h"
 #include "topocut/core/allocator.h"
 #include "topocut/core/error.h"
+#include "topocut/core/format.h"
 #include "topocut/evaluation/dataset.h"
 #include "topocut/evaluation/dataset_options.h"
 #include "topocut/evaluation/dataset_report.h"
@@ -34,12 +35,6 @@ namespace {
 using namespace topocut;
 using topocut::benchmarks::cpu_model;
 using topocut::benchmarks::peak_rss_mb;
-
-std::string fixed(double value, int decimals) {
-  char buffer[64];
-  std::snprintf(buffer, sizeof buffer, "%.*f", decimals, value);
-  return buffer;
-}
 
 // A set scored against ground truth.
 struct ScoredSet {

@@ -29,6 +29,7 @@
 
 #include "topocut/core/allocator.h"
 #include "topocut/core/error.h"
+#include "topocut/core/format.h"
 #include "topocut/evaluation/dataset.h"
 #include "topocut/evaluation/dataset_report.h"
 #include "topocut/evaluation/precision_recall.h"
@@ -53,12 +54,6 @@ double ms(double a, double b) { return b - a; }
 double least(const std::vector<double>& v) { return *std::min_element(v.begin(), v.end()); }
 
 double median(std::vector<double> v) { return time_statistics(std::move(v)).median; }
-
-std::string fixed(double value, int decimals) {
-  char buffer[64];
-  std::snprintf(buffer, sizeof buffer, "%.*f", decimals, value);
-  return buffer;
-}
 
 struct StageTimes {
   std::vector<double> floor, load, free_space, polygons, decompose, merge, rooms, total;

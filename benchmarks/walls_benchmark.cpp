@@ -22,6 +22,7 @@
 #include "topocut/io/overlay.h"
 #include "topocut/labeling/sparse_labeling.h"
 #include "topocut/segmentation/segmenter.h"
+#include "topocut/segmentation/wall_map_segment_options.h"
 #include "topocut/walls/walls_pipeline.h"
 
 namespace {

@@ -1,28 +1,21 @@
 // topocut explore: a simulated robot explores a map with a 360° laser while the incremental
 // segmenter keeps its rooms up to date; prints per-update times and the final quality.
 #include <cstdio>
-#include <filesystem>
 #include <iostream>
 
 #include "cli/command.h"
 #include "cli/input_options.h"
-#include "cli/update_report.h"
+#include "cli/frames.h"
 #include "topocut/core/error.h"
+#include "topocut/core/format.h"
+#include "topocut/evaluation/dataset.h"
+#include "topocut/evaluation/exploration_report.h"
 #include "topocut/evaluation/precision_recall.h"
-#include "topocut/exploration/exploration_frame.h"
 #include "topocut/exploration/exploration_run.h"
-#include "topocut/io/atomic_file.h"
-#include "topocut/io/output_files.h"
 #include "topocut/io/map_loader.h"
 
 namespace topocut::cli {
 namespace {
-
-std::string fmt(const char* pattern, double a, double b = 0.0, double c = 0.0) {
-  char buffer[160];
-  std::snprintf(buffer, sizeof buffer, pattern, a, b, c);
-  return buffer;
-}
 
 Point2 parse_point(const std::string& text) {
   double x = 0.0, y = 0.0;
@@ -30,6 +23,24 @@ Point2 parse_point(const std::string& text) {
   if (std::sscanf(text.c_str(), "%lf,%lf%c", &x, &y, &tail) != 2)
     throw UsageError("--start needs X,Y in metres (e.g. --start 3.5,-1.2), not '" + text + "'");
   return {x, y};
+}
+
+// The map, and the rooms of its ground truth: gt_path, else the one found next to the map (gt_path
+// is set to it), else none (empty). The ground truth must have the map's size.
+OccupancyGrid load_inputs(const std::string& map_path, double resolution, const ImageLimits& limits, std::string& gt_path,
+                          cv::Mat& gt_rooms) {
+  MapLoadOptions load;
+  load.resolution = resolution;
+  load.limits = limits;
+  check_image_limit_option(load.limits);
+  OccupancyGrid world = load_map(map_path, load);
+  if (gt_path.empty()) gt_path = find_ground_truth(map_path);
+  if (gt_path.empty()) return world;
+  gt_rooms = ground_truth_rooms(load_ground_truth(gt_path, load.limits));
+  if (gt_rooms.size() != world.cells.size())
+    throw Error("the ground truth " + gt_path + " (" + std::to_string(gt_rooms.cols) + " x " +
+                std::to_string(gt_rooms.rows) + ") differs in size from the map");
+  return world;
 }
 
 int run(const std::vector<std::string>& args) {
@@ -89,76 +100,22 @@ int run(const std::vector<std::string>& args) {
     validate(options.incremental.segment);
   });
 
-  MapLoadOptions load;
-  load.resolution = resolution;
-  load.limits = limits;
-  check_image_limit_option(load.limits);
-  const OccupancyGrid world = load_map(map_path, load);
-  if (gt_path.empty()) gt_path = find_ground_truth(map_path);
   cv::Mat gt_rooms;
-  if (!gt_path.empty()) {
-    gt_rooms = ground_truth_rooms(load_ground_truth(gt_path, load.limits));
-    if (gt_rooms.size() != world.cells.size())
-      throw Error("the ground truth " + gt_path + " (" + std::to_string(gt_rooms.cols) + " x " +
-                  std::to_string(gt_rooms.rows) + ") differs in size from the map");
-  }
-  if (!frames.empty()) {
-    prepare_frames_folder(frames, {map_path, gt_path});
-  }
-
-  int frames_written = 0;
-  int last_update = 0;
-  auto save_frame = [&](const ExplorationFrame& frame) {
-    FrameOptions frame_options;
-    frame_options.range = exploration.range;
-    frame_options.caption = "update " + std::to_string(frame.update) + ", scan " + std::to_string(frame.explorer.scans()) +
-                            ", " + std::to_string(frame.segmentation.rooms.size()) + " rooms";
-    write_frame(frames, frame.update,
-                render_exploration_frame(frame.grid, frame.segmentation, frame.explorer.path(), frame.explorer.pose(),
-                                         frame_options));
-    ++frames_written;
+  const OccupancyGrid world = load_inputs(map_path, resolution, limits, gt_path, gt_rooms);
+  if (!frames.empty()) prepare_frames_folder(frames, {map_path, gt_path});
+  FrameWriter writer(frames, frame_every, exploration.range);
+  options.on_update = [&](const ExplorationFrame& f) {
+    writer.update(f.update, f.explorer.scans(), f.grid, f.segmentation, f.explorer.path(), f.explorer.pose());
   };
-  if (!frames.empty()) {
-    options.on_update = [&](const ExplorationFrame& frame) {
-      last_update = frame.update;
-      if ((frame.update - 1) % frame_every == 0) save_frame(frame);
-    };
-  }
   options.progress = [](const std::string& line) { progress(line); };
 
   const ExplorationRun run = run_exploration(world, options);
-  if (!frames.empty() && last_update > 0 && (last_update - 1) % frame_every != 0) {
-    // End the sequence on the finished map: the final map is the last update's grid.
-    FrameOptions frame_options;
-    frame_options.range = exploration.range;
-    frame_options.caption = "update " + std::to_string(last_update) + ", scan " + std::to_string(run.scans) + ", " +
-                            std::to_string(run.incremental.rooms.size()) + " rooms";
-    write_frame(frames, last_update,
-                render_exploration_frame(run.final_map, run.incremental, run.path, run.final_pose, frame_options));
-    ++frames_written;
-  }
-
+  // End the sequence on the finished map: the final map is the last update's grid.
+  writer.finish(static_cast<int>(run.updates.size()), run.scans, run.final_map, run.incremental, run.path, run.final_pose);
   std::cout << "map: " << map_path << " (" << world.width() << " x " << world.height() << " cells, "
-            << fmt("%g m/cell)\n", world.resolution);
-  std::cout << "scans: " << run.scans << ", updates: " << run.updates.size() << " (" << run.stop_reason << "), path "
-            << fmt("%.1f m\n", run.path_length);
-  if (run.reachable_free_cells > 0)
-    std::cout << "explored: " << fmt("%.1f %% of the reachable free space\n", 100.0 * run.known_free_cells / run.reachable_free_cells);
-  print_update_times(std::cout, run.updates);
-  std::cout << "stability: " << format_stability(run.stability) << "\n";
-  std::cout << "peak segmenter state: " << fmt("%.1f MB\n", run.peak_state_bytes / (1024.0 * 1024.0));
-  std::cout << "final rooms: incremental " << run.incremental.rooms.size() << ", batch " << run.batch.rooms.size()
-            << "\n";
-  if (!gt_rooms.empty()) {
-    auto score = [&](const Segmentation& s) {
-      return precision_recall(labels_in_frame(s.labels, run.window, world.cells.size()), gt_rooms);
-    };
-    const PrecisionRecall a = score(run.incremental), b = score(run.batch);
-    std::cout << "ground truth " << gt_path << ":\n"
-              << "  incremental: " << fmt("recall %.1f %%, precision %.1f %%\n", 100.0 * a.recall, 100.0 * a.precision)
-              << "  batch:       " << fmt("recall %.1f %%, precision %.1f %%\n", 100.0 * b.recall, 100.0 * b.precision);
-  }
-  if (!frames.empty()) std::cout << "frames: " << frames_written << " written to " << frames << "\n";
+            << format("%g m/cell)\n", world.resolution);
+  std::cout << format_exploration_summary(run, gt_rooms, gt_path);
+  if (!frames.empty()) std::cout << "frames: " << writer.written() << " written to " << frames << "\n";
   return 0;
 }
 

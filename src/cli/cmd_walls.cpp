@@ -3,10 +3,10 @@
 #include <sstream>
 
 #include "cli/command.h"
-#include "cli/update_report.h"
+#include "cli/frames.h"
 #include "topocut/core/error.h"
-#include "topocut/exploration/exploration_frame.h"
-#include "topocut/exploration/log_replay.h"
+#include "topocut/evaluation/exploration_report.h"
+#include "topocut/exploration/grid_replay.h"
 #include "topocut/io/atomic_file.h"
 #include "topocut/io/output_files.h"
 #include "topocut/io/carmen_log.h"
@@ -14,6 +14,8 @@
 #include "topocut/io/overlay.h"
 #include "topocut/io/rooms_json.h"
 #include "topocut/segmentation/segmenter.h"
+#include "topocut/segmentation/wall_map_segment_options.h"
+#include "topocut/walls/wall_map_replay.h"
 #include "topocut/walls/walls_pipeline.h"
 
 namespace topocut::cli {
@@ -29,7 +31,8 @@ std::string skipped_summary(const CarmenLog& log) {
   return first ? "nothing else" : out.str();
 }
 
-// --incremental: the log replayed scan by scan into the incremental segmenter.
+// --incremental: the log replayed scan by scan (the walls module's grid after each scan) into the
+// incremental segmenter.
 struct ReplayArguments {
   bool compare_batch = false;
   int batch_every = 1;
@@ -40,45 +43,30 @@ struct ReplayArguments {
 void replay(const std::vector<PosedScan>& scans, const WallsOptions& walls, const SegmentOptions& segment_options,
             const ReplayArguments& arguments, const std::string& out_map, const std::string& out_color,
             const std::string& out_rooms) {
-  LogReplayOptions options;
-  options.walls = walls;
+  GridReplayOptions options;
   options.incremental.segment = segment_options;
   options.incremental.segment.clean = false;  // not incremental (IncrementalOptions)
   options.compare_batch = arguments.compare_batch;
   options.batch_every = arguments.batch_every;
   options.progress = [](const std::string& line) { progress(line); };
-  int frames_written = 0, last_written = 0;
-  auto save_frame = [&](int update, int scan, const OccupancyGrid& grid, const Segmentation& rooms,
-                        const std::vector<Point2>& path, const Pose2& pose) {
-    FrameOptions frame_options;
-    frame_options.range = 0.0;  // a real laser reaches tens of metres: the circle would hide the map
-    frame_options.caption = "update " + std::to_string(update) + ", scan " + std::to_string(scan) + ", " +
-                            std::to_string(rooms.rooms.size()) + " rooms";
-    write_frame(arguments.frames, update, render_exploration_frame(grid, rooms, path, pose, frame_options));
-    ++frames_written;
-    last_written = update;
-  };
-  if (!arguments.frames.empty()) {
-    options.on_update = [&](const ReplayFrame& frame) {
-      if ((frame.update - 1) % arguments.frame_every == 0)
-        save_frame(frame.update, frame.scan, frame.grid, frame.segmentation, frame.path, frame.pose);
-    };
-  }
-  const LogReplay run = replay_log(scans, options);
-  const int updates = static_cast<int>(run.updates.size());
-  if (!arguments.frames.empty() && updates > 0 && last_written != updates) {  // end on the finished map
+  // A real laser reaches tens of metres: its range circle would hide the map.
+  FrameWriter frames(arguments.frames, arguments.frame_every, 0.0);
+  options.on_update = [&](const ReplayFrame& f) { frames.update(f.update, f.scan, f.grid, f.segmentation, f.path, f.pose); };
+  WallMapReplay log_map(scans, walls);
+  const GridReplay run = replay_grids(steps_of(log_map), options);
+  if (!run.updates.empty()) {  // end on the finished map
     const int scan = run.updates.back().scan;
-    save_frame(updates, scan, run.final_map, run.incremental, {run.path.begin(), run.path.begin() + scan},
-               scans[scan - 1].pose);
+    frames.finish(static_cast<int>(run.updates.size()), scan, run.final_map, run.incremental,
+                  {run.path.begin(), run.path.begin() + scan}, scans[scan - 1].pose);
   }
   const OccupancyGrid& grid = run.final_map;
   std::cout << "map: " << grid.width() << " x " << grid.height() << " cells at " << grid.resolution << " m, origin ("
             << grid.origin.x << ", " << grid.origin.y << "); built scan by scan, walls not merged\n";
   std::cout << "scans: " << run.scans << ", updates: " << run.updates.size() << "\n";
-  print_update_times(std::cout, run.updates);
+  std::cout << format_update_times(run.updates);
   std::cout << "stability: " << format_stability(run.stability) << "\n";
   std::cout << "final rooms: incremental " << run.incremental.rooms.size() << ", batch " << run.batch.rooms.size() << "\n";
-  if (!arguments.frames.empty()) std::cout << "frames: " << frames_written << " written to " << arguments.frames << "\n";
+  if (!arguments.frames.empty()) std::cout << "frames: " << frames.written() << " written to " << arguments.frames << "\n";
   if (!out_map.empty()) save_map(out_map, grid);
   if (!out_color.empty()) write_overlay(out_color, grid, run.incremental);
   if (!out_rooms.empty()) write_rooms_json(out_rooms, run.incremental);

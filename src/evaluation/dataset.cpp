@@ -92,6 +92,18 @@ std::vector<DatasetMap> select_maps(const std::vector<DatasetMap>& maps, const s
   return selected;
 }
 
+std::string find_ground_truth(const std::string& map_path) {
+  const fs::path path(map_path);
+  std::string stem = path.stem().string();
+  const std::string furnished = "_furnitures";
+  if (stem.size() > furnished.size() && stem.compare(stem.size() - furnished.size(), furnished.size(), furnished) == 0)
+    stem.resize(stem.size() - furnished.size());
+  const fs::path candidate = path.parent_path() / (stem + kGroundTruthSuffix);
+  std::error_code error;
+  if (candidate != path && fs::is_regular_file(candidate, error)) return candidate.string();
+  return {};
+}
+
 std::vector<ImageResult> run_dataset(const std::vector<DatasetMap>& maps, const DatasetRunOptions& options,
                                      const ImageSegmenter& segmenter) {
   std::vector<ImageResult> results;

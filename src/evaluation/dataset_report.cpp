@@ -2,8 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <sstream>
+
+#include "topocut/core/format.h"
 
 namespace topocut {
 
@@ -24,12 +25,6 @@ MeanStd mean_std(const std::vector<double>& values) {
   for (const double v : values) squares += (v - result.mean) * (v - result.mean);
   result.std = std::sqrt(squares / static_cast<double>(values.size()));
   return result;
-}
-
-std::string format(const char* pattern, double a, double b = 0.0, double c = 0.0, double d = 0.0) {
-  char buffer[128];
-  std::snprintf(buffer, sizeof buffer, pattern, a, b, c, d);
-  return buffer;
 }
 
 }  // namespace
@@ -76,19 +71,6 @@ std::string csv_field(const std::string& text) {
 }
 
 }  // namespace
-
-TimeStatistics time_statistics(std::vector<double> values) {
-  TimeStatistics result;
-  if (values.empty()) return result;
-  std::sort(values.begin(), values.end());
-  double sum = 0.0;
-  for (const double v : values) sum += v;
-  result.mean = sum / static_cast<double>(values.size());
-  const std::size_t middle = values.size() / 2;
-  result.median = values.size() % 2 == 1 ? values[middle] : (values[middle - 1] + values[middle]) / 2.0;
-  result.max = values.back();
-  return result;
-}
 
 VariantSummary summarize(const std::vector<ImageResult>& results, Variant variant) {
   VariantSummary summary;

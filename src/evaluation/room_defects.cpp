@@ -12,6 +12,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "topocut/core/error.h"
+#include "topocut/core/format.h"
 #include "topocut/evaluation/dataset_report.h"
 #include "topocut/io/image_input.h"
 
@@ -58,12 +59,6 @@ std::string lower(std::string s) {
 bool is_image_name(const std::string& name) {
   static const std::set<std::string> extensions{".png", ".pgm", ".ppm", ".jpg", ".jpeg", ".bmp", ".tif", ".tiff"};
   return extensions.count(lower(fs::path(name).extension().string())) > 0;
-}
-
-std::string fixed(double value, int decimals) {
-  char buffer[64];
-  std::snprintf(buffer, sizeof buffer, "%.*f", decimals, value);
-  return buffer;
 }
 
 double elapsed_ms(std::chrono::steady_clock::time_point start) {

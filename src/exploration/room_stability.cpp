@@ -2,10 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 
 #include "topocut/core/error.h"
-#include "topocut/exploration/exploration_run.h"
+#include "topocut/core/time_statistics.h"
 
 namespace topocut {
 
@@ -116,7 +115,7 @@ void StabilityTracker::add(const cv::Mat& labels, const Point2& origin, double r
 
 StabilityReport StabilityTracker::report() const {
   StabilityReport out = report_;
-  const UpdateTimes order = update_times(out.churn);  // the same median and nearest-rank p95 as for times
+  const TimeStatistics order = time_statistics(out.churn);  // the same median and nearest-rank p95 as for times
   out.churn_median = order.median;
   out.churn_p95 = order.p95;
   out.churn_max = order.max;
@@ -128,16 +127,6 @@ StabilityReport StabilityTracker::report() const {
     out.rooms_changed += changes > 0 ? 1 : 0;
   }
   return out;
-}
-
-std::string format_stability(const StabilityReport& r) {
-  char buffer[320];
-  std::snprintf(buffer, sizeof buffer,
-                "churn median %.3f %%, p95 %.3f %%, max %.3f %% (%d of %zu updates); rooms changed %d of %zu (%d "
-                "changes); ids used %d, final rooms %d",
-                100.0 * r.churn_median, 100.0 * r.churn_p95, 100.0 * r.churn_max, r.updates_with_churn, r.churn.size(),
-                r.rooms_changed, r.rooms.size(), r.room_changes, r.distinct_ids, r.final_rooms);
-  return buffer;
 }
 
 }  // namespace topocut

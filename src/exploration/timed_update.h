@@ -6,7 +6,7 @@
 
 #include "topocut/core/occupancy_grid.h"
 #include "topocut/core/segmentation.h"
-#include "topocut/exploration/exploration_run.h"
+#include "topocut/exploration/grid_replay.h"
 #include "topocut/segmentation/incremental_segmenter.h"
 
 namespace topocut::detail {

@@ -8,12 +8,6 @@
 
 namespace topocut {
 
-SegmentOptions wall_map_segment_options() {
-  SegmentOptions options;
-  options.binarize.opening_size = 0.15;
-  return options;
-}
-
 void validate(const WallsOptions& options) {
   validate(options.extraction);
   validate(options.merge);

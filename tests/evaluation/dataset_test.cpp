@@ -240,17 +240,6 @@ ImageResult ok_result(const std::string& map, Variant variant, double recall, do
   return r;
 }
 
-TEST(DatasetReport, TimeStatistics) {
-  const TimeStatistics even = time_statistics({3.0, 1.0, 2.0, 10.0});
-  EXPECT_DOUBLE_EQ(even.mean, 4.0);
-  EXPECT_DOUBLE_EQ(even.median, 2.5);
-  EXPECT_DOUBLE_EQ(even.max, 10.0);
-  const TimeStatistics odd = time_statistics({5.0, 1.0, 9.0});
-  EXPECT_DOUBLE_EQ(odd.median, 5.0);
-  const TimeStatistics none = time_statistics({});
-  EXPECT_EQ(none.mean, 0.0);
-}
-
 TEST(DatasetReport, CsvHasExactlyTheAgreedColumns) {
   ImageResult failed;
   failed.map = "b,c";

@@ -1,95 +1,15 @@
 #include "topocut/exploration/exploration_run.h"
 
-#include <algorithm>
-#include <cmath>
-#include <filesystem>
-#include <fstream>
-#include <map>
-#include <sstream>
-
 #include <gtest/gtest.h>
-#include <opencv2/imgcodecs.hpp>
-#include <unistd.h>
 
+#include "exploration/offices_map.h"
 #include "topocut/core/error.h"
-#include "topocut/evaluation/precision_recall.h"
-#include "topocut/exploration/exploration_frame.h"
-#include "topocut/io/map_loader.h"
-#include "topocut/segmentation/segmenter.h"
 
 namespace topocut {
 namespace {
 
-namespace fs = std::filesystem;
-constexpr double kRes = 0.05;
-
-// 15 m x 9 m: a corridor with four rooms behind doors (walls 4 cells).
-OccupancyGrid offices() {
-  OccupancyGrid g;
-  g.resolution = kRes;
-  g.cells = cv::Mat(180, 300, CV_8UC1, cv::Scalar(kOccupied));
-  g.cells(cv::Rect(4, 140, 292, 36)).setTo(kFree);
-  int x = 4;
-  for (const int width : {70, 60, 80, 70}) {
-    g.cells(cv::Rect(x, 4, width, 132)).setTo(kFree);
-    g.cells(cv::Rect(x + width / 2 - 9, 136, 18, 4)).setTo(kFree);
-    x += width + 4;
-  }
-  return g;
-}
-
-void expect_every_free_cell_labelled(const OccupancyGrid& grid, const Segmentation& s) {
-  ASSERT_EQ(s.labels.size(), grid.cells.size());
-  EXPECT_EQ(cv::countNonZero((grid.cells == kFree) & (s.labels == 0)), 0);
-  EXPECT_EQ(cv::countNonZero((grid.cells != kFree) & (s.labels != 0)), 0);
-}
-
-TEST(ExplorationRun, EveryUpdateIsSegmentedAndTheEndMatchesBatch) {
-  const OccupancyGrid world = offices();
-  ExplorationRunOptions options;
-  options.compare_batch = true;
-  int seen = 0;
-  options.on_update = [&](const ExplorationFrame& frame) {
-    ++seen;
-    EXPECT_EQ(frame.update, seen);
-    expect_every_free_cell_labelled(frame.grid, frame.segmentation);
-  };
-  const ExplorationRun run = run_exploration(world, options);
-  ASSERT_FALSE(run.updates.empty());
-  EXPECT_EQ(static_cast<int>(run.updates.size()), seen);
-  EXPECT_LE(static_cast<int>(run.updates.size()), run.scans);
-  // Stability is measured on every update after the first; the incremental segmenter hands out
-  // fresh ids only, so the ids ever used are at least the final rooms.
-  EXPECT_EQ(run.stability.churn.size(), run.updates.size() - 1);
-  EXPECT_EQ(run.stability.final_rooms, static_cast<int>(run.incremental.rooms.size()));
-  EXPECT_GE(run.stability.distinct_ids, run.stability.final_rooms);
-  EXPECT_EQ(run.stop_reason, "no reachable frontier left");
-  int free_changes = 0;
-  for (const UpdateRecord& u : run.updates) {
-    EXPECT_GE(u.incremental_ms, 0.0);
-    EXPECT_GE(u.batch_ms, 0.0);  // compared on every update
-    EXPECT_EQ(u.rooms, u.batch_rooms >= 0 ? u.rooms : -1);
-    free_changes += u.changed_cells > 0;  // some scans only add obstacle cells
-  }
-  EXPECT_GT(free_changes, static_cast<int>(run.updates.size()) / 2);
-  EXPECT_TRUE(run.updates.front().batch_update);  // the first update is a batch one
-  expect_every_free_cell_labelled(run.final_map, run.incremental);
-  expect_every_free_cell_labelled(run.final_map, run.batch);
-  EXPECT_EQ(run.incremental.rooms.size(), run.batch.rooms.size());
-  EXPECT_GT(run.known_free_cells, 0.97 * run.reachable_free_cells);
-  // Score both against the world's own rooms (the four rooms and the corridor, split at the doors).
-  cv::Mat truth = cv::Mat(world.cells == kFree).clone();
-  for (int x = 4, k = 0; k < 4; ++k) {
-    const int width = std::vector<int>{70, 60, 80, 70}[static_cast<std::size_t>(k)];
-    truth(cv::Rect(x + width / 2 - 9, 138, 18, 1)).setTo(0);  // a separator line across each door
-    x += width + 4;
-  }
-  const PrecisionRecall inc = evaluate_against_ground_truth(run.incremental.labels, truth);
-  const PrecisionRecall bat = evaluate_against_ground_truth(run.batch.labels, truth);
-  EXPECT_NEAR(inc.recall, bat.recall, 0.015);
-  EXPECT_NEAR(inc.precision, bat.precision, 0.015);
-  EXPECT_GT(run.peak_state_bytes, 6 * world.cells.total() - 1);
-}
+using test::expect_every_free_cell_labelled;
+using test::offices;
 
 TEST(ExplorationRun, BatchEverySamplesUpdatesAndAlwaysTheLast) {
   ExplorationRunOptions options;
@@ -105,7 +25,6 @@ TEST(ExplorationRun, BatchEverySamplesUpdatesAndAlwaysTheLast) {
   bad.batch_every = 0;
   EXPECT_THROW(run_exploration(offices(), bad), Error);
 }
-
 TEST(ExplorationRun, HintAndNoHintGiveTheSameRooms) {
   ExplorationRunOptions with_hint, without_hint;
   without_hint.use_hint = false;
@@ -115,7 +34,6 @@ TEST(ExplorationRun, HintAndNoHintGiveTheSameRooms) {
   EXPECT_EQ(cv::countNonZero(a.incremental.labels != b.incremental.labels), 0);
   for (std::size_t i = 0; i < a.updates.size(); ++i) EXPECT_EQ(a.updates[i].rooms, b.updates[i].rooms);
 }
-
 TEST(ExplorationRun, GrowingMapIsSegmentedInItsWindow) {
   const OccupancyGrid world = offices();
   ExplorationRunOptions options;
@@ -130,7 +48,6 @@ TEST(ExplorationRun, GrowingMapIsSegmentedInItsWindow) {
   EXPECT_EQ(run.known_free_cells, full.known_free_cells);
   EXPECT_EQ(run.incremental.rooms.size(), run.batch.rooms.size());
 }
-
 TEST(ExplorationRun, LabelsInFrame) {
   cv::Mat labels = (cv::Mat_<int>(2, 3) << 1, 2, 0, 0, 3, 3);
   const cv::Mat out = labels_in_frame(labels, cv::Rect(1, 2, 3, 2), cv::Size(5, 5));
@@ -140,117 +57,6 @@ TEST(ExplorationRun, LabelsInFrame) {
   EXPECT_EQ(cv::countNonZero(out), 4);
   EXPECT_THROW(labels_in_frame(labels, cv::Rect(3, 2, 3, 2), cv::Size(5, 5)), Error);
   EXPECT_THROW(labels_in_frame(labels, cv::Rect(0, 0, 2, 2), cv::Size(5, 5)), Error);
-}
-
-TEST(ExplorationRun, UpdateTimes) {
-  const UpdateTimes odd = update_times({5.0, 1.0, 3.0, 2.0, 4.0});
-  EXPECT_EQ(odd.count, 5);
-  EXPECT_DOUBLE_EQ(odd.median, 3.0);
-  EXPECT_DOUBLE_EQ(odd.p95, 5.0);  // rank ceil(0.95 * 5) = 5
-  EXPECT_DOUBLE_EQ(odd.max, 5.0);
-  EXPECT_DOUBLE_EQ(odd.total, 15.0);
-  EXPECT_DOUBLE_EQ(odd.mean, 3.0);
-  std::vector<double> hundred;
-  for (int i = 100; i >= 1; --i) hundred.push_back(i);
-  const UpdateTimes h = update_times(hundred);
-  EXPECT_DOUBLE_EQ(h.median, 50.5);
-  EXPECT_DOUBLE_EQ(h.p95, 95.0);  // rank 95
-  const UpdateTimes none = update_times({});
-  EXPECT_EQ(none.count, 0);
-  EXPECT_DOUBLE_EQ(none.p95, 0.0);
-}
-
-TEST(ExplorationRun, FindGroundTruth) {
-  const fs::path dir = fs::temp_directory_path() / ("topocut_find_gt_" + std::to_string(::getpid()));
-  fs::create_directories(dir);
-  for (const char* name : {"lab.png", "lab_furnitures.png", "lab_gt_segmentation.png", "other.png"})
-    std::ofstream(dir / name) << "x";
-  EXPECT_EQ(find_ground_truth((dir / "lab.png").string()), (dir / "lab_gt_segmentation.png").string());
-  EXPECT_EQ(find_ground_truth((dir / "lab_furnitures.png").string()), (dir / "lab_gt_segmentation.png").string());
-  EXPECT_EQ(find_ground_truth((dir / "other.png").string()), "");
-  EXPECT_EQ(find_ground_truth((dir / "lab_gt_segmentation.png").string()), "");
-  fs::remove_all(dir);
-}
-
-TEST(ExplorationRun, IncrementalCsvAddsTheUpdateColumns) {
-  IncrementalImageResult ok;
-  ok.incremental = {"lab", Variant::kPlain, true, "", 5, 6, 0.9, 0.8, 12.5};
-  ok.updates = 40;
-  ok.incremental_times = update_times({1.0, 2.0, 3.0});
-  ok.batch_times = update_times({10.0, 30.0});
-  IncrementalImageResult no_batch = ok;
-  no_batch.incremental.variant = Variant::kFurnished;
-  no_batch.batch_times = {};
-  IncrementalImageResult failed;
-  failed.incremental.map = "broken";
-  failed.incremental.error = "cannot read";
-  const std::string csv = incremental_results_csv({ok, no_batch, failed});
-  std::istringstream in(csv);
-  std::string header, a, b, c;
-  std::getline(in, header);
-  std::getline(in, a);
-  std::getline(in, b);
-  std::getline(in, c);
-  EXPECT_EQ(header,
-            "map,variant,rooms,gt_rooms,recall,precision,time_ms,updates,update_median_ms,update_p95_ms,update_max_ms,"
-            "batch_update_median_ms");
-  EXPECT_NE(a.find(",40,2.0000,3.0000,3.0000,20.0000"), std::string::npos) << a;
-  EXPECT_EQ(b.substr(b.size() - 1), ",");  // no batch comparison: last column empty
-  EXPECT_EQ(std::count(c.begin(), c.end(), ','), 11);
-  EXPECT_EQ(c.rfind("broken,", 0), 0u);
-}
-
-TEST(ExplorationFrame, DrawsMapRoomsRobotAndPath) {
-  const OccupancyGrid world = offices();
-  OccupancyGrid known = world;
-  known.cells = cv::Mat(world.cells.size(), CV_8UC1, cv::Scalar(kUnknown));
-  world.cells(cv::Rect(0, 136, 300, 44)).copyTo(known.cells(cv::Rect(0, 136, 300, 44)));
-  const Segmentation s = segment(known);
-  FrameOptions options;
-  options.scale = 2;
-  options.caption = "update 1";
-  const Pose2 robot{5.0, 1.0, 0.0};
-  const cv::Mat frame = render_exploration_frame(known, s, {{2.0, 1.0}, {5.0, 1.0}}, robot, options);
-  ASSERT_EQ(frame.size(), cv::Size(600, 360));
-  ASSERT_EQ(frame.type(), CV_8UC3);
-  // Unknown space stays grey, far from the robot and the caption.
-  const cv::Vec3b unknown = frame.at<cv::Vec3b>(100, 500);
-  EXPECT_EQ(unknown[0], unknown[1]);
-  EXPECT_EQ(unknown[1], unknown[2]);
-  // The robot is a red disc (radius 0.25 m = 10 px) at its position: (5 m, 1 m) is cell
-  // (99.5, 159.5) -> pixel (199, 319); 6 px below its centre is off its white heading line.
-  const cv::Vec3b body = frame.at<cv::Vec3b>(325, 199);
-  EXPECT_GT(body[2], 180);
-  EXPECT_LT(body[0], 100);
-  EXPECT_THROW(render_exploration_frame(world, Segmentation{}, {}, robot), Error);
-}
-
-// Integration on the real maps: exploration ends on every map tried, the known map never marks
-// free what the map says is not, and incremental and batch agree at the end.
-TEST(ExplorationDataset, TerminatesOnRealMaps) {
-  const std::string folder = std::string(TOPOCUT_SHARED_DIR) + "/datasets/bormann";
-  if (!fs::is_directory(folder)) GTEST_SKIP() << "dataset not found at " << folder;
-  IncrementalDatasetOptions options;
-  options.run.variants = {Variant::kPlain, Variant::kFurnished};
-  const std::vector<DatasetMap> maps = select_maps(discover_dataset(folder), {"Freiburg52_scan", "lab_c_scan"});
-  const std::vector<IncrementalImageResult> results = run_incremental_dataset(maps, options);
-  ASSERT_EQ(results.size(), 4u);
-  for (const IncrementalImageResult& r : results) {
-    SCOPED_TRACE(r.incremental.map + " " + to_string(r.incremental.variant));
-    ASSERT_TRUE(r.incremental.ok) << r.incremental.error;
-    EXPECT_EQ(r.stop_reason, "no reachable frontier left");
-    EXPECT_GT(r.updates, 50);
-    EXPECT_GT(r.explored, 0.9);
-    EXPECT_LE(r.explored, 1.0);
-    EXPECT_NEAR(r.incremental.recall, r.batch.recall, 0.08);
-    EXPECT_NEAR(r.incremental.precision, r.batch.precision, 0.08);
-  }
-  // The safety property, checked directly on one furnished map (grey furniture blocks the laser).
-  const OccupancyGrid world = load_map(maps[0].furnished);
-  Explorer explorer(world);
-  while (explorer.next()) {
-  }
-  EXPECT_EQ(cv::countNonZero((explorer.known_cells() == kFree) & (world.cells != kFree)), 0);
 }
 
 }  // namespace

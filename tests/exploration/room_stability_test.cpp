@@ -115,7 +115,6 @@ TEST(RoomStability, OrderStatisticsOverUpdates) {
   EXPECT_DOUBLE_EQ(r.churn_max, 0.5);
   EXPECT_EQ(r.rooms.at(2).id_changes, 1);
   EXPECT_EQ(r.final_rooms, 1);
-  EXPECT_NE(format_stability(r).find("ids used 2, final rooms 1"), std::string::npos);
 }
 
 TEST(RoomStability, RejectsWrongInput) {

@@ -12,6 +12,7 @@
 #include "topocut/scan/laser_simulator.h"
 #include "topocut/walls/wall_extraction.h"
 #include "topocut/walls/wall_map.h"
+#include "topocut/walls/wall_map_replay.h"
 
 namespace topocut {
 namespace {
@@ -43,14 +44,20 @@ std::vector<Wall> as_walls(const std::vector<WallSegment>& segments) {
   return walls;
 }
 
-TEST(IncrementalWallMap, EveryPrefixEqualsTheBatchMapOfThatPrefix) {
-  const std::vector<PosedScan> scans = walk();
-  std::vector<std::vector<WallSegment>> per_scan;
-  std::vector<WallSegment> all;
+// Every scan's wall segments (default options), per scan and all together.
+void extract_segments(const std::vector<PosedScan>& scans, std::vector<std::vector<WallSegment>>& per_scan,
+                      std::vector<WallSegment>& all) {
   for (std::size_t i = 0; i < scans.size(); ++i) {
     per_scan.push_back(extract_wall_segments(scans[i].scan, scans[i].pose, {}, static_cast<int>(i)));
     all.insert(all.end(), per_scan.back().begin(), per_scan.back().end());
   }
+}
+
+TEST(IncrementalWallMap, EveryPrefixEqualsTheBatchMapOfThatPrefix) {
+  const std::vector<PosedScan> scans = walk();
+  std::vector<std::vector<WallSegment>> per_scan;
+  std::vector<WallSegment> all;
+  extract_segments(scans, per_scan, all);
   IncrementalWallMap map(scans, all);
   const OccupancyGrid full = build_wall_map(scans, as_walls(all));
   ASSERT_EQ(map.grid().cells.size(), full.cells.size());
@@ -79,6 +86,28 @@ TEST(IncrementalWallMap, EveryPrefixEqualsTheBatchMapOfThatPrefix) {
   }
   // After the last scan the frames coincide and the grids are equal cell for cell.
   EXPECT_EQ(cv::countNonZero(map.grid().cells != full.cells), 0);
+}
+
+TEST(WallMapReplay, StepsThroughTheLogAsIncrementalWallMapDoes) {
+  const std::vector<PosedScan> scans = walk();
+  std::vector<std::vector<WallSegment>> per_scan;
+  std::vector<WallSegment> all;
+  extract_segments(scans, per_scan, all);
+  IncrementalWallMap map(scans, all);
+  WallMapReplay replay(scans);
+  for (std::size_t i = 0; i < scans.size(); ++i) {
+    ASSERT_TRUE(replay.next());
+    EXPECT_EQ(replay.scans_added(), static_cast<int>(i) + 1);
+    EXPECT_EQ(replay.changed(), map.add(scans[i], per_scan[i])) << "scan " << i;
+    EXPECT_EQ(cv::countNonZero(replay.known_map().cells != map.grid().cells), 0) << "scan " << i;
+    EXPECT_EQ(replay.pose().x, scans[i].pose.x);
+  }
+  // After the last scan there is no next one, and nothing changes any more.
+  const cv::Mat last = replay.known_map().cells.clone();
+  EXPECT_FALSE(replay.next());
+  EXPECT_EQ(replay.scans_added(), static_cast<int>(scans.size()));
+  EXPECT_EQ(cv::countNonZero(replay.known_map().cells != last), 0);
+  EXPECT_THROW(WallMapReplay(std::vector<PosedScan>{}), Error);
 }
 
 TEST(IncrementalWallMap, RepeatedScanChangesNothing) {

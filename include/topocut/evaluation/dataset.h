@@ -46,6 +46,10 @@ std::vector<Variant> present_variants(const std::vector<DatasetMap>& maps);
 // naming an unknown map and listing the known ones.
 std::vector<DatasetMap> select_maps(const std::vector<DatasetMap>& maps, const std::vector<std::string>& names);
 
+// The ground truth next to a Bormann-style map: X_gt_segmentation.png beside X.png or
+// X_furnitures.png. Empty if there is no such file.
+std::string find_ground_truth(const std::string& map_path);
+
 // The outcome of one image. A failed image keeps ok = false and the reason in error; its numbers
 // are meaningless and every report leaves them out.
 struct ImageResult {

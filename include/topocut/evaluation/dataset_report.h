@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "topocut/core/time_statistics.h"
 #include "topocut/evaluation/dataset.h"
 
 namespace topocut {
@@ -21,13 +22,6 @@ struct VariantSummary {
 
 // Summarises the results of one variant; all statistics are 0 when no image of it succeeded.
 VariantSummary summarize(const std::vector<ImageResult>& results, Variant variant);
-
-// Mean, median and maximum of a list of values (0, 0, 0 for an empty list); the median of an
-// even count is the mean of the two middle values.
-struct TimeStatistics {
-  double mean = 0.0, median = 0.0, max = 0.0;
-};
-TimeStatistics time_statistics(std::vector<double> values);
 
 // The per-image table (Markdown): map, variant, rooms found, ground-truth rooms, recall and
 // precision in percent, milliseconds; a failed image shows FAILED and its reason.

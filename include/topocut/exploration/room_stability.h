@@ -65,8 +65,4 @@ class StabilityTracker {
   std::vector<int> ids_seen_;  // sorted
 };
 
-// One line for people: "churn median 0.000 %, p95 0.000 %, max 1.234 % (12 of 900 updates);
-// rooms changed 3 of 40 (5 changes); ids used 44, final rooms 40".
-std::string format_stability(const StabilityReport& report);
-
 }  // namespace topocut

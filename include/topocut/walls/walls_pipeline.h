@@ -1,11 +1,11 @@
 #pragma once
 // Pipeline C end to end: posed scans → per-scan wall segments → merged walls → occupancy grid.
+// Segmenting the grid into rooms is the caller's step (wall_map_segment_options() in segmentation).
 #include <span>
 #include <string>
 #include <vector>
 
 #include "topocut/core/occupancy_grid.h"
-#include "topocut/segmentation/segmenter.h"
 #include "topocut/walls/posed_scan.h"
 #include "topocut/walls/wall_extraction.h"
 #include "topocut/walls/wall_map.h"
@@ -24,10 +24,6 @@ struct WallsResult {
   std::vector<Wall> walls;            // merged (Wall::members index segments)
   OccupancyGrid grid;                 // walls occupied, seen space free, the rest unknown
 };
-
-// The segmenter options for the grids of this pipeline: single rays through doors leave one-cell-wide
-// free spurs, so the free space is opened with a 0.15 m square to keep them out of the rooms.
-SegmentOptions wall_map_segment_options();
 
 // Throws Error naming the first option of any stage outside its range, so that a command can
 // refuse bad options before it reads a log.

@@ -1,5 +1,6 @@
-// A laser log replayed scan by scan into the incremental segmenter.
-#include "topocut/exploration/log_replay.h"
+// A laser log replayed scan by scan into the incremental segmenter: the walls module's grid of each
+// scan (WallMapReplay) through exploration's replay_grids(), the join `topocut walls --incremental` makes.
+#include "topocut/exploration/grid_replay.h"
 
 #include <gtest/gtest.h>
 
@@ -9,8 +10,8 @@
 #include "topocut/core/error.h"
 #include "topocut/scan/laser_simulator.h"
 #include "topocut/segmentation/segmenter.h"
-#include "topocut/walls/wall_extraction.h"
-#include "topocut/walls/wall_map.h"
+#include "topocut/segmentation/wall_map_segment_options.h"
+#include "topocut/walls/wall_map_replay.h"
 
 namespace topocut {
 namespace {
@@ -40,9 +41,23 @@ std::vector<PosedScan> walk() {
   return scans;
 }
 
+// What `walls --incremental` does by default: the segment options of wall maps, without the
+// cleaning, which is not incremental.
+GridReplayOptions log_options() {
+  GridReplayOptions o;
+  o.incremental.segment = wall_map_segment_options();
+  o.incremental.segment.clean = false;
+  return o;
+}
+
+GridReplay replay_log(const std::vector<PosedScan>& scans, const GridReplayOptions& options = log_options()) {
+  WallMapReplay log_map(scans);
+  return replay_grids(steps_of(log_map), options);
+}
+
 TEST(LogReplay, EveryChangeIsSegmentedAndTheEndMatchesBatch) {
   const std::vector<PosedScan> scans = walk();
-  LogReplayOptions options;
+  GridReplayOptions options = log_options();
   options.compare_batch = true;
   int seen = 0;
   options.on_update = [&](const ReplayFrame& frame) {
@@ -51,7 +66,7 @@ TEST(LogReplay, EveryChangeIsSegmentedAndTheEndMatchesBatch) {
     EXPECT_EQ(static_cast<int>(frame.path.size()), frame.scan);
     EXPECT_EQ(cv::countNonZero((frame.grid.cells == kFree) != (frame.segmentation.labels != 0)), 0);
   };
-  const LogReplay run = replay_log(scans, options);
+  const GridReplay run = replay_log(scans, options);
   EXPECT_EQ(run.scans, static_cast<int>(scans.size()));
   EXPECT_EQ(static_cast<int>(run.updates.size()), seen);
   // The repeated scan changed nothing and was not handed to the segmenter.
@@ -71,7 +86,7 @@ TEST(LogReplay, EveryChangeIsSegmentedAndTheEndMatchesBatch) {
 
 TEST(LogReplay, BadInputIsRefused) {
   EXPECT_THROW(replay_log(std::vector<PosedScan>{}), Error);
-  LogReplayOptions options;
+  GridReplayOptions options = log_options();
   options.batch_every = 0;
   EXPECT_THROW(replay_log(walk(), options), Error);
 }

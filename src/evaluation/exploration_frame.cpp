@@ -1,4 +1,4 @@
-#include "topocut/exploration/exploration_frame.h"
+#include "topocut/evaluation/exploration_frame.h"
 
 #include <cmath>
 

@@ -1,0 +1,13 @@
+#pragma once
+// The segmenter options for occupancy grids built from laser rays and walls (the walls module's
+// grids, pipeline C): a preset here, beside segment(), so that the walls module only builds grids
+// and whoever segments them (the CLI, the bindings, a log replay) picks the same options.
+#include "topocut/segmentation/segmenter.h"
+
+namespace topocut {
+
+// Single rays through doors leave one-cell-wide free spurs, so the free space is opened with a
+// 0.15 m square to keep them out of the rooms.
+SegmentOptions wall_map_segment_options();
+
+}  // namespace topocut

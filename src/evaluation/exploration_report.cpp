@@ -1,0 +1,70 @@
+#include "topocut/evaluation/exploration_report.h"
+
+#include <sstream>
+
+#include "topocut/core/format.h"
+#include "topocut/core/time_statistics.h"
+
+namespace topocut {
+
+ExplorationScore score_exploration(const ExplorationRun& run, const cv::Mat& gt_rooms, const EvaluationOptions& options) {
+  auto score = [&](const Segmentation& s) {
+    return precision_recall(labels_in_frame(s.labels, run.window, gt_rooms.size()), gt_rooms, options);
+  };
+  return {score(run.incremental), score(run.batch)};
+}
+
+std::string format_update_times(const std::vector<UpdateRecord>& updates) {
+  std::vector<double> inc, inc_wall, batch, paired;
+  for (const UpdateRecord& u : updates) {
+    inc.push_back(u.incremental_ms);
+    inc_wall.push_back(u.incremental_wall_ms);
+    if (u.batch_ms >= 0.0) {
+      batch.push_back(u.batch_ms);
+      paired.push_back(u.incremental_ms);
+    }
+  }
+  const TimeStatistics inc_t = time_statistics(inc), wall_t = time_statistics(inc_wall),
+                       batch_t = time_statistics(batch), paired_t = time_statistics(paired);
+  std::string out = "incremental per update: " + format("median %.3f ms, p95 %.3f ms, ", inc_t.median, inc_t.p95) +
+                    format("max %.2f ms (total %.1f ms; CPU time)\n", inc_t.max, inc_t.total) +
+                    "  wall clock:           " + format("median %.3f ms, p95 %.3f ms, ", wall_t.median, wall_t.p95) +
+                    format("max %.2f ms\n", wall_t.max);
+  if (batch_t.count == 0) return out;
+  out += "batch per update:       " + format("median %.3f ms, p95 %.3f ms, ", batch_t.median, batch_t.p95) +
+         format("max %.2f ms (%d updates compared)\n", batch_t.max, batch_t.count);
+  if (paired_t.median > 0.0 && paired_t.total > 0.0)
+    out += "speed-up on the same updates: " +
+           format("%.1fx (medians), %.1fx (totals)\n", batch_t.median / paired_t.median, batch_t.total / paired_t.total);
+  return out;
+}
+
+std::string format_stability(const StabilityReport& r) {
+  return format("churn median %.3f %%, p95 %.3f %%, max %.3f %% (%d of %zu updates); rooms changed %d of %zu (%d "
+                "changes); ids used %d, final rooms %d",
+                100.0 * r.churn_median, 100.0 * r.churn_p95, 100.0 * r.churn_max, r.updates_with_churn, r.churn.size(),
+                r.rooms_changed, r.rooms.size(), r.room_changes, r.distinct_ids, r.final_rooms);
+}
+
+std::string format_exploration_summary(const ExplorationRun& run, const cv::Mat& gt_rooms, const std::string& ground_truth) {
+  std::ostringstream out;
+  out << "scans: " << run.scans << ", updates: " << run.updates.size() << " (" << run.stop_reason << "), path "
+      << format("%.1f m\n", run.path_length);
+  if (run.reachable_free_cells > 0)
+    out << "explored: "
+        << format("%.1f %% of the reachable free space\n", 100.0 * run.known_free_cells / run.reachable_free_cells);
+  out << format_update_times(run.updates);
+  out << "stability: " << format_stability(run.stability) << "\n";
+  out << "peak segmenter state: " << format("%.1f MB\n", run.peak_state_bytes / (1024.0 * 1024.0));
+  out << "final rooms: incremental " << run.incremental.rooms.size() << ", batch " << run.batch.rooms.size() << "\n";
+  if (gt_rooms.empty()) return out.str();
+  const ExplorationScore score = score_exploration(run, gt_rooms);
+  const PrecisionRecall& a = score.incremental;
+  const PrecisionRecall& b = score.batch;
+  out << "ground truth " << ground_truth << ":\n"
+      << "  incremental: " << format("recall %.1f %%, precision %.1f %%\n", 100.0 * a.recall, 100.0 * a.precision)
+      << "  batch:       " << format("recall %.1f %%, precision %.1f %%\n", 100.0 * b.recall, 100.0 * b.precision);
+  return out.str();
+}
+
+}  // namespace topocut
