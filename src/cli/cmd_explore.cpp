@@ -5,7 +5,7 @@
 #include <iostream>
 
 #include "cli/command.h"
-#include "cli/input_options.h"
+#include "cli/library_options.h"
 #include "cli/update_report.h"
 #include "topocut/core/error.h"
 #include "topocut/evaluation/precision_recall.h"
@@ -36,10 +36,8 @@ int run(const std::vector<std::string>& args) {
   std::string map_path, frames, gt_path, start;
   ExplorationRunOptions options;
   ExplorationOptions& exploration = options.exploration;
-  double concavity = options.incremental.segment.concavity;
   unsigned seed = 0;
   int frame_every = 1;
-  double resolution = MapLoadOptions{}.resolution;
   bool no_hint = false;
   po::options_description described("Exploration");
   described.add_options()
@@ -51,16 +49,15 @@ int run(const std::vector<std::string>& args) {
       ("max-scans", po::value<int>(&exploration.max_scans)->default_value(exploration.max_scans), "stop after this many scans")
       ("min-frontier", po::value<double>(&exploration.min_frontier)->default_value(exploration.min_frontier), "ignore frontiers shorter than this (metres)")
       ("grow", po::bool_switch(&exploration.growing_map), "publish a map that grows with what was seen (new size and origin), as ROS does")
-      ("concavity", po::value<double>(&concavity)->default_value(concavity), "maximum concavity tau in metres")
-      ("resolution", po::value<double>(&resolution)->default_value(resolution), "metres per pixel of a plain image")
       ("compare-batch", po::bool_switch(&options.compare_batch), "also run the batch segmenter on every update, timed")
       ("batch-every", po::value<int>(&options.batch_every)->default_value(1), "with --compare-batch: only every N-th update (and the last)")
       ("no-hint", po::bool_switch(&no_hint), "do not tell the segmenter which rectangle changed")
       ("gt", po::value<std::string>(&gt_path), "ground-truth segmentation image (default: X_gt_segmentation.png next to the map)")
       ("frames", po::value<std::string>(&frames), "write a PNG frame of every update into this folder")
       ("frame-every", po::value<int>(&frame_every)->default_value(frame_every), "with --frames: only every N-th update (and the last)");
-  ImageLimits limits;
-  add_image_limit_option(described, limits);
+  const SegmentSettings segment_defaults{options.incremental.segment, {}};
+  add_segment_options(described, segment_defaults);
+  add_map_load_options(described, MapLoadOptions{});
   po::positional_options_description positional;
   positional.add("map", 1);
   const auto vm = parse_options(
@@ -82,17 +79,10 @@ int run(const std::vector<std::string>& args) {
   if (options.batch_every < 1) throw UsageError("--batch-every must be at least 1");
   exploration.seed = seed;
   if (vm->count("start")) exploration.start = parse_point(start);
-  options.incremental.segment.concavity = concavity;
+  options.incremental.segment = read_segment_options(*vm, segment_defaults);
   options.use_hint = !no_hint;
-  check_usage([&] {
-    validate(exploration);
-    validate(options.incremental.segment);
-  });
-
-  MapLoadOptions load;
-  load.resolution = resolution;
-  load.limits = limits;
-  check_image_limit_option(load.limits);
+  check_usage([&] { validate(exploration); });
+  const MapLoadOptions load = read_map_load_options(*vm, MapLoadOptions{});
   const OccupancyGrid world = load_map(map_path, load);
   if (gt_path.empty()) gt_path = find_ground_truth(map_path);
   cv::Mat gt_rooms;
