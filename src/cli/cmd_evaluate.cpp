@@ -3,6 +3,7 @@
 #include <iostream>
 
 #include "cli/command.h"
+#include "cli/library_options.h"
 #include "topocut/core/error.h"
 #include "topocut/evaluation/dataset.h"
 #include "topocut/evaluation/dataset_options.h"
@@ -17,7 +18,8 @@
 namespace topocut::cli {
 namespace {
 
-// The options come from the evaluation module's table, so the dataset benchmark accepts the same.
+// The dataset's own options (evaluation's table, which the dataset benchmarks parse too), then
+// the segmentation and map-loading flags every command shares.
 po::options_description described_options() {
   po::options_description described("Evaluation");
   for (const DatasetOption& option : dataset_options()) {
@@ -33,12 +35,15 @@ po::options_description described_options() {
                               option.help.c_str());
     }
   }
+  const DatasetArguments defaults;
+  add_segment_options(described, defaults.segment);
+  add_map_load_options(described, defaults.run.load);
   return described;
 }
 
 DatasetArguments to_arguments(const po::variables_map& vm) {
   DatasetArguments arguments;
-  try {
+  check_usage([&] {
     for (const DatasetOption& option : dataset_options()) {
       if (!vm.count(option.name)) continue;
       if (option.value_name.empty()) {
@@ -51,9 +56,10 @@ DatasetArguments to_arguments(const po::variables_map& vm) {
         apply_dataset_option(arguments, option.name, vm[option.name].as<std::string>());
       }
     }
-  } catch (const Error& e) {
-    throw UsageError(e.what());
-  }
+  });
+  arguments.segment = read_segment_settings(vm, arguments.segment);
+  check_usage([&] { arguments.run.segment = to_segment_options(arguments.segment); });
+  arguments.run.load = read_map_load_options(vm, arguments.run.load);
   return arguments;
 }
 

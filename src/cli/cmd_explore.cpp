@@ -4,8 +4,8 @@
 #include <iostream>
 
 #include "cli/command.h"
-#include "cli/input_options.h"
 #include "cli/frames.h"
+#include "cli/library_options.h"
 #include "topocut/core/error.h"
 #include "topocut/core/format.h"
 #include "topocut/evaluation/dataset.h"
@@ -27,12 +27,8 @@ Point2 parse_point(const std::string& text) {
 
 // The map, and the rooms of its ground truth: gt_path, else the one found next to the map (gt_path
 // is set to it), else none (empty). The ground truth must have the map's size.
-OccupancyGrid load_inputs(const std::string& map_path, double resolution, const ImageLimits& limits, std::string& gt_path,
+OccupancyGrid load_inputs(const std::string& map_path, const MapLoadOptions& load, std::string& gt_path,
                           cv::Mat& gt_rooms) {
-  MapLoadOptions load;
-  load.resolution = resolution;
-  load.limits = limits;
-  check_image_limit_option(load.limits);
   OccupancyGrid world = load_map(map_path, load);
   if (gt_path.empty()) gt_path = find_ground_truth(map_path);
   if (gt_path.empty()) return world;
@@ -47,10 +43,8 @@ int run(const std::vector<std::string>& args) {
   std::string map_path, frames, gt_path, start;
   ExplorationRunOptions options;
   ExplorationOptions& exploration = options.exploration;
-  double concavity = options.incremental.segment.concavity;
   unsigned seed = 0;
   int frame_every = 1;
-  double resolution = MapLoadOptions{}.resolution;
   bool no_hint = false;
   po::options_description described("Exploration");
   described.add_options()
@@ -62,16 +56,15 @@ int run(const std::vector<std::string>& args) {
       ("max-scans", po::value<int>(&exploration.max_scans)->default_value(exploration.max_scans), "stop after this many scans")
       ("min-frontier", po::value<double>(&exploration.min_frontier)->default_value(exploration.min_frontier), "ignore frontiers shorter than this (metres)")
       ("grow", po::bool_switch(&exploration.growing_map), "publish a map that grows with what was seen (new size and origin), as ROS does")
-      ("concavity", po::value<double>(&concavity)->default_value(concavity), "maximum concavity tau in metres")
-      ("resolution", po::value<double>(&resolution)->default_value(resolution), "metres per pixel of a plain image")
       ("compare-batch", po::bool_switch(&options.compare_batch), "also run the batch segmenter on every update, timed")
       ("batch-every", po::value<int>(&options.batch_every)->default_value(1), "with --compare-batch: only every N-th update (and the last)")
       ("no-hint", po::bool_switch(&no_hint), "do not tell the segmenter which rectangle changed")
       ("gt", po::value<std::string>(&gt_path), "ground-truth segmentation image (default: X_gt_segmentation.png next to the map)")
       ("frames", po::value<std::string>(&frames), "write a PNG frame of every update into this folder")
       ("frame-every", po::value<int>(&frame_every)->default_value(frame_every), "with --frames: only every N-th update (and the last)");
-  ImageLimits limits;
-  add_image_limit_option(described, limits);
+  const SegmentSettings segment_defaults{options.incremental.segment, {}};
+  add_segment_options(described, segment_defaults);
+  add_map_load_options(described, MapLoadOptions{});
   po::positional_options_description positional;
   positional.add("map", 1);
   const auto vm = parse_options(
@@ -93,15 +86,16 @@ int run(const std::vector<std::string>& args) {
   if (options.batch_every < 1) throw UsageError("--batch-every must be at least 1");
   exploration.seed = seed;
   if (vm->count("start")) exploration.start = parse_point(start);
-  options.incremental.segment.concavity = concavity;
+  options.incremental.segment = read_segment_options(*vm, segment_defaults);
   options.use_hint = !no_hint;
   check_usage([&] {
     validate(exploration);
     validate(options.incremental.segment);
   });
+  const MapLoadOptions load = read_map_load_options(*vm, MapLoadOptions{});
 
   cv::Mat gt_rooms;
-  const OccupancyGrid world = load_inputs(map_path, resolution, limits, gt_path, gt_rooms);
+  const OccupancyGrid world = load_inputs(map_path, load, gt_path, gt_rooms);
   if (!frames.empty()) prepare_frames_folder(frames, {map_path, gt_path});
   FrameWriter writer(frames, frame_every, exploration.range);
   options.on_update = [&](const ExplorationFrame& f) {

@@ -2,6 +2,7 @@
 #include <iostream>
 
 #include "cli/command.h"
+#include "cli/library_options.h"
 #include "topocut/core/error.h"
 #include "topocut/labeling/labeling_json.h"
 #include "topocut/scan/scan_csv.h"
@@ -23,7 +24,7 @@ int run(const std::vector<std::string>& args) {
   po::options_description described("Labeling");
   described.add_options()
       ("scan", po::value<std::string>(&scan_path)->required(), "scan CSV (header angle,range; radians, metres; - for standard input)")
-      ("cell", po::value<double>(&options.cell_size)->default_value(options.cell_size, "0.05"), "raster cell size in metres")
+      ("cell", number_value(options.cell_size), "raster cell size in metres")
       ("dilate", po::value<int>(&options.dilation)->default_value(options.dilation), "dilation iterations of the 3x3 element")
       ("element", po::value<std::string>(&element)->default_value(element), "structuring element: cross or square")
       ("connectivity", po::value<int>(&options.connectivity)->default_value(options.connectivity), "4 or 8")

@@ -4,6 +4,7 @@
 
 #include "cli/command.h"
 #include "cli/frames.h"
+#include "cli/library_options.h"
 #include "topocut/core/error.h"
 #include "topocut/evaluation/exploration_report.h"
 #include "topocut/exploration/grid_replay.h"
@@ -77,23 +78,21 @@ int run(const std::vector<std::string>& args) {
   std::string out_map, out_walls, out_color, out_rooms;
   WallsOptions options;
   CarmenReadOptions read;
-  SegmentOptions segment_options = wall_map_segment_options();
+  const SegmentSettings segment_defaults{wall_map_segment_options(), {}};
   ReplayArguments replay_arguments;
   po::options_description described("Walls");
   described.add_options()
       ("log", po::value<std::string>(&log_path)->required(), "CARMEN log with FLASER messages (plain or .gz)")
-      ("resolution", po::value<double>(&options.map.resolution)->default_value(options.map.resolution, "0.05"), "grid resolution in metres per cell")
+      ("resolution", number_value(options.map.resolution), "grid resolution in metres per cell")
       ("method", po::value<std::string>(&method)->default_value(method), "line extractor: sef, lt, iepf, smf or ale")
-      ("cell", po::value<double>(&options.extraction.labeling.cell_size)->default_value(options.extraction.labeling.cell_size, "0.10"), "labeling cell size in metres")
+      ("cell", number_value(options.extraction.labeling.cell_size), "labeling cell size in metres")
       ("dilate", po::value<int>(&options.extraction.labeling.dilation)->default_value(options.extraction.labeling.dilation), "labeling dilation iterations")
       ("element", po::value<std::string>(&element)->default_value(element), "labeling structuring element: cross or square")
-      ("thickness", po::value<double>(&options.map.wall_thickness)->default_value(options.map.wall_thickness, "0.10"), "wall thickness in metres")
+      ("thickness", number_value(options.map.wall_thickness), "wall thickness in metres")
       ("max-range", po::value<double>(&read.max_range)->default_value(0.0), "readings at or beyond this range (m) are no return; 0 detects the laser's saturation value")
       ("out-map", po::value<std::string>(&out_map), "write the grid as a ROS map_server map (YAML + PGM next to it)")
       ("out-walls", po::value<std::string>(&out_walls), "write the merged walls as JSON")
       ("segment", "segment the grid into rooms (pipeline A)")
-      ("concavity", po::value<double>(&segment_options.concavity)->default_value(segment_options.concavity, "2.5"), "tau for --segment, metres")
-      ("opening", po::value<double>(&segment_options.binarize.opening_size)->default_value(segment_options.binarize.opening_size, "0.15"), "for --segment: open the free space with a square of this side (m) to drop single-ray spurs; 0: off")
       ("out-color", po::value<std::string>(&out_color), "write the rooms as a colour overlay (implies --segment)")
       ("out-rooms", po::value<std::string>(&out_rooms), "write the rooms as JSON (implies --segment)")
       ("incremental", "replay the log: build the grid scan by scan and segment every change incrementally")
@@ -101,6 +100,9 @@ int run(const std::vector<std::string>& args) {
       ("batch-every", po::value<int>(&replay_arguments.batch_every)->default_value(1), "with --compare-batch: only every N-th update (and the last)")
       ("frames", po::value<std::string>(&replay_arguments.frames), "with --incremental: write a PNG frame of every update into this folder")
       ("frame-every", po::value<int>(&replay_arguments.frame_every)->default_value(1), "with --frames: only every N-th update (and the last)");
+  po::options_description segmentation("Segmentation (with --segment, --out-color, --out-rooms or --incremental)");
+  add_segment_options(segmentation, segment_defaults);
+  described.add(segmentation);
   po::positional_options_description positional;
   positional.add("log", 1);
   const auto vm = parse_options(
@@ -116,6 +118,7 @@ int run(const std::vector<std::string>& args) {
       "stability of the room ids (churn: share of labelled cells whose room changed per update).",
       described, positional, args);
   if (!vm) return 0;
+  const SegmentOptions segment_options = read_segment_options(*vm, segment_defaults);
   try {
     options.extraction.lines.method = parse_line_method(method);
   } catch (const Error& e) {

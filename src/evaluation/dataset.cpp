@@ -19,8 +19,8 @@ namespace {
 constexpr const char* kGroundTruthSuffix = "_gt_segmentation.png";
 
 std::string status_line(std::size_t index, std::size_t total, const ImageResult& result) {
-  std::string line = "[" + std::to_string(index) + "/" + std::to_string(total) + "] " + result.map + " " +
-                     to_string(result.variant) + ": ";
+  std::string line = "[";  // appended: GCC 12 warns falsely (-Wrestrict) on "literal" + a temporary string
+  line += std::to_string(index) + "/" + std::to_string(total) + "] " + result.map + " " + to_string(result.variant) + ": ";
   if (!result.ok) return line + "FAILED: " + result.error;
   char numbers[160];
   std::snprintf(numbers, sizeof numbers, "rooms %d (ground truth %d), recall %.3f, precision %.3f, %.0f ms",

@@ -1,45 +1,58 @@
 #include "topocut/evaluation/dataset_options.h"
 
-#include <cmath>
 #include <cstdio>
-#include <stdexcept>
 
 #include "topocut/core/error.h"
-#include "topocut/io/image_input.h"
+#include "topocut/core/option_table.h"
+#include "topocut/io/map_load_flags.h"
 
 namespace topocut {
 
 namespace {
 
+// As method names have always printed numbers (%g).
 std::string number(double value) {
   char buffer[64];
   std::snprintf(buffer, sizeof buffer, "%g", value);
   return buffer;
 }
 
-// The whole of value as a number satisfying ok; otherwise Error "--name needs <what>, not 'value'".
-template <typename Ok>
-double parse_number(const std::string& name, const std::string& value, const std::string& what, Ok ok) {
-  std::size_t used = 0;
-  double parsed = 0.0;
-  try {
-    parsed = std::stod(value, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
-  if (used == 0 || used != value.size() || !ok(parsed)) throw Error("--" + name + " needs " + what + ", not '" + value + "'");
-  return parsed;
-}
+// How an option is given on a command line.
+enum class Takes { kNothing, kValue, kValues, kUnknown };
 
-double parse_positive_metres(const std::string& name, const std::string& value) {
-  return parse_number(name, value, "a positive number of metres", [](double v) { return std::isfinite(v) && v > 0.0; });
-}
-
-const DatasetOption* find_option(const std::string& name) {
+Takes takes(const std::string& name) {
   for (const DatasetOption& option : dataset_options()) {
-    if (option.name == name) return &option;
+    if (option.name == name) return option.value_name.empty() ? Takes::kNothing : option.repeatable ? Takes::kValues : Takes::kValue;
   }
-  return nullptr;
+  if (const auto* row = find_option(segment_option_rows(), name)) return row->is_switch() ? Takes::kNothing : Takes::kValue;
+  if (const auto* row = find_option(map_load_option_rows(), name)) return row->is_switch() ? Takes::kNothing : Takes::kValue;
+  return Takes::kUnknown;
+}
+
+// Sets row in target from value (a switch: ""); true if row is not null.
+template <typename Target>
+bool apply_row(const OptionRow<Target>* row, Target& target, const std::string& value) {
+  if (row == nullptr) return false;
+  const std::string shown = "--" + row->name;
+  set_option(*row, target, row->is_switch() ? 1.0 : parse_option_number(value, shown), shown);
+  return true;
+}
+
+// "  --name VALUE           help" padded to the help column.
+std::string help_line(const std::string& name, const std::string& value_name, const std::string& help) {
+  std::string left = "  --" + name + (value_name.empty() ? "" : " " + value_name);
+  if (left.size() < 24) left += std::string(24 - left.size(), ' ');
+  return left + " " + help + "\n";
+}
+
+template <typename Target>
+std::string rows_help(const std::vector<OptionRow<Target>>& rows, const Target& defaults) {
+  std::string help;
+  for (const OptionRow<Target>& row : rows) {
+    const std::string shown_default = row.is_switch() ? "" : " (default " + shortest_number(row.get(defaults)) + ")";
+    help += help_line(row.name, row.value_name, row.help + shown_default);
+  }
+  return help;
 }
 
 }  // namespace
@@ -52,24 +65,6 @@ const std::vector<DatasetOption>& dataset_options() {
         {"variant", "V", "plain, furnished or all (default: those the folder has)", false},
         {"map", "NAME", "run only the named maps (one or more; default all)", true},
         {"csv", "FILE", "also write the per-image results to FILE as CSV", false},
-        {"concavity", "M", "maximum concavity tau in metres (default " + number(defaults.run.segment.concavity) + ")",
-         false},
-        {"trivial", "", "baseline: every free-space component is one room (no decomposition)", false},
-        {"parity", "", "the reference: DuDe's pieces are the rooms (no doors, merging or simplification)", false},
-        {"no-doors", "", "no door cuts before the decomposition", false},
-        {"no-wall-openings", "", "door cuts without the wall openings", false},
-        {"no-merge", "", "no merging of pieces into rooms", false},
-        {"no-simplify", "", "decompose the exact pixel-edge polygons", false},
-        {"cover-obstacles", "", "rooms also label the obstacles they absorbed (furniture)", false},
-        {"no-clean", "", "decompose the free space as it is (no removal of ray fans, slivers and specks)", false},
-        {"fixed-thresholds", "", "plain images: grey > 250 free, < 50 occupied (no palette detection)", false},
-        {"no-width-steps", "", "merge a room into a much wider space it opens onto (no width-step rule)", false},
-        {"no-furniture-rule", "", "cuts that end on furniture-sized obstacles may separate rooms", false},
-        {"resolution", "M", "metres per cell of images without a YAML (default " + number(defaults.run.load.resolution) + ")",
-         false},
-        {kMaxMegapixelsOption, "MP", max_megapixels_help(), false},
-        {"oversegment", "F", "with merging, DuDe cuts at F x tau, 0 < F <= 1 (default " +
-                                  number(defaults.run.segment.oversegment) + ")", false},
     };
   }();
   return options;
@@ -94,41 +89,9 @@ void apply_dataset_option(DatasetArguments& arguments, const std::string& name, 
   } else if (name == "csv") {
     if (value.empty()) throw Error("--csv needs a file name");
     arguments.csv = value;
-  } else if (name == "concavity") {
-    arguments.run.segment.concavity = parse_positive_metres(name, value);
-  } else if (name == "trivial") {
-    arguments.run.segment.decompose = false;
-  } else if (name == "parity") {
-    const bool decompose = arguments.run.segment.decompose;
-    arguments.run.segment = parity_segment_options(arguments.run.segment.concavity);
-    arguments.run.segment.decompose = decompose;
-  } else if (name == "no-doors") {
-    arguments.run.segment.doors.enabled = false;
-  } else if (name == "no-wall-openings") {
-    arguments.run.segment.doors.extend_walls = false;
-  } else if (name == "no-merge") {
-    arguments.run.segment.merge.enabled = false;
-  } else if (name == "no-simplify") {
-    arguments.run.segment.simplify = 0.0;
-  } else if (name == "cover-obstacles") {
-    arguments.run.segment.labels.cover_absorbed_obstacles = true;
-  } else if (name == "no-clean") {
-    arguments.run.segment.clean = false;
-  } else if (name == "fixed-thresholds") {
-    arguments.run.load.detect_palette = false;
-  } else if (name == "no-width-steps") {
-    arguments.run.segment.merge.step_ratio = 0.0;
-  } else if (name == "no-furniture-rule") {
-    arguments.run.segment.merge.furniture_size = 0.0;
-  } else if (name == "resolution") {
-    arguments.run.load.resolution = parse_positive_metres(name, value);
-  } else if (name == kMaxMegapixelsOption) {
-    arguments.run.load.limits.max_megapixels = parse_number(name, value, "a number of megapixels", [](double) { return true; });
-    validate(arguments.run.load.limits);
-  } else if (name == "oversegment") {
-    arguments.run.segment.oversegment =
-        parse_number(name, value, "a factor in (0, 1]", [](double v) { return v > 0.0 && v <= 1.0; });
-  } else {
+  } else if (apply_row(find_option(segment_option_rows(), name), arguments.segment, value)) {
+    arguments.run.segment = to_segment_options(arguments.segment);
+  } else if (!apply_row(find_option(map_load_option_rows(), name), arguments.run.load, value)) {
     throw Error("unknown option '--" + name + "'");
   }
 }
@@ -146,34 +109,32 @@ DatasetArguments parse_dataset_arguments(const std::vector<std::string>& args) {
       name = name.substr(0, eq);
       has_inline_value = true;
     }
-    const DatasetOption* option = find_option(name);
-    if (option == nullptr) throw Error("unknown option '--" + name + "'");
-    if (option->value_name.empty()) {
+    const Takes kind = takes(name);
+    if (kind == Takes::kUnknown) throw Error("unknown option '--" + name + "'");
+    if (kind == Takes::kNothing) {
       if (has_inline_value) throw Error("--" + name + " takes no value");
       apply_dataset_option(arguments, name, "");
     } else if (has_inline_value) {
       apply_dataset_option(arguments, name, inline_value);
     } else {
       if (i + 1 >= args.size() || args[i + 1].rfind("--", 0) == 0) {
-        throw Error("--" + name + " needs a value (" + option->value_name + ")");
+        throw Error("--" + name + " needs a value");
       }
       apply_dataset_option(arguments, name, args[++i]);
-      while (option->repeatable && i + 1 < args.size() && args[i + 1].rfind("--", 0) != 0) {
+      while (kind == Takes::kValues && i + 1 < args.size() && args[i + 1].rfind("--", 0) != 0) {
         apply_dataset_option(arguments, name, args[++i]);
       }
     }
   }
+  validate(arguments.run.load);  // the thresholds together
   return arguments;
 }
 
 std::string dataset_options_help() {
   std::string help;
-  for (const DatasetOption& option : dataset_options()) {
-    std::string left = "  --" + option.name + (option.value_name.empty() ? "" : " " + option.value_name);
-    if (left.size() < 24) left += std::string(24 - left.size(), ' ');
-    help += left + " " + option.help + "\n";
-  }
-  return help;
+  for (const DatasetOption& option : dataset_options()) help += help_line(option.name, option.value_name, option.help);
+  const DatasetArguments defaults;
+  return help + rows_help(segment_option_rows(), defaults.segment) + rows_help(map_load_option_rows(), defaults.run.load);
 }
 
 std::string method_name(const SegmentOptions& options) {

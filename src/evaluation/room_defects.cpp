@@ -140,10 +140,13 @@ std::vector<MapDefectResult> run_map_files(const std::vector<MapFile>& maps, con
     results.push_back(run_one(maps[i], options));
     const MapDefectResult& r = results.back();
     if (options.progress) {
-      const std::string head = "[" + std::to_string(i + 1) + "/" + std::to_string(maps.size()) + "] " + r.map + ": ";
-      options.progress(r.ok ? head + std::to_string(r.defects.rooms) + " rooms, " + std::to_string(r.defects.thin) +
-                                  " thin, " + std::to_string(r.defects.specks) + " specks, " + fixed(r.time_ms, 0) + " ms"
-                            : head + "FAILED: " + r.error);
+      // Appended, not "literal" + a temporary string: GCC 12 warns falsely (-Wrestrict) on that.
+      std::string line = "[";
+      line += std::to_string(i + 1) + "/" + std::to_string(maps.size()) + "] " + r.map + ": ";
+      line += r.ok ? std::to_string(r.defects.rooms) + " rooms, " + std::to_string(r.defects.thin) + " thin, " +
+                         std::to_string(r.defects.specks) + " specks, " + fixed(r.time_ms, 0) + " ms"
+                   : "FAILED: " + r.error;
+      options.progress(line);
     }
   }
   return results;
@@ -193,7 +196,10 @@ std::string format_defects_table(const std::vector<MapDefectResult>& results) {
     const TimeStatistics ratio = time_statistics(ratios);
     text += "; ms / floor median " + fixed(ratio.median, 1) + ", max " + fixed(ratio.max, 1);
   }
-  if (failed > 0) text += "; " + std::to_string(failed) + " failed";
+  if (failed > 0) {
+    text += "; ";
+    text += std::to_string(failed) + " failed";
+  }
   return text + "\n";
 }
 
@@ -202,7 +208,8 @@ std::string defects_csv(const std::vector<MapDefectResult>& results) {
   for (const MapDefectResult& r : results) {
     csv += r.map;
     if (r.ok) {
-      csv += "," + std::to_string(r.width) + "," + std::to_string(r.height) + "," + std::to_string(r.defects.rooms) + "," +
+      csv += ',';
+      csv += std::to_string(r.width) + "," + std::to_string(r.height) + "," + std::to_string(r.defects.rooms) + "," +
              std::to_string(r.defects.thin) + "," + std::to_string(r.defects.specks) + "," + fixed(r.time_ms, 3) + "," +
              (r.floor_ms > 0.0 ? fixed(r.floor_ms, 3) : "");
     } else {

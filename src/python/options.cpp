@@ -1,9 +1,5 @@
 #include "python/options.h"
 
-#include <cmath>
-#include <functional>
-#include <map>
-
 #include <pybind11/stl.h>
 
 #include "topocut/core/error.h"
@@ -12,57 +8,25 @@
 namespace topocut::python {
 namespace {
 
-struct Settings {
-  SegmentOptions options;
-  SegmentSwitches switches;
-};
-
-enum class Check { kPositive, kNonNegative, kNone };
-
-struct NumberOption {
-  Check check;
-  std::function<double&(Settings&)> field;
-};
-
-// The segment command's numeric options (src/cli/cmd_segment.cpp), same names, same checks.
-const std::map<std::string, NumberOption>& number_options() {
-  static const std::map<std::string, NumberOption> table = {
-      {"concavity", {Check::kPositive, [](Settings& s) -> double& { return s.options.concavity; }}},
-      {"door_width", {Check::kPositive, [](Settings& s) -> double& { return s.options.doors.max_width; }}},
-      {"fold_area", {Check::kNonNegative, [](Settings& s) -> double& { return s.options.merge.min_room_area; }}},
-      {"robot_radius", {Check::kNonNegative, [](Settings& s) -> double& { return s.options.binarize.robot_radius; }}},
-      {"min_room_area", {Check::kNonNegative, [](Settings& s) -> double& { return s.options.contours.min_component_area; }}},
-      {"min_hole_area", {Check::kNonNegative, [](Settings& s) -> double& { return s.options.contours.min_hole_area; }}},
-  };
-  return table;
+// Python's keyword for a row of the library's table: the command's flag with '_' for '-'.
+std::string keyword(const std::string& flag) {
+  std::string name = flag;
+  for (char& c : name) c = c == '-' ? '_' : c;
+  return name;
 }
 
-const std::map<std::string, std::function<bool&(Settings&)>>& switch_options() {
-  static const std::map<std::string, std::function<bool&(Settings&)>> table = {
-      {"trivial", [](Settings& s) -> bool& { return s.switches.trivial; }},
-      {"parity", [](Settings& s) -> bool& { return s.switches.parity; }},
-      {"no_doors", [](Settings& s) -> bool& { return s.switches.no_doors; }},
-      {"no_wall_openings", [](Settings& s) -> bool& { return s.switches.no_wall_openings; }},
-      {"no_merge", [](Settings& s) -> bool& { return s.switches.no_merge; }},
-      {"no_simplify", [](Settings& s) -> bool& { return s.switches.no_simplify; }},
-      {"no_clean", [](Settings& s) -> bool& { return s.switches.no_clean; }},
-      {"no_width_steps", [](Settings& s) -> bool& { return s.switches.no_width_steps; }},
-      {"no_furniture_rule", [](Settings& s) -> bool& { return s.switches.no_furniture_rule; }},
-      {"cover_obstacles", [](Settings& s) -> bool& { return s.options.labels.cover_absorbed_obstacles; }},
-  };
-  return table;
+const OptionRow<SegmentSettings>* find_keyword(const std::string& name) {
+  for (const OptionRow<SegmentSettings>& row : segment_option_rows())
+    if (keyword(row.name) == name) return &row;
+  return nullptr;
 }
 
-double number(const py::handle& value, const std::string& name, Check check) {
-  double v = 0.0;
+double number(const py::handle& value, const std::string& name) {
   try {
-    v = value.cast<double>();
+    return value.cast<double>();
   } catch (const py::cast_error&) {
     throw Error(name + " must be a number");
   }
-  if (check == Check::kPositive && (!std::isfinite(v) || v <= 0.0)) throw Error(name + " must be a positive number");
-  if (check == Check::kNonNegative && (!std::isfinite(v) || v < 0.0)) throw Error(name + " must be a non-negative number");
-  return v;
 }
 
 template <typename T>
@@ -77,21 +41,20 @@ T pop(py::dict& kwargs, const char* name, T fallback) {
   }
 }
 
-Settings settings_from(const py::dict& kwargs, Settings s) {
+// The segment options from kwargs (the segment command's table, segment_option_rows()) over s.
+SegmentOptions settings_from(const py::dict& kwargs, SegmentSettings s) {
   for (const auto& [key, value] : kwargs) {
     const std::string name = key.cast<std::string>();
-    if (const auto n = number_options().find(name); n != number_options().end()) {
-      n->second.field(s) = number(value, name, n->second.check);
-      if (name == "min_room_area") s.switches.min_room_area_given = true;
-    } else if (const auto b = switch_options().find(name); b != switch_options().end()) {
-      b->second(s) = py::reinterpret_borrow<py::object>(value).cast<bool>();
-    } else {
+    const OptionRow<SegmentSettings>* row = find_keyword(name);
+    if (row == nullptr)
       throw py::type_error("unexpected keyword argument '" + name + "'; options are: " + segment_option_names());
+    if (row->is_switch()) {
+      row->set(s, py::reinterpret_borrow<py::object>(value).cast<bool>() ? 1.0 : 0.0);
+    } else {
+      set_option(*row, s, number(value, name), name);
     }
   }
-  apply(s.switches, s.options);
-  validate(s.options);
-  return s;
+  return to_segment_options(s);
 }
 
 }  // namespace
@@ -129,7 +92,7 @@ void apply(const GridReading& reading, double resolution, const py::handle& orig
   array.occupied_max = reading.occupied_threshold;
 }
 
-SegmentOptions segment_options(const py::dict& kwargs) { return settings_from(kwargs, Settings{}).options; }
+SegmentOptions segment_options(const py::dict& kwargs) { return settings_from(kwargs, SegmentSettings{}); }
 
 IncrementalOptions incremental_options(py::dict kwargs) {
   IncrementalOptions o;
@@ -137,18 +100,19 @@ IncrementalOptions incremental_options(py::dict kwargs) {
   o.absorb_fraction = pop<double>(kwargs, "absorb_fraction", o.absorb_fraction);
   o.batch_fraction = pop<double>(kwargs, "batch_fraction", o.batch_fraction);
   o.neighbours_across_doors = pop<bool>(kwargs, "neighbours_across_doors", o.neighbours_across_doors);
-  Settings s;
-  s.options = o.segment;
+  SegmentSettings s{o.segment, {}};
   s.switches.no_clean = true;
-  o.segment = settings_from(kwargs, s).options;
+  o.segment = settings_from(kwargs, s);
   return o;
 }
 
 std::string segment_option_names() {
   std::string names;
-  for (const auto& [name, option] : number_options()) names += (names.empty() ? "" : ", ") + name;
-  for (const auto& [name, option] : switch_options()) names += ", " + name;
-  return names + ", row_order, free_thresh, occupied_thresh, fixed_thresholds, free_threshold, occupied_threshold";
+  for (const OptionRow<SegmentSettings>& row : segment_option_rows()) {
+    names += keyword(row.name);
+    names += ", ";
+  }
+  return names + "row_order, free_thresh, occupied_thresh, fixed_thresholds, free_threshold, occupied_threshold";
 }
 
 }  // namespace topocut::python

@@ -15,60 +15,38 @@
 
 #include <nlohmann/json.hpp>
 
+#include "cli/cli_runner.h"
+
 namespace {
 
 namespace fs = std::filesystem;
 
-struct Outcome {
-  int exit_code = -1;
-  std::string out;
-  std::string err;
-};
-
-std::string slurp(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
+using topocut::testing::CliResult;
+using topocut::testing::run_cli_line;
+using topocut::testing::file_text;
 
 class DecomposeCli : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("topocut_decompose_cli_" + std::to_string(::getpid()) + "_" +
-                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
   fs::path write(const std::string& name, const std::string& text) {
     const fs::path path = dir_ / name;
     std::ofstream(path, std::ios::binary) << text;
     return path;
   }
 
-  Outcome run(const std::string& args) {
-    const fs::path out = dir_ / "stdout.txt", err = dir_ / "stderr.txt";
-    const std::string command = std::string(TOPOCUT_CLI) + " decompose " + args + " >" + out.string() + " 2>" + err.string();
-    const int status = std::system(command.c_str());
-    Outcome o;
-    o.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    o.out = slurp(out);
-    o.err = slurp(err);
-    return o;
-  }
+  CliResult run(const std::string& args) { return run_cli_line(dir_, "decompose " + args); }
 
   // Runs with bad input: non-zero exit, nothing on stdout, exactly one error line naming `fragment`.
   void expect_error(const std::string& args, const std::string& fragment) {
-    const Outcome o = run(args);
-    EXPECT_NE(o.exit_code, 0) << args;
+    const CliResult o = run(args);
+    EXPECT_NE(o.code, 0) << args;
     EXPECT_TRUE(o.out.empty()) << o.out;
     EXPECT_EQ(std::count(o.err.begin(), o.err.end(), '\n'), 1) << o.err;
     EXPECT_NE(o.err.find("error"), std::string::npos) << o.err;
     EXPECT_NE(o.err.find(fragment), std::string::npos) << "expected '" << fragment << "' in: " << o.err;
   }
 
-  fs::path dir_;
+  topocut::testing::TempDir temp_;
+  const fs::path dir_ = temp_.path();
 };
 
 // §9.3 of the spec: a 10x10 room with a 4x4 obstacle, given clockwise (orientation is free).
@@ -77,8 +55,8 @@ const char* kSquareWithHole =
 
 TEST_F(DecomposeCli, PrintsPiecesAndCuts) {
   const fs::path in = write("room.json", kSquareWithHole);
-  const Outcome o = run(in.string() + " --tau 4");
-  ASSERT_EQ(o.exit_code, 0) << o.err;
+  const CliResult o = run(in.string() + " --tau 4");
+  ASSERT_EQ(o.code, 0) << o.err;
   const auto doc = nlohmann::json::parse(o.out);
   ASSERT_EQ(doc["pieces"].size(), 2u);
   double total = 0;
@@ -102,10 +80,10 @@ TEST_F(DecomposeCli, PrintsPiecesAndCuts) {
 TEST_F(DecomposeCli, LargeTauAbsorbsTheHoleAndWritesAFile) {
   const fs::path in = write("room.json", kSquareWithHole);
   const fs::path out = dir_ / "result.json";
-  const Outcome o = run(in.string() + " --tau 6 -o " + out.string());
-  ASSERT_EQ(o.exit_code, 0) << o.err;
+  const CliResult o = run(in.string() + " --tau 6 -o " + out.string());
+  ASSERT_EQ(o.code, 0) << o.err;
   EXPECT_TRUE(o.out.empty());
-  const auto doc = nlohmann::json::parse(slurp(out));
+  const auto doc = nlohmann::json::parse(file_text(out));
   ASSERT_EQ(doc["pieces"].size(), 1u);
   EXPECT_DOUBLE_EQ(doc["pieces"][0]["area"].get<double>(), 100.0);
   EXPECT_TRUE(doc["cuts"].empty());
@@ -114,17 +92,17 @@ TEST_F(DecomposeCli, LargeTauAbsorbsTheHoleAndWritesAFile) {
 
 TEST_F(DecomposeCli, ReferenceOptionsAreAccepted) {
   const fs::path in = write("l.json", R"({"outer": [[0,0],[10,0],[10,4],[4,4],[4,10],[0,10]]})");
-  const Outcome o = run(in.string() + " --tau 2 --selection reference --concavity hierarchical --candidates reference"
+  const CliResult o = run(in.string() + " --tau 2 --selection reference --concavity hierarchical --candidates reference"
                                       " --pocket-polygons reference --hull-chain-distance line --skinny all");
-  ASSERT_EQ(o.exit_code, 0) << o.err;
+  ASSERT_EQ(o.code, 0) << o.err;
   const auto doc = nlohmann::json::parse(o.out);
   EXPECT_EQ(doc["pieces"].size(), 2u);
   EXPECT_EQ(doc["cuts"].size(), 1u);
 }
 
 TEST_F(DecomposeCli, HelpExitsZero) {
-  const Outcome o = run("--help");
-  EXPECT_EQ(o.exit_code, 0);
+  const CliResult o = run("--help");
+  EXPECT_EQ(o.code, 0);
   EXPECT_NE(o.out.find("--tau"), std::string::npos);
 }
 
@@ -187,7 +165,7 @@ TEST_F(DecomposeCli, AStdoutThatCannotBeWrittenIsAnError) {
     const int status = std::system(command.c_str());
     ASSERT_TRUE(WIFEXITED(status));
     EXPECT_EQ(WEXITSTATUS(status), 1);
-    const std::string message = slurp(err);
+    const std::string message = file_text(err);
     EXPECT_EQ(std::count(message.begin(), message.end(), '\n'), 1) << message;
     EXPECT_NE(message.find("cannot write to standard output"), std::string::npos) << message;
   }

@@ -12,37 +12,20 @@
 
 #include <gtest/gtest.h>
 
+#include "cli/cli_runner.h"
 #include "io/temp_dir.h"
 
 namespace {
 
 using topocut::testing::TempDir;
 
-std::string slurp(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-std::string quote(const std::string& s) {
-  std::string q = "'";
-  for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return q + "'";
-}
-
-// Runs `topocut ARGS` and returns its exit code; stdout and stderr go to files in dir.
-int topocut(const TempDir& dir, const std::vector<std::string>& args, const std::string& tag) {
-  std::string command = quote(TOPOCUT_CLI);
-  for (const std::string& a : args) command += " " + quote(a);
-  command += " >" + quote(dir.file(tag + ".out")) + " 2>" + quote(dir.file(tag + ".err"));
-  const int status = std::system(command.c_str());
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-}
+using topocut::testing::CliResult;
+using topocut::testing::file_text;
+using topocut::testing::run_cli;
 
 // The first two outputs of a run are equal, byte for byte, to the same outputs of a second run.
 void expect_identical(const std::string& first, const std::string& second) {
-  const std::string a = slurp(first), b = slurp(second);
+  const std::string a = file_text(first), b = file_text(second);
   EXPECT_FALSE(a.empty()) << first << " is empty";
   EXPECT_TRUE(a == b) << first << " and " << second << " differ (" << a.size() << " vs " << b.size() << " bytes)";
 }
@@ -52,12 +35,12 @@ TEST(Determinism, SegmentWritesIdenticalLabelsOverlayJsonAndSvg) {
   for (const std::string map : {"maps/furnished.yaml", "maps/corridor_l.yaml"}) {
     SCOPED_TRACE(map);
     for (const std::string run : {"a", "b"}) {
-      ASSERT_EQ(topocut(dir, {"segment", std::string(TOPOCUT_SOURCE_DIR) + "/" + map, "--out-labels", dir.file(run + "_labels.png"),
-                              "--out-color", dir.file(run + "_color.png"), "--out-json", dir.file(run + ".json"),
-                              "--out-svg", dir.file(run + ".svg")},
-                        run),
-                0)
-          << slurp(dir.file(run + ".err"));
+      const CliResult r = run_cli(dir, "segment",
+                                  {std::string(TOPOCUT_SOURCE_DIR) + "/" + map, "--out-labels", dir.file(run + "_labels.png"),
+                                   "--out-color", dir.file(run + "_color.png"), "--out-json", dir.file(run + ".json"),
+                                   "--out-svg", dir.file(run + ".svg")},
+                                  600);
+      ASSERT_EQ(r.code, 0) << r.err;
     }
     for (const std::string name : {"_labels.png", "_color.png", ".json", ".svg"}) {
       expect_identical(dir.file("a" + name), dir.file("b" + name));
@@ -75,8 +58,8 @@ TEST(Determinism, DecomposeWritesIdenticalJson) {
   for (const std::string selection : {"greedy", "reference"}) {
     SCOPED_TRACE(selection);
     for (const std::string run : {"a", "b"}) {
-      ASSERT_EQ(topocut(dir, {"decompose", polygon, "--tau", "2", "--selection", selection, "-o", dir.file(run + ".json")}, run), 0)
-          << slurp(dir.file(run + ".err"));
+      const CliResult r = run_cli(dir, "decompose", {polygon, "--tau", "2", "--selection", selection, "-o", dir.file(run + ".json")}, 600);
+      ASSERT_EQ(r.code, 0) << r.err;
     }
     expect_identical(dir.file("a.json"), dir.file("b.json"));
   }
@@ -103,8 +86,8 @@ TEST(Determinism, LinesWritesIdenticalJsonForEveryMethod) {
   for (const std::string method : {"sef", "lt", "iepf", "smf", "ale"}) {
     SCOPED_TRACE(method);
     for (const std::string run : {"a", "b"}) {
-      ASSERT_EQ(topocut(dir, {"lines", scan, "--method", method, "-o", dir.file(run + ".json")}, run), 0)
-          << slurp(dir.file(run + ".err"));
+      const CliResult r = run_cli(dir, "lines", {scan, "--method", method, "-o", dir.file(run + ".json")}, 600);
+      ASSERT_EQ(r.code, 0) << r.err;
     }
     expect_identical(dir.file("a.json"), dir.file("b.json"));
   }

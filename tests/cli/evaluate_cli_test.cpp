@@ -13,45 +13,21 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include "cli/cli_runner.h"
+
 namespace {
 
 namespace fs = std::filesystem;
 
-struct Outcome {
-  int exit_code = -1;
-  std::string out;
-  std::string err;
-};
-
-std::string slurp(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
+using topocut::testing::CliResult;
+using topocut::testing::file_text;
+using topocut::testing::run_cli_line;
 
 class EvaluateCli : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("topocut_evaluate_cli_" + std::to_string(::getpid()) + "_" +
-                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
 
   // Runs `topocut evaluate <args>` (args already shell-quoted as needed).
-  Outcome evaluate(const std::string& args) const {
-    const fs::path out = dir_ / "stdout.txt";
-    const fs::path err = dir_ / "stderr.txt";
-    const std::string command = std::string("'") + TOPOCUT_CLI + "' evaluate " + args + " >'" + out.string() +
-                                "' 2>'" + err.string() + "'";
-    const int status = std::system(command.c_str());
-    Outcome run;
-    run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    run.out = slurp(out);
-    run.err = slurp(err);
-    return run;
-  }
+  CliResult evaluate(const std::string& args) const { return run_cli_line(dir_, "evaluate " + args); }
 
   // A two-map dataset: "closed" has two rooms behind a full wall, "open" has the same rooms joined
   // by a door that the ground truth closes. Furnished = plain but for a 20 px table in room A.
@@ -75,7 +51,8 @@ class EvaluateCli : public ::testing::Test {
     return data;
   }
 
-  fs::path dir_;
+  topocut::testing::TempDir temp_;
+  const fs::path dir_ = temp_.path();
 };
 
 std::size_t count_lines(const std::string& text) {
@@ -85,8 +62,8 @@ std::size_t count_lines(const std::string& text) {
 }
 
 TEST_F(EvaluateCli, HelpListsEveryOption) {
-  const Outcome run = evaluate("--help");
-  EXPECT_EQ(run.exit_code, 0);
+  const CliResult run = evaluate("--help");
+  EXPECT_EQ(run.code, 0);
   EXPECT_NE(run.out.find("Usage: topocut evaluate"), std::string::npos) << run.out;
   for (const char* option : {"--dataset", "--variant", "--csv", "--concavity", "--trivial", "--map"}) {
     EXPECT_NE(run.out.find(option), std::string::npos) << option;
@@ -95,8 +72,8 @@ TEST_F(EvaluateCli, HelpListsEveryOption) {
 }
 
 TEST_F(EvaluateCli, MissingDatasetFolderIsOneClearError) {
-  const Outcome run = evaluate("--dataset '" + (dir_ / "nowhere").string() + "'");
-  EXPECT_NE(run.exit_code, 0);
+  const CliResult run = evaluate("--dataset '" + (dir_ / "nowhere").string() + "'");
+  EXPECT_NE(run.code, 0);
   EXPECT_EQ(count_lines(run.err), 1u) << run.err;
   EXPECT_NE(run.err.find("does not exist"), std::string::npos) << run.err;
   EXPECT_TRUE(run.out.empty()) << run.out;
@@ -104,40 +81,40 @@ TEST_F(EvaluateCli, MissingDatasetFolderIsOneClearError) {
 
 TEST_F(EvaluateCli, DatasetFolderWithoutMapsIsOneClearError) {
   std::ofstream(dir_ / "readme.txt") << "no maps here\n";
-  const Outcome run = evaluate("--dataset '" + dir_.string() + "'");
-  EXPECT_NE(run.exit_code, 0);
+  const CliResult run = evaluate("--dataset '" + dir_.string() + "'");
+  EXPECT_NE(run.code, 0);
   EXPECT_EQ(count_lines(run.err), 1u) << run.err;
   EXPECT_NE(run.err.find("holds no map"), std::string::npos) << run.err;
 }
 
 TEST_F(EvaluateCli, UnknownVariantIsAUsageError) {
-  const Outcome run = evaluate("--dataset '" + make_dataset().string() + "' --variant sofa");
-  EXPECT_EQ(run.exit_code, 2);
+  const CliResult run = evaluate("--dataset '" + make_dataset().string() + "' --variant sofa");
+  EXPECT_EQ(run.code, 2);
   EXPECT_NE(run.err.find("variant 'sofa'"), std::string::npos) << run.err;
   EXPECT_TRUE(run.out.empty()) << run.out;
 }
 
 TEST_F(EvaluateCli, BadConcavityAndUnknownMapAreErrors) {
   const std::string data = make_dataset().string();
-  const Outcome concavity = evaluate("--dataset '" + data + "' --concavity -3");
-  EXPECT_EQ(concavity.exit_code, 2);
+  const CliResult concavity = evaluate("--dataset '" + data + "' --concavity -3");
+  EXPECT_EQ(concavity.code, 2);
   EXPECT_NE(concavity.err.find("--concavity"), std::string::npos) << concavity.err;
-  const Outcome map = evaluate("--dataset '" + data + "' --map kitchen");
-  EXPECT_NE(map.exit_code, 0);
+  const CliResult map = evaluate("--dataset '" + data + "' --map kitchen");
+  EXPECT_NE(map.code, 0);
   EXPECT_NE(map.err.find("no map 'kitchen'"), std::string::npos) << map.err;
 }
 
 TEST_F(EvaluateCli, UnwritableCsvIsRefusedBeforeAnyWork) {
-  const Outcome run = evaluate("--dataset '" + make_dataset().string() + "' --trivial --csv '" +
+  const CliResult run = evaluate("--dataset '" + make_dataset().string() + "' --trivial --csv '" +
                            (dir_ / "no_such_folder" / "out.csv").string() + "'");
-  EXPECT_NE(run.exit_code, 0);
+  EXPECT_NE(run.code, 0);
   EXPECT_EQ(run.err.find("[1/"), std::string::npos) << "work started: " << run.err;
 }
 
 TEST_F(EvaluateCli, TrivialBaselineOnASyntheticDatasetWritesTableSummaryAndCsv) {
   const fs::path csv = dir_ / "results.csv";
-  const Outcome run = evaluate("--dataset '" + make_dataset().string() + "' --trivial --csv '" + csv.string() + "'");
-  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const CliResult run = evaluate("--dataset '" + make_dataset().string() + "' --trivial --csv '" + csv.string() + "'");
+  ASSERT_EQ(run.code, 0) << run.err;
   EXPECT_NE(run.out.find("trivial"), std::string::npos) << run.out;
   EXPECT_NE(run.out.find("| closed"), std::string::npos) << run.out;
   EXPECT_NE(run.err.find("[4/4]"), std::string::npos) << run.err;
@@ -145,8 +122,8 @@ TEST_F(EvaluateCli, TrivialBaselineOnASyntheticDatasetWritesTableSummaryAndCsv) 
   // Hand-computed: closed plain is perfect; the table in room A leaves 2320 of 2400 px, so closed
   // furnished has recall (2320 / 2400 + 1) / 2; open is one segment A + door + B = 4048 px (3968
   // furnished) whose best room is A.
-  EXPECT_EQ(slurp(csv).substr(0, slurp(csv).find('\n')), "map,variant,rooms,gt_rooms,recall,precision,time_ms");
-  std::istringstream lines(slurp(csv));
+  EXPECT_EQ(file_text(csv).substr(0, file_text(csv).find('\n')), "map,variant,rooms,gt_rooms,recall,precision,time_ms");
+  std::istringstream lines(file_text(csv));
   std::string line;
   std::getline(lines, line);
   std::vector<std::string> rows;
@@ -165,10 +142,10 @@ TEST_F(EvaluateCli, TrivialBaselineOnASyntheticDatasetWritesTableSummaryAndCsv) 
 
 TEST_F(EvaluateCli, VariantAndMapSelectionRestrictTheRun) {
   const fs::path csv = dir_ / "results.csv";
-  const Outcome run = evaluate("--dataset '" + make_dataset().string() +
+  const CliResult run = evaluate("--dataset '" + make_dataset().string() +
                            "' --trivial --variant furnished --map open --csv '" + csv.string() + "'");
-  ASSERT_EQ(run.exit_code, 0) << run.err;
-  const std::string text = slurp(csv);
+  ASSERT_EQ(run.code, 0) << run.err;
+  const std::string text = file_text(csv);
   EXPECT_EQ(count_lines(text), 2u) << text;
   EXPECT_NE(text.find("open,furnished,"), std::string::npos) << text;
 }
@@ -177,11 +154,11 @@ TEST_F(EvaluateCli, AFailingImageIsAFailureRowAndANonZeroExit) {
   const fs::path data = make_dataset();
   fs::remove(data / "open_furnitures.png");
   const fs::path csv = dir_ / "results.csv";
-  const Outcome run = evaluate("--dataset '" + data.string() + "' --trivial --csv '" + csv.string() + "'");
-  EXPECT_EQ(run.exit_code, 1);
+  const CliResult run = evaluate("--dataset '" + data.string() + "' --trivial --csv '" + csv.string() + "'");
+  EXPECT_EQ(run.code, 1);
   EXPECT_NE(run.out.find("FAILED"), std::string::npos) << run.out;
   EXPECT_NE(run.err.find("1 of 4 images failed"), std::string::npos) << run.err;
-  EXPECT_NE(slurp(csv).find("open,furnished,,,,,"), std::string::npos) << slurp(csv);
+  EXPECT_NE(file_text(csv).find("open,furnished,,,,,"), std::string::npos) << file_text(csv);
 }
 
 }  // namespace
@@ -191,12 +168,12 @@ namespace {
 TEST_F(EvaluateCli, AFolderWithoutFurnishedImagesJustWorks) {
   const fs::path data = make_dataset();
   for (const char* name : {"closed", "open"}) fs::remove(data / (std::string(name) + "_furnitures.png"));
-  const Outcome run = evaluate("--dataset '" + data.string() + "' --csv '" + (dir_ / "r.csv").string() + "'");
-  EXPECT_EQ(run.exit_code, 0) << run.err;
+  const CliResult run = evaluate("--dataset '" + data.string() + "' --csv '" + (dir_ / "r.csv").string() + "'");
+  EXPECT_EQ(run.code, 0) << run.err;
   EXPECT_EQ(run.out.find("FAILED"), std::string::npos) << run.out;
-  EXPECT_EQ(count_lines(slurp(dir_ / "r.csv")), 3u);  // header + two plain images
+  EXPECT_EQ(count_lines(file_text(dir_ / "r.csv")), 3u);  // header + two plain images
   // Asked for explicitly, the missing variant still fails (the user asked for it).
-  EXPECT_NE(evaluate("--dataset '" + data.string() + "' --variant furnished").exit_code, 0);
+  EXPECT_NE(evaluate("--dataset '" + data.string() + "' --variant furnished").code, 0);
 }
 
 TEST_F(EvaluateCli, MapsWithoutGroundTruthGiveTheirDefects) {
@@ -209,16 +186,16 @@ TEST_F(EvaluateCli, MapsWithoutGroundTruthGiveTheirDefects) {
   ASSERT_TRUE(cv::imwrite((maps / "lab.png").string(), map));
   std::ofstream(maps / "home.yaml") << "image: home.pgm\nresolution: 0.05\norigin: [0, 0, 0]\n";
   const fs::path csv = dir_ / "d.csv";
-  const Outcome run = evaluate("--maps '" + maps.string() + "' --floor-repetitions 1 --csv '" + csv.string() + "'");
-  EXPECT_EQ(run.exit_code, 0) << run.err;
+  const CliResult run = evaluate("--maps '" + maps.string() + "' --floor-repetitions 1 --csv '" + csv.string() + "'");
+  EXPECT_EQ(run.code, 0) << run.err;
   EXPECT_NE(run.out.find("home.yaml"), std::string::npos) << run.out;
   EXPECT_NE(run.out.find("lab.png"), std::string::npos) << run.out;
   EXPECT_NE(run.out.find("2 maps, 2 rooms: 0 thin, 0 specks"), std::string::npos) << run.out;
-  const std::string table = slurp(csv);
+  const std::string table = file_text(csv);
   EXPECT_EQ(table.substr(0, table.find('\n')), "map,width,height,rooms,thin,specks,time_ms,floor_ms");
   EXPECT_EQ(count_lines(table), 3u);
-  const Outcome missing = evaluate("--maps '" + (dir_ / "nowhere").string() + "'");
-  EXPECT_NE(missing.exit_code, 0);
+  const CliResult missing = evaluate("--maps '" + (dir_ / "nowhere").string() + "'");
+  EXPECT_NE(missing.code, 0);
   EXPECT_EQ(count_lines(missing.err), 1u) << missing.err;
 }
 

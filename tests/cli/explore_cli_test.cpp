@@ -14,44 +14,20 @@
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
 
+#include "cli/cli_runner.h"
+
 namespace {
 
 namespace fs = std::filesystem;
 
-struct Outcome {
-  int exit_code = -1;
-  std::string out;
-  std::string err;
-};
-
-std::string slurp(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
+using topocut::testing::CliResult;
+using topocut::testing::file_text;
+using topocut::testing::run_cli_line;
 
 class ExploreCli : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("topocut_explore_cli_" + std::to_string(::getpid()) + "_" +
-                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
 
-  Outcome run(const std::string& args, const std::string& command_name = "explore") {
-    const fs::path out = dir_ / "stdout.txt", err = dir_ / "stderr.txt";
-    const std::string command =
-        std::string(TOPOCUT_CLI) + " " + command_name + " " + args + " >" + out.string() + " 2>" + err.string();
-    const int status = std::system(command.c_str());
-    Outcome o;
-    o.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    o.out = slurp(out);
-    o.err = slurp(err);
-    return o;
-  }
+  CliResult run(const std::string& args, const std::string& command_name = "explore") { return run_cli_line(dir_, command_name + " " + args); }
 
   // A 12 m x 7 m map (0.05 m/px): corridor below, three rooms with doors; and its ground truth with
   // the doors closed by a line, in the dataset's naming (X.png, X_gt_segmentation.png).
@@ -77,7 +53,8 @@ class ExploreCli : public ::testing::Test {
     return path;
   }
 
-  fs::path dir_;
+  topocut::testing::TempDir temp_;
+  const fs::path dir_ = temp_.path();
 };
 
 double number_after(const std::string& text, const std::string& label) {
@@ -87,36 +64,36 @@ double number_after(const std::string& text, const std::string& label) {
 }
 
 TEST_F(ExploreCli, HelpListsTheOptions) {
-  const Outcome o = run("--help");
-  EXPECT_EQ(o.exit_code, 0);
+  const CliResult o = run("--help");
+  EXPECT_EQ(o.code, 0);
   for (const char* option : {"--range", "--step", "--seed", "--compare-batch", "--frames", "--gt", "--grow"})
     EXPECT_NE(o.out.find(option), std::string::npos) << option;
 }
 
 TEST_F(ExploreCli, BadInputIsOneClearError) {
-  const Outcome missing = run((dir_ / "nope.png").string());
-  EXPECT_NE(missing.exit_code, 0);
+  const CliResult missing = run((dir_ / "nope.png").string());
+  EXPECT_NE(missing.code, 0);
   EXPECT_NE(missing.err.find("topocut explore: error:"), std::string::npos) << missing.err;
   EXPECT_NE(missing.err.find("nope.png"), std::string::npos);
 
   std::ofstream(dir_ / "garbage.png") << "not an image";
-  EXPECT_NE(run((dir_ / "garbage.png").string()).exit_code, 0);
+  EXPECT_NE(run((dir_ / "garbage.png").string()).code, 0);
 
   const fs::path map = write_map("lab", false);
-  const Outcome bad_range = run(map.string() + " --range=-1");
-  EXPECT_NE(bad_range.exit_code, 0);
+  const CliResult bad_range = run(map.string() + " --range=-1");
+  EXPECT_NE(bad_range.code, 0);
   EXPECT_NE(bad_range.err.find("range"), std::string::npos) << bad_range.err;
-  const Outcome wall_start = run(map.string() + " --start 0.01,0.01");
-  EXPECT_NE(wall_start.exit_code, 0);
+  const CliResult wall_start = run(map.string() + " --start 0.01,0.01");
+  EXPECT_NE(wall_start.code, 0);
   EXPECT_NE(wall_start.err.find("not in the map's free space"), std::string::npos) << wall_start.err;
-  EXPECT_NE(run(map.string() + " --start nonsense").exit_code, 0);
-  EXPECT_NE(run("").exit_code, 0);
+  EXPECT_NE(run(map.string() + " --start nonsense").code, 0);
+  EXPECT_NE(run("").code, 0);
 }
 
 TEST_F(ExploreCli, ReportsUpdatesTimesAndGroundTruthQuality) {
   const fs::path map = write_map("lab", true);
-  const Outcome o = run(map.string() + " --compare-batch");
-  ASSERT_EQ(o.exit_code, 0) << o.err;
+  const CliResult o = run(map.string() + " --compare-batch");
+  ASSERT_EQ(o.code, 0) << o.err;
   const double updates = number_after(o.out, "updates: ");
   EXPECT_GT(updates, 3.0) << o.out;
   EXPECT_NE(o.out.find("no reachable frontier left"), std::string::npos) << o.out;
@@ -130,19 +107,19 @@ TEST_F(ExploreCli, ReportsUpdatesTimesAndGroundTruthQuality) {
 
   // Without a ground truth there is no quality section; --gt names one explicitly.
   const fs::path plain = write_map("plain", false);
-  const Outcome none = run(plain.string());
-  ASSERT_EQ(none.exit_code, 0) << none.err;
+  const CliResult none = run(plain.string());
+  ASSERT_EQ(none.code, 0) << none.err;
   EXPECT_EQ(none.out.find("ground truth"), std::string::npos);
-  const Outcome named = run(plain.string() + " --gt " + (dir_ / "lab_gt_segmentation.png").string());
-  ASSERT_EQ(named.exit_code, 0) << named.err;
+  const CliResult named = run(plain.string() + " --gt " + (dir_ / "lab_gt_segmentation.png").string());
+  ASSERT_EQ(named.code, 0) << named.err;
   EXPECT_NE(named.out.find("ground truth"), std::string::npos);
 }
 
 TEST_F(ExploreCli, FramesAreWrittenForEveryUpdate) {
   const fs::path map = write_map("lab", false);
   const fs::path frames = dir_ / "frames";
-  const Outcome o = run(map.string() + " --frames " + frames.string());
-  ASSERT_EQ(o.exit_code, 0) << o.err;
+  const CliResult o = run(map.string() + " --frames " + frames.string());
+  ASSERT_EQ(o.code, 0) << o.err;
   const int updates = static_cast<int>(number_after(o.out, "updates: "));
   ASSERT_GT(updates, 0);
   int count = 0;
@@ -159,8 +136,8 @@ TEST_F(ExploreCli, FramesAreWrittenForEveryUpdate) {
 
   // Every third update, and always the last one.
   const fs::path sparse = dir_ / "sparse";
-  const Outcome s = run(map.string() + " --frames " + sparse.string() + " --frame-every 3");
-  ASSERT_EQ(s.exit_code, 0) << s.err;
+  const CliResult s = run(map.string() + " --frames " + sparse.string() + " --frame-every 3");
+  ASSERT_EQ(s.code, 0) << s.err;
   int sparse_count = 0;
   for ([[maybe_unused]] const auto& entry : fs::directory_iterator(sparse)) ++sparse_count;
   EXPECT_EQ(sparse_count, (updates - 1) / 3 + 1 + ((updates - 1) % 3 != 0 ? 1 : 0));
@@ -170,23 +147,23 @@ TEST_F(ExploreCli, FramesAreWrittenForEveryUpdate) {
 
   // The frames folder must be creatable: a file in the way is an error before any work.
   std::ofstream(dir_ / "blocked") << "x";
-  const Outcome blocked = run(map.string() + " --frames " + (dir_ / "blocked").string());
-  EXPECT_NE(blocked.exit_code, 0);
+  const CliResult blocked = run(map.string() + " --frames " + (dir_ / "blocked").string());
+  EXPECT_NE(blocked.code, 0);
   EXPECT_NE(blocked.err.find("frames"), std::string::npos) << blocked.err;
 }
 
 TEST_F(ExploreCli, SameSeedSameRunGrowingMapWorks) {
   const fs::path map = write_map("lab", true);
-  const Outcome a = run(map.string() + " --seed 3");
-  const Outcome b = run(map.string() + " --seed 3");
-  ASSERT_EQ(a.exit_code, 0) << a.err;
+  const CliResult a = run(map.string() + " --seed 3");
+  const CliResult b = run(map.string() + " --seed 3");
+  ASSERT_EQ(a.code, 0) << a.err;
   // Identical apart from the times.
   auto strip_times = [](const std::string& text) {
     return std::regex_replace(text, std::regex("[0-9.]+ ms|[0-9.]+x|[0-9.]+ MB"), "T");
   };
   EXPECT_EQ(strip_times(a.out), strip_times(b.out));
-  const Outcome grow = run(map.string() + " --grow");
-  ASSERT_EQ(grow.exit_code, 0) << grow.err;
+  const CliResult grow = run(map.string() + " --grow");
+  ASSERT_EQ(grow.code, 0) << grow.err;
   EXPECT_GT(number_after(grow.out, "incremental: recall "), 80.0) << grow.out;
 }
 
@@ -197,8 +174,8 @@ TEST_F(ExploreCli, EvaluateIncrementalModeReportsUpdatesAndCsv) {
     fs::copy_file(map, dir_ / (name + "_furnitures.png"));
   }
   const fs::path csv = dir_ / "out.csv";
-  const Outcome o = run("--dataset " + dir_.string() + " --mode incremental --compare-batch --csv " + csv.string(), "evaluate");
-  ASSERT_EQ(o.exit_code, 0) << o.err;
+  const CliResult o = run("--dataset " + dir_.string() + " --mode incremental --compare-batch --csv " + csv.string(), "evaluate");
+  ASSERT_EQ(o.code, 0) << o.err;
   EXPECT_NE(o.out.find("incremental"), std::string::npos);
   EXPECT_NE(o.out.find("batch segment() on the same final maps"), std::string::npos) << o.out;
   EXPECT_NE(o.out.find("inc median ms"), std::string::npos) << o.out;
@@ -217,8 +194,8 @@ TEST_F(ExploreCli, EvaluateIncrementalModeReportsUpdatesAndCsv) {
   }
   EXPECT_EQ(rows, 4);
 
-  const Outcome bad = run("--dataset " + dir_.string() + " --mode sideways", "evaluate");
-  EXPECT_EQ(bad.exit_code, 2);
+  const CliResult bad = run("--dataset " + dir_.string() + " --mode sideways", "evaluate");
+  EXPECT_EQ(bad.code, 2);
   EXPECT_NE(bad.err.find("--mode"), std::string::npos) << bad.err;
 }
 

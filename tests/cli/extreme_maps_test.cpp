@@ -19,29 +19,17 @@
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
 
+#include "cli/cli_runner.h"
 #include "io/temp_dir.h"
 
 namespace {
 
 using topocut::testing::TempDir;
 
-std::string slurp(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using topocut::testing::file_text;
 
-std::string quote(const std::string& s) {
-  std::string q = "'";
-  for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return q + "'";
-}
-
-struct Outcome {
-  int code = -1;
+struct Outcome : topocut::testing::CliResult {
   bool signalled = false;
-  std::string out, err;
   std::string labels, color, json, svg;  // output paths
 };
 
@@ -51,16 +39,11 @@ Outcome run_segment(const TempDir& dir, const std::string& map, std::vector<std:
   o.color = dir.file("color.png");
   o.json = dir.file("rooms.json");
   o.svg = dir.file("rooms.svg");
-  std::string command = quote(TOPOCUT_CLI) + " segment " + quote(map) + " --out-labels " + quote(o.labels) +
-                        " --out-color " + quote(o.color) + " --out-json " + quote(o.json) + " --out-svg " + quote(o.svg);
-  for (const std::string& a : extra) command += " " + quote(a);
-  // `timeout` turns a hang into a failure instead of a stuck suite.
-  command = "timeout 300 " + command + " >" + quote(dir.file("stdout.txt")) + " 2>" + quote(dir.file("stderr.txt"));
-  const int status = std::system(command.c_str());
-  o.signalled = !WIFEXITED(status);
-  o.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  o.out = slurp(dir.file("stdout.txt"));
-  o.err = slurp(dir.file("stderr.txt"));
+  std::vector<std::string> args{map, "--out-labels", o.labels, "--out-color", o.color, "--out-json", o.json, "--out-svg", o.svg};
+  args.insert(args.end(), extra.begin(), extra.end());
+  // The time limit turns a hang into a failure (exit 124) instead of a stuck suite.
+  static_cast<topocut::testing::CliResult&>(o) = topocut::testing::run_cli(dir, "segment", args, 300);
+  o.signalled = o.code == -1;
   return o;
 }
 
@@ -92,7 +75,7 @@ cv::Mat expect_clean(const Outcome& o, const cv::Mat& map) {
   EXPECT_EQ(labels.type(), CV_16UC1);
   EXPECT_EQ(labels.size(), map.size());
   if (labels.size() != map.size()) return labels;
-  const nlohmann::json rooms = nlohmann::json::parse(slurp(o.json));
+  const nlohmann::json rooms = nlohmann::json::parse(file_text(o.json));
   std::set<int> ids;
   for (const auto& room : rooms.at("rooms")) ids.insert(room.at("id").get<int>());
   bool any_free = false;
@@ -115,7 +98,7 @@ cv::Mat expect_clean(const Outcome& o, const cv::Mat& map) {
     EXPECT_TRUE(ids.empty());
   }
   EXPECT_FALSE(cv::imread(o.color, cv::IMREAD_UNCHANGED).empty());
-  const std::string svg = slurp(o.svg);
+  const std::string svg = file_text(o.svg);
   EXPECT_NE(svg.find("<svg"), std::string::npos);
   EXPECT_NE(svg.find("</svg>"), std::string::npos);
   return labels;

@@ -12,7 +12,7 @@
 #include <opencv2/imgcodecs.hpp>
 #include <zlib.h>
 
-#include "cli/cli_run.h"
+#include "cli/cli_runner.h"
 
 namespace {
 

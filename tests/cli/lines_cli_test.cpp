@@ -16,24 +16,17 @@
 #include "topocut/scan/laser_simulator.h"
 #include "topocut/scan/scan_csv.h"
 
+#include "cli/cli_runner.h"
+
 namespace {
 
 namespace fs = std::filesystem;
 using namespace topocut;
 constexpr double kPi = std::numbers::pi;
 
-struct Outcome {
-  int exit_code = -1;
-  std::string out;
-  std::string err;
-};
-
-std::string slurp(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
+using topocut::testing::CliResult;
+using topocut::testing::file_text;
+using topocut::testing::run_cli_line;
 
 void write_text(const fs::path& path, const std::string& text) {
   std::ofstream out(path, std::ios::binary);
@@ -55,35 +48,21 @@ std::string room_csv() {
 class LinesCli : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("topocut_lines_cli_" + std::to_string(::getpid()) + "_" +
-                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::create_directories(dir_);
     write_text(dir_ / "room.csv", room_csv());
   }
-  void TearDown() override { fs::remove_all(dir_); }
 
-  Outcome run(const std::string& args) const {
-    const fs::path out = dir_ / "stdout.txt";
-    const fs::path err = dir_ / "stderr.txt";
-    const std::string command =
-        std::string("'") + TOPOCUT_CLI + "' " + args + " >'" + out.string() + "' 2>'" + err.string() + "'";
-    const int status = std::system(command.c_str());
-    Outcome o;
-    o.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    o.out = slurp(out);
-    o.err = slurp(err);
-    return o;
-  }
-  std::string path(const std::string& name) const { return "'" + (dir_ / name).string() + "'"; }
+  CliResult run(const std::string& args) const { return run_cli_line(dir_, args); }
+  std::string path(const std::string& name) const { return topocut::testing::shell_quoted((dir_ / name).string()); }
 
-  fs::path dir_;
+  topocut::testing::TempDir temp_;
+  const fs::path dir_ = temp_.path();
 };
 
 TEST_F(LinesCli, EveryMethodFindsTheFourWallsAsJson) {
   for (const std::string method : {"sef", "lt", "iepf", "smf", "ale"}) {
     SCOPED_TRACE(method);
-    const Outcome o = run("lines " + path("room.csv") + " --method " + method);
-    ASSERT_EQ(o.exit_code, 0) << o.err;
+    const CliResult o = run("lines " + path("room.csv") + " --method " + method);
+    ASSERT_EQ(o.code, 0) << o.err;
     const auto json = nlohmann::json::parse(o.out);
     ASSERT_TRUE(json.is_array());
     ASSERT_EQ(json.size(), kRoom.size());
@@ -107,10 +86,10 @@ TEST_F(LinesCli, EveryMethodFindsTheFourWallsAsJson) {
 }
 
 TEST_F(LinesCli, CsvFormatAndOutputFile) {
-  const Outcome o = run("lines " + path("room.csv") + " --method iepf --format csv -o " + path("lines.csv"));
-  ASSERT_EQ(o.exit_code, 0) << o.err;
+  const CliResult o = run("lines " + path("room.csv") + " --method iepf --format csv -o " + path("lines.csv"));
+  ASSERT_EQ(o.code, 0) << o.err;
   EXPECT_TRUE(o.out.empty());
-  const std::string csv = slurp(dir_ / "lines.csv");
+  const std::string csv = file_text(dir_ / "lines.csv");
   std::istringstream rows(csv);
   std::string header, row;
   std::getline(rows, header);
@@ -125,23 +104,23 @@ TEST_F(LinesCli, CsvFormatAndOutputFile) {
 
 TEST_F(LinesCli, MethodOptionsAreChecked) {
   // A huge T_max makes IEPF keep whole breakpoint segments: fewer lines than walls.
-  const Outcome loose = run("lines " + path("room.csv") + " --method iepf --t-max 50");
-  ASSERT_EQ(loose.exit_code, 0) << loose.err;
+  const CliResult loose = run("lines " + path("room.csv") + " --method iepf --t-max 50");
+  ASSERT_EQ(loose.code, 0) << loose.err;
   EXPECT_LT(nlohmann::json::parse(loose.out).size(), 4u);
-  const Outcome wrong = run("lines " + path("room.csv") + " --method lt --sigma-max 0.1");
-  EXPECT_EQ(wrong.exit_code, 2);
+  const CliResult wrong = run("lines " + path("room.csv") + " --method lt --sigma-max 0.1");
+  EXPECT_EQ(wrong.code, 2);
   EXPECT_NE(wrong.err.find("--sigma-max does not apply to --method lt"), std::string::npos) << wrong.err;
-  const Outcome negative = run("lines " + path("room.csv") + " --method smf --sigma-max -1");
-  EXPECT_EQ(negative.exit_code, 1);
+  const CliResult negative = run("lines " + path("room.csv") + " --method smf --sigma-max -1");
+  EXPECT_EQ(negative.code, 1);
   EXPECT_NE(negative.err.find("topocut lines: error:"), std::string::npos);
-  const Outcome unknown = run("lines " + path("room.csv") + " --method hough");
-  EXPECT_EQ(unknown.exit_code, 2);
+  const CliResult unknown = run("lines " + path("room.csv") + " --method hough");
+  EXPECT_EQ(unknown.code, 2);
   EXPECT_NE(unknown.err.find("hough"), std::string::npos);
-  EXPECT_EQ(run("lines " + path("room.csv") + " --format xml").exit_code, 2);
-  EXPECT_EQ(run("lines " + path("room.csv") + " --min-points 2.5").exit_code, 2);
-  EXPECT_EQ(run("lines").exit_code, 2);
-  const Outcome help = run("lines --help");
-  EXPECT_EQ(help.exit_code, 0);
+  EXPECT_EQ(run("lines " + path("room.csv") + " --format xml").code, 2);
+  EXPECT_EQ(run("lines " + path("room.csv") + " --min-points 2.5").code, 2);
+  EXPECT_EQ(run("lines").code, 2);
+  const CliResult help = run("lines --help");
+  EXPECT_EQ(help.code, 0);
   EXPECT_NE(help.out.find("--method"), std::string::npos);
 }
 
@@ -149,21 +128,21 @@ TEST_F(LinesCli, BadScansGiveOneClearError) {
   write_text(dir_ / "header.csv", "0,1\n0.1,1\n");
   write_text(dir_ / "text.csv", "angle,range\n0,1\n0.1,far\n");
   write_text(dir_ / "order.csv", "angle,range\n0,1\n0.2,1\n0.1,1\n");
-  const Outcome header = run("lines " + path("header.csv"));
-  EXPECT_EQ(header.exit_code, 1);
+  const CliResult header = run("lines " + path("header.csv"));
+  EXPECT_EQ(header.code, 1);
   EXPECT_NE(header.err.find("header.csv:1:"), std::string::npos) << header.err;
-  const Outcome text = run("lines " + path("text.csv"));
-  EXPECT_EQ(text.exit_code, 1);
+  const CliResult text = run("lines " + path("text.csv"));
+  EXPECT_EQ(text.code, 1);
   EXPECT_NE(text.err.find("text.csv:3:"), std::string::npos) << text.err;
-  const Outcome order = run("lines " + path("order.csv"));
-  EXPECT_EQ(order.exit_code, 1);
+  const CliResult order = run("lines " + path("order.csv"));
+  EXPECT_EQ(order.code, 1);
   EXPECT_NE(order.err.find("order.csv:4:"), std::string::npos) << order.err;
-  const Outcome missing = run("lines " + path("nothing.csv"));
-  EXPECT_EQ(missing.exit_code, 1);
+  const CliResult missing = run("lines " + path("nothing.csv"));
+  EXPECT_EQ(missing.code, 1);
   EXPECT_NE(missing.err.find("nothing.csv"), std::string::npos);
   // An unwritable output is refused before any work.
-  const Outcome unwritable = run("lines " + path("room.csv") + " -o " + path("no/such/dir/out.json"));
-  EXPECT_EQ(unwritable.exit_code, 1);
+  const CliResult unwritable = run("lines " + path("room.csv") + " -o " + path("no/such/dir/out.json"));
+  EXPECT_EQ(unwritable.code, 1);
 }
 
 TEST_F(LinesCli, ScansWithoutEnoughValidBeamsGiveAnEmptyList) {
@@ -171,8 +150,8 @@ TEST_F(LinesCli, ScansWithoutEnoughValidBeamsGiveAnEmptyList) {
   write_text(dir_ / "empty.csv", "angle,range\n");
   for (const std::string name : {"invalid.csv", "empty.csv"}) {
     for (const std::string method : {"sef", "lt", "iepf", "smf", "ale"}) {
-      const Outcome o = run("lines " + path(name) + " --method " + method);
-      ASSERT_EQ(o.exit_code, 0) << o.err;
+      const CliResult o = run("lines " + path(name) + " --method " + method);
+      ASSERT_EQ(o.code, 0) << o.err;
       EXPECT_EQ(nlohmann::json::parse(o.out), nlohmann::json::array());
     }
   }

@@ -10,7 +10,7 @@
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
 
-#include "cli/cli_run.h"
+#include "cli/cli_runner.h"
 
 namespace topocut::testing {
 namespace {

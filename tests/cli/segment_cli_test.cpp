@@ -15,57 +15,18 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include "cli/cli_runner.h"
 #include "io/temp_dir.h"
 
 namespace {
 
 using topocut::testing::TempDir;
 
-struct Result {
-  int code = -1;
-  std::string out;
-  std::string err;
-};
+using Result = topocut::testing::CliResult;
+using topocut::testing::file_text;
 
-std::string slurp(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-std::string quote(const std::string& s) {
-  std::string q = "'";
-  for (char c : s) {
-    if (c == '\'') {
-      q += "'\\''";
-    } else {
-      q += c;
-    }
-  }
-  q += '\'';
-  return q;
-}
-
-Result run(const TempDir& dir, const std::vector<std::string>& args) {
-  std::string command = quote(TOPOCUT_CLI) + " segment";
-  for (const std::string& a : args) {
-    command += ' ';
-    command += quote(a);
-  }
-  command += " >";
-  command += quote(dir.file("stdout.txt"));
-  command += " 2>";
-  command += quote(dir.file("stderr.txt"));
-  const int status = std::system(command.c_str());
-  Result r;
-  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  r.out = slurp(dir.file("stdout.txt"));
-  r.err = slurp(dir.file("stderr.txt"));
-  std::filesystem::remove(dir.file("stdout.txt"));
-  std::filesystem::remove(dir.file("stderr.txt"));
-  return r;
-}
+// `topocut segment ARGS...` (the shared runner, with the suite's time limit).
+Result run(const TempDir& dir, const std::vector<std::string>& args) { return topocut::testing::run_cli(dir, "segment", args, 600); }
 
 std::string bundled(const std::string& name) { return std::string(TOPOCUT_SOURCE_DIR) + "/maps/" + name; }
 
@@ -94,7 +55,7 @@ TEST(SegmentCli, FloorplanWritesEveryOutput) {
   EXPECT_NE(r.out.find("wrote labels:  " + dir.file("labels.png")), std::string::npos) << r.out;
   const cv::Mat labels = cv::imread(dir.file("labels.png"), cv::IMREAD_UNCHANGED);
   ASSERT_EQ(labels.type(), CV_16UC1);
-  const nlohmann::json rooms = nlohmann::json::parse(slurp(dir.file("rooms.json")));
+  const nlohmann::json rooms = nlohmann::json::parse(file_text(dir.file("rooms.json")));
   double low = 0, high = 0;
   cv::minMaxLoc(labels, &low, &high);
   EXPECT_EQ(static_cast<std::size_t>(high), rooms["rooms"].size());
@@ -104,7 +65,7 @@ TEST(SegmentCli, FloorplanWritesEveryOutput) {
   EXPECT_EQ(cv::countNonZero((labels > 0) != (map == 254)), 0);
   const cv::Mat overlay = cv::imread(dir.file("rooms.png"), cv::IMREAD_COLOR);
   EXPECT_EQ(overlay.size(), cv::Size(800, 600));  // scaled 2x so the ids stay legible
-  const std::string svg = slurp(dir.file("rooms.svg"));
+  const std::string svg = file_text(dir.file("rooms.svg"));
   EXPECT_NE(svg.find("</svg>"), std::string::npos);
   EXPECT_EQ(files_in(dir), 4u);  // and no temporary files left over
 }
@@ -115,7 +76,7 @@ TEST(SegmentCli, MergedCorridorIsOneRoomAndParityKeepsDuDesPieces) {
   ASSERT_EQ(rooms.code, 0) << rooms.err;
   EXPECT_NE(rooms.out.find("1 room, 0 passages"), std::string::npos) << rooms.out;
   // The merged room's polygon is the whole L (no internal passage, area of all its cells).
-  const nlohmann::json json = nlohmann::json::parse(slurp(dir.file("rooms.json")));
+  const nlohmann::json json = nlohmann::json::parse(file_text(dir.file("rooms.json")));
   ASSERT_EQ(json["rooms"].size(), 1u);
   EXPECT_TRUE(json["passages"].empty());
   const Result parity = run(dir, {bundled("corridor_l.yaml"), "--parity"});
@@ -134,19 +95,19 @@ TEST(SegmentCli, TrivialModeGivesOneRoomPerComponent) {
   const Result r = run(dir, {bundled("floorplan.yaml"), "--trivial", "--out-json", dir.file("r.json")});
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.out.find("1 room, 0 passages"), std::string::npos) << r.out;
-  EXPECT_EQ(nlohmann::json::parse(slurp(dir.file("r.json")))["rooms"].size(), 1u);
+  EXPECT_EQ(nlohmann::json::parse(file_text(dir.file("r.json")))["rooms"].size(), 1u);
 }
 
 TEST(SegmentCli, PlainImageTakesTheResolutionOption) {
   TempDir dir;
   const Result r = run(dir, {bundled("furnished.png"), "--resolution", "0.1", "--trivial", "--out-json", dir.file("r.json")});
   ASSERT_EQ(r.code, 0) << r.err;
-  const nlohmann::json doc = nlohmann::json::parse(slurp(dir.file("r.json")));
+  const nlohmann::json doc = nlohmann::json::parse(file_text(dir.file("r.json")));
   EXPECT_DOUBLE_EQ(doc["resolution"].get<double>(), 0.1);
   // The same map at twice the cell size covers four times the area.
   const Result yaml = run(dir, {bundled("furnished.yaml"), "--trivial", "--out-json", dir.file("y.json")});
   ASSERT_EQ(yaml.code, 0) << yaml.err;
-  const nlohmann::json at_005 = nlohmann::json::parse(slurp(dir.file("y.json")));
+  const nlohmann::json at_005 = nlohmann::json::parse(file_text(dir.file("y.json")));
   EXPECT_NEAR(doc["rooms"][0]["area"].get<double>(), 4.0 * at_005["rooms"][0]["area"].get<double>(), 1e-6);
   const Result note = run(dir, {bundled("furnished.yaml"), "--trivial", "--resolution", "0.1"});
   EXPECT_NE(note.out.find("--resolution is ignored"), std::string::npos) << note.out;
@@ -285,14 +246,14 @@ TEST(SegmentCli, ConfigFileGivesTheSameRoomsAsTheCommandLine) {
   ASSERT_EQ(r.code, 0) << r.err;
   r = run(dir, {bundled("floorplan.yaml"), "--concavity", "1.5", "--no-merge", "--out-json", dir.file("flags.json")});
   ASSERT_EQ(r.code, 0) << r.err;
-  const nlohmann::json from_config = nlohmann::json::parse(slurp(dir.file("config.json")));
-  EXPECT_EQ(from_config, nlohmann::json::parse(slurp(dir.file("flags.json"))));
+  const nlohmann::json from_config = nlohmann::json::parse(file_text(dir.file("config.json")));
+  EXPECT_EQ(from_config, nlohmann::json::parse(file_text(dir.file("flags.json"))));
   // The command line's concavity wins over the file's.
   r = run(dir, {bundled("floorplan.yaml"), "--config", dir.file("robot.yaml"), "--concavity", "2.5", "--out-json", dir.file("mixed.json")});
   ASSERT_EQ(r.code, 0) << r.err;
   r = run(dir, {bundled("floorplan.yaml"), "--concavity", "2.5", "--no-merge", "--out-json", dir.file("expected.json")});
   ASSERT_EQ(r.code, 0) << r.err;
-  EXPECT_EQ(nlohmann::json::parse(slurp(dir.file("mixed.json"))), nlohmann::json::parse(slurp(dir.file("expected.json"))));
+  EXPECT_EQ(nlohmann::json::parse(file_text(dir.file("mixed.json"))), nlohmann::json::parse(file_text(dir.file("expected.json"))));
 
   std::ofstream(dir.file("typo.yaml")) << "concavty: 1.5\n";
   expect_error(run(dir, {bundled("floorplan.yaml"), "--config", dir.file("typo.yaml")}), "'concavty' in config file", 2);
@@ -307,8 +268,8 @@ TEST(SegmentCli, GeoJsonHasOneFeaturePerRoomAndPassage) {
   TempDir dir;
   const Result r = run(dir, {bundled("floorplan.yaml"), "--out-json", dir.file("rooms.json"), "--out-geojson", dir.file("rooms.geojson")});
   ASSERT_EQ(r.code, 0) << r.err;
-  const nlohmann::json rooms = nlohmann::json::parse(slurp(dir.file("rooms.json")));
-  const nlohmann::json geo = nlohmann::json::parse(slurp(dir.file("rooms.geojson")));
+  const nlohmann::json rooms = nlohmann::json::parse(file_text(dir.file("rooms.json")));
+  const nlohmann::json geo = nlohmann::json::parse(file_text(dir.file("rooms.geojson")));
   ASSERT_EQ(geo["features"].size(), rooms["rooms"].size() + rooms["passages"].size());
   for (std::size_t k = 0; k < rooms["rooms"].size(); ++k) {
     const nlohmann::json& feature = geo["features"][k];
@@ -319,3 +280,39 @@ TEST(SegmentCli, GeoJsonHasOneFeaturePerRoomAndPassage) {
     EXPECT_EQ(feature["geometry"]["coordinates"][0], ring);
   }
 }
+
+namespace {
+
+using topocut::testing::run_cli;
+
+// segment, evaluate, explore and walls share one definition of the segmentation options: the same
+// flags in every --help, defaults in their shortest form, the same --parity rule.
+TEST(SegmentationOptions, EveryCommandTakesTheSameFlags) {
+  TempDir dir;
+  for (const std::string command : {"segment", "evaluate", "explore", "walls"}) {
+    SCOPED_TRACE(command);
+    const Result help = run_cli(dir, command, {"--help"});
+    ASSERT_EQ(help.code, 0) << help.err;
+    for (const std::string flag : {"--concavity M (=", "--parity", "--door-width M (=", "--no-merge", "--opening M (=",
+                                   "--min-room-area M2 (=", "--no-furniture-rule", "--oversegment F (=0.5)"})
+      EXPECT_NE(help.out.find(flag), std::string::npos) << flag << " in\n" << help.out;
+    EXPECT_EQ(help.out.find("00000000"), std::string::npos) << help.out;  // no 0.050000000000000003
+    if (command != "walls") {
+      EXPECT_NE(help.out.find("--resolution M (=0.05)"), std::string::npos) << help.out;
+    }
+  }
+}
+
+TEST(SegmentationOptions, ParityWithASwitchItSetsIsAUsageErrorInEveryCommand) {
+  TempDir dir;
+  const std::string map = bundled("corridor_l.yaml");
+  for (const auto& [command, input] : {std::pair<std::string, std::string>{"segment", map}, {"explore", map},
+                                       {"walls", dir.file("absent.log")}}) {
+    SCOPED_TRACE(command);
+    topocut::testing::expect_clean_error(run_cli(dir, command, {input, "--parity", "--no-merge"}), command, "--parity", 2);
+  }
+  topocut::testing::expect_clean_error(
+      run_cli(dir, "evaluate", {"--dataset", dir.path().string(), "--parity", "--cover-obstacles"}), "evaluate", "--parity", 2);
+}
+
+}  // namespace

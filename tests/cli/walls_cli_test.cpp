@@ -17,23 +17,16 @@
 #include "topocut/io/map_loader.h"
 #include "topocut/scan/laser_simulator.h"
 
+#include "cli/cli_runner.h"
+
 namespace {
 
 namespace fs = std::filesystem;
 using namespace topocut;
 
-struct Outcome {
-  int exit_code = -1;
-  std::string out;
-  std::string err;
-};
-
-std::string slurp(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
+using topocut::testing::CliResult;
+using topocut::testing::file_text;
+using topocut::testing::run_cli_line;
 
 void write_text(const fs::path& path, const std::string& text) {
   std::ofstream out(path, std::ios::binary);
@@ -70,28 +63,12 @@ std::string simulated_log() {
 
 class WallsCli : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("topocut_walls_cli_" + std::to_string(::getpid()) + "_" +
-                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
 
-  Outcome run(const std::string& args) const {
-    const fs::path out = dir_ / "stdout.txt";
-    const fs::path err = dir_ / "stderr.txt";
-    const std::string command =
-        std::string("'") + TOPOCUT_CLI + "' " + args + " >'" + out.string() + "' 2>'" + err.string() + "'";
-    const int status = std::system(command.c_str());
-    Outcome o;
-    o.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    o.out = slurp(out);
-    o.err = slurp(err);
-    return o;
-  }
+  CliResult run(const std::string& args) const { return run_cli_line(dir_, args); }
   std::string path(const std::string& name) const { return (dir_ / name).string(); }
 
-  fs::path dir_;
+  topocut::testing::TempDir temp_;
+  const fs::path dir_ = temp_.path();
 };
 
 TEST_F(WallsCli, LabelPrintsSegmentsAndCentres) {
@@ -99,8 +76,8 @@ TEST_F(WallsCli, LabelPrintsSegmentsAndCentres) {
   std::string csv = "angle,range\n";
   for (int i = 0; i < 9; ++i) csv += std::to_string(-0.04 + 0.01 * i) + "," + (i < 4 ? "1" : i == 4 ? "nan" : "3") + "\n";
   write_text(path("scan.csv"), csv);
-  const Outcome o = run("label '" + path("scan.csv") + "' --fcm 2");
-  ASSERT_EQ(o.exit_code, 0) << o.err;
+  const CliResult o = run("label '" + path("scan.csv") + "' --fcm 2");
+  ASSERT_EQ(o.code, 0) << o.err;
   const auto json = nlohmann::json::parse(o.out);
   ASSERT_EQ(json["segments"].size(), 2u);
   EXPECT_EQ(json["segments"][0]["beams"], nlohmann::json({0, 1, 2, 3}));
@@ -114,24 +91,24 @@ TEST_F(WallsCli, LabelPrintsSegmentsAndCentres) {
 }
 
 TEST_F(WallsCli, LabelRefusesBadInput) {
-  const Outcome missing = run("label '" + path("nope.csv") + "'");
-  EXPECT_EQ(missing.exit_code, 1);
+  const CliResult missing = run("label '" + path("nope.csv") + "'");
+  EXPECT_EQ(missing.code, 1);
   EXPECT_NE(missing.err.find("topocut label: error:"), std::string::npos) << missing.err;
   write_text(path("scan.csv"), "angle,range\n0,1\n");
-  const Outcome element = run("label '" + path("scan.csv") + "' --element star");
-  EXPECT_EQ(element.exit_code, 2);
+  const CliResult element = run("label '" + path("scan.csv") + "' --element star");
+  EXPECT_EQ(element.code, 2);
   EXPECT_NE(element.err.find("cross"), std::string::npos);
-  const Outcome cell = run("label '" + path("scan.csv") + "' --cell -1");
-  EXPECT_EQ(cell.exit_code, 1);
+  const CliResult cell = run("label '" + path("scan.csv") + "' --cell -1");
+  EXPECT_EQ(cell.code, 1);
   EXPECT_NE(cell.err.find("cell size"), std::string::npos) << cell.err;
 }
 
 TEST_F(WallsCli, WallsWritesMapWallsAndRooms) {
   write_text(path("run.log"), simulated_log());
-  const Outcome o = run("walls '" + path("run.log") + "' --out-map '" + path("map.yaml") + "' --out-walls '" +
+  const CliResult o = run("walls '" + path("run.log") + "' --out-map '" + path("map.yaml") + "' --out-walls '" +
                         path("walls.json") + "' --segment --out-color '" + path("rooms.png") + "' --out-rooms '" +
                         path("rooms.json") + "'");
-  ASSERT_EQ(o.exit_code, 0) << o.err;
+  ASSERT_EQ(o.code, 0) << o.err;
   EXPECT_NE(o.out.find("8 scans"), std::string::npos) << o.out;
   EXPECT_NE(o.out.find("rooms:"), std::string::npos) << o.out;
   // The map reads back: the wall between the rooms is occupied, the room centres free.
@@ -146,12 +123,12 @@ TEST_F(WallsCli, WallsWritesMapWallsAndRooms) {
   EXPECT_EQ(at(5.0, 2.0), kOccupied);
   EXPECT_EQ(at(-0.6, 3.0), kUnknown);
   // The walls: the plan's six, each as a polygon.
-  const auto walls = nlohmann::json::parse(slurp(path("walls.json")));
+  const auto walls = nlohmann::json::parse(file_text(path("walls.json")));
   EXPECT_EQ(walls["scans"], 8);
   int long_walls = 0;
   for (const auto& w : walls["walls"]) long_walls += w["length"].get<double>() > 0.3;
   EXPECT_EQ(long_walls, 6);
-  const auto rooms = nlohmann::json::parse(slurp(path("rooms.json")));
+  const auto rooms = nlohmann::json::parse(file_text(path("rooms.json")));
   EXPECT_GE(rooms["rooms"].size(), 1u);
   EXPECT_TRUE(fs::exists(path("rooms.png")));
   EXPECT_TRUE(fs::exists(path("map.pgm")));
@@ -164,46 +141,46 @@ TEST_F(WallsCli, WallsReadsGzipLogsAlike) {
   ASSERT_NE(gz, nullptr);
   gzwrite(gz, text.data(), static_cast<unsigned>(text.size()));
   gzclose(gz);
-  const Outcome plain = run("walls '" + path("run.log") + "' --out-walls '" + path("a.json") + "'");
-  const Outcome packed = run("walls '" + path("run.log.gz") + "' --out-walls '" + path("b.json") + "'");
-  ASSERT_EQ(plain.exit_code, 0) << plain.err;
-  ASSERT_EQ(packed.exit_code, 0) << packed.err;
-  EXPECT_EQ(slurp(path("a.json")), slurp(path("b.json")));
+  const CliResult plain = run("walls '" + path("run.log") + "' --out-walls '" + path("a.json") + "'");
+  const CliResult packed = run("walls '" + path("run.log.gz") + "' --out-walls '" + path("b.json") + "'");
+  ASSERT_EQ(plain.code, 0) << plain.err;
+  ASSERT_EQ(packed.code, 0) << packed.err;
+  EXPECT_EQ(file_text(path("a.json")), file_text(path("b.json")));
 }
 
 TEST_F(WallsCli, WallsRefusesBadLogs) {
-  const Outcome missing = run("walls '" + path("nope.log") + "'");
-  EXPECT_EQ(missing.exit_code, 1);
+  const CliResult missing = run("walls '" + path("nope.log") + "'");
+  EXPECT_EQ(missing.code, 1);
   EXPECT_NE(missing.err.find("no such file"), std::string::npos) << missing.err;
 
   write_text(path("empty.log"), "");
-  const Outcome empty = run("walls '" + path("empty.log") + "'");
-  EXPECT_EQ(empty.exit_code, 1);
+  const CliResult empty = run("walls '" + path("empty.log") + "'");
+  EXPECT_EQ(empty.code, 1);
   EXPECT_NE(empty.err.find("no usable FLASER"), std::string::npos) << empty.err;
 
   write_text(path("odom.log"), "ODOM 1 2 3 0 0 0 1 h 1\nODOM 1 2 3 0 0 0 2 h 2\n");
-  const Outcome odom = run("walls '" + path("odom.log") + "'");
-  EXPECT_EQ(odom.exit_code, 1);
+  const CliResult odom = run("walls '" + path("odom.log") + "'");
+  EXPECT_EQ(odom.code, 1);
   EXPECT_NE(odom.err.find("ODOM x2"), std::string::npos) << odom.err;
 
   write_text(path("bad.log"), "ODOM 1 2 3\nODOM 1 2 3\nFLASER 3 1 2 oops 0 0 0 0 0 0 1 h 1\n");
-  const Outcome bad = run("walls '" + path("bad.log") + "'");
-  EXPECT_EQ(bad.exit_code, 1);
+  const CliResult bad = run("walls '" + path("bad.log") + "'");
+  EXPECT_EQ(bad.code, 1);
   EXPECT_NE(bad.err.find("bad.log:3:"), std::string::npos) << bad.err;
 
   // Only non-finite poses: a warning, then the error that nothing is left.
   write_text(path("nan.log"), "FLASER 3 1 2 3 nan 0 0 0 0 0 1 h 1\n");
-  const Outcome nan = run("walls '" + path("nan.log") + "'");
-  EXPECT_EQ(nan.exit_code, 1);
+  const CliResult nan = run("walls '" + path("nan.log") + "'");
+  EXPECT_EQ(nan.code, 1);
   EXPECT_NE(nan.err.find("non-finite pose"), std::string::npos) << nan.err;
 
-  const Outcome method = run("walls '" + path("bad.log") + "' --method magic");
-  EXPECT_EQ(method.exit_code, 2);
+  const CliResult method = run("walls '" + path("bad.log") + "' --method magic");
+  EXPECT_EQ(method.code, 2);
 
   // An output that cannot be written is refused before any work.
   write_text(path("run.log"), simulated_log());
-  const Outcome unwritable = run("walls '" + path("run.log") + "' --out-map '" + path("no/such/dir/map.yaml") + "'");
-  EXPECT_EQ(unwritable.exit_code, 1);
+  const CliResult unwritable = run("walls '" + path("run.log") + "' --out-map '" + path("no/such/dir/map.yaml") + "'");
+  EXPECT_EQ(unwritable.code, 1);
   EXPECT_EQ(unwritable.out, "");
 }
 
@@ -213,9 +190,9 @@ namespace {
 
 TEST_F(WallsCli, IncrementalReplaysTheLogAndWritesFrames) {
   write_text(path("run.log"), simulated_log());
-  const Outcome o = run("walls '" + path("run.log") + "' --incremental --compare-batch --frames '" + path("frames") +
+  const CliResult o = run("walls '" + path("run.log") + "' --incremental --compare-batch --frames '" + path("frames") +
                         "' --frame-every 3 --out-rooms '" + path("rooms.json") + "'");
-  ASSERT_EQ(o.exit_code, 0) << o.err;
+  ASSERT_EQ(o.code, 0) << o.err;
   for (const char* line : {"8 scans", "updates: ", "incremental per update: median", "batch per update:",
                            "speed-up on the same updates", "stability: churn median", "ids used", "final rooms: incremental"})
     EXPECT_NE(o.out.find(line), std::string::npos) << line << "\n" << o.out;
@@ -227,19 +204,19 @@ TEST_F(WallsCli, IncrementalReplaysTheLogAndWritesFrames) {
   for (const auto& entry : fs::directory_iterator(path("frames"))) frames += entry.path().extension() == ".png";
   EXPECT_EQ(frames, static_cast<int>((updates - 1) / 3 + 1 + ((updates - 1) % 3 != 0 ? 1 : 0)));
   EXPECT_TRUE(fs::exists(path("frames/frame_00001.png")));
-  EXPECT_GE(nlohmann::json::parse(slurp(path("rooms.json")))["rooms"].size(), 1u);
+  EXPECT_GE(nlohmann::json::parse(file_text(path("rooms.json")))["rooms"].size(), 1u);
 }
 
 TEST_F(WallsCli, IncrementalOptionsNeedIncremental) {
   write_text(path("run.log"), simulated_log());
-  const Outcome frames = run("walls '" + path("run.log") + "' --frames '" + path("frames") + "'");
-  EXPECT_EQ(frames.exit_code, 2);
+  const CliResult frames = run("walls '" + path("run.log") + "' --frames '" + path("frames") + "'");
+  EXPECT_EQ(frames.code, 2);
   EXPECT_NE(frames.err.find("need --incremental"), std::string::npos) << frames.err;
-  const Outcome walls = run("walls '" + path("run.log") + "' --incremental --out-walls '" + path("w.json") + "'");
-  EXPECT_EQ(walls.exit_code, 2);
+  const CliResult walls = run("walls '" + path("run.log") + "' --incremental --out-walls '" + path("w.json") + "'");
+  EXPECT_EQ(walls.code, 2);
   EXPECT_FALSE(fs::exists(path("w.json")));
-  const Outcome every = run("walls '" + path("run.log") + "' --incremental --batch-every 0");
-  EXPECT_EQ(every.exit_code, 2);
+  const CliResult every = run("walls '" + path("run.log") + "' --incremental --batch-every 0");
+  EXPECT_EQ(every.code, 2);
 }
 
 }  // namespace

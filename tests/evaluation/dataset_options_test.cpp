@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include "topocut/core/error.h"
+#include "topocut/io/map_load_flags.h"
+#include "topocut/segmentation/segment_switches.h"
 
 namespace topocut {
 namespace {
@@ -57,17 +59,22 @@ TEST(DatasetOptions, BadInputIsAnError) {
 
 TEST(DatasetOptions, EveryOptionIsInTheHelpAndAccepted) {
   const std::string help = dataset_options_help();
-  for (const DatasetOption& option : dataset_options()) {
-    EXPECT_NE(help.find("--" + option.name), std::string::npos) << option.name;
+  // The dataset's own options, then every segmentation and map-loading flag (the library's tables).
+  std::vector<std::pair<std::string, bool>> names;  // name, takes a value
+  for (const DatasetOption& option : dataset_options()) names.emplace_back(option.name, !option.value_name.empty());
+  for (const auto& row : segment_option_rows()) names.emplace_back(row.name, !row.is_switch());
+  for (const auto& row : map_load_option_rows()) names.emplace_back(row.name, !row.is_switch());
+  EXPECT_EQ(names.size(), 4u + segment_option_rows().size() + map_load_option_rows().size());
+  for (const auto& [name, takes_value] : names) {
+    EXPECT_NE(help.find("--" + name), std::string::npos) << name;
     DatasetArguments arguments;
-    const std::string value = option.name == "variant"                                   ? "plain"
-                              : option.name == "concavity" || option.name == "oversegment" || option.name == "resolution" ||
-                                      option.name == "max-megapixels"
-                                  ? "1"
-                                                                                          : "x";
-    EXPECT_NO_THROW(apply_dataset_option(arguments, option.name, option.value_name.empty() ? "" : value))
-        << option.name;
+    const bool is_text = name == "dataset" || name == "map" || name == "csv";
+    const std::string value = name == "variant" ? "plain" : is_text ? "x" : "1";
+    EXPECT_NO_THROW(apply_dataset_option(arguments, name, takes_value ? value : "")) << name;
   }
+  // Defaults are printed in their shortest form.
+  EXPECT_NE(help.find("(default 0.05)"), std::string::npos) << help;
+  EXPECT_EQ(help.find("0.050000"), std::string::npos) << help;
 }
 
 TEST(DatasetOptions, MethodNameTellsTheBaselineApart) {

@@ -1,0 +1,51 @@
+#pragma once
+// Options as people give them (command-line flags, --config keys, benchmark arguments, Python
+// keywords), one row per option: its name, help line, range and the field it sets. A module defines
+// its table once, next to its options struct; every front end builds its parser from that table, so
+// the same name means the same thing, with the same default and the same check, everywhere.
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace topocut {
+
+// What a value must be; a switch takes no value.
+enum class OptionRange { kSwitch, kPositive, kNonNegative, kFraction, kGreyLevel, kAny };
+
+template <typename Target>
+struct OptionRow {
+  std::string name;        // long name without dashes, e.g. "door-width" (Python: door_width)
+  std::string value_name;  // shown in the help, e.g. "M"; empty for a switch
+  std::string help;        // one line; front ends add the default from get
+  OptionRange range = OptionRange::kAny;
+  std::function<double(const Target&)> get;  // the value in target (numbers; a switch: 0 or 1)
+  std::function<void(Target&, double)> set;  // sets the value (a switch: 1 on, 0 off); may throw Error
+
+  bool is_switch() const { return range == OptionRange::kSwitch; }
+};
+
+// Throws Error "<shown> must be ..." unless value lies in range (kAny: the set function checks).
+void check_option_value(OptionRange range, double value, const std::string& shown);
+
+// The whole of text as a number; Error "<shown> needs a number, not '<text>'" otherwise.
+double parse_option_number(const std::string& text, const std::string& shown);
+
+// The shortest text that reads back as value ("0.05", not "0.050000000000000003"), for help lines.
+std::string shortest_number(double value);
+
+// Checks value against row's range, then sets it; shown names the option in errors.
+template <typename Target>
+void set_option(const OptionRow<Target>& row, Target& target, double value, const std::string& shown) {
+  check_option_value(row.range, value, shown);
+  row.set(target, value);
+}
+
+// The row named name, or nullptr.
+template <typename Target>
+const OptionRow<Target>* find_option(const std::vector<OptionRow<Target>>& rows, const std::string& name) {
+  for (const OptionRow<Target>& row : rows)
+    if (row.name == name) return &row;
+  return nullptr;
+}
+
+}  // namespace topocut

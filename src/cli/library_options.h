@@ -1,0 +1,64 @@
+#pragma once
+// The library's option tables (topocut/core/option_table.h) as program_options: a command adds the
+// rows it takes, with the defaults it uses shown in its help, and reads back what the command line
+// or its --config file gave. The names, help lines and checks are the library's, defined once.
+#include <vector>
+
+#include "cli/command.h"
+#include "topocut/core/option_table.h"
+#include "topocut/io/map_load_flags.h"
+#include "topocut/segmentation/segment_switches.h"
+
+namespace topocut::cli {
+
+// A double option bound to field, its default field's value shown in its shortest form ("(=0.05)",
+// not "(=0.050000000000000003)").
+inline po::typed_value<double>* number_value(double& field) {
+  return po::value<double>(&field)->default_value(field, shortest_number(field));
+}
+
+// Adds rows to options: a switch as a bool_switch, a number as a double whose help shows its value
+// in defaults in its shortest form ("--resolution M (=0.05)").
+template <typename Target>
+void add_option_rows(po::options_description& options, const std::vector<OptionRow<Target>>& rows,
+                     const Target& defaults) {
+  for (const OptionRow<Target>& row : rows) {
+    if (row.is_switch()) {
+      options.add_options()(row.name.c_str(), po::bool_switch(), row.help.c_str());
+    } else {
+      const double value = row.get(defaults);
+      options.add_options()(row.name.c_str(),
+                            po::value<double>()->default_value(value, shortest_number(value))->value_name(row.value_name),
+                            row.help.c_str());
+    }
+  }
+}
+
+// Sets in target every row that vm holds a given (not defaulted) value for, checked by the row; a
+// bad value is a UsageError.
+template <typename Target>
+void read_option_rows(const po::variables_map& vm, const std::vector<OptionRow<Target>>& rows, Target& target) {
+  for (const OptionRow<Target>& row : rows) {
+    if (!vm.count(row.name) || vm[row.name].defaulted()) continue;
+    if (row.is_switch() && !vm[row.name].template as<bool>()) continue;
+    const double value = row.is_switch() ? 1.0 : vm[row.name].template as<double>();
+    check_usage([&] { set_option(row, target, value, "--" + row.name); });
+  }
+}
+
+// The segmentation options (segment_option_rows()), with defaults' values shown.
+void add_segment_options(po::options_description& options, const SegmentSettings& defaults);
+
+// defaults with what vm gave; the switches are not applied yet (to_segment_options()).
+SegmentSettings read_segment_settings(const po::variables_map& vm, SegmentSettings defaults);
+
+// to_segment_options(read_segment_settings(vm, defaults)); a bad combination is a UsageError.
+SegmentOptions read_segment_options(const po::variables_map& vm, const SegmentSettings& defaults);
+
+// The map-loading options (map_load_option_rows()), with defaults' values shown.
+void add_map_load_options(po::options_description& options, const MapLoadOptions& defaults);
+
+// defaults with what vm gave, validated (a bad combination is a UsageError).
+MapLoadOptions read_map_load_options(const po::variables_map& vm, MapLoadOptions defaults);
+
+}  // namespace topocut::cli

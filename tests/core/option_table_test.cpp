@@ -1,0 +1,54 @@
+#include "topocut/core/option_table.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include "topocut/core/error.h"
+
+namespace topocut {
+namespace {
+
+TEST(OptionTable, ShortestNumberIsReadableAndReadsBack) {
+  EXPECT_EQ(shortest_number(0.05), "0.05");
+  EXPECT_EQ(shortest_number(2.5), "2.5");
+  EXPECT_EQ(shortest_number(250.0), "250");
+  EXPECT_EQ(shortest_number(0.0), "0");
+  for (const double value : {0.05, 0.1 + 0.2, 1.0 / 3.0, 1e-4, 123456.789, 0.15}) {
+    EXPECT_EQ(std::stod(shortest_number(value)), value) << shortest_number(value);
+  }
+}
+
+TEST(OptionTable, RangesAreCheckedWithTheOptionsName) {
+  EXPECT_NO_THROW(check_option_value(OptionRange::kPositive, 0.5, "--concavity"));
+  EXPECT_THROW(check_option_value(OptionRange::kPositive, 0.0, "--concavity"), Error);
+  EXPECT_THROW(check_option_value(OptionRange::kPositive, std::numeric_limits<double>::infinity(), "x"), Error);
+  EXPECT_NO_THROW(check_option_value(OptionRange::kNonNegative, 0.0, "x"));
+  EXPECT_THROW(check_option_value(OptionRange::kNonNegative, -1e-9, "x"), Error);
+  EXPECT_THROW(check_option_value(OptionRange::kNonNegative, std::nan(""), "x"), Error);
+  EXPECT_NO_THROW(check_option_value(OptionRange::kFraction, 1.0, "x"));
+  EXPECT_THROW(check_option_value(OptionRange::kFraction, 0.0, "x"), Error);
+  EXPECT_THROW(check_option_value(OptionRange::kFraction, 1.5, "x"), Error);
+  EXPECT_NO_THROW(check_option_value(OptionRange::kGreyLevel, 255.0, "x"));
+  EXPECT_THROW(check_option_value(OptionRange::kGreyLevel, 250.5, "x"), Error);
+  EXPECT_THROW(check_option_value(OptionRange::kGreyLevel, 256.0, "x"), Error);
+  try {
+    check_option_value(OptionRange::kPositive, -1.0, "--door-width");
+    FAIL();
+  } catch (const Error& e) {
+    EXPECT_EQ(std::string(e.what()), "--door-width must be a positive number");
+  }
+}
+
+TEST(OptionTable, ANumberIsTheWholeText) {
+  EXPECT_EQ(parse_option_number("2.5", "--concavity"), 2.5);
+  EXPECT_EQ(parse_option_number("-1e-3", "x"), -1e-3);
+  EXPECT_THROW(parse_option_number("2.5m", "x"), Error);
+  EXPECT_THROW(parse_option_number("", "x"), Error);
+  EXPECT_THROW(parse_option_number("metres", "x"), Error);
+}
+
+}  // namespace
+}  // namespace topocut
