@@ -7,12 +7,12 @@
 #include <iostream>
 #include <sstream>
 
-#include <opencv2/imgcodecs.hpp>
 
 #include "cli/command.h"
 #include "cli/input_options.h"
 #include "topocut/core/error.h"
 #include "topocut/io/atomic_file.h"
+#include "topocut/io/image_codec.h"
 #include "topocut/io/output_files.h"
 #include "topocut/io/label_image.h"
 #include "topocut/io/map_loader.h"
@@ -146,7 +146,7 @@ int run(const std::vector<std::string>& args) {
   check_outputs(paths, map_files(map_path));
   if (!out_labels.empty() && lower_extension(out_labels) != ".png")
     throw Error("the label image '" + out_labels + "' must be a .png file (16-bit PNG)");
-  if (!out_color.empty() && !cv::haveImageWriter(out_color))
+  if (!out_color.empty() && !can_encode_image(out_color))
     throw Error("cannot write the overlay '" + out_color + "': unknown image format (use .png or .jpg)");
   if (!out_clean.empty() && lower_extension(out_clean) != ".png")
     throw Error("the cleaned map '" + out_clean + "' must be a .png file");
