@@ -116,6 +116,28 @@ TEST(ImageCodec, JpegBmpAndTiffDecodeLikeOpenCv) {
   for (int i = 0; i < 16; ++i) put(os2, static_cast<std::uint32_t>(i * 0x0f0703), 3);
   os2 += std::string("\x12\x30\0\0\xfe\xd0\0\0", 8);
   expect_decodes_like_opencv(os2, "os/2 bmp");
+  for (const int bits : {8, 4}) {  // run-length coded: runs, literals, end of line, delta, end of bitmap
+    std::string rle("BM\0\0\0\0\0\0\0\0", 10);
+    put(rle, 14 + 40 + 64, 4);
+    put(rle, 40, 4);
+    put(rle, 6, 4);  // width
+    put(rle, 4, 4);  // height
+    put(rle, 1 | (static_cast<std::uint32_t>(bits) << 16), 4);
+    put(rle, bits == 8 ? 1 : 2, 4);
+    for (int i = 0; i < 3; ++i) put(rle, 0, 4);  // image size, resolution
+    put(rle, 16, 4);  // colours used
+    put(rle, 0, 4);
+    for (int i = 0; i < 16; ++i) put(rle, static_cast<std::uint32_t>(i * 0x100f07 + 9), 4);
+    const std::string rows = bits == 8 ? std::string("\x06\x03\x00\x00"          // row 0: six of index 3, end of line
+                                                     "\x02\x05\x00\x03\x01\x02\x04\x00\x00\x00"  // row 1: run, 3 literals, end of line
+                                                     "\x00\x02\x02\x01\x01\x07\x00\x01", 22)  // delta (2, 1), run, end of bitmap
+                                       : std::string("\x06\x34\x00\x00"
+                                                     "\x02\x56\x00\x03\x12\x40\x00\x00"
+                                                     "\x00\x02\x02\x00\x01\x77\x00\x00\x04\x89\x00\x01", 24);
+    rle += rows;
+    expect_decodes_like_opencv(rle, "rle bmp, bits " + std::to_string(bits));
+    expect_decodes_like_opencv(std::string(rle).replace(rle.size() - rows.size(), 2, "\x06\x0a"), "rle bmp, other run");
+  }
   std::string masked = opencv_encoded(random_image(CV_8UC4, 3, 2), ".bmp");
   masked[30] = 3;  // BI_BITFIELDS
   expect_decodes_like_opencv(masked, "32-bit bmp with masks");

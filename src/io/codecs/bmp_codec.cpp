@@ -1,8 +1,9 @@
 // Windows BMP. Hand-written: Debian has no small, maintained BMP library (the ones that read BMP are
 // whole imaging toolkits such as GDAL, ImageMagick or GraphicsMagick, which would bring back the
-// start-up cost this replaces), and an uncompressed BMP is a header, a palette and padded rows. The
-// layout rules are those OpenCV's reader applied: a palette of greys gives one channel, other
+// start-up cost this replaces), and a BMP is a header, a palette and padded or run-length coded
+// rows. The layout rules are those OpenCV's reader applied: a palette of greys gives one channel, other
 // palettes and 15/16/24/32-bit pixels give BGR, 32-bit pixels with colour masks give BGRA.
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <cstring>
@@ -52,7 +53,8 @@ bool colour_palette(const Header& h) {
 bool supported(const Header& h) {
   const bool paletted = h.bits == 1 || h.bits == 4 || h.bits == 8;
   return (h.compression == kRgb && (paletted || h.bits == 16 || h.bits == 24 || h.bits == 32)) ||
-         (h.compression == kBitfields && (h.bits == 16 || h.bits == 32));
+         (h.compression == kBitfields && (h.bits == 16 || h.bits == 32)) || (h.compression == kRle4 && h.bits == 4) ||
+         (h.compression == kRle8 && h.bits == 8);
 }
 
 // The Windows header (40 bytes or longer: V4, V5) and its palette or 16-bit masks.
@@ -63,7 +65,6 @@ void read_info_header(const Bytes& b, std::uint32_t size, Header& h) {
   h.compression = b.u32(30);
   const auto used = static_cast<std::int32_t>(b.u32(46));
   const std::size_t after = 14 + static_cast<std::size_t>(size);
-  if (h.compression == kRle4 || h.compression == kRle8) throw CodecError("RLE-compressed BMP is not supported");
   if (h.width <= 0 || h.height == 0 || !supported(h)) throw CodecError("unsupported BMP layout");
   h.colour = true;
   if (h.bits <= 8) {
@@ -141,6 +142,96 @@ void expand_row(const Header& h, const unsigned char* in, unsigned char* bgra) {
   }
 }
 
+
+// Run-length coded pixels (RLE8, RLE4), written in stored row order with OpenCV's rules: a run may
+// not cross the end of a row; end-of-line, delta and end-of-bitmap fill the skipped pixels with
+// palette entry 0; an RLE8 run that ends a row moves to the next one, so that an end-of-line right
+// after it is not a second line break. rows: stored order, one pixel = channels bytes.
+class RleWriter {
+ public:
+  RleWriter(const Header& h, cv::Mat& rows) : h_(h), rows_(rows), channels_(rows.channels()) {}
+  bool done() const { return y_ >= rows_.rows; }
+  int left_in_row() const { return rows_.cols - x_; }
+  int y() const { return y_; }
+  void put(int index) {
+    const unsigned char* bgr = h_.palette[index].data();
+    unsigned char* out = rows_.ptr<unsigned char>(y_) + static_cast<std::size_t>(x_++) * channels_;
+    if (channels_ == 1) {
+      out[0] = grey_of(bgr);
+    } else {
+      std::memcpy(out, bgr, 3);
+    }
+  }
+  // count pixels of palette entry index, continuing on the next rows (at least one step is taken,
+  // so a full row moves on even when count is 0).
+  void fill(long long count, int index) {
+    do {
+      const long long n = std::min<long long>(count, left_in_row());
+      for (long long i = 0; i < n; ++i) put(index);
+      count -= n;
+      if (x_ >= rows_.cols) {
+        x_ = 0;
+        if (++y_ >= rows_.rows) break;
+      }
+    } while (count > 0);
+  }
+
+ private:
+  const Header& h_;
+  cv::Mat& rows_;
+  int channels_;
+  int x_ = 0, y_ = 0;
+};
+
+// The escape codes (end of line 0, end of bitmap 1, delta 2). Returns false once the image is full.
+bool rle_escape(const Bytes& b, std::size_t& at, int code, bool rle8, bool& line_end_flag, RleWriter& out,
+                int width, int height) {
+  long long skip = out.left_in_row(), rows_down = height - out.y();
+  if (rle8 && !(code != 0 || !line_end_flag || skip < width)) {  // end of line just after a full row
+    line_end_flag = false;
+    return true;
+  }
+  if (code == 2) {
+    skip = b.at(at, 1)[0];
+    rows_down = b.at(at + 1, 1)[0];
+    at += 2;
+  }
+  if (rle8 && code != 0) skip += rows_down * width;  // RLE4 skips only within the row
+  out.fill(skip, 0);
+  line_end_flag = false;
+  return !out.done();
+}
+
+void decode_rle(const Bytes& b, const Header& h, cv::Mat& rows) {
+  const bool rle8 = h.compression == kRle8;
+  RleWriter out(h, rows);
+  std::size_t at = static_cast<std::size_t>(h.offset);
+  bool line_end_flag = false;
+  while (!out.done()) {
+    const unsigned char* pair = b.at(at, 2);
+    at += 2;
+    const int count = pair[0], code = pair[1];
+    if (count != 0) {  // a run of one index (RLE4: two alternating)
+      if (count > out.left_in_row()) throw CodecError("a BMP run crosses the end of a row");
+      const int y = out.y();
+      if (rle8) {
+        out.fill(count, code);
+        line_end_flag = out.y() != y;
+      } else {
+        for (int i = 0; i < count; ++i) out.put(i % 2 ? code & 15 : code >> 4);
+      }
+    } else if (code > 2) {  // literal indices, padded to 16 bits
+      if (code > out.left_in_row()) throw CodecError("a BMP run crosses the end of a row");
+      const std::size_t size = rle8 ? (code + 1) & ~1 : (((code + 1) >> 1) + 1) & ~1;
+      const unsigned char* in = b.at(at, size);
+      at += size;
+      for (int i = 0; i < code; ++i) out.put(rle8 ? in[i] : (i % 2 ? in[i / 2] & 15 : in[i / 2] >> 4));
+      line_end_flag = false;
+    } else if (!rle_escape(b, at, code, rle8, line_end_flag, out, rows.cols, rows.rows)) {
+      break;
+    }
+  }
+}
 }  // namespace
 
 cv::Mat decode_bmp(std::string_view bytes) {
@@ -148,6 +239,13 @@ cv::Mat decode_bmp(std::string_view bytes) {
   const Header h = read_header(b);
   const int channels = !h.colour ? 1 : h.bits == 32 && h.compression == kBitfields ? 4 : 3;
   cv::Mat image(h.height, h.width, CV_8UC(channels));
+  if (h.compression == kRle4 || h.compression == kRle8) {
+    cv::Mat stored(h.height, h.width, image.type());
+    decode_rle(b, h, stored);
+    if (h.top_down) return stored;
+    cv::flip(stored, image, 0);
+    return image;
+  }
   const std::size_t pitch = ((static_cast<std::size_t>(h.width) * (h.bits == 15 ? 16 : h.bits) + 7) / 8 + 3) & ~std::size_t{3};
   std::vector<unsigned char> bgra(static_cast<std::size_t>(h.width) * 4);
   for (int stored = 0; stored < h.height; ++stored) {

@@ -115,42 +115,40 @@ bool write_png(png_structp png, png_infop info, const cv::Mat& image, png_bytep*
   return true;
 }
 
-class ReadStruct {
+// libpng's read or write state and its info struct, destroyed together.
+class PngStruct {
  public:
-  explicit ReadStruct(PngContext& context)
-      : png_(png_create_read_struct(PNG_LIBPNG_VER_STRING, &context, on_error, on_warning)),
-        info_(png_ ? png_create_info_struct(png_) : nullptr) {
-    if (!png_ || !info_) throw CodecError("libpng could not start");
-    png_set_read_fn(png_, &context, read_input);
+  PngStruct(PngContext& context, bool write) : write_(write) {
+    png_ = write ? png_create_write_struct(PNG_LIBPNG_VER_STRING, &context, on_error, on_warning)
+                 : png_create_read_struct(PNG_LIBPNG_VER_STRING, &context, on_error, on_warning);
+    info_ = png_ ? png_create_info_struct(png_) : nullptr;
+    if (!png_ || !info_) {
+      destroy();
+      throw CodecError("libpng could not start");
+    }
+    if (write) {
+      png_set_write_fn(png_, &context, write_output, flush_output);
+    } else {
+      png_set_read_fn(png_, &context, read_input);
+    }
   }
-  ~ReadStruct() { png_destroy_read_struct(&png_, &info_, nullptr); }
-  ReadStruct(const ReadStruct&) = delete;
-  ReadStruct& operator=(const ReadStruct&) = delete;
+  ~PngStruct() { destroy(); }
+  PngStruct(const PngStruct&) = delete;
+  PngStruct& operator=(const PngStruct&) = delete;
   png_structp png() const { return png_; }
   png_infop info() const { return info_; }
 
  private:
-  png_structp png_;
-  png_infop info_;
-};
-
-class WriteStruct {
- public:
-  explicit WriteStruct(PngContext& context)
-      : png_(png_create_write_struct(PNG_LIBPNG_VER_STRING, &context, on_error, on_warning)),
-        info_(png_ ? png_create_info_struct(png_) : nullptr) {
-    if (!png_ || !info_) throw CodecError("libpng could not start");
-    png_set_write_fn(png_, &context, write_output, flush_output);
+  void destroy() {
+    if (write_) {
+      png_destroy_write_struct(&png_, &info_);
+    } else {
+      png_destroy_read_struct(&png_, &info_, nullptr);
+    }
   }
-  ~WriteStruct() { png_destroy_write_struct(&png_, &info_); }
-  WriteStruct(const WriteStruct&) = delete;
-  WriteStruct& operator=(const WriteStruct&) = delete;
-  png_structp png() const { return png_; }
-  png_infop info() const { return info_; }
-
- private:
-  png_structp png_;
-  png_infop info_;
+  bool write_;
+  png_structp png_ = nullptr;
+  png_infop info_ = nullptr;
 };
 
 std::vector<png_bytep> row_pointers(const cv::Mat& image) {
@@ -164,7 +162,7 @@ std::vector<png_bytep> row_pointers(const cv::Mat& image) {
 cv::Mat decode_png(std::string_view bytes) {
   PngContext context;
   context.input = bytes;
-  const ReadStruct reader(context);
+  const PngStruct reader(context, false);
   PngImage header;
   if (!read_header(reader.png(), reader.info(), header)) throw CodecError(context.message);
   cv::Mat image(static_cast<int>(header.height), static_cast<int>(header.width),
@@ -178,7 +176,7 @@ std::string encode_png(const cv::Mat& image) {
   std::string out;
   PngContext context;
   context.output = &out;
-  const WriteStruct writer(context);
+  const PngStruct writer(context, true);
   std::vector<png_bytep> rows = row_pointers(image);
   if (!write_png(writer.png(), writer.info(), image, rows.data())) throw CodecError(context.message);
   return out;
