@@ -2,7 +2,8 @@
 // whole imaging toolkits such as GDAL, ImageMagick or GraphicsMagick, which would bring back the
 // start-up cost this replaces), and a BMP is a header, a palette and padded or run-length coded
 // rows. The layout rules are those OpenCV's reader applied: a palette of greys gives one channel, other
-// palettes and 15/16/24/32-bit pixels give BGR, 32-bit pixels with colour masks give BGRA.
+// palettes and 15/16/24/32-bit pixels give BGR, 32-bit pixels with colour masks give BGRA, an OS/2
+// header gives grey.
 #include <algorithm>
 #include <array>
 #include <cstdint>

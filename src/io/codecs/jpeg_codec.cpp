@@ -67,10 +67,24 @@ class Compress {
   unsigned long size_ = 0;
 };
 
+// Where the data ends before the decoder is done: an end-of-image marker is supplied (as libjpeg's
+// own memory source does) and the fact recorded, so that a file lacking only its final marker still
+// decodes (as it did with OpenCV) while one cut inside the scan is refused instead of giving rows
+// of made-up pixels.
+boolean end_of_data(j_decompress_ptr cinfo) {
+  static const JOCTET end_of_image[2] = {0xFF, JPEG_EOI};
+  *static_cast<bool*>(cinfo->client_data) = true;
+  cinfo->src->next_input_byte = end_of_image;
+  cinfo->src->bytes_in_buffer = 2;
+  return TRUE;
+}
+
 // Phase 1: the header and the output colour space (grey, RGB, or CMYK to be converted).
-bool read_header(Decompress& d, std::string_view bytes) {
+bool read_header(Decompress& d, std::string_view bytes, bool& ended) {
   if (setjmp(d.error_.jump)) return false;
   jpeg_mem_src(&d.cinfo_, reinterpret_cast<const unsigned char*>(bytes.data()), static_cast<unsigned long>(bytes.size()));
+  d.cinfo_.client_data = &ended;
+  d.cinfo_.src->fill_input_buffer = end_of_data;
   jpeg_read_header(&d.cinfo_, TRUE);
   if (d.cinfo_.num_components == 1) {
     d.cinfo_.out_color_space = JCS_GRAYSCALE;
@@ -82,14 +96,19 @@ bool read_header(Decompress& d, std::string_view bytes) {
   return true;
 }
 
-// Phase 2: the scanlines, into rows (BGR or grey) or, for CMYK, into cmyk_rows.
-bool read_scanlines(Decompress& d, unsigned char** rows, int height) {
+// Phase 2: the scanlines, into rows (BGR, grey or CMYK). False if libjpeg fails or the data ends
+// before the last row.
+bool read_scanlines(Decompress& d, unsigned char** rows, int height, const bool& ended) {
   if (setjmp(d.error_.jump)) return false;
   jpeg_start_decompress(&d.cinfo_);
   for (int y = 0; y < height;) {
     const JDIMENSION n = jpeg_read_scanlines(&d.cinfo_, rows + y, static_cast<JDIMENSION>(height - y));
     if (n == 0) break;
     y += static_cast<int>(n);
+  }
+  if (ended) {
+    std::snprintf(d.error_.message, sizeof d.error_.message, "the JPEG data ends early");
+    return false;
   }
   jpeg_finish_decompress(&d.cinfo_);
   return true;
@@ -138,12 +157,13 @@ bool write_scanlines(Compress& e, const cv::Mat& image, unsigned char** rows) {
 
 cv::Mat decode_jpeg(std::string_view bytes) {
   Decompress d;
-  if (!read_header(d, bytes)) throw CodecError(d.error_.message);
+  bool ended = false;
+  if (!read_header(d, bytes, ended)) throw CodecError(d.error_.message);
   const int height = static_cast<int>(d.cinfo_.image_height), width = static_cast<int>(d.cinfo_.image_width);
   const int stored = d.cinfo_.out_color_space == JCS_GRAYSCALE ? 1 : d.cinfo_.out_color_space == JCS_CMYK ? 4 : 3;
   cv::Mat decoded(height, width, CV_8UC(stored), cv::Scalar::all(0));
   std::vector<unsigned char*> rows = row_pointers(decoded);
-  if (!read_scanlines(d, rows.data(), height)) throw CodecError(d.error_.message);
+  if (!read_scanlines(d, rows.data(), height, ended)) throw CodecError(d.error_.message);
   if (stored != 4) return decoded;
   cv::Mat bgr(height, width, CV_8UC3);
   cmyk_to_bgr(decoded, bgr);
