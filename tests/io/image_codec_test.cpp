@@ -102,7 +102,9 @@ TEST(ImageCodec, JpegBmpAndTiffDecodeLikeOpenCv) {
   for (const int type : {CV_8UC1, CV_8UC3}) {
     const std::string jpeg = opencv_encoded(random_image(type), ".jpg");
     expect_decodes_like_opencv(jpeg, "jpeg");
-    expect_decodes_like_opencv(jpeg.substr(0, jpeg.size() - 2), "jpeg without its end-of-image marker");
+    // Without its end-of-image marker it still decodes, to the whole image (OpenCV left the last rows
+    // undecoded there).
+    EXPECT_TRUE(same_pixels(decode_image(jpeg.substr(0, jpeg.size() - 2), "cut.jpg", {}), decode_image(jpeg, "j.jpg", {})));
   }
   for (const int type : {CV_8UC1, CV_8UC3, CV_8UC4}) expect_decodes_like_opencv(opencv_encoded(random_image(type), ".bmp"), "bmp");
   for (const int type : {CV_8UC1, CV_8UC3, CV_8UC4, CV_16UC1, CV_16UC3})

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include <jpeglib.h>
+#include <jerror.h>
 
 #include "io/codecs/codecs.h"
 
@@ -18,6 +19,7 @@ struct JpegError {
   jpeg_error_mgr manager;
   std::jmp_buf jump;
   char message[JMSG_LENGTH_MAX] = "";
+  bool scan_cut = false;  // the entropy-coded data stopped at a marker before the image was complete
 };
 
 void on_error(j_common_ptr cinfo) {
@@ -28,10 +30,17 @@ void on_error(j_common_ptr cinfo) {
 
 void on_message(j_common_ptr) {}
 
+void on_emit(j_common_ptr cinfo, int level) {
+  if (level >= 0) return;  // trace messages
+  ++cinfo->err->num_warnings;
+  if (cinfo->err->msg_code == JWRN_HIT_MARKER) reinterpret_cast<JpegError*>(cinfo->err)->scan_cut = true;
+}
+
 void install(JpegError& error) {
   jpeg_std_error(&error.manager);
   error.manager.error_exit = on_error;
   error.manager.output_message = on_message;
+  error.manager.emit_message = on_emit;
 }
 
 class Decompress {
@@ -69,8 +78,8 @@ class Compress {
 
 // Where the data ends before the decoder is done: an end-of-image marker is supplied (as libjpeg's
 // own memory source does) and the fact recorded, so that a file lacking only its final marker still
-// decodes (as it did with OpenCV) while one cut inside the scan is refused instead of giving rows
-// of made-up pixels.
+// decodes (as it did with OpenCV) while one cut inside the scan (the data ended and the decoder hit
+// that marker early) is refused instead of giving rows of made-up pixels.
 boolean end_of_data(j_decompress_ptr cinfo) {
   static const JOCTET end_of_image[2] = {0xFF, JPEG_EOI};
   *static_cast<bool*>(cinfo->client_data) = true;
@@ -106,7 +115,7 @@ bool read_scanlines(Decompress& d, unsigned char** rows, int height, const bool&
     if (n == 0) break;
     y += static_cast<int>(n);
   }
-  if (ended) {
+  if (ended && d.error_.scan_cut) {
     std::snprintf(d.error_.message, sizeof d.error_.message, "the JPEG data ends early");
     return false;
   }
