@@ -2,6 +2,13 @@
 // libtiff's RGBA reader (palette, bilevel, YCbCr and min-is-white handled there) as grey, BGR or
 // BGRA by the samples per pixel; 16-bit grey, RGB and RGBA read as stored, in BGR(A) order. Errors
 // and warnings go to per-handle handlers, never to stderr.
+//
+// libtiff is opened with dlopen() on the first TIFF, not linked: it brings seven more shared
+// libraries (WebP, Zstandard, LZMA, LERC, JBIG, libdeflate), which cost every topocut process about
+// 3-4 ms of CPU at start-up (10 % of `topocut --version`, benchmarks/README.md "Start-up") while
+// maps are almost never TIFF.
+#include <dlfcn.h>
+
 #include <cstdarg>
 #include <cstdio>
 #include <cstring>
@@ -13,6 +20,58 @@
 
 namespace topocut::codecs {
 namespace {
+
+// The libtiff functions used here, resolved once from the shared library named at build time.
+struct LibTiff {
+  decltype(&TIFFOpenOptionsAlloc) OpenOptionsAlloc = nullptr;
+  decltype(&TIFFOpenOptionsFree) OpenOptionsFree = nullptr;
+  decltype(&TIFFOpenOptionsSetErrorHandlerExtR) SetErrorHandler = nullptr;
+  decltype(&TIFFOpenOptionsSetWarningHandlerExtR) SetWarningHandler = nullptr;
+  decltype(&TIFFClientOpenExt) ClientOpenExt = nullptr;
+  decltype(&TIFFClose) Close = nullptr;
+  decltype(&TIFFGetField) GetField = nullptr;
+  decltype(&TIFFGetFieldDefaulted) GetFieldDefaulted = nullptr;
+  decltype(&TIFFSetField) SetField = nullptr;
+  decltype(&TIFFReadRGBAImageOriented) ReadRGBAImageOriented = nullptr;
+  decltype(&TIFFIsTiled) IsTiled = nullptr;
+  decltype(&TIFFScanlineSize) ScanlineSize = nullptr;
+  decltype(&TIFFReadScanline) ReadScanline = nullptr;
+  decltype(&TIFFWriteScanline) WriteScanline = nullptr;
+  decltype(&TIFFDefaultStripSize) DefaultStripSize = nullptr;
+  bool complete = false;
+};
+
+template <typename F>
+bool resolve(void* library, const char* name, F& f) {
+  f = reinterpret_cast<F>(::dlsym(library, name));
+  return f != nullptr;
+}
+
+LibTiff load_libtiff() {
+  LibTiff t;
+  void* library = ::dlopen(TOPOCUT_LIBTIFF_SONAME, RTLD_NOW | RTLD_LOCAL);
+  if (!library) return t;
+  t.complete = resolve(library, "TIFFOpenOptionsAlloc", t.OpenOptionsAlloc) &&
+               resolve(library, "TIFFOpenOptionsFree", t.OpenOptionsFree) &&
+               resolve(library, "TIFFOpenOptionsSetErrorHandlerExtR", t.SetErrorHandler) &&
+               resolve(library, "TIFFOpenOptionsSetWarningHandlerExtR", t.SetWarningHandler) &&
+               resolve(library, "TIFFClientOpenExt", t.ClientOpenExt) && resolve(library, "TIFFClose", t.Close) &&
+               resolve(library, "TIFFGetField", t.GetField) &&
+               resolve(library, "TIFFGetFieldDefaulted", t.GetFieldDefaulted) &&
+               resolve(library, "TIFFSetField", t.SetField) &&
+               resolve(library, "TIFFReadRGBAImageOriented", t.ReadRGBAImageOriented) &&
+               resolve(library, "TIFFIsTiled", t.IsTiled) && resolve(library, "TIFFScanlineSize", t.ScanlineSize) &&
+               resolve(library, "TIFFReadScanline", t.ReadScanline) &&
+               resolve(library, "TIFFWriteScanline", t.WriteScanline) &&
+               resolve(library, "TIFFDefaultStripSize", t.DefaultStripSize);
+  return t;  // the library stays loaded for the process's lifetime
+}
+
+const LibTiff& libtiff() {
+  static const LibTiff t = load_libtiff();
+  if (!t.complete) throw CodecError("TIFF needs " TOPOCUT_LIBTIFF_SONAME " (Debian package libtiff6)");
+  return t;
+}
 
 struct Memory {
   std::string_view input;
@@ -69,16 +128,17 @@ int on_warning(TIFF*, void*, const char*, const char*, va_list) { return 1; }
 class Handle {
  public:
   Handle(Memory& memory, const char* mode) {
-    TIFFOpenOptions* options = TIFFOpenOptionsAlloc();
-    TIFFOpenOptionsSetErrorHandlerExtR(options, on_error, &memory);
-    TIFFOpenOptionsSetWarningHandlerExtR(options, on_warning, &memory);
-    tiff_ = TIFFClientOpenExt("image", mode, &memory, read_memory, write_memory, seek_memory, close_memory,
+    const LibTiff& lib = libtiff();
+    TIFFOpenOptions* options = lib.OpenOptionsAlloc();
+    lib.SetErrorHandler(options, on_error, &memory);
+    lib.SetWarningHandler(options, on_warning, &memory);
+    tiff_ = lib.ClientOpenExt("image", mode, &memory, read_memory, write_memory, seek_memory, close_memory,
                               size_memory, map_memory, unmap_memory, options);
-    TIFFOpenOptionsFree(options);
+    lib.OpenOptionsFree(options);
     if (!tiff_) throw CodecError(memory.message.empty() ? "not a readable TIFF" : memory.message);
   }
   ~Handle() {
-    if (tiff_) TIFFClose(tiff_);
+    if (tiff_) libtiff().Close(tiff_);
   }
   Handle(const Handle&) = delete;
   Handle& operator=(const Handle&) = delete;
@@ -94,7 +154,7 @@ void fail(const Memory& memory, const char* fallback) {
 
 cv::Mat read_rgba(TIFF* tiff, Memory& memory, int width, int height, int channels) {
   std::vector<std::uint32_t> rgba(static_cast<std::size_t>(width) * height);
-  if (!TIFFReadRGBAImageOriented(tiff, static_cast<std::uint32_t>(width), static_cast<std::uint32_t>(height), rgba.data(),
+  if (!libtiff().ReadRGBAImageOriented(tiff, static_cast<std::uint32_t>(width), static_cast<std::uint32_t>(height), rgba.data(),
                                  ORIENTATION_TOPLEFT, 0))
     fail(memory, "the TIFF data does not decode");
   cv::Mat image(height, width, CV_8UC(channels));
@@ -116,13 +176,13 @@ cv::Mat read_rgba(TIFF* tiff, Memory& memory, int width, int height, int channel
 
 cv::Mat read_sixteen(TIFF* tiff, Memory& memory, int width, int height, int channels) {
   std::uint16_t planar = PLANARCONFIG_CONTIG;
-  TIFFGetFieldDefaulted(tiff, TIFFTAG_PLANARCONFIG, &planar);
-  if (planar != PLANARCONFIG_CONTIG || TIFFIsTiled(tiff)) throw CodecError("unsupported 16-bit TIFF layout");
+  libtiff().GetFieldDefaulted(tiff, TIFFTAG_PLANARCONFIG, &planar);
+  if (planar != PLANARCONFIG_CONTIG || libtiff().IsTiled(tiff)) throw CodecError("unsupported 16-bit TIFF layout");
   cv::Mat image(height, width, CV_16UC(channels));
-  if (TIFFScanlineSize(tiff) != static_cast<tmsize_t>(image.cols * image.elemSize())) throw CodecError("bad TIFF row size");
+  if (libtiff().ScanlineSize(tiff) != static_cast<tmsize_t>(image.cols * image.elemSize())) throw CodecError("bad TIFF row size");
   for (int r = 0; r < height; ++r) {
     auto* row = image.ptr<std::uint16_t>(r);
-    if (TIFFReadScanline(tiff, row, static_cast<std::uint32_t>(r), 0) < 0) fail(memory, "the TIFF data does not decode");
+    if (libtiff().ReadScanline(tiff, row, static_cast<std::uint32_t>(r), 0) < 0) fail(memory, "the TIFF data does not decode");
     if (channels >= 3)
       for (int c = 0; c < width; ++c) std::swap(row[c * channels], row[c * channels + 2]);
   }
@@ -138,12 +198,12 @@ cv::Mat decode_tiff(std::string_view bytes) {
   TIFF* tiff = handle.get();
   std::uint32_t width = 0, height = 0;
   std::uint16_t photometric = 0, bits = 1, samples = 1, format = SAMPLEFORMAT_UINT;
-  if (!TIFFGetField(tiff, TIFFTAG_IMAGEWIDTH, &width) || !TIFFGetField(tiff, TIFFTAG_IMAGELENGTH, &height) ||
-      !TIFFGetField(tiff, TIFFTAG_PHOTOMETRIC, &photometric))
+  if (!libtiff().GetField(tiff, TIFFTAG_IMAGEWIDTH, &width) || !libtiff().GetField(tiff, TIFFTAG_IMAGELENGTH, &height) ||
+      !libtiff().GetField(tiff, TIFFTAG_PHOTOMETRIC, &photometric))
     fail(memory, "the TIFF header lacks its size or photometric tag");
-  TIFFGetField(tiff, TIFFTAG_BITSPERSAMPLE, &bits);
-  TIFFGetField(tiff, TIFFTAG_SAMPLESPERPIXEL, &samples);
-  TIFFGetField(tiff, TIFFTAG_SAMPLEFORMAT, &format);
+  libtiff().GetField(tiff, TIFFTAG_BITSPERSAMPLE, &bits);
+  libtiff().GetField(tiff, TIFFTAG_SAMPLESPERPIXEL, &samples);
+  libtiff().GetField(tiff, TIFFTAG_SAMPLEFORMAT, &format);
   const bool grey = photometric == PHOTOMETRIC_MINISWHITE || photometric == PHOTOMETRIC_MINISBLACK;
   const int channels = photometric == PHOTOMETRIC_PALETTE ? 3 : samples >= 4 ? 4 : samples == 3 ? 3 : 1;
   if (format != SAMPLEFORMAT_UINT) throw CodecError("only unsigned integer TIFF samples are supported");
@@ -161,18 +221,18 @@ std::string encode_tiff(const cv::Mat& image) {
     const Handle handle(memory, "w");
     TIFF* tiff = handle.get();
     const int channels = image.channels();
-    TIFFSetField(tiff, TIFFTAG_IMAGEWIDTH, static_cast<std::uint32_t>(image.cols));
-    TIFFSetField(tiff, TIFFTAG_IMAGELENGTH, static_cast<std::uint32_t>(image.rows));
-    TIFFSetField(tiff, TIFFTAG_BITSPERSAMPLE, static_cast<std::uint16_t>(image.elemSize1() * 8));
-    TIFFSetField(tiff, TIFFTAG_SAMPLESPERPIXEL, static_cast<std::uint16_t>(channels));
-    TIFFSetField(tiff, TIFFTAG_PHOTOMETRIC, channels > 1 ? PHOTOMETRIC_RGB : PHOTOMETRIC_MINISBLACK);
-    TIFFSetField(tiff, TIFFTAG_PLANARCONFIG, PLANARCONFIG_CONTIG);
-    TIFFSetField(tiff, TIFFTAG_COMPRESSION, COMPRESSION_LZW);
+    libtiff().SetField(tiff, TIFFTAG_IMAGEWIDTH, static_cast<std::uint32_t>(image.cols));
+    libtiff().SetField(tiff, TIFFTAG_IMAGELENGTH, static_cast<std::uint32_t>(image.rows));
+    libtiff().SetField(tiff, TIFFTAG_BITSPERSAMPLE, static_cast<std::uint16_t>(image.elemSize1() * 8));
+    libtiff().SetField(tiff, TIFFTAG_SAMPLESPERPIXEL, static_cast<std::uint16_t>(channels));
+    libtiff().SetField(tiff, TIFFTAG_PHOTOMETRIC, channels > 1 ? PHOTOMETRIC_RGB : PHOTOMETRIC_MINISBLACK);
+    libtiff().SetField(tiff, TIFFTAG_PLANARCONFIG, PLANARCONFIG_CONTIG);
+    libtiff().SetField(tiff, TIFFTAG_COMPRESSION, COMPRESSION_LZW);
     if (channels == 4) {
       const std::uint16_t extra = EXTRASAMPLE_ASSOCALPHA;
-      TIFFSetField(tiff, TIFFTAG_EXTRASAMPLES, 1, &extra);
+      libtiff().SetField(tiff, TIFFTAG_EXTRASAMPLES, 1, &extra);
     }
-    TIFFSetField(tiff, TIFFTAG_ROWSPERSTRIP, TIFFDefaultStripSize(tiff, 0));
+    libtiff().SetField(tiff, TIFFTAG_ROWSPERSTRIP, libtiff().DefaultStripSize(tiff, 0));
     cv::Mat row(1, image.cols, image.type());
     for (int r = 0; r < image.rows; ++r) {
       const cv::Mat source = image.row(r);
@@ -181,7 +241,7 @@ std::string encode_tiff(const cv::Mat& image) {
         const int from_to[] = {0, 2, 1, 1, 2, 0, 3, 3};
         cv::mixChannels(&source, 1, &row, 1, from_to, static_cast<std::size_t>(channels));
       }
-      if (TIFFWriteScanline(tiff, row.ptr(), static_cast<std::uint32_t>(r), 0) < 0) fail(memory, "libtiff could not write");
+      if (libtiff().WriteScanline(tiff, row.ptr(), static_cast<std::uint32_t>(r), 0) < 0) fail(memory, "libtiff could not write");
     }
   }
   return out;
