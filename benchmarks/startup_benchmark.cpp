@@ -28,7 +28,7 @@ struct Run {
 };
 
 struct Case {
-  std::string binary, label;
+  std::string binary, label, command;
   std::vector<std::string> args;
   std::vector<Run> runs;
 };
@@ -119,7 +119,7 @@ void print_table(const std::vector<Case>& cases) {
       inside = fixed(stats(column(c, &Run::inside_ms)).median, 1);
       ratio = fixed(stats(ratios).median, 2);
     }
-    std::cout << "| " << c.label << " | `" << (c.args.size() == 1 ? c.args[0] : c.args[0] + " " + c.args[1]) << "` | "
+    std::cout << "| " << c.label << " | `" << c.command << "` | "
               << fixed(wall.median, 1) << " / " << fixed(wall.min, 1) << " / " << fixed(wall.max, 1) << " | "
               << fixed(stats(column(c, &Run::cpu_ms)).median, 1) << " | " << fixed(stats(column(c, &Run::rss_mb)).median, 1)
               << " | " << inside << " | " << ratio << " |\n";
@@ -136,7 +136,7 @@ void print_ratios(const std::vector<Case>& cases) {
     const auto ratio = [&](double Run::*f) {
       return fixed(stats(column(base, f)).median / stats(column(now, f)).median, 1) + " x";
     };
-    std::cout << "| `" << (now.args.size() == 1 ? now.args[0] : now.args[0] + " " + now.args[1]) << "` | "
+    std::cout << "| `" << now.command << "` | "
               << ratio(&Run::wall_ms) << " | " << ratio(&Run::cpu_ms) << " | " << ratio(&Run::rss_mb) << " |\n";
   }
 }
@@ -164,8 +164,8 @@ int main(int argc, char** argv) {
   for (const std::string& binary : {topocut, base}) {
     if (binary.empty()) continue;
     const std::string label = binary == topocut ? "new" : "base";
-    cases.push_back({binary, label, {"--version"}, {}});
-    cases.push_back({binary, label, {"segment", floorplan}, {}});
+    cases.push_back({binary, label, "--version", {"--version"}, {}});
+    cases.push_back({binary, label, "segment maps/floorplan.yaml", {"segment", floorplan}, {}});
   }
   for (Case& c : cases) run_once(c.binary, c.args);  // warm the page cache
   for (int k = 0; k < runs; ++k)
