@@ -1,7 +1,8 @@
 // Start-up as a user pays it: the topocut command run as a whole process, N times, its wall time
 // and peak memory (wait4's rusage), for `topocut --version` and for `topocut segment` on the bundled
 // floor plan; for the latter also the ratio of the whole process to the time topocut itself reports
-// (loading + segmentation). With --base, an older binary is measured in the same run, alternating
+// (loading + segmentation), and an empty process (/bin/true) as the machine's floor under the same
+// load. With --base, an older binary is measured in the same run, alternating
 // run by run so that both see the same machine load.
 //   build/startup_benchmark [--runs N] [--base OLD_TOPOCUT] [--topocut NEW_TOPOCUT]
 #include <sys/resource.h>
@@ -128,11 +129,10 @@ void print_table(const std::vector<Case>& cases) {
 
 // The base binary's medians over the new one's, per command.
 void print_ratios(const std::vector<Case>& cases) {
-  const std::size_t half = cases.size() / 2;
   std::cout << "\n| command | wall: base / new | CPU: base / new | max RSS: base / new |\n|---|---|---|---|\n";
-  for (std::size_t i = 0; i < half; ++i) {
+  for (std::size_t i = 0; i < 2; ++i) {
     const Case& now = cases[i];
-    const Case& base = cases[i + half];
+    const Case& base = cases[i + 2];
     const auto ratio = [&](double Run::*f) {
       return fixed(stats(column(base, f)).median / stats(column(now, f)).median, 1) + " x";
     };
@@ -167,6 +167,8 @@ int main(int argc, char** argv) {
     cases.push_back({binary, label, "--version", {"--version"}, {}});
     cases.push_back({binary, label, "segment maps/floorplan.yaml", {"segment", floorplan}, {}});
   }
+  // The machine's floor under the same load: an empty process (fork, exec, exit).
+  cases.push_back({"/bin/true", "empty process", "/bin/true", {}, {}});
   for (Case& c : cases) run_once(c.binary, c.args);  // warm the page cache
   for (int k = 0; k < runs; ++k)
     for (Case& c : cases) c.runs.push_back(run_once(c.binary, c.args));
