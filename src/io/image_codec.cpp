@@ -24,7 +24,7 @@ std::optional<Writer> writer_for(const std::string& extension) {
   if (e == ".jpg" || e == ".jpeg" || e == ".jpe") return Writer::kJpeg;
   if (e == ".pgm") return Writer::kPgm;
   if (e == ".ppm") return Writer::kPpm;
-  if (e == ".pnm" || e == ".pxm") return Writer::kPnm;
+  if (e == ".pnm") return Writer::kPnm;
   if (e == ".pbm") return Writer::kPbm;
   if (e == ".bmp" || e == ".dib") return Writer::kBmp;
   if (e == ".tif" || e == ".tiff") return Writer::kTiff;

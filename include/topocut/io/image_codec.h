@@ -10,7 +10,7 @@
 namespace topocut {
 
 // True if encode_image() writes the file name's extension (case-insensitive): .png, .jpg, .jpeg,
-// .jpe, .pgm, .ppm, .pnm, .pxm, .bmp, .dib, .tif, .tiff.
+// .jpe, .pgm, .ppm, .pnm, .pbm (refused when encoding, as by OpenCV), .bmp, .dib, .tif, .tiff.
 bool can_encode_image(const std::string& path);
 
 // The image encoded as extension says (".png", ...), with OpenCV's defaults (PNG: fast zlib level;
