@@ -23,7 +23,7 @@ JOBS="${JOBS:-$(nproc)}"
 
 packages=(build-essential cmake pkg-config libcgal-dev libopencv-dev libboost-dev
           libboost-program-options-dev libboost-graph-dev nlohmann-json3-dev libyaml-cpp-dev
-          libgtest-dev libgmock-dev libbenchmark-dev zlib1g-dev
+          libgtest-dev libgmock-dev libbenchmark-dev zlib1g-dev libpng-dev libjpeg62-turbo-dev libtiff-dev
           pybind11-dev python3-dev python3-numpy python3-pytest python3-matplotlib)
 # ROS 1 from Debian: the node (ros/) and its loopback test (rosmaster, rospy publishing the maps).
 packages+=(libroscpp-dev libnav-msgs-dev libsensor-msgs-dev libvisualization-msgs-dev libstd-msgs-dev

@@ -7,12 +7,12 @@
 #include <optional>
 #include <sstream>
 
-#include <opencv2/imgcodecs.hpp>
 
 #include "cli/command.h"
 #include "cli/library_options.h"
 #include "topocut/core/error.h"
 #include "topocut/io/atomic_file.h"
+#include "topocut/io/image_codec.h"
 #include "topocut/io/output_files.h"
 #include "topocut/io/label_image.h"
 #include "topocut/io/map_loader.h"
@@ -91,7 +91,7 @@ void check_output_files(const Request& request, const po::variables_map& vm) {
   check_outputs(paths, map_files(request.map_path));
   if (!out.labels.empty() && lower_extension(out.labels) != ".png")
     throw Error("the label image '" + out.labels + "' must be a .png file (16-bit PNG)");
-  if (!out.color.empty() && !cv::haveImageWriter(out.color))
+  if (!out.color.empty() && !can_encode_image(out.color))
     throw Error("cannot write the overlay '" + out.color + "': unknown image format (use .png or .jpg)");
   if (!out.clean.empty() && lower_extension(out.clean) != ".png")
     throw Error("the cleaned map '" + out.clean + "' must be a .png file");

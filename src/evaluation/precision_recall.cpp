@@ -8,7 +8,6 @@
 #include <utility>
 #include <vector>
 
-#include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
 #include "topocut/core/error.h"

@@ -3,11 +3,11 @@
 #include <filesystem>
 #include <vector>
 
-#include <opencv2/imgcodecs.hpp>
 #include <unistd.h>
 
 #include "output_staging.h"
 #include "topocut/core/error.h"
+#include "topocut/io/image_codec.h"
 
 namespace topocut {
 
@@ -20,15 +20,13 @@ void write_file_atomically(const std::string& path, const std::string& contents)
 void write_image_atomically(const std::string& path, const cv::Mat& image) {
   const std::string extension = fs::path(path).extension().string();
   if (extension.empty()) throw Error("cannot write image '" + path + "': the file name needs an extension such as .png");
-  std::vector<unsigned char> bytes;
-  bool ok = false;
+  std::string bytes;
   try {
-    ok = cv::imencode(extension, image, bytes);
-  } catch (const cv::Exception&) {
-    ok = false;
+    bytes = encode_image(image, extension);
+  } catch (const Error&) {
+    throw Error("cannot encode image '" + path + "' as " + extension);
   }
-  if (!ok) throw Error("cannot encode image '" + path + "' as " + extension);
-  write_file_atomically(path, std::string(bytes.begin(), bytes.end()));
+  write_file_atomically(path, bytes);
 }
 
 void check_writable(const std::string& path) {

@@ -7,12 +7,7 @@
 #include <optional>
 #include <sstream>
 
-#include <fcntl.h>
-#include <unistd.h>
-
-#include <opencv2/core/utils/logger.hpp>
-#include <opencv2/imgcodecs.hpp>
-
+#include "io/codecs/codecs.h"
 #include "topocut/core/error.h"
 #include "topocut/core/input_file.h"
 
@@ -21,37 +16,6 @@ namespace topocut {
 namespace {
 
 std::string quoted(const std::string& s) { return "'" + s + "'"; }
-
-// Silences standard error (and OpenCV's logger) for its lifetime. Why: the decoders under
-// cv::imdecode (libpng, libtiff, ...) print their own warnings on corrupt input, but a bad map must
-// give exactly one clear error line. Process-wide while it lives; decoding is short and single-threaded.
-// Fuzz builds keep stderr: a sanitizer's report from inside a decoder must not be lost.
-class QuietStderr {
- public:
-  QuietStderr() : level_(cv::utils::logging::setLogLevel(cv::utils::logging::LOG_LEVEL_SILENT)) {
-#ifndef TOPOCUT_KEEP_DECODER_STDERR
-    std::fflush(stderr);
-    saved_ = ::dup(STDERR_FILENO);
-    const int null = ::open("/dev/null", O_WRONLY | O_CLOEXEC);
-    if (saved_ >= 0 && null >= 0) ::dup2(null, STDERR_FILENO);
-    if (null >= 0) ::close(null);
-#endif
-  }
-  ~QuietStderr() {
-    std::fflush(stderr);
-    if (saved_ >= 0) {
-      ::dup2(saved_, STDERR_FILENO);
-      ::close(saved_);
-    }
-    cv::utils::logging::setLogLevel(level_);
-  }
-  QuietStderr(const QuietStderr&) = delete;
-  QuietStderr& operator=(const QuietStderr&) = delete;
-
- private:
-  cv::utils::logging::LogLevel level_;
-  int saved_ = -1;
-};
 
 // Bounds-checked reads of the header bytes.
 class HeaderBytes {
@@ -236,15 +200,21 @@ void check_image_size(const ImageHeader& header, const ImageLimits& limits, cons
   }
 }
 
-cv::Mat decode_image(std::string_view bytes, const std::string& source, const ImageLimits& limits, int flags) {
-  check_image_size(read_image_header(bytes, source), limits, source);
+cv::Mat decode_image(std::string_view bytes, const std::string& source, const ImageLimits& limits) {
+  const ImageHeader header = read_image_header(bytes, source);
+  check_image_size(header, limits, source);
   cv::Mat image;
   try {
-    // A header over the bytes, not a copy of them.
-    const cv::Mat buffer(1, static_cast<int>(bytes.size()), CV_8UC1, const_cast<char*>(bytes.data()));
-    const QuietStderr quiet;
-    image = cv::imdecode(buffer, flags);
-  } catch (const cv::Exception&) {
+    switch (header.format) {
+      case ImageFormat::kPng: image = codecs::decode_png(bytes); break;
+      case ImageFormat::kNetpbm: image = codecs::decode_netpbm(bytes); break;
+      case ImageFormat::kJpeg: image = codecs::decode_jpeg(bytes); break;
+      case ImageFormat::kBmp: image = codecs::decode_bmp(bytes); break;
+      case ImageFormat::kTiff: image = codecs::decode_tiff(bytes); break;
+    }
+  } catch (const codecs::CodecError&) {
+    image.release();
+  } catch (const cv::Exception&) {  // an allocation the header's size made impossible
     image.release();
   }
   if (image.empty()) throw Error("cannot read " + quoted(source) + " as an image (corrupt or truncated)");
@@ -253,13 +223,13 @@ cv::Mat decode_image(std::string_view bytes, const std::string& source, const Im
 
 std::uint64_t max_image_file_bytes(const ImageLimits& limits) {
   validate(limits);
-  // Capped below 2 GiB: cv::imdecode takes the bytes as a matrix with an int size.
+  // Capped below 2 GiB, the bound cv::imdecode had (an int size), so the same files are accepted.
   const double bytes = limits.max_megapixels * 1e6 * 8.0 + (1u << 20);
   return static_cast<std::uint64_t>(std::min(bytes, 2147483647.0));
 }
 
-cv::Mat read_image(const std::string& path, const std::string& what, const ImageLimits& limits, int flags) {
-  return decode_image(read_input_file(path, what, max_image_file_bytes(limits)), path, limits, flags);
+cv::Mat read_image(const std::string& path, const std::string& what, const ImageLimits& limits) {
+  return decode_image(read_input_file(path, what, max_image_file_bytes(limits)), path, limits);
 }
 
 }  // namespace topocut

@@ -3,7 +3,6 @@
 #include <filesystem>
 #include <vector>
 
-#include <opencv2/imgcodecs.hpp>
 
 #include "topocut/core/error.h"
 #include "topocut/io/image_input.h"

@@ -7,7 +7,6 @@
 #include <sstream>
 #include <vector>
 
-#include <opencv2/imgcodecs.hpp>
 #include <yaml-cpp/yaml.h>
 
 #include "topocut/core/error.h"

@@ -4,10 +4,10 @@
 #include <cstdio>
 #include <vector>
 
-#include <opencv2/imgcodecs.hpp>
 
 #include "topocut/core/error.h"
 #include "topocut/io/atomic_file.h"
+#include "topocut/io/image_codec.h"
 #include "topocut/io/overlay.h"
 
 namespace topocut {
@@ -31,25 +31,26 @@ std::string hex(const cv::Vec3b& bgr) {
   return buffer;
 }
 
-std::string base64(const std::vector<unsigned char>& bytes) {
+std::string base64(const std::string& bytes) {
+  const auto* b = reinterpret_cast<const unsigned char*>(bytes.data());
   static const char* table = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
   std::string out;
   out.reserve((bytes.size() + 2) / 3 * 4);
   std::size_t i = 0;
   for (; i + 2 < bytes.size(); i += 3) {
-    const unsigned v = (bytes[i] << 16) | (bytes[i + 1] << 8) | bytes[i + 2];
+    const unsigned v = (b[i] << 16) | (b[i + 1] << 8) | b[i + 2];
     out += table[(v >> 18) & 63];
     out += table[(v >> 12) & 63];
     out += table[(v >> 6) & 63];
     out += table[v & 63];
   }
   if (i + 1 == bytes.size()) {
-    const unsigned v = bytes[i] << 16;
+    const unsigned v = b[i] << 16;
     out += table[(v >> 18) & 63];
     out += table[(v >> 12) & 63];
     out += "==";
   } else if (i + 2 == bytes.size()) {
-    const unsigned v = (bytes[i] << 16) | (bytes[i + 1] << 8);
+    const unsigned v = (b[i] << 16) | (b[i + 1] << 8);
     out += table[(v >> 18) & 63];
     out += table[(v >> 12) & 63];
     out += table[(v >> 6) & 63];
@@ -82,8 +83,7 @@ std::string rooms_to_svg(const OccupancyGrid& grid, const Segmentation& s, const
     cv::Mat picture(grid.cells.size(), CV_8UC1, cv::Scalar(200));
     picture.setTo(255, grid.cells == kFree);
     picture.setTo(45, grid.cells == kOccupied);
-    std::vector<unsigned char> png;
-    cv::imencode(".png", picture, png);
+    const std::string png = encode_image(picture, ".png");
     svg += "<image x=\"0\" y=\"0\" width=\"" + fmt(width_m) + "\" height=\"" + fmt(height_m) +
            "\" preserveAspectRatio=\"none\" style=\"image-rendering:pixelated\" href=\"data:image/png;base64," +
            base64(png) + "\"/>\n";

@@ -40,17 +40,16 @@ ImageHeader read_image_header(std::string_view bytes, const std::string& source)
 // Throws Error naming source, the limit and how to change it if header exceeds limits.
 void check_image_size(const ImageHeader& header, const ImageLimits& limits, const std::string& source);
 
-// cv::imdecode(bytes, flags) after read_image_header() and check_image_size(); decoder warnings are
-// kept off stderr. Throws Error naming source if it is refused or does not decode.
-cv::Mat decode_image(std::string_view bytes, const std::string& source, const ImageLimits& limits,
-                     int flags = -1 /* cv::IMREAD_UNCHANGED */);
+// The pixels after read_image_header() and check_image_size(), as cv::imdecode(IMREAD_UNCHANGED)
+// gave them (grey, BGR or BGRA; 8 or 16 bits; see image_codec.h); nothing is printed. Throws Error
+// naming source if it is refused or does not decode.
+cv::Mat decode_image(std::string_view bytes, const std::string& source, const ImageLimits& limits);
 
 // The byte limit of an image file under limits: 8 bytes a pixel (16-bit RGBA, uncompressed) plus 1 MiB.
 std::uint64_t max_image_file_bytes(const ImageLimits& limits);
 
 // read_input_file() within max_image_file_bytes(), then decode_image(); `what` names the input
 // ("map image", "ground truth", ...) in errors.
-cv::Mat read_image(const std::string& path, const std::string& what, const ImageLimits& limits,
-                   int flags = -1 /* cv::IMREAD_UNCHANGED */);
+cv::Mat read_image(const std::string& path, const std::string& what, const ImageLimits& limits);
 
 }  // namespace topocut
