@@ -37,7 +37,7 @@ run_all() {  # $1 = binary, $2 = output dir
   done
   "$bin" segment "$here/maps/floorplan.yaml" --out-color "$out/floorplan.color.png" >/dev/null 2>&1
   "$bin" explore "$here/maps/floorplan.yaml" --gt "$here/maps/floorplan_gt_segmentation.png" \
-    --out-labels "$out/explore.labels.png" --out-json "$out/explore.json" >/dev/null 2>&1
+    --frames "$out/explore_frames" --frame-every 5 >"$out/explore.stdout" 2>&1 || echo "exit $?" >>"$out/explore.stdout"
   if [[ -z "$quick" && -d "$data/carmen" ]]; then
     for log in "$data"/carmen/*.log.gz; do
       name="$(basename "${log%.log.gz}")"
@@ -54,7 +54,9 @@ import sys, os, re, numpy as np
 from PIL import Image
 work = sys.argv[1]
 b, n = os.path.join(work, "base"), os.path.join(work, "new")
-names = sorted(set(os.listdir(b)) | set(os.listdir(n)))
+def files(root):
+    return {os.path.relpath(os.path.join(d, f), root) for d, _, fs in os.walk(root) for f in fs}
+names = sorted(files(b) | files(n))
 bad = []
 for f in names:
     pb, pn = os.path.join(b, f), os.path.join(n, f)
