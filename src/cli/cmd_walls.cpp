@@ -17,6 +17,7 @@
 #include "topocut/segmentation/segmenter.h"
 #include "topocut/segmentation/wall_map_segment_options.h"
 #include "topocut/walls/wall_map_replay.h"
+#include "topocut/walls/walls_json.h"
 #include "topocut/walls/walls_pipeline.h"
 
 namespace topocut::cli {

@@ -1,3 +1,4 @@
+#include "topocut/walls/walls_json.h"
 #include "topocut/walls/walls_pipeline.h"
 
 #include <gtest/gtest.h>

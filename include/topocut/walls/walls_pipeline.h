@@ -32,8 +32,4 @@ void validate(const WallsOptions& options);
 // Runs the pipeline on the scans. Throws Error if there are no scans or on invalid options.
 WallsResult walls_from_scans(std::span<const PosedScan> scans, const WallsOptions& options = {});
 
-// The walls as JSON: {"units": "metres", "scans", "segments", "thickness",
-//  "walls": [{"id", "start": [x, y], "end": [x, y], "length", "observations", "polygon": [[x, y] ×4]}]}.
-std::string walls_to_json(const WallsResult& result, std::size_t scans, double thickness);
-
 }  // namespace topocut
