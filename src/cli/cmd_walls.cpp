@@ -74,36 +74,50 @@ void replay(const std::vector<PosedScan>& scans, const WallsOptions& walls, cons
   if (!out_rooms.empty()) write_rooms_json(out_rooms, run.incremental);
 }
 
-int run(const std::vector<std::string>& args) {
+// What the command line asks for, checked; `help` when it only asked for the help.
+struct WallsRequest {
+  bool help = false;
   std::string log_path, method = "iepf", element = "cross";
   std::string out_map, out_walls, out_color, out_rooms;
   WallsOptions options;
   CarmenReadOptions read;
-  const SegmentSettings segment_defaults{wall_map_segment_options(), {}};
-  ReplayArguments replay_arguments;
+  SegmentOptions segment;
+  ReplayArguments replay;
+  bool incremental = false, segment_rooms = false;
+};
+
+// The options of `walls` (its own, then the shared segmentation flags) bound to the request.
+po::options_description walls_options(WallsRequest& r, const SegmentSettings& segment_defaults) {
   po::options_description described("Walls");
   described.add_options()
-      ("log", po::value<std::string>(&log_path)->required(), "CARMEN log with FLASER messages (plain or .gz)")
-      ("resolution", number_value(options.map.resolution), "grid resolution in metres per cell")
-      ("method", po::value<std::string>(&method)->default_value(method), "line extractor: sef, lt, iepf, smf or ale")
-      ("cell", number_value(options.extraction.labeling.cell_size), "labeling cell size in metres")
-      ("dilate", po::value<int>(&options.extraction.labeling.dilation)->default_value(options.extraction.labeling.dilation), "labeling dilation iterations")
-      ("element", po::value<std::string>(&element)->default_value(element), "labeling structuring element: cross or square")
-      ("thickness", number_value(options.map.wall_thickness), "wall thickness in metres")
-      ("max-range", po::value<double>(&read.max_range)->default_value(0.0), "readings at or beyond this range (m) are no return; 0 detects the laser's saturation value")
-      ("out-map", po::value<std::string>(&out_map), "write the grid as a ROS map_server map (YAML + PGM next to it)")
-      ("out-walls", po::value<std::string>(&out_walls), "write the merged walls as JSON")
+      ("log", po::value<std::string>(&r.log_path)->required(), "CARMEN log with FLASER messages (plain or .gz)")
+      ("resolution", number_value(r.options.map.resolution), "grid resolution in metres per cell")
+      ("method", po::value<std::string>(&r.method)->default_value(r.method), "line extractor: sef, lt, iepf, smf or ale")
+      ("cell", number_value(r.options.extraction.labeling.cell_size), "labeling cell size in metres")
+      ("dilate", po::value<int>(&r.options.extraction.labeling.dilation)->default_value(r.options.extraction.labeling.dilation), "labeling dilation iterations")
+      ("element", po::value<std::string>(&r.element)->default_value(r.element), "labeling structuring element: cross or square")
+      ("thickness", number_value(r.options.map.wall_thickness), "wall thickness in metres")
+      ("max-range", po::value<double>(&r.read.max_range)->default_value(0.0), "readings at or beyond this range (m) are no return; 0 detects the laser's saturation value")
+      ("out-map", po::value<std::string>(&r.out_map), "write the grid as a ROS map_server map (YAML + PGM next to it)")
+      ("out-walls", po::value<std::string>(&r.out_walls), "write the merged walls as JSON")
       ("segment", "segment the grid into rooms (pipeline A)")
-      ("out-color", po::value<std::string>(&out_color), "write the rooms as a colour overlay (implies --segment)")
-      ("out-rooms", po::value<std::string>(&out_rooms), "write the rooms as JSON (implies --segment)")
+      ("out-color", po::value<std::string>(&r.out_color), "write the rooms as a colour overlay (implies --segment)")
+      ("out-rooms", po::value<std::string>(&r.out_rooms), "write the rooms as JSON (implies --segment)")
       ("incremental", "replay the log: build the grid scan by scan and segment every change incrementally")
-      ("compare-batch", po::bool_switch(&replay_arguments.compare_batch), "with --incremental: also run the batch segmenter on every update, timed")
-      ("batch-every", po::value<int>(&replay_arguments.batch_every)->default_value(1), "with --compare-batch: only every N-th update (and the last)")
-      ("frames", po::value<std::string>(&replay_arguments.frames), "with --incremental: write a PNG frame of every update into this folder")
-      ("frame-every", po::value<int>(&replay_arguments.frame_every)->default_value(1), "with --frames: only every N-th update (and the last)");
+      ("compare-batch", po::bool_switch(&r.replay.compare_batch), "with --incremental: also run the batch segmenter on every update, timed")
+      ("batch-every", po::value<int>(&r.replay.batch_every)->default_value(1), "with --compare-batch: only every N-th update (and the last)")
+      ("frames", po::value<std::string>(&r.replay.frames), "with --incremental: write a PNG frame of every update into this folder")
+      ("frame-every", po::value<int>(&r.replay.frame_every)->default_value(1), "with --frames: only every N-th update (and the last)");
   po::options_description segmentation("Segmentation (with --segment, --out-color, --out-rooms or --incremental)");
   add_segment_options(segmentation, segment_defaults);
   described.add(segmentation);
+  return described;
+}
+
+// The command line parsed, and every option and output checked before the log is read.
+WallsRequest parse_request(const std::vector<std::string>& args) {
+  WallsRequest r;
+  const SegmentSettings segment_defaults{wall_map_segment_options(), {}};
   po::positional_options_description positional;
   positional.add("log", 1);
   const auto vm = parse_options(
@@ -117,32 +131,38 @@ int run(const std::vector<std::string>& args) {
       "every scan that changes it goes to the incremental segmenter. Prints the time per update\n"
       "(median, p95, max), with --compare-batch batch segmentation on the same updates, and the\n"
       "stability of the room ids (churn: share of labelled cells whose room changed per update).",
-      described, positional, args);
-  if (!vm) return 0;
-  const SegmentOptions segment_options = read_segment_options(*vm, segment_defaults);
+      walls_options(r, segment_defaults), positional, args);
+  if (!vm) {
+    r.help = true;
+    return r;
+  }
+  r.segment = read_segment_options(*vm, segment_defaults);
   try {
-    options.extraction.lines.method = parse_line_method(method);
+    r.options.extraction.lines.method = parse_line_method(r.method);
   } catch (const Error& e) {
     throw UsageError(std::string("--method: ") + e.what());
   }
-  if (element == "cross") options.extraction.labeling.element = StructuringElement::kCross;
-  else if (element == "square") options.extraction.labeling.element = StructuringElement::kSquare;
-  else throw UsageError("--element must be 'cross' or 'square', got '" + element + "'");
-  const bool incremental = vm->count("incremental") > 0;
-  if (!incremental && (replay_arguments.compare_batch || !replay_arguments.frames.empty()))
+  if (r.element == "cross") r.options.extraction.labeling.element = StructuringElement::kCross;
+  else if (r.element == "square") r.options.extraction.labeling.element = StructuringElement::kSquare;
+  else throw UsageError("--element must be 'cross' or 'square', got '" + r.element + "'");
+  r.incremental = vm->count("incremental") > 0;
+  if (!r.incremental && (r.replay.compare_batch || !r.replay.frames.empty()))
     throw UsageError("--compare-batch and --frames need --incremental");
-  if (incremental && !out_walls.empty()) throw UsageError("--out-walls needs merged walls: not with --incremental");
-  if (replay_arguments.batch_every < 1) throw UsageError("--batch-every must be at least 1");
-  if (replay_arguments.frame_every < 1) throw UsageError("--frame-every must be at least 1");
-  const bool segment_rooms = vm->count("segment") || !out_color.empty() || !out_rooms.empty();
+  if (r.incremental && !r.out_walls.empty()) throw UsageError("--out-walls needs merged walls: not with --incremental");
+  if (r.replay.batch_every < 1) throw UsageError("--batch-every must be at least 1");
+  if (r.replay.frame_every < 1) throw UsageError("--frame-every must be at least 1");
+  r.segment_rooms = vm->count("segment") || !r.out_color.empty() || !r.out_rooms.empty();
   std::vector<std::string> outputs;
-  for (const std::string& path : {out_map, out_walls, out_color, out_rooms})
+  for (const std::string& path : {r.out_map, r.out_walls, r.out_color, r.out_rooms})
     if (!path.empty()) outputs.push_back(path);
-  if (!out_map.empty()) outputs.push_back(map_image_path(out_map));
-  check_outputs(outputs, {log_path});
-  check_usage([&] { validate(options); });  // every stage's options, before the log is read
-  if (!replay_arguments.frames.empty()) prepare_frames_folder(replay_arguments.frames, {log_path});
+  if (!r.out_map.empty()) outputs.push_back(map_image_path(r.out_map));
+  check_outputs(outputs, {r.log_path});
+  check_usage([&] { validate(r.options); });  // every stage's options, before the log is read
+  return r;
+}
 
+// The log's laser scans with their poses; warns about skipped lines, throws Error when none is left.
+std::vector<PosedScan> read_scans(const std::string& log_path, const CarmenReadOptions& read) {
   const CarmenLog log = read_carmen_log(log_path, read);
   if (log.truncated_last_line) std::cerr << "topocut walls: warning: the last line of '" << log_path << "' is incomplete and was skipped\n";
   if (!log.dropped_lines.empty())
@@ -151,26 +171,38 @@ int run(const std::vector<std::string>& args) {
   if (log.scans.empty())
     throw Error("'" + log_path + "' contains no usable FLASER laser scans (" + std::to_string(log.lines) + " lines; found " +
                 skipped_summary(log) + ")");
-  const std::vector<PosedScan> scans = posed_scans(log);
+  std::vector<PosedScan> scans = posed_scans(log);
   std::cout << "log: " << log_path << ": " << scans.size() << " scans, no-return range " << log.max_range << " m"
             << (log.max_range_detected ? " (detected)" : "") << "\n";
-  if (incremental) {
-    replay(scans, options, segment_options, replay_arguments, out_map, out_color, out_rooms);
-    return 0;
-  }
-  const WallsResult result = walls_from_scans(scans, options);
+  return scans;
+}
+
+// The batch pipeline: merged walls, their grid and, when asked, its rooms, printed and written.
+void run_batch(const WallsRequest& r, const std::vector<PosedScan>& scans) {
+  const WallsResult result = walls_from_scans(scans, r.options);
   std::cout << "walls: " << result.segments.size() << " segments merged into " << result.walls.size() << " walls ("
-            << method << ")\n";
+            << r.method << ")\n";
   const OccupancyGrid& grid = result.grid;
   std::cout << "map: " << grid.width() << " x " << grid.height() << " cells at " << grid.resolution << " m, origin ("
             << grid.origin.x << ", " << grid.origin.y << ")\n";
-  if (!out_walls.empty()) write_file_atomically(out_walls, walls_to_json(result, scans.size(), options.map.wall_thickness));
-  if (!out_map.empty()) save_map(out_map, grid);
-  if (segment_rooms) {
-    const Segmentation rooms = segment(grid, segment_options);
-    std::cout << "rooms: " << rooms.rooms.size() << "\n";
-    if (!out_color.empty()) write_overlay(out_color, grid, rooms);
-    if (!out_rooms.empty()) write_rooms_json(out_rooms, rooms);
+  if (!r.out_walls.empty()) write_file_atomically(r.out_walls, walls_to_json(result, scans.size(), r.options.map.wall_thickness));
+  if (!r.out_map.empty()) save_map(r.out_map, grid);
+  if (!r.segment_rooms) return;
+  const Segmentation rooms = segment(grid, r.segment);
+  std::cout << "rooms: " << rooms.rooms.size() << "\n";
+  if (!r.out_color.empty()) write_overlay(r.out_color, grid, rooms);
+  if (!r.out_rooms.empty()) write_rooms_json(r.out_rooms, rooms);
+}
+
+int run(const std::vector<std::string>& args) {
+  const WallsRequest r = parse_request(args);
+  if (r.help) return 0;
+  if (!r.replay.frames.empty()) prepare_frames_folder(r.replay.frames, {r.log_path});
+  const std::vector<PosedScan> scans = read_scans(r.log_path, r.read);
+  if (r.incremental) {
+    replay(scans, r.options, r.segment, r.replay, r.out_map, r.out_color, r.out_rooms);
+  } else {
+    run_batch(r, scans);
   }
   return 0;
 }
