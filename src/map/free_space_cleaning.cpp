@@ -157,15 +157,14 @@ CleanedFreeSpace clean_free_space(const cv::Mat& free, const cv::Mat& grid_cells
   CleanedFreeSpace result;
   result.floor = cv::Mat::zeros(free.size(), CV_8UC1);
   result.removed = cv::Mat::zeros(free.size(), CV_8UC1);
-  const cv::Mat binary = free != 0;
   // Work in the box around the free space (SLAM maps are mostly unknown), with room for the closing.
-  const cv::Rect box = cv::boundingRect(binary);
+  const cv::Rect box = cv::boundingRect(free);  // of the nonzero cells
   if (box.empty()) return result;
   const int margin = cells(options.inside_closing, resolution) + 2;
   const cv::Rect window = cv::Rect(box.x - margin, box.y - margin, box.width + 2 * margin, box.height + 2 * margin) &
                           cv::Rect(0, 0, free.cols, free.rows);
   cv::Mat floor, removed;
-  clean_window(binary(window), grid_cells(window), resolution, options, floor, removed);
+  clean_window(free(window) != 0, grid_cells(window), resolution, options, floor, removed);
   floor.copyTo(result.floor(window));
   removed.copyTo(result.removed(window));
   result.removed_cells = cv::countNonZero(removed >= kCellRemovedInside);

@@ -11,26 +11,33 @@ namespace {
 
 // For every room id, the labelled cell (top-down grid) farthest from any cell of another label: the
 // distance transform of the cells whose four neighbours all share their label. Rooms without such a
-// cell (one cell thin) take their first cell in raster order.
+// cell (one cell thin) take their first cell in raster order. Works in the box around the labelled
+// cells grown by one cell: every cell outside it is a zero of the transform, and the nearest zero
+// of a cell inside is never farther than the grown box's border, so the (exact) distances and the
+// raster order of the labelled cells are those of the whole map.
 std::vector<cv::Point> deepest_cells(const cv::Mat& labels, int max_id) {
-  cv::Mat interior(labels.size(), CV_8UC1, cv::Scalar(0));
-  for (int r = 0; r < labels.rows; ++r)
-    for (int c = 0; c < labels.cols; ++c) {
+  std::vector<cv::Point> best(static_cast<std::size_t>(max_id) + 1, cv::Point(-1, -1));
+  const cv::Rect labelled = cv::boundingRect(labels > 0);
+  if (labelled.empty()) return best;
+  const cv::Rect box = cv::Rect(labelled.x - 1, labelled.y - 1, labelled.width + 2, labelled.height + 2) &
+                       cv::Rect(0, 0, labels.cols, labels.rows);
+  cv::Mat interior(box.size(), CV_8UC1, cv::Scalar(0));
+  for (int r = box.y; r < box.y + box.height; ++r)
+    for (int c = box.x; c < box.x + box.width; ++c) {
       const int id = labels.at<int>(r, c);
       const bool same = id > 0 && r > 0 && c > 0 && r + 1 < labels.rows && c + 1 < labels.cols &&
                         labels.at<int>(r - 1, c) == id && labels.at<int>(r + 1, c) == id && labels.at<int>(r, c - 1) == id &&
                         labels.at<int>(r, c + 1) == id;
-      interior.at<unsigned char>(r, c) = same ? 255 : 0;
+      interior.at<unsigned char>(r - box.y, c - box.x) = same ? 255 : 0;
     }
   cv::Mat depth;
   cv::distanceTransform(interior, depth, cv::DIST_L2, cv::DIST_MASK_PRECISE);
-  std::vector<cv::Point> best(static_cast<std::size_t>(max_id) + 1, cv::Point(-1, -1));
   std::vector<float> best_depth(best.size(), -1.0f);
-  for (int r = 0; r < labels.rows; ++r)
-    for (int c = 0; c < labels.cols; ++c) {
+  for (int r = box.y; r < box.y + box.height; ++r)
+    for (int c = box.x; c < box.x + box.width; ++c) {
       const int id = labels.at<int>(r, c);
       if (id <= 0 || id > max_id) continue;
-      const float d = depth.at<float>(r, c);
+      const float d = depth.at<float>(r - box.y, c - box.x);
       if (d > best_depth[static_cast<std::size_t>(id)]) {
         best_depth[static_cast<std::size_t>(id)] = d;
         best[static_cast<std::size_t>(id)] = {c, r};

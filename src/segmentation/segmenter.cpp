@@ -2,6 +2,7 @@
 
 #include "segmentation/passage_kind.h"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -28,9 +29,22 @@ void validate(const SegmentOptions& options) {
   validate(options.cleaning);
 }
 
+namespace {
+
+// Whether any cell of the grid is free; stops at the first one instead of comparing the whole map.
+bool has_free_cell(const cv::Mat& cells) {
+  for (int r = 0; r < cells.rows; ++r) {
+    const unsigned char* row = cells.ptr<unsigned char>(r);
+    if (std::find(row, row + cells.cols, kFree) != row + cells.cols) return true;
+  }
+  return false;
+}
+
+}  // namespace
+
 cv::Mat segmentation_free_space(const OccupancyGrid& grid, const SegmentOptions& options) {
   validate(grid);
-  if (cv::countNonZero(grid.cells == kFree) == 0) throw Error("the map has no free space (no cell is free)");
+  if (!has_free_cell(grid.cells)) throw Error("the map has no free space (no cell is free)");
   cv::Mat free = free_space_mask(grid, options.binarize);
   if (cv::countNonZero(free) == 0)
     throw Error("no free space is left after inflating obstacles by the robot radius and filtering");
