@@ -95,9 +95,9 @@ std::string format_incremental_summary(const std::vector<IncrementalImageResult>
     out += format("\nSpeed-up on the same updates: %.1fx (medians), %.1fx (total time).\n", bat.median / pair.median,
                   bat.total / pair.total);
   }
-  out += "\n" + std::to_string(updates) + " updates, " + std::to_string(batch_updates) +
-         " of them decomposed everything again (first update or wholesale change); peak segmenter state " +
-         format("%.1f MB.\n", static_cast<double>(peak) / (1024.0 * 1024.0));
+  out += format("\n%d updates, %d of them decomposed everything again (first update or wholesale change); "
+                "peak segmenter state %.1f MB.\n",
+                updates, batch_updates, static_cast<double>(peak) / (1024.0 * 1024.0));
   if (failed > 0) out += std::to_string(failed) + " images failed.\n";
   return out;
 }
