@@ -51,6 +51,9 @@ cv::Mat obstacle_specks(const cv::Mat& free, int max_side) {
 // The cells of solid covered by discs of radius (cells) that fit into it (its opening; the map's
 // edge counts as an obstacle), grown by margin cells along solid (the corners a disc cannot reach).
 cv::Mat thick_part(const cv::Mat& solid, double radius, int margin) {
+  // A disc as wide as the map reaches past its edge from every cell, so nothing fits: the answer
+  // without an erosion whose cost grows with the disc's area (a map at 0.1 mm per cell).
+  if (std::lround(radius) >= std::min(solid.rows, solid.cols)) return cv::Mat::zeros(solid.size(), CV_8UC1);
   const cv::Mat element = disc(radius);
   cv::Mat thick;
   cv::erode(solid, thick, element, cv::Point(-1, -1), 1, cv::BORDER_CONSTANT, cv::Scalar(0));
@@ -101,6 +104,10 @@ cv::Mat rays_of(const cv::Mat& thin, const cv::Mat& cells) {
 cv::Mat square_closing(const cv::Mat& mask, double side) {
   if (side <= 0.0) return cv::Mat::zeros(mask.size(), CV_8UC1);
   const int n = std::max(1, static_cast<int>(std::lround(side / 2.0)));
+  // A square wider than the map covers all of it from every cell: full if any cell is set, else empty.
+  if (n >= std::max(mask.rows, mask.cols)) {
+    return cv::countNonZero(mask) > 0 ? cv::Mat(mask.size(), CV_8UC1, cv::Scalar(255)) : cv::Mat::zeros(mask.size(), CV_8UC1);
+  }
   const cv::Mat element = cv::getStructuringElement(cv::MORPH_RECT, {2 * n + 1, 2 * n + 1});
   cv::Mat closed;
   cv::dilate(mask, closed, element, cv::Point(-1, -1), 1, cv::BORDER_CONSTANT, cv::Scalar(0));

@@ -162,6 +162,17 @@ TEST(HostileInputs, ResolutionsOutsideTheRangeAreRefusedWithTheRange) {
   }
 }
 
+// At the finest resolution allowed the cleaning's 0.6 m disc and its closing square are thousands
+// of cells wide, wider than the map: they must be answered without an erosion of that size (it ran
+// for minutes). The bundled 400 x 300 floor plan at 0.1 mm per cell is one room 4 cm wide.
+TEST(HostileInputs, FinestResolutionWithCleaningEndsInOneRoom) {
+  const TempDir dir;
+  const CliResult r = run_cli(dir, "segment", {bundled("floorplan.png"), "--resolution", "0.0001", "--out-json", dir.file("r.json")});
+  ASSERT_EQ(r.code, 0) << r.err;
+  const nlohmann::json rooms = nlohmann::json::parse(topocut::testing::file_text(dir.file("r.json")))["rooms"];
+  EXPECT_EQ(rooms.size(), 1u);
+}
+
 TEST(HostileInputs, DecomposeFarFromUnitScaleIsRefusedNotEmptied) {
   const TempDir dir;
   for (double scale : {1e160, 1e307, 1e-200}) {  // 1e307: the pentagon reaches 1e308
