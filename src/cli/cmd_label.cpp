@@ -5,6 +5,7 @@
 #include "cli/library_options.h"
 #include "topocut/core/error.h"
 #include "topocut/labeling/labeling_json.h"
+#include "topocut/labeling/segment_centres.h"
 #include "topocut/scan/scan_csv.h"
 
 namespace topocut::cli {

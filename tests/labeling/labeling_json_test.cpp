@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "topocut/labeling/labeling_json.h"
+#include "topocut/labeling/segment_centres.h"
 
 namespace topocut {
 namespace {
