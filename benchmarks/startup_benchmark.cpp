@@ -2,8 +2,8 @@
 // and peak memory (wait4's rusage), for `topocut --version` and for `topocut segment` on the bundled
 // floor plan; for the latter also the ratio of the whole process to the time topocut itself reports
 // (loading + segmentation), and an empty process (/bin/true) as the machine's floor under the same
-// load, and an empty program linked with OpenCV core + imgproc (benchmarks/startup/opencv_floor.cpp),
-// the floor of any binary that uses cv::Mat. With --base, an older binary is measured in the same run, alternating
+// load, and empty programs linked with OpenCV core + imgproc and with core alone
+// (benchmarks/startup/opencv_floor.cpp), the floor of any binary that uses cv::Mat. With --base, an older binary is measured in the same run, alternating
 // run by run so that both see the same machine load.
 //   build/startup_benchmark [--runs N] [--base OLD_TOPOCUT] [--topocut NEW_TOPOCUT]
 #include <sys/resource.h>
@@ -172,6 +172,8 @@ int main(int argc, char** argv) {
   cases.push_back({"/bin/true", "empty process", "/bin/true", {}, {}});
   // The floor of any binary with cv::Mat: an empty program linked with OpenCV core + imgproc.
   cases.push_back({TOPOCUT_OPENCV_FLOOR, "OpenCV floor", "empty, core + imgproc", {}, {}});
+  // And core alone: what holding a cv::Mat costs before any image function is linked.
+  cases.push_back({TOPOCUT_OPENCV_CORE_FLOOR, "OpenCV floor", "empty, core only", {}, {}});
   for (Case& c : cases) run_once(c.binary, c.args);  // warm the page cache
   for (int k = 0; k < runs; ++k)
     for (Case& c : cases) c.runs.push_back(run_once(c.binary, c.args));
