@@ -10,10 +10,10 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-#include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
 #include "cli/cli_runner.h"
+#include "io/test_images.h"
 
 namespace {
 
@@ -44,9 +44,9 @@ class EvaluateCli : public ::testing::Test {
       return image;
     };
     for (const auto& [name, map] : {std::pair<std::string, cv::Mat>{"closed", closed}, {"open", open}}) {
-      EXPECT_TRUE(cv::imwrite((data / (name + ".png")).string(), map));
-      EXPECT_TRUE(cv::imwrite((data / (name + "_furnitures.png")).string(), furnish(map.clone())));
-      EXPECT_TRUE(cv::imwrite((data / (name + "_gt_segmentation.png")).string(), closed));
+      EXPECT_TRUE(topocut::testing::write_test_image((data / (name + ".png")).string(), map));
+      EXPECT_TRUE(topocut::testing::write_test_image((data / (name + "_furnitures.png")).string(), furnish(map.clone())));
+      EXPECT_TRUE(topocut::testing::write_test_image((data / (name + "_gt_segmentation.png")).string(), closed));
     }
     return data;
   }
@@ -182,8 +182,8 @@ TEST_F(EvaluateCli, MapsWithoutGroundTruthGiveTheirDefects) {
   cv::Mat map(80, 120, CV_8UC1, cv::Scalar(205));  // map_server palette: 205 unknown
   cv::rectangle(map, cv::Rect(9, 9, 102, 62), cv::Scalar(0), cv::FILLED);
   map(cv::Rect(10, 10, 100, 60)).setTo(254);
-  ASSERT_TRUE(cv::imwrite((maps / "home.pgm").string(), map));
-  ASSERT_TRUE(cv::imwrite((maps / "lab.png").string(), map));
+  ASSERT_TRUE(topocut::testing::write_test_image((maps / "home.pgm").string(), map));
+  ASSERT_TRUE(topocut::testing::write_test_image((maps / "lab.png").string(), map));
   std::ofstream(maps / "home.yaml") << "image: home.pgm\nresolution: 0.05\norigin: [0, 0, 0]\n";
   const fs::path csv = dir_ / "d.csv";
   const CliResult run = evaluate("--maps '" + maps.string() + "' --floor-repetitions 1 --csv '" + csv.string() + "'");

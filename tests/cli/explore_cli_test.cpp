@@ -12,9 +12,9 @@
 #include <unistd.h>
 
 #include <opencv2/core.hpp>
-#include <opencv2/imgcodecs.hpp>
 
 #include "cli/cli_runner.h"
+#include "io/test_images.h"
 
 namespace {
 
@@ -48,8 +48,8 @@ class ExploreCli : public ::testing::Test {
       x += width + 4;
     }
     const fs::path path = dir_ / (name + ".png");
-    cv::imwrite(path.string(), map);
-    if (with_truth) cv::imwrite((dir_ / (name + "_gt_segmentation.png")).string(), truth);
+    topocut::testing::write_test_image(path.string(), map);
+    if (with_truth) topocut::testing::write_test_image((dir_ / (name + "_gt_segmentation.png")).string(), truth);
     return path;
   }
 
@@ -129,7 +129,7 @@ TEST_F(ExploreCli, FramesAreWrittenForEveryUpdate) {
   }
   EXPECT_EQ(count, updates);
   EXPECT_NE(o.out.find("frames: " + std::to_string(updates) + " written"), std::string::npos) << o.out;
-  const cv::Mat first = cv::imread((frames / "frame_00001.png").string(), cv::IMREAD_COLOR);
+  const cv::Mat first = topocut::testing::read_test_image((frames / "frame_00001.png").string(), topocut::testing::Pixels::kColour);
   ASSERT_FALSE(first.empty());
   EXPECT_EQ(first.cols % 240, 0);  // an integer scale of the map
   EXPECT_EQ(first.rows * 240, first.cols * 140);

@@ -17,10 +17,10 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 #include <opencv2/core.hpp>
-#include <opencv2/imgcodecs.hpp>
 
 #include "cli/cli_runner.h"
 #include "io/temp_dir.h"
+#include "io/test_images.h"
 
 namespace {
 
@@ -67,7 +67,7 @@ cv::Mat expect_clean(const Outcome& o, const cv::Mat& map) {
   EXPECT_FALSE(o.signalled);
   EXPECT_EQ(o.code, 0) << o.err;
   EXPECT_TRUE(o.err.empty()) << o.err;
-  cv::Mat labels = cv::imread(o.labels, cv::IMREAD_UNCHANGED);
+  cv::Mat labels = topocut::testing::read_test_image(o.labels);
   if (labels.empty()) {
     ADD_FAILURE() << "no label image";
     return labels;
@@ -97,7 +97,7 @@ cv::Mat expect_clean(const Outcome& o, const cv::Mat& map) {
   if (!any_free) {
     EXPECT_TRUE(ids.empty());
   }
-  EXPECT_FALSE(cv::imread(o.color, cv::IMREAD_UNCHANGED).empty());
+  EXPECT_FALSE(topocut::testing::read_test_image(o.color).empty());
   const std::string svg = file_text(o.svg);
   EXPECT_NE(svg.find("<svg"), std::string::npos);
   EXPECT_NE(svg.find("</svg>"), std::string::npos);
@@ -116,7 +116,7 @@ void expect_every_free_cell_labelled(const cv::Mat& labels, const cv::Mat& map) 
 
 std::string write_map(const TempDir& dir, const std::string& name, const cv::Mat& map) {
   const std::string path = dir.file(name);
-  EXPECT_TRUE(cv::imwrite(path, map));
+  EXPECT_TRUE(topocut::testing::write_test_image(path, map));
   return path;
 }
 
@@ -220,7 +220,7 @@ TEST(ExtremeMaps, OneRowAndOneColumnImages) {
 TEST(ExtremeMaps, NonSquareResolutionIsAClearError) {
   for (const std::string resolution : {"[0.05, 0.1]", "0.05 0.1", "[0.05]", "{x: 0.05, y: 0.1}"}) {
     TempDir dir;
-    cv::imwrite(dir.file("map.png"), cv::Mat(10, 10, CV_8UC1, cv::Scalar(255)));
+    topocut::testing::write_test_image(dir.file("map.png"), cv::Mat(10, 10, CV_8UC1, cv::Scalar(255)));
     const std::string yaml =
         dir.write("map.yaml", "image: map.png\nresolution: " + resolution + "\norigin: [0.0, 0.0, 0.0]\n");
     SCOPED_TRACE(resolution);

@@ -9,10 +9,10 @@
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
-#include <opencv2/imgcodecs.hpp>
 #include <zlib.h>
 
 #include "cli/cli_runner.h"
+#include "io/test_images.h"
 
 namespace {
 
@@ -27,7 +27,7 @@ std::string bundled(const std::string& name) { return std::string(TOPOCUT_SOURCE
 std::string small_map(const TempDir& dir) {
   cv::Mat map(40, 60, CV_8UC1, cv::Scalar(0));
   map(cv::Rect(2, 2, 56, 36)).setTo(255);
-  cv::imwrite(dir.file("map.png"), map);
+  topocut::testing::write_test_image(dir.file("map.png"), map);
   return dir.file("map.png");
 }
 

@@ -8,9 +8,9 @@
 
 #include <gtest/gtest.h>
 #include <opencv2/core.hpp>
-#include <opencv2/imgcodecs.hpp>
 
 #include "cli/cli_runner.h"
+#include "io/test_images.h"
 
 namespace topocut::testing {
 namespace {
@@ -80,7 +80,7 @@ TEST(OutputsCli, AFifoIsRefusedAndADeviceWrittenWithoutReplacingIt) {
 // The JPEG encoder cannot take a 100000-pixel-wide image: the labels written before it must not stay.
 TEST(OutputsCli, AFailedOutputLeavesNoEarlierOutputBehind) {
   TempDir dir;
-  cv::imwrite(dir.file("long.png"), cv::Mat(1, 100000, CV_8UC1, cv::Scalar(255)));
+  topocut::testing::write_test_image(dir.file("long.png"), cv::Mat(1, 100000, CV_8UC1, cv::Scalar(255)));
   const CliResult r = run_cli(dir, "segment", {dir.file("long.png"), "--out-labels", dir.file("l.png"), "--out-color",
                                         dir.file("w.jpg")});
   EXPECT_EQ(r.code, 1) << r.err;

@@ -12,11 +12,11 @@
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
-#include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
 #include "cli/cli_runner.h"
 #include "io/temp_dir.h"
+#include "io/test_images.h"
 
 namespace {
 
@@ -53,7 +53,7 @@ TEST(SegmentCli, FloorplanWritesEveryOutput) {
   EXPECT_TRUE(r.err.empty()) << r.err;
   EXPECT_NE(r.out.find("400 x 300 cells at 0.05 m"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("wrote labels:  " + dir.file("labels.png")), std::string::npos) << r.out;
-  const cv::Mat labels = cv::imread(dir.file("labels.png"), cv::IMREAD_UNCHANGED);
+  const cv::Mat labels = topocut::testing::read_test_image(dir.file("labels.png"));
   ASSERT_EQ(labels.type(), CV_16UC1);
   const nlohmann::json rooms = nlohmann::json::parse(file_text(dir.file("rooms.json")));
   double low = 0, high = 0;
@@ -61,9 +61,9 @@ TEST(SegmentCli, FloorplanWritesEveryOutput) {
   EXPECT_EQ(static_cast<std::size_t>(high), rooms["rooms"].size());
   EXPECT_NE(r.out.find(std::to_string(rooms["rooms"].size()) + " room"), std::string::npos) << r.out;
   // Every free cell of the map is in a room, and only those.
-  const cv::Mat map = cv::imread(bundled("floorplan.png"), cv::IMREAD_GRAYSCALE);
+  const cv::Mat map = topocut::testing::read_test_image(bundled("floorplan.png"), topocut::testing::Pixels::kGrey);
   EXPECT_EQ(cv::countNonZero((labels > 0) != (map == 254)), 0);
-  const cv::Mat overlay = cv::imread(dir.file("rooms.png"), cv::IMREAD_COLOR);
+  const cv::Mat overlay = topocut::testing::read_test_image(dir.file("rooms.png"), topocut::testing::Pixels::kColour);
   EXPECT_EQ(overlay.size(), cv::Size(800, 600));  // scaled 2x so the ids stay legible
   const std::string svg = file_text(dir.file("rooms.svg"));
   EXPECT_NE(svg.find("</svg>"), std::string::npos);
@@ -130,14 +130,14 @@ TEST(SegmentCli, BadMapFiles) {
   expect_error(run(dir, {dir.file("notes.png")}), "as an image");
   std::ofstream(dir.file("empty.png")).close();
   expect_error(run(dir, {dir.file("empty.png")}), "empty");
-  ASSERT_TRUE(cv::imwrite(dir.file("walls.png"), cv::Mat(20, 20, CV_8UC1, cv::Scalar(0))));
+  ASSERT_TRUE(topocut::testing::write_test_image(dir.file("walls.png"), cv::Mat(20, 20, CV_8UC1, cv::Scalar(0))));
   expect_error(run(dir, {dir.file("walls.png")}), "no free space");
   expect_error(run(dir, {}), "map", 2);
 }
 
 TEST(SegmentCli, BadYamlFiles) {
   TempDir dir;
-  ASSERT_TRUE(cv::imwrite(dir.file("m.png"), cv::Mat(20, 20, CV_8UC1, cv::Scalar(255))));
+  ASSERT_TRUE(topocut::testing::write_test_image(dir.file("m.png"), cv::Mat(20, 20, CV_8UC1, cv::Scalar(255))));
   auto yaml = [&](const std::string& name, const std::string& text) {
     std::ofstream(dir.file(name)) << text;
     return dir.file(name);
@@ -193,24 +193,24 @@ TEST(SegmentCli, OutCleanShowsTheMapAsTheSegmenterSawIt) {
   map(cv::Rect(90, 78, 20, 2)).setTo(255);
   for (int k = -2; k <= 2; ++k)
     for (int t = 1; t <= 60; ++t) map.at<unsigned char>(78 - t, 100 + k * t / 4) = 255;
-  ASSERT_TRUE(cv::imwrite(dir.file("slam.png"), map));
+  ASSERT_TRUE(topocut::testing::write_test_image(dir.file("slam.png"), map));
   const Result r = run(dir, {dir.file("slam.png"), "--out-clean", dir.file("clean.png"), "--out-labels", dir.file("l.png")});
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.out.find("map cells: free 255, unknown 230, occupied 127 (detected)"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("wrote cleaned map: " + dir.file("clean.png")), std::string::npos) << r.out;
-  const cv::Mat clean = cv::imread(dir.file("clean.png"), cv::IMREAD_COLOR);
+  const cv::Mat clean = topocut::testing::read_test_image(dir.file("clean.png"), topocut::testing::Pixels::kColour);
   ASSERT_EQ(clean.size(), map.size());
   EXPECT_EQ(clean.at<cv::Vec3b>(100, 100), cv::Vec3b(255, 255, 255));  // floor
   EXPECT_EQ(clean.at<cv::Vec3b>(80, 48), cv::Vec3b(0, 0, 0));          // wall
   EXPECT_EQ(clean.at<cv::Vec3b>(5, 5), cv::Vec3b(160, 160, 160));      // unknown
   EXPECT_EQ(clean.at<cv::Vec3b>(78 - 50, 100), cv::Vec3b(40, 40, 220)); // a ray, outside
-  const cv::Mat labels = cv::imread(dir.file("l.png"), cv::IMREAD_UNCHANGED);
+  const cv::Mat labels = topocut::testing::read_test_image(dir.file("l.png"));
   EXPECT_EQ(labels.at<unsigned short>(78 - 50, 100), 0);
   // Without the cleaning the rays are room space, and --out-clean draws the grid alone.
   const Result raw = run(dir, {dir.file("slam.png"), "--no-clean", "--out-clean", dir.file("raw.png"), "--out-labels", dir.file("r.png")});
   ASSERT_EQ(raw.code, 0) << raw.err;
-  EXPECT_NE(cv::imread(dir.file("r.png"), cv::IMREAD_UNCHANGED).at<unsigned short>(78 - 50, 100), 0);
-  EXPECT_EQ(cv::imread(dir.file("raw.png"), cv::IMREAD_COLOR).at<cv::Vec3b>(78 - 50, 100), cv::Vec3b(255, 255, 255));
+  EXPECT_NE(topocut::testing::read_test_image(dir.file("r.png")).at<unsigned short>(78 - 50, 100), 0);
+  EXPECT_EQ(topocut::testing::read_test_image(dir.file("raw.png"), topocut::testing::Pixels::kColour).at<cv::Vec3b>(78 - 50, 100), cv::Vec3b(255, 255, 255));
   // A non-PNG cleaned map is refused before any work.
   const Result bad = run(dir, {dir.file("slam.png"), "--out-clean", dir.file("clean.jpg")});
   EXPECT_NE(bad.code, 0);

@@ -8,11 +8,11 @@
 #include <string>
 #include <unistd.h>
 
-#include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
 #include "topocut/core/error.h"
 #include "topocut/evaluation/dataset_report.h"
+#include "io/test_images.h"
 
 namespace topocut {
 namespace {
@@ -30,7 +30,7 @@ cv::Mat blank() { return cv::Mat(40, 60, CV_8UC1, cv::Scalar(0)); }
 // A stand-in for the trivial segmenter that needs nothing but OpenCV: free pixels (> 250) split
 // into 8-connected components, each one room.
 Segmentation components_segmenter(const std::string& path) {
-  const cv::Mat image = fs::exists(path) ? cv::imread(path, cv::IMREAD_GRAYSCALE) : cv::Mat();
+  const cv::Mat image = fs::exists(path) ? topocut::testing::read_test_image(path, topocut::testing::Pixels::kGrey) : cv::Mat();
   if (image.empty()) throw Error("cannot read '" + path + "'");
   Segmentation segmentation;
   cv::connectedComponents(image > 250, segmentation.labels, 8, CV_32S);
@@ -81,7 +81,7 @@ class SyntheticDataset : public ::testing::Test {
   void TearDown() override { fs::remove_all(dir_); }
 
   void write(const std::string& name, const cv::Mat& image) {
-    ASSERT_TRUE(cv::imwrite((dir_ / name).string(), image)) << name;
+    ASSERT_TRUE(topocut::testing::write_test_image((dir_ / name).string(), image)) << name;
   }
   std::string folder() const { return dir_.string(); }
 

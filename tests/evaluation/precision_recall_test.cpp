@@ -6,9 +6,8 @@
 #include <string>
 #include <unistd.h>
 
-#include <opencv2/imgcodecs.hpp>
-
 #include "topocut/core/error.h"
+#include "io/test_images.h"
 
 namespace topocut {
 namespace {
@@ -229,7 +228,7 @@ TEST_F(GroundTruthFile, LoadsColourAsGreyAndTransparentAsObstacle) {
   bgra.at<cv::Vec4b>(0, 0) = cv::Vec4b(254, 254, 254, 255);
   bgra.at<cv::Vec4b>(1, 1) = cv::Vec4b(255, 255, 255, 0);  // transparent white
   bgra.at<cv::Vec4b>(2, 2) = cv::Vec4b(0, 0, 0, 255);
-  ASSERT_TRUE(cv::imwrite(path("rgba.png"), bgra));
+  ASSERT_TRUE(topocut::testing::write_test_image(path("rgba.png"), bgra));
   const cv::Mat grey = load_ground_truth(path("rgba.png"));
   ASSERT_EQ(grey.type(), CV_8UC1);
   EXPECT_EQ(grey.at<unsigned char>(0, 0), 254);
@@ -238,11 +237,11 @@ TEST_F(GroundTruthFile, LoadsColourAsGreyAndTransparentAsObstacle) {
   EXPECT_EQ(grey.at<unsigned char>(3, 3), 255);
 
   cv::Mat bgr(4, 4, CV_8UC3, cv::Scalar(251, 251, 251));
-  ASSERT_TRUE(cv::imwrite(path("rgb.png"), bgr));
+  ASSERT_TRUE(topocut::testing::write_test_image(path("rgb.png"), bgr));
   EXPECT_EQ(load_ground_truth(path("rgb.png")).at<unsigned char>(2, 3), 251);
 
   cv::Mat sixteen(4, 4, CV_16UC1, cv::Scalar(65535));
-  ASSERT_TRUE(cv::imwrite(path("grey16.png"), sixteen));
+  ASSERT_TRUE(topocut::testing::write_test_image(path("grey16.png"), sixteen));
   EXPECT_EQ(load_ground_truth(path("grey16.png")).at<unsigned char>(0, 0), 255);
 }
 

@@ -3,10 +3,10 @@
 #include <fstream>
 
 #include <gtest/gtest.h>
-#include <opencv2/imgcodecs.hpp>
 
 #include "topocut/core/error.h"
 #include "topocut/evaluation/room_defects.h"
+#include "io/test_images.h"
 
 namespace topocut {
 namespace {
@@ -52,9 +52,9 @@ TEST(RoomDefects, MapFolderListsYamlsAndUnnamedImages) {
   fs::create_directories(dir);
   cv::Mat map(60, 80, CV_8UC1, cv::Scalar(0));
   map(cv::Rect(5, 5, 70, 50)).setTo(255);
-  ASSERT_TRUE(cv::imwrite((dir / "a.pgm").string(), map));
-  ASSERT_TRUE(cv::imwrite((dir / "b.png").string(), map));
-  ASSERT_TRUE(cv::imwrite((dir / "b_gt_segmentation.png").string(), map));
+  ASSERT_TRUE(topocut::testing::write_test_image((dir / "a.pgm").string(), map));
+  ASSERT_TRUE(topocut::testing::write_test_image((dir / "b.png").string(), map));
+  ASSERT_TRUE(topocut::testing::write_test_image((dir / "b_gt_segmentation.png").string(), map));
   std::ofstream(dir / "a.yaml") << "image: a.pgm\nresolution: 0.05\norigin: [0, 0, 0]\n";
   std::ofstream(dir / "notes.txt") << "not a map\n";
   const std::vector<MapFile> maps = discover_map_files(dir.string());
