@@ -2,13 +2,13 @@
 
 #include <algorithm>
 #include <chrono>
-#include <cstdio>
 #include <exception>
 #include <filesystem>
 #include <new>
 #include <optional>
 
 #include "topocut/core/error.h"
+#include "topocut/core/format.h"
 
 namespace topocut {
 
@@ -22,10 +22,8 @@ std::string status_line(std::size_t index, std::size_t total, const ImageResult&
   std::string line = "[";  // appended: GCC 12 warns falsely (-Wrestrict) on "literal" + a temporary string
   line += std::to_string(index) + "/" + std::to_string(total) + "] " + result.map + " " + to_string(result.variant) + ": ";
   if (!result.ok) return line + "FAILED: " + result.error;
-  char numbers[160];
-  std::snprintf(numbers, sizeof numbers, "rooms %d (ground truth %d), recall %.3f, precision %.3f, %.0f ms",
-                result.rooms, result.gt_rooms, result.recall, result.precision, result.time_ms);
-  return line + numbers;
+  return line + format("rooms %d (ground truth %d), recall %.3f, precision %.3f, %.0f ms", result.rooms,
+                       result.gt_rooms, result.recall, result.precision, result.time_ms);
 }
 
 }  // namespace

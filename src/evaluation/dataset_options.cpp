@@ -3,6 +3,7 @@
 #include <cstdio>
 
 #include "topocut/core/error.h"
+#include "topocut/core/format.h"
 #include "topocut/core/option_table.h"
 #include "topocut/io/map_load_flags.h"
 
@@ -11,11 +12,7 @@ namespace topocut {
 namespace {
 
 // As method names have always printed numbers (%g).
-std::string number(double value) {
-  char buffer[64];
-  std::snprintf(buffer, sizeof buffer, "%g", value);
-  return buffer;
-}
+std::string number(double value) { return format("%g", value); }
 
 // How an option is given on a command line.
 enum class Takes { kNothing, kValue, kValues, kUnknown };

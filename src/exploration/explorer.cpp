@@ -9,6 +9,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "topocut/core/error.h"
+#include "topocut/core/format.h"
 #include "topocut/scan/grid_ray.h"
 #include "topocut/scan/laser_simulator.h"
 
@@ -17,11 +18,7 @@ namespace topocut {
 namespace {
 
 
-std::string format_point(const Point2& p) {
-  char buffer[96];
-  std::snprintf(buffer, sizeof buffer, "(%.3f, %.3f)", p.x, p.y);
-  return buffer;
-}
+std::string format_point(const Point2& p) { return format("(%.3f, %.3f)", p.x, p.y); }
 
 // Largest 4-connected component of a mask (CV_8UC1); ties go to the component found first.
 cv::Mat largest_component(const cv::Mat& mask) {

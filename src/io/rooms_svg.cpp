@@ -1,11 +1,11 @@
 #include "topocut/io/rooms_svg.h"
 
 #include <algorithm>
-#include <cstdio>
 #include <vector>
 
 
 #include "topocut/core/error.h"
+#include "topocut/core/format.h"
 #include "topocut/io/atomic_file.h"
 #include "topocut/io/image_codec.h"
 #include "topocut/io/overlay.h"
@@ -15,9 +15,7 @@ namespace topocut {
 namespace {
 
 std::string fmt(double v) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.4f", v);
-  std::string s(buffer);
+  std::string s = fixed(v, 4);
   // Trim trailing zeros: shorter files, same values.
   while (!s.empty() && s.back() == '0') s.pop_back();
   if (!s.empty() && s.back() == '.') s.pop_back();
@@ -25,11 +23,7 @@ std::string fmt(double v) {
   return s;
 }
 
-std::string hex(const cv::Vec3b& bgr) {
-  char buffer[8];
-  std::snprintf(buffer, sizeof buffer, "#%02x%02x%02x", bgr[2], bgr[1], bgr[0]);
-  return buffer;
-}
+std::string hex(const cv::Vec3b& bgr) { return format("#%02x%02x%02x", bgr[2], bgr[1], bgr[0]); }
 
 std::string base64(const std::string& bytes) {
   const auto* b = reinterpret_cast<const unsigned char*>(bytes.data());
