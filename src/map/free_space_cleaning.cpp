@@ -134,24 +134,39 @@ cv::Mat thick_part(const cv::Mat& solid, double radius, int margin) {
   return thick;
 }
 
+// thick_part() computed within the box of solid's cells, which gives the same cells: outside the
+// box solid is empty, like the erosion's border, and every step ends by keeping solid cells only.
+// Only the shortcut for discs wider than the map looks at the size, and a disc wider than the box
+// fits nowhere either.
+cv::Mat thick_part_in_box(const cv::Mat& solid, double radius, int margin) {
+  cv::Mat thick = cv::Mat::zeros(solid.size(), CV_8UC1);
+  const cv::Rect box = cv::boundingRect(solid);
+  if (!box.empty()) thick_part(solid(box), radius, margin).copyTo(thick(box));
+  return thick;
+}
+
 // The parts of thin (8-connected) that are rays: more of the non-free cells next to them are
 // unknown than occupied. A laser ray ends in the unknown; a narrow corridor, a closet or the gap
 // between a cupboard and a wall is walled in.
 cv::Mat rays_of(const cv::Mat& thin, const cv::Mat& cells) {
+  // Labelled within the thin cells' box; the cells around it are read from the whole window.
+  cv::Mat rays = cv::Mat::zeros(thin.size(), CV_8UC1);
+  const cv::Rect box = cv::boundingRect(thin);
+  if (box.empty()) return rays;
   cv::Mat labels;
-  const int n = cv::connectedComponents(thin, labels, 8, CV_32S);
+  const int n = cv::connectedComponents(thin(box), labels, 8, CV_32S);
   std::vector<long long> unknown(static_cast<std::size_t>(n), 0), occupied(static_cast<std::size_t>(n), 0);
   const int h = thin.rows, w = thin.cols;
   auto count = [&](std::size_t l, unsigned char state) {
     unknown[l] += state == kUnknown;
     occupied[l] += state == kOccupied;
   };
-  for (int r = 0; r < h; ++r) {
-    const int* label = labels.ptr<int>(r);
+  for (int r = box.y; r < box.y + box.height; ++r) {
+    const int* label = labels.ptr<int>(r - box.y) - box.x;
     const unsigned char* row = cells.ptr<unsigned char>(r);
     const unsigned char* above = r > 0 ? cells.ptr<unsigned char>(r - 1) : nullptr;
     const unsigned char* below = r + 1 < h ? cells.ptr<unsigned char>(r + 1) : nullptr;
-    for (int c = 0; c < w; ++c) {
+    for (int c = box.x; c < box.x + box.width; ++c) {
       if (label[c] == 0) continue;
       const std::size_t l = static_cast<std::size_t>(label[c]);
       // Beyond the window counts as unknown.
@@ -163,7 +178,8 @@ cv::Mat rays_of(const cv::Mat& thin, const cv::Mat& cells) {
   }
   std::vector<unsigned char> is_ray(static_cast<std::size_t>(n), 0);
   for (std::size_t i = 1; i < is_ray.size(); ++i) is_ray[i] = unknown[i] > occupied[i] ? 255 : 0;
-  return mask_of_labels(labels, is_ray);
+  mask_of_labels(labels, is_ray).copyTo(rays(box));
+  return rays;
 }
 
 // Morphological closing of mask with a square of the given side (cells); the map's edge does not
@@ -202,7 +218,7 @@ void clean_window(const cv::Mat& free, const cv::Mat& grid_cells, double resolut
   const cv::Mat specks = obstacle_specks(free, cells(options.max_obstacle_speck, resolution));
   const cv::Mat solid = free | specks;
   const double radius = options.min_width / resolution / 2.0;
-  const cv::Mat thick = radius > 0.5 ? thick_part(solid, radius, static_cast<int>(std::ceil(radius / 2.0))) : solid;
+  const cv::Mat thick = radius > 0.5 ? thick_part_in_box(solid, radius, static_cast<int>(std::ceil(radius / 2.0))) : solid;
   const cv::Mat thin = solid & ~thick;
   floor = cv::countNonZero(thin) > 0 ? solid & ~rays_of(thin, grid_cells) : solid.clone();
   const cv::Mat lost = free & ~floor;
