@@ -27,11 +27,17 @@ Histogram level_histogram(const cv::Mat& levels, const cv::Mat& transparent) {
     const unsigned char* level = levels.ptr<unsigned char>(r);
     const unsigned char* clear = transparent.ptr<unsigned char>(r);
     const int n = levels.cols;
+    int i = 0;
     if (std::find_if(clear, clear + n, [](unsigned char t) { return t != 0; }) != clear + n) {
-      for (int i = 0; i < n; ++i) counts[0][level[i]] += clear[i] == 0;
+      for (; i + 4 <= n; i += 4) {
+        counts[0][level[i]] += clear[i] == 0;
+        counts[1][level[i + 1]] += clear[i + 1] == 0;
+        counts[2][level[i + 2]] += clear[i + 2] == 0;
+        counts[3][level[i + 3]] += clear[i + 3] == 0;
+      }
+      for (; i < n; ++i) counts[0][level[i]] += clear[i] == 0;
       continue;
     }
-    int i = 0;
     for (; i + 4 <= n; i += 4) {
       ++counts[0][level[i]];
       ++counts[1][level[i + 1]];
