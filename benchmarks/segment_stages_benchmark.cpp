@@ -1,4 +1,5 @@
-// Segmentation stage times: where the milliseconds of `topocut segment` go on the Bormann images.
+// Segmentation stage times: where the milliseconds of `topocut segment` go on the Bormann images,
+// or with --maps DIR on a folder of maps without ground truth (the real maps: YAMLs and images).
 // For every image it runs the batch pipeline stage by stage (the same calls segment() makes) and
 // prints the least CPU time of each stage over --repeat runs (thread CPU time: on a shared, busy
 // machine the least of a few runs is the steadiest estimate), next to the contour floor measured
@@ -8,7 +9,7 @@
 // With --quality it also scores every image against its ground truth (recall / precision, as
 // `topocut evaluate`), so that option variants can be compared stage by stage.
 //
-// Usage: segment_stages_benchmark [--repeat N] [--map NAME ...] [--variant plain|furnished|all]
+// Usage: segment_stages_benchmark [--repeat N] [--maps DIR] [--map NAME ...] [--variant plain|furnished|all]
 //                                 [--concavity M] [--parity] [--quality] [--no-merge]
 //                                 [--door-ratio R] [--width-depth M] [--min-room-area M2]
 //                                 [--min-room-width M] [--no-doors] [--door-max M]
@@ -33,6 +34,7 @@
 #include "topocut/evaluation/dataset.h"
 #include "topocut/evaluation/dataset_report.h"
 #include "topocut/evaluation/precision_recall.h"
+#include "topocut/evaluation/room_defects.h"
 #include "topocut/io/map_loader.h"
 #include "topocut/map/rasterize.h"
 #include "topocut/segmentation/segmenter.h"
@@ -56,9 +58,79 @@ double least(const std::vector<double>& v) { return *std::min_element(v.begin(),
 double median(std::vector<double> v) { return time_statistics(std::move(v)).median; }
 
 struct StageTimes {
-  std::vector<double> floor, load, free_space, polygons, decompose, merge, rooms, total;
+  std::vector<double> floor, load, free_space, clean, polygons, decompose, merge, rooms, total;
   int vertices = 0, pieces = 0, rooms_found = 0;
 };
+
+// One image to time: a Bormann image (with its ground truth) or a map of a folder.
+struct Job {
+  std::string name, path, ground_truth;
+  Variant variant = Variant::kPlain;
+};
+
+std::vector<Job> dataset_jobs(const std::vector<std::string>& names, const std::vector<Variant>& variants) {
+  std::vector<Job> jobs;
+  for (const DatasetMap& map : select_maps(discover_dataset(std::string(TOPOCUT_SHARED_DIR) + "/datasets/bormann"), names)) {
+    for (const Variant variant : variants)
+      jobs.push_back({map.name + (variant == Variant::kPlain ? "" : " (f)"), map.image(variant), map.ground_truth, variant});
+  }
+  return jobs;
+}
+
+std::vector<Job> folder_jobs(const std::string& folder, const std::vector<std::string>& names) {
+  std::vector<Job> jobs;
+  for (const MapFile& map : discover_map_files(folder)) {
+    if (names.empty() || std::find(names.begin(), names.end(), map.name) != names.end())
+      jobs.push_back({map.name, map.path, "", Variant::kPlain});
+  }
+  if (jobs.empty()) throw Error("no map of '" + folder + "' is selected");
+  return jobs;
+}
+
+// One run of the pipeline on the map at path, stage by stage (the calls segment() makes), each
+// stage's thread CPU time appended to t; the free space is timed once more on its own (not part of
+// the total) so that the cleaning's share can be told apart.
+Segmentation time_stages(const std::string& path, const MapLoadOptions& load, const SegmentOptions& options, StageTimes& t) {
+  const double t0 = Clock::now();
+  contour_floor_ms(path, load.free_min, 1);
+  t.floor.push_back(ms(t0, Clock::now()));
+
+  const double a = Clock::now();
+  const OccupancyGrid grid = load_map(path, load);
+  const double b = Clock::now();
+  const SegmentationInput input = segmentation_input(grid, options);
+  const double c = Clock::now();
+  const FreeSpacePolygons polygons = free_space_polygons(input.floor, grid.resolution, options.contours);
+  const double d = Clock::now();
+  std::vector<PieceSet> raw;
+  for (const FreeSpaceComponent& component : polygons.components)
+    raw.push_back(decompose_pieces(component, grid.resolution, options));
+  const double e = Clock::now();
+  PieceSet pieces;
+  for (std::size_t i = 0; i < raw.size(); ++i)
+    pieces.append(merge_rooms(polygons.components[i], raw[i], grid.resolution, options.merge));
+  const double f = Clock::now();
+  Segmentation s = rooms_from_pieces(input.labelled, pieces, options.labels);
+  const double g = Clock::now();
+  segmentation_free_space(grid, options);
+  t.free_space.push_back(ms(g, Clock::now()));
+  t.load.push_back(ms(a, b));
+  t.clean.push_back(ms(b, c));
+  t.polygons.push_back(ms(c, d));
+  t.decompose.push_back(ms(d, e));
+  t.merge.push_back(ms(e, f));
+  t.rooms.push_back(ms(f, g));
+  t.total.push_back(ms(a, g));
+  t.vertices = 0;
+  for (const FreeSpaceComponent& component : polygons.components) {
+    t.vertices += static_cast<int>(component.polygon.outer.size());
+    for (const Ring& hole : component.polygon.holes) t.vertices += static_cast<int>(hole.size());
+  }
+  t.pieces = 0;
+  for (const PieceSet& set : raw) t.pieces += static_cast<int>(set.pieces.size());
+  t.rooms_found = static_cast<int>(s.rooms.size());
+  return s;
+}
 
 int run(const std::vector<std::string>& args) {
   int repeat = 3;
@@ -66,6 +138,7 @@ int run(const std::vector<std::string>& args) {
   std::vector<Variant> variants{Variant::kPlain, Variant::kFurnished};
   SegmentOptions options;
   bool quality = false;
+  std::string maps_folder;
   for (std::size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
     auto value = [&]() -> std::string {
@@ -74,6 +147,8 @@ int run(const std::vector<std::string>& args) {
     };
     if (a == "--repeat") {
       repeat = std::max(1, std::stoi(value()));
+    } else if (a == "--maps") {
+      maps_folder = value();
     } else if (a == "--map") {
       names.push_back(value());
       while (i + 1 < args.size() && args[i + 1].rfind("--", 0) != 0) names.push_back(args[++i]);
@@ -127,85 +202,41 @@ int run(const std::vector<std::string>& args) {
       throw Error("unknown argument '" + a + "'");
     }
   }
-  const std::vector<DatasetMap> maps =
-      select_maps(discover_dataset(std::string(TOPOCUT_SHARED_DIR) + "/datasets/bormann"), names);
   const MapLoadOptions load;
+  const std::vector<Job> jobs = maps_folder.empty() ? dataset_jobs(names, variants) : folder_jobs(maps_folder, names);
+  if (quality && !maps_folder.empty()) throw Error("--quality needs the Bormann dataset (no --maps)");
 
-  std::vector<std::vector<std::string>> rows{{"image", "floor", "load", "free", "polygons", "vertices", "decompose",
-                                              "pieces", "merge", "rooms", "labels", "total", "total / floor", "recall", "precision"}};
+  std::vector<std::vector<std::string>> rows{{"image", "floor", "load", "free", "clean", "polygons", "vertices",
+                                              "decompose", "pieces", "merge", "labels", "rooms", "total",
+                                              "total / floor", "recall", "precision"}};
   std::vector<double> recall[2], precision[2];
   std::vector<double> all_total, all_floor, all_ratio;
-  for (const DatasetMap& map : maps) {
-    for (const Variant variant : variants) {
-      const std::string& path = map.image(variant);
-      StageTimes t;
-      Segmentation last;
-      for (int k = 0; k < repeat; ++k) {
-        auto t0 = Clock::now();
-        {
-          const cv::Mat image = cv::imread(path, cv::IMREAD_GRAYSCALE);
-          cv::Mat free;
-          cv::threshold(image, free, load.free_min, 255, cv::THRESH_BINARY);
-          std::vector<std::vector<cv::Point>> contours;
-          std::vector<cv::Vec4i> hierarchy;
-          cv::findContours(free, contours, hierarchy, cv::RETR_CCOMP, cv::CHAIN_APPROX_SIMPLE);
-        }
-        auto t1 = Clock::now();
-        t.floor.push_back(ms(t0, t1));
-
-        const auto a = Clock::now();
-        const OccupancyGrid grid = load_map(path, load);
-        const auto b = Clock::now();
-        const cv::Mat free = segmentation_free_space(grid, options);
-        const auto c = Clock::now();
-        const FreeSpacePolygons polygons = free_space_polygons(free, grid.resolution, options.contours);
-        const auto d = Clock::now();
-        std::vector<PieceSet> raw;
-        for (const FreeSpaceComponent& component : polygons.components)
-          raw.push_back(decompose_pieces(component, grid.resolution, options));
-        const auto e = Clock::now();
-        PieceSet pieces;
-        for (std::size_t i = 0; i < raw.size(); ++i)
-          pieces.append(merge_rooms(polygons.components[i], raw[i], grid.resolution, options.merge));
-        const auto f = Clock::now();
-        const Segmentation s = rooms_from_pieces(grid, pieces, options.labels);
-        const auto g = Clock::now();
-        t.load.push_back(ms(a, b));
-        t.free_space.push_back(ms(b, c));
-        t.polygons.push_back(ms(c, d));
-        t.decompose.push_back(ms(d, e));
-        t.merge.push_back(ms(e, f));
-        t.rooms.push_back(ms(f, g));
-        t.total.push_back(ms(a, g));
-        t.vertices = 0;
-        for (const FreeSpaceComponent& component : polygons.components) {
-          t.vertices += static_cast<int>(component.polygon.outer.size());
-          for (const Ring& hole : component.polygon.holes) t.vertices += static_cast<int>(hole.size());
-        }
-        t.pieces = 0;
-        for (const PieceSet& set : raw) t.pieces += static_cast<int>(set.pieces.size());
-        t.rooms_found = static_cast<int>(s.rooms.size());
-        if (k == 0) last = s;
-      }
-      const double floor = least(t.floor), total = least(t.total);
-      all_total.push_back(total);
-      all_floor.push_back(floor);
-      all_ratio.push_back(total / floor);
-      rows.push_back({map.name + (variant == Variant::kPlain ? "" : " (f)"), fixed(floor, 1), fixed(least(t.load), 1),
-                      fixed(least(t.free_space), 1), fixed(least(t.polygons), 1), std::to_string(t.vertices),
-                      fixed(least(t.decompose), 1), std::to_string(t.pieces), fixed(least(t.merge), 1),
-                      fixed(least(t.rooms), 1), std::to_string(t.rooms_found), fixed(total, 1),
-                      fixed(total / floor, 2), "-", "-"});
-      if (quality) {
-        const PrecisionRecall pr = evaluate_against_ground_truth(last.labels, load_ground_truth(map.ground_truth));
-        const int v = variant == Variant::kPlain ? 0 : 1;
-        recall[v].push_back(pr.recall);
-        precision[v].push_back(pr.precision);
-        rows.back()[13] = fixed(100.0 * pr.recall, 1);
-        rows.back()[14] = fixed(100.0 * pr.precision, 1);
-      }
-      std::cerr << rows.back()[0] << " " << rows.back()[11] << " ms\n";
+  for (const Job& job : jobs) {
+    StageTimes t;
+    Segmentation last;
+    for (int k = 0; k < repeat; ++k) {
+      const Segmentation s = time_stages(job.path, load, options, t);
+      if (k == 0) last = s;
     }
+    const double floor = least(t.floor), total = least(t.total);
+    all_total.push_back(total);
+    all_floor.push_back(floor);
+    all_ratio.push_back(total / floor);
+    // The cleaning alone: the front end (free space and cleaning) less the free space timed alone.
+    const double clean = std::max(0.0, least(t.clean) - least(t.free_space));
+    rows.push_back({job.name, fixed(floor, 1), fixed(least(t.load), 1), fixed(least(t.free_space), 1), fixed(clean, 1),
+                    fixed(least(t.polygons), 1), std::to_string(t.vertices), fixed(least(t.decompose), 1),
+                    std::to_string(t.pieces), fixed(least(t.merge), 1), fixed(least(t.rooms), 1),
+                    std::to_string(t.rooms_found), fixed(total, 1), fixed(total / floor, 2), "-", "-"});
+    if (quality) {
+      const PrecisionRecall pr = evaluate_against_ground_truth(last.labels, load_ground_truth(job.ground_truth));
+      const int v = job.variant == Variant::kPlain ? 0 : 1;
+      recall[v].push_back(pr.recall);
+      precision[v].push_back(pr.precision);
+      rows.back()[14] = fixed(100.0 * pr.recall, 1);
+      rows.back()[15] = fixed(100.0 * pr.precision, 1);
+    }
+    std::cerr << rows.back()[0] << " " << rows.back()[12] << " ms\n";
   }
   std::cout << "CPU times in ms, least of " << repeat << " runs per image\n\n" << markdown_table(rows) << "\n";
   std::cout << "median total " << fixed(median(all_total), 1) << " ms, median floor " << fixed(median(all_floor), 1)

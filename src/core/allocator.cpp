@@ -1,5 +1,9 @@
 #include "topocut/core/allocator.h"
 
+// Any C library header defines __GLIBC__ when glibc is the C library; without one the test below
+// is always false and the function silently does nothing.
+#include <cstdlib>
+
 #if defined(__GLIBC__)
 #include <malloc.h>
 #endif

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <limits>
 #include <sstream>
 #include <vector>
 
@@ -136,18 +137,18 @@ RosMapMetadata parse_ros_map_yaml(const std::string& yaml_text, const std::strin
 
 namespace {
 
-// The level of one pixel: the rounded mean of its colour channels on the 0..255 scale.
-template <typename T>
-unsigned char pixel_level(const T* px, int colour_channels, double scale) {
-  double sum = 0.0;
-  for (int k = 0; k < colour_channels; ++k) sum += px[k];
-  return cv::saturate_cast<unsigned char>(sum * scale / colour_channels);
-}
-
 template <typename T>
 void image_levels(const cv::Mat& image, int colour_channels, bool has_alpha, double scale, double half, cv::Mat& levels,
                   cv::Mat& transparent) {
   const int n = image.channels();
+  // The level of every possible channel sum (the rounded mean on the 0..255 scale, computed in
+  // doubles, in which an integer sum is exact), so that each pixel costs a sum and a lookup.
+  const int max_sum = static_cast<int>(std::numeric_limits<T>::max()) * colour_channels;
+  std::vector<unsigned char> level_of_sum(static_cast<std::size_t>(max_sum) + 1);
+  for (int sum = 0; sum <= max_sum; ++sum) {
+    level_of_sum[static_cast<std::size_t>(sum)] =
+        cv::saturate_cast<unsigned char>(static_cast<double>(sum) * scale / colour_channels);
+  }
   levels.create(image.size(), CV_8UC1);
   transparent = cv::Mat::zeros(image.size(), CV_8UC1);
   for (int r = 0; r < image.rows; ++r) {
@@ -156,7 +157,9 @@ void image_levels(const cv::Mat& image, int colour_channels, bool has_alpha, dou
     unsigned char* clear = transparent.ptr<unsigned char>(r);
     for (int c = 0; c < image.cols; ++c) {
       const T* px = in + static_cast<std::size_t>(c) * n;
-      level[c] = pixel_level(px, colour_channels, scale);
+      int sum = 0;
+      for (int k = 0; k < colour_channels; ++k) sum += px[k];
+      level[c] = level_of_sum[static_cast<std::size_t>(sum)];
       if (has_alpha && px[n - 1] < half) clear[c] = 255;
     }
   }
@@ -171,6 +174,11 @@ void levels_of(const cv::Mat& image, const std::string& source, cv::Mat& levels,
   if (image.depth() == CV_8U && n == 1) {  // the common case: the image is its own levels
     levels = image;
     transparent = cv::Mat::zeros(image.size(), CV_8UC1);
+  } else if (image.depth() == CV_8U && n == 2) {  // grey + alpha: the grey channel is the level
+    cv::extractChannel(image, levels, 0);
+    cv::Mat alpha;
+    cv::extractChannel(image, alpha, 1);
+    transparent = alpha < 128;
   } else if (image.depth() == CV_8U) {
     image_levels<unsigned char>(image, colour_channels, has_alpha, 1.0, 128.0, levels, transparent);
   } else if (image.depth() == CV_16U) {

@@ -1,6 +1,7 @@
 #include "topocut/io/map_palette.h"
 
 #include <algorithm>
+#include <cstdint>
 #include <cstdlib>
 #include <vector>
 
@@ -18,10 +19,38 @@ void count_levels(const unsigned char* level, const unsigned char* transparent, 
   }
 }
 
+// Integer counts in four interleaved tables, so that runs of one level (most of a map) do not
+// wait on each other's increments; the sums are exact in doubles.
 Histogram level_histogram(const cv::Mat& levels, const cv::Mat& transparent) {
+  std::vector<std::array<std::uint32_t, 256>> counts(4, std::array<std::uint32_t, 256>{});
+  for (int r = 0; r < levels.rows; ++r) {
+    const unsigned char* level = levels.ptr<unsigned char>(r);
+    const unsigned char* clear = transparent.ptr<unsigned char>(r);
+    const int n = levels.cols;
+    int i = 0;
+    if (std::find_if(clear, clear + n, [](unsigned char t) { return t != 0; }) != clear + n) {
+      for (; i + 4 <= n; i += 4) {
+        counts[0][level[i]] += clear[i] == 0;
+        counts[1][level[i + 1]] += clear[i + 1] == 0;
+        counts[2][level[i + 2]] += clear[i + 2] == 0;
+        counts[3][level[i + 3]] += clear[i + 3] == 0;
+      }
+      for (; i < n; ++i) counts[0][level[i]] += clear[i] == 0;
+      continue;
+    }
+    for (; i + 4 <= n; i += 4) {
+      ++counts[0][level[i]];
+      ++counts[1][level[i + 1]];
+      ++counts[2][level[i + 2]];
+      ++counts[3][level[i + 3]];
+    }
+    for (; i < n; ++i) ++counts[0][level[i]];
+  }
   Histogram histogram{};
-  for (int r = 0; r < levels.rows; ++r)
-    count_levels(levels.ptr<unsigned char>(r), transparent.ptr<unsigned char>(r), levels.cols, histogram);
+  for (int v = 0; v < 256; ++v) {
+    const std::uint64_t total = std::uint64_t{counts[0][v]} + counts[1][v] + counts[2][v] + counts[3][v];
+    histogram[static_cast<std::size_t>(v)] = static_cast<double>(total);
+  }
   return histogram;
 }
 

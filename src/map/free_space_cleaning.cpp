@@ -33,19 +33,86 @@ cv::Mat mask_of_labels(const cv::Mat& labels, const std::vector<unsigned char>& 
   return mask;
 }
 
-// Non-free regions enclosed by free space with a bounding box of at most max_side cells a side.
-cv::Mat obstacle_specks(const cv::Mat& free, int max_side) {
-  if (max_side <= 0) return cv::Mat::zeros(free.size(), CV_8UC1);
-  cv::Mat labels, stats, centroids;
-  const int n = cv::connectedComponentsWithStats(free == 0, labels, stats, centroids, 8, CV_32S);
-  std::vector<unsigned char> is_speck(static_cast<std::size_t>(n), 0);
-  for (int i = 1; i < n; ++i) {
-    const int x = stats.at<int>(i, cv::CC_STAT_LEFT), y = stats.at<int>(i, cv::CC_STAT_TOP);
-    const int w = stats.at<int>(i, cv::CC_STAT_WIDTH), h = stats.at<int>(i, cv::CC_STAT_HEIGHT);
-    const bool enclosed = x > 0 && y > 0 && x + w < free.cols && y + h < free.rows;
-    is_speck[static_cast<std::size_t>(i)] = enclosed && w <= max_side && h <= max_side ? 255 : 0;
+// Marks (2) the non-free cells (1) of a row that lie in a run of non-free cells longer than
+// max_side: their region is wider than any speck.
+void mark_long_runs(unsigned char* row, int n, int max_side) {
+  for (int c = 0; c < n;) {
+    if (row[c] == 0) {
+      ++c;
+      continue;
+    }
+    int end = c;
+    while (end < n && row[end] != 0) ++end;
+    if (end - c > max_side) std::fill(row + c, row + end, static_cast<unsigned char>(2));
+    c = end;
   }
-  return mask_of_labels(labels, is_speck);
+}
+
+// Whether the column run of non-free cells through (r, c) is longer than max_side.
+bool in_long_column_run(const cv::Mat& state, int r, int c, int max_side) {
+  int length = 1;
+  for (int y = r - 1; y >= 0 && state.at<unsigned char>(y, c) != 0 && length <= max_side; --y) ++length;
+  for (int y = r + 1; y < state.rows && state.at<unsigned char>(y, c) != 0 && length <= max_side; ++y) ++length;
+  return length > max_side;
+}
+
+// Non-free regions (8-connected) enclosed by free space with a bounding box of at most max_side
+// cells a side. A region holding a row or column run longer than max_side cannot be one, so only
+// regions made of short runs (next to free space; most of a SLAM map is one unknown region) are
+// followed cell by cell, and the answer is that of a labelling of every non-free region.
+cv::Mat obstacle_specks(const cv::Mat& free, int max_side) {
+  cv::Mat specks = cv::Mat::zeros(free.size(), CV_8UC1);
+  if (max_side <= 0) return specks;
+  const int h = free.rows, w = free.cols;
+  // 0 free, 1 non-free in short runs, 2 non-free in a long run (or known not to be a speck), 3 done.
+  cv::Mat state = free == 0;
+  state &= 1;
+  for (int r = 0; r < h; ++r) mark_long_runs(state.ptr<unsigned char>(r), w, max_side);
+  std::vector<cv::Point> region;
+  for (int r = 0; r < h; ++r) {
+    const unsigned char* row = state.ptr<unsigned char>(r);
+    for (int c = 0; c < w; ++c) {
+      if (row[c] != 1) continue;
+      if (in_long_column_run(state, r, c, max_side)) {
+        state.at<unsigned char>(r, c) = 2;
+        continue;
+      }
+      // Follow the region; it is a speck unless it reaches a long run, the window's edge or a box
+      // wider than max_side.
+      region.assign(1, {c, r});
+      state.at<unsigned char>(r, c) = 3;
+      bool speck = true;
+      int x0 = c, x1 = c, y0 = r, y1 = r;
+      for (std::size_t k = 0; k < region.size(); ++k) {
+        const cv::Point p = region[k];
+        if (p.x == 0 || p.y == 0 || p.x == w - 1 || p.y == h - 1) speck = false;
+        for (int dy = -1; dy <= 1; ++dy) {
+          for (int dx = -1; dx <= 1; ++dx) {
+            const int x = p.x + dx, y = p.y + dy;
+            if (x < 0 || y < 0 || x >= w || y >= h) continue;
+            unsigned char& s = state.at<unsigned char>(y, x);
+            if (s == 2) speck = false;
+            if (s != 1) continue;
+            if (in_long_column_run(state, y, x, max_side)) {
+              s = 2;
+              speck = false;
+              continue;
+            }
+            s = 3;
+            region.push_back({x, y});
+            x0 = std::min(x0, x);
+            x1 = std::max(x1, x);
+            y0 = std::min(y0, y);
+            y1 = std::max(y1, y);
+          }
+        }
+      }
+      speck = speck && x1 - x0 < max_side && y1 - y0 < max_side;
+      if (speck)
+        for (const cv::Point& p : region) specks.at<unsigned char>(p) = 255;
+    }
+  }
+  return specks;
 }
 
 // The cells of solid covered by discs of radius (cells) that fit into it (its opening; the map's
@@ -67,24 +134,39 @@ cv::Mat thick_part(const cv::Mat& solid, double radius, int margin) {
   return thick;
 }
 
+// thick_part() computed within the box of solid's cells, which gives the same cells: outside the
+// box solid is empty, like the erosion's border, and every step ends by keeping solid cells only.
+// Only the shortcut for discs wider than the map looks at the size, and a disc wider than the box
+// fits nowhere either.
+cv::Mat thick_part_in_box(const cv::Mat& solid, double radius, int margin) {
+  cv::Mat thick = cv::Mat::zeros(solid.size(), CV_8UC1);
+  const cv::Rect box = cv::boundingRect(solid);
+  if (!box.empty()) thick_part(solid(box), radius, margin).copyTo(thick(box));
+  return thick;
+}
+
 // The parts of thin (8-connected) that are rays: more of the non-free cells next to them are
 // unknown than occupied. A laser ray ends in the unknown; a narrow corridor, a closet or the gap
 // between a cupboard and a wall is walled in.
 cv::Mat rays_of(const cv::Mat& thin, const cv::Mat& cells) {
+  // Labelled within the thin cells' box; the cells around it are read from the whole window.
+  cv::Mat rays = cv::Mat::zeros(thin.size(), CV_8UC1);
+  const cv::Rect box = cv::boundingRect(thin);
+  if (box.empty()) return rays;
   cv::Mat labels;
-  const int n = cv::connectedComponents(thin, labels, 8, CV_32S);
+  const int n = cv::connectedComponents(thin(box), labels, 8, CV_32S);
   std::vector<long long> unknown(static_cast<std::size_t>(n), 0), occupied(static_cast<std::size_t>(n), 0);
   const int h = thin.rows, w = thin.cols;
   auto count = [&](std::size_t l, unsigned char state) {
     unknown[l] += state == kUnknown;
     occupied[l] += state == kOccupied;
   };
-  for (int r = 0; r < h; ++r) {
-    const int* label = labels.ptr<int>(r);
+  for (int r = box.y; r < box.y + box.height; ++r) {
+    const int* label = labels.ptr<int>(r - box.y) - box.x;
     const unsigned char* row = cells.ptr<unsigned char>(r);
     const unsigned char* above = r > 0 ? cells.ptr<unsigned char>(r - 1) : nullptr;
     const unsigned char* below = r + 1 < h ? cells.ptr<unsigned char>(r + 1) : nullptr;
-    for (int c = 0; c < w; ++c) {
+    for (int c = box.x; c < box.x + box.width; ++c) {
       if (label[c] == 0) continue;
       const std::size_t l = static_cast<std::size_t>(label[c]);
       // Beyond the window counts as unknown.
@@ -96,7 +178,8 @@ cv::Mat rays_of(const cv::Mat& thin, const cv::Mat& cells) {
   }
   std::vector<unsigned char> is_ray(static_cast<std::size_t>(n), 0);
   for (std::size_t i = 1; i < is_ray.size(); ++i) is_ray[i] = unknown[i] > occupied[i] ? 255 : 0;
-  return mask_of_labels(labels, is_ray);
+  mask_of_labels(labels, is_ray).copyTo(rays(box));
+  return rays;
 }
 
 // Morphological closing of mask with a square of the given side (cells); the map's edge does not
@@ -135,7 +218,7 @@ void clean_window(const cv::Mat& free, const cv::Mat& grid_cells, double resolut
   const cv::Mat specks = obstacle_specks(free, cells(options.max_obstacle_speck, resolution));
   const cv::Mat solid = free | specks;
   const double radius = options.min_width / resolution / 2.0;
-  const cv::Mat thick = radius > 0.5 ? thick_part(solid, radius, static_cast<int>(std::ceil(radius / 2.0))) : solid;
+  const cv::Mat thick = radius > 0.5 ? thick_part_in_box(solid, radius, static_cast<int>(std::ceil(radius / 2.0))) : solid;
   const cv::Mat thin = solid & ~thick;
   floor = cv::countNonZero(thin) > 0 ? solid & ~rays_of(thin, grid_cells) : solid.clone();
   const cv::Mat lost = free & ~floor;

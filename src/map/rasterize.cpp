@@ -75,10 +75,18 @@ class LabelPresence {
  public:
   explicit LabelPresence(const cv::Mat& labels) : labels_(labels) {
     cv::Mat tiles(cv::Size((labels.cols + kTile - 1) / kTile, (labels.rows + kTile - 1) / kTile), CV_8UC1, cv::Scalar(0));
+    const int whole = labels.cols / kTile;  // tiles of a full kTile cells
     for (int r = 0; r < labels.rows; ++r) {
       const int* row = labels.ptr<int>(r);
       unsigned char* tile_row = tiles.ptr<unsigned char>(r / kTile);
-      for (int c = 0; c < labels.cols; ++c) tile_row[c / kTile] |= row[c] > 0;
+      // A fixed count per tile, so that the compiler tests a tile's cells together.
+      for (int t = 0; t < whole; ++t) {
+        const int* cell = row + t * kTile;
+        int any = 0;
+        for (int k = 0; k < kTile; ++k) any |= cell[k] > 0;
+        tile_row[t] |= static_cast<unsigned char>(any);
+      }
+      for (int c = whole * kTile; c < labels.cols; ++c) tile_row[c / kTile] |= row[c] > 0;
     }
     cv::integral(tiles, sums_, CV_32S);
   }

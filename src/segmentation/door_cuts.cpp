@@ -7,6 +7,7 @@
 #include <optional>
 #include <string>
 #include <tuple>
+#include <unordered_map>
 #include <utility>
 
 #include "topocut/core/error.h"
@@ -494,6 +495,17 @@ std::vector<Segment2> find_door_cuts(const PolygonWithHoles& polygon, double res
 
 namespace {
 
+// Points as hash keys, equal when their coordinates compare equal (so 0.0 and -0.0 are one point,
+// as in an ordered map); lookups only, so the hash order never shows.
+struct PointHash {
+  std::size_t operator()(const std::pair<double, double>& p) const {
+    const std::size_t x = std::hash<double>{}(p.first + 0.0), y = std::hash<double>{}(p.second + 0.0);
+    return x ^ (y + 0x9e3779b97f4a7c15ULL + (x << 6) + (x >> 2));
+  }
+};
+template <typename T>
+using PointMap = std::unordered_map<std::pair<double, double>, T, PointHash>;
+
 // A polygon's rings as one graph: directed half-edges between distinct vertices.
 struct HalfEdge {
   int from, to, twin;
@@ -508,9 +520,13 @@ struct HalfEdgeGraph {
 // lies on (in order along the edge), so chords meet the rings only at vertices. Throws if a chord
 // end lies on no edge.
 std::vector<Ring> rings_with_chord_ends(const PolygonWithHoles& polygon, const std::vector<Segment2>& chords) {
+  // Far more than the rounding of a distance, far less than a cell: the box test below never
+  // drops an edge the distance would keep.
+  constexpr double kNearBox = 1e-3;
   std::vector<Ring> rings{polygon.outer};
   for (const Ring& hole : polygon.holes) rings.push_back(hole);
-  std::map<std::pair<double, double>, bool> is_vertex;
+  PointMap<bool> is_vertex;
+  is_vertex.reserve(polygon.outer.size() * 2);
   for (const Ring& ring : rings)
     for (const Point2& p : ring) is_vertex[{p.x, p.y}] = true;
   std::map<std::pair<int, int>, std::vector<std::pair<double, Point2>>> inserts;  // (ring, edge) -> (t, point)
@@ -523,6 +539,10 @@ std::vector<Ring> rings_with_chord_ends(const PolygonWithHoles& polygon, const s
         const Ring& ring = rings[r];
         for (std::size_t i = 0; i < ring.size(); ++i) {
           const Segment2 e{ring[i], ring[(i + 1) % ring.size()]};
+          // An edge whose box is far from p is not within best of it: skip the exact distance.
+          if (p.x < std::min(e.a.x, e.b.x) - kNearBox || p.x > std::max(e.a.x, e.b.x) + kNearBox ||
+              p.y < std::min(e.a.y, e.b.y) - kNearBox || p.y > std::max(e.a.y, e.b.y) + kNearBox)
+            continue;
           const double d = distance_to_segment(p, e);
           if (d < best) {
             best = d;
@@ -560,7 +580,7 @@ std::vector<Ring> rings_with_chord_ends(const PolygonWithHoles& polygon, const s
 // vertices numbered by first appearance so that the walk below is deterministic.
 HalfEdgeGraph half_edge_graph(const std::vector<Ring>& rings, const std::vector<Segment2>& chords) {
   HalfEdgeGraph g;
-  std::map<std::pair<double, double>, int> vertex_id;
+  PointMap<int> vertex_id;
   auto id_of = [&](const Point2& p) {
     const auto [it, added] = vertex_id.emplace(std::pair<double, double>{p.x, p.y}, static_cast<int>(g.vertices.size()));
     if (added) g.vertices.push_back(p);

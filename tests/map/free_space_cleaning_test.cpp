@@ -95,6 +95,49 @@ TEST(CleanFreeSpace, EachStepCanBeSwitchedOff) {
   EXPECT_EQ(count(d.removed(s.gap) == kCellRemovedOutside), s.gap.area());
 }
 
+// The definition of an obstacle speck, by a labelling of every non-free region of the window the
+// cleaning works in (the free cells' box grown by 2 cells when the inside test is off).
+cv::Mat specks_by_definition(const cv::Mat& free, int max_side) {
+  const cv::Rect box = cv::boundingRect(free);
+  const cv::Rect window = cv::Rect(box.x - 2, box.y - 2, box.width + 4, box.height + 4) & cv::Rect(0, 0, free.cols, free.rows);
+  cv::Mat labels, stats, centroids;
+  const cv::Mat region = free(window) == 0;
+  const int n = cv::connectedComponentsWithStats(region, labels, stats, centroids, 8, CV_32S);
+  cv::Mat specks = cv::Mat::zeros(free.size(), CV_8UC1);
+  for (int i = 1; i < n; ++i) {
+    const int x = stats.at<int>(i, cv::CC_STAT_LEFT), y = stats.at<int>(i, cv::CC_STAT_TOP);
+    const int w = stats.at<int>(i, cv::CC_STAT_WIDTH), h = stats.at<int>(i, cv::CC_STAT_HEIGHT);
+    if (x > 0 && y > 0 && x + w < window.width && y + h < window.height && w <= max_side && h <= max_side)
+      specks(window).setTo(255, labels == i);
+  }
+  return specks;
+}
+
+TEST(CleanFreeSpace, ObstacleSpecksAreTheSmallEnclosedNonFreeRegions) {
+  // Rooms peppered with obstacles of every size and shape (diagonal chains, L shapes, clusters
+  // touching the walls), at several densities: the cleaning's specks are exactly the definition's.
+  cv::RNG rng(7);
+  for (int trial = 0; trial < 12; ++trial) {
+    cv::Mat cells(120, 160, CV_8UC1, cv::Scalar(kUnknown));
+    cells(cv::Rect(10 + trial, 8, 130, 100)).setTo(kFree);
+    const int obstacles = 40 + 60 * trial;
+    for (int k = 0; k < obstacles; ++k) {
+      const cv::Point p(rng.uniform(8, 152), rng.uniform(6, 112));
+      const int kind = rng.uniform(0, 3);
+      if (kind == 0) cells.at<unsigned char>(p) = kOccupied;
+      if (kind == 1) cv::line(cells, p, p + cv::Point(rng.uniform(-8, 9), rng.uniform(-8, 9)), cv::Scalar(kOccupied));
+      if (kind == 2) cells(cv::Rect(p, cv::Size(rng.uniform(1, 8), rng.uniform(1, 8))) & cv::Rect(0, 0, 160, 120)).setTo(kUnknown);
+    }
+    FreeSpaceCleaningOptions only_specks;
+    only_specks.min_width = 0.0;
+    only_specks.inside_closing = 0.0;
+    const CleanedFreeSpace c = clean_free_space(cells == kFree, cells, kRes, only_specks);
+    const cv::Mat expected = specks_by_definition(cells == kFree, 6);  // 0.3 m at 0.05 m a cell
+    EXPECT_GT(count(expected), 0) << "trial " << trial;
+    EXPECT_EQ(count((c.removed == kCellObstacleSpeck) != expected), 0) << "trial " << trial;
+  }
+}
+
 TEST(CleanFreeSpace, BadInputIsAnError) {
   const cv::Mat cells(10, 10, CV_8UC1, cv::Scalar(kFree));
   EXPECT_THROW(clean_free_space(cv::Mat(), cells, kRes), Error);
