@@ -75,7 +75,14 @@ int run_one(int side, const std::string& folder) {
 int main(int argc, char** argv) {
   topocut::keep_freed_memory_for_reuse();
   std::vector<int> sides;
-  for (int i = 1; i < argc; ++i) sides.push_back(std::atoi(argv[i]));
+  for (int i = 1; i < argc; ++i) {
+    const int side = std::atoi(argv[i]);
+    if (side < 100 || side > 40000) {  // the floor's lattice needs a room; 40,000 is 1,600 Mpx
+      std::fprintf(stderr, "usage: extreme_maps_benchmark [SIDE...]   (SIDE: cells per side, 100 to 40000)\n");
+      return 2;
+    }
+    sides.push_back(side);
+  }
   if (sides.empty()) sides = {1000, 2500, 5000, 10000};
   const std::string folder = std::filesystem::temp_directory_path() / ("topocut_extreme_" + std::to_string(getpid()));
   std::filesystem::create_directories(folder);
