@@ -155,6 +155,7 @@ struct ChangeMask {
 // cells around its newly free cells).
 struct Blob {
   int gained = 0;
+  int lost = 0;
   bool structural = false;  // lost or reshaped cells: the touched rooms must be decomposed again
   std::vector<int> touched;
   cv::Rect box;
@@ -282,6 +283,7 @@ struct IncrementalSegmenter::State {
   ChangeMask take_changes(const OccupancyGrid& grid, const cv::Rect& changed);
   std::vector<Blob> find_blobs(const ChangeMask& mask, cv::Mat& blob_of) const;
   Region choose_region(std::vector<Blob>& blobs, bool whole_map);
+  bool is_speck(const Blob& blob) const;
   std::vector<int> apply_changes(const ChangeMask& mask, const cv::Mat& blob_of, const std::vector<Blob>& blobs);
   void redecompose(Region region, std::vector<int>& touched_rooms);
   void add_neighbour_rooms(Region& region) const;
@@ -542,6 +544,7 @@ std::vector<Blob> IncrementalSegmenter::State::find_blobs(const ChangeMask& mask
       const int gr = window.y + r, gc = window.x + c;
       if (d[c] & (kLost | kReshaped)) {
         blob.structural = true;
+        blob.lost += (d[c] & kLost) != 0;
         const int id = labels.at<int>(gr, gc);
         if (id > 0) add_unique(blob.touched, id);
       }
@@ -583,11 +586,12 @@ Region IncrementalSegmenter::State::choose_region(std::vector<Blob>& blobs, bool
   for (std::size_t b = 1; b < blobs.size(); ++b) {
     Blob& blob = blobs[b];
     // A blob touching several rooms joins them (a door seen open): always decomposed again.
-    blob.absorb = !whole_map && !blob.structural && blob.touched.size() == 1;
+    blob.absorb = !whole_map && blob.touched.size() == 1 && (!blob.structural || is_speck(blob));
     if (blob.absorb) {
       RoomState& room = rooms[static_cast<std::size_t>(blob.touched.front())];
-      blob.absorb = room.absorbed + blob.gained <= allowance(room);
-      if (blob.absorb) room.absorbed += blob.gained;  // counted now, so later blobs see it
+      const long long taken = blob.gained + blob.lost;
+      blob.absorb = room.absorbed + taken <= allowance(room);
+      if (blob.absorb) room.absorbed += taken;  // counted now, so later blobs see it
     }
     if (blob.absorb) {
       ++report.absorbed_blobs;
@@ -599,8 +603,32 @@ Region IncrementalSegmenter::State::choose_region(std::vector<Blob>& blobs, bool
   return region;
 }
 
+// A speck: a small structural blob of one room (an obstacle seen inside it, a wall's edge moved by
+// a few centimetres, free cells that only change the binarized free space). Newly free cells can
+// only join parts of the room; lost ones could cut it, so the room's cells around them (in the
+// box grown by one cell, with the newly free ones) must stay one 4-connected piece, or none when
+// they were a detached island: any path of the room through the box can then go round.
+bool IncrementalSegmenter::State::is_speck(const Blob& blob) const {
+  if (blob.lost == 0) return true;  // only the binarization changed: absorbed like any new free blob
+  const int limit = static_cast<int>(std::floor(options.speck_size / resolution + 1e-9));
+  if (blob.box.width > limit || blob.box.height > limit) return false;
+  const int id = blob.touched.front();
+  if (rooms[static_cast<std::size_t>(id)].cells <= blob.lost) return false;  // nothing of the room would be left
+  const cv::Rect around = grown(blob.box, 1, cells.size());
+  cv::Mat room(around.size(), CV_8UC1);
+  for (int r = 0; r < around.height; ++r) {
+    const unsigned char* cell = cells.ptr<unsigned char>(around.y + r) + around.x;
+    const int* label = result.labels.ptr<int>(around.y + r) + around.x;
+    unsigned char* out = room.ptr<unsigned char>(r);
+    for (int c = 0; c < around.width; ++c) out[c] = cell[c] == kFree && (label[c] == id || label[c] == 0) ? 255 : 0;
+  }
+  cv::Mat components;
+  return cv::connectedComponents(room, components, 4, CV_32S) <= 2;  // background and at most one piece
+}
+
 // Applies the cell changes to the labels: lost cells leave their room, absorbed ones join theirs,
-// the others wait (kPending) for the decomposition. Returns the rooms whose cells changed.
+// the others wait (kPending) for the decomposition. Returns the rooms whose cells changed (those
+// decomposed again are refreshed by the decomposition).
 std::vector<int> IncrementalSegmenter::State::apply_changes(const ChangeMask& mask, const cv::Mat& blob_of,
                                                             const std::vector<Blob>& blobs) {
   const cv::Rect& window = mask.window;
@@ -616,6 +644,7 @@ std::vector<int> IncrementalSegmenter::State::apply_changes(const ChangeMask& ma
         --room.cells;
         room.sum_c -= window.x + c;
         room.sum_r -= window.y + r;
+        add_unique(touched_rooms, l[c]);
         l[c] = 0;
         --free_cells;
       } else if (d[c] == kGained) {
@@ -640,8 +669,7 @@ std::vector<int> IncrementalSegmenter::State::apply_changes(const ChangeMask& ma
 }
 
 // Decomposes again the free cells of the rooms in region plus the pending cells in its window, with
-// the batch stages, and gives the pieces ids (an old room's id goes to the piece that covers at
-// least half of it). Updates labels, room states, result.rooms and passages.
+// the batch stages, and gives the pieces ids (match_ids). Updates labels, room states, result.rooms and passages.
 void IncrementalSegmenter::State::redecompose(Region region, std::vector<int>& touched_rooms) {
   add_neighbour_rooms(region);
   RegionPieces found = decompose_region(region);
@@ -770,9 +798,10 @@ void IncrementalSegmenter::State::report_region(const Region& region, int region
   }
 }
 
-// An old room's id goes to the piece sharing the most cells with it if that is at least half of
-// the room (largest overlaps first, ties by piece, then room); the other pieces get new ids in
-// raster order of their first cells, deterministic like batch numbering.
+// Old ids go to pieces by overlap, largest first (ties by piece, then room), each id to one piece
+// and each piece one id: a room cut in two keeps its id on the part sharing the most of its cells,
+// which changes the fewest labels. The other pieces get new ids in raster order of their first
+// cells, deterministic like batch numbering.
 void IncrementalSegmenter::State::match_ids(const Region& region, RegionPieces& found) {
   const PieceTally& t = found.tally;
   const int pieces = found.pieces, n_old = t.n_old;
@@ -796,7 +825,6 @@ void IncrementalSegmenter::State::match_ids(const Region& region, RegionPieces& 
   reused.assign(rooms.size(), 0);
   for (const Candidate& candidate : candidates) {
     if (id_of_piece[static_cast<std::size_t>(candidate.piece)] != 0 || reused[static_cast<std::size_t>(candidate.old)]) continue;
-    if (2 * candidate.count < rooms[static_cast<std::size_t>(candidate.old)].cells) continue;
     id_of_piece[static_cast<std::size_t>(candidate.piece)] = candidate.old;
     reused[static_cast<std::size_t>(candidate.old)] = 1;
   }
@@ -941,6 +969,8 @@ IncrementalSegmenter::IncrementalSegmenter(const IncrementalOptions& options) : 
     throw Error("the absorb area must be a finite, non-negative number of square metres");
   if (!std::isfinite(options.absorb_fraction) || options.absorb_fraction < 0.0)
     throw Error("the absorb fraction must be a finite, non-negative number");
+  if (!std::isfinite(options.speck_size) || options.speck_size < 0.0)
+    throw Error("the speck size must be a finite, non-negative number of metres");
   if (!std::isfinite(options.batch_fraction) || options.batch_fraction <= 0.0)
     throw Error("the batch fraction must be a positive number");
   validate(options.segment);

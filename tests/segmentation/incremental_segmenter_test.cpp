@@ -316,6 +316,97 @@ TEST(IncrementalSegmenter, DoorClosingSplitsAndTheLargerPartKeepsTheId) {
   expect_untouched_stable(plan.world, first, closed, second);
 }
 
+TEST(IncrementalSegmenter, ARoomCutIntoThreeKeepsItsIdOnItsLargestPart) {
+  // Doors 0 and 1 open: corridor, room 0 and room 1 are one room. Closing both cuts it in three;
+  // the corridor, its largest part, is less than half of it (9344 of 24424 cells and the doors)
+  // and still keeps its id.
+  FloorPlan plan = floor_plan();
+  for (std::size_t k = 2; k < plan.doors.size(); ++k) plan.world.cells(plan.doors[k]).setTo(kOccupied);
+  IncrementalSegmenter segmenter(trivial_options());
+  const Segmentation first = segmenter.update(plan.world);
+  ASSERT_EQ(first.rooms.size(), 3u);  // corridor + rooms 0 and 1 joined, rooms 2 and 3
+  const int joined = first.labels.at<int>(plan.corridor.y + 1, plan.corridor.x + 1);
+  const auto joined_room = std::find_if(first.rooms.begin(), first.rooms.end(), [&](const Room& r) { return r.id == joined; });
+  ASSERT_NE(joined_room, first.rooms.end());
+  const double corridor_area = plan.corridor.area() * kRes * kRes;
+  ASSERT_LT(2.0 * corridor_area, joined_room->area);
+  OccupancyGrid closed = plan.world;
+  closed.cells = plan.world.cells.clone();
+  closed.cells(plan.doors[0]).setTo(kOccupied);
+  closed.cells(plan.doors[1]).setTo(kOccupied);
+  const Segmentation second = segmenter.update(closed);
+  expect_valid(closed, second);
+  ASSERT_EQ(second.rooms.size(), 5u);
+  EXPECT_EQ(second.labels.at<int>(plan.corridor.y + 1, plan.corridor.x + 1), joined);
+  for (int k = 0; k < 2; ++k) {
+    const int part = second.labels.at<int>(plan.rooms[k].y + 1, plan.rooms[k].x + 1);
+    for (const Room& r : first.rooms) EXPECT_NE(r.id, part) << "a smaller part of the cut room took an old id";
+  }
+  expect_untouched_stable(plan.world, first, closed, second);
+}
+
+// The floor plan after its first update, and the same with an obstacle filling `speck`.
+struct SpeckCase {
+  FloorPlan plan;
+  OccupancyGrid with_speck;
+};
+
+SpeckCase speck_case(const cv::Rect& speck) {
+  SpeckCase c{floor_plan(), {}};
+  c.with_speck = c.plan.world;
+  c.with_speck.cells = c.plan.world.cells.clone();
+  c.with_speck.cells(speck).setTo(kOccupied);
+  return c;
+}
+
+TEST(IncrementalSegmenter, ASpeckInsideARoomChangesNoOtherLabel) {
+  // A chair of 4 x 3 cells in the middle of room 0: its cells leave the room, no room is
+  // decomposed again and every other label stays; with speck_size 0 the room is decomposed again.
+  const FloorPlan plan = floor_plan();
+  const cv::Rect speck(plan.rooms[0].x + 30, plan.rooms[0].y + 50, 4, 3);
+  const SpeckCase c = speck_case(speck);
+  IncrementalSegmenter segmenter;
+  const Segmentation before = segmenter.update(c.plan.world);
+  const Segmentation after = segmenter.update(c.with_speck);
+  expect_valid(c.with_speck, after);
+  EXPECT_EQ(segmenter.last_update().kind, IncrementalUpdateReport::Kind::kIncremental);
+  EXPECT_EQ(segmenter.last_update().redecomposed_rooms, 0);
+  EXPECT_EQ(segmenter.last_update().absorbed_blobs, 1);
+  cv::Mat differs = before.labels != after.labels;
+  differs(speck).setTo(0);
+  EXPECT_EQ(cv::countNonZero(differs), 0);
+  EXPECT_EQ(cv::countNonZero(after.labels(speck)), 0);
+  EXPECT_EQ(after.rooms.size(), before.rooms.size());
+
+  IncrementalOptions every_speck;
+  every_speck.speck_size = 0.0;
+  IncrementalSegmenter strict(every_speck);
+  strict.update(c.plan.world);
+  expect_valid(c.with_speck, strict.update(c.with_speck));
+  EXPECT_GE(strict.last_update().redecomposed_rooms, 1);
+}
+
+TEST(IncrementalSegmenter, ASpeckThatWouldSplitARoomIsDecomposed) {
+  // An obstacle closing door 0 (18 x 4 cells) is small, but it cuts room 0 off the corridor: the
+  // joined room is decomposed again into two (trivial mode: one room per component).
+  FloorPlan plan = floor_plan();
+  for (std::size_t k = 1; k < plan.doors.size(); ++k) plan.world.cells(plan.doors[k]).setTo(kOccupied);
+  IncrementalOptions options = trivial_options();
+  options.speck_size = 1.0;  // 20 cells: the door fits
+  IncrementalSegmenter segmenter(options);
+  const Segmentation first = segmenter.update(plan.world);
+  ASSERT_EQ(first.rooms.size(), 4u);
+  OccupancyGrid closed = plan.world;
+  closed.cells = plan.world.cells.clone();
+  closed.cells(plan.doors[0]).setTo(kOccupied);
+  const Segmentation second = segmenter.update(closed);
+  expect_valid(closed, second);
+  EXPECT_EQ(second.rooms.size(), 5u);
+  EXPECT_EQ(segmenter.last_update().absorbed_blobs, 0);
+  EXPECT_NE(second.labels.at<int>(plan.corridor.y + 1, plan.corridor.x + 1),
+            second.labels.at<int>(plan.rooms[0].y + 1, plan.rooms[0].x + 1));
+}
+
 TEST(IncrementalSegmenter, RoomsRevealedThroughDoorsMatchBatchAtTheEnd) {
   const FloorPlan plan = floor_plan();
   IncrementalSegmenter segmenter;
@@ -512,7 +603,9 @@ TEST(IncrementalSegmenter, LoopClosureShiftFallsBackToBatchAndKeepsIds) {
 
 TEST(IncrementalSegmenter, SmallNoiseIsAbsorbedOrRepairedLocally) {
   const FloorPlan plan = floor_plan();
-  IncrementalSegmenter segmenter;
+  IncrementalOptions options;
+  options.speck_size = 0.0;  // obstacle specks decomposed again (ASpeckInsideARoom... covers the rule)
+  IncrementalSegmenter segmenter(options);
   OccupancyGrid grid = reveal(plan, {plan.corridor, plan.doors[0], plan.rooms[0], plan.doors[3], plan.rooms[3]});
   const Segmentation first = segmenter.update(grid);
   expect_valid(grid, first);
@@ -551,6 +644,7 @@ TEST(IncrementalSegmenter, NeighboursBehindDoorsCanBeLeftAlone) {
   const FloorPlan plan = floor_plan();
   IncrementalOptions options;
   options.neighbours_across_doors = false;
+  options.speck_size = 0.0;  // the obstacle below is a speck
   IncrementalSegmenter segmenter(options);
   const Segmentation first = segmenter.update(plan.world);
   OccupancyGrid blocked = plan.world;
@@ -663,6 +757,7 @@ TEST(IncrementalSegmenter, InflationIsRecomputedLocally) {
   const FloorPlan plan = floor_plan();
   IncrementalOptions options;
   options.segment.binarize.robot_radius = 0.15;
+  options.speck_size = 0.0;  // the obstacle below and its inflation form a speck
   IncrementalSegmenter segmenter(options);
   std::vector<cv::Rect> seen{plan.corridor};
   OccupancyGrid previous = reveal(plan, seen);
