@@ -36,6 +36,7 @@ struct RoomState {
   double sum_c = 0.0;        // sums of the column and row indices of its cells, for the centroid
   double sum_r = 0.0;
   long long absorbed = 0;    // cells joined without a decomposition since the last one
+  int split_votes = 0;       // decompositions in a row that cut a piece off this room (held back)
 };
 
 bool trivial_binarization(const BinarizeOptions& b) {
@@ -290,6 +291,7 @@ struct IncrementalSegmenter::State {
   RegionPieces decompose_region(Region& region);
   void report_region(const Region& region, int region_cells);
   void match_ids(const Region& region, RegionPieces& found);
+  void hold_back_splits(const Region& region, RegionPieces& found);
   std::vector<int> retire_old_rooms(const Region& region, const RegionPieces& found);
   void adopt_pieces(const RegionPieces& found, const WindowFrame& frame);
   void keep_border_passages(const Region& region, const RegionPieces& found, const WindowFrame& frame,
@@ -828,6 +830,7 @@ void IncrementalSegmenter::State::match_ids(const Region& region, RegionPieces& 
     id_of_piece[static_cast<std::size_t>(candidate.piece)] = candidate.old;
     reused[static_cast<std::size_t>(candidate.old)] = 1;
   }
+  hold_back_splits(region, found);
   std::vector<int> fresh;
   for (int p = 1; p <= pieces; ++p)
     if (id_of_piece[static_cast<std::size_t>(p)] == 0 && t.cells[static_cast<std::size_t>(p)] > 0) fresh.push_back(p);
@@ -837,6 +840,45 @@ void IncrementalSegmenter::State::match_ids(const Region& region, RegionPieces& 
   for (const int p : fresh) id_of_piece[static_cast<std::size_t>(p)] = next_id++;
   report.new_rooms = static_cast<int>(fresh.size());
   rooms.resize(static_cast<std::size_t>(next_id));
+}
+
+// Hysteresis on splits: a piece without an old id that is mostly cut from one old room whose id went
+// to a piece across one of the new cuts stays in that room until split_after decompositions in a
+// row have cut it off, so that a cut the decomposition finds one scan and drops the next does not
+// hand out an id each time. Pieces mostly of newly seen cells, and parts no longer connected to
+// the room (a door closed), are new rooms at once.
+void IncrementalSegmenter::State::hold_back_splits(const Region& region, RegionPieces& found) {
+  const PieceTally& t = found.tally;
+  const std::size_t columns = static_cast<std::size_t>(t.n_old) + 1;
+  std::vector<std::pair<int, int>> across;  // pieces (index + 1) on the two sides of a cut
+  for (const Segment2& c : found.set.cuts) {
+    Point2 left, right;
+    if (!cut_sides(c.a, c.b, left, right)) continue;
+    across.emplace_back(piece_containing(found.set.pieces, left) + 1, piece_containing(found.set.pieces, right) + 1);
+  }
+  auto next_to_room = [&](int piece, int id) {
+    return std::any_of(across.begin(), across.end(), [&](const std::pair<int, int>& a) {
+      return (a.first == piece && a.second > 0 && found.id_of_piece[static_cast<std::size_t>(a.second)] == id) ||
+             (a.second == piece && a.first > 0 && found.id_of_piece[static_cast<std::size_t>(a.first)] == id);
+    });
+  };
+  std::vector<char> cut(rooms.size(), 0);
+  for (int p = 1; p <= found.pieces; ++p) {
+    const std::size_t piece = static_cast<std::size_t>(p);
+    if (found.id_of_piece[piece] != 0 || t.cells[piece] == 0) continue;
+    for (int j = 0; j < t.n_old; ++j) {
+      const int old = region.ids[static_cast<std::size_t>(j)];
+      if (2 * t.overlap[piece * columns + static_cast<std::size_t>(j)] <= t.cells[piece] || !found.reused[static_cast<std::size_t>(old)] ||
+          !next_to_room(p, old))
+        continue;
+      cut[static_cast<std::size_t>(old)] = 1;
+      if (rooms[static_cast<std::size_t>(old)].split_votes + 1 < options.split_after) found.id_of_piece[piece] = old;
+    }
+  }
+  for (const int id : region.ids) {
+    RoomState& room = rooms[static_cast<std::size_t>(id)];
+    room.split_votes = cut[static_cast<std::size_t>(id)] && room.split_votes + 1 < options.split_after ? room.split_votes + 1 : 0;
+  }
 }
 
 // Old rooms of the region die unless reused, and every cell of the region takes its piece's id.
@@ -860,32 +902,44 @@ std::vector<int> IncrementalSegmenter::State::retire_old_rooms(const Region& reg
   return removed;
 }
 
-// Every piece that labels a cell is a live room, its state rebuilt from its cells alone (nothing
-// absorbed since) and its polygon in world metres.
+// Every piece that labels a cell belongs to a live room, its state rebuilt from its pieces' cells
+// alone (nothing absorbed since) and its polygon, in world metres, that of its largest piece (a
+// room holding back a split has two).
 void IncrementalSegmenter::State::adopt_pieces(const RegionPieces& found, const WindowFrame& frame) {
   const PieceTally& t = found.tally;
+  std::vector<int> largest(rooms.size(), 0);  // by id: its piece with the most cells
   for (int p = 1; p <= found.pieces; ++p) {
     const std::size_t piece = static_cast<std::size_t>(p);
     if (t.cells[piece] == 0) continue;
-    const int id = found.id_of_piece[piece];
-    RoomState& room = rooms[static_cast<std::size_t>(id)];
-    room.alive = true;
-    room.cells = t.cells[piece];
-    room.sum_c = static_cast<double>(t.sum_c[piece]);
-    room.sum_r = static_cast<double>(t.sum_r[piece]);
-    room.absorbed = 0;
-    room.box = cv::Rect(t.min_c[piece], t.min_r[piece], t.max_c[piece] - t.min_c[piece] + 1,
-                        t.max_r[piece] - t.min_r[piece] + 1);
+    const std::size_t id = static_cast<std::size_t>(found.id_of_piece[piece]);
+    RoomState& room = rooms[id];
+    const cv::Rect box(t.min_c[piece], t.min_r[piece], t.max_c[piece] - t.min_c[piece] + 1, t.max_r[piece] - t.min_r[piece] + 1);
+    if (largest[id] == 0) {
+      room.alive = true;
+      room.cells = 0;
+      room.sum_c = room.sum_r = 0.0;
+      room.absorbed = 0;
+      room.box = box;
+    }
+    room.cells += t.cells[piece];
+    room.sum_c += static_cast<double>(t.sum_c[piece]);
+    room.sum_r += static_cast<double>(t.sum_r[piece]);
+    room.box |= box;
+    if (largest[id] == 0 || t.cells[piece] > t.cells[static_cast<std::size_t>(largest[id])]) largest[id] = p;
+  }
+  for (std::size_t id = 1; id < rooms.size(); ++id) {
+    if (largest[id] == 0) continue;
+    const PolygonWithHoles& piece = found.set.pieces[static_cast<std::size_t>(largest[id]) - 1];
     PolygonWithHoles world;
-    for (const Point2& v : found.set.pieces[piece - 1].outer) world.outer.push_back(frame.to_world(v));
-    for (const Ring& hole : found.set.pieces[piece - 1].holes) {
+    for (const Point2& v : piece.outer) world.outer.push_back(frame.to_world(v));
+    for (const Ring& hole : piece.holes) {
       Ring ring;
       ring.reserve(hole.size());
       for (const Point2& v : hole) ring.push_back(frame.to_world(v));
       world.holes.push_back(std::move(ring));
     }
     world = normalized_orientation(world);
-    refresh_room(id, &world);
+    refresh_room(static_cast<int>(id), &world);
   }
 }
 
@@ -969,6 +1023,7 @@ IncrementalSegmenter::IncrementalSegmenter(const IncrementalOptions& options) : 
     throw Error("the absorb area must be a finite, non-negative number of square metres");
   if (!std::isfinite(options.absorb_fraction) || options.absorb_fraction < 0.0)
     throw Error("the absorb fraction must be a finite, non-negative number");
+  if (options.split_after < 1) throw Error("split_after must be at least 1 decomposition");
   if (!std::isfinite(options.speck_size) || options.speck_size < 0.0)
     throw Error("the speck size must be a finite, non-negative number of metres");
   if (!std::isfinite(options.batch_fraction) || options.batch_fraction <= 0.0)

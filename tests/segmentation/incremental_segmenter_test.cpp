@@ -407,6 +407,43 @@ TEST(IncrementalSegmenter, ASpeckThatWouldSplitARoomIsDecomposed) {
             second.labels.at<int>(plan.rooms[0].y + 1, plan.rooms[0].x + 1));
 }
 
+// A 10 m x 5 m hall whose middle narrows, update after update, into a 0.6 m door: wall stubs from
+// both long walls, one cell thicker each time (too long to be specks).
+OccupancyGrid narrowing_hall(int thickness) {
+  OccupancyGrid grid;
+  grid.resolution = kRes;
+  grid.cells = cv::Mat(100, 200, CV_8UC1, cv::Scalar(kOccupied));
+  grid.cells(cv::Rect(4, 4, 192, 92)).setTo(kFree);
+  if (thickness > 0) {
+    grid.cells(cv::Rect(100, 4, thickness, 40)).setTo(kOccupied);
+    grid.cells(cv::Rect(100, 56, thickness, 40)).setTo(kOccupied);
+  }
+  return grid;
+}
+
+TEST(IncrementalSegmenter, ADoorCutIsMadeOnlyWhenSplitAfterDecompositionsInARowFindIt) {
+  ASSERT_EQ(segment(narrowing_hall(2)).rooms.size(), 2u);  // batch cuts the hall at the door
+  for (const int split_after : {1, 3}) {
+    IncrementalOptions options;
+    options.split_after = split_after;
+    IncrementalSegmenter segmenter(options);
+    const Segmentation first = segmenter.update(narrowing_hall(0));
+    ASSERT_EQ(first.rooms.size(), 1u);
+    const int hall = first.rooms[0].id;
+    for (int k = 1; k <= 3; ++k) {
+      const OccupancyGrid grid = narrowing_hall(k + 1);
+      const Segmentation& s = segmenter.update(grid);
+      expect_valid(grid, s);
+      ASSERT_GE(segmenter.last_update().redecomposed_rooms, 1) << "update " << k;
+      const std::size_t expected = k < split_after ? 1u : 2u;
+      EXPECT_EQ(s.rooms.size(), expected) << "split_after " << split_after << ", update " << k;
+      // The hall keeps its id on its left part throughout; held back, the right part has it too.
+      EXPECT_EQ(s.labels.at<int>(50, 20), hall);
+      EXPECT_EQ(s.labels.at<int>(50, 180) == hall, k < split_after) << "split_after " << split_after << ", update " << k;
+    }
+  }
+}
+
 TEST(IncrementalSegmenter, RoomsRevealedThroughDoorsMatchBatchAtTheEnd) {
   const FloorPlan plan = floor_plan();
   IncrementalSegmenter segmenter;

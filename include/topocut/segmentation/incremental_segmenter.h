@@ -42,6 +42,12 @@ struct IncrementalOptions {
   // with most scans (a chair, a person, a wall's edge a few centimetres off); 0 decomposes every
   // one again.
   double speck_size = 0.5;
+  // A room is split only when split_after decompositions in a row cut the same room: a cut found
+  // one scan and dropped the next (the room merging stage deciding by a hair) would otherwise hand
+  // out a new id and take it back with every other scan. Until then the cut-off piece keeps the
+  // room's id, and the room's polygon is its larger part. Pieces mostly of newly seen cells are new
+  // rooms at once. 1: split as soon as batch would.
+  int split_after = 3;
   // Rooms sharing a passage with a room that is decomposed again go with it (one ring), so that
   // door finding and room merging see both sides of the cut, as in batch. With false only rooms
   // joined by cuts that were not found as doors do: half the work, about one point of recall less
