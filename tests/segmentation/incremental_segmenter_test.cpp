@@ -316,6 +316,14 @@ TEST(IncrementalSegmenter, DoorClosingSplitsAndTheLargerPartKeepsTheId) {
   expect_untouched_stable(plan.world, first, closed, second);
 }
 
+// A copy of grid with the cells of every rectangle set to value.
+OccupancyGrid with_cells(const OccupancyGrid& grid, const std::vector<cv::Rect>& rects, unsigned char value) {
+  OccupancyGrid out = grid;
+  out.cells = grid.cells.clone();
+  for (const cv::Rect& r : rects) out.cells(r).setTo(value);
+  return out;
+}
+
 TEST(IncrementalSegmenter, ARoomCutIntoThreeKeepsItsIdOnItsLargestPart) {
   // Doors 0 and 1 open: corridor, room 0 and room 1 are one room. Closing both cuts it in three;
   // the corridor, its largest part, is less than half of it (9344 of 24424 cells and the doors)
@@ -330,10 +338,7 @@ TEST(IncrementalSegmenter, ARoomCutIntoThreeKeepsItsIdOnItsLargestPart) {
   ASSERT_NE(joined_room, first.rooms.end());
   const double corridor_area = plan.corridor.area() * kRes * kRes;
   ASSERT_LT(2.0 * corridor_area, joined_room->area);
-  OccupancyGrid closed = plan.world;
-  closed.cells = plan.world.cells.clone();
-  closed.cells(plan.doors[0]).setTo(kOccupied);
-  closed.cells(plan.doors[1]).setTo(kOccupied);
+  const OccupancyGrid closed = with_cells(plan.world, {plan.doors[0], plan.doors[1]}, kOccupied);
   const Segmentation second = segmenter.update(closed);
   expect_valid(closed, second);
   ASSERT_EQ(second.rooms.size(), 5u);
@@ -352,11 +357,8 @@ struct SpeckCase {
 };
 
 SpeckCase speck_case(const cv::Rect& speck) {
-  SpeckCase c{floor_plan(), {}};
-  c.with_speck = c.plan.world;
-  c.with_speck.cells = c.plan.world.cells.clone();
-  c.with_speck.cells(speck).setTo(kOccupied);
-  return c;
+  const FloorPlan plan = floor_plan();
+  return {plan, with_cells(plan.world, {speck}, kOccupied)};
 }
 
 TEST(IncrementalSegmenter, ASpeckInsideARoomChangesNoOtherLabel) {
@@ -396,9 +398,7 @@ TEST(IncrementalSegmenter, ASpeckThatWouldSplitARoomIsDecomposed) {
   IncrementalSegmenter segmenter(options);
   const Segmentation first = segmenter.update(plan.world);
   ASSERT_EQ(first.rooms.size(), 4u);
-  OccupancyGrid closed = plan.world;
-  closed.cells = plan.world.cells.clone();
-  closed.cells(plan.doors[0]).setTo(kOccupied);
+  const OccupancyGrid closed = with_cells(plan.world, {plan.doors[0]}, kOccupied);
   const Segmentation second = segmenter.update(closed);
   expect_valid(closed, second);
   EXPECT_EQ(second.rooms.size(), 5u);

@@ -118,13 +118,20 @@ TEST(IncrementalWallMap, RepeatedScanChangesNothing) {
   EXPECT_TRUE(map.add(scans[0], segments).empty());
 }
 
-TEST(IncrementalWallMap, WallsWinOverLaterRays) {
-  // A wall segment seen first stays occupied when a later scan's ray crosses it.
+// One beam from the origin along +x, hitting at 4 m, and a wall segment across it at x = 2 m.
+PosedScan one_beam_through_wall() {
   PosedScan scan;
   scan.pose = {0.0, 0.0, 0.0};
   scan.scan.angles = {0.0};
   scan.scan.ranges = {4.0};
-  const std::vector<WallSegment> wall{{{{2.0, -1.0}, {2.0, 1.0}}, 0, 2}};
+  return scan;
+}
+const WallSegment kWallAt2m{{{2.0, -1.0}, {2.0, 1.0}}, 0, 2};
+
+TEST(IncrementalWallMap, WallsWinOverLaterRays) {
+  // A wall segment seen first stays occupied when a later scan's ray crosses it.
+  const PosedScan scan = one_beam_through_wall();
+  const std::vector<WallSegment> wall{kWallAt2m};
   IncrementalWallMap map(std::span(&scan, 1), wall);
   map.add(scan, {});
   const OccupancyGrid& g = map.grid();
@@ -163,11 +170,8 @@ TEST(IncrementalWallMap, WithEvidenceRepeatedScansSettleAndTheReplayFollows) {
 TEST(IncrementalWallMap, WithEvidenceAWallSeenOnceFadesUnderLaterRays) {
   // Unlike the map drawn as it is (WallsWinOverLaterRays), evidence lets rays clear a wall seen
   // once, after enough of them: a person who stood there and walked away.
-  PosedScan scan;
-  scan.pose = {0.0, 0.0, 0.0};
-  scan.scan.angles = {0.0};
-  scan.scan.ranges = {4.0};
-  const std::vector<WallSegment> wall{{{{2.0, -1.0}, {2.0, 1.0}}, 0, 2}};
+  const PosedScan scan = one_beam_through_wall();
+  const std::vector<WallSegment> wall{kWallAt2m};
   IncrementalWallMap map(std::span(&scan, 1), wall, {}, OccupancyEvidenceOptions{});
   map.add(PosedScan{{}, scan.pose}, wall);
   const OccupancyGrid& g = map.grid();
