@@ -38,8 +38,7 @@ struct LogFigures {
 
 LogFigures replay_file(const std::string& name, const std::string& path, int batch_every, bool settle) {
   GridReplayOptions options;
-  options.incremental.segment = wall_map_segment_options();  // as `walls --incremental`, without the
-  options.incremental.segment.clean = false;                  // cleaning, which is not incremental
+  options.incremental = wall_map_incremental_options();  // as `walls --incremental`
   options.compare_batch = true;
   options.batch_every = batch_every;
   const std::vector<PosedScan> scans = posed_scans(read_carmen_log(path));

@@ -47,8 +47,7 @@ void replay(const std::vector<PosedScan>& scans, const WallsOptions& walls, cons
             const ReplayArguments& arguments, const std::string& out_map, const std::string& out_color,
             const std::string& out_rooms) {
   GridReplayOptions options;
-  options.incremental.segment = segment_options;
-  options.incremental.segment.clean = false;  // not incremental (IncrementalOptions)
+  options.incremental = wall_map_incremental_options(segment_options);
   options.compare_batch = arguments.compare_batch;
   options.batch_every = arguments.batch_every;
   options.progress = [](const std::string& line) { progress(line); };

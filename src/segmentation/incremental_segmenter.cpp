@@ -671,7 +671,8 @@ std::vector<int> IncrementalSegmenter::State::apply_changes(const ChangeMask& ma
 }
 
 // Decomposes again the free cells of the rooms in region plus the pending cells in its window, with
-// the batch stages, and gives the pieces ids (match_ids). Updates labels, room states, result.rooms and passages.
+// the batch stages, and gives the pieces ids (match_ids). Updates labels, room states,
+// result.rooms and passages.
 void IncrementalSegmenter::State::redecompose(Region region, std::vector<int>& touched_rooms) {
   add_neighbour_rooms(region);
   RegionPieces found = decompose_region(region);
