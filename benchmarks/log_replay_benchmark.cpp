@@ -1,15 +1,17 @@
 // Incremental segmentation on real laser logs: each CARMEN log of ../shared/datasets/carmen is
-// replayed scan by scan (WallMapReplay: the wall map grows with every scan; replay_grids: every
-// change goes to the incremental segmenter) and batch segment() runs on the same grids. Prints per log the update
+// replayed scan by scan (WallMapReplay: the wall map grows with every scan, drawn as each scan sees
+// it, or with --settle its cells settled by occupancy evidence; replay_grids: every change
+// goes to the incremental segmenter) and batch segment() runs on the same grids. Prints per log the update
 // times, the speed-up over batch, the stability of the room ids and the final rooms, and checks
 // the targets: update p95 <= 5 ms, incremental >= 5x faster than batch (total time on the same
 // updates), churn median 0 and p95 <= 1 % of the labelled cells.
 //
-//   log_replay_benchmark [--batch-every N] [LOG_NAME ...]   (default: intel aces csail fhw)
+//   log_replay_benchmark [--batch-every N] [--settle] [LOG_NAME ...]   (default: intel aces csail fhw)
 //
 // Times are process CPU time, single-threaded OpenCV; wall clock beside.
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -34,14 +36,13 @@ struct LogFigures {
   TimeStatistics inc, wall, batch, paired;
 };
 
-LogFigures replay_file(const std::string& name, const std::string& path, int batch_every) {
+LogFigures replay_file(const std::string& name, const std::string& path, int batch_every, bool settle) {
   GridReplayOptions options;
-  options.incremental.segment = wall_map_segment_options();  // as `walls --incremental`, without the
-  options.incremental.segment.clean = false;                  // cleaning, which is not incremental
+  options.incremental = wall_map_incremental_options();  // as `walls --incremental`
   options.compare_batch = true;
   options.batch_every = batch_every;
   const std::vector<PosedScan> scans = posed_scans(read_carmen_log(path));
-  WallMapReplay log_map(scans);
+  WallMapReplay log_map(scans, {}, settle ? std::optional(OccupancyEvidenceOptions{}) : std::nullopt);
   LogFigures f{name, replay_grids(steps_of(log_map), options), {}, {}, {}, {}};
   std::vector<double> inc, wall, batch, paired;
   for (const UpdateRecord& u : f.run.updates) {
@@ -63,10 +64,12 @@ LogFigures replay_file(const std::string& name, const std::string& path, int bat
 int main(int argc, char** argv) {
   topocut::keep_freed_memory_for_reuse();
   int batch_every = 1;
+  bool settle = false;
   std::vector<std::string> names;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "--batch-every" && i + 1 < argc) batch_every = std::max(1, std::atoi(argv[++i]));
+    else if (a == "--settle") settle = true;
     else names.push_back(a);
   }
   if (names.empty()) names = {"intel", "aces", "csail", "fhw"};
@@ -76,8 +79,9 @@ int main(int argc, char** argv) {
     return 0;
   }
   cv::setNumThreads(1);
-  std::printf("# Incremental segmentation replayed from real laser logs\n\nmachine: %s; batch on %s\n\n",
+  std::printf("# Incremental segmentation replayed from real laser logs\n\nmachine: %s; grid: %s; batch on %s\n\n",
               topocut::benchmarks::cpu_model().c_str(),
+              settle ? "cells settled by occupancy evidence" : "every scan drawn as it is",
               batch_every == 1 ? "every update" : ("every " + std::to_string(batch_every) + "th update and the last").c_str());
   std::vector<LogFigures> logs;
   for (const std::string& name : names) {
@@ -87,7 +91,7 @@ int main(int argc, char** argv) {
       continue;
     }
     std::fprintf(stderr, "replaying %s ...\n", name.c_str());
-    logs.push_back(replay_file(name, path, batch_every));
+    logs.push_back(replay_file(name, path, batch_every, settle));
   }
 
   std::vector<std::vector<std::string>> times{{"log", "grid", "scans", "updates", "inc median ms", "inc p95 ms", "inc max ms",

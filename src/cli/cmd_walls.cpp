@@ -37,6 +37,7 @@ std::string skipped_summary(const CarmenLog& log) {
 // incremental segmenter.
 struct ReplayArguments {
   bool compare_batch = false;
+  bool settle = false;
   int batch_every = 1;
   std::string frames;
   int frame_every = 1;
@@ -46,15 +47,14 @@ void replay(const std::vector<PosedScan>& scans, const WallsOptions& walls, cons
             const ReplayArguments& arguments, const std::string& out_map, const std::string& out_color,
             const std::string& out_rooms) {
   GridReplayOptions options;
-  options.incremental.segment = segment_options;
-  options.incremental.segment.clean = false;  // not incremental (IncrementalOptions)
+  options.incremental = wall_map_incremental_options(segment_options);
   options.compare_batch = arguments.compare_batch;
   options.batch_every = arguments.batch_every;
   options.progress = [](const std::string& line) { progress(line); };
   // A real laser reaches tens of metres: its range circle would hide the map.
   FrameWriter frames(arguments.frames, arguments.frame_every, 0.0);
   options.on_update = [&](const ReplayFrame& f) { frames.update(f.update, f.scan, f.grid, f.segmentation, f.path, f.pose); };
-  WallMapReplay log_map(scans, walls);
+  WallMapReplay log_map(scans, walls, arguments.settle ? std::optional(OccupancyEvidenceOptions{}) : std::nullopt);
   const GridReplay run = replay_grids(steps_of(log_map), options);
   if (!run.updates.empty()) {  // end on the finished map
     const int scan = run.updates.back().scan;
@@ -63,7 +63,8 @@ void replay(const std::vector<PosedScan>& scans, const WallsOptions& walls, cons
   }
   const OccupancyGrid& grid = run.final_map;
   std::cout << "map: " << grid.width() << " x " << grid.height() << " cells at " << grid.resolution << " m, origin ("
-            << grid.origin.x << ", " << grid.origin.y << "); built scan by scan, walls not merged\n";
+            << grid.origin.x << ", " << grid.origin.y << "); built scan by scan, walls not merged"
+            << (arguments.settle ? ", cells settled by occupancy evidence" : "") << "\n";
   std::cout << "scans: " << run.scans << ", updates: " << run.updates.size() << "\n";
   std::cout << format_update_times(run.updates);
   std::cout << "stability: " << format_stability(run.stability) << "\n";
@@ -105,6 +106,7 @@ po::options_description walls_options(WallsRequest& r, const SegmentSettings& se
       ("out-rooms", po::value<std::string>(&r.out_rooms), "write the rooms as JSON (implies --segment)")
       ("incremental", "replay the log: build the grid scan by scan and segment every change incrementally")
       ("compare-batch", po::bool_switch(&r.replay.compare_batch), "with --incremental: also run the batch segmenter on every update, timed")
+      ("settle", po::bool_switch(&r.replay.settle), "with --incremental: settle each cell by occupancy evidence (log-odds, OctoMap's hit 0.7 / miss 0.4) instead of drawing every scan as it is")
       ("batch-every", po::value<int>(&r.replay.batch_every)->default_value(1), "with --compare-batch: only every N-th update (and the last)")
       ("frames", po::value<std::string>(&r.replay.frames), "with --incremental: write a PNG frame of every update into this folder")
       ("frame-every", po::value<int>(&r.replay.frame_every)->default_value(1), "with --frames: only every N-th update (and the last)");
@@ -127,8 +129,10 @@ WallsRequest parse_request(const std::vector<std::string>& args) {
       "merged into walls. The walls (occupied) and the space the rays crossed (free) make an occupancy\n"
       "grid; with --segment the grid is segmented into rooms.\n\n"
       "--incremental replays the log as the robot saw it: after every scan the grid holds the rays\n"
-      "and wall segments seen so far (segments are not merged, since merging needs later scans), and\n"
-      "every scan that changes it goes to the incremental segmenter. Prints the time per update\n"
+      "and wall segments seen so far (segments are not merged, since merging needs later scans;\n"
+      "with --settle they are occupancy evidence instead: log-odds, hit 0.7, miss 0.4, clamped to\n"
+      "0.12..0.97, a cell turns occupied at 0.65 and free at 0.45), and every scan that changes it\n"
+      "goes to the incremental segmenter. Prints the time per update\n"
       "(median, p95, max), with --compare-batch batch segmentation on the same updates, and the\n"
       "stability of the room ids (churn: share of labelled cells whose room changed per update).",
       walls_options(r, segment_defaults), positional, args);
@@ -146,8 +150,8 @@ WallsRequest parse_request(const std::vector<std::string>& args) {
   else if (r.element == "square") r.options.extraction.labeling.element = StructuringElement::kSquare;
   else throw UsageError("--element must be 'cross' or 'square', got '" + r.element + "'");
   r.incremental = vm->count("incremental") > 0;
-  if (!r.incremental && (r.replay.compare_batch || !r.replay.frames.empty()))
-    throw UsageError("--compare-batch and --frames need --incremental");
+  if (!r.incremental && (r.replay.compare_batch || r.replay.settle || !r.replay.frames.empty()))
+    throw UsageError("--compare-batch, --settle and --frames need --incremental");
   if (r.incremental && !r.out_walls.empty()) throw UsageError("--out-walls needs merged walls: not with --incremental");
   if (r.replay.batch_every < 1) throw UsageError("--batch-every must be at least 1");
   if (r.replay.frame_every < 1) throw UsageError("--frame-every must be at least 1");

@@ -100,6 +100,8 @@ IncrementalOptions incremental_options(py::dict kwargs) {
   o.absorb_fraction = pop<double>(kwargs, "absorb_fraction", o.absorb_fraction);
   o.batch_fraction = pop<double>(kwargs, "batch_fraction", o.batch_fraction);
   o.neighbours_across_doors = pop<bool>(kwargs, "neighbours_across_doors", o.neighbours_across_doors);
+  o.speck_size = pop<double>(kwargs, "speck_size", o.speck_size);
+  o.split_after = pop<int>(kwargs, "split_after", o.split_after);
   SegmentSettings s{o.segment, {}};
   s.switches.no_clean = true;
   o.segment = settings_from(kwargs, s);

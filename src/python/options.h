@@ -35,7 +35,8 @@ void apply(const GridReading& reading, double resolution, const py::handle& orig
 // value ValueError with the command's message.
 SegmentOptions segment_options(const py::dict& kwargs);
 
-// Incremental options: absorb_area, absorb_fraction, batch_fraction, neighbours_across_doors and
+// Incremental options: absorb_area, absorb_fraction, batch_fraction, neighbours_across_doors,
+// speck_size, split_after and
 // every segment option (the real-map cleaning stays off, as IncrementalOptions says).
 IncrementalOptions incremental_options(py::dict kwargs);
 

@@ -36,6 +36,7 @@ struct RoomState {
   double sum_c = 0.0;        // sums of the column and row indices of its cells, for the centroid
   double sum_r = 0.0;
   long long absorbed = 0;    // cells joined without a decomposition since the last one
+  int split_votes = 0;       // decompositions in a row that cut a piece off this room (held back)
 };
 
 bool trivial_binarization(const BinarizeOptions& b) {
@@ -155,6 +156,7 @@ struct ChangeMask {
 // cells around its newly free cells).
 struct Blob {
   int gained = 0;
+  int lost = 0;
   bool structural = false;  // lost or reshaped cells: the touched rooms must be decomposed again
   std::vector<int> touched;
   cv::Rect box;
@@ -282,12 +284,14 @@ struct IncrementalSegmenter::State {
   ChangeMask take_changes(const OccupancyGrid& grid, const cv::Rect& changed);
   std::vector<Blob> find_blobs(const ChangeMask& mask, cv::Mat& blob_of) const;
   Region choose_region(std::vector<Blob>& blobs, bool whole_map);
+  bool is_speck(const Blob& blob) const;
   std::vector<int> apply_changes(const ChangeMask& mask, const cv::Mat& blob_of, const std::vector<Blob>& blobs);
   void redecompose(Region region, std::vector<int>& touched_rooms);
   void add_neighbour_rooms(Region& region) const;
   RegionPieces decompose_region(Region& region);
   void report_region(const Region& region, int region_cells);
   void match_ids(const Region& region, RegionPieces& found);
+  void hold_back_splits(const Region& region, RegionPieces& found);
   std::vector<int> retire_old_rooms(const Region& region, const RegionPieces& found);
   void adopt_pieces(const RegionPieces& found, const WindowFrame& frame);
   void keep_border_passages(const Region& region, const RegionPieces& found, const WindowFrame& frame,
@@ -542,6 +546,7 @@ std::vector<Blob> IncrementalSegmenter::State::find_blobs(const ChangeMask& mask
       const int gr = window.y + r, gc = window.x + c;
       if (d[c] & (kLost | kReshaped)) {
         blob.structural = true;
+        blob.lost += (d[c] & kLost) != 0;
         const int id = labels.at<int>(gr, gc);
         if (id > 0) add_unique(blob.touched, id);
       }
@@ -583,11 +588,12 @@ Region IncrementalSegmenter::State::choose_region(std::vector<Blob>& blobs, bool
   for (std::size_t b = 1; b < blobs.size(); ++b) {
     Blob& blob = blobs[b];
     // A blob touching several rooms joins them (a door seen open): always decomposed again.
-    blob.absorb = !whole_map && !blob.structural && blob.touched.size() == 1;
+    blob.absorb = !whole_map && blob.touched.size() == 1 && (!blob.structural || is_speck(blob));
     if (blob.absorb) {
       RoomState& room = rooms[static_cast<std::size_t>(blob.touched.front())];
-      blob.absorb = room.absorbed + blob.gained <= allowance(room);
-      if (blob.absorb) room.absorbed += blob.gained;  // counted now, so later blobs see it
+      const long long taken = blob.gained + blob.lost;
+      blob.absorb = room.absorbed + taken <= allowance(room);
+      if (blob.absorb) room.absorbed += taken;  // counted now, so later blobs see it
     }
     if (blob.absorb) {
       ++report.absorbed_blobs;
@@ -599,8 +605,32 @@ Region IncrementalSegmenter::State::choose_region(std::vector<Blob>& blobs, bool
   return region;
 }
 
+// A speck: a small structural blob of one room (an obstacle seen inside it, a wall's edge moved by
+// a few centimetres, free cells that only change the binarized free space). Newly free cells can
+// only join parts of the room; lost ones could cut it, so the room's cells around them (in the
+// box grown by one cell, with the newly free ones) must stay one 4-connected piece, or none when
+// they were a detached island: any path of the room through the box can then go round.
+bool IncrementalSegmenter::State::is_speck(const Blob& blob) const {
+  if (blob.lost == 0) return true;  // only the binarization changed: absorbed like any new free blob
+  const int limit = static_cast<int>(std::floor(options.speck_size / resolution + 1e-9));
+  if (blob.box.width > limit || blob.box.height > limit) return false;
+  const int id = blob.touched.front();
+  if (rooms[static_cast<std::size_t>(id)].cells <= blob.lost) return false;  // nothing of the room would be left
+  const cv::Rect around = grown(blob.box, 1, cells.size());
+  cv::Mat room(around.size(), CV_8UC1);
+  for (int r = 0; r < around.height; ++r) {
+    const unsigned char* cell = cells.ptr<unsigned char>(around.y + r) + around.x;
+    const int* label = result.labels.ptr<int>(around.y + r) + around.x;
+    unsigned char* out = room.ptr<unsigned char>(r);
+    for (int c = 0; c < around.width; ++c) out[c] = cell[c] == kFree && (label[c] == id || label[c] == 0) ? 255 : 0;
+  }
+  cv::Mat components;
+  return cv::connectedComponents(room, components, 4, CV_32S) <= 2;  // background and at most one piece
+}
+
 // Applies the cell changes to the labels: lost cells leave their room, absorbed ones join theirs,
-// the others wait (kPending) for the decomposition. Returns the rooms whose cells changed.
+// the others wait (kPending) for the decomposition. Returns the rooms whose cells changed (those
+// decomposed again are refreshed by the decomposition).
 std::vector<int> IncrementalSegmenter::State::apply_changes(const ChangeMask& mask, const cv::Mat& blob_of,
                                                             const std::vector<Blob>& blobs) {
   const cv::Rect& window = mask.window;
@@ -616,6 +646,7 @@ std::vector<int> IncrementalSegmenter::State::apply_changes(const ChangeMask& ma
         --room.cells;
         room.sum_c -= window.x + c;
         room.sum_r -= window.y + r;
+        add_unique(touched_rooms, l[c]);
         l[c] = 0;
         --free_cells;
       } else if (d[c] == kGained) {
@@ -640,8 +671,8 @@ std::vector<int> IncrementalSegmenter::State::apply_changes(const ChangeMask& ma
 }
 
 // Decomposes again the free cells of the rooms in region plus the pending cells in its window, with
-// the batch stages, and gives the pieces ids (an old room's id goes to the piece that covers at
-// least half of it). Updates labels, room states, result.rooms and passages.
+// the batch stages, and gives the pieces ids (match_ids). Updates labels, room states,
+// result.rooms and passages.
 void IncrementalSegmenter::State::redecompose(Region region, std::vector<int>& touched_rooms) {
   add_neighbour_rooms(region);
   RegionPieces found = decompose_region(region);
@@ -770,9 +801,10 @@ void IncrementalSegmenter::State::report_region(const Region& region, int region
   }
 }
 
-// An old room's id goes to the piece sharing the most cells with it if that is at least half of
-// the room (largest overlaps first, ties by piece, then room); the other pieces get new ids in
-// raster order of their first cells, deterministic like batch numbering.
+// Old ids go to pieces by overlap, largest first (ties by piece, then room), each id to one piece
+// and each piece one id: a room cut in two keeps its id on the part sharing the most of its cells,
+// which changes the fewest labels. The other pieces get new ids in raster order of their first
+// cells, deterministic like batch numbering.
 void IncrementalSegmenter::State::match_ids(const Region& region, RegionPieces& found) {
   const PieceTally& t = found.tally;
   const int pieces = found.pieces, n_old = t.n_old;
@@ -796,10 +828,10 @@ void IncrementalSegmenter::State::match_ids(const Region& region, RegionPieces& 
   reused.assign(rooms.size(), 0);
   for (const Candidate& candidate : candidates) {
     if (id_of_piece[static_cast<std::size_t>(candidate.piece)] != 0 || reused[static_cast<std::size_t>(candidate.old)]) continue;
-    if (2 * candidate.count < rooms[static_cast<std::size_t>(candidate.old)].cells) continue;
     id_of_piece[static_cast<std::size_t>(candidate.piece)] = candidate.old;
     reused[static_cast<std::size_t>(candidate.old)] = 1;
   }
+  hold_back_splits(region, found);
   std::vector<int> fresh;
   for (int p = 1; p <= pieces; ++p)
     if (id_of_piece[static_cast<std::size_t>(p)] == 0 && t.cells[static_cast<std::size_t>(p)] > 0) fresh.push_back(p);
@@ -809,6 +841,45 @@ void IncrementalSegmenter::State::match_ids(const Region& region, RegionPieces& 
   for (const int p : fresh) id_of_piece[static_cast<std::size_t>(p)] = next_id++;
   report.new_rooms = static_cast<int>(fresh.size());
   rooms.resize(static_cast<std::size_t>(next_id));
+}
+
+// Hysteresis on splits: a piece without an old id that is mostly cut from one old room whose id went
+// to a piece across one of the new cuts stays in that room until split_after decompositions in a
+// row have cut it off, so that a cut the decomposition finds one scan and drops the next does not
+// hand out an id each time. Pieces mostly of newly seen cells, and parts no longer connected to
+// the room (a door closed), are new rooms at once.
+void IncrementalSegmenter::State::hold_back_splits(const Region& region, RegionPieces& found) {
+  const PieceTally& t = found.tally;
+  const std::size_t columns = static_cast<std::size_t>(t.n_old) + 1;
+  std::vector<std::pair<int, int>> across;  // pieces (index + 1) on the two sides of a cut
+  for (const Segment2& c : found.set.cuts) {
+    Point2 left, right;
+    if (!cut_sides(c.a, c.b, left, right)) continue;
+    across.emplace_back(piece_containing(found.set.pieces, left) + 1, piece_containing(found.set.pieces, right) + 1);
+  }
+  auto next_to_room = [&](int piece, int id) {
+    return std::any_of(across.begin(), across.end(), [&](const std::pair<int, int>& a) {
+      return (a.first == piece && a.second > 0 && found.id_of_piece[static_cast<std::size_t>(a.second)] == id) ||
+             (a.second == piece && a.first > 0 && found.id_of_piece[static_cast<std::size_t>(a.first)] == id);
+    });
+  };
+  std::vector<char> cut(rooms.size(), 0);
+  for (int p = 1; p <= found.pieces; ++p) {
+    const std::size_t piece = static_cast<std::size_t>(p);
+    if (found.id_of_piece[piece] != 0 || t.cells[piece] == 0) continue;
+    for (int j = 0; j < t.n_old; ++j) {
+      const int old = region.ids[static_cast<std::size_t>(j)];
+      if (2 * t.overlap[piece * columns + static_cast<std::size_t>(j)] <= t.cells[piece] || !found.reused[static_cast<std::size_t>(old)] ||
+          !next_to_room(p, old))
+        continue;
+      cut[static_cast<std::size_t>(old)] = 1;
+      if (rooms[static_cast<std::size_t>(old)].split_votes + 1 < options.split_after) found.id_of_piece[piece] = old;
+    }
+  }
+  for (const int id : region.ids) {
+    RoomState& room = rooms[static_cast<std::size_t>(id)];
+    room.split_votes = cut[static_cast<std::size_t>(id)] && room.split_votes + 1 < options.split_after ? room.split_votes + 1 : 0;
+  }
 }
 
 // Old rooms of the region die unless reused, and every cell of the region takes its piece's id.
@@ -832,32 +903,44 @@ std::vector<int> IncrementalSegmenter::State::retire_old_rooms(const Region& reg
   return removed;
 }
 
-// Every piece that labels a cell is a live room, its state rebuilt from its cells alone (nothing
-// absorbed since) and its polygon in world metres.
+// Every piece that labels a cell belongs to a live room, its state rebuilt from its pieces' cells
+// alone (nothing absorbed since) and its polygon, in world metres, that of its largest piece (a
+// room holding back a split has two).
 void IncrementalSegmenter::State::adopt_pieces(const RegionPieces& found, const WindowFrame& frame) {
   const PieceTally& t = found.tally;
+  std::vector<int> largest(rooms.size(), 0);  // by id: its piece with the most cells
   for (int p = 1; p <= found.pieces; ++p) {
     const std::size_t piece = static_cast<std::size_t>(p);
     if (t.cells[piece] == 0) continue;
-    const int id = found.id_of_piece[piece];
-    RoomState& room = rooms[static_cast<std::size_t>(id)];
-    room.alive = true;
-    room.cells = t.cells[piece];
-    room.sum_c = static_cast<double>(t.sum_c[piece]);
-    room.sum_r = static_cast<double>(t.sum_r[piece]);
-    room.absorbed = 0;
-    room.box = cv::Rect(t.min_c[piece], t.min_r[piece], t.max_c[piece] - t.min_c[piece] + 1,
-                        t.max_r[piece] - t.min_r[piece] + 1);
+    const std::size_t id = static_cast<std::size_t>(found.id_of_piece[piece]);
+    RoomState& room = rooms[id];
+    const cv::Rect box(t.min_c[piece], t.min_r[piece], t.max_c[piece] - t.min_c[piece] + 1, t.max_r[piece] - t.min_r[piece] + 1);
+    if (largest[id] == 0) {
+      room.alive = true;
+      room.cells = 0;
+      room.sum_c = room.sum_r = 0.0;
+      room.absorbed = 0;
+      room.box = box;
+    }
+    room.cells += t.cells[piece];
+    room.sum_c += static_cast<double>(t.sum_c[piece]);
+    room.sum_r += static_cast<double>(t.sum_r[piece]);
+    room.box |= box;
+    if (largest[id] == 0 || t.cells[piece] > t.cells[static_cast<std::size_t>(largest[id])]) largest[id] = p;
+  }
+  for (std::size_t id = 1; id < rooms.size(); ++id) {
+    if (largest[id] == 0) continue;
+    const PolygonWithHoles& piece = found.set.pieces[static_cast<std::size_t>(largest[id]) - 1];
     PolygonWithHoles world;
-    for (const Point2& v : found.set.pieces[piece - 1].outer) world.outer.push_back(frame.to_world(v));
-    for (const Ring& hole : found.set.pieces[piece - 1].holes) {
+    for (const Point2& v : piece.outer) world.outer.push_back(frame.to_world(v));
+    for (const Ring& hole : piece.holes) {
       Ring ring;
       ring.reserve(hole.size());
       for (const Point2& v : hole) ring.push_back(frame.to_world(v));
       world.holes.push_back(std::move(ring));
     }
     world = normalized_orientation(world);
-    refresh_room(id, &world);
+    refresh_room(static_cast<int>(id), &world);
   }
 }
 
@@ -941,6 +1024,9 @@ IncrementalSegmenter::IncrementalSegmenter(const IncrementalOptions& options) : 
     throw Error("the absorb area must be a finite, non-negative number of square metres");
   if (!std::isfinite(options.absorb_fraction) || options.absorb_fraction < 0.0)
     throw Error("the absorb fraction must be a finite, non-negative number");
+  if (options.split_after < 1) throw Error("split_after must be at least 1 decomposition");
+  if (!std::isfinite(options.speck_size) || options.speck_size < 0.0)
+    throw Error("the speck size must be a finite, non-negative number of metres");
   if (!std::isfinite(options.batch_fraction) || options.batch_fraction <= 0.0)
     throw Error("the batch fraction must be a positive number");
   validate(options.segment);

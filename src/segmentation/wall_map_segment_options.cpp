@@ -8,4 +8,12 @@ SegmentOptions wall_map_segment_options() {
   return options;
 }
 
+IncrementalOptions wall_map_incremental_options(const SegmentOptions& segment) {
+  IncrementalOptions options;
+  options.segment = segment;
+  options.segment.clean = false;
+  options.split_after = 3;
+  return options;
+}
+
 }  // namespace topocut

@@ -33,9 +33,9 @@ struct Ray {
   Point2 from, to;
 };
 
-// The stretch of each beam known to be free: up to one cell short of a hit, or along a beam without
-// return up to the no-return limit.
-std::vector<Ray> free_rays(std::span<const PosedScan> scans, const WallMapOptions& o) {
+// The stretch of each beam known to be free: up to one cell (plus short_of_hit metres) short of a
+// hit, or along a beam without return up to the no-return limit.
+std::vector<Ray> free_rays(std::span<const PosedScan> scans, const WallMapOptions& o, double short_of_hit = 0.0) {
   std::vector<Ray> rays;
   for (const PosedScan& posed : scans) {
     const Scan& scan = posed.scan;
@@ -46,7 +46,7 @@ std::vector<Ray> free_rays(std::span<const PosedScan> scans, const WallMapOption
       double reach = 0.0;
       const double r = scan.ranges[i];
       if (scan.is_valid(i)) {
-        reach = std::min(r - o.resolution, o.max_free_range);
+        reach = std::min(r - o.resolution - short_of_hit, o.max_free_range);
       } else if (r == std::numeric_limits<double>::infinity() && std::isfinite(scan.angles[i])) {
         reach = std::min(o.no_return_free_range, o.max_free_range);
       }
@@ -108,13 +108,19 @@ void draw_rays(const OccupancyGrid& grid, const std::vector<Ray>& rays, cv::Mat&
 
 // Cells under a wall polygon are occupied; the centre line is also drawn 4-connected so that no
 // free path crosses a wall diagonally.
-void draw_walls(OccupancyGrid& grid, const std::vector<Segment2>& walls, double thickness) {
+// (Drawn with `value` into target, an image of grid's frame.)
+void draw_walls(const OccupancyGrid& grid, cv::Mat& target, const std::vector<Segment2>& walls, double thickness,
+                unsigned char value) {
   for (const Segment2& wall : walls) {
     std::vector<cv::Point> corners;
     for (const Point2& p : wall_polygon(wall, thickness)) corners.push_back(to_pixel(grid, p));
-    cv::fillConvexPoly(grid.cells, corners, cv::Scalar(kOccupied), cv::LINE_8, kShift);
-    cv::line(grid.cells, to_pixel(grid, wall.a), to_pixel(grid, wall.b), cv::Scalar(kOccupied), 1, cv::LINE_4, kShift);
+    cv::fillConvexPoly(target, corners, cv::Scalar(value), cv::LINE_8, kShift);
+    cv::line(target, to_pixel(grid, wall.a), to_pixel(grid, wall.b), cv::Scalar(value), 1, cv::LINE_4, kShift);
   }
+}
+
+void draw_walls(OccupancyGrid& grid, const std::vector<Segment2>& walls, double thickness) {
+  draw_walls(grid, grid.cells, walls, thickness, kOccupied);
 }
 
 }  // namespace
@@ -153,18 +159,25 @@ OccupancyGrid build_wall_map(std::span<const PosedScan> scans, std::span<const W
 }
 
 IncrementalWallMap::IncrementalWallMap(std::span<const PosedScan> scans, std::span<const WallSegment> segments,
-                                       const WallMapOptions& options)
+                                       const WallMapOptions& options,
+                                       const std::optional<OccupancyEvidenceOptions>& evidence)
     : options_(options) {
   validate(options);
+  if (evidence) validate(*evidence);
   std::vector<Segment2> lines;
   lines.reserve(segments.size());
   for (const WallSegment& s : segments) lines.push_back(s.segment);
   grid_ = unknown_frame(scans, free_rays(scans, options), lines, options);
   seen_ = cv::Mat::zeros(grid_.cells.size(), CV_8UC1);
+  if (evidence) {
+    hits_ = cv::Mat::zeros(grid_.cells.size(), CV_8UC1);
+    evidence_.emplace(grid_.cells.size(), *evidence);
+    miss_margin_ = evidence->miss_margin;
+  }
 }
 
 cv::Rect IncrementalWallMap::add(const PosedScan& scan, std::span<const WallSegment> segments) {
-  const std::vector<Ray> rays = free_rays(std::span<const PosedScan>(&scan, 1), options_);
+  const std::vector<Ray> rays = free_rays(std::span<const PosedScan>(&scan, 1), options_, evidence_ ? miss_margin_ : 0.0);
   std::vector<Segment2> lines;
   for (const WallSegment& s : segments) lines.push_back(s.segment);
   // Everything this scan draws lies in the box of its rays' ends, its pose and its walls' corners.
@@ -175,8 +188,16 @@ cv::Rect IncrementalWallMap::add(const PosedScan& scan, std::span<const WallSegm
     for (const Point2& p : wall_polygon(line, options_.wall_thickness)) box |= cell_box(grid_, p);
   box = (box + cv::Size(2, 2) - cv::Point(1, 1)) & all;
   if (box.empty()) return {};
-  const cv::Mat before = grid_.cells(box).clone();
   draw_rays(grid_, rays, seen_);
+  if (evidence_) {
+    // One scan's walls win over its own rays: a cell is a hit or a miss, never both.
+    draw_walls(grid_, hits_, lines, options_.wall_thickness, 255);
+    const cv::Rect changed = evidence_->add(box, hits_, seen_, grid_.cells);
+    seen_(box).setTo(cv::Scalar(0));
+    hits_(box).setTo(cv::Scalar(0));
+    return changed;
+  }
+  const cv::Mat before = grid_.cells(box).clone();
   // Walls win over rays, including earlier walls: a ray frees only cells no wall has claimed.
   cv::Mat window = grid_.cells(box);
   window.setTo(cv::Scalar(kFree), seen_(box) & (window != kOccupied));

@@ -29,10 +29,11 @@ std::vector<WallSegment> concatenated(const std::vector<std::vector<WallSegment>
 
 }  // namespace
 
-WallMapReplay::WallMapReplay(std::span<const PosedScan> scans, const WallsOptions& options)
+WallMapReplay::WallMapReplay(std::span<const PosedScan> scans, const WallsOptions& options,
+                             const std::optional<OccupancyEvidenceOptions>& evidence)
     : scans_(not_empty(scans)),
       segments_(segments_per_scan(scans_, options)),
-      map_(scans_, concatenated(segments_), options.map) {}
+      map_(scans_, concatenated(segments_), options.map, evidence) {}
 
 bool WallMapReplay::next() {
   if (next_ >= scans_.size()) return false;

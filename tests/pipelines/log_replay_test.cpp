@@ -41,12 +41,10 @@ std::vector<PosedScan> walk() {
   return scans;
 }
 
-// What `walls --incremental` does by default: the segment options of wall maps, without the
-// cleaning, which is not incremental.
+// What `walls --incremental` does by default.
 GridReplayOptions log_options() {
   GridReplayOptions o;
-  o.incremental.segment = wall_map_segment_options();
-  o.incremental.segment.clean = false;
+  o.incremental = wall_map_incremental_options();
   return o;
 }
 

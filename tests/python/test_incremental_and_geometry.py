@@ -54,6 +54,23 @@ def test_incremental_loop_keeps_ids():
     assert seg.last_update == "unchanged"
 
 
+def test_incremental_speck_and_split_options():
+    world, rooms = floor_plan()
+    seg = topocut.IncrementalSegmenter(speck_size=0.5, split_after=2)
+    first = seg.update(world, 0.05)
+    chair = world.copy()
+    chair[70:73, 30:33] = 100  # a 0.15 m obstacle inside room 0: a speck
+    second = seg.update(chair, 0.05)
+    assert (second.labels[70:73, 30:33] == 0).all()
+    outside = np.ones(world.shape, dtype=bool)
+    outside[70:73, 30:33] = False
+    assert np.array_equal(second.labels[outside], first.labels[outside])
+    with pytest.raises(ValueError):
+        topocut.IncrementalSegmenter(split_after=0)
+    with pytest.raises(ValueError):
+        topocut.IncrementalSegmenter(speck_size=-1.0)
+
+
 def test_decompose_cuts_a_notched_square():
     # A 10 x 10 square with a 6-deep notch from the top: deeper than tau = 1, so it is cut.
     outer = [[0, 0], [10, 0], [10, 10], [6, 10], [6, 4], [4, 4], [4, 10], [0, 10]]

@@ -316,6 +316,134 @@ TEST(IncrementalSegmenter, DoorClosingSplitsAndTheLargerPartKeepsTheId) {
   expect_untouched_stable(plan.world, first, closed, second);
 }
 
+// A copy of grid with the cells of every rectangle set to value.
+OccupancyGrid with_cells(const OccupancyGrid& grid, const std::vector<cv::Rect>& rects, unsigned char value) {
+  OccupancyGrid out = grid;
+  out.cells = grid.cells.clone();
+  for (const cv::Rect& r : rects) out.cells(r).setTo(value);
+  return out;
+}
+
+TEST(IncrementalSegmenter, ARoomCutIntoThreeKeepsItsIdOnItsLargestPart) {
+  // Doors 0 and 1 open: corridor, room 0 and room 1 are one room. Closing both cuts it in three;
+  // the corridor, its largest part, is less than half of it (9344 of 24424 cells and the doors)
+  // and still keeps its id.
+  FloorPlan plan = floor_plan();
+  for (std::size_t k = 2; k < plan.doors.size(); ++k) plan.world.cells(plan.doors[k]).setTo(kOccupied);
+  IncrementalSegmenter segmenter(trivial_options());
+  const Segmentation first = segmenter.update(plan.world);
+  ASSERT_EQ(first.rooms.size(), 3u);  // corridor + rooms 0 and 1 joined, rooms 2 and 3
+  const int joined = first.labels.at<int>(plan.corridor.y + 1, plan.corridor.x + 1);
+  const auto joined_room = std::find_if(first.rooms.begin(), first.rooms.end(), [&](const Room& r) { return r.id == joined; });
+  ASSERT_NE(joined_room, first.rooms.end());
+  const double corridor_area = plan.corridor.area() * kRes * kRes;
+  ASSERT_LT(2.0 * corridor_area, joined_room->area);
+  const OccupancyGrid closed = with_cells(plan.world, {plan.doors[0], plan.doors[1]}, kOccupied);
+  const Segmentation second = segmenter.update(closed);
+  expect_valid(closed, second);
+  ASSERT_EQ(second.rooms.size(), 5u);
+  EXPECT_EQ(second.labels.at<int>(plan.corridor.y + 1, plan.corridor.x + 1), joined);
+  for (int k = 0; k < 2; ++k) {
+    const int part = second.labels.at<int>(plan.rooms[k].y + 1, plan.rooms[k].x + 1);
+    for (const Room& r : first.rooms) EXPECT_NE(r.id, part) << "a smaller part of the cut room took an old id";
+  }
+  expect_untouched_stable(plan.world, first, closed, second);
+}
+
+// The floor plan after its first update, and the same with an obstacle filling `speck`.
+struct SpeckCase {
+  FloorPlan plan;
+  OccupancyGrid with_speck;
+};
+
+SpeckCase speck_case(const cv::Rect& speck) {
+  const FloorPlan plan = floor_plan();
+  return {plan, with_cells(plan.world, {speck}, kOccupied)};
+}
+
+TEST(IncrementalSegmenter, ASpeckInsideARoomChangesNoOtherLabel) {
+  // A chair of 4 x 3 cells in the middle of room 0: its cells leave the room, no room is
+  // decomposed again and every other label stays; with speck_size 0 the room is decomposed again.
+  const FloorPlan plan = floor_plan();
+  const cv::Rect speck(plan.rooms[0].x + 30, plan.rooms[0].y + 50, 4, 3);
+  const SpeckCase c = speck_case(speck);
+  IncrementalSegmenter segmenter;
+  const Segmentation before = segmenter.update(c.plan.world);
+  const Segmentation after = segmenter.update(c.with_speck);
+  expect_valid(c.with_speck, after);
+  EXPECT_EQ(segmenter.last_update().kind, IncrementalUpdateReport::Kind::kIncremental);
+  EXPECT_EQ(segmenter.last_update().redecomposed_rooms, 0);
+  EXPECT_EQ(segmenter.last_update().absorbed_blobs, 1);
+  cv::Mat differs = before.labels != after.labels;
+  differs(speck).setTo(0);
+  EXPECT_EQ(cv::countNonZero(differs), 0);
+  EXPECT_EQ(cv::countNonZero(after.labels(speck)), 0);
+  EXPECT_EQ(after.rooms.size(), before.rooms.size());
+
+  IncrementalOptions every_speck;
+  every_speck.speck_size = 0.0;
+  IncrementalSegmenter strict(every_speck);
+  strict.update(c.plan.world);
+  expect_valid(c.with_speck, strict.update(c.with_speck));
+  EXPECT_GE(strict.last_update().redecomposed_rooms, 1);
+}
+
+TEST(IncrementalSegmenter, ASpeckThatWouldSplitARoomIsDecomposed) {
+  // An obstacle closing door 0 (18 x 4 cells) is small, but it cuts room 0 off the corridor: the
+  // joined room is decomposed again into two (trivial mode: one room per component).
+  FloorPlan plan = floor_plan();
+  for (std::size_t k = 1; k < plan.doors.size(); ++k) plan.world.cells(plan.doors[k]).setTo(kOccupied);
+  IncrementalOptions options = trivial_options();
+  options.speck_size = 1.0;  // 20 cells: the door fits
+  IncrementalSegmenter segmenter(options);
+  const Segmentation first = segmenter.update(plan.world);
+  ASSERT_EQ(first.rooms.size(), 4u);
+  const OccupancyGrid closed = with_cells(plan.world, {plan.doors[0]}, kOccupied);
+  const Segmentation second = segmenter.update(closed);
+  expect_valid(closed, second);
+  EXPECT_EQ(second.rooms.size(), 5u);
+  EXPECT_EQ(segmenter.last_update().absorbed_blobs, 0);
+  EXPECT_NE(second.labels.at<int>(plan.corridor.y + 1, plan.corridor.x + 1),
+            second.labels.at<int>(plan.rooms[0].y + 1, plan.rooms[0].x + 1));
+}
+
+// A 10 m x 5 m hall whose middle narrows, update after update, into a 0.6 m door: wall stubs from
+// both long walls, one cell thicker each time (too long to be specks).
+OccupancyGrid narrowing_hall(int thickness) {
+  OccupancyGrid grid;
+  grid.resolution = kRes;
+  grid.cells = cv::Mat(100, 200, CV_8UC1, cv::Scalar(kOccupied));
+  grid.cells(cv::Rect(4, 4, 192, 92)).setTo(kFree);
+  if (thickness > 0) {
+    grid.cells(cv::Rect(100, 4, thickness, 40)).setTo(kOccupied);
+    grid.cells(cv::Rect(100, 56, thickness, 40)).setTo(kOccupied);
+  }
+  return grid;
+}
+
+TEST(IncrementalSegmenter, ADoorCutIsMadeOnlyWhenSplitAfterDecompositionsInARowFindIt) {
+  ASSERT_EQ(segment(narrowing_hall(2)).rooms.size(), 2u);  // batch cuts the hall at the door
+  for (const int split_after : {1, 3}) {
+    IncrementalOptions options;
+    options.split_after = split_after;
+    IncrementalSegmenter segmenter(options);
+    const Segmentation first = segmenter.update(narrowing_hall(0));
+    ASSERT_EQ(first.rooms.size(), 1u);
+    const int hall = first.rooms[0].id;
+    for (int k = 1; k <= 3; ++k) {
+      const OccupancyGrid grid = narrowing_hall(k + 1);
+      const Segmentation& s = segmenter.update(grid);
+      expect_valid(grid, s);
+      ASSERT_GE(segmenter.last_update().redecomposed_rooms, 1) << "update " << k;
+      const std::size_t expected = k < split_after ? 1u : 2u;
+      EXPECT_EQ(s.rooms.size(), expected) << "split_after " << split_after << ", update " << k;
+      // The hall keeps its id on its left part throughout; held back, the right part has it too.
+      EXPECT_EQ(s.labels.at<int>(50, 20), hall);
+      EXPECT_EQ(s.labels.at<int>(50, 180) == hall, k < split_after) << "split_after " << split_after << ", update " << k;
+    }
+  }
+}
+
 TEST(IncrementalSegmenter, RoomsRevealedThroughDoorsMatchBatchAtTheEnd) {
   const FloorPlan plan = floor_plan();
   IncrementalSegmenter segmenter;
@@ -512,7 +640,9 @@ TEST(IncrementalSegmenter, LoopClosureShiftFallsBackToBatchAndKeepsIds) {
 
 TEST(IncrementalSegmenter, SmallNoiseIsAbsorbedOrRepairedLocally) {
   const FloorPlan plan = floor_plan();
-  IncrementalSegmenter segmenter;
+  IncrementalOptions options;
+  options.speck_size = 0.0;  // obstacle specks decomposed again (ASpeckInsideARoom... covers the rule)
+  IncrementalSegmenter segmenter(options);
   OccupancyGrid grid = reveal(plan, {plan.corridor, plan.doors[0], plan.rooms[0], plan.doors[3], plan.rooms[3]});
   const Segmentation first = segmenter.update(grid);
   expect_valid(grid, first);
@@ -551,6 +681,7 @@ TEST(IncrementalSegmenter, NeighboursBehindDoorsCanBeLeftAlone) {
   const FloorPlan plan = floor_plan();
   IncrementalOptions options;
   options.neighbours_across_doors = false;
+  options.speck_size = 0.0;  // the obstacle below is a speck
   IncrementalSegmenter segmenter(options);
   const Segmentation first = segmenter.update(plan.world);
   OccupancyGrid blocked = plan.world;
@@ -663,6 +794,7 @@ TEST(IncrementalSegmenter, InflationIsRecomputedLocally) {
   const FloorPlan plan = floor_plan();
   IncrementalOptions options;
   options.segment.binarize.robot_radius = 0.15;
+  options.speck_size = 0.0;  // the obstacle below and its inflation form a speck
   IncrementalSegmenter segmenter(options);
   std::vector<cv::Rect> seen{plan.corridor};
   OccupancyGrid previous = reveal(plan, seen);

@@ -118,13 +118,20 @@ TEST(IncrementalWallMap, RepeatedScanChangesNothing) {
   EXPECT_TRUE(map.add(scans[0], segments).empty());
 }
 
-TEST(IncrementalWallMap, WallsWinOverLaterRays) {
-  // A wall segment seen first stays occupied when a later scan's ray crosses it.
+// One beam from the origin along +x, hitting at 4 m, and a wall segment across it at x = 2 m.
+PosedScan one_beam_through_wall() {
   PosedScan scan;
   scan.pose = {0.0, 0.0, 0.0};
   scan.scan.angles = {0.0};
   scan.scan.ranges = {4.0};
-  const std::vector<WallSegment> wall{{{{2.0, -1.0}, {2.0, 1.0}}, 0, 2}};
+  return scan;
+}
+const WallSegment kWallAt2m{{{2.0, -1.0}, {2.0, 1.0}}, 0, 2};
+
+TEST(IncrementalWallMap, WallsWinOverLaterRays) {
+  // A wall segment seen first stays occupied when a later scan's ray crosses it.
+  const PosedScan scan = one_beam_through_wall();
+  const std::vector<WallSegment> wall{kWallAt2m};
   IncrementalWallMap map(std::span(&scan, 1), wall);
   map.add(scan, {});
   const OccupancyGrid& g = map.grid();
@@ -137,11 +144,54 @@ TEST(IncrementalWallMap, WallsWinOverLaterRays) {
   EXPECT_EQ(g.cells.at<std::uint8_t>(row, wall_column), kOccupied);
 }
 
+TEST(IncrementalWallMap, WithEvidenceRepeatedScansSettleAndTheReplayFollows) {
+  // The same scan again adds evidence to cells already published: nothing flips. The replay with
+  // evidence steps as the map with evidence does, and its cells are free, occupied or unknown.
+  const std::vector<PosedScan> scans = walk();
+  std::vector<std::vector<WallSegment>> per_scan;
+  std::vector<WallSegment> all;
+  extract_segments(scans, per_scan, all);
+  IncrementalWallMap map(scans, all, {}, OccupancyEvidenceOptions{});
+  EXPECT_FALSE(map.add(scans[0], per_scan[0]).empty());
+  for (int i = 0; i < 5; ++i) EXPECT_TRUE(map.add(scans[0], per_scan[0]).empty()) << "repeat " << i;
+  IncrementalWallMap fresh(scans, all, {}, OccupancyEvidenceOptions{});
+  WallMapReplay replay(scans, {}, OccupancyEvidenceOptions{});
+  for (std::size_t i = 0; i < scans.size(); ++i) {
+    ASSERT_TRUE(replay.next());
+    EXPECT_EQ(replay.changed(), fresh.add(scans[i], per_scan[i])) << "scan " << i;
+    EXPECT_EQ(cv::countNonZero(replay.known_map().cells != fresh.grid().cells), 0) << "scan " << i;
+  }
+  const cv::Mat& cells = replay.known_map().cells;
+  EXPECT_EQ(cv::countNonZero((cells != kFree) & (cells != kOccupied) & (cells != kUnknown)), 0);
+  EXPECT_GT(cv::countNonZero(cells == kFree), 0);
+  EXPECT_GT(cv::countNonZero(cells == kOccupied), 0);
+}
+
+TEST(IncrementalWallMap, WithEvidenceAWallSeenOnceFadesUnderLaterRays) {
+  // Unlike the map drawn as it is (WallsWinOverLaterRays), evidence lets rays clear a wall seen
+  // once, after enough of them: a person who stood there and walked away.
+  const PosedScan scan = one_beam_through_wall();
+  const std::vector<WallSegment> wall{kWallAt2m};
+  IncrementalWallMap map(std::span(&scan, 1), wall, {}, OccupancyEvidenceOptions{});
+  map.add(PosedScan{{}, scan.pose}, wall);
+  const OccupancyGrid& g = map.grid();
+  const int row = g.height() - 1 - static_cast<int>(std::floor((0.0 - g.origin.y) / g.resolution));
+  const int wall_column = static_cast<int>(std::floor((2.0 - g.origin.x) / g.resolution));
+  EXPECT_EQ(g.cells.at<std::uint8_t>(row, wall_column), kOccupied);
+  map.add(scan, {});
+  EXPECT_EQ(g.cells.at<std::uint8_t>(row, wall_column), kOccupied);  // one miss is not enough
+  for (int i = 0; i < 5; ++i) map.add(scan, {});
+  EXPECT_EQ(g.cells.at<std::uint8_t>(row, wall_column), kFree);
+}
+
 TEST(IncrementalWallMap, BadOptionsAreRefused) {
   const std::vector<PosedScan> scans = walk();
   WallMapOptions options;
   options.resolution = 0.0;
   EXPECT_THROW(IncrementalWallMap(scans, {}, options), Error);
+  OccupancyEvidenceOptions evidence;
+  evidence.hit_probability = 0.3;
+  EXPECT_THROW(IncrementalWallMap(scans, {}, {}, evidence), Error);
 }
 
 }  // namespace

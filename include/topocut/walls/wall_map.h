@@ -2,6 +2,7 @@
 // From walls and the rays of the scans to an occupancy grid that pipeline A segments: cells crossed
 // by a laser ray are free, cells under a wall polygon are occupied (walls win), the rest unknown.
 #include <cstddef>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -9,6 +10,7 @@
 
 #include "topocut/core/geometry.h"
 #include "topocut/core/occupancy_grid.h"
+#include "topocut/walls/occupancy_evidence.h"
 #include "topocut/walls/posed_scan.h"
 #include "topocut/walls/wall_merging.h"
 
@@ -43,15 +45,19 @@ void validate(const WallMapOptions& options);
 OccupancyGrid build_wall_map(std::span<const PosedScan> scans, std::span<const Wall> walls,
                              const WallMapOptions& options = {});
 
-// The same grid built scan by scan, as a robot replaying its log would see it: after adding scans
-// 0..k with their wall segments, grid() equals build_wall_map() of those scans with each segment
-// taken as a wall (merging needs the walls of the future, so none happens), in the fixed frame
-// that covers every scan and segment given to the constructor.
+// The same grid built scan by scan, as a robot replaying its log would see it. Without evidence
+// options: after adding scans 0..k with their wall segments, grid() equals build_wall_map() of those
+// scans with each segment taken as a wall (merging needs the walls of the future, so none happens),
+// in the fixed frame that covers every scan and segment given to the constructor. With them, each
+// scan is occupancy evidence instead (OccupancyEvidence: its wall cells hits, the cells its rays
+// cross misses) and grid() shows each cell's settled state, as a SLAM map does.
 class IncrementalWallMap {
  public:
-  // The frame of all scans and segments, every cell unknown. Throws Error like build_wall_map().
+  // The frame of all scans and segments, every cell unknown. Throws Error like build_wall_map() and
+  // on invalid evidence options.
   IncrementalWallMap(std::span<const PosedScan> scans, std::span<const WallSegment> segments,
-                     const WallMapOptions& options = {});
+                     const WallMapOptions& options = {},
+                     const std::optional<OccupancyEvidenceOptions>& evidence = std::nullopt);
 
   // Adds one scan's free rays and wall segments; returns the bounding box of the cells that
   // changed (empty when none did). Parts outside the frame are clipped.
@@ -63,6 +69,9 @@ class IncrementalWallMap {
   WallMapOptions options_;
   OccupancyGrid grid_;
   cv::Mat seen_;  // scratch: the current scan's rays, cleared after each add
+  cv::Mat hits_;  // scratch (with evidence): the current scan's wall cells, cleared after each add
+  std::optional<OccupancyEvidence> evidence_;
+  double miss_margin_ = 0.0;
 };
 
 }  // namespace topocut

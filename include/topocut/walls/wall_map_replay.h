@@ -1,8 +1,10 @@
 #pragma once
 // A laser log's occupancy grid built scan by scan, as the robot saw it (IncrementalWallMap: each
-// scan's rays free and its wall segments occupied, segments not merged since merging needs later
-// scans), in the one frame that covers the whole log. Each scan's grid is what an incremental
-// segmenter is fed when a log is replayed.
+// scan's rays free and its wall segments occupied, or, when asked, both as occupancy evidence that
+// settles as in a SLAM map; segments not merged since merging needs later scans), in the one frame
+// that covers the whole log. Each scan's grid is what an incremental segmenter is fed
+// when a log is replayed.
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -18,9 +20,11 @@ namespace topocut {
 class WallMapReplay {
  public:
   // Extracts every scan's wall segments first (the frame must cover them all); keeps a view of
-  // scans, which must outlive this object. Throws Error if there are no scans, on invalid options
-  // or a frame larger than options.map allows.
-  WallMapReplay(std::span<const PosedScan> scans, const WallsOptions& options = {});
+  // scans, which must outlive this object. evidence: std::nullopt draws every scan as it is (rays
+  // free, walls occupied for good); given, cells settle by occupancy evidence (IncrementalWallMap).
+  // Throws Error if there are no scans, on invalid options or a frame larger than options.map allows.
+  WallMapReplay(std::span<const PosedScan> scans, const WallsOptions& options = {},
+                const std::optional<OccupancyEvidenceOptions>& evidence = std::nullopt);
 
   // Adds the next scan's rays and wall segments; returns false, changing nothing, after the last.
   bool next();
