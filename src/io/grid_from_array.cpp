@@ -11,18 +11,28 @@ namespace {
 int source_row(const GridArray& array, int r) { return array.row_order == RowOrder::kTopDown ? r : array.height - 1 - r; }
 
 // ros_cells() in raw mode reads a percentage from a grey level; -1 becomes 255, its "not a percentage".
+// An int8 cell holds one of 256 values, so ros_cells() runs once over all of them and the cells are
+// looked up: the same states, without a float image and a rounding per cell (a robot's node pays
+// this on every map it receives).
 cv::Mat occupancy_cells(const GridArray& array) {
-  cv::Mat grey(array.height, array.width, CV_32FC1);
-  for (int r = 0; r < array.height; ++r) {
-    const auto* in = reinterpret_cast<const signed char*>(grid_array_row(array, source_row(array, r)));
-    float* out = grey.ptr<float>(r);
-    for (int c = 0; c < array.width; ++c) out[c] = in[c] < 0 ? 255.0f : static_cast<float>(in[c]);
+  cv::Mat grey(1, 256, CV_32FC1);
+  for (int b = 0; b < 256; ++b) {
+    const auto value = static_cast<signed char>(b);
+    grey.at<float>(0, b) = value < 0 ? 255.0f : static_cast<float>(value);
   }
   RosMapMetadata metadata;
   metadata.mode = RosMapMode::kRaw;
   metadata.free_thresh = array.free_thresh;
   metadata.occupied_thresh = array.occupied_thresh;
-  return ros_cells(grey, cv::Mat::zeros(grey.size(), CV_8UC1), metadata);
+  const cv::Mat table = ros_cells(grey, cv::Mat::zeros(grey.size(), CV_8UC1), metadata);
+  const unsigned char* state = table.ptr<unsigned char>(0);
+  cv::Mat cells(array.height, array.width, CV_8UC1);
+  for (int r = 0; r < array.height; ++r) {
+    const unsigned char* in = grid_array_row(array, source_row(array, r));
+    unsigned char* out = cells.ptr<unsigned char>(r);
+    for (int c = 0; c < array.width; ++c) out[c] = state[in[c]];
+  }
+  return cells;
 }
 
 cv::Mat grey_cells(const GridArray& array) {

@@ -52,6 +52,31 @@ TEST(GridFromArray, TopDownKeepsRowsAndThresholdsAreTheCallers) {
   EXPECT_EQ(grid.cells.at<unsigned char>(0, 2), kUnknown);  // 70 % between
 }
 
+TEST(GridFromArray, EveryOccupancyValueFollowsTheMapServerRule) {
+  // All 102 values in one row, under several threshold pairs: p = value / 100 above occupied_thresh
+  // is occupied, below free_thresh free, between (or -1) unknown, as map_server reads raw maps.
+  std::vector<std::int8_t> values;
+  for (int v = -1; v <= 100; ++v) values.push_back(static_cast<std::int8_t>(v));
+  for (const auto& [free_thresh, occupied_thresh] : {std::pair{0.196, 0.65}, std::pair{0.0, 1.0}, std::pair{0.5, 0.5},
+                                                     std::pair{0.25, 0.251}, std::pair{0.999, 0.999}}) {
+    GridArray a;
+    a.data = values.data();
+    a.width = static_cast<int>(values.size());
+    a.height = 1;
+    a.resolution = 0.05;
+    a.free_thresh = free_thresh;
+    a.occupied_thresh = occupied_thresh;
+    const OccupancyGrid grid = grid_from_array(a);
+    for (int c = 0; c < a.width; ++c) {
+      const int v = values[static_cast<std::size_t>(c)];
+      const double p = v / 100.0;
+      const unsigned char expected = v < 0 ? kUnknown : p > occupied_thresh ? kOccupied : p < free_thresh ? kFree : kUnknown;
+      EXPECT_EQ(grid.cells.at<unsigned char>(0, c), expected) << "value " << v << ", thresholds " << free_thresh << " / "
+                                                               << occupied_thresh;
+    }
+  }
+}
+
 TEST(GridFromArray, GreyUsesThePlainImageRuleAndStrides) {
   // Two rows of 2 cells stored 4 bytes apart (a view of a wider buffer).
   const std::vector<unsigned char> values = {255, 0, 9, 9, 128, 251, 9, 9};
