@@ -27,9 +27,9 @@ struct SegmentSwitches {
 // sets the reference behaviour (parity_segment_options at options' concavity: no door cuts, no
 // merging, no simplification, no cleaning, absorbed obstacles not covered, the reference's smallest
 // room area unless min_room_area_given); combined with a switch it already sets (no_doors,
-// no_wall_openings, no_merge, no_simplify, no_clean, no_width_steps, no_furniture_rule, or
-// labels.cover_absorbed_obstacles) it throws Error. Numbers it does not set (robot radius, hole
-// area, ...) and trivial still apply.
+// no_wall_openings, no_merge, no_simplify, no_clean, no_width_steps, no_furniture_rule), with
+// labels.cover_absorbed_obstacles or with doors.wall_lines it throws Error. Numbers it does not set
+// (robot radius, hole area, ...) and trivial still apply.
 void apply(const SegmentSwitches& switches, SegmentOptions& options);
 
 // What a front end collects before apply(): the numbers in options, the switches beside them.
