@@ -548,39 +548,45 @@ std::vector<Candidate> wall_line_cuts(const DoorSearch& search, const EdgeGrid& 
   return cuts;
 }
 
+// Validates the options and the resolution, then returns find(search, grid) over the polygon's
+// edges, or nothing when the search is off or the polygon has no edge.
+template <typename Find>
+std::vector<Segment2> search_cuts(const PolygonWithHoles& polygon, double resolution, const DoorOptions& options, bool on,
+                                  Find&& find) {
+  validate(options);
+  if (!std::isfinite(resolution) || resolution <= 0.0) throw Error("the map resolution must be a positive number");
+  if (!on) return {};
+  const DoorSearch search = door_search(polygon, resolution, options);
+  if (search.edges.empty()) return {};
+  const EdgeGrid grid(search.edges, std::max(4.0, search.reach / 4.0));
+  return find(search, grid);
+}
+
 }  // namespace
 
 std::vector<Segment2> find_wall_line_cuts(const PolygonWithHoles& polygon, double resolution, const DoorOptions& options,
                                           const std::vector<Segment2>& doors) {
-  validate(options);
-  if (!std::isfinite(resolution) || resolution <= 0.0) throw Error("the map resolution must be a positive number");
-  if (!options.wall_lines) return {};
-  const DoorSearch search = door_search(polygon, resolution, options);
-  if (search.edges.empty()) return {};
-  const EdgeGrid grid(search.edges, std::max(4.0, search.reach / 4.0));
-  std::vector<Candidate> all;
-  for (const Segment2& d : doors) all.push_back({d, -1.0, 0});  // the doors go first and stay
-  for (const Candidate& c : wall_line_cuts(search, grid)) all.push_back(c);
-  std::vector<Segment2> kept = narrowest_compatible(std::move(all), resolution);
-  kept.erase(std::remove_if(kept.begin(), kept.end(),
-                            [&](const Segment2& s) { return std::find(doors.begin(), doors.end(), s) != doors.end(); }),
-             kept.end());
-  return kept;
+  return search_cuts(polygon, resolution, options, options.wall_lines, [&](const DoorSearch& search, const EdgeGrid& grid) {
+    std::vector<Candidate> all;
+    for (const Segment2& d : doors) all.push_back({d, -1.0, 0});  // the doors go first and stay
+    for (const Candidate& c : wall_line_cuts(search, grid)) all.push_back(c);
+    std::vector<Segment2> kept = narrowest_compatible(std::move(all), resolution);
+    kept.erase(std::remove_if(kept.begin(), kept.end(),
+                              [&](const Segment2& s) { return std::find(doors.begin(), doors.end(), s) != doors.end(); }),
+               kept.end());
+    return kept;
+  });
 }
 
 std::vector<Segment2> find_door_cuts(const PolygonWithHoles& polygon, double resolution, const DoorOptions& options) {
-  validate(options);
-  if (!std::isfinite(resolution) || resolution <= 0.0) throw Error("the map resolution must be a positive number");
-  if (!options.enabled) return {};
-  const DoorSearch search = door_search(polygon, resolution, options);
-  if (search.edges.empty()) return {};
-  const EdgeGrid grid(search.edges, std::max(4.0, search.reach / 4.0));
-  std::vector<Candidate> doors;
-  if (options.extend_walls) doors = wall_openings(search, grid);
-  for (const Candidate& c : corner_cuts(search, grid)) {
-    if (has_wide_sides(search, grid, c)) doors.push_back(c);
-  }
-  return narrowest_compatible(std::move(doors), resolution);
+  return search_cuts(polygon, resolution, options, options.enabled, [&](const DoorSearch& search, const EdgeGrid& grid) {
+    std::vector<Candidate> doors;
+    if (options.extend_walls) doors = wall_openings(search, grid);
+    for (const Candidate& c : corner_cuts(search, grid)) {
+      if (has_wide_sides(search, grid, c)) doors.push_back(c);
+    }
+    return narrowest_compatible(std::move(doors), resolution);
+  });
 }
 
 namespace {
