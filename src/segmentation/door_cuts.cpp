@@ -229,8 +229,8 @@ void validate(const DoorOptions& options) {
       !std::isfinite(options.min_side_width) || options.min_side_width < 0.0)
     throw Error("the wall opening gap and wall thickness must be positive, the other opening options non-negative");
   if (!positive(options.max_wall_line) || !positive(options.wall_line_wall) || !std::isfinite(options.wall_line_straightness) ||
-      options.wall_line_straightness < 0.0)
-    throw Error("the wall line length and wall length must be positive, the straightness tolerance non-negative");
+      options.wall_line_straightness < 0.0 || !std::isfinite(options.wall_line_spacing) || options.wall_line_spacing < 0.0)
+    throw Error("the wall line length and wall length must be positive, the straightness and spacing non-negative");
 }
 
 namespace {
@@ -526,7 +526,8 @@ std::optional<Candidate> wall_line(const DoorSearch& search, const EdgeGrid& gri
   const Point2 mid{(v.x + h.x) / 2.0, (v.y + h.y) / 2.0};
   if (side_width(grid, mid, dir, {-dir.y, dir.x}, search.depth, cap) < cap) return std::nullopt;
   if (side_width(grid, mid, dir, {dir.y, -dir.x}, search.depth, cap) < cap) return std::nullopt;
-  return Candidate{{v, h}, length(minus(h, v)), r};
+  const double cut = length(minus(h, v));
+  return Candidate{{v, h}, cut, r};
 }
 
 // Wall lines: from every reflex corner, each of its two walls continued straight on across the free
@@ -571,10 +572,21 @@ std::vector<Segment2> find_wall_line_cuts(const PolygonWithHoles& polygon, doubl
     for (const Segment2& d : doors) all.push_back({d, -1.0, 0});  // the doors go first and stay
     for (const Candidate& c : wall_line_cuts(search, grid)) all.push_back(c);
     std::vector<Segment2> kept = narrowest_compatible(std::move(all), resolution);
-    kept.erase(std::remove_if(kept.begin(), kept.end(),
-                              [&](const Segment2& s) { return std::find(doors.begin(), doors.end(), s) != doors.end(); }),
-               kept.end());
-    return kept;
+    // Two lines closer than wall_line_spacing along their whole length (the two faces of one
+    // partition continued across a corridor) would enclose a strip no room is: the shorter stays.
+    const double near = options.wall_line_spacing / resolution;
+    std::vector<Segment2> out;
+    for (const Segment2& s : kept) {
+      const bool sliver = std::any_of(out.begin(), out.end(), [&](const Segment2& o) {
+        return (distance_to_segment(s.a, o) < near && distance_to_segment(s.b, o) < near) ||
+               (distance_to_segment(o.a, s) < near && distance_to_segment(o.b, s) < near);
+      });
+      if (!sliver) out.push_back(s);
+    }
+    out.erase(std::remove_if(out.begin(), out.end(),
+                             [&](const Segment2& s) { return std::find(doors.begin(), doors.end(), s) != doors.end(); }),
+              out.end());
+    return out;
   });
 }
 

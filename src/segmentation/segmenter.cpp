@@ -136,6 +136,7 @@ SegmentOptions parity_segment_options(double concavity) {
   options.concavity = concavity;
   options.merge.enabled = false;
   options.doors.enabled = false;
+  options.doors.wall_lines = false;
   options.labels.cover_absorbed_obstacles = false;
   options.simplify = 0.0;
   options.clean = false;

@@ -99,11 +99,7 @@ TEST(DoorCuts, DisabledAndBadOptions) {
 // (90, 120), where the wide room's top wall stops.
 PolygonWithHoles room_on_a_wider_room() { return {{{0, 0}, {160, 0}, {160, 200}, {90, 200}, {90, 120}, {0, 120}}, {}}; }
 
-DoorOptions with_wall_lines() {
-  DoorOptions options;
-  options.wall_lines = true;
-  return options;
-}
+DoorOptions with_wall_lines() { return DoorOptions{}; }  // on by default
 
 TEST(WallLines, TheWideRoomsTopWallIsDrawnOnAcrossTheOpening) {
   const std::vector<Segment2> lines = find_wall_line_cuts(room_on_a_wider_room(), kRes, with_wall_lines(), {});
@@ -115,9 +111,24 @@ TEST(WallLines, TheWideRoomsTopWallIsDrawnOnAcrossTheOpening) {
   const std::vector<PolygonWithHoles> parts = split_polygon(room_on_a_wider_room(), lines);
   ASSERT_EQ(parts.size(), 2u);
   EXPECT_DOUBLE_EQ(std::min(area(parts[0]), area(parts[1])), 70.0 * 80.0);
-  // Off by default, and a door already there is not repeated.
-  EXPECT_TRUE(find_wall_line_cuts(room_on_a_wider_room(), kRes, DoorOptions{}, {}).empty());
+  // Off when switched off, and a door already there is not repeated.
+  DoorOptions off;
+  off.wall_lines = false;
+  EXPECT_TRUE(find_wall_line_cuts(room_on_a_wider_room(), kRes, off, {}).empty());
   EXPECT_TRUE(find_wall_line_cuts(room_on_a_wider_room(), kRes, with_wall_lines(), lines).empty());
+}
+
+TEST(WallLines, ThePartitionsTwoFacesGiveOneLineAcrossTheCorridor) {
+  // Two 7 m deep rooms open onto a 3 m corridor, split by a 0.8 m partition (x in [192, 208]): each
+  // face continued across the corridor is a wall line, but the strip between them is no room.
+  const PolygonWithHoles plan{{{0, 0}, {400, 0}, {400, 200}, {208, 200}, {208, 60}, {192, 60}, {192, 200}, {0, 200}}, {}};
+  const std::vector<Segment2> lines = find_wall_line_cuts(plan, kRes, with_wall_lines(), {});
+  ASSERT_EQ(lines.size(), 1u);
+  EXPECT_EQ(lines[0].a.x, lines[0].b.x);
+  EXPECT_DOUBLE_EQ(distance(lines[0].a, lines[0].b), 60.0);
+  DoorOptions both = with_wall_lines();
+  both.wall_line_spacing = 0.0;
+  EXPECT_EQ(find_wall_line_cuts(plan, kRes, both, {}).size(), 2u);
 }
 
 TEST(WallLines, ShortOrCrookedWallsAndRoomsOfEvenWidthGiveNone) {

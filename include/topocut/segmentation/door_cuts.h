@@ -38,13 +38,14 @@ struct DoorOptions {
   double min_side_width = 1.0;
   // Wall lines (find_wall_line_cuts): from a corner, a straight wall at least wall_line_wall long
   // (every point within wall_line_straightness of its line) continued across at most max_wall_line
-  // metres of free space to the next wall. Off by default: on hand-drawn floor plans they give the
-  // room boundaries people draw across wide openings (sketch precision +4 to +5 points), on the
-  // Bormann maps they cost 0.1-0.3 points (benchmarks/README.md, history of ideas).
-  bool wall_lines = false;
+  // metres of free space to the next wall, as people draw room boundaries across wide openings. Of
+  // two lines closer than wall_line_spacing along their whole length (the two faces of a partition
+  // continued across a corridor) only the shorter is kept: the strip between them is no room.
+  bool wall_lines = true;
   double max_wall_line = 5.0;
   double wall_line_wall = 2.5;
   double wall_line_straightness = 0.2;
+  double wall_line_spacing = 2.5;
 };
 
 // Throws Error unless the options are usable.
@@ -60,7 +61,8 @@ std::vector<Segment2> find_door_cuts(const PolygonWithHoles& polygon, double res
 // Candidate room boundaries beside the doors (empty unless options.wall_lines): from every reflex
 // corner, each of its straight walls (options.wall_line_*) continued to the first wall of the same
 // ring within options.max_wall_line metres, at least options.min_side_width long and leaving both
-// sides that wide; shortest first, none crossing a door or another. Doors are not repeated.
+// sides that wide; shortest first, none crossing a door or another, none within
+// options.wall_line_spacing of a shorter one along its whole length. Doors are not repeated.
 std::vector<Segment2> find_wall_line_cuts(const PolygonWithHoles& polygon, double resolution, const DoorOptions& options,
                                           const std::vector<Segment2>& doors);
 
