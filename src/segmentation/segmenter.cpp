@@ -77,8 +77,8 @@ PieceSet decompose_polygon(const PolygonWithHoles& polygon, double resolution, c
   set.doors = find_door_cuts(polygon, resolution, options.doors);
   set.cuts = set.doors;
   if (options.doors.enabled && wall_lines) {
-    const std::vector<Segment2> lines = find_wall_line_cuts(polygon, resolution, options.doors, set.doors);
-    set.cuts.insert(set.cuts.end(), lines.begin(), lines.end());
+    set.wall_lines = find_wall_line_cuts(polygon, resolution, options.doors, set.doors);
+    set.cuts.insert(set.cuts.end(), set.wall_lines.begin(), set.wall_lines.end());
   }
   const std::vector<PolygonWithHoles> parts = split_polygon(polygon, set.cuts);
   DecompositionOptions decomposition = options.decomposition;
