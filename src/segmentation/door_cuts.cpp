@@ -503,7 +503,7 @@ double ccw_angle(const Point2& from, const Point2& to) {
   return a < 0.0 ? a + 2.0 * M_PI : a;
 }
 
-// The wall line of corner v (vertex i of ring r, between p and q) along dir: from v to the first
+// The wall line of corner v (on ring r, between p and q) along dir: from v to the first
 // wall met (a vertex when the hit is within a cell of one), if it starts into free space, ends on
 // ring r, is at least min_side_width long, and leaves both sides that wide.
 std::optional<Candidate> wall_line(const DoorSearch& search, const EdgeGrid& grid, int r, const Point2& p, const Point2& v,

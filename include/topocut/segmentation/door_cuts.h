@@ -3,8 +3,9 @@
 // not where people put room boundaries; a door is a narrow passage between two wider spaces. This
 // stage finds such passages geometrically, at every wall corner that points into free space (a
 // reflex vertex: door jambs, wall ends), as the shortest segment that resolves the corner, and
-// keeps the segments that are much narrower than the space on both of their sides. The component
-// is then split along them, and each part is decomposed on its own.
+// keeps the segments that are much narrower than the space on both of their sides. Wall lines, the
+// straight walls continued across wide openings, are found here too, since they share the search.
+// The component is then split along both, and each part is decomposed on its own.
 #include <vector>
 
 #include "topocut/core/geometry.h"
