@@ -50,8 +50,9 @@ struct Request {
 const char* const kDescription =
     "Segments the free space of a map into rooms: free space -> cleaning (laser-ray fans, slivers\n"
     "and specks out, obstacle specks in; --out-clean shows it) -> polygons with holes -> door cuts\n"
-    "(narrow passages, and openings where a thin wall stops short) -> dual-space decomposition\n"
-    "(DuDe) of each part with maximum concavity tau -> pieces merged across cuts that are not\n"
+    "(narrow passages, and openings where a thin wall stops short) and wall lines (straight walls\n"
+    "continued across wide openings) -> dual-space decomposition (DuDe) of each part with maximum\n"
+    "concavity tau -> pieces merged across cuts that are not\n"
     "door-like (and not width steps) -> rooms, and passages between them (the room graph). Every\n"
     "free cell inside the building gets a room; obstacles, unknown cells and free cells the\n"
     "cleaning put outside the building get none (absorbed obstacles get one with --cover-obstacles).\n"

@@ -149,6 +149,7 @@ std::string method_name(const SegmentOptions& options) {
     if (!options.clean) name += ", no cleaning";
     if (options.merge.enabled && options.merge.step_ratio == 0.0) name += ", no width steps";
     if (options.merge.enabled && options.merge.furniture_size == 0.0) name += ", no furniture rule";
+    if (options.doors.enabled && !options.doors.wall_lines) name += ", no wall lines";
     if (options.merge.enabled && options.oversegment != SegmentOptions{}.oversegment)
       name += ", DuDe at " + number(options.oversegment) + " tau";
   }

@@ -188,6 +188,7 @@ class Merger {
       if (s.left < 0 || (root(s.left) == root(s.right) && !broken.count(root(s.left)))) continue;
       out.cuts.push_back(set_.cuts[k]);
       if (s.door) out.doors.push_back(set_.cuts[k]);
+      if (s.wall_line) out.wall_lines.push_back(set_.cuts[k]);
       ends.insert({set_.cuts[k].a.x, set_.cuts[k].a.y});
       ends.insert({set_.cuts[k].b.x, set_.cuts[k].b.y});
     }
@@ -217,6 +218,7 @@ class Merger {
     double length = 0.0;        // metres
     bool door = false;          // found by the door detector: never merged as "not a door"
     bool furniture = false;     // ends on a furniture-sized obstacle: no room boundary
+    bool wall_line = false;     // continues a wall across the free space
   };
 
   // Cuts with an end point on a small obstacle (a hole whose bounding box is at most
@@ -259,6 +261,7 @@ class Merger {
       if (left == owner.end() || right == owner.end() || left->second == right->second) continue;
       const bool door = std::find(set_.doors.begin(), set_.doors.end(), c) != set_.doors.end();
       sides_[k] = {left->second, right->second, distance(c.a, c.b) * resolution_, door};
+      sides_[k].wall_line = std::find(set_.wall_lines.begin(), set_.wall_lines.end(), c) != set_.wall_lines.end();
     }
   }
 
@@ -360,9 +363,13 @@ class Merger {
     const Side& s = sides_[static_cast<std::size_t>(k)];
     const bool left_narrow = width_left <= width_right;
     const int wide_room = root(left_narrow ? s.right : s.left);
+    // A wall line is the narrow room's wall drawn on: the wider side need only reach deeper than
+    // the narrow room is wide (step_wall_line_depth times), not step_min_wide_depth; an L-shaped
+    // corridor's corner is as deep as the corridor is wide, so it still merges.
     return std::min(width_left, width_right) < options_.step_ratio * std::max(width_left, width_right) &&
            std::min(room_area(root(s.left)), room_area(root(s.right))) >= options_.step_min_area &&
-           side_depth(k, wide_room, !left_narrow) >= options_.step_min_wide_depth;
+           side_depth(k, wide_room, !left_narrow) >= (s.wall_line ? options_.step_wall_line_depth * std::min(width_left, width_right)
+                                                                   : options_.step_min_wide_depth);
   }
 
   // Depth of room r behind cut k (metres): its chord along the cut's normal through the cut's middle.
@@ -436,7 +443,7 @@ void validate(const RoomMergeOptions& options) {
       !finite_non_negative(options.furniture_size))
     throw Error("the room merging depth, minimum room area, width and thickness and the furniture size must be non-negative numbers");
   if (!finite_non_negative(options.step_ratio) || options.step_ratio >= 1.0 || !finite_non_negative(options.step_min_area) ||
-      !finite_non_negative(options.step_min_wide_depth))
+      !finite_non_negative(options.step_min_wide_depth) || !finite_non_negative(options.step_wall_line_depth))
     throw Error("the width-step ratio must lie in [0, 1) and its area and depth must be non-negative numbers");
 }
 

@@ -351,6 +351,7 @@ void PieceSet::append(const PieceSet& other) {
   pieces.insert(pieces.end(), other.pieces.begin(), other.pieces.end());
   cuts.insert(cuts.end(), other.cuts.begin(), other.cuts.end());
   doors.insert(doors.end(), other.doors.begin(), other.doors.end());
+  wall_lines.insert(wall_lines.end(), other.wall_lines.begin(), other.wall_lines.end());
 }
 
 bool cut_sides(const Point2& a, const Point2& b, Point2& left, Point2& right) {

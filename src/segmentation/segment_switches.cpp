@@ -6,6 +6,7 @@ namespace topocut {
 
 void apply(const SegmentSwitches& s, SegmentOptions& options) {
   if (s.parity && (s.no_doors || s.no_wall_openings || s.no_merge || s.no_simplify || options.labels.cover_absorbed_obstacles ||
+                   s.no_wall_lines ||
                    s.no_clean || s.no_width_steps || s.no_furniture_rule))
     throw Error("--parity already switches every improvement off; give it alone");
   if (s.parity) {
@@ -25,6 +26,7 @@ void apply(const SegmentSwitches& s, SegmentOptions& options) {
   options.decompose = !s.trivial;
   if (s.no_width_steps) options.merge.step_ratio = 0.0;
   if (s.no_furniture_rule) options.merge.furniture_size = 0.0;
+  if (s.no_wall_lines) options.doors.wall_lines = false;
 }
 
 namespace {
@@ -71,6 +73,9 @@ const std::vector<OptionRow<SegmentSettings>>& segment_option_rows() {
       on_off("no-doors", [](auto& s) -> auto& { return s.switches.no_doors; }, "no door cuts before the decomposition"),
       on_off("no-wall-openings", [](auto& s) -> auto& { return s.switches.no_wall_openings; },
              "door cuts only at narrow passages, not where a thin wall stops short of the next obstacle"),
+      on_off("no-wall-lines", [](auto& s) -> auto& { return s.switches.no_wall_lines; },
+             "no cuts where a straight wall (2.5 m or more) continued across at most 5 m of free space meets the next "
+             "wall (room boundaries across wide openings, candidates that merging may remove)"),
       on_off("no-merge", [](auto& s) -> auto& { return s.switches.no_merge; },
              "keep DuDe's pieces as rooms instead of merging them across wide cuts"),
       number("fold-area", "M2", OptionRange::kNonNegative, [](auto& s) -> auto& { return s.options.merge.min_room_area; },

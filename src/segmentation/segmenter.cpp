@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <string>
 
 #include "topocut/core/error.h"
@@ -69,11 +70,17 @@ SegmentationInput segmentation_input(const OccupancyGrid& grid, const SegmentOpt
 
 namespace {
 
-PieceSet decompose_polygon(const PolygonWithHoles& polygon, double resolution, const SegmentOptions& options) {
+// Door cuts, then (with options.doors.wall_lines and wall_lines) wall lines split the polygon; each
+// part is decomposed on its own. Wall lines are ordinary cuts: merging may remove them.
+PieceSet decompose_polygon(const PolygonWithHoles& polygon, double resolution, const SegmentOptions& options, bool wall_lines) {
   PieceSet set;
   set.doors = find_door_cuts(polygon, resolution, options.doors);
-  const std::vector<PolygonWithHoles> parts = split_polygon(polygon, set.doors);
   set.cuts = set.doors;
+  if (options.doors.enabled && wall_lines) {
+    set.wall_lines = find_wall_line_cuts(polygon, resolution, options.doors, set.doors);
+    set.cuts.insert(set.cuts.end(), set.wall_lines.begin(), set.wall_lines.end());
+  }
+  const std::vector<PolygonWithHoles> parts = split_polygon(polygon, set.cuts);
   DecompositionOptions decomposition = options.decomposition;
   decomposition.tau = options.concavity * (options.merge.enabled ? options.oversegment : 1.0) / resolution;
   for (const PolygonWithHoles& part : parts) {
@@ -92,15 +99,28 @@ PieceSet decompose_pieces(const FreeSpaceComponent& component, double resolution
     set.pieces.push_back(component.polygon);
     return set;
   }
-  try {
-    if (options.simplify > 0.0) {
+  // The simplified polygon first, with wall lines if asked for; a wall line grazing a corner may
+  // leave a degenerate part, and simplified rings may touch after all (a very thin wall or gap), so
+  // each failure falls back to the next try, the exact polygon with the doors alone last.
+  auto attempt = [&](const PolygonWithHoles& polygon, bool last) -> std::optional<PieceSet> {
+    if (options.doors.wall_lines) {
       try {
-        return decompose_polygon(simplify_polygon(component.polygon, options.simplify), resolution, options);
+        return decompose_polygon(polygon, resolution, options, true);
       } catch (const Error&) {
-        // The simplified rings touch after all (a very thin wall or gap): use the exact ones.
       }
     }
-    return decompose_polygon(component.polygon, resolution, options);
+    if (last) return decompose_polygon(polygon, resolution, options, false);
+    try {
+      return decompose_polygon(polygon, resolution, options, false);
+    } catch (const Error&) {
+      return std::nullopt;
+    }
+  };
+  try {
+    if (options.simplify > 0.0) {
+      if (std::optional<PieceSet> set = attempt(simplify_polygon(component.polygon, options.simplify), false)) return *set;
+    }
+    return *attempt(component.polygon, true);
   } catch (const Error& e) {
     throw Error("decomposing the free-space component at cell (" + std::to_string(component.first_pixel.x) + ", " +
                 std::to_string(component.first_pixel.y) + ") failed: " + e.what());
@@ -116,6 +136,7 @@ SegmentOptions parity_segment_options(double concavity) {
   options.concavity = concavity;
   options.merge.enabled = false;
   options.doors.enabled = false;
+  options.doors.wall_lines = false;
   options.labels.cover_absorbed_obstacles = false;
   options.simplify = 0.0;
   options.clean = false;

@@ -128,6 +128,9 @@ TEST(DatasetOptions, RealMapSwitchesAndResolution) {
   // The method name tells each switch apart from the defaults.
   EXPECT_NE(method_name(a.run.segment).find("no cleaning"), std::string::npos);
   EXPECT_NE(method_name(a.run.segment).find("no width steps"), std::string::npos);
+  const DatasetArguments lines = parse_dataset_arguments({"--no-wall-lines"});
+  EXPECT_FALSE(lines.run.segment.doors.wall_lines);
+  EXPECT_NE(method_name(lines.run.segment).find("no wall lines"), std::string::npos);
 }
 
 }  // namespace

@@ -221,6 +221,20 @@ TEST(MergeRooms, ARoomOpeningOntoAMuchWiderDeepSpaceStaysApart) {
   corridor.pieces = {{{{0, 100}, {240, 100}, {240, 160}, {160, 160}, {80, 160}, {0, 160}}, {}}, box(80, 160, 160, 240)};
   corridor.cuts = set.cuts;
   EXPECT_EQ(merge_rooms(no_component(), corridor, kRes, RoomMergeOptions{}).pieces.size(), 1u);
+  // A 2 m x 4 m room onto a 12 m wide hall only 3 m deep: merged across a DuDe cut (3 < 5 m), kept
+  // apart across a wall line (the hall reaches 3 m behind it, more than 1.25 x 2 m), and the line
+  // stays listed as one.
+  PieceSet hall;
+  hall.pieces = {{{{0, 100}, {240, 100}, {240, 160}, {120, 160}, {80, 160}, {0, 160}}, {}}, box(80, 160, 120, 240)};
+  hall.cuts = {{{80, 160}, {120, 160}}};
+  EXPECT_EQ(merge_rooms(no_component(), hall, kRes, RoomMergeOptions{}).pieces.size(), 1u);
+  hall.wall_lines = hall.cuts;
+  const PieceSet kept = merge_rooms(no_component(), hall, kRes, RoomMergeOptions{});
+  EXPECT_EQ(kept.pieces.size(), 2u);
+  EXPECT_EQ(kept.wall_lines, hall.cuts);
+  // The 4 m room onto the 3 m corridor still merges across a wall line: 3 < 1.25 x 4 m.
+  corridor.wall_lines = corridor.cuts;
+  EXPECT_EQ(merge_rooms(no_component(), corridor, kRes, RoomMergeOptions{}).pieces.size(), 1u);
 }
 
 }  // namespace

@@ -58,8 +58,10 @@ TEST(SegmentOptionRows, ParityIsTheReferenceAndRefusesTheSwitchesItSets) {
   // A number it sets too: the value given wins.
   EXPECT_EQ(given({{"parity", 1}, {"min-room-area", 2.0}}).contours.min_component_area, 2.0);
   EXPECT_FALSE(given({{"parity", 1}, {"trivial", 1}}).decompose);
+  EXPECT_FALSE(given({{"no-wall-lines", 1}}).doors.wall_lines);
+  EXPECT_TRUE(given({}).doors.wall_lines);
   for (const char* sw : {"no-doors", "no-wall-openings", "no-merge", "no-simplify", "no-clean", "no-width-steps",
-                         "no-furniture-rule", "cover-obstacles"}) {
+                         "no-furniture-rule", "cover-obstacles", "no-wall-lines"}) {
     EXPECT_THROW(given({{"parity", 1}, {sw, 1}}), Error) << sw;
   }
 }

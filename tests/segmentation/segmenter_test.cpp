@@ -103,6 +103,34 @@ TEST(Segment, TrivialModeOneRoomPerComponentNumberedByFirstCell) {
   }
 }
 
+// Free cells of the rectangles (x, y, width, height in cells) on an occupied 0.05 m grid.
+OccupancyGrid plan(cv::Size size, std::initializer_list<cv::Rect> free) {
+  OccupancyGrid grid{cv::Mat(size, CV_8UC1, cv::Scalar(kOccupied)), 0.05, {0.0, 0.0}};
+  for (const cv::Rect& r : free) grid.cells(r).setTo(kFree);
+  return grid;
+}
+
+TEST(Segment, WallLinesSeparateARoomOpenAcrossItsWidthAndSplitNoRoomOfEvenWidth) {
+  SegmentOptions options;
+  options.doors.wall_lines = true;
+  // A 3.5 m x 4 m room on top of an 8 m x 6 m room, flush with its right wall, joined across the
+  // narrow room's whole width: two rooms, each rectangle one of them.
+  const OccupancyGrid two = plan({180, 220}, {cv::Rect(10, 10, 160, 120), cv::Rect(100, 130, 70, 80)});
+  const Segmentation s = segment(two, options);
+  expect_consistent(two, s);
+  ASSERT_EQ(s.rooms.size(), 2u);
+  const int wide = s.labels.at<int>(60, 50), narrow = s.labels.at<int>(180, 130);
+  EXPECT_NE(wide, narrow);
+  EXPECT_EQ(cv::countNonZero(s.labels(cv::Rect(10, 10, 160, 120)) == wide), 160 * 120);
+  EXPECT_EQ(cv::countNonZero(s.labels(cv::Rect(100, 130, 70, 80)) == narrow), 70 * 80);
+  // An L-shaped corridor 2 m wide, 10 m a leg, and a straight 20 m one: one room each; the wall
+  // lines at the inner corner cross the corridor at its own width and are merged away.
+  const OccupancyGrid bent = plan({240, 240}, {cv::Rect(10, 10, 200, 40), cv::Rect(10, 50, 40, 160)});
+  EXPECT_EQ(segment(bent, options).rooms.size(), 1u);
+  const OccupancyGrid straight = plan({420, 60}, {cv::Rect(10, 10, 400, 40)});
+  EXPECT_EQ(segment(straight, options).rooms.size(), 1u);
+}
+
 TEST(Segment, DefaultModeKeepsTheInvariants) {
   const OccupancyGrid grid = read_map(bundled("floorplan"));
   const Segmentation s = segment(grid);

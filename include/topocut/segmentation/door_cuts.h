@@ -3,8 +3,9 @@
 // not where people put room boundaries; a door is a narrow passage between two wider spaces. This
 // stage finds such passages geometrically, at every wall corner that points into free space (a
 // reflex vertex: door jambs, wall ends), as the shortest segment that resolves the corner, and
-// keeps the segments that are much narrower than the space on both of their sides. The component
-// is then split along them, and each part is decomposed on its own.
+// keeps the segments that are much narrower than the space on both of their sides. Wall lines, the
+// straight walls continued across wide openings, are found here too, since they share the search.
+// The component is then split along both, and each part is decomposed on its own.
 #include <vector>
 
 #include "topocut/core/geometry.h"
@@ -36,6 +37,16 @@ struct DoorOptions {
   double min_wall_length = 0.3;
   double gap_alignment = 0.2;
   double min_side_width = 1.0;
+  // Wall lines (find_wall_line_cuts): from a corner, a straight wall at least wall_line_wall long
+  // (every point within wall_line_straightness of its line) continued across at most max_wall_line
+  // metres of free space to the next wall, as people draw room boundaries across wide openings. Of
+  // two lines closer than wall_line_spacing along their whole length (the two faces of a partition
+  // continued across a corridor) only the shorter is kept: the strip between them is no room.
+  bool wall_lines = true;
+  double max_wall_line = 5.0;
+  double wall_line_wall = 2.5;
+  double wall_line_straightness = 0.2;
+  double wall_line_spacing = 2.5;
 };
 
 // Throws Error unless the options are usable.
@@ -47,6 +58,14 @@ void validate(const DoorOptions& options);
 // polygon, pairwise disjoint (they may share an end point), each splitting the polygon in two.
 // Deterministic.
 std::vector<Segment2> find_door_cuts(const PolygonWithHoles& polygon, double resolution, const DoorOptions& options = {});
+
+// Candidate room boundaries beside the doors (empty unless options.wall_lines): from every reflex
+// corner, each of its straight walls (options.wall_line_*) continued to the first wall of the same
+// ring within options.max_wall_line metres, at least options.min_side_width long and leaving both
+// sides that wide; shortest first, none crossing a door or another, none within
+// options.wall_line_spacing of a shorter one along its whole length. Doors are not repeated.
+std::vector<Segment2> find_wall_line_cuts(const PolygonWithHoles& polygon, double resolution, const DoorOptions& options,
+                                          const std::vector<Segment2>& doors);
 
 // Splits polygon (outer ring CCW, holes CW, rings pairwise disjoint) along chords: segments whose
 // end points lie on the rings (vertices or points on edges), that lie inside the polygon and do not

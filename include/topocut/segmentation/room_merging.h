@@ -47,6 +47,10 @@ struct RoomMergeOptions {
   double step_ratio = 0.6;
   double step_min_area = 6.0;
   double step_min_wide_depth = 5.0;
+  // Across a wall line (PieceSet::wall_lines: the narrow room's wall drawn on) the wider side need
+  // only be this many times as deep as the narrow side is wide: a room opening onto a shallow hall.
+  // An L-shaped corridor's corner is as deep as the corridor is wide, so it stays one room.
+  double step_wall_line_depth = 1.25;
 };
 
 // Throws Error unless the options are usable (finite, non-negative, door_ratio > 0).

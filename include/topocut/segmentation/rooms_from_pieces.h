@@ -15,6 +15,7 @@ struct PieceSet {
   std::vector<PolygonWithHoles> pieces;
   std::vector<Segment2> cuts;  // a cut between two pieces becomes a passage; others are ignored
   std::vector<Segment2> doors; // the cuts found as doors (door_cuts.h), also listed in cuts
+  std::vector<Segment2> wall_lines;  // the cuts that continue a wall (find_wall_line_cuts), also in cuts
 
   // Appends other's pieces and cuts (pieces from several components, or reused ones).
   void append(const PieceSet& other);

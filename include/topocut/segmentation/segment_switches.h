@@ -19,6 +19,7 @@ struct SegmentSwitches {
   bool no_clean = false;          // --no-clean
   bool no_width_steps = false;    // --no-width-steps
   bool no_furniture_rule = false; // --no-furniture-rule
+  bool no_wall_lines = false;     // --no-wall-lines
   // parity resets min-room-area to the reference's unless the caller gave it.
   bool min_room_area_given = false;
 };
@@ -27,9 +28,9 @@ struct SegmentSwitches {
 // sets the reference behaviour (parity_segment_options at options' concavity: no door cuts, no
 // merging, no simplification, no cleaning, absorbed obstacles not covered, the reference's smallest
 // room area unless min_room_area_given); combined with a switch it already sets (no_doors,
-// no_wall_openings, no_merge, no_simplify, no_clean, no_width_steps, no_furniture_rule, or
-// labels.cover_absorbed_obstacles) it throws Error. Numbers it does not set (robot radius, hole
-// area, ...) and trivial still apply.
+// no_wall_openings, no_merge, no_simplify, no_clean, no_width_steps, no_furniture_rule,
+// no_wall_lines) or with labels.cover_absorbed_obstacles it throws Error. Numbers it does not set
+// (robot radius, hole area, ...) and trivial still apply.
 void apply(const SegmentSwitches& switches, SegmentOptions& options);
 
 // What a front end collects before apply(): the numbers in options, the switches beside them.
