@@ -180,7 +180,7 @@ TEST(MergeRooms, ASliverThinnerThanAPersonIsFolded) {
 // A 10 m x 5 m room with an obstacle of side cells in its middle, cut by DuDe into four pieces whose
 // cuts all end on the obstacle's corners.
 PieceSet around_obstacle(int side, FreeSpaceComponent& component) {
-  const int x0 = 100 - side / 2, x1 = 100 + side / 2, y0 = 50 - side / 2, y1 = 50 + side / 2;
+  const double x0 = 100 - side / 2, x1 = 100 + side / 2, y0 = 50 - side / 2, y1 = 50 + side / 2;
   component.polygon.outer = {{0, 0}, {200, 0}, {200, 100}, {0, 100}};
   component.polygon.holes = {{{x0, y0}, {x0, y1}, {x1, y1}, {x1, y0}}};  // clockwise
   PieceSet set;
