@@ -18,9 +18,7 @@ import json
 import os
 import platform
 import shutil
-import signal
 import statistics
-import struct
 import subprocess
 import sys
 import tempfile
@@ -31,11 +29,6 @@ sys.path.insert(0, os.path.join(HERE, "..", "ros", "test"))
 import node_test  # noqa: E402  (the loopback machinery and the growing sequence, defined once there)
 
 DEFAULT_MAPS = ["Freiburg52_scan", "lab_a_scan", "lab_d_scan", "office_a", "office_e", "NLB"]
-
-
-def percentile95(values):
-    ordered = sorted(values)
-    return ordered[min(len(ordered) - 1, int(0.95 * len(ordered) + 0.999) - 1)]
 
 
 def cpu_model():
@@ -50,7 +43,7 @@ def cpu_model():
     return platform.machine()
 
 
-def run_map(args, env, work, grids):
+def run_map(args, env, grids):
     """Starts a fresh node, publishes the grids one by one; returns (update_ms, callback_ms) lists."""
     import rospy
     from nav_msgs.msg import OccupancyGrid
@@ -67,15 +60,8 @@ def run_map(args, env, work, grids):
         time.sleep(0.3)
         updates, callbacks = [], []
         for k, g in enumerate(grids):
-            m = OccupancyGrid()
-            m.header.frame_id = "map"
-            m.header.stamp = rospy.Time(1000 + k)
-            m.info.width, m.info.height, m.info.resolution = g["width"], g["height"], g["resolution"]
-            m.info.origin.position.x, m.info.origin.position.y = g["x"], g["y"]
-            m.info.origin.orientation.w = 1.0
-            m.data = list(struct.unpack("%db" % len(g["values"]), g["values"]))
             count = len(timings)
-            pub.publish(m)
+            pub.publish(node_test.occupancy_grid_message(g, k))
             node_test.wait_for(lambda: len(timings) > count, "rooms for map %d" % k, timeout=60)
             t = json.loads(timings[-1])
             updates.append(t["update_ms"])
@@ -127,7 +113,7 @@ def main():
             subprocess.run([reference, "export", image, grid_path], check=True, timeout=120)
             full = node_test.read_grid(grid_path)
             grids = node_test.growing_sequence(full, args.steps)
-            updates, callbacks = run_map(args, env, work, grids)
+            updates, callbacks = run_map(args, env, grids)
             rows.append((name, full, updates, callbacks))
             all_updates += updates
             all_callbacks += callbacks
@@ -145,10 +131,10 @@ def main():
     print("|---|---|---|---|---|---|")
 
     def row(name, grid, updates, callbacks):
-        ratio = percentile95(callbacks) / percentile95(updates) if percentile95(updates) > 0 else float("inf")
+        ratio = node_test.percentile95(callbacks) / node_test.percentile95(updates) if node_test.percentile95(updates) > 0 else float("inf")
         print("| %s | %s | %d | %.2f / %.2f | %.2f / %.2f | %.2f |" % (
-            name, grid, len(updates), statistics.median(updates), percentile95(updates),
-            statistics.median(callbacks), percentile95(callbacks), ratio))
+            name, grid, len(updates), statistics.median(updates), node_test.percentile95(updates),
+            statistics.median(callbacks), node_test.percentile95(callbacks), ratio))
         return ratio
 
     for name, full, updates, callbacks in rows:

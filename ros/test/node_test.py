@@ -95,6 +95,26 @@ def growing_sequence(full, steps):
     return grids
 
 
+def occupancy_grid_message(g, seq, frame="map"):
+    """The grid as a nav_msgs/OccupancyGrid stamped 1000 + seq s (the stamp names the answer)."""
+    import rospy
+    from nav_msgs.msg import OccupancyGrid
+    m = OccupancyGrid()
+    m.header.frame_id = frame
+    m.header.stamp = rospy.Time(1000 + seq)
+    m.info.width, m.info.height, m.info.resolution = g["width"], g["height"], g["resolution"]
+    m.info.origin.position.x, m.info.origin.position.y = g["x"], g["y"]
+    m.info.origin.orientation.w = 1.0
+    m.data = list(struct.unpack("%db" % len(g["values"]), g["values"]))
+    return m
+
+
+def percentile95(values):
+    """The nearest-rank 95th percentile."""
+    ordered = sorted(values)
+    return ordered[min(len(ordered) - 1, int(0.95 * len(ordered) + 0.999) - 1)]
+
+
 def churn(a, b):
     """Share of the cells labelled in both grids (matched through their origins) whose id changed."""
     res = a["resolution"]
@@ -188,16 +208,6 @@ def run_checks(args, env, work, node_log, full, grids):
     wait_for(lambda: "/topocut" in [n for n in rosnode_names()], "the node to register")
     time.sleep(0.5)
 
-    def message(g, seq, frame="map"):
-        m = OccupancyGrid()
-        m.header.frame_id = frame
-        m.header.stamp = rospy.Time(1000 + seq)
-        m.info.width, m.info.height, m.info.resolution = g["width"], g["height"], g["resolution"]
-        m.info.origin.position.x, m.info.origin.position.y = g["x"], g["y"]
-        m.info.origin.orientation.w = 1.0
-        m.data = list(struct.unpack("%db" % len(g["values"]), g["values"]))
-        return m
-
     def publish_and_wait(m):
         stamp = m.header.stamp
         counts = {k: len(v) for k, v in received.items()}
@@ -238,17 +248,17 @@ def run_checks(args, env, work, node_log, full, grids):
 
     latencies, updates = [], []
     # 1. The whole map at once.
-    labels, markers, graph, timing = publish_and_wait(message(full, 0))
+    labels, markers, graph, timing = publish_and_wait(occupancy_grid_message(full, 0))
     ids = check_rooms(full, labels, markers, graph, read(os.path.join(work, "full_labels.u16")),
                       read(os.path.join(work, "full_rooms.json")), "full map")
     print("full map %d x %d: %d rooms, node callback %.2f ms, library update %.2f ms" %
           (full["width"], full["height"], len(ids), timing["callback_ms"], timing["update_ms"]))
 
     # 3a. Malformed maps between the two runs: logged, skipped, the node lives on.
-    bad = message(full, 1)
+    bad = occupancy_grid_message(full, 1)
     bad.data = bad.data[:-1]
     publisher.publish(bad)
-    zero = message(full, 2)
+    zero = occupancy_grid_message(full, 2)
     zero.info.resolution = 0.0
     time.sleep(0.3)
     publisher.publish(zero)
@@ -266,7 +276,7 @@ def run_checks(args, env, work, node_log, full, grids):
     previous = None
     churns = []
     for k, g in enumerate(grids[1:]):
-        labels, markers, graph, timing = publish_and_wait(message(g, 10 + k))
+        labels, markers, graph, timing = publish_and_wait(occupancy_grid_message(g, 10 + k))
         check_rooms(g, labels, markers, graph, read(os.path.join(work, "labels_%d.u16" % k)),
                     read(os.path.join(work, "rooms_%d.json" % k)), "growing map %d" % k)
         latencies.append(timing["callback_ms"])
@@ -280,10 +290,8 @@ def run_checks(args, env, work, node_log, full, grids):
     # first growth quadruples the map, a batch update with ids kept by overlap: about 7 % here).
     assert statistics.median(churns) == 0.0 and max(churns) <= 0.10, "churn %s" % churns
     print("growing sequence of %d maps: churn per update %s" % (len(grids) - 1, ", ".join("%.4f" % c for c in churns)))
-    ordered = sorted(latencies)
-    p95 = ordered[min(len(ordered) - 1, int(0.95 * len(ordered) + 0.999) - 1)]
-    up = sorted(updates)
-    up95 = up[min(len(up) - 1, int(0.95 * len(up) + 0.999) - 1)]
+    p95 = percentile95(latencies)
+    up95 = percentile95(updates)
     print("node latency (map received -> rooms published): median %.2f ms, p95 %.2f ms; library update median %.2f ms, "
           "p95 %.2f ms; ratio of p95s %.1f" % (statistics.median(latencies), p95, statistics.median(updates), up95,
                                                p95 / up95 if up95 > 0 else float("inf")))
