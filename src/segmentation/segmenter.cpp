@@ -60,9 +60,15 @@ SegmentationInput segmentation_input(const OccupancyGrid& grid, const SegmentOpt
   CleanedFreeSpace cleaned = clean_free_space(input.floor, grid.cells, grid.resolution, options.cleaning);
   if (cv::countNonZero(cleaned.floor) == 0) return input;
   input.floor = cleaned.floor;
-  if (cleaned.outside_cells > 0) {
+  // An unknown speck enclosed by floor is floor the sensor never reported (a cell between two
+  // readings, a grey pixel of a half-seen spot), so it gets the room like the floor around it;
+  // occupied specks (chair legs) stay obstacles.
+  const cv::Mat unknown_specks = (cleaned.removed == kCellObstacleSpeck) & (grid.cells == kUnknown);
+  const bool outside = cleaned.outside_cells > 0, specks = cv::countNonZero(unknown_specks) > 0;
+  if (outside || specks) {
     input.labelled.cells = grid.cells.clone();
-    input.labelled.cells.setTo(kUnknown, cleaned.removed == kCellRemovedOutside);
+    if (outside) input.labelled.cells.setTo(kUnknown, cleaned.removed == kCellRemovedOutside);
+    if (specks) input.labelled.cells.setTo(kFree, unknown_specks);
   }
   input.cleaned = std::move(cleaned);
   return input;

@@ -322,8 +322,9 @@ namespace {
 
 TEST(Segment, RaysOutsideTheBuildingAreNoRoomAndSpecksAreNoRooms) {
   // A walled 5 m x 5 m room with a window in its top wall and one-cell laser rays fanning out of
-  // it into the unknown, plus a 3 x 3 obstacle speck, and in the unknown far away a scrap of free
-  // space thinner than a person and a 0.8 m x 0.8 m free speck.
+  // it into the unknown, plus a 3 x 3 obstacle speck and a 2 x 2 speck never observed (unknown),
+  // and in the unknown far away a scrap of free space thinner than a person and a 0.8 m x 0.8 m
+  // free speck.
   OccupancyGrid grid{cv::Mat(200, 200, CV_8UC1, cv::Scalar(kUnknown)), 0.05, {0.0, 0.0}};
   cv::rectangle(grid.cells, cv::Rect(49, 79, 102, 102), cv::Scalar(kOccupied), cv::FILLED);
   grid.cells(cv::Rect(50, 80, 100, 100)).setTo(kFree);
@@ -337,12 +338,14 @@ TEST(Segment, RaysOutsideTheBuildingAreNoRoomAndSpecksAreNoRooms) {
     }
   }
   grid.cells(cv::Rect(80, 120, 3, 3)).setTo(kOccupied);
+  grid.cells(cv::Rect(60, 140, 2, 2)).setTo(kUnknown);
   grid.cells(cv::Rect(5, 190, 4, 4)).setTo(kFree);
   grid.cells(cv::Rect(5, 20, 16, 16)).setTo(kFree);
   const Segmentation s = segment(grid);
   ASSERT_EQ(s.rooms.size(), 1u);
   for (const cv::Point& p : far_rays) EXPECT_EQ(s.labels.at<int>(p), 0) << p;
   EXPECT_EQ(s.labels.at<int>(120, 80), 0);  // the obstacle speck stays unlabelled
+  EXPECT_EQ(cv::countNonZero(s.labels(cv::Rect(60, 140, 2, 2)) == 1), 4);  // unobserved floor: the room's
   EXPECT_EQ(s.labels.at<int>(100, 100), 1);
   EXPECT_EQ(s.labels.at<int>(190, 5), 0);  // thin and in the unknown: outside the building
   EXPECT_EQ(s.labels.at<int>(25, 10), 1);  // below 1 m²: no room, joins the nearest (DESIGN.md)
@@ -351,6 +354,7 @@ TEST(Segment, RaysOutsideTheBuildingAreNoRoomAndSpecksAreNoRooms) {
   raw.clean = false;
   const Segmentation r = segment(grid, raw);
   EXPECT_NE(r.labels.at<int>(far_rays.back()), 0);
+  EXPECT_EQ(r.labels.at<int>(140, 60), 0);  // without the cleaning unknown is never labelled
 }
 
 }  // namespace

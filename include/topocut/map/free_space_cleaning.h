@@ -5,8 +5,9 @@
 // seen once). Left in, they become rooms nobody would draw and they multiply the vertices of every
 // outline. This stage keeps the floor: free space a disc of a person's width fits into, plus a
 // margin around it, and walled-in narrow space; obstacle specks inside it are floor for the
-// decomposition (they stay unlabelled cells). Free specks are left to the contour stage, which drops
-// components below ContourOptions::min_component_area. What it removes is labelled as a person would: removed cells inside the building (rays
+// decomposition (segment() labels the unknown ones with their room: unobserved floor). Free specks
+// are left to the contour stage, which drops components below ContourOptions::min_component_area.
+// What it removes is labelled as a person would: removed cells inside the building (rays
 // between furniture, a sliver behind a cupboard) join the room next to them; those outside it (rays
 // through windows, glass and open doors into the outside or into rooms never entered, specks beyond
 // the walls) belong to no room.
@@ -17,7 +18,8 @@ namespace topocut {
 struct FreeSpaceCleaningOptions {
   // Obstacle specks: connected non-free regions (8-connected) enclosed by free space whose bounding
   // box is at most this long (metres) on both sides. They count as floor (no hole of a polygon, no
-  // door jamb), while their cells stay unlabelled. 0 keeps every obstacle.
+  // door jamb); segment() labels the unknown ones with the room around them, the occupied ones
+  // none. 0 keeps every obstacle.
   double max_obstacle_speck = 0.3;
   // Thin free space: free cells farther than min_width / 4 (along free space) from every disc of
   // diameter min_width (metres) that fits into the free space are thin. A connected thin part is

@@ -62,8 +62,9 @@ cv::Mat segmentation_free_space(const OccupancyGrid& grid, const SegmentOptions&
 // Stage 2: what segment() decomposes and labels. floor is the free space to decompose (CV_8UC1,
 // 255): the binarized free space, cleaned by clean_free_space() when options.clean. labelled is the
 // grid whose free cells get a room: the input with the cells the cleaning put outside the building
-// made unknown. cleaned is empty unless options.clean; when the cleaning would leave no floor at all
-// (a map smaller than one room), the binarized free space is used as it is.
+// made unknown and its unknown obstacle specks (floor nobody observed) made free. cleaned is empty
+// unless options.clean; when the cleaning would leave no floor at all (a map smaller than one
+// room), the binarized free space is used as it is.
 struct SegmentationInput {
   cv::Mat floor;
   OccupancyGrid labelled;
