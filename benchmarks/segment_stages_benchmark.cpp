@@ -98,7 +98,11 @@ Segmentation time_stages(const std::string& path, const MapLoadOptions& load, co
   const double a = Clock::now();
   const OccupancyGrid grid = load_map(path, load);
   const double b = Clock::now();
-  const SegmentationInput input = segmentation_input(grid, options);
+  // As segment() does: the stages run on the known cells' box (the labels are placed back into the
+  // whole map in the labels column).
+  const cv::Rect box = segmentation_box(grid, options);
+  const OccupancyGrid part = box.size() == grid.cells.size() ? grid : crop(grid, box);
+  const SegmentationInput input = segmentation_input(part, options);
   const double c = Clock::now();
   const FreeSpacePolygons polygons = free_space_polygons(input.floor, grid.resolution, options.contours);
   const double d = Clock::now();
@@ -111,8 +115,13 @@ Segmentation time_stages(const std::string& path, const MapLoadOptions& load, co
     pieces.append(merge_rooms(polygons.components[i], raw[i], grid.resolution, options.merge));
   const double f = Clock::now();
   Segmentation s = rooms_from_pieces(input.labelled, pieces, options.labels);
+  if (part.cells.size() != grid.cells.size()) {
+    cv::Mat labels = cv::Mat::zeros(grid.cells.size(), CV_32SC1);
+    s.labels.copyTo(labels(box));
+    s.labels = labels;
+  }
   const double g = Clock::now();
-  segmentation_free_space(grid, options);
+  segmentation_free_space(part, options);
   t.free_space.push_back(ms(g, Clock::now()));
   t.load.push_back(ms(a, b));
   t.clean.push_back(ms(b, c));

@@ -27,6 +27,17 @@ Point2 world_to_grid(const OccupancyGrid& grid, const Point2& w) {
   return {(w.x - grid.origin.x) / grid.resolution - 0.5, (w.y - grid.origin.y) / grid.resolution - 0.5};
 }
 
+OccupancyGrid crop(const OccupancyGrid& grid, const cv::Rect& box) {
+  if (box.empty() || (box & cv::Rect(0, 0, grid.width(), grid.height())) != box)
+    throw Error("the box to crop must be a non-empty part of the map");
+  OccupancyGrid part;
+  part.cells = grid.cells(box).clone();
+  part.resolution = grid.resolution;
+  part.origin = {grid.origin.x + box.x * grid.resolution,
+                 grid.origin.y + (grid.height() - box.y - box.height) * grid.resolution};
+  return part;
+}
+
 void validate(const OccupancyGrid& grid) {
   if (grid.cells.empty()) throw Error("the map is empty (0 cells)");
   if (grid.cells.type() != CV_8UC1) throw Error("the occupancy grid must be a single-channel 8-bit image");

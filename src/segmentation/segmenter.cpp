@@ -7,6 +7,8 @@
 #include <optional>
 #include <string>
 
+#include <opencv2/imgproc.hpp>
+
 #include "topocut/core/error.h"
 #include "topocut/core/value_ranges.h"
 #include "topocut/map/simplify.h"
@@ -150,10 +152,23 @@ SegmentOptions parity_segment_options(double concavity) {
   return options;
 }
 
-Segmentation segment(const OccupancyGrid& grid, const SegmentOptions& options, SegmentationInput* used) {
-  validate(options);
-  SegmentationInput local;
-  SegmentationInput& input = used ? *used : local;
+cv::Rect segmentation_box(const OccupancyGrid& grid, const SegmentOptions& options) {
+  validate(grid);
+  const cv::Rect box = cv::boundingRect(grid.cells != kUnknown);
+  if (box.empty()) return cv::Rect(0, 0, grid.width(), grid.height());
+  // Wider than every stage looks beyond a cell: the cleaning's closing and thickness test, the
+  // robot radius, the opening and the median filter.
+  const BinarizeOptions& b = options.binarize;
+  const double reach = options.cleaning.inside_closing + options.cleaning.min_width + options.cleaning.max_obstacle_speck +
+                       b.robot_radius + b.opening_size + b.median_size;
+  const int margin = static_cast<int>(std::ceil(reach / grid.resolution)) + 4;
+  return cv::Rect(box.x - margin, box.y - margin, box.width + 2 * margin, box.height + 2 * margin) &
+         cv::Rect(0, 0, grid.width(), grid.height());
+}
+
+namespace {
+
+Segmentation segment_whole(const OccupancyGrid& grid, const SegmentOptions& options, SegmentationInput& input) {
   input = segmentation_input(grid, options);
   const FreeSpacePolygons polygons = free_space_polygons(input.floor, grid.resolution, options.contours);
   PieceSet pieces;
@@ -161,6 +176,42 @@ Segmentation segment(const OccupancyGrid& grid, const SegmentOptions& options, S
     pieces.append(decompose_component(component, grid.resolution, options));
   Segmentation segmentation = rooms_from_pieces(input.labelled, pieces, options.labels);
   for (Passage& passage : segmentation.passages) passage.door = is_door(passage, options.doors);
+  return segmentation;
+}
+
+// An image of the given size holding image at box and value everywhere else.
+cv::Mat placed(const cv::Mat& image, const cv::Size& size, const cv::Rect& box, double value) {
+  if (image.empty()) return image;
+  cv::Mat whole(size, image.type(), cv::Scalar::all(value));
+  image.copyTo(whole(box));
+  return whole;
+}
+
+// The stages' images of the box, placed back into the whole grid.
+void place_input(SegmentationInput& input, const OccupancyGrid& grid, const cv::Rect& box) {
+  input.floor = placed(input.floor, grid.cells.size(), box, 0);
+  cv::Mat labelled = grid.cells.clone();
+  input.labelled.cells.copyTo(labelled(box));
+  input.labelled = OccupancyGrid{labelled, grid.resolution, grid.origin};
+  input.cleaned.floor = placed(input.cleaned.floor, grid.cells.size(), box, 0);
+  input.cleaned.removed = placed(input.cleaned.removed, grid.cells.size(), box, kCellUntouched);
+}
+
+}  // namespace
+
+Segmentation segment(const OccupancyGrid& grid, const SegmentOptions& options, SegmentationInput* used) {
+  validate(options);
+  validate(grid);
+  SegmentationInput local;
+  SegmentationInput& input = used ? *used : local;
+  // SLAM maps are mostly unknown around the building (gmapping's default is 4000 x 4000 cells):
+  // the stages run on the known cells' box only.
+  const cv::Rect box = segmentation_box(grid, options);
+  if (box.size() == grid.cells.size()) return segment_whole(grid, options, input);
+  Segmentation segmentation = segment_whole(crop(grid, box), options, input);
+  segmentation.labels = placed(segmentation.labels, grid.cells.size(), box, 0);
+  segmentation.origin = grid.origin;
+  if (used) place_input(input, grid, box);
   return segmentation;
 }
 

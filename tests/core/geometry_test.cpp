@@ -54,6 +54,27 @@ TEST(OccupancyGrid, CellCentresFollowRosConvention) {
   EXPECT_NEAR(g.y, 3.0, 1e-12);
 }
 
+TEST(OccupancyGrid, CropKeepsEveryCellInItsWorldPlace) {
+  OccupancyGrid grid{cv::Mat(5, 7, CV_8UC1), 0.5, {-1.0, 2.0}};
+  cv::randu(grid.cells, 0, 256);
+  const cv::Rect box(2, 1, 4, 3);
+  OccupancyGrid part = crop(grid, box);
+  ASSERT_EQ(part.cells.size(), box.size());
+  EXPECT_EQ(part.resolution, grid.resolution);
+  for (int r = 0; r < box.height; ++r) {
+    for (int c = 0; c < box.width; ++c) {
+      EXPECT_EQ(part.cells.at<unsigned char>(r, c), grid.cells.at<unsigned char>(r + box.y, c + box.x));
+      const Point2 a = cell_center_world(part, c, r), b = cell_center_world(grid, c + box.x, r + box.y);
+      EXPECT_NEAR(a.x, b.x, 1e-12);
+      EXPECT_NEAR(a.y, b.y, 1e-12);
+    }
+  }
+  part.cells.setTo(0);  // a copy, not a view
+  EXPECT_NE(cv::countNonZero(grid.cells(box)), 0);
+  EXPECT_THROW(crop(grid, cv::Rect(5, 0, 3, 2)), Error);  // beyond the right edge
+  EXPECT_THROW(crop(grid, cv::Rect(0, 0, 0, 2)), Error);
+}
+
 TEST(OccupancyGrid, ValidateRejectsBadResolution) {
   OccupancyGrid grid{cv::Mat(2, 2, CV_8UC1, cv::Scalar(kFree)), 0.0, {}};
   EXPECT_THROW(validate(grid), Error);

@@ -138,6 +138,43 @@ TEST(Segment, DefaultModeKeepsTheInvariants) {
   EXPECT_GE(s.rooms.size(), 1u);
 }
 
+TEST(Segment, UnknownAroundTheMapChangesNoRoom) {
+  // The same map with 1000 / 600 / 400 / 700 more unknown cells on its four sides (origin moved so
+  // that it stays in place): segment() works on the known cells' box, so rooms, labels and
+  // passages are the same, and the labels outside are 0.
+  const OccupancyGrid grid = read_map(bundled("furnished"));
+  const int left = 1000, top = 600, right = 400, bottom = 700;
+  OccupancyGrid wide;
+  cv::copyMakeBorder(grid.cells, wide.cells, top, bottom, left, right, cv::BORDER_CONSTANT, cv::Scalar(kUnknown));
+  wide.resolution = grid.resolution;
+  wide.origin = {grid.origin.x - left * grid.resolution, grid.origin.y - bottom * grid.resolution};
+  const Segmentation s = segment(grid), w = segment(wide);
+  expect_consistent(wide, w);
+  const cv::Rect inner(left, top, grid.width(), grid.height());
+  EXPECT_EQ(cv::countNonZero(w.labels(inner) != s.labels), 0);
+  EXPECT_EQ(cv::countNonZero(w.labels), cv::countNonZero(s.labels));
+  ASSERT_EQ(w.rooms.size(), s.rooms.size());
+  for (std::size_t i = 0; i < s.rooms.size(); ++i) {
+    EXPECT_NEAR(w.rooms[i].area, s.rooms[i].area, 1e-9);
+    EXPECT_NEAR(w.rooms[i].centroid.x, s.rooms[i].centroid.x, 1e-6);
+    EXPECT_NEAR(w.rooms[i].centroid.y, s.rooms[i].centroid.y, 1e-6);
+  }
+  ASSERT_EQ(w.passages.size(), s.passages.size());
+  for (std::size_t i = 0; i < s.passages.size(); ++i) {
+    EXPECT_EQ(w.passages[i].room_a, s.passages[i].room_a);
+    EXPECT_EQ(w.passages[i].room_b, s.passages[i].room_b);
+    EXPECT_NEAR(w.passages[i].width, s.passages[i].width, 1e-6);
+  }
+  // What the cleaning saw comes back at the whole map's size, for --out-clean.
+  SegmentationInput input;
+  segment(wide, {}, &input);
+  EXPECT_EQ(input.cleaned.removed.size(), wide.cells.size());
+  EXPECT_EQ(input.labelled.cells.size(), wide.cells.size());
+  const cv::Rect box = segmentation_box(wide, {});
+  EXPECT_LT(box.area(), wide.cells.total() / 4);
+  EXPECT_TRUE((box & inner) == inner);
+}
+
 TEST(Segment, RobotRadiusShrinksPiecesButStillLabelsEveryFreeCell) {
   const OccupancyGrid grid = read_map(bundled("furnished"));
   SegmentOptions options = trivial();

@@ -56,6 +56,13 @@ SegmentOptions parity_segment_options(double concavity = 2.5);
 struct SegmentationInput;
 Segmentation segment(const OccupancyGrid& grid, const SegmentOptions& options = {}, SegmentationInput* input = nullptr);
 
+// Stage 0: the part of grid that segment() works on (crop()): the box of its known (free or
+// occupied) cells with a margin wider than any stage looks beyond a cell, clipped to the grid; the
+// whole grid when it has no known cell. Every cell outside is unknown, so the box alone gives the
+// same rooms, and SLAM maps are mostly unknown around the building (gmapping's default map is
+// 4000 x 4000 cells).
+cv::Rect segmentation_box(const OccupancyGrid& grid, const SegmentOptions& options);
+
 // Stage 1: the binarized free-space mask (options.binarize applied); throws Error if it is empty.
 cv::Mat segmentation_free_space(const OccupancyGrid& grid, const SegmentOptions& options);
 
