@@ -68,10 +68,14 @@ Histogram border_histogram(const cv::Mat& levels, const cv::Mat& transparent) {
   return histogram;
 }
 
-// Local maxima of the histogram (ties go to the darker level) holding enough of the pixels, darkest first.
-std::vector<int> histogram_modes(const Histogram& histogram, const PaletteDetectionOptions& options) {
+// Local maxima of the histogram (ties go to the darker level) holding enough of the pixels, darkest
+// first. The share is of the pixels not at the border's level (-1: none): a SLAM map's unexplored
+// surroundings can be nearly all of it (gmapping's default map is 4000 x 4000 cells), and its walls
+// must not drop below the share because the map around them is large.
+std::vector<int> histogram_modes(const Histogram& histogram, int border, const PaletteDetectionOptions& options) {
   double total = 0.0;
   for (double count : histogram) total += count;
+  if (border >= 0) total -= histogram[static_cast<std::size_t>(border)];
   std::vector<int> modes;
   for (int v = 0; v < 256; ++v) {
     if (histogram[v] <= 0.0 || histogram[v] < options.min_mode_share * total) continue;
@@ -108,7 +112,8 @@ MapPalette threshold_palette(int free_min, int occupied_max) {
 MapPalette detect_palette(const cv::Mat& levels, const cv::Mat& transparent, int fallback_free_min, int fallback_occupied_max,
                           const PaletteDetectionOptions& options) {
   CV_Assert(levels.type() == CV_8UC1 && transparent.type() == CV_8UC1 && levels.size() == transparent.size());
-  const std::vector<int> modes = histogram_modes(level_histogram(levels, transparent), options);
+  const int border = border_level(border_histogram(levels, transparent), options);
+  const std::vector<int> modes = histogram_modes(level_histogram(levels, transparent), border, options);
   if (modes.size() < 2 || modes.back() < 128) return threshold_palette(fallback_free_min, fallback_occupied_max);
 
   const int free = modes.back();
@@ -116,7 +121,6 @@ MapPalette detect_palette(const cv::Mat& levels, const cv::Mat& transparent, int
   if (modes.size() == 2) {
     (modes.front() < options.dark_level ? occupied : unknown) = modes.front();
   } else {
-    const int border = border_level(border_histogram(levels, transparent), options);
     if (border >= 0 && nearest(modes, border) != free) unknown = nearest(modes, border);
     for (int mode : modes) {
       if (mode != unknown && mode != free) {

@@ -52,6 +52,20 @@ TEST(MapPalette, MapServerPgm) {
   EXPECT_EQ(p.state[0], kOccupied);
 }
 
+TEST(MapPalette, ALargeUnexploredSurroundingChangesNothing) {
+  // gmapping's default map is 4000 x 4000 cells, with the building in a small part of it: the walls
+  // are far fewer than half a percent of all cells, but as many of the cells that are not unknown.
+  // Before the share ignored the border's level, this map's walls read as unknown.
+  const cv::Mat map = slam_map(205, 0, 254);
+  cv::Mat wide;
+  cv::copyMakeBorder(map, wide, 900, 1020, 1300, 1600, cv::BORDER_CONSTANT, cv::Scalar(205));
+  ASSERT_LT(cv::countNonZero(wide == 0), wide.total() / 200);
+  const MapPalette small = detect(map), large = detect(wide);
+  EXPECT_EQ(large.state, small.state);
+  EXPECT_EQ(large.state[0], kOccupied);
+  EXPECT_EQ(large.description, small.description);
+}
+
 TEST(MapPalette, TwoModes) {
   // A drawing: black on white; the black is walls. A SLAM map with walls the colour of unknown.
   EXPECT_EQ(detect(slam_map(0, 0, 255)).state[0], kOccupied);

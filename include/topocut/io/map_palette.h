@@ -19,8 +19,9 @@ struct MapPalette {
 
 struct PaletteDetectionOptions {
   // A grey level is a mode when it is a local maximum of the histogram within +-mode_separation
-  // levels and holds at least min_mode_share of the pixels: anti-aliasing and partly observed cells
-  // make thin spreads around the few values a map tool writes.
+  // levels and holds at least min_mode_share of the pixels not at the border's level (the
+  // unexplored surroundings, however large the map around the building is): anti-aliasing and
+  // partly observed cells make thin spreads around the few values a map tool writes.
   int mode_separation = 16;
   double min_mode_share = 0.005;
   // Free is the free mode's level give or take this much; every other level is not free (unknown is
