@@ -3,11 +3,14 @@
 // 10,000 x 10,000 cells (500 m x 500 m at 0.05 m). Each size runs in its own child process so that
 // the peak memory (maximum resident set) is that size's alone. Prints a Markdown table:
 // load (PNG decode), segment, write labels, peak RSS and RSS per megapixel.
-//   extreme_maps_benchmark [SIDE...]     (default: 1000 2500 5000 10000)
+// With --unexplored CANVAS each floor lies in the middle of a CANVAS x CANVAS map of unknown cells
+// (grey 205, as map_server writes it; gmapping's default map is 4000 x 4000), as a SLAM map is.
+//   extreme_maps_benchmark [--unexplored CANVAS] [SIDE...]     (default: 1000 2500 5000 10000)
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -51,10 +54,18 @@ cv::Mat office_floor(int side) {
   return map;
 }
 
+// The floor in the middle of a canvas x canvas map of unknown cells (canvas 0: the floor alone).
+cv::Mat map_of(int side, int canvas) {
+  if (canvas <= side) return office_floor(side);
+  cv::Mat map(canvas, canvas, CV_8UC1, cv::Scalar(205));
+  office_floor(side).copyTo(map(cv::Rect((canvas - side) / 2, (canvas - side) / 2, side, side)));
+  return map;
+}
+
 // Child: builds, writes, loads and segments one map; prints the timings on one line.
-int run_one(int side, const std::string& folder) {
+int run_one(int side, int canvas, const std::string& folder) {
   const std::string map_path = folder + "/floor_" + std::to_string(side) + ".png";
-  cv::imwrite(map_path, office_floor(side));
+  cv::imwrite(map_path, map_of(side, canvas));
   const auto t0 = Clock::now();
   const topocut::OccupancyGrid grid = topocut::load_map(map_path);
   const double load = seconds_since(t0);
@@ -75,17 +86,23 @@ int run_one(int side, const std::string& folder) {
 int main(int argc, char** argv) {
   topocut::keep_freed_memory_for_reuse();
   std::vector<int> sides;
+  int canvas = 0;
+  const auto usage = [] {
+    std::fprintf(stderr,
+                 "usage: extreme_maps_benchmark [--unexplored CANVAS] [SIDE...]   (SIDE, CANVAS: cells per side, 100 to 40000)\n");
+    return 2;
+  };
   for (int i = 1; i < argc; ++i) {
-    const int side = std::atoi(argv[i]);
-    if (side < 100 || side > 40000) {  // the floor's lattice needs a room; 40,000 is 1,600 Mpx
-      std::fprintf(stderr, "usage: extreme_maps_benchmark [SIDE...]   (SIDE: cells per side, 100 to 40000)\n");
-      return 2;
-    }
-    sides.push_back(side);
+    const bool unexplored = std::string(argv[i]) == "--unexplored";
+    if (unexplored && ++i == argc) return usage();
+    const int value = std::atoi(argv[i]);
+    if (value < 100 || value > 40000) return usage();  // the floor's lattice needs a room; 40,000 is 1,600 Mpx
+    (unexplored ? canvas : sides.emplace_back()) = value;
   }
   if (sides.empty()) sides = {1000, 2500, 5000, 10000};
   const std::string folder = std::filesystem::temp_directory_path() / ("topocut_extreme_" + std::to_string(getpid()));
   std::filesystem::create_directories(folder);
+  if (canvas > 0) std::printf("Each floor in the middle of a %d x %d map of unknown cells.\n\n", canvas, canvas);
   std::printf("| side (cells) | megapixels | load s | segment s | write labels s | rooms | passages | peak RSS MB | MB per Mpx |\n");
   std::printf("|---|---|---|---|---|---|---|---|---|\n");
   std::fflush(stdout);
@@ -97,7 +114,7 @@ int main(int argc, char** argv) {
       close(pipe_fds[0]);
       dup2(pipe_fds[1], STDOUT_FILENO);
       try {
-        run_one(side, folder);
+        run_one(side, canvas, folder);
       } catch (const std::exception& e) {
         std::printf("error %s\n", e.what());
       }
@@ -111,7 +128,8 @@ int main(int argc, char** argv) {
     int status = 0;
     rusage usage{};
     wait4(child, &status, 0, &usage);
-    const double mpx = double(side) * side / 1e6;
+    const double cells_per_side = std::max(side, canvas);
+    const double mpx = cells_per_side * cells_per_side / 1e6;
     const double peak_mb = usage.ru_maxrss / 1024.0;  // ru_maxrss is in KiB on Linux
     double load = 0, seg = 0, write = 0;
     std::size_t rooms = 0, passages = 0;

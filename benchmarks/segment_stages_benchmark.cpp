@@ -9,15 +9,23 @@
 // With --quality it also scores every image against its ground truth (recall / precision, as
 // `topocut evaluate`), so that option variants can be compared stage by stage.
 //
+// --unexplored N centres every image map (not YAMLs) in an N x N image of its corner's grey (a SLAM
+// map's unexplored surroundings; gmapping's default map is 4000 x 4000 cells), written to a
+// temporary folder; --no-crop runs the stages on the whole grid instead of segmentation_box(), as
+// segment() did before it cropped.
+//
 // Usage: segment_stages_benchmark [--repeat N] [--maps DIR] [--map NAME ...] [--variant plain|furnished|all]
+//                                 [--unexplored N] [--no-crop]
 //                                 [--concavity M] [--parity] [--quality] [--no-merge]
 //                                 [--door-ratio R] [--width-depth M] [--min-room-area M2]
 //                                 [--min-room-width M] [--no-doors] [--door-max M]
 //                                 [--door-side-ratio R] [--door-depth M] [--door-turn RAD] [--simplify CELLS]
 #include <time.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <numeric>
@@ -77,6 +85,23 @@ std::vector<Job> dataset_jobs(const std::vector<std::string>& names, const std::
   return jobs;
 }
 
+// The image of every job (not YAMLs) centred in a side x side image of its top-left pixel's value,
+// written into folder; the jobs then read those.
+void pad_images(std::vector<Job>& jobs, int side, const std::string& folder) {
+  std::filesystem::create_directories(folder);
+  for (Job& job : jobs) {
+    if (job.path.size() >= 5 && job.path.substr(job.path.size() - 5) == ".yaml") continue;
+    const cv::Mat image = cv::imread(job.path, cv::IMREAD_UNCHANGED);
+    if (image.empty() || image.cols > side || image.rows > side) throw Error("cannot pad '" + job.path + "'");
+    const int top = (side - image.rows) / 2, left = (side - image.cols) / 2;
+    cv::Mat padded;
+    cv::copyMakeBorder(image, padded, top, side - image.rows - top, left, side - image.cols - left, cv::BORDER_CONSTANT,
+                       image.channels() == 1 ? cv::Scalar(image.at<unsigned char>(0, 0)) : cv::Scalar::all(0));
+    job.path = folder + "/" + std::filesystem::path(job.path).stem().string() + ".png";
+    if (!cv::imwrite(job.path, padded)) throw Error("cannot write '" + job.path + "'");
+  }
+}
+
 std::vector<Job> folder_jobs(const std::string& folder, const std::vector<std::string>& names) {
   std::vector<Job> jobs;
   for (const MapFile& map : discover_map_files(folder)) {
@@ -90,7 +115,8 @@ std::vector<Job> folder_jobs(const std::string& folder, const std::vector<std::s
 // One run of the pipeline on the map at path, stage by stage (the calls segment() makes), each
 // stage's thread CPU time appended to t; the free space is timed once more on its own (not part of
 // the total) so that the cleaning's share can be told apart.
-Segmentation time_stages(const std::string& path, const MapLoadOptions& load, const SegmentOptions& options, StageTimes& t) {
+Segmentation time_stages(const std::string& path, const MapLoadOptions& load, const SegmentOptions& options, bool no_crop,
+                         StageTimes& t) {
   const double t0 = Clock::now();
   contour_floor_ms(path, load.free_min, 1);
   t.floor.push_back(ms(t0, Clock::now()));
@@ -101,7 +127,7 @@ Segmentation time_stages(const std::string& path, const MapLoadOptions& load, co
   // As segment() does: the stages run on the known cells' box (the labels are placed back into the
   // whole map in the labels column).
   const cv::Rect box = segmentation_box(grid, options);
-  const OccupancyGrid part = box.size() == grid.cells.size() ? grid : crop(grid, box);
+  const OccupancyGrid part = no_crop || box.size() == grid.cells.size() ? grid : crop(grid, box);
   const SegmentationInput input = segmentation_input(part, options);
   const double c = Clock::now();
   const FreeSpacePolygons polygons = free_space_polygons(input.floor, grid.resolution, options.contours);
@@ -148,6 +174,8 @@ int run(const std::vector<std::string>& args) {
   SegmentOptions options;
   bool quality = false;
   std::string maps_folder;
+  int unexplored = 0;
+  bool no_crop = false;
   for (std::size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
     auto value = [&]() -> std::string {
@@ -156,6 +184,10 @@ int run(const std::vector<std::string>& args) {
     };
     if (a == "--repeat") {
       repeat = std::max(1, std::stoi(value()));
+    } else if (a == "--unexplored") {
+      unexplored = std::stoi(value());
+    } else if (a == "--no-crop") {
+      no_crop = true;
     } else if (a == "--maps") {
       maps_folder = value();
     } else if (a == "--map") {
@@ -212,7 +244,10 @@ int run(const std::vector<std::string>& args) {
     }
   }
   const MapLoadOptions load;
-  const std::vector<Job> jobs = maps_folder.empty() ? dataset_jobs(names, variants) : folder_jobs(maps_folder, names);
+  std::vector<Job> jobs = maps_folder.empty() ? dataset_jobs(names, variants) : folder_jobs(maps_folder, names);
+  const std::string padded_folder =
+      (std::filesystem::temp_directory_path() / ("topocut_padded_" + std::to_string(::getpid()))).string();
+  if (unexplored > 0) pad_images(jobs, unexplored, padded_folder);
   if (quality && !maps_folder.empty()) throw Error("--quality needs the Bormann dataset (no --maps)");
 
   std::vector<std::vector<std::string>> rows{{"image", "floor", "load", "free", "clean", "polygons", "vertices",
@@ -224,7 +259,7 @@ int run(const std::vector<std::string>& args) {
     StageTimes t;
     Segmentation last;
     for (int k = 0; k < repeat; ++k) {
-      const Segmentation s = time_stages(job.path, load, options, t);
+      const Segmentation s = time_stages(job.path, load, options, no_crop, t);
       if (k == 0) last = s;
     }
     const double floor = least(t.floor), total = least(t.total);
@@ -261,6 +296,7 @@ int run(const std::vector<std::string>& args) {
               << " | lowest recall " << fixed(std::min(lowest(recall[0]), lowest(recall[1])), 1) << " precision "
               << fixed(std::min(lowest(precision[0]), lowest(precision[1])), 1) << "\n";
   }
+  if (unexplored > 0) std::filesystem::remove_all(padded_folder);
   return 0;
 }
 
