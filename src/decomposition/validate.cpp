@@ -1,5 +1,7 @@
 #include "decomposition/validate.h"
 
+#include "topocut/decomposition/ring_intersections.h"
+
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
 
@@ -217,40 +219,39 @@ class EdgeGrid {
 // Checks that no two edges of any rings share a point other than the common vertex of two
 // consecutive edges of the same ring (and that such neighbours do not fold back onto each other).
 // Returns false when the grid is unsuitable (long edges) and the check must be done otherwise.
+// Whether two edges whose boxes overlap share a point they must not: any point, unless they are
+// consecutive edges of one ring, which may share their common vertex but not fold back onto each other.
+bool edges_meet(const std::vector<std::vector<CPoint>>& rings, const Edge& e, const Edge& f) {
+  const auto& re = rings[e.ring];
+  const auto& rf = rings[f.ring];
+  const int ne = static_cast<int>(re.size());
+  const int nf = static_cast<int>(rf.size());
+  const CPoint& a = re[e.index];
+  const CPoint& b = re[(e.index + 1) % ne];
+  const CPoint& c = rf[f.index];
+  const CPoint& d = rf[(f.index + 1) % nf];
+  if (e.ring == f.ring && (f.index == (e.index + 1) % ne || e.index == (f.index + 1) % nf)) {
+    const bool e_first = f.index == (e.index + 1) % ne;
+    const CPoint& p = e_first ? a : c;  // start of the first edge
+    const CPoint& q = e_first ? b : d;  // shared vertex
+    const CPoint& s = e_first ? d : b;  // end of the second edge
+    return CGAL::orientation(p, q, s) == CGAL::COLLINEAR && !CGAL::collinear_are_strictly_ordered_along_line(p, q, s);
+  }
+  return CGAL::do_intersect(cgal::Segment(a, b), cgal::Segment(c, d));
+}
+
 bool check_no_intersections(const std::vector<std::vector<CPoint>>& rings, const EdgeGrid& grid, std::size_t budget) {
   bool failed = false;
   std::string message;
   auto report = [&](const Edge& e, const Edge& f) {
-    if (failed) return;
-    const auto& re = rings[e.ring];
-    const auto& rf = rings[f.ring];
-    const int ne = static_cast<int>(re.size());
-    const int nf = static_cast<int>(rf.size());
-    const CPoint& a = re[e.index];
-    const CPoint& b = re[(e.index + 1) % ne];
-    const CPoint& c = rf[f.index];
-    const CPoint& d = rf[(f.index + 1) % nf];
-    bool bad = false;
-    if (e.ring == f.ring && (f.index == (e.index + 1) % ne || e.index == (f.index + 1) % nf)) {
-      // Consecutive edges share one vertex; they are fine unless they fold back onto each other.
-      const bool e_first = f.index == (e.index + 1) % ne;
-      const CPoint& p = e_first ? a : c;  // start of the first edge
-      const CPoint& q = e_first ? b : d;  // shared vertex
-      const CPoint& s = e_first ? d : b;  // end of the second edge
-      if (CGAL::orientation(p, q, s) == CGAL::COLLINEAR && !CGAL::collinear_are_strictly_ordered_along_line(p, q, s)) {
-        bad = true;
-      }
+    if (failed || !edges_meet(rings, e, f)) return;
+    failed = true;
+    const CPoint& a = rings[e.ring][e.index];
+    if (e.ring == f.ring) {
+      message = ring_name(e.ring) + " intersects itself near " + point_text(cgal::from_cgal(a));
     } else {
-      bad = CGAL::do_intersect(cgal::Segment(a, b), cgal::Segment(c, d));
-    }
-    if (bad) {
-      failed = true;
-      if (e.ring == f.ring) {
-        message = ring_name(e.ring) + " intersects itself near " + point_text(cgal::from_cgal(a));
-      } else {
-        message = ring_name(e.ring) + " and " + ring_name(f.ring) + " intersect or touch near " +
-                  point_text(cgal::from_cgal(a));
-      }
+      message = ring_name(e.ring) + " and " + ring_name(f.ring) + " intersect or touch near " +
+                point_text(cgal::from_cgal(a));
     }
   };
   if (!grid.for_each_overlapping_pair(budget, report)) return false;
@@ -304,17 +305,33 @@ std::unordered_map<std::uint64_t, int> ray_parities_brute(const std::vector<std:
 
 }  // namespace
 
-void check_rings_by_triangulation(const PolygonWithHoles& polygon) {
+namespace {
+
+// The rings as CGAL points: the outer ring first, then the holes.
+std::vector<std::vector<CPoint>> cgal_rings(const PolygonWithHoles& polygon) {
   std::vector<std::vector<CPoint>> rings;
+  rings.reserve(1 + polygon.holes.size());
   auto add = [&](const Ring& ring) {
     std::vector<CPoint> points;
+    points.reserve(ring.size());
     for (const Point2& p : ring) points.push_back(cgal::to_cgal(p));
     rings.push_back(std::move(points));
   };
   add(polygon.outer);
   for (const Ring& hole : polygon.holes) add(hole);
-  check_with_triangulation(rings);
+  return rings;
 }
+
+// Cell slots and box pairs the edge grid may use before the check falls back (spiky inputs).
+std::size_t grid_budget(const std::vector<std::vector<CPoint>>& rings) {
+  std::size_t edges = 0;
+  for (const auto& ring : rings) edges += ring.size();
+  return 32 * edges + 100000;
+}
+
+}  // namespace
+
+void check_rings_by_triangulation(const PolygonWithHoles& polygon) { check_with_triangulation(cgal_rings(polygon)); }
 
 bool is_counter_clockwise(const Ring& ring) {
   const std::size_t n = ring.size();
@@ -371,23 +388,12 @@ PolygonWithHoles clean_and_validate(const PolygonWithHoles& polygon) {
   for (std::size_t h = 0; h < polygon.holes.size(); ++h) result.holes.push_back(without_repeats(polygon.holes[h], h + 1));
   check_scale(result);
 
-  std::vector<std::vector<CPoint>> rings;
-  rings.reserve(1 + result.holes.size());
-  auto to_points = [](const Ring& ring) {
-    std::vector<CPoint> points;
-    points.reserve(ring.size());
-    for (const Point2& p : ring) points.push_back(cgal::to_cgal(p));
-    return points;
-  };
-  rings.push_back(to_points(result.outer));
-  for (const Ring& hole : result.holes) rings.push_back(to_points(hole));
+  const std::vector<std::vector<CPoint>> rings = cgal_rings(result);
   // A grid of the edges finds touching or crossing edges in about linear time on map-like rings;
   // inputs whose edges are long compared with their spacing (spiky stars) fill it quadratically and
   // are checked with a constrained triangulation instead.
-  std::size_t edges = 0;
-  for (const auto& ring : rings) edges += ring.size();
   EdgeGrid grid;
-  const std::size_t budget = 32 * edges + 100000;
+  const std::size_t budget = grid_budget(rings);
   const bool gridded = grid.build(rings, budget) && check_no_intersections(rings, grid, budget);
   if (!gridded) check_with_triangulation(rings);
 
@@ -416,3 +422,22 @@ PolygonWithHoles clean_and_validate(const PolygonWithHoles& polygon) {
 }
 
 }  // namespace topocut::dude
+
+namespace topocut {
+
+std::vector<int> intersecting_rings(const PolygonWithHoles& polygon) {
+  using namespace dude;
+  const std::vector<std::vector<CPoint>> rings = cgal_rings(polygon);
+  const std::size_t budget = grid_budget(rings);
+  std::vector<char> bad(rings.size(), 0);
+  EdgeGrid grid;
+  const bool gridded = grid.build(rings, budget) && grid.for_each_overlapping_pair(budget, [&](const Edge& e, const Edge& f) {
+    if (edges_meet(rings, e, f)) bad[static_cast<std::size_t>(e.ring)] = bad[static_cast<std::size_t>(f.ring)] = 1;
+  });
+  std::vector<int> found;
+  for (std::size_t r = 0; r < rings.size(); ++r)
+    if (!gridded || bad[r]) found.push_back(static_cast<int>(r));
+  return found;
+}
+
+}  // namespace topocut

@@ -11,6 +11,7 @@
 
 #include "topocut/core/error.h"
 #include "topocut/core/value_ranges.h"
+#include "topocut/decomposition/ring_intersections.h"
 #include "topocut/map/simplify.h"
 
 namespace topocut {
@@ -101,6 +102,21 @@ PieceSet decompose_polygon(const PolygonWithHoles& polygon, double resolution, c
 
 }  // namespace
 
+PolygonWithHoles simplified_where_valid(const PolygonWithHoles& exact, double tolerance) {
+  PolygonWithHoles polygon = simplify_polygon(exact, tolerance);
+  // Restoring a ring can only remove crossings with it, so a few rounds reach a valid polygon (the
+  // exact one at worst).
+  for (int round = 0; round < 4; ++round) {
+    const std::vector<int> bad = intersecting_rings(polygon);
+    if (bad.empty()) return polygon;
+    for (const int r : bad) {
+      if (r == 0) polygon.outer = exact.outer;
+      else polygon.holes[static_cast<std::size_t>(r - 1)] = exact.holes[static_cast<std::size_t>(r - 1)];
+    }
+  }
+  return exact;
+}
+
 PieceSet decompose_pieces(const FreeSpaceComponent& component, double resolution, const SegmentOptions& options) {
   if (!options.decompose) {
     PieceSet set;
@@ -126,7 +142,7 @@ PieceSet decompose_pieces(const FreeSpaceComponent& component, double resolution
   };
   try {
     if (options.simplify > 0.0) {
-      if (std::optional<PieceSet> set = attempt(simplify_polygon(component.polygon, options.simplify), false)) return *set;
+      if (std::optional<PieceSet> set = attempt(simplified_where_valid(component.polygon, options.simplify), false)) return *set;
     }
     return *attempt(component.polygon, true);
   } catch (const Error& e) {

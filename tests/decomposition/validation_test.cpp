@@ -8,6 +8,7 @@
 #include "decomposition/validate.h"
 #include "topocut/core/error.h"
 #include "topocut/decomposition/decompose.h"
+#include "topocut/decomposition/ring_intersections.h"
 
 namespace topocut {
 namespace {
@@ -112,6 +113,24 @@ TEST(DecomposeValidation, TriangulationCheckFindsEveryDefect) {
   fails({{{0, 0}, {10, 0}, {10, 10}, {0, 10}}, {{{0, 5}, {3, 4}, {3, 6}}}});             // hole touches outer
   fails({{{0, 0}, {10, 0}, {10, 10}, {0, 10}}, {{{2, 2}, {2, 4}, {4, 4}}, {{2, 2}, {1, 1}, {3, 1}}}});  // shared vertex
   fails({{{0, 0}, {10, 0}, {10, 10}, {0, 10}}, {{{5, -1}, {6, 5}, {7, -1}}}});           // hole crosses outer
+}
+
+TEST(IntersectingRings, NamesEveryRingThatBreaksTheRule) {
+  const Ring outer{{0, 0}, {10, 0}, {10, 10}, {0, 10}};
+  const Ring fine{{2, 2}, {2, 3}, {3, 3}, {3, 2}};
+  using Rings = std::vector<int>;
+  EXPECT_EQ(intersecting_rings({outer, {fine}}), Rings{});
+  EXPECT_EQ(intersecting_rings({outer, {fine, {{6, 6}, {8, 8}, {8, 6}, {6, 8}}}}), Rings{2});   // hole 1 a bow tie
+  EXPECT_EQ(intersecting_rings({outer, {{{0, 5}, {3, 4}, {3, 6}}, fine}}), (Rings{0, 1}));       // touches the outer ring
+  EXPECT_EQ(intersecting_rings({outer, {fine, {{3, 3}, {4, 3}, {4, 4}}, {{6, 1}, {7, 1}, {7, 2}}}}), (Rings{1, 2}));  // shared corner
+  EXPECT_EQ(intersecting_rings({{{0, 0}, {10, 10}, {10, 0}, {0, 10}}, {}}), Rings{0});            // the outer ring a bow tie
+  // Many rings, one of them crossing its neighbour: only those two are named.
+  PolygonWithHoles many{{{0, 0}, {100, 0}, {100, 100}, {0, 100}}, {}};
+  for (int i = 0; i < 9; ++i)
+    for (int j = 0; j < 9; ++j) many.holes.push_back({{10.0 * i + 2, 10.0 * j + 2}, {10.0 * i + 2, 10.0 * j + 6}, {10.0 * i + 6, 10.0 * j + 6}, {10.0 * i + 6, 10.0 * j + 2}});
+  EXPECT_EQ(intersecting_rings(many), Rings{});
+  many.holes[40][2] = {55, 46};  // hole 40 (ring 41) reaches into hole 49 (ring 50), its neighbour along x
+  EXPECT_EQ(intersecting_rings(many), (Rings{41, 50}));
 }
 
 }  // namespace

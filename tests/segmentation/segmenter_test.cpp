@@ -1,5 +1,6 @@
 #include "topocut/segmentation/segmenter.h"
 
+#include <algorithm>
 #include <filesystem>
 #include <string>
 
@@ -9,6 +10,8 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "topocut/core/error.h"
+#include "topocut/decomposition/ring_intersections.h"
+#include "topocut/map/simplify.h"
 
 namespace topocut {
 namespace {
@@ -173,6 +176,30 @@ TEST(Segment, UnknownAroundTheMapChangesNoRoom) {
   const cv::Rect box = segmentation_box(wide, {});
   EXPECT_LT(box.area(), wide.cells.total() / 2);
   EXPECT_TRUE((box & inner) == inner);
+}
+
+TEST(Segment, ARingWhoseSimplificationCrossesStaysExactAndTheRestIsSimplified) {
+  // The outer ring has a 0.9-cell bump that a 1-cell simplification straightens away, and hole 0
+  // sits in the bump across the straightened edge; hole 1 is a staircase far from both. Before,
+  // the whole component fell back to its exact polygon; now only the crossing pair does.
+  PolygonWithHoles exact{{{0, 0}, {100, 0}, {100, 100}, {51, 100}, {51, 100.9}, {50, 100.9}, {50, 100}, {0, 100}}, {}};
+  exact.holes.push_back({{50.2, 99.5}, {50.2, 100.5}, {50.8, 100.5}, {50.8, 99.5}});
+  Ring stairs{{20, 20}};
+  for (int k = 1; k <= 20; ++k) {
+    stairs.push_back({20.0 + k, 20.0 + k - 1});
+    stairs.push_back({20.0 + k, 20.0 + k});
+  }
+  stairs.push_back({20, 40});
+  std::reverse(stairs.begin(), stairs.end());  // holes run clockwise
+  exact.holes.push_back(stairs);
+  ASSERT_TRUE(intersecting_rings(exact).empty());
+  ASSERT_FALSE(intersecting_rings(simplify_polygon(exact, 1.0)).empty());  // the case this is about
+  const PolygonWithHoles p = simplified_where_valid(exact, 1.0);
+  EXPECT_TRUE(intersecting_rings(p).empty());
+  EXPECT_EQ(p.outer, exact.outer);
+  EXPECT_EQ(p.holes[0], exact.holes[0]);
+  EXPECT_LT(p.holes[1].size(), 6u);  // the staircase is a triangle again
+  EXPECT_EQ(simplified_where_valid(exact, 0.0).holes[1], exact.holes[1]);
 }
 
 TEST(Segment, RobotRadiusShrinksPiecesButStillLabelsEveryFreeCell) {

@@ -79,6 +79,12 @@ struct SegmentationInput {
 };
 SegmentationInput segmentation_input(const OccupancyGrid& grid, const SegmentOptions& options);
 
+// Stage 3a, first step: the polygon simplified ring by ring (simplify_polygon(), tolerance in
+// cells), except that every ring whose simplification crosses or touches itself or another ring (a
+// narrow pinch, rings a cell apart) keeps its exact outline; the exact polygon if that does not
+// settle it in a few rounds. Valid input gives a valid polygon (intersecting_rings() finds none).
+PolygonWithHoles simplified_where_valid(const PolygonWithHoles& exact, double tolerance);
+
 // Stage 3a: the pieces of one free-space component (grid coordinates) and the cuts between them:
 // the polygon simplified (options.simplify), split along its door cuts (options.doors, listed in
 // the result's doors), and each part decomposed by decompose() at tau = options.concavity /
