@@ -370,15 +370,15 @@ std::vector<WallEnd> thin_wall_ends(const DoorSearch& search, const EdgeGrid& gr
   std::vector<WallEnd> ends;
   for_each_reflex_corner(search, [](const Ring&) { return false; },
                          [&](int r, int, const Point2& p, const Point2& v, const Point2& q) {
-    for (const Point2& from : {p, q}) {
-      const Point2 e = minus(v, from);
+    for (const bool from_p : {true, false}) {
+      const Point2 e = minus(v, from_p ? p : q);
       const double l = length(e);
       if (l < min_wall) continue;
       const Point2 dir{e.x / l, e.y / l};
       // Thin: across the wall, just behind its end, free space of this component lies within
       // the thickness limit. Free space is left of ring edges, so the obstacle lies right of
       // p -> v and left of v -> q.
-      const Point2 into = &from == &p ? Point2{dir.y, -dir.x} : Point2{-dir.y, dir.x};
+      const Point2 into = from_p ? Point2{dir.y, -dir.x} : Point2{-dir.y, dir.x};
       const double back = std::min(0.5 * l, 0.3 / search.resolution);
       const Point2 x{v.x - back * dir.x + 1e-3 * into.x, v.y - back * dir.y + 1e-3 * into.y};
       if (!std::isfinite(grid.cast(x, into, max_thickness))) continue;
