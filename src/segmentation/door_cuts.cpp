@@ -376,8 +376,8 @@ std::vector<WallEnd> thin_wall_ends(const DoorSearch& search, const EdgeGrid& gr
       if (l < min_wall) continue;
       const Point2 dir{e.x / l, e.y / l};
       // Thin: across the wall, just behind its end, free space of this component lies within
-      // the thickness limit. Free space is left of ring edges, so the obstacle lies right of
-      // p -> v and left of v -> q.
+      // the thickness limit. Free space is left of ring edges, so the obstacle lies right of a
+      // wall arriving at v (dir along p -> v) and left of one leaving it (dir along q -> v).
       const Point2 into = from_p ? Point2{dir.y, -dir.x} : Point2{-dir.y, dir.x};
       const double back = std::min(0.5 * l, search.options.wall_end_probe / search.resolution);
       const Point2 x{v.x - back * dir.x + 1e-3 * into.x, v.y - back * dir.y + 1e-3 * into.y};
