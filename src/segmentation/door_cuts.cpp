@@ -227,8 +227,8 @@ void validate(const DoorOptions& options) {
   if (!std::isfinite(options.min_turn) || options.min_turn < 0.0) throw Error("the door corner turn must be a non-negative angle");
   if (!positive(options.max_gap) || !positive(options.max_wall_thickness) || !std::isfinite(options.min_wall_length) ||
       options.min_wall_length < 0.0 || !std::isfinite(options.gap_alignment) || options.gap_alignment < 0.0 ||
-      !std::isfinite(options.min_side_width) || options.min_side_width < 0.0)
-    throw Error("the wall opening gap and wall thickness must be positive, the other opening options non-negative");
+      !std::isfinite(options.min_side_width) || options.min_side_width < 0.0 || !positive(options.wall_end_probe))
+    throw Error("the wall opening gap, wall thickness and wall end probe must be positive, the other opening options non-negative");
   if (!positive(options.max_wall_line) || !positive(options.wall_line_wall) || !std::isfinite(options.wall_line_straightness) ||
       options.wall_line_straightness < 0.0 || !std::isfinite(options.wall_line_spacing) || options.wall_line_spacing < 0.0)
     throw Error("the wall line length and wall length must be positive, the straightness and spacing non-negative");
@@ -370,16 +370,16 @@ std::vector<WallEnd> thin_wall_ends(const DoorSearch& search, const EdgeGrid& gr
   std::vector<WallEnd> ends;
   for_each_reflex_corner(search, [](const Ring&) { return false; },
                          [&](int r, int, const Point2& p, const Point2& v, const Point2& q) {
-    for (const Point2& from : {p, q}) {
-      const Point2 e = minus(v, from);
+    for (const bool from_p : {true, false}) {
+      const Point2 e = minus(v, from_p ? p : q);
       const double l = length(e);
       if (l < min_wall) continue;
       const Point2 dir{e.x / l, e.y / l};
       // Thin: across the wall, just behind its end, free space of this component lies within
-      // the thickness limit. Free space is left of ring edges, so the obstacle lies right of
-      // p -> v and left of v -> q.
-      const Point2 into = &from == &p ? Point2{dir.y, -dir.x} : Point2{-dir.y, dir.x};
-      const double back = std::min(0.5 * l, 0.3 / search.resolution);
+      // the thickness limit. Free space is left of ring edges, so the obstacle lies right of a
+      // wall arriving at v (dir along p -> v) and left of one leaving it (dir along q -> v).
+      const Point2 into = from_p ? Point2{dir.y, -dir.x} : Point2{-dir.y, dir.x};
+      const double back = std::min(0.5 * l, search.options.wall_end_probe / search.resolution);
       const Point2 x{v.x - back * dir.x + 1e-3 * into.x, v.y - back * dir.y + 1e-3 * into.y};
       if (!std::isfinite(grid.cast(x, into, max_thickness))) continue;
       ends.push_back({v, dir, r});

@@ -1,5 +1,7 @@
 #include "topocut/segmentation/door_cuts.h"
 
+#include <algorithm>
+
 #include <gtest/gtest.h>
 
 #include "topocut/core/error.h"
@@ -83,6 +85,52 @@ TEST(DoorCuts, AThinWallIsExtendedAcrossAnOpeningAndFurnitureIsNot) {
   off = {};
   off.max_gap = 2.0;  // the opening to the top wall is wider
   EXPECT_TRUE(find_door_cuts(room(40, 44), kRes, off).empty());
+}
+
+// The room of the test above with a partition standing on its bottom wall whose left face is one
+// straight 2.5 m wall and whose right face is jagged (0.25 m steps, each shorter than
+// min_wall_length, 0.1-0.15 m thick): only the straight face gives the wall's end a direction.
+// mirrored: the same room reflected in x = 50, its ring reversed to stay counter-clockwise.
+PolygonWithHoles jagged_partition(bool mirrored) {
+  Ring ring{{0, 0}, {40, 0}, {40, 50}, {43, 50}};
+  for (int y = 45; y > 0; y -= 5) ring.push_back({y % 10 == 0 ? 42.0 : 43.0, static_cast<double>(y)});
+  for (const Point2 p : {Point2{43, 0}, Point2{100, 0}, Point2{100, 100}, Point2{0, 100}}) ring.push_back(p);
+  if (mirrored) {
+    for (Point2& p : ring) p.x = 100 - p.x;
+    std::reverse(ring.begin(), ring.end());
+  }
+  return {ring, {}};
+}
+
+TEST(DoorCuts, AWallEndIsFoundFromEitherFaceAlike) {
+  // In the plain room the straight face arrives at the end corner (the corner's p side); mirrored,
+  // it leaves it (its q side). Both must give the opening up to the top wall: the end's thickness
+  // is probed behind the end whichever side of the corner the wall lies on.
+  for (const bool mirrored : {false, true}) {
+    SCOPED_TRACE(mirrored ? "mirrored" : "plain");
+    const PolygonWithHoles room = jagged_partition(mirrored);
+    const std::vector<Segment2> cuts = find_door_cuts(room, kRes);
+    ASSERT_EQ(cuts.size(), 1u);
+    EXPECT_DOUBLE_EQ(distance(cuts[0].a, cuts[0].b), 50.0);
+    EXPECT_EQ(cuts[0].a.x, cuts[0].b.x);
+    EXPECT_DOUBLE_EQ(cuts[0].a.x, mirrored ? 60.0 : 40.0);
+    EXPECT_EQ(split_polygon(room, cuts).size(), 2u);
+  }
+}
+
+TEST(DoorCuts, AWallThickerThanAPartitionIsNotExtended) {
+  // The same room with a 0.35 m thick wall stub (a pillar or a cupboard side, thicker than an
+  // interior partition of 0.1-0.2 m): no opening, unless walls that thick may be extended.
+  const PolygonWithHoles room{{{0, 0}, {40, 0}, {40, 50}, {47, 50}, {47, 0}, {100, 0}, {100, 100}, {0, 100}}, {}};
+  EXPECT_TRUE(find_door_cuts(room, kRes).empty());
+  DoorOptions thick;
+  thick.max_wall_thickness = 0.4;
+  // (one from each face: 0.35 m apart, further than two cuts count as one, which is why the
+  // default limit stays below that)
+  EXPECT_EQ(find_door_cuts(room, kRes, thick).size(), 2u);
+  DoorOptions bad;
+  bad.wall_end_probe = 0.0;
+  EXPECT_THROW(find_door_cuts(room, kRes, bad), Error);
 }
 
 TEST(DoorCuts, DisabledAndBadOptions) {

@@ -31,9 +31,14 @@ struct DoorOptions {
   // to a wall end there that faces it (within gap_alignment radians). A room front open to a
   // corridor is as wide as the room, so no width test can find it; a wall that stops short can.
   // Walls shorter than min_wall_length give no direction; both sides must be min_side_width wide.
+  // The thickness is measured wall_end_probe behind the end (at most half the wall's length): an
+  // interior partition is 0.1-0.2 m thick, plus a cell of outline simplification at 5 cm; a thicker
+  // obstacle is a cupboard, a pillar or the outline. Below the 0.3 m within which two cuts count as
+  // one, so the two corners of one wall end give one opening.
   bool extend_walls = true;
   double max_gap = 3.0;
-  double max_wall_thickness = 0.5;
+  double max_wall_thickness = 0.25;
+  double wall_end_probe = 0.15;
   double min_wall_length = 0.3;
   double gap_alignment = 0.2;
   double min_side_width = 1.0;
