@@ -7,13 +7,15 @@
 // updates), churn median 0 and p95 <= 1 % of the labelled cells.
 //
 //   log_replay_benchmark [--batch-every N] [--settle] [--split-after N] [--merge-after N]
-//                        [--door-neighbours on|off] [--cut-neighbours on|off]
+//                        [--door-neighbours on|off] [--cut-neighbours on|off] [--absorb-fraction F]
 //                        [LOG_NAME ...]   (default: intel aces csail fhw)
 //
-// The last four override the preset (wall_map_incremental_options()) to measure a variant.
+// The last five override the preset (wall_map_incremental_options()) to measure a variant.
 //
 // Times are process CPU time, single-threaded OpenCV; wall clock beside.
+#include <algorithm>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -46,6 +48,7 @@ struct ReplayVariant {
   int merge_after = -1;
   int door_neighbours = -1;
   int cut_neighbours = -1;
+  double absorb_fraction = -1.0;
 };
 
 LogFigures replay_file(const std::string& name, const std::string& path, int batch_every, bool settle,
@@ -56,6 +59,7 @@ LogFigures replay_file(const std::string& name, const std::string& path, int bat
   if (variant.merge_after >= 0) options.incremental.merge_after = variant.merge_after;
   if (variant.door_neighbours >= 0) options.incremental.neighbours_across_doors = variant.door_neighbours != 0;
   if (variant.cut_neighbours >= 0) options.incremental.neighbours_across_cuts = variant.cut_neighbours != 0;
+  if (variant.absorb_fraction >= 0.0) options.incremental.absorb_fraction = variant.absorb_fraction;
   options.compare_batch = true;
   options.batch_every = batch_every;
   const std::vector<PosedScan> scans = posed_scans(read_carmen_log(path));
@@ -92,6 +96,7 @@ int main(int argc, char** argv) {
     else if (a == "--merge-after" && i + 1 < argc) variant.merge_after = std::max(1, std::atoi(argv[++i]));
     else if (a == "--door-neighbours" && i + 1 < argc) variant.door_neighbours = std::string(argv[++i]) == "on";
     else if (a == "--cut-neighbours" && i + 1 < argc) variant.cut_neighbours = std::string(argv[++i]) == "on";
+    else if (a == "--absorb-fraction" && i + 1 < argc) variant.absorb_fraction = std::max(0.0, std::atof(argv[++i]));
     else names.push_back(a);
   }
   if (names.empty()) names = {"intel", "aces", "csail", "fhw"};

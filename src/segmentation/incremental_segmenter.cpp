@@ -1063,7 +1063,14 @@ void IncrementalSegmenter::State::adopt_held_rooms(const RegionPieces& found, co
     partner.sum_c -= static_cast<double>(h.sum_c);
     partner.sum_r -= static_cast<double>(h.sum_r);
     refresh_room(h.id, nullptr);
-    if (partner.cells <= 0) continue;
+    // The partner's polygon is that of its largest piece (adopt_pieces): only if that is this piece
+    // does it cover the held room's cells.
+    int partner_piece = 0;
+    for (int p = 1; p <= found.pieces; ++p)
+      if (found.id_of_piece[static_cast<std::size_t>(p)] == partner_id &&
+          (partner_piece == 0 || found.tally.cells[static_cast<std::size_t>(p)] > found.tally.cells[static_cast<std::size_t>(partner_piece)]))
+        partner_piece = p;
+    if (partner.cells <= 0 || partner_piece != piece) continue;
     const cv::Rect& window = frame.window;
     cv::Mat own(window.size(), CV_8UC1);
     for (int r = 0; r < window.height; ++r) {

@@ -10,6 +10,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "topocut/core/error.h"
+#include "topocut/core/geometry.h"
 #include "topocut/segmentation/segmenter.h"
 
 namespace topocut {
@@ -468,6 +469,10 @@ TEST(IncrementalSegmenter, AMergeUndoneBeforeMergeAfterDecompositionsKeepsBothId
   EXPECT_EQ(held.rooms.size(), 5u);
   EXPECT_EQ(cells_by_room(held.labels).at(room0), cells_by_room(closed.labels).at(room0));
   EXPECT_EQ(held.labels.at<int>(plan.doors[0].y + 1, plan.doors[0].x + 1), corridor);  // the new cells join the partner
+  // The corridor's outline is traced from its own cells: it does not cover room 0 (pixel-edge
+  // rings: its area is its cells' area).
+  for (const Room& room : held.rooms)
+    if (room.id == corridor) EXPECT_NEAR(area(room.polygon), room.area, 1e-6);
   const Segmentation undone = segmenter.update(plan.world);
   expect_valid(plan.world, undone);
   EXPECT_EQ(cv::countNonZero(undone.labels != closed.labels), 0);
