@@ -6,12 +6,13 @@
 // final precision and recall within 1.5 points of batch, state proportional to the map.
 //
 //   incremental_benchmark [--dataset DIR] [--variant V] [--map NAME ...] [--csv FILE]
-//                         [--batch-every N] [--no-batch]
+//                         [--batch-every N] [--no-batch] [--split-after N] [--merge-after N]
 //
 // Times are process CPU time (the machine may be shared), single-threaded OpenCV; the wall-clock
 // figures are printed beside them.
 #include <sys/resource.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <fstream>
@@ -53,6 +54,7 @@ std::string load_average() {
 int run(int argc, char** argv) {
   int batch_every = 1;
   bool compare = true;
+  int split_after = 0, merge_after = 0;  // 0: the segmenter's defaults
   std::vector<std::string> rest;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
@@ -60,6 +62,10 @@ int run(int argc, char** argv) {
       batch_every = std::stoi(argv[++i]);
     } else if (arg == "--no-batch") {
       compare = false;
+    } else if (arg == "--split-after" && i + 1 < argc) {
+      split_after = std::max(1, std::stoi(argv[++i]));
+    } else if (arg == "--merge-after" && i + 1 < argc) {
+      merge_after = std::max(1, std::stoi(argv[++i]));
     } else {
       rest.push_back(arg);
     }
@@ -74,6 +80,8 @@ int run(int argc, char** argv) {
   options.run.progress = [](const std::string& line) { std::cerr << line << std::endl; };
   options.exploration.compare_batch = compare;
   options.exploration.batch_every = batch_every;
+  if (split_after > 0) options.exploration.incremental.split_after = split_after;
+  if (merge_after > 0) options.exploration.incremental.merge_after = merge_after;
   const std::vector<DatasetMap> maps = select_maps(discover_dataset(arguments.dataset), arguments.run.maps);
 
   std::cout << "# Incremental segmentation during exploration\n\n"

@@ -6,10 +6,16 @@
 // the targets: update p95 <= 5 ms, incremental >= 5x faster than batch (total time on the same
 // updates), churn median 0 and p95 <= 1 % of the labelled cells.
 //
-//   log_replay_benchmark [--batch-every N] [--settle] [LOG_NAME ...]   (default: intel aces csail fhw)
+//   log_replay_benchmark [--batch-every N] [--settle] [--split-after N] [--merge-after N]
+//                        [--door-neighbours on|off] [--cut-neighbours on|off] [--absorb-fraction F]
+//                        [LOG_NAME ...]   (default: intel aces csail fhw)
+//
+// The last five override the preset (wall_map_incremental_options()) to measure a variant.
 //
 // Times are process CPU time, single-threaded OpenCV; wall clock beside.
+#include <algorithm>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -36,9 +42,24 @@ struct LogFigures {
   TimeStatistics inc, wall, batch, paired;
 };
 
-LogFigures replay_file(const std::string& name, const std::string& path, int batch_every, bool settle) {
+// The segmenter's hysteresis and region options, overridable to measure variants in one build.
+struct ReplayVariant {
+  int split_after = -1;   // -1: the preset's
+  int merge_after = -1;
+  int door_neighbours = -1;
+  int cut_neighbours = -1;
+  double absorb_fraction = -1.0;
+};
+
+LogFigures replay_file(const std::string& name, const std::string& path, int batch_every, bool settle,
+                       const ReplayVariant& variant) {
   GridReplayOptions options;
   options.incremental = wall_map_incremental_options();  // as `walls --incremental`
+  if (variant.split_after >= 0) options.incremental.split_after = variant.split_after;
+  if (variant.merge_after >= 0) options.incremental.merge_after = variant.merge_after;
+  if (variant.door_neighbours >= 0) options.incremental.neighbours_across_doors = variant.door_neighbours != 0;
+  if (variant.cut_neighbours >= 0) options.incremental.neighbours_across_cuts = variant.cut_neighbours != 0;
+  if (variant.absorb_fraction >= 0.0) options.incremental.absorb_fraction = variant.absorb_fraction;
   options.compare_batch = true;
   options.batch_every = batch_every;
   const std::vector<PosedScan> scans = posed_scans(read_carmen_log(path));
@@ -65,11 +86,17 @@ int main(int argc, char** argv) {
   topocut::keep_freed_memory_for_reuse();
   int batch_every = 1;
   bool settle = false;
+  ReplayVariant variant;
   std::vector<std::string> names;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "--batch-every" && i + 1 < argc) batch_every = std::max(1, std::atoi(argv[++i]));
     else if (a == "--settle") settle = true;
+    else if (a == "--split-after" && i + 1 < argc) variant.split_after = std::max(1, std::atoi(argv[++i]));
+    else if (a == "--merge-after" && i + 1 < argc) variant.merge_after = std::max(1, std::atoi(argv[++i]));
+    else if (a == "--door-neighbours" && i + 1 < argc) variant.door_neighbours = std::string(argv[++i]) == "on";
+    else if (a == "--cut-neighbours" && i + 1 < argc) variant.cut_neighbours = std::string(argv[++i]) == "on";
+    else if (a == "--absorb-fraction" && i + 1 < argc) variant.absorb_fraction = std::max(0.0, std::atof(argv[++i]));
     else names.push_back(a);
   }
   if (names.empty()) names = {"intel", "aces", "csail", "fhw"};
@@ -91,7 +118,7 @@ int main(int argc, char** argv) {
       continue;
     }
     std::fprintf(stderr, "replaying %s ...\n", name.c_str());
-    logs.push_back(replay_file(name, path, batch_every, settle));
+    logs.push_back(replay_file(name, path, batch_every, settle, variant));
   }
 
   std::vector<std::vector<std::string>> times{{"log", "grid", "scans", "updates", "inc median ms", "inc p95 ms", "inc max ms",

@@ -100,8 +100,10 @@ IncrementalOptions incremental_options(py::dict kwargs) {
   o.absorb_fraction = pop<double>(kwargs, "absorb_fraction", o.absorb_fraction);
   o.batch_fraction = pop<double>(kwargs, "batch_fraction", o.batch_fraction);
   o.neighbours_across_doors = pop<bool>(kwargs, "neighbours_across_doors", o.neighbours_across_doors);
+  o.neighbours_across_cuts = pop<bool>(kwargs, "neighbours_across_cuts", o.neighbours_across_cuts);
   o.speck_size = pop<double>(kwargs, "speck_size", o.speck_size);
   o.split_after = pop<int>(kwargs, "split_after", o.split_after);
+  o.merge_after = pop<int>(kwargs, "merge_after", o.merge_after);
   SegmentSettings s{o.segment, {}};
   s.switches.no_clean = true;
   o.segment = settings_from(kwargs, s);

@@ -36,7 +36,7 @@ void apply(const GridReading& reading, double resolution, const py::handle& orig
 SegmentOptions segment_options(const py::dict& kwargs);
 
 // Incremental options: absorb_area, absorb_fraction, batch_fraction, neighbours_across_doors,
-// speck_size, split_after and
+// neighbours_across_cuts, speck_size, split_after, merge_after and
 // every segment option (the real-map cleaning stays off, as IncrementalOptions says).
 IncrementalOptions incremental_options(py::dict kwargs);
 

@@ -196,7 +196,8 @@ void bind_segmentation(py::module_& m) {
         "(ROS encoding and row order) segment() takes as it is. Raises ValueError on a bad file.");
   py::class_<PyIncremental>(m, "IncrementalSegmenter",
                             "Segments a growing map update by update, reusing the rooms a change did not reach (ids stay).\n"
-                            "Keywords: segment()'s options and absorb_area, absorb_fraction, batch_fraction, neighbours_across_doors, speck_size, split_after.")
+                            "Keywords: segment()'s options and absorb_area, absorb_fraction, batch_fraction, neighbours_across_doors,\n"
+                            "neighbours_across_cuts, speck_size, split_after, merge_after.")
       .def(py::init<py::kwargs>())
       .def("update", &PyIncremental::update, py::arg("grid"), py::arg("resolution") = 0.05,
            py::arg("origin") = py::make_tuple(0.0, 0.0, 0.0),

@@ -37,6 +37,8 @@ struct RoomState {
   double sum_r = 0.0;
   long long absorbed = 0;    // cells joined without a decomposition since the last one
   int split_votes = 0;       // decompositions in a row that cut a piece off this room (held back)
+  int merge_votes = 0;       // decompositions in a row that merged this room into merge_partner (held back)
+  int merge_partner = 0;     // the room it is held apart from (0: none); decomposed together
 };
 
 bool trivial_binarization(const BinarizeOptions& b) {
@@ -189,6 +191,13 @@ struct RegionPieces {
   PieceTally tally;
   std::vector<int> id_of_piece;  // by piece index + 1: its room id
   std::vector<char> reused;      // by old room id: its id went to a piece
+  std::vector<int> held_piece;   // by old room id: the piece (index + 1) in which it keeps its cells, 0 none
+  struct HeldCells {             // the cells a held room keeps, gathered as the labels are written
+    int id = 0;
+    long long cells = 0, sum_c = 0, sum_r = 0;
+    int min_c = INT_MAX, max_c = -1, min_r = INT_MAX, max_r = -1;
+  };
+  std::vector<HeldCells> held;
 };
 
 // Window grid coordinates (pixel centres at integers, y up) against world metres.
@@ -211,6 +220,19 @@ struct PassageList {
   std::vector<Passage> passages;
   std::vector<char> doors;
 };
+
+// A polygon in window grid coordinates, in world metres.
+PolygonWithHoles to_world_polygon(const PolygonWithHoles& window_polygon, const WindowFrame& frame) {
+  PolygonWithHoles world;
+  for (const Point2& v : window_polygon.outer) world.outer.push_back(frame.to_world(v));
+  for (const Ring& hole : window_polygon.holes) {
+    Ring ring;
+    ring.reserve(hole.size());
+    for (const Point2& v : hole) ring.push_back(frame.to_world(v));
+    world.holes.push_back(std::move(ring));
+  }
+  return normalized_orientation(world);
+}
 
 // One pass over the region: every piece's overlap with every old room of the region, its cell
 // count, first cell, coordinate sums and bounding box. A free cell of the region without a piece
@@ -292,7 +314,9 @@ struct IncrementalSegmenter::State {
   void report_region(const Region& region, int region_cells);
   void match_ids(const Region& region, RegionPieces& found);
   void hold_back_splits(const Region& region, RegionPieces& found);
-  std::vector<int> retire_old_rooms(const Region& region, const RegionPieces& found);
+  void hold_back_merges(const Region& region, RegionPieces& found);
+  void adopt_held_rooms(const RegionPieces& found, const WindowFrame& frame);
+  std::vector<int> retire_old_rooms(const Region& region, RegionPieces& found);
   void adopt_pieces(const RegionPieces& found, const WindowFrame& frame);
   void keep_border_passages(const Region& region, const RegionPieces& found, const WindowFrame& frame,
                             PassageList& out) const;
@@ -694,6 +718,7 @@ void IncrementalSegmenter::State::redecompose(Region region, std::vector<int>& t
   const WindowFrame frame{origin, resolution, window, y_offset};
   for (const int id : removed) refresh_room(id, nullptr);
   adopt_pieces(found, frame);
+  adopt_held_rooms(found, frame);
   // Rooms absorbed into this decomposition are refreshed here; the caller must not revive them.
   touched_rooms.erase(std::remove_if(touched_rooms.begin(), touched_rooms.end(),
                                      [&](int id) { return region.member[static_cast<std::size_t>(id)] != 0; }),
@@ -719,7 +744,7 @@ void IncrementalSegmenter::State::add_neighbour_rooms(Region& region) const {
   for (const int id : region_ids) in_region[static_cast<std::size_t>(id)] = 1;
   const std::size_t core = region_ids.size();
   for (std::size_t k = 0; k < result.passages.size(); ++k) {
-    if (passage_door[k] && !options.neighbours_across_doors) continue;
+    if (!(passage_door[k] ? options.neighbours_across_doors : options.neighbours_across_cuts)) continue;
     const Passage& p = result.passages[k];
     const bool a_in = in_region[static_cast<std::size_t>(p.room_a)] != 0;
     const bool b_in = in_region[static_cast<std::size_t>(p.room_b)] != 0;
@@ -729,6 +754,17 @@ void IncrementalSegmenter::State::add_neighbour_rooms(Region& region) const {
       region_ids.push_back(other);
   }
   for (std::size_t k = core; k < region_ids.size(); ++k) in_region[static_cast<std::size_t>(region_ids[k])] = 1;
+  // A room holding back a merge and its partner are decomposed together, so that each of their
+  // decompositions votes on the merge.
+  for (std::size_t id = 1; id < rooms.size(); ++id) {
+    const int partner = rooms[id].merge_partner;
+    if (!rooms[id].alive || partner == 0 || !rooms[static_cast<std::size_t>(partner)].alive ||
+        in_region[id] == in_region[static_cast<std::size_t>(partner)])
+      continue;
+    const int missing = in_region[id] ? partner : static_cast<int>(id);
+    in_region[static_cast<std::size_t>(missing)] = 1;
+    region_ids.push_back(missing);
+  }
   for (const int id : region_ids) region.window = unite(region.window, rooms[static_cast<std::size_t>(id)].box);
 }
 
@@ -832,6 +868,7 @@ void IncrementalSegmenter::State::match_ids(const Region& region, RegionPieces& 
     reused[static_cast<std::size_t>(candidate.old)] = 1;
   }
   hold_back_splits(region, found);
+  hold_back_merges(region, found);
   std::vector<int> fresh;
   for (int p = 1; p <= pieces; ++p)
     if (id_of_piece[static_cast<std::size_t>(p)] == 0 && t.cells[static_cast<std::size_t>(p)] > 0) fresh.push_back(p);
@@ -864,16 +901,24 @@ void IncrementalSegmenter::State::hold_back_splits(const Region& region, RegionP
     });
   };
   std::vector<char> cut(rooms.size(), 0);
-  for (int p = 1; p <= found.pieces; ++p) {
-    const std::size_t piece = static_cast<std::size_t>(p);
-    if (found.id_of_piece[piece] != 0 || t.cells[piece] == 0) continue;
-    for (int j = 0; j < t.n_old; ++j) {
-      const int old = region.ids[static_cast<std::size_t>(j)];
-      if (2 * t.overlap[piece * columns + static_cast<std::size_t>(j)] <= t.cells[piece] || !found.reused[static_cast<std::size_t>(old)] ||
-          !next_to_room(p, old))
-        continue;
-      cut[static_cast<std::size_t>(old)] = 1;
-      if (rooms[static_cast<std::size_t>(old)].split_votes + 1 < options.split_after) found.id_of_piece[piece] = old;
+  // Until nothing changes: a piece cut off beyond a held one (a room cut in three) is next to the
+  // room once that one holds its id.
+  for (bool held = true; held;) {
+    held = false;
+    for (int p = 1; p <= found.pieces; ++p) {
+      const std::size_t piece = static_cast<std::size_t>(p);
+      if (found.id_of_piece[piece] != 0 || t.cells[piece] == 0) continue;
+      for (int j = 0; j < t.n_old && found.id_of_piece[piece] == 0; ++j) {
+        const int old = region.ids[static_cast<std::size_t>(j)];
+        if (2 * t.overlap[piece * columns + static_cast<std::size_t>(j)] <= t.cells[piece] ||
+            !found.reused[static_cast<std::size_t>(old)] || !next_to_room(p, old))
+          continue;
+        cut[static_cast<std::size_t>(old)] = 1;
+        if (rooms[static_cast<std::size_t>(old)].split_votes + 1 < options.split_after) {
+          found.id_of_piece[piece] = old;
+          held = true;
+        }
+      }
     }
   }
   for (const int id : region.ids) {
@@ -882,9 +927,45 @@ void IncrementalSegmenter::State::hold_back_splits(const Region& region, RegionP
   }
 }
 
-// Old rooms of the region die unless reused, and every cell of the region takes its piece's id.
-// Returns the dead rooms.
-std::vector<int> IncrementalSegmenter::State::retire_old_rooms(const Region& region, const RegionPieces& found) {
+// Hysteresis on merges, the mirror of hold_back_splits: an old room whose id went to no piece while
+// most of its cells went to a piece that keeps another old room's id (the merging stage joined
+// them) keeps its id and those cells until merge_after decompositions in a row have merged it.
+// The pair is then decomposed together (add_neighbour_rooms), so every decomposition votes.
+void IncrementalSegmenter::State::hold_back_merges(const Region& region, RegionPieces& found) {
+  const PieceTally& t = found.tally;
+  const std::size_t columns = static_cast<std::size_t>(t.n_old) + 1;
+  found.held_piece.assign(rooms.size(), 0);
+  std::vector<int> partner(rooms.size(), 0);  // by old id: merged into this room in this decomposition
+  for (int j = 0; j < t.n_old; ++j) {
+    const int old = region.ids[static_cast<std::size_t>(j)];
+    if (found.reused[static_cast<std::size_t>(old)]) continue;
+    int best = 0;
+    for (int p = 1; p <= found.pieces; ++p)
+      if (t.overlap[static_cast<std::size_t>(p) * columns + static_cast<std::size_t>(j)] >
+          (best == 0 ? 0 : t.overlap[static_cast<std::size_t>(best) * columns + static_cast<std::size_t>(j)]))
+        best = p;
+    if (best == 0 || found.id_of_piece[static_cast<std::size_t>(best)] == 0) continue;
+    // Mostly carried over whole: a room carved up between pieces is no merge to hold back.
+    if (2 * t.overlap[static_cast<std::size_t>(best) * columns + static_cast<std::size_t>(j)] <= rooms[static_cast<std::size_t>(old)].cells)
+      continue;
+    partner[static_cast<std::size_t>(old)] = found.id_of_piece[static_cast<std::size_t>(best)];
+    if (rooms[static_cast<std::size_t>(old)].merge_votes + 1 < options.merge_after) {
+      found.held_piece[static_cast<std::size_t>(old)] = best;
+      found.reused[static_cast<std::size_t>(old)] = 1;
+      found.held.push_back({old});
+    }
+  }
+  for (const int id : region.ids) {
+    RoomState& room = rooms[static_cast<std::size_t>(id)];
+    const bool hold = found.held_piece[static_cast<std::size_t>(id)] != 0;
+    room.merge_votes = hold ? room.merge_votes + 1 : 0;
+    room.merge_partner = hold ? partner[static_cast<std::size_t>(id)] : 0;
+  }
+}
+
+// Old rooms of the region die unless reused, and every cell of the region takes its piece's id
+// (a room holding back a merge keeps its own, and found.held counts them). Returns the dead rooms.
+std::vector<int> IncrementalSegmenter::State::retire_old_rooms(const Region& region, RegionPieces& found) {
   const cv::Rect& window = region.window;
   std::vector<int> removed;
   for (const int id : region.ids)
@@ -893,12 +974,40 @@ std::vector<int> IncrementalSegmenter::State::retire_old_rooms(const Region& reg
       removed.push_back(id);
     }
   report.removed_rooms = static_cast<int>(removed.size());
+  if (found.held.empty()) {
+    for (int r = 0; r < window.height; ++r) {
+      int* l = result.labels.ptr<int>(window.y + r) + window.x;
+      const int* k = found.local.ptr<int>(r);
+      const unsigned char* in = found.raw.ptr<unsigned char>(r);
+      for (int c = 0; c < window.width; ++c)
+        if (in[c]) l[c] = found.id_of_piece[static_cast<std::size_t>(k[c])];
+    }
+    return removed;
+  }
+  // A room holding back a merge keeps its cells in the piece it was merged into.
+  std::vector<int> held_index(found.held_piece.size(), -1);
+  for (std::size_t h = 0; h < found.held.size(); ++h) held_index[static_cast<std::size_t>(found.held[h].id)] = static_cast<int>(h);
   for (int r = 0; r < window.height; ++r) {
     int* l = result.labels.ptr<int>(window.y + r) + window.x;
     const int* k = found.local.ptr<int>(r);
     const unsigned char* in = found.raw.ptr<unsigned char>(r);
-    for (int c = 0; c < window.width; ++c)
-      if (in[c]) l[c] = found.id_of_piece[static_cast<std::size_t>(k[c])];
+    for (int c = 0; c < window.width; ++c) {
+      if (!in[c]) continue;
+      const int old = l[c];
+      if (old > 0 && found.held_piece[static_cast<std::size_t>(old)] == k[c]) {
+        RegionPieces::HeldCells& h = found.held[static_cast<std::size_t>(held_index[static_cast<std::size_t>(old)])];
+        const int gc = window.x + c, gr = window.y + r;
+        ++h.cells;
+        h.sum_c += gc;
+        h.sum_r += gr;
+        h.min_c = std::min(h.min_c, gc);
+        h.max_c = std::max(h.max_c, gc);
+        h.min_r = std::min(h.min_r, gr);
+        h.max_r = std::max(h.max_r, gr);
+        continue;
+      }
+      l[c] = found.id_of_piece[static_cast<std::size_t>(k[c])];
+    }
   }
   return removed;
 }
@@ -930,17 +1039,53 @@ void IncrementalSegmenter::State::adopt_pieces(const RegionPieces& found, const 
   }
   for (std::size_t id = 1; id < rooms.size(); ++id) {
     if (largest[id] == 0) continue;
-    const PolygonWithHoles& piece = found.set.pieces[static_cast<std::size_t>(largest[id]) - 1];
-    PolygonWithHoles world;
-    for (const Point2& v : piece.outer) world.outer.push_back(frame.to_world(v));
-    for (const Ring& hole : piece.holes) {
-      Ring ring;
-      ring.reserve(hole.size());
-      for (const Point2& v : hole) ring.push_back(frame.to_world(v));
-      world.holes.push_back(std::move(ring));
-    }
-    world = normalized_orientation(world);
+    const PolygonWithHoles world = to_world_polygon(found.set.pieces[static_cast<std::size_t>(largest[id]) - 1], frame);
     refresh_room(static_cast<int>(id), &world);
+  }
+}
+
+// A room holding back a merge is what is left of it in its partner's piece: cells, sums and box
+// move from the partner to it; it keeps its polygon and the partner's is traced from the partner's
+// own cells of that piece (the piece's outline would cover both).
+void IncrementalSegmenter::State::adopt_held_rooms(const RegionPieces& found, const WindowFrame& frame) {
+  for (const RegionPieces::HeldCells& h : found.held) {
+    RoomState& room = rooms[static_cast<std::size_t>(h.id)];
+    const int piece = found.held_piece[static_cast<std::size_t>(h.id)];
+    const int partner_id = found.id_of_piece[static_cast<std::size_t>(piece)];
+    RoomState& partner = rooms[static_cast<std::size_t>(partner_id)];
+    room.alive = true;
+    room.cells = h.cells;
+    room.sum_c = static_cast<double>(h.sum_c);
+    room.sum_r = static_cast<double>(h.sum_r);
+    room.box = cv::Rect(h.min_c, h.min_r, h.max_c - h.min_c + 1, h.max_r - h.min_r + 1);
+    room.absorbed = 0;
+    partner.cells -= h.cells;
+    partner.sum_c -= static_cast<double>(h.sum_c);
+    partner.sum_r -= static_cast<double>(h.sum_r);
+    refresh_room(h.id, nullptr);
+    // The partner's polygon is that of its largest piece (adopt_pieces): only if that is this piece
+    // does it cover the held room's cells.
+    int partner_piece = 0;
+    for (int p = 1; p <= found.pieces; ++p)
+      if (found.id_of_piece[static_cast<std::size_t>(p)] == partner_id &&
+          (partner_piece == 0 || found.tally.cells[static_cast<std::size_t>(p)] > found.tally.cells[static_cast<std::size_t>(partner_piece)]))
+        partner_piece = p;
+    if (partner.cells <= 0 || partner_piece != piece) continue;
+    const cv::Rect& window = frame.window;
+    cv::Mat own(window.size(), CV_8UC1);
+    for (int r = 0; r < window.height; ++r) {
+      const int* l = result.labels.ptr<int>(window.y + r) + window.x;
+      const int* k = found.local.ptr<int>(r);
+      unsigned char* out = own.ptr<unsigned char>(r);
+      for (int c = 0; c < window.width; ++c) out[c] = k[c] == piece && l[c] == partner_id ? 255 : 0;
+    }
+    const std::vector<FreeSpaceComponent> parts = trace_components(remove_diagonal_pinches(own));
+    const auto largest = std::max_element(parts.begin(), parts.end(), [](const FreeSpaceComponent& a, const FreeSpaceComponent& b) {
+      return a.pixel_count < b.pixel_count;
+    });
+    if (largest == parts.end()) continue;
+    PolygonWithHoles world = to_world_polygon(largest->polygon, frame);
+    refresh_room(partner_id, &world);
   }
 }
 
@@ -961,7 +1106,15 @@ void IncrementalSegmenter::State::keep_border_passages(const Region& region, con
       out.doors.push_back(passage_door[k]);
       continue;
     }
-    if (a_in && b_in) continue;
+    if (a_in && b_in) {
+      // The cut between a room holding back a merge and its partner still parts their cells.
+      const int a = passage.room_a, b = passage.room_b;
+      if (rooms[static_cast<std::size_t>(a)].merge_partner == b || rooms[static_cast<std::size_t>(b)].merge_partner == a) {
+        out.passages.push_back(passage);
+        out.doors.push_back(passage_door[k]);
+      }
+      continue;
+    }
     const int outside = a_in ? passage.room_b : passage.room_a;
     const int inside = region_room_beside(result.labels, region.window, region_room, frame.to_window(passage.cut.a),
                                           frame.to_window(passage.cut.b), outside);
@@ -1025,6 +1178,7 @@ IncrementalSegmenter::IncrementalSegmenter(const IncrementalOptions& options) : 
   if (!std::isfinite(options.absorb_fraction) || options.absorb_fraction < 0.0)
     throw Error("the absorb fraction must be a finite, non-negative number");
   if (options.split_after < 1) throw Error("split_after must be at least 1 decomposition");
+  if (options.merge_after < 1) throw Error("merge_after must be at least 1 decomposition");
   if (!std::isfinite(options.speck_size) || options.speck_size < 0.0)
     throw Error("the speck size must be a finite, non-negative number of metres");
   if (!std::isfinite(options.batch_fraction) || options.batch_fraction <= 0.0)

@@ -56,7 +56,7 @@ def test_incremental_loop_keeps_ids():
 
 def test_incremental_speck_and_split_options():
     world, rooms = floor_plan()
-    seg = topocut.IncrementalSegmenter(speck_size=0.5, split_after=2)
+    seg = topocut.IncrementalSegmenter(speck_size=0.5, split_after=2, merge_after=2, neighbours_across_cuts=False)
     first = seg.update(world, 0.05)
     chair = world.copy()
     chair[70:73, 30:33] = 100  # a 0.15 m obstacle inside room 0: a speck
@@ -67,6 +67,8 @@ def test_incremental_speck_and_split_options():
     assert np.array_equal(second.labels[outside], first.labels[outside])
     with pytest.raises(ValueError):
         topocut.IncrementalSegmenter(split_after=0)
+    with pytest.raises(ValueError):
+        topocut.IncrementalSegmenter(merge_after=0)
     with pytest.raises(ValueError):
         topocut.IncrementalSegmenter(speck_size=-1.0)
 

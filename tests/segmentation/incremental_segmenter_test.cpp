@@ -10,6 +10,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "topocut/core/error.h"
+#include "topocut/core/geometry.h"
 #include "topocut/segmentation/segmenter.h"
 
 namespace topocut {
@@ -112,9 +113,9 @@ std::map<int, std::vector<int>> cells_by_room(const cv::Mat& labels) {
 // Rooms the change cannot reach must keep their id and exactly their cells: rooms of before
 // farther than one cell from every cell whose free state changed, and not sharing a passage with
 // such a near room (the segmenter decomposes those neighbours again with it, as batch would decide
-// on the cuts between them again).
+// on the cuts between them again) unless through_passages is false (no neighbours decomposed).
 void expect_untouched_stable(const OccupancyGrid& before_grid, const Segmentation& before, const OccupancyGrid& after_grid,
-                             const Segmentation& after) {
+                             const Segmentation& after, bool through_passages = true) {
   const cv::Mat changed = (before_grid.cells == kFree) != (after_grid.cells == kFree);
   cv::Mat near_change;
   cv::dilate(changed, near_change, cv::Mat::ones(3, 3, CV_8UC1));
@@ -125,6 +126,7 @@ void expect_untouched_stable(const OccupancyGrid& before_grid, const Segmentatio
     if (std::any_of(cells.begin(), cells.end(), [&](int i) { return near_change.data[i] != 0; })) reached.insert(id);
   const std::set<int> near = reached;
   for (const Passage& p : before.passages) {
+    if (!through_passages) break;
     if (near.count(p.room_a)) reached.insert(p.room_b);
     if (near.count(p.room_b)) reached.insert(p.room_a);
   }
@@ -446,6 +448,52 @@ TEST(IncrementalSegmenter, ADoorCutIsMadeOnlyWhenSplitAfterDecompositionsInARowF
   }
 }
 
+TEST(IncrementalSegmenter, AMergeUndoneBeforeMergeAfterDecompositionsKeepsBothIds) {
+  // Trivial mode, every door closed: five rooms. Opening door 0 joins room 0 to the corridor; held
+  // back (merge_after 3), room 0 keeps its id and its cells, and closing the door again changes no
+  // id. Left open for three decompositions in a row, the merge is made on the third.
+  FloorPlan plan = floor_plan();
+  for (const cv::Rect& door : plan.doors) plan.world.cells(door).setTo(kOccupied);
+  IncrementalOptions options = trivial_options();
+  options.merge_after = 3;
+  options.absorb_area = 0.0;  // every change is decomposed: each update votes
+  options.absorb_fraction = 0.0;
+  options.speck_size = 0.0;
+  IncrementalSegmenter segmenter(options);
+  const Segmentation closed = segmenter.update(plan.world);
+  ASSERT_EQ(closed.rooms.size(), 5u);
+  const cv::Point in_room0(plan.rooms[0].x + 1, plan.rooms[0].y + 1), in_corridor(plan.corridor.x + 1, plan.corridor.y + 1);
+  const int room0 = closed.labels.at<int>(in_room0), corridor = closed.labels.at<int>(in_corridor);
+  const OccupancyGrid opened = with_cells(plan.world, {plan.doors[0]}, kFree);
+
+  const Segmentation held = segmenter.update(opened);
+  expect_valid(opened, held);
+  EXPECT_EQ(held.rooms.size(), 5u);
+  EXPECT_EQ(cells_by_room(held.labels).at(room0), cells_by_room(closed.labels).at(room0));
+  EXPECT_EQ(held.labels.at<int>(plan.doors[0].y + 1, plan.doors[0].x + 1), corridor);  // the new cells join the partner
+  // The corridor's outline is traced from its own cells: it does not cover room 0 (pixel-edge
+  // rings: its area is its cells' area).
+  for (const Room& room : held.rooms)
+    if (room.id == corridor) EXPECT_NEAR(area(room.polygon), room.area, 1e-6);
+  const Segmentation undone = segmenter.update(plan.world);
+  expect_valid(plan.world, undone);
+  EXPECT_EQ(cv::countNonZero(undone.labels != closed.labels), 0);
+  EXPECT_EQ(segmenter.last_update().new_rooms, 0);
+  EXPECT_EQ(segmenter.last_update().removed_rooms, 0);
+
+  // Open again, and keep changing a corner of the corridor so that each update decomposes it.
+  const cv::Rect corner(plan.corridor.x + 200, plan.corridor.y + 10, 2, 2);
+  const std::vector<OccupancyGrid> steps{opened, with_cells(opened, {corner}, kOccupied), opened};
+  for (std::size_t k = 0; k < steps.size(); ++k) {
+    const Segmentation& s = segmenter.update(steps[k]);
+    expect_valid(steps[k], s);
+    ASSERT_GE(segmenter.last_update().redecomposed_rooms, 2) << "update " << k;
+    EXPECT_EQ(s.labels.at<int>(in_corridor), corridor);
+    EXPECT_EQ(s.labels.at<int>(in_room0) == room0, k < 2) << "update " << k;
+    EXPECT_EQ(s.rooms.size(), k < 2 ? 5u : 4u) << "update " << k;
+  }
+}
+
 TEST(IncrementalSegmenter, RoomsRevealedThroughDoorsMatchBatchAtTheEnd) {
   const FloorPlan plan = floor_plan();
   IncrementalSegmenter segmenter;
@@ -697,6 +745,33 @@ TEST(IncrementalSegmenter, NeighboursBehindDoorsCanBeLeftAlone) {
   EXPECT_EQ(passage_pairs(second).size(), passage_pairs(first).size());
 }
 
+TEST(IncrementalSegmenter, WithoutNeighboursOnlyTheTouchedRoomsChange) {
+  // A hall parted by a wall with a 3 m opening: batch cuts it there (found as a door). An obstacle
+  // in the left half brings the right half in through the passage unless neighbours are off; with
+  // neither doors nor other cuts bringing neighbours in, every room not next to a changed cell
+  // keeps its id and cells exactly.
+  OccupancyGrid hall;
+  hall.resolution = kRes;
+  hall.cells = cv::Mat(100, 200, CV_8UC1, cv::Scalar(kOccupied));
+  hall.cells(cv::Rect(4, 4, 192, 92)).setTo(kFree);
+  hall.cells(cv::Rect(100, 4, 2, 16)).setTo(kOccupied);
+  hall.cells(cv::Rect(100, 80, 2, 16)).setTo(kOccupied);
+  const OccupancyGrid blocked = with_cells(hall, {cv::Rect(40, 40, 3, 3)}, kOccupied);
+  for (const bool neighbours : {true, false}) {
+    IncrementalOptions options;
+    options.neighbours_across_doors = neighbours;
+    options.neighbours_across_cuts = neighbours;
+    options.speck_size = 0.0;
+    IncrementalSegmenter segmenter(options);
+    const Segmentation first = segmenter.update(hall);
+    ASSERT_EQ(first.rooms.size(), 2u);
+    const Segmentation second = segmenter.update(blocked);
+    expect_valid(blocked, second);
+    EXPECT_EQ(segmenter.last_update().redecomposed_rooms, neighbours ? 2 : 1);
+    if (!neighbours) expect_untouched_stable(hall, first, blocked, second, false);
+  }
+}
+
 TEST(IncrementalSegmenter, LargeRoomsAbsorbGrowthUpToTheirAllowance) {
   // The corridor (292 x 32 = 9344 cells) grows by strips of newly seen cells: it takes them in
   // without a decomposition while they add up to at most 10 % of its size; the strip that does not
@@ -850,6 +925,9 @@ TEST(IncrementalSegmenter, BadInputIsOneClearError) {
   IncrementalOptions bad_fraction;
   bad_fraction.batch_fraction = 0.0;
   EXPECT_THROW(IncrementalSegmenter{bad_fraction}, Error);
+  IncrementalOptions no_merge;
+  no_merge.merge_after = 0;
+  EXPECT_THROW(IncrementalSegmenter{no_merge}, Error);
   IncrementalOptions covering;
   covering.segment.labels.cover_absorbed_obstacles = true;  // would label obstacle cells
   EXPECT_THROW(IncrementalSegmenter{covering}, Error);

@@ -46,16 +46,31 @@ struct IncrementalOptions {
   // one scan and dropped the next (the room merging stage deciding by a hair) would otherwise hand
   // out a new id and take it back with every other scan. Until then the cut-off piece keeps the
   // room's id, and the room's polygon is its larger part. Pieces mostly of newly seen cells, and
-  // parts no longer connected, are new rooms at once. 1 (default): split as soon as batch would;
+  // parts no longer connected, are new rooms at once (a piece cut off beyond a held one counts as
+  // next to the room). 1 (default): split as soon as batch would;
   // the real-log replay uses 3 (wall_map_incremental_options()). On the simulated explorations 3
   // also calms the ids but leaves some rooms unsplit at the end (no later decomposition confirms
   // the cut), costing about a point of precision against batch.
   int split_after = 1;
+  // The same for merges: an old room whose cells the decomposition puts into a piece that keeps
+  // another old room's id keeps its own id and cells until merge_after decompositions in a row
+  // have merged it (the merging stage deciding by a hair as a room grows); until then the two are
+  // decomposed together and the passage between them, if any, stays. While held, the room keeps its
+  // polygon and its partner's is traced from the partner's own cells. 1 (default): merge as soon
+  // as batch would; the real-log replay uses 3. On the simulated explorations 3 lowers the churn
+  // but costs about half a point of recall against batch (benchmarks/README.md).
+  int merge_after = 1;
   // Rooms sharing a passage with a room that is decomposed again go with it (one ring), so that
   // door finding and room merging see both sides of the cut, as in batch. With false only rooms
   // joined by cuts that were not found as doors do: half the work, about one point of recall less
   // on the furnished dataset maps.
   bool neighbours_across_doors = true;
+  // The same for rooms sharing a passage that was not found as a door (a cut the merging stage
+  // left between two rooms). With both false only the rooms the change touches are decomposed
+  // again (and the partners of rooms holding back a merge): the cuts on their border stay where
+  // they are, which on the real laser logs halves the p95 update time on intel and also lowers
+  // its churn (benchmarks/README.md).
+  bool neighbours_across_cuts = true;
   // When more cells change than this fraction of the free cells (a loop closure moving the whole
   // map), every room is decomposed again: the batch result, with ids kept where rooms overlap.
   double batch_fraction = 0.5;
@@ -85,11 +100,13 @@ struct IncrementalUpdateReport {
 //
 // Promises after every update: every free cell (kFree) carries exactly one room label and no other
 // cell does; every label value is the id of one room in rooms (sorted by id); rooms the change did
-// not reach (not next to a changed cell, not sharing a passage with such a room) keep their id,
-// cells, polygon and passages (a room that only took in or lost a small blob keeps its polygon);
-// new rooms get ids never used before, and when rooms are decomposed again each old id goes to the
-// piece sharing the most cells with it (largest overlaps first, one id per piece), so a room cut
-// in two keeps its id on its larger part. Ids are therefore stable but not contiguous (1..N is not
+// not reach (not next to a changed cell, not sharing a passage with such a room as the neighbours_*
+// options say, not holding back a merge with such a room) keep their id, cells, polygon and
+// passages (a room that only took in or lost a small blob keeps its polygon); new rooms get ids
+// never used before, and when rooms are decomposed again each old id goes to the piece sharing the
+// most cells with it (largest overlaps first, one id per piece), so a room cut in two keeps its id
+// on its larger part (and the other part too while split_after holds the split back; a room
+// merged into another keeps its id and cells while merge_after holds the merge back). Ids are therefore stable but not contiguous (1..N is not
 // promised, unlike segment()).
 class IncrementalSegmenter {
  public:

@@ -12,9 +12,11 @@ namespace topocut {
 SegmentOptions wall_map_segment_options();
 
 // The incremental options for such a grid built scan by scan from a real log (walls --incremental):
-// segment as given, without the cleaning (not incremental), and splits held back for three
+// segment as given, without the cleaning (not incremental), splits and merges held back for three
 // decompositions, since the region decompositions a real scan triggers cut and merge rooms
-// differently from one scan to the next (benchmarks/README.md, "Incremental on real laser logs").
+// differently from one scan to the next, and only the rooms a change touches decomposed again (no
+// neighbours across passages): faster and calmer there (benchmarks/README.md, "Incremental on real
+// laser logs").
 IncrementalOptions wall_map_incremental_options(const SegmentOptions& segment = wall_map_segment_options());
 
 }  // namespace topocut
