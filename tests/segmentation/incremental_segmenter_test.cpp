@@ -473,8 +473,9 @@ TEST(IncrementalSegmenter, AMergeUndoneBeforeMergeAfterDecompositionsKeepsBothId
   EXPECT_EQ(held.labels.at<int>(plan.doors[0].y + 1, plan.doors[0].x + 1), corridor);  // the new cells join the partner
   // The corridor's outline is traced from its own cells: it does not cover room 0 (pixel-edge
   // rings: its area is its cells' area).
-  for (const Room& room : held.rooms)
+  for (const Room& room : held.rooms) {
     if (room.id == corridor) EXPECT_NEAR(area(room.polygon), room.area, 1e-6);
+  }
   const Segmentation undone = segmenter.update(plan.world);
   expect_valid(plan.world, undone);
   EXPECT_EQ(cv::countNonZero(undone.labels != closed.labels), 0);
