@@ -474,7 +474,9 @@ TEST(IncrementalSegmenter, AMergeUndoneBeforeMergeAfterDecompositionsKeepsBothId
   // The corridor's outline is traced from its own cells: it does not cover room 0 (pixel-edge
   // rings: its area is its cells' area).
   for (const Room& room : held.rooms) {
-    if (room.id == corridor) EXPECT_NEAR(area(room.polygon), room.area, 1e-6);
+    if (room.id == corridor) {
+      EXPECT_NEAR(area(room.polygon), room.area, 1e-6);
+    }
   }
   const Segmentation undone = segmenter.update(plan.world);
   expect_valid(plan.world, undone);
