@@ -97,7 +97,11 @@ int main(int argc, char** argv) {
     if (unexplored && ++i == argc) return usage();
     const int value = std::atoi(argv[i]);
     if (value < 100 || value > 40000) return usage();  // the floor's lattice needs a room; 40,000 is 1,600 Mpx
-    (unexplored ? canvas : sides.emplace_back()) = value;
+    if (unexplored) {
+      canvas = value;
+    } else {
+      sides.push_back(value);
+    }
   }
   if (sides.empty()) sides = {1000, 2500, 5000, 10000};
   const std::string folder = std::filesystem::temp_directory_path() / ("topocut_extreme_" + std::to_string(getpid()));

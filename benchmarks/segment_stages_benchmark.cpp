@@ -90,7 +90,7 @@ std::vector<Job> dataset_jobs(const std::vector<std::string>& names, const std::
 void pad_images(std::vector<Job>& jobs, int side, const std::string& folder) {
   std::filesystem::create_directories(folder);
   for (Job& job : jobs) {
-    if (job.path.size() >= 5 && job.path.substr(job.path.size() - 5) == ".yaml") continue;
+    if (is_yaml_path(job.path)) continue;
     const cv::Mat image = cv::imread(job.path, cv::IMREAD_UNCHANGED);
     if (image.empty() || image.cols > side || image.rows > side) throw Error("cannot pad '" + job.path + "'");
     const int top = (side - image.rows) / 2, left = (side - image.cols) / 2;

@@ -217,11 +217,10 @@ void place_input(SegmentationInput& input, const OccupancyGrid& grid, const cv::
 
 Segmentation segment(const OccupancyGrid& grid, const SegmentOptions& options, SegmentationInput* used) {
   validate(options);
-  validate(grid);
   SegmentationInput local;
   SegmentationInput& input = used ? *used : local;
   // SLAM maps are mostly unknown around the building (gmapping's default is 4000 x 4000 cells):
-  // the stages run on the known cells' box only.
+  // the stages run on the known cells' box only (segmentation_box validates the grid).
   const cv::Rect box = segmentation_box(grid, options);
   if (box.size() == grid.cells.size()) return segment_whole(grid, options, input);
   Segmentation segmentation = segment_whole(crop(grid, box), options, input);
