@@ -19,6 +19,23 @@ double signed_area(const Ring& ring) {
   return 0.5 * twice;
 }
 
+Box bounding_box(const Ring& ring) {
+  Box box;
+  for (const Point2& p : ring) {
+    box.x0 = std::min(box.x0, p.x);
+    box.y0 = std::min(box.y0, p.y);
+    box.x1 = std::max(box.x1, p.x);
+    box.y1 = std::max(box.y1, p.y);
+  }
+  return box;
+}
+
+double perimeter(const Ring& ring) {
+  double length = 0.0;
+  for (std::size_t i = 0; i < ring.size(); ++i) length += distance(ring[i], ring[(i + 1) % ring.size()]);
+  return length;
+}
+
 double area(const PolygonWithHoles& polygon) {
   double a = std::abs(signed_area(polygon.outer));
   for (const Ring& hole : polygon.holes) a -= std::abs(signed_area(hole));

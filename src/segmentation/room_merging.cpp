@@ -22,30 +22,9 @@ using Key = std::tuple<double, double, double, double>;  // directed edge (a.x, 
 Key edge_key(const Point2& a, const Point2& b) { return {a.x, a.y, b.x, b.y}; }
 
 double perimeter(const PolygonWithHoles& polygon) {
-  double length = 0.0;
-  auto add = [&](const Ring& ring) {
-    for (std::size_t i = 0; i < ring.size(); ++i) length += distance(ring[i], ring[(i + 1) % ring.size()]);
-  };
-  add(polygon.outer);
-  for (const Ring& hole : polygon.holes) add(hole);
+  double length = perimeter(polygon.outer);
+  for (const Ring& hole : polygon.holes) length += perimeter(hole);
   return length;
-}
-
-
-struct Box {
-  double x0 = std::numeric_limits<double>::infinity(), y0 = x0;
-  double x1 = -std::numeric_limits<double>::infinity(), y1 = x1;
-};
-
-Box bounding_box(const Ring& ring) {
-  Box box;
-  for (const Point2& p : ring) {
-    box.x0 = std::min(box.x0, p.x);
-    box.y0 = std::min(box.y0, p.y);
-    box.x1 = std::max(box.x1, p.x);
-    box.y1 = std::max(box.y1, p.y);
-  }
-  return box;
 }
 
 // Where the line p + t·u (u a unit vector) crosses the rings of one piece, as parameters t; the

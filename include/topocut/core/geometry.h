@@ -1,6 +1,7 @@
 #pragma once
 // Plain geometry value types shared by every module. They carry no CGAL types so that public
 // headers stay light; src/core/cgal_geometry.h converts to and from CGAL where the geometry is done.
+#include <limits>
 #include <vector>
 
 namespace topocut {
@@ -27,8 +28,20 @@ struct Segment2 {
   friend bool operator==(const Segment2&, const Segment2&) = default;
 };
 
+// An axis-aligned box; the default one is empty (it grows to the first point added).
+struct Box {
+  double x0 = std::numeric_limits<double>::infinity(), y0 = x0;
+  double x1 = -std::numeric_limits<double>::infinity(), y1 = x1;
+};
+
+// The smallest box holding every vertex of the ring (empty for an empty ring).
+Box bounding_box(const Ring& ring);
+
 // The signed area of a ring (positive when counter-clockwise).
 double signed_area(const Ring& ring);
+
+// The length of a ring's boundary, closing edge included.
+double perimeter(const Ring& ring);
 
 // Area of the outer ring minus the areas of the holes (orientation-independent).
 double area(const PolygonWithHoles& polygon);
