@@ -232,9 +232,28 @@ void validate(const DoorOptions& options) {
   if (!positive(options.max_wall_line) || !positive(options.wall_line_wall) || !std::isfinite(options.wall_line_straightness) ||
       options.wall_line_straightness < 0.0 || !std::isfinite(options.wall_line_spacing) || options.wall_line_spacing < 0.0)
     throw Error("the wall line length and wall length must be positive, the straightness and spacing non-negative");
+  if (!positive(options.max_island_thickness) || !std::isfinite(options.min_island_length) || options.min_island_length < 0.0)
+    throw Error("the wall island thickness must be positive, its length non-negative");
 }
 
 namespace {
+
+// A door cut joins two points of one ring; around a small obstacle (furniture) the region it could
+// cut off lies within the obstacle's bounding box, too small to be a room.
+bool too_small_for_a_room(const Ring& hole, double resolution) {
+  const Box box = bounding_box(hole);
+  return (box.x1 - box.x0) * (box.y1 - box.y0) * resolution * resolution < kSmallestRoom;
+}
+
+// A piece of wall standing free in the map (a partition whose joint to the next wall the sensor
+// missed, a wall between two doors): longer than furniture but thin all along, unlike furniture
+// (solid or small) and clutter. 2 area / perimeter is the mean thickness of a thin shape.
+bool is_wall_island(const Ring& hole, double resolution, const DoorOptions& options) {
+  const Box box = bounding_box(hole);
+  const double around = perimeter(hole);
+  return std::max(box.x1 - box.x0, box.y1 - box.y0) * resolution > options.min_island_length && around > 0.0 &&
+         2.0 * std::abs(signed_area(hole)) / around * resolution <= options.max_island_thickness;
+}
 
 // What every phase of the door search reads: the polygon's rings, their edges, and the option
 // lengths in cells.
@@ -245,11 +264,16 @@ struct DoorSearch {
   std::vector<Edge> edges;
   double reach = 0.0;  // widest door, cells
   double depth = 0.0;  // how far beside a cut the sides are measured, cells
+  // Per ring: may a door join it to another such ring (the outline, and islands of wall).
+  std::vector<bool> joinable;
 };
 
 DoorSearch door_search(const PolygonWithHoles& polygon, double resolution, const DoorOptions& options) {
-  DoorSearch search{options, resolution, {&polygon.outer}, {}, options.max_width / resolution, options.width_depth / resolution};
-  for (const Ring& hole : polygon.holes) search.rings.push_back(&hole);
+  DoorSearch search{options, resolution, {&polygon.outer}, {}, options.max_width / resolution, options.width_depth / resolution, {true}};
+  for (const Ring& hole : polygon.holes) {
+    search.rings.push_back(&hole);
+    search.joinable.push_back(options.island_cuts && is_wall_island(hole, resolution, options));
+  }
   for (std::size_t r = 0; r < search.rings.size(); ++r) {
     const Ring& ring = *search.rings[r];
     for (std::size_t i = 0; i < ring.size(); ++i)
@@ -258,24 +282,12 @@ DoorSearch door_search(const PolygonWithHoles& polygon, double resolution, const
   return search;
 }
 
-// A door cut joins two points of one ring; around a small obstacle (furniture) the region it could
-// cut off lies within the obstacle's bounding box, too small to be a room.
-bool too_small_for_a_room(const Ring& hole, double resolution) {
-  double x0 = kInfinity, y0 = kInfinity, x1 = -kInfinity, y1 = -kInfinity;
-  for (const Point2& p : hole) {
-    x0 = std::min(x0, p.x);
-    y0 = std::min(y0, p.y);
-    x1 = std::max(x1, p.x);
-    y1 = std::max(y1, p.y);
-  }
-  return (x1 - x0) * (y1 - y0) * resolution * resolution < kSmallestRoom;
-}
-
 // The nearest boundary point within reach from the reflex corner v (vertex i of ring r, between p
-// and q), inside the cone that resolves the corner; nullopt unless it lies on ring r itself (a cut
-// to another ring splits nothing).
+// and q), inside the cone that resolves the corner; nullopt unless it lies on ring r itself (or,
+// across, on another ring, both joinable: such a cut separates nothing alone, only with the cuts
+// on the island's other sides).
 std::optional<Candidate> nearest_across_corner(const DoorSearch& search, const EdgeGrid& grid, int r, int i,
-                                               const Point2& p, const Point2& v, const Point2& q) {
+                                               const Point2& p, const Point2& v, const Point2& q, bool across) {
   // Directions that resolve the corner: between the continuations of its two edges.
   const Point2 e1 = minus(v, p), e2 = minus(v, q);
   const double l1 = length(e1), l2 = length(e2);
@@ -322,17 +334,19 @@ std::optional<Candidate> nearest_across_corner(const DoorSearch& search, const E
       if (t > 0.0 && s > 0.0 && s < 1.0) consider({v.x + t * ray.x, v.y + t * ray.y});
     }
   }, [&](double d) { return d * d < best2; });
-  if (best_ring != r) return std::nullopt;
+  if (best_ring < 0 || (best_ring != r) != across) return std::nullopt;
+  if (across && !(search.joinable[static_cast<std::size_t>(r)] && search.joinable[static_cast<std::size_t>(best_ring)]))
+    return std::nullopt;
   return Candidate{{v, best_point}, std::sqrt(best2), r};
 }
 
 // Calls visit(r, i, p, v, q) for every reflex corner v (vertex i of ring r, between p and q) that
-// turns by at least min_turn, skipping holes for which skip_hole(hole) is true.
+// turns by at least min_turn, skipping holes for which skip_hole(r, hole) is true.
 template <typename SkipHole, typename Visit>
 void for_each_reflex_corner(const DoorSearch& search, SkipHole&& skip_hole, Visit&& visit) {
   for (std::size_t r = 0; r < search.rings.size(); ++r) {
     const Ring& ring = *search.rings[r];
-    if (r > 0 && skip_hole(ring)) continue;
+    if (r > 0 && skip_hole(r, ring)) continue;
     const int n = static_cast<int>(ring.size());
     for (int i = 0; i < n; ++i) {
       const Point2& p = ring[static_cast<std::size_t>((i + n - 1) % n)];
@@ -345,13 +359,17 @@ void for_each_reflex_corner(const DoorSearch& search, SkipHole&& skip_hole, Visi
   }
 }
 
-// Door candidates: from every reflex corner, the shortest cut across it.
-std::vector<Candidate> corner_cuts(const DoorSearch& search, const EdgeGrid& grid) {
+// Door candidates: from every reflex corner, the shortest cut across it, to its own ring or (across)
+// to another joinable one.
+std::vector<Candidate> corner_cuts(const DoorSearch& search, const EdgeGrid& grid, bool across) {
   std::vector<Candidate> candidates;
   for_each_reflex_corner(
-      search, [&](const Ring& hole) { return too_small_for_a_room(hole, search.resolution); },
+      search,
+      [&](std::size_t r, const Ring& hole) {
+        return too_small_for_a_room(hole, search.resolution) || (across && !search.joinable[r]);
+      },
       [&](int r, int i, const Point2& p, const Point2& v, const Point2& q) {
-        if (auto c = nearest_across_corner(search, grid, r, i, p, v, q)) candidates.push_back(*c);
+        if (auto c = nearest_across_corner(search, grid, r, i, p, v, q, across)) candidates.push_back(*c);
       });
   return candidates;
 }
@@ -368,7 +386,7 @@ std::vector<WallEnd> thin_wall_ends(const DoorSearch& search, const EdgeGrid& gr
   const double min_wall = search.options.min_wall_length / search.resolution;
   const double max_thickness = search.options.max_wall_thickness / search.resolution;
   std::vector<WallEnd> ends;
-  for_each_reflex_corner(search, [](const Ring&) { return false; },
+  for_each_reflex_corner(search, [](std::size_t, const Ring&) { return false; },
                          [&](int r, int, const Point2& p, const Point2& v, const Point2& q) {
     for (const bool from_p : {true, false}) {
       const Point2 e = minus(v, from_p ? p : q);
@@ -538,7 +556,7 @@ std::vector<Candidate> wall_line_cuts(const DoorSearch& search, const EdgeGrid& 
   const double reach = search.options.wall_line_wall / search.resolution;
   const double tolerance = search.options.wall_line_straightness / search.resolution;
   for_each_reflex_corner(
-      search, [&](const Ring& hole) { return too_small_for_a_room(hole, search.resolution); },
+      search, [&](std::size_t, const Ring& hole) { return too_small_for_a_room(hole, search.resolution); },
       [&](int r, int i, const Point2& p, const Point2& v, const Point2& q) {
         const Ring& ring = *search.rings[static_cast<std::size_t>(r)];
         for (const int step : {1, -1}) {
@@ -595,10 +613,30 @@ std::vector<Segment2> find_door_cuts(const PolygonWithHoles& polygon, double res
   return search_cuts(polygon, resolution, options, options.enabled, [&](const DoorSearch& search, const EdgeGrid& grid) {
     std::vector<Candidate> doors;
     if (options.extend_walls) doors = wall_openings(search, grid);
-    for (const Candidate& c : corner_cuts(search, grid)) {
+    for (const Candidate& c : corner_cuts(search, grid, false)) {
       if (has_wide_sides(search, grid, c)) doors.push_back(c);
     }
     return narrowest_compatible(std::move(doors), resolution);
+  });
+}
+
+std::vector<Segment2> find_island_cuts(const PolygonWithHoles& polygon, double resolution, const DoorOptions& options,
+                                       const std::vector<Segment2>& doors) {
+  validate(options);
+  // Most maps have no wall island: then there is nothing to search.
+  const bool any = std::any_of(polygon.holes.begin(), polygon.holes.end(),
+                               [&](const Ring& hole) { return is_wall_island(hole, resolution, options); });
+  return search_cuts(polygon, resolution, options, options.island_cuts && any, [&](const DoorSearch& search, const EdgeGrid& grid) {
+    std::vector<Candidate> all;
+    for (const Segment2& d : doors) all.push_back({d, -1.0, 0});  // the doors go first and stay
+    for (const Candidate& c : corner_cuts(search, grid, true)) {
+      if (has_wide_sides(search, grid, c)) all.push_back(c);
+    }
+    std::vector<Segment2> cuts = narrowest_compatible(std::move(all), resolution);
+    // Only the cuts that, with the doors and each other, close a part off; the doors themselves go.
+    cuts = separating_chords(polygon, cuts);
+    std::erase_if(cuts, [&](const Segment2& s) { return std::find(doors.begin(), doors.end(), s) != doors.end(); });
+    return cuts;
   });
 }
 
@@ -708,10 +746,9 @@ HalfEdgeGraph half_edge_graph(const std::vector<Ring>& rings, const std::vector<
   return g;
 }
 
-// Faces on the left of the half-edges, each used once: counter-clockwise cycles are the parts'
-// outer rings, clockwise ones their holes. Throws if a walk does not close (a cut leaves the
-// polygon).
-void trace_faces(const HalfEdgeGraph& g, std::vector<Ring>& outers, std::vector<Ring>& holes) {
+// The faces on the left of the half-edges, each half-edge in exactly one: cycles of half-edge
+// indices. Throws if a walk does not close (a cut leaves the polygon).
+std::vector<std::vector<int>> face_cycles(const HalfEdgeGraph& g) {
   // At each vertex leave along the edge that turns most to the left (never straight back along
   // the chord just walked, unless it is the only way on).
   auto next_of = [&](int k) {
@@ -729,17 +766,42 @@ void trace_faces(const HalfEdgeGraph& g, std::vector<Ring>& outers, std::vector<
     }
     return best >= 0 ? best : h.twin;
   };
+  std::vector<std::vector<int>> cycles;
   std::vector<bool> used(g.half.size(), false);
   for (std::size_t start = 0; start < g.half.size(); ++start) {
     if (used[start]) continue;
-    Ring cycle;
+    std::vector<int> cycle;
     int k = static_cast<int>(start);
     while (k >= 0 && !used[static_cast<std::size_t>(k)]) {
       used[static_cast<std::size_t>(k)] = true;
-      cycle.push_back(g.vertices[static_cast<std::size_t>(g.half[static_cast<std::size_t>(k)].from)]);
+      cycle.push_back(k);
       k = next_of(k);
     }
     if (k != static_cast<int>(start)) throw Error("the cuts do not split the polygon into faces (a cut leaves the polygon?)");
+    cycles.push_back(std::move(cycle));
+  }
+  return cycles;
+}
+
+// Per chord (in the graph's order, after the ring edges): does it separate two faces? A chord
+// between two rings that no other chord completes has the same face on both of its sides.
+std::vector<bool> chords_separating(const HalfEdgeGraph& g, const std::vector<std::vector<int>>& cycles, std::size_t chords) {
+  std::vector<int> face(g.half.size(), -1);
+  for (std::size_t f = 0; f < cycles.size(); ++f)
+    for (const int k : cycles[f]) face[static_cast<std::size_t>(k)] = static_cast<int>(f);
+  const std::size_t first = g.half.size() - 2 * chords;
+  std::vector<bool> separating(chords);
+  for (std::size_t j = 0; j < chords; ++j) separating[j] = face[first + 2 * j] != face[first + 2 * j + 1];
+  return separating;
+}
+
+// The faces as rings: counter-clockwise cycles are the parts' outer rings, clockwise ones their
+// holes.
+void trace_faces(const HalfEdgeGraph& g, const std::vector<std::vector<int>>& cycles, std::vector<Ring>& outers,
+                 std::vector<Ring>& holes) {
+  for (const std::vector<int>& ks : cycles) {
+    Ring cycle;
+    for (const int k : ks) cycle.push_back(g.vertices[static_cast<std::size_t>(g.half[static_cast<std::size_t>(k)].from)]);
     const double a = signed_area(cycle);
     if (a > 0.0) {
       outers.push_back(std::move(cycle));
@@ -777,12 +839,32 @@ std::vector<PolygonWithHoles> parts_with_holes(std::vector<Ring>& outers, std::v
 
 }  // namespace
 
+std::vector<Segment2> separating_chords(const PolygonWithHoles& polygon, const std::vector<Segment2>& chords) {
+  if (chords.empty()) return {};
+  const HalfEdgeGraph graph = half_edge_graph(rings_with_chord_ends(polygon, chords), chords);
+  const std::vector<bool> separating = chords_separating(graph, face_cycles(graph), chords.size());
+  std::vector<Segment2> out;
+  for (std::size_t j = 0; j < chords.size(); ++j)
+    if (separating[j]) out.push_back(chords[j]);
+  return out;
+}
+
 std::vector<PolygonWithHoles> split_polygon(const PolygonWithHoles& polygon, const std::vector<Segment2>& chords) {
   if (chords.empty()) return {polygon};
-  const std::vector<Ring> rings = rings_with_chord_ends(polygon, chords);
-  const HalfEdgeGraph graph = half_edge_graph(rings, chords);
+  HalfEdgeGraph graph = half_edge_graph(rings_with_chord_ends(polygon, chords), chords);
+  std::vector<std::vector<int>> cycles = face_cycles(graph);
+  const std::vector<bool> separating = chords_separating(graph, cycles, chords.size());
+  if (std::find(separating.begin(), separating.end(), false) != separating.end()) {
+    // A lone chord between two rings would leave a part touching itself along it: drop it.
+    std::vector<Segment2> kept;
+    for (std::size_t j = 0; j < chords.size(); ++j)
+      if (separating[j]) kept.push_back(chords[j]);
+    if (kept.empty()) return {polygon};
+    graph = half_edge_graph(rings_with_chord_ends(polygon, kept), kept);
+    cycles = face_cycles(graph);
+  }
   std::vector<Ring> outers, holes;
-  trace_faces(graph, outers, holes);
+  trace_faces(graph, cycles, outers, holes);
   return parts_with_holes(outers, holes);
 }
 

@@ -6,7 +6,7 @@ namespace topocut {
 
 void apply(const SegmentSwitches& s, SegmentOptions& options) {
   if (s.parity && (s.no_doors || s.no_wall_openings || s.no_merge || s.no_simplify || options.labels.cover_absorbed_obstacles ||
-                   s.no_wall_lines ||
+                   s.no_wall_lines || s.no_island_cuts ||
                    s.no_clean || s.no_width_steps || s.no_furniture_rule))
     throw Error("--parity already switches every improvement off; give it alone");
   if (s.parity) {
@@ -27,6 +27,7 @@ void apply(const SegmentSwitches& s, SegmentOptions& options) {
   if (s.no_width_steps) options.merge.step_ratio = 0.0;
   if (s.no_furniture_rule) options.merge.furniture_size = 0.0;
   if (s.no_wall_lines) options.doors.wall_lines = false;
+  if (s.no_island_cuts) options.doors.island_cuts = false;
 }
 
 namespace {
@@ -76,6 +77,10 @@ const std::vector<OptionRow<SegmentSettings>>& segment_option_rows() {
       on_off("no-wall-lines", [](auto& s) -> auto& { return s.switches.no_wall_lines; },
              "no cuts where a straight wall (2.5 m or more) continued across at most 5 m of free space meets the next "
              "wall (room boundaries across wide openings, candidates that merging may remove)"),
+      on_off("no-island-cuts", [](auto& s) -> auto& { return s.switches.no_island_cuts; },
+             "no door-like cuts from the outline to a free-standing piece of wall (longer than 2.5 m, at most 0.25 m "
+             "thick: a partition whose joint the sensor missed), which separate rooms only together (candidates that "
+             "merging may remove)"),
       on_off("no-merge", [](auto& s) -> auto& { return s.switches.no_merge; },
              "keep DuDe's pieces as rooms instead of merging them across wide cuts"),
       number("fold-area", "M2", OptionRange::kNonNegative, [](auto& s) -> auto& { return s.options.merge.min_room_area; },

@@ -79,14 +79,19 @@ SegmentationInput segmentation_input(const OccupancyGrid& grid, const SegmentOpt
 
 namespace {
 
-// Door cuts, then (with options.doors.wall_lines and wall_lines) wall lines split the polygon; each
-// part is decomposed on its own. Wall lines are ordinary cuts: merging may remove them.
+// Door cuts, island cuts, then (with options.doors.wall_lines and wall_lines) wall lines split the
+// polygon; each part is decomposed on its own. Island cuts and wall lines are ordinary cuts: merging
+// may remove them.
 PieceSet decompose_polygon(const PolygonWithHoles& polygon, double resolution, const SegmentOptions& options, bool wall_lines) {
   PieceSet set;
   set.doors = find_door_cuts(polygon, resolution, options.doors);
   set.cuts = set.doors;
+  if (options.doors.enabled) {
+    const std::vector<Segment2> islands = find_island_cuts(polygon, resolution, options.doors, set.doors);
+    set.cuts.insert(set.cuts.end(), islands.begin(), islands.end());
+  }
   if (options.doors.enabled && wall_lines) {
-    set.wall_lines = find_wall_line_cuts(polygon, resolution, options.doors, set.doors);
+    set.wall_lines = find_wall_line_cuts(polygon, resolution, options.doors, set.cuts);
     set.cuts.insert(set.cuts.end(), set.wall_lines.begin(), set.wall_lines.end());
   }
   const std::vector<PolygonWithHoles> parts = split_polygon(polygon, set.cuts);
@@ -161,6 +166,7 @@ SegmentOptions parity_segment_options(double concavity) {
   options.merge.enabled = false;
   options.doors.enabled = false;
   options.doors.wall_lines = false;
+  options.doors.island_cuts = false;
   options.labels.cover_absorbed_obstacles = false;
   options.simplify = 0.0;
   options.clean = false;

@@ -60,8 +60,10 @@ TEST(SegmentOptionRows, ParityIsTheReferenceAndRefusesTheSwitchesItSets) {
   EXPECT_FALSE(given({{"parity", 1}, {"trivial", 1}}).decompose);
   EXPECT_FALSE(given({{"no-wall-lines", 1}}).doors.wall_lines);
   EXPECT_TRUE(given({}).doors.wall_lines);
+  EXPECT_FALSE(given({{"no-island-cuts", 1}}).doors.island_cuts);
+  EXPECT_TRUE(given({}).doors.island_cuts);
   for (const char* sw : {"no-doors", "no-wall-openings", "no-merge", "no-simplify", "no-clean", "no-width-steps",
-                         "no-furniture-rule", "cover-obstacles", "no-wall-lines"}) {
+                         "no-furniture-rule", "cover-obstacles", "no-wall-lines", "no-island-cuts"}) {
     EXPECT_THROW(given({{"parity", 1}, {sw, 1}}), Error) << sw;
   }
 }

@@ -319,11 +319,32 @@ TEST(Segment, TwoRoomsJoinedByADoorAreTwoRoomsWithOnePassage) {
   EXPECT_EQ(segment(grid, trivial()).rooms.size(), 1u);
 }
 
+TEST(Segment, TwoRoomsBehindAFreeStandingWallAreRoomsOfTheirOwn) {
+  // A 10 m x 6 m floor: a corridor (rows 5-44), two rooms (rows 49-124) split by a partition; the
+  // partition misses the far wall by 0.2 m and the wall along the corridor misses both side walls by 1 m, so
+  // the two are one free-standing T of wall and every door of the rooms leads round it.
+  OccupancyGrid grid = plan({210, 130}, {cv::Rect(5, 5, 200, 120)});
+  grid.cells(cv::Rect(25, 45, 160, 4)).setTo(kOccupied);
+  grid.cells(cv::Rect(103, 49, 4, 72)).setTo(kOccupied);
+  const Segmentation s = segment(grid);
+  expect_consistent(grid, s);
+  ASSERT_EQ(s.rooms.size(), 3u);
+  const int corridor = s.labels.at<int>(25, 100), left = s.labels.at<int>(90, 50), right = s.labels.at<int>(90, 150);
+  EXPECT_NE(corridor, left);
+  EXPECT_NE(corridor, right);
+  EXPECT_NE(left, right);
+  EXPECT_EQ(s.passages.size(), 3u);
+  SegmentOptions off;
+  off.doors.island_cuts = false;
+  EXPECT_LT(segment(grid, off).rooms.size(), 3u);
+}
+
 TEST(Segment, ParityOptionsSwitchEveryImprovementOff) {
   const SegmentOptions parity = parity_segment_options(3.0);
   EXPECT_EQ(parity.concavity, 3.0);
   EXPECT_FALSE(parity.merge.enabled);
   EXPECT_FALSE(parity.doors.enabled);
+  EXPECT_FALSE(parity.doors.island_cuts);
   EXPECT_EQ(parity.simplify, 0.0);
   EXPECT_FALSE(parity.labels.cover_absorbed_obstacles);
   // Parity pieces are exactly DuDe's pieces of each component, at tau itself (no oversegmentation

@@ -42,6 +42,15 @@ struct DoorOptions {
   double min_wall_length = 0.3;
   double gap_alignment = 0.2;
   double min_side_width = 1.0;
+  // Island cuts (find_island_cuts): door-like cuts between the outline and a wall island, or two
+  // islands. A wall island is a hole longer than min_island_length (the merging's furniture size:
+  // anything smaller is furniture) whose mean thickness (2 area / perimeter) is at most
+  // max_island_thickness: a piece of partition whose joint to the next wall the sensor missed, a
+  // wall between two doors. A door onto such an island separates rooms only together with the cuts
+  // on the island's other sides, so these are ordinary cuts that merging may remove.
+  bool island_cuts = true;
+  double max_island_thickness = 0.25;
+  double min_island_length = 2.5;
   // Wall lines (find_wall_line_cuts): from a corner, a straight wall at least wall_line_wall long
   // (every point within wall_line_straightness of its line) continued across at most max_wall_line
   // metres of free space to the next wall, as people draw room boundaries across wide openings. Of
@@ -64,6 +73,13 @@ void validate(const DoorOptions& options);
 // Deterministic.
 std::vector<Segment2> find_door_cuts(const PolygonWithHoles& polygon, double resolution, const DoorOptions& options = {});
 
+// Door-like cuts between rings (empty unless options.island_cuts): from a reflex corner of the
+// outline or of a wall island (options.*island*) to the nearest point of another of these, found
+// and tested as doors are, not crossing the doors; only those that, with the doors and each other,
+// have a different part of the polygon on either side (separating_chords). Doors are not repeated.
+std::vector<Segment2> find_island_cuts(const PolygonWithHoles& polygon, double resolution, const DoorOptions& options,
+                                       const std::vector<Segment2>& doors);
+
 // Candidate room boundaries beside the doors (empty unless options.wall_lines): from every reflex
 // corner, each of its straight walls (options.wall_line_*) continued to the first wall of the same
 // ring within options.max_wall_line metres, at least options.min_side_width long and leaving both
@@ -74,9 +90,15 @@ std::vector<Segment2> find_wall_line_cuts(const PolygonWithHoles& polygon, doubl
 
 // Splits polygon (outer ring CCW, holes CW, rings pairwise disjoint) along chords: segments whose
 // end points lie on the rings (vertices or points on edges), that lie inside the polygon and do not
-// cross each other, each joining two points of one ring. Returns the parts (outer CCW, holes CW),
-// which tile the polygon; every chord is an edge of the two parts it separates. Throws Error if a
-// chord end point is not on the polygon's boundary.
+// cross each other. Returns the parts (outer CCW, holes CW), which tile the polygon; every chord in
+// separating_chords is an edge of the two parts it separates, the others (between two rings, with
+// one part on both sides) are left out. Throws Error if a chord end point is not on the polygon's
+// boundary.
+// The chords (as for split_polygon) that have a different part of the polygon on either side, in
+// their order: every chord joining two points of one ring, and those between rings that other
+// chords complete (the doors on all sides of an island of wall).
+std::vector<Segment2> separating_chords(const PolygonWithHoles& polygon, const std::vector<Segment2>& chords);
+
 std::vector<PolygonWithHoles> split_polygon(const PolygonWithHoles& polygon, const std::vector<Segment2>& chords);
 
 }  // namespace topocut

@@ -20,6 +20,7 @@ struct SegmentSwitches {
   bool no_width_steps = false;    // --no-width-steps
   bool no_furniture_rule = false; // --no-furniture-rule
   bool no_wall_lines = false;     // --no-wall-lines
+  bool no_island_cuts = false;    // --no-island-cuts
   // parity resets min-room-area to the reference's unless the caller gave it.
   bool min_room_area_given = false;
 };
@@ -29,7 +30,7 @@ struct SegmentSwitches {
 // merging, no simplification, no cleaning, absorbed obstacles not covered, the reference's smallest
 // room area unless min_room_area_given); combined with a switch it already sets (no_doors,
 // no_wall_openings, no_merge, no_simplify, no_clean, no_width_steps, no_furniture_rule,
-// no_wall_lines) or with labels.cover_absorbed_obstacles it throws Error. Numbers it does not set
+// no_wall_lines, no_island_cuts) or with labels.cover_absorbed_obstacles it throws Error. Numbers it does not set
 // (robot radius, hole area, ...) and trivial still apply.
 void apply(const SegmentSwitches& switches, SegmentOptions& options);
 
