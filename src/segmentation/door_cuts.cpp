@@ -7,22 +7,20 @@
 #include <optional>
 #include <string>
 #include <tuple>
-#include <unordered_map>
 #include <utility>
 
 #include "topocut/core/error.h"
+#include "topocut/segmentation/polygon_split.h"
+#include "segmentation/plane_vectors.h"
 
 namespace topocut {
+
+using namespace plane;
 
 namespace {
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 constexpr double kSmallestRoom = 1.0;  // m²: no room is smaller than a square metre
-
-double cross(const Point2& a, const Point2& b) { return a.x * b.y - a.y * b.x; }
-Point2 minus(const Point2& a, const Point2& b) { return {a.x - b.x, a.y - b.y}; }
-double dot(const Point2& a, const Point2& b) { return a.x * b.x + a.y * b.y; }
-double length(const Point2& a) { return std::hypot(a.x, a.y); }
 
 struct Edge {
   Point2 a, b;
@@ -200,22 +198,6 @@ bool segments_conflict(const Segment2& s, const Segment2& t) {
            p.y <= std::max(a.y, b.y);
   };
   return on(t.a, t.b, s.a, d1) || on(t.a, t.b, s.b, d2) || on(s.a, s.b, t.a, d3) || on(s.a, s.b, t.b, d4);
-}
-
-double turn_angle(const Point2& a, const Point2& b, const Point2& c) {
-  const Point2 d = minus(b, a), e = minus(c, b);
-  return std::atan2(cross(d, e), dot(d, e));
-}
-
-// Even-odd point-in-ring test (half-open in y).
-bool in_ring(const Ring& ring, const Point2& p) {
-  bool inside = false;
-  for (std::size_t i = 0, j = ring.size() - 1; i < ring.size(); j = i++) {
-    const Point2& a = ring[i];
-    const Point2& b = ring[j];
-    if ((a.y > p.y) != (b.y > p.y) && p.x < a.x + (p.y - a.y) * (b.x - a.x) / (b.y - a.y)) inside = !inside;
-  }
-  return inside;
 }
 
 }  // namespace
@@ -638,234 +620,6 @@ std::vector<Segment2> find_island_cuts(const PolygonWithHoles& polygon, double r
     std::erase_if(cuts, [&](const Segment2& s) { return std::find(doors.begin(), doors.end(), s) != doors.end(); });
     return cuts;
   });
-}
-
-namespace {
-
-// Points as hash keys, equal when their coordinates compare equal (so 0.0 and -0.0 are one point,
-// as in an ordered map); lookups only, so the hash order never shows.
-struct PointHash {
-  std::size_t operator()(const std::pair<double, double>& p) const {
-    const std::size_t x = std::hash<double>{}(p.first + 0.0), y = std::hash<double>{}(p.second + 0.0);
-    return x ^ (y + 0x9e3779b97f4a7c15ULL + (x << 6) + (x >> 2));
-  }
-};
-template <typename T>
-using PointMap = std::unordered_map<std::pair<double, double>, T, PointHash>;
-
-// A polygon's rings as one graph: directed half-edges between distinct vertices.
-struct HalfEdge {
-  int from, to, twin;
-};
-struct HalfEdgeGraph {
-  std::vector<Point2> vertices;
-  std::vector<HalfEdge> half;
-  std::vector<std::vector<int>> outgoing;  // per vertex: its half-edges, in insertion order
-};
-
-// The rings with every chord end point that is not a vertex inserted as a vertex of the edge it
-// lies on (in order along the edge), so chords meet the rings only at vertices. Throws if a chord
-// end lies on no edge.
-std::vector<Ring> rings_with_chord_ends(const PolygonWithHoles& polygon, const std::vector<Segment2>& chords) {
-  // Far more than the rounding of a distance, far less than a cell: the box test below never
-  // drops an edge the distance would keep.
-  constexpr double kNearBox = 1e-3;
-  std::vector<Ring> rings{polygon.outer};
-  for (const Ring& hole : polygon.holes) rings.push_back(hole);
-  PointMap<bool> is_vertex;
-  is_vertex.reserve(polygon.outer.size() * 2);
-  for (const Ring& ring : rings)
-    for (const Point2& p : ring) is_vertex[{p.x, p.y}] = true;
-  std::map<std::pair<int, int>, std::vector<std::pair<double, Point2>>> inserts;  // (ring, edge) -> (t, point)
-  for (const Segment2& chord : chords) {
-    for (const Point2& p : {chord.a, chord.b}) {
-      if (is_vertex.count({p.x, p.y})) continue;
-      int best_ring = -1, best_edge = -1;
-      double best = 1e-6, best_t = 0.0;
-      for (std::size_t r = 0; r < rings.size(); ++r) {
-        const Ring& ring = rings[r];
-        for (std::size_t i = 0; i < ring.size(); ++i) {
-          const Segment2 e{ring[i], ring[(i + 1) % ring.size()]};
-          // An edge whose box is far from p is not within best of it: skip the exact distance.
-          if (p.x < std::min(e.a.x, e.b.x) - kNearBox || p.x > std::max(e.a.x, e.b.x) + kNearBox ||
-              p.y < std::min(e.a.y, e.b.y) - kNearBox || p.y > std::max(e.a.y, e.b.y) + kNearBox)
-            continue;
-          const double d = distance_to_segment(p, e);
-          if (d < best) {
-            best = d;
-            best_ring = static_cast<int>(r);
-            best_edge = static_cast<int>(i);
-            const Point2 v = minus(e.b, e.a);
-            best_t = dot(minus(p, e.a), v) / dot(v, v);
-          }
-        }
-      }
-      if (best_ring < 0) throw Error("a cut end point is not on the polygon's boundary");
-      inserts[{best_ring, best_edge}].emplace_back(best_t, p);
-      is_vertex[{p.x, p.y}] = true;
-    }
-  }
-  for (std::size_t r = 0; r < rings.size(); ++r) {
-    bool any = false;
-    for (const auto& [key, list] : inserts) any = any || key.first == static_cast<int>(r);
-    if (!any) continue;
-    Ring out;
-    for (std::size_t i = 0; i < rings[r].size(); ++i) {
-      out.push_back(rings[r][i]);
-      const auto it = inserts.find({static_cast<int>(r), static_cast<int>(i)});
-      if (it == inserts.end()) continue;
-      std::vector<std::pair<double, Point2>> list = it->second;
-      std::sort(list.begin(), list.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
-      for (const auto& [t, p] : list) out.push_back(p);
-    }
-    rings[r] = std::move(out);
-  }
-  return rings;
-}
-
-// Half-edges: ring edges (free space on their left) and both directions of every chord, with
-// vertices numbered by first appearance so that the walk below is deterministic.
-HalfEdgeGraph half_edge_graph(const std::vector<Ring>& rings, const std::vector<Segment2>& chords) {
-  HalfEdgeGraph g;
-  PointMap<int> vertex_id;
-  auto id_of = [&](const Point2& p) {
-    const auto [it, added] = vertex_id.emplace(std::pair<double, double>{p.x, p.y}, static_cast<int>(g.vertices.size()));
-    if (added) g.vertices.push_back(p);
-    return it->second;
-  };
-  for (const Ring& ring : rings)
-    for (std::size_t i = 0; i < ring.size(); ++i) g.half.push_back({id_of(ring[i]), id_of(ring[(i + 1) % ring.size()]), -1});
-  for (const Segment2& chord : chords) {
-    const int a = id_of(chord.a), b = id_of(chord.b);
-    const int k = static_cast<int>(g.half.size());
-    g.half.push_back({a, b, k + 1});
-    g.half.push_back({b, a, k});
-  }
-  g.outgoing.resize(g.vertices.size());
-  for (std::size_t k = 0; k < g.half.size(); ++k) g.outgoing[static_cast<std::size_t>(g.half[k].from)].push_back(static_cast<int>(k));
-  return g;
-}
-
-// The faces on the left of the half-edges, each half-edge in exactly one: cycles of half-edge
-// indices. Throws if a walk does not close (a cut leaves the polygon).
-std::vector<std::vector<int>> face_cycles(const HalfEdgeGraph& g) {
-  // At each vertex leave along the edge that turns most to the left (never straight back along
-  // the chord just walked, unless it is the only way on).
-  auto next_of = [&](int k) {
-    const HalfEdge& h = g.half[static_cast<std::size_t>(k)];
-    int best = -1;
-    double best_turn = -kInfinity;
-    for (const int o : g.outgoing[static_cast<std::size_t>(h.to)]) {
-      if (o == h.twin) continue;
-      const double t = turn_angle(g.vertices[static_cast<std::size_t>(h.from)], g.vertices[static_cast<std::size_t>(h.to)],
-                                  g.vertices[static_cast<std::size_t>(g.half[static_cast<std::size_t>(o)].to)]);
-      if (t > best_turn) {
-        best_turn = t;
-        best = o;
-      }
-    }
-    return best >= 0 ? best : h.twin;
-  };
-  std::vector<std::vector<int>> cycles;
-  std::vector<bool> used(g.half.size(), false);
-  for (std::size_t start = 0; start < g.half.size(); ++start) {
-    if (used[start]) continue;
-    std::vector<int> cycle;
-    int k = static_cast<int>(start);
-    while (k >= 0 && !used[static_cast<std::size_t>(k)]) {
-      used[static_cast<std::size_t>(k)] = true;
-      cycle.push_back(k);
-      k = next_of(k);
-    }
-    if (k != static_cast<int>(start)) throw Error("the cuts do not split the polygon into faces (a cut leaves the polygon?)");
-    cycles.push_back(std::move(cycle));
-  }
-  return cycles;
-}
-
-// Per chord (in the graph's order, after the ring edges): does it separate two faces? A chord
-// between two rings that no other chord completes has the same face on both of its sides.
-std::vector<bool> chords_separating(const HalfEdgeGraph& g, const std::vector<std::vector<int>>& cycles, std::size_t chords) {
-  std::vector<int> face(g.half.size(), -1);
-  for (std::size_t f = 0; f < cycles.size(); ++f)
-    for (const int k : cycles[f]) face[static_cast<std::size_t>(k)] = static_cast<int>(f);
-  const std::size_t first = g.half.size() - 2 * chords;
-  std::vector<bool> separating(chords);
-  for (std::size_t j = 0; j < chords; ++j) separating[j] = face[first + 2 * j] != face[first + 2 * j + 1];
-  return separating;
-}
-
-// The faces as rings: counter-clockwise cycles are the parts' outer rings, clockwise ones their
-// holes.
-void trace_faces(const HalfEdgeGraph& g, const std::vector<std::vector<int>>& cycles, std::vector<Ring>& outers,
-                 std::vector<Ring>& holes) {
-  for (const std::vector<int>& ks : cycles) {
-    Ring cycle;
-    for (const int k : ks) cycle.push_back(g.vertices[static_cast<std::size_t>(g.half[static_cast<std::size_t>(k)].from)]);
-    const double a = signed_area(cycle);
-    if (a > 0.0) {
-      outers.push_back(std::move(cycle));
-    } else if (a < 0.0) {
-      holes.push_back(std::move(cycle));
-    }
-  }
-}
-
-// Every hole goes to the smallest part whose outer ring contains a point just left of the hole's
-// first edge: the part that owns it, even when parts nest.
-std::vector<PolygonWithHoles> parts_with_holes(std::vector<Ring>& outers, std::vector<Ring>& holes) {
-  std::vector<PolygonWithHoles> parts;
-  for (Ring& outer : outers) parts.push_back({std::move(outer), {}});
-  for (Ring& hole : holes) {
-    const Point2 d = minus(hole[1], hole[0]);
-    const double l = length(d);
-    const double e = 1e-4 * std::min(1.0, l);
-    const Point2 p{(hole[0].x + hole[1].x) / 2.0 - d.y / l * e, (hole[0].y + hole[1].y) / 2.0 + d.x / l * e};
-    int owner = -1;
-    double owner_area = kInfinity;
-    for (std::size_t i = 0; i < parts.size(); ++i) {
-      if (!in_ring(parts[i].outer, p)) continue;
-      const double a = signed_area(parts[i].outer);
-      if (a < owner_area) {
-        owner_area = a;
-        owner = static_cast<int>(i);
-      }
-    }
-    if (owner < 0) throw Error("internal: a hole outside every part after splitting");
-    parts[static_cast<std::size_t>(owner)].holes.push_back(std::move(hole));
-  }
-  return parts;
-}
-
-}  // namespace
-
-std::vector<Segment2> separating_chords(const PolygonWithHoles& polygon, const std::vector<Segment2>& chords) {
-  if (chords.empty()) return {};
-  const HalfEdgeGraph graph = half_edge_graph(rings_with_chord_ends(polygon, chords), chords);
-  const std::vector<bool> separating = chords_separating(graph, face_cycles(graph), chords.size());
-  std::vector<Segment2> out;
-  for (std::size_t j = 0; j < chords.size(); ++j)
-    if (separating[j]) out.push_back(chords[j]);
-  return out;
-}
-
-std::vector<PolygonWithHoles> split_polygon(const PolygonWithHoles& polygon, const std::vector<Segment2>& chords) {
-  if (chords.empty()) return {polygon};
-  HalfEdgeGraph graph = half_edge_graph(rings_with_chord_ends(polygon, chords), chords);
-  std::vector<std::vector<int>> cycles = face_cycles(graph);
-  const std::vector<bool> separating = chords_separating(graph, cycles, chords.size());
-  if (std::find(separating.begin(), separating.end(), false) != separating.end()) {
-    // A lone chord between two rings would leave a part touching itself along it: drop it.
-    std::vector<Segment2> kept;
-    for (std::size_t j = 0; j < chords.size(); ++j)
-      if (separating[j]) kept.push_back(chords[j]);
-    if (kept.empty()) return {polygon};
-    graph = half_edge_graph(rings_with_chord_ends(polygon, kept), kept);
-    cycles = face_cycles(graph);
-  }
-  std::vector<Ring> outers, holes;
-  trace_faces(graph, cycles, outers, holes);
-  return parts_with_holes(outers, holes);
 }
 
 }  // namespace topocut

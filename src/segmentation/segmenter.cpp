@@ -13,6 +13,7 @@
 #include "topocut/core/value_ranges.h"
 #include "topocut/decomposition/ring_intersections.h"
 #include "topocut/map/simplify.h"
+#include "topocut/segmentation/polygon_split.h"
 
 namespace topocut {
 

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "topocut/core/error.h"
+#include "topocut/segmentation/polygon_split.h"
 
 namespace topocut {
 namespace {
@@ -191,46 +192,6 @@ TEST(WallLines, ShortOrCrookedWallsAndRoomsOfEvenWidthGiveNone) {
   DoorOptions bad = with_wall_lines();
   bad.max_wall_line = -1.0;
   EXPECT_THROW(find_wall_line_cuts(rectangle, kRes, bad, {}), Error);
-}
-
-TEST(SplitPolygon, ADoorSplitsTwoRoomsIntoPartsThatTileThePolygon) {
-  const PolygonWithHoles polygon = two_rooms();
-  const Segment2 door{{60, 20}, {60, 38}};
-  const std::vector<PolygonWithHoles> parts = split_polygon(polygon, {door});
-  ASSERT_EQ(parts.size(), 2u);
-  EXPECT_DOUBLE_EQ(total_area(parts), area(polygon));
-  for (const PolygonWithHoles& part : parts) {
-    EXPECT_GT(signed_area(part.outer), 0.0);
-    bool has_door = false;
-    for (std::size_t i = 0; i < part.outer.size(); ++i) {
-      const Point2& a = part.outer[i];
-      const Point2& b = part.outer[(i + 1) % part.outer.size()];
-      has_door = has_door || (a == door.a && b == door.b) || (a == door.b && b == door.a);
-    }
-    EXPECT_TRUE(has_door);
-  }
-  EXPECT_TRUE(split_polygon(polygon, {}) == std::vector<PolygonWithHoles>{polygon});
-}
-
-TEST(SplitPolygon, EndPointsOnEdgesBecomeVerticesAndHolesGoToTheirPart) {
-  // A 10 x 4 rectangle with a 1 x 1 hole at x in [7, 8], cut across at x = 5 (end points in the
-  // middle of the long edges).
-  const PolygonWithHoles polygon{{{0, 0}, {10, 0}, {10, 4}, {0, 4}}, {{{7, 1}, {7, 2}, {8, 2}, {8, 1}}}};
-  const std::vector<PolygonWithHoles> parts = split_polygon(polygon, {{{5, 0}, {5, 4}}});
-  ASSERT_EQ(parts.size(), 2u);
-  EXPECT_DOUBLE_EQ(total_area(parts), 39.0);
-  int with_hole = 0;
-  for (const PolygonWithHoles& part : parts) {
-    if (part.holes.empty()) {
-      EXPECT_DOUBLE_EQ(area(part), 20.0);
-    } else {
-      ++with_hole;
-      EXPECT_DOUBLE_EQ(area(part), 19.0);
-      EXPECT_LT(signed_area(part.holes[0]), 0.0);
-    }
-  }
-  EXPECT_EQ(with_hole, 1);
-  EXPECT_THROW(split_polygon(polygon, {{{5, 0.5}, {5, 4}}}), Error);
 }
 
 // A 10 m x 6 m floor: a corridor below (y < 40) and two rooms above, split by a partition (x in

@@ -88,17 +88,4 @@ std::vector<Segment2> find_island_cuts(const PolygonWithHoles& polygon, double r
 std::vector<Segment2> find_wall_line_cuts(const PolygonWithHoles& polygon, double resolution, const DoorOptions& options,
                                           const std::vector<Segment2>& doors);
 
-// Splits polygon (outer ring CCW, holes CW, rings pairwise disjoint) along chords: segments whose
-// end points lie on the rings (vertices or points on edges), that lie inside the polygon and do not
-// cross each other. Returns the parts (outer CCW, holes CW), which tile the polygon; every chord in
-// separating_chords is an edge of the two parts it separates, the others (between two rings, with
-// one part on both sides) are left out. Throws Error if a chord end point is not on the polygon's
-// boundary.
-// The chords (as for split_polygon) that have a different part of the polygon on either side, in
-// their order: every chord joining two points of one ring, and those between rings that other
-// chords complete (the doors on all sides of an island of wall).
-std::vector<Segment2> separating_chords(const PolygonWithHoles& polygon, const std::vector<Segment2>& chords);
-
-std::vector<PolygonWithHoles> split_polygon(const PolygonWithHoles& polygon, const std::vector<Segment2>& chords);
-
 }  // namespace topocut
