@@ -487,8 +487,12 @@ std::optional<Point2> wall_direction(const Ring& ring, int i, int step, double r
   const int n = static_cast<int>(ring.size());
   const Point2& v = ring[static_cast<std::size_t>(i)];
   auto at = [&](int k) -> const Point2& { return ring[static_cast<std::size_t>(((i - step * k) % n + n) % n)]; };
+  // Squared lengths well below reach² skip hypot (the walk passes many vertices of a noisy wall);
+  // the margin leaves every decision near reach to the exact test below.
+  const double surely_short = reach * reach * (1.0 - 1e-9);
   for (int k = 1; k < n; ++k) {
     const Point2 d = minus(v, at(k));
+    if (dot(d, d) < surely_short) continue;
     const double l = length(d);
     if (l < reach) continue;
     for (int j = 1; j < k; ++j)
