@@ -9,8 +9,8 @@ namespace topocut {
 // cost more than the work itself (office_a: cleaning 41 -> 15 ms, segment 43 -> 18 ms). The first
 // 256 MiB of the heap are also reserved (address space only) with transparent huge pages advised,
 // so that the first use of a buffer faults 2 MiB at a time (`topocut segment` of Benedetti.pgm:
-// 5450 -> 1450 page faults, 126 -> 73 ms CPU). Peak memory is unchanged; memory is returned when
-// the process ends. Call once at program start (the topocut command and the benchmarks do). No
+// 5450 -> 1450 page faults, 126 -> 73 ms CPU). Peak memory grows by at most the last huge page the
+// heap touches (1-2 MB); memory is returned when the process ends. Call once at program start (the topocut command and the benchmarks do). No
 // effect with other C libraries.
 void keep_freed_memory_for_reuse();
 
