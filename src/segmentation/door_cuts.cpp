@@ -486,13 +486,22 @@ std::vector<Segment2> narrowest_compatible(std::vector<Candidate> doors, double 
 std::optional<Point2> wall_direction(const Ring& ring, int i, int step, double reach, double tolerance) {
   const int n = static_cast<int>(ring.size());
   const Point2& v = ring[static_cast<std::size_t>(i)];
-  auto at = [&](int k) -> const Point2& { return ring[static_cast<std::size_t>(((i - step * k) % n + n) % n)]; };
-  for (int k = 1; k < n; ++k) {
-    const Point2 d = minus(v, at(k));
+  // The index one vertex further from v (step is +1 or -1), without a division per vertex.
+  auto further = [&](int index) {
+    index -= step;
+    return index < 0 ? index + n : (index >= n ? index - n : index);
+  };
+  // Squared lengths well below reach² skip hypot (the walk passes many vertices of a noisy wall);
+  // the margin leaves every decision near reach to the exact test below.
+  const double surely_short = reach * reach * (1.0 - 1e-9);
+  for (int k = 1, index_k = further(i); k < n; ++k, index_k = further(index_k)) {
+    const Point2& end = ring[static_cast<std::size_t>(index_k)];
+    const Point2 d = minus(v, end);
+    if (dot(d, d) < surely_short) continue;
     const double l = length(d);
     if (l < reach) continue;
-    for (int j = 1; j < k; ++j)
-      if (std::abs(cross(d, minus(at(j), at(k)))) / l > tolerance) return std::nullopt;
+    for (int j = 1, index_j = further(i); j < k; ++j, index_j = further(index_j))
+      if (std::abs(cross(d, minus(ring[static_cast<std::size_t>(index_j)], end))) / l > tolerance) return std::nullopt;
     return Point2{d.x / l, d.y / l};
   }
   return std::nullopt;
