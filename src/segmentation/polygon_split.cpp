@@ -214,16 +214,19 @@ std::vector<PolygonWithHoles> parts_with_holes(std::vector<Ring>& outers, std::v
   return parts;
 }
 
+std::vector<Segment2> only_separating(const std::vector<Segment2>& chords, const std::vector<bool>& separating) {
+  std::vector<Segment2> out;
+  for (std::size_t j = 0; j < chords.size(); ++j)
+    if (separating[j]) out.push_back(chords[j]);
+  return out;
+}
+
 }  // namespace
 
 std::vector<Segment2> separating_chords(const PolygonWithHoles& polygon, const std::vector<Segment2>& chords) {
   if (chords.empty()) return {};
   const HalfEdgeGraph graph = half_edge_graph(rings_with_chord_ends(polygon, chords), chords);
-  const std::vector<bool> separating = chords_separating(graph, face_cycles(graph), chords.size());
-  std::vector<Segment2> out;
-  for (std::size_t j = 0; j < chords.size(); ++j)
-    if (separating[j]) out.push_back(chords[j]);
-  return out;
+  return only_separating(chords, chords_separating(graph, face_cycles(graph), chords.size()));
 }
 
 std::vector<PolygonWithHoles> split_polygon(const PolygonWithHoles& polygon, const std::vector<Segment2>& chords) {
@@ -233,9 +236,7 @@ std::vector<PolygonWithHoles> split_polygon(const PolygonWithHoles& polygon, con
   const std::vector<bool> separating = chords_separating(graph, cycles, chords.size());
   if (std::find(separating.begin(), separating.end(), false) != separating.end()) {
     // A lone chord between two rings would leave a part touching itself along it: drop it.
-    std::vector<Segment2> kept;
-    for (std::size_t j = 0; j < chords.size(); ++j)
-      if (separating[j]) kept.push_back(chords[j]);
+    const std::vector<Segment2> kept = only_separating(chords, separating);
     if (kept.empty()) return {polygon};
     graph = half_edge_graph(rings_with_chord_ends(polygon, kept), kept);
     cycles = face_cycles(graph);
