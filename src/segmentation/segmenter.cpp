@@ -80,18 +80,18 @@ SegmentationInput segmentation_input(const OccupancyGrid& grid, const SegmentOpt
 
 namespace {
 
-// Door cuts, island cuts, then (with options.doors.wall_lines and wall_lines) wall lines split the
-// polygon; each part is decomposed on its own. Island cuts and wall lines are ordinary cuts: merging
-// may remove them.
-PieceSet decompose_polygon(const PolygonWithHoles& polygon, double resolution, const SegmentOptions& options, bool wall_lines) {
+// Door cuts, then (with extras) island cuts and wall lines, as far as options.doors asks for them,
+// split the polygon; each part is decomposed on its own. Island cuts and wall lines are ordinary
+// cuts: merging may remove them.
+PieceSet decompose_polygon(const PolygonWithHoles& polygon, double resolution, const SegmentOptions& options, bool extras) {
   PieceSet set;
   set.doors = find_door_cuts(polygon, resolution, options.doors);
   set.cuts = set.doors;
-  if (options.doors.enabled) {
+  if (options.doors.enabled && extras) {
     const std::vector<Segment2> islands = find_island_cuts(polygon, resolution, options.doors, set.doors);
     set.cuts.insert(set.cuts.end(), islands.begin(), islands.end());
   }
-  if (options.doors.enabled && wall_lines) {
+  if (options.doors.enabled && options.doors.wall_lines && extras) {
     set.wall_lines = find_wall_line_cuts(polygon, resolution, options.doors, set.cuts);
     set.cuts.insert(set.cuts.end(), set.wall_lines.begin(), set.wall_lines.end());
   }
@@ -129,11 +129,11 @@ PieceSet decompose_pieces(const FreeSpaceComponent& component, double resolution
     set.pieces.push_back(component.polygon);
     return set;
   }
-  // The simplified polygon first, with wall lines if asked for; a wall line grazing a corner may
-  // leave a degenerate part, and simplified rings may touch after all (a very thin wall or gap), so
-  // each failure falls back to the next try, the exact polygon with the doors alone last.
+  // The simplified polygon first, with island cuts and wall lines if asked for; a wall line grazing
+  // a corner may leave a degenerate part, and simplified rings may touch after all (a very thin wall
+  // or gap), so each failure falls back to the next try, the exact polygon with the doors alone last.
   auto attempt = [&](const PolygonWithHoles& polygon, bool last) -> std::optional<PieceSet> {
-    if (options.doors.wall_lines) {
+    if (options.doors.wall_lines || options.doors.island_cuts) {
       try {
         return decompose_polygon(polygon, resolution, options, true);
       } catch (const Error&) {
