@@ -246,16 +246,16 @@ struct DoorSearch {
   std::vector<Edge> edges;
   double reach = 0.0;  // widest door, cells
   double depth = 0.0;  // how far beside a cut the sides are measured, cells
-  // Per ring: may a door join it to another such ring (the outline, and islands of wall).
+  // Per ring, for the island search only: may a cut join it to another such ring (the outline, and
+  // islands of wall).
   std::vector<bool> joinable;
 };
 
-DoorSearch door_search(const PolygonWithHoles& polygon, double resolution, const DoorOptions& options) {
-  DoorSearch search{options, resolution, {&polygon.outer}, {}, options.max_width / resolution, options.width_depth / resolution, {true}};
-  for (const Ring& hole : polygon.holes) {
-    search.rings.push_back(&hole);
-    search.joinable.push_back(options.island_cuts && is_wall_island(hole, resolution, options));
-  }
+DoorSearch door_search(const PolygonWithHoles& polygon, double resolution, const DoorOptions& options,
+                       std::vector<bool> joinable) {
+  DoorSearch search{options, resolution, {&polygon.outer}, {}, options.max_width / resolution, options.width_depth / resolution,
+                    std::move(joinable)};
+  for (const Ring& hole : polygon.holes) search.rings.push_back(&hole);
   for (std::size_t r = 0; r < search.rings.size(); ++r) {
     const Ring& ring = *search.rings[r];
     for (std::size_t i = 0; i < ring.size(); ++i)
@@ -560,26 +560,39 @@ std::vector<Candidate> wall_line_cuts(const DoorSearch& search, const EdgeGrid& 
 }
 
 // Validates the options and the resolution, then returns find(search, grid) over the polygon's
-// edges, or nothing when the search is off or the polygon has no edge.
+// edges (joinable: DoorSearch::joinable), or nothing when the search is off or the polygon has no
+// edge.
 template <typename Find>
 std::vector<Segment2> search_cuts(const PolygonWithHoles& polygon, double resolution, const DoorOptions& options, bool on,
-                                  Find&& find) {
+                                  std::vector<bool> joinable, Find&& find) {
   validate(options);
   if (!std::isfinite(resolution) || resolution <= 0.0) throw Error("the map resolution must be a positive number");
   if (!on) return {};
-  const DoorSearch search = door_search(polygon, resolution, options);
+  const DoorSearch search = door_search(polygon, resolution, options, std::move(joinable));
   if (search.edges.empty()) return {};
   const EdgeGrid grid(search.edges, std::max(4.0, search.reach / 4.0));
   return find(search, grid);
+}
+
+// The doors as candidates that go first and stay: narrowest_compatible keeps later cuts off them.
+std::vector<Candidate> doors_first(const std::vector<Segment2>& doors) {
+  std::vector<Candidate> all;
+  for (const Segment2& d : doors) all.push_back({d, -1.0, 0});
+  return all;
+}
+
+// cuts without the doors (which went first only to keep the other cuts clear of them).
+std::vector<Segment2> without_doors(std::vector<Segment2> cuts, const std::vector<Segment2>& doors) {
+  std::erase_if(cuts, [&](const Segment2& s) { return std::find(doors.begin(), doors.end(), s) != doors.end(); });
+  return cuts;
 }
 
 }  // namespace
 
 std::vector<Segment2> find_wall_line_cuts(const PolygonWithHoles& polygon, double resolution, const DoorOptions& options,
                                           const std::vector<Segment2>& doors) {
-  return search_cuts(polygon, resolution, options, options.wall_lines, [&](const DoorSearch& search, const EdgeGrid& grid) {
-    std::vector<Candidate> all;
-    for (const Segment2& d : doors) all.push_back({d, -1.0, 0});  // the doors go first and stay
+  return search_cuts(polygon, resolution, options, options.wall_lines, {}, [&](const DoorSearch& search, const EdgeGrid& grid) {
+    std::vector<Candidate> all = doors_first(doors);
     for (const Candidate& c : wall_line_cuts(search, grid)) all.push_back(c);
     std::vector<Segment2> kept = narrowest_compatible(std::move(all), resolution);
     // Two lines closer than wall_line_spacing along their whole length (the two faces of one
@@ -593,15 +606,12 @@ std::vector<Segment2> find_wall_line_cuts(const PolygonWithHoles& polygon, doubl
       });
       if (!sliver) out.push_back(s);
     }
-    out.erase(std::remove_if(out.begin(), out.end(),
-                             [&](const Segment2& s) { return std::find(doors.begin(), doors.end(), s) != doors.end(); }),
-              out.end());
-    return out;
+    return without_doors(std::move(out), doors);
   });
 }
 
 std::vector<Segment2> find_door_cuts(const PolygonWithHoles& polygon, double resolution, const DoorOptions& options) {
-  return search_cuts(polygon, resolution, options, options.enabled, [&](const DoorSearch& search, const EdgeGrid& grid) {
+  return search_cuts(polygon, resolution, options, options.enabled, {}, [&](const DoorSearch& search, const EdgeGrid& grid) {
     std::vector<Candidate> doors;
     if (options.extend_walls) doors = wall_openings(search, grid);
     for (const Candidate& c : corner_cuts(search, grid, false)) {
@@ -613,21 +623,22 @@ std::vector<Segment2> find_door_cuts(const PolygonWithHoles& polygon, double res
 
 std::vector<Segment2> find_island_cuts(const PolygonWithHoles& polygon, double resolution, const DoorOptions& options,
                                        const std::vector<Segment2>& doors) {
-  validate(options);
-  // Most maps have no wall island: then there is nothing to search.
-  const bool any = std::any_of(polygon.holes.begin(), polygon.holes.end(),
-                               [&](const Ring& hole) { return is_wall_island(hole, resolution, options); });
-  return search_cuts(polygon, resolution, options, options.island_cuts && any, [&](const DoorSearch& search, const EdgeGrid& grid) {
-    std::vector<Candidate> all;
-    for (const Segment2& d : doors) all.push_back({d, -1.0, 0});  // the doors go first and stay
+  // The outline, then each hole; most maps have no wall island, and then there is nothing to search.
+  std::vector<bool> joinable{true};
+  bool any = false;
+  if (options.island_cuts) {
+    for (const Ring& hole : polygon.holes) {
+      joinable.push_back(is_wall_island(hole, resolution, options));
+      any = any || joinable.back();
+    }
+  }
+  return search_cuts(polygon, resolution, options, any, std::move(joinable), [&](const DoorSearch& search, const EdgeGrid& grid) {
+    std::vector<Candidate> all = doors_first(doors);
     for (const Candidate& c : corner_cuts(search, grid, true)) {
       if (has_wide_sides(search, grid, c)) all.push_back(c);
     }
-    std::vector<Segment2> cuts = narrowest_compatible(std::move(all), resolution);
-    // Only the cuts that, with the doors and each other, close a part off; the doors themselves go.
-    cuts = separating_chords(polygon, cuts);
-    std::erase_if(cuts, [&](const Segment2& s) { return std::find(doors.begin(), doors.end(), s) != doors.end(); });
-    return cuts;
+    // Only the cuts that, with the doors and each other, close a part off.
+    return without_doors(separating_chords(polygon, narrowest_compatible(std::move(all), resolution)), doors);
   });
 }
 
