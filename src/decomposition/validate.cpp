@@ -216,9 +216,6 @@ class EdgeGrid {
   int nx_ = 1, ny_ = 1;
 };
 
-// Checks that no two edges of any rings share a point other than the common vertex of two
-// consecutive edges of the same ring (and that such neighbours do not fold back onto each other).
-// Returns false when the grid is unsuitable (long edges) and the check must be done otherwise.
 // Whether two edges whose boxes overlap share a point they must not: any point, unless they are
 // consecutive edges of one ring, which may share their common vertex but not fold back onto each other.
 bool edges_meet(const std::vector<std::vector<CPoint>>& rings, const Edge& e, const Edge& f) {
@@ -240,6 +237,9 @@ bool edges_meet(const std::vector<std::vector<CPoint>>& rings, const Edge& e, co
   return CGAL::do_intersect(cgal::Segment(a, b), cgal::Segment(c, d));
 }
 
+// Checks that no two edges of any rings share a point other than the common vertex of two
+// consecutive edges of the same ring (and that such neighbours do not fold back onto each other).
+// Returns false when the grid is unsuitable (long edges) and the check must be done otherwise.
 bool check_no_intersections(const std::vector<std::vector<CPoint>>& rings, const EdgeGrid& grid, std::size_t budget) {
   bool failed = false;
   std::string message;
