@@ -974,17 +974,8 @@ std::vector<int> IncrementalSegmenter::State::retire_old_rooms(const Region& reg
       removed.push_back(id);
     }
   report.removed_rooms = static_cast<int>(removed.size());
-  if (found.held.empty()) {
-    for (int r = 0; r < window.height; ++r) {
-      int* l = result.labels.ptr<int>(window.y + r) + window.x;
-      const int* k = found.local.ptr<int>(r);
-      const unsigned char* in = found.raw.ptr<unsigned char>(r);
-      for (int c = 0; c < window.width; ++c)
-        if (in[c]) l[c] = found.id_of_piece[static_cast<std::size_t>(k[c])];
-    }
-    return removed;
-  }
-  // A room holding back a merge keeps its cells in the piece it was merged into.
+  // A room holding back a merge keeps its cells in the piece it was merged into (held_piece is 0,
+  // no piece, for every other room).
   std::vector<int> held_index(found.held_piece.size(), -1);
   for (std::size_t h = 0; h < found.held.size(); ++h) held_index[static_cast<std::size_t>(found.held[h].id)] = static_cast<int>(h);
   for (int r = 0; r < window.height; ++r) {
