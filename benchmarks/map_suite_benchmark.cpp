@@ -6,8 +6,9 @@
 // and how far the sketches' two annotators agree with each other.
 //
 // Usage: map_suite_benchmark [evaluate's segmenter options] [--details] [--floor-repetitions N]
-//                            [--threads N] [--shared DIR]
+//                            [--threads N] [--shared DIR] [--oracle-merge]
 //   --details              also print the per-image tables
+//   --oracle-merge         diagnostic: segments joined by the ground-truth room they overlap most
 //   --floor-repetitions N  measure each image's contour floor N times (default 5; 0: no times)
 //   --threads N            run the sets on N threads (default 1; times are only meaningful with 1)
 //   --shared DIR           the shared folder holding datasets/ (default: the source tree's ../shared)
@@ -17,9 +18,11 @@
 #include <filesystem>
 #include <functional>
 #include <iostream>
+#include <map>
 #include <mutex>
 #include <string>
 #include <thread>
+#include <tuple>
 #include <vector>
 
 #include "benchmark_machine.h"
@@ -49,12 +52,40 @@ struct Targets {
   double recall = 0.0, precision = 0.0;
 };
 
-void score_set(ScoredSet& set, const DatasetRunOptions& base, int floor_repetitions) {
+// A diagnostic segmenter: every segment of segmenter's result relabelled with the ground-truth room
+// it overlaps most, as a merging that knew people's rooms would join them. With --no-merge it tells
+// how well the pieces can score whatever the merging criterion: a ceiling set by where the cuts are.
+ImageSegmenter oracle_merged(ImageSegmenter segmenter) {
+  return [segmenter](const std::string& path) {
+    Segmentation s = segmenter(path);
+    const cv::Mat rooms = ground_truth_rooms(load_ground_truth(find_ground_truth(path)));
+    if (rooms.size() != s.labels.size()) throw Error(path + ": the ground truth and the map differ in size");
+    std::map<int, std::map<int, int>> overlap;  // segment -> room -> cells
+    for (int r = 0; r < rooms.rows; ++r)
+      for (int c = 0; c < rooms.cols; ++c)
+        if (const int label = s.labels.at<int>(r, c); label != 0) ++overlap[label][rooms.at<int>(r, c)];
+    double largest_room = 0.0;
+    cv::minMaxLoc(rooms, nullptr, &largest_room);
+    std::map<int, int> joined;  // segment -> its room, or a label of its own beyond every room
+    for (const auto& [label, by_room] : overlap) {
+      int best = 0, cells = 0;
+      for (const auto& [room, n] : by_room)
+        if (room != 0 && n > cells) std::tie(best, cells) = std::pair{room, n};
+      joined[label] = best != 0 ? best : static_cast<int>(largest_room) + label;
+    }
+    s.labels.forEach<int>([&](int& label, const int*) {
+      if (label != 0) label = joined[label];
+    });
+    return s;
+  };
+}
+
+void score_set(ScoredSet& set, const DatasetRunOptions& base, int floor_repetitions, bool oracle_merge) {
   DatasetRunOptions run = base;
   run.variants = set.variants;
   run.progress = {};
   const std::vector<DatasetMap> maps = discover_dataset(set.folder);
-  set.results = run_dataset(maps, run, batch_segmenter(run));
+  set.results = run_dataset(maps, run, oracle_merge ? oracle_merged(batch_segmenter(run)) : batch_segmenter(run));
   if (floor_repetitions <= 0) return;
   for (const ImageResult& r : set.results) {
     if (!r.ok) continue;
@@ -100,7 +131,7 @@ std::string ratio_text(const std::vector<double>& ratios) {
 }
 
 int run(std::vector<std::string> args) {
-  bool details = false;
+  bool details = false, oracle_merge = false;
   int floor_repetitions = 5, threads = 1;
   std::string shared = TOPOCUT_SHARED_DIR;
   std::vector<std::string> segmenter_args;
@@ -110,6 +141,8 @@ int run(std::vector<std::string> args) {
       std::cout << "Usage: map_suite_benchmark [options]\n\nSegmenter options (as topocut evaluate):\n"
                 << dataset_options_help()
                 << "  --details              also print the per-image tables\n"
+                   "  --oracle-merge         diagnostic: join segments by the ground-truth room they overlap\n"
+                   "                         most (with --no-merge: the best any merging of the pieces scores)\n"
                    "  --floor-repetitions N  contour floor repetitions per image (default 5; 0: no times)\n"
                    "  --threads N            sets on N threads (default 1; times need 1)\n"
                    "  --shared DIR           folder holding datasets/ (default " TOPOCUT_SHARED_DIR ")\n";
@@ -117,6 +150,8 @@ int run(std::vector<std::string> args) {
     }
     if (a == "--details") {
       details = true;
+    } else if (a == "--oracle-merge") {
+      oracle_merge = true;
     } else if ((a == "--floor-repetitions" || a == "--threads" || a == "--shared") && i + 1 < args.size()) {
       const std::string value = args[++i];
       if (a == "--shared") {
@@ -149,7 +184,7 @@ int run(std::vector<std::string> args) {
   folder_options.floor_repetitions = floor_repetitions;
 
   std::vector<std::function<void()>> jobs;
-  for (ScoredSet& set : scored) jobs.push_back([&, floor_repetitions] { score_set(set, arguments.run, floor_repetitions); });
+  for (ScoredSet& set : scored) jobs.push_back([&, floor_repetitions] { score_set(set, arguments.run, floor_repetitions, oracle_merge); });
   jobs.push_back([&] { real = run_map_files(discover_map_files(datasets + "/real_maps"), folder_options); });
   std::mutex mutex;
   std::size_t next = 0;
