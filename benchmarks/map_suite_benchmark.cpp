@@ -25,6 +25,8 @@
 #include <tuple>
 #include <vector>
 
+#include <opencv2/imgproc.hpp>
+
 #include "benchmark_machine.h"
 #include "topocut/core/allocator.h"
 #include "topocut/core/error.h"
@@ -52,30 +54,54 @@ struct Targets {
   double recall = 0.0, precision = 0.0;
 };
 
+// For every cell, the ground-truth room nearest to it (0 if there is no room).
+cv::Mat nearest_room(const cv::Mat& rooms) {
+  cv::Mat distance, nearest;
+  cv::distanceTransform(rooms == 0, distance, nearest, cv::DIST_L2, cv::DIST_MASK_5, cv::DIST_LABEL_PIXEL);
+  std::vector<int> room_of{0};  // DIST_LABEL_PIXEL numbers the room cells in raster order from 1
+  for (int r = 0; r < rooms.rows; ++r)
+    for (int c = 0; c < rooms.cols; ++c)
+      if (rooms.at<int>(r, c) != 0) room_of.push_back(rooms.at<int>(r, c));
+  cv::Mat room(rooms.size(), CV_32SC1, cv::Scalar(0));
+  if (room_of.size() == 1) return room;
+  for (int r = 0; r < rooms.rows; ++r)
+    for (int c = 0; c < rooms.cols; ++c) room.at<int>(r, c) = room_of[static_cast<std::size_t>(nearest.at<int>(r, c))];
+  return room;
+}
+
 // A diagnostic segmenter: every segment of segmenter's result relabelled with the ground-truth room
-// it overlaps most, as a merging that knew people's rooms would join them. With --no-merge it tells
-// how well the pieces can score whatever the merging criterion: a ceiling set by where the cuts are.
+// it overlaps most (a segment in no room: the room nearest to it), as a merging that knew people's
+// rooms would join them. With --no-merge it tells how well the pieces can score whatever the
+// merging criterion: a ceiling set by where the cuts are.
 ImageSegmenter oracle_merged(ImageSegmenter segmenter) {
   return [segmenter](const std::string& path) {
     Segmentation s = segmenter(path);
     const cv::Mat rooms = ground_truth_rooms(load_ground_truth(find_ground_truth(path)));
     if (rooms.size() != s.labels.size()) throw Error(path + ": the ground truth and the map differ in size");
-    std::map<int, std::map<int, int>> overlap;  // segment -> room -> cells
+    const cv::Mat nearest = nearest_room(rooms);
+    std::map<int, std::map<int, int>> overlap, near;  // segment -> room -> cells in it / nearest to it
+    for (int r = 0; r < rooms.rows; ++r) {
+      for (int c = 0; c < rooms.cols; ++c) {
+        const int label = s.labels.at<int>(r, c);
+        if (label == 0) continue;
+        ++overlap[label][rooms.at<int>(r, c)];
+        ++near[label][nearest.at<int>(r, c)];
+      }
+    }
+    auto most = [](const std::map<int, int>& cells_by_room) {
+      int best = 0, cells = 0;
+      for (const auto& [room, n] : cells_by_room)
+        if (room != 0 && n > cells) std::tie(best, cells) = std::pair{room, n};
+      return best;
+    };
+    std::map<int, int> joined;  // segment -> room
+    for (const auto& [label, by_room] : overlap) {
+      const int room = most(by_room);
+      joined[label] = room != 0 ? room : most(near[label]);
+    }
     for (int r = 0; r < rooms.rows; ++r)
       for (int c = 0; c < rooms.cols; ++c)
-        if (const int label = s.labels.at<int>(r, c); label != 0) ++overlap[label][rooms.at<int>(r, c)];
-    double largest_room = 0.0;
-    cv::minMaxLoc(rooms, nullptr, &largest_room);
-    std::map<int, int> joined;  // segment -> its room, or a label of its own beyond every room
-    for (const auto& [label, by_room] : overlap) {
-      int best = 0, cells = 0;
-      for (const auto& [room, n] : by_room)
-        if (room != 0 && n > cells) std::tie(best, cells) = std::pair{room, n};
-      joined[label] = best != 0 ? best : static_cast<int>(largest_room) + label;
-    }
-    s.labels.forEach<int>([&](int& label, const int*) {
-      if (label != 0) label = joined[label];
-    });
+        if (int& label = s.labels.at<int>(r, c); label != 0) label = joined.at(label);
     return s;
   };
 }
