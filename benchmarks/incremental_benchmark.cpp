@@ -7,6 +7,7 @@
 //
 //   incremental_benchmark [--dataset DIR] [--variant V] [--map NAME ...] [--csv FILE]
 //                         [--batch-every N] [--no-batch] [--split-after N] [--merge-after N]
+//                         [--hysteresis H]
 //
 // Times are process CPU time (the machine may be shared), single-threaded OpenCV; the wall-clock
 // figures are printed beside them.
@@ -55,6 +56,7 @@ int run(int argc, char** argv) {
   int batch_every = 1;
   bool compare = true;
   int split_after = 0, merge_after = 0;  // 0: the segmenter's defaults
+  double hysteresis = -1.0;              // negative: the segmenter's default
   std::vector<std::string> rest;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
@@ -66,6 +68,8 @@ int run(int argc, char** argv) {
       split_after = std::max(1, std::stoi(argv[++i]));
     } else if (arg == "--merge-after" && i + 1 < argc) {
       merge_after = std::max(1, std::stoi(argv[++i]));
+    } else if (arg == "--hysteresis" && i + 1 < argc) {
+      hysteresis = std::clamp(std::stod(argv[++i]), 0.0, 0.9);
     } else {
       rest.push_back(arg);
     }
@@ -82,6 +86,8 @@ int run(int argc, char** argv) {
   options.exploration.batch_every = batch_every;
   if (split_after > 0) options.exploration.incremental.split_after = split_after;
   if (merge_after > 0) options.exploration.incremental.merge_after = merge_after;
+  // Only the incremental segmenter gives merging a prior; batch ignores the hysteresis.
+  if (hysteresis >= 0.0) options.run.segment.merge.hysteresis = hysteresis;
   const std::vector<DatasetMap> maps = select_maps(discover_dataset(arguments.dataset), arguments.run.maps);
 
   std::cout << "# Incremental segmentation during exploration\n\n"
