@@ -7,6 +7,7 @@
 //
 //   incremental_benchmark [--dataset DIR] [--variant V] [--map NAME ...] [--csv FILE]
 //                         [--batch-every N] [--no-batch] [--split-after N] [--merge-after N]
+//                         [--partial-area M2] [--partial-margin M]
 //
 // Times are process CPU time (the machine may be shared), single-threaded OpenCV; the wall-clock
 // figures are printed beside them.
@@ -55,6 +56,7 @@ int run(int argc, char** argv) {
   int batch_every = 1;
   bool compare = true;
   int split_after = 0, merge_after = 0;  // 0: the segmenter's defaults
+  double partial_area = -1.0, partial_margin = -1.0;
   std::vector<std::string> rest;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
@@ -66,6 +68,10 @@ int run(int argc, char** argv) {
       split_after = std::max(1, std::stoi(argv[++i]));
     } else if (arg == "--merge-after" && i + 1 < argc) {
       merge_after = std::max(1, std::stoi(argv[++i]));
+    } else if (arg == "--partial-area" && i + 1 < argc) {
+      partial_area = std::max(0.0, std::stod(argv[++i]));
+    } else if (arg == "--partial-margin" && i + 1 < argc) {
+      partial_margin = std::stod(argv[++i]);
     } else {
       rest.push_back(arg);
     }
@@ -82,6 +88,8 @@ int run(int argc, char** argv) {
   options.exploration.batch_every = batch_every;
   if (split_after > 0) options.exploration.incremental.split_after = split_after;
   if (merge_after > 0) options.exploration.incremental.merge_after = merge_after;
+  if (partial_area >= 0.0) options.exploration.incremental.partial_area = partial_area;
+  if (partial_margin > 0.0) options.exploration.incremental.partial_margin = partial_margin;
   const std::vector<DatasetMap> maps = select_maps(discover_dataset(arguments.dataset), arguments.run.maps);
 
   std::cout << "# Incremental segmentation during exploration\n\n"

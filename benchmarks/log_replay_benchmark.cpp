@@ -8,9 +8,9 @@
 //
 //   log_replay_benchmark [--batch-every N] [--settle] [--split-after N] [--merge-after N]
 //                        [--door-neighbours on|off] [--cut-neighbours on|off] [--absorb-fraction F]
-//                        [LOG_NAME ...]   (default: intel aces csail fhw)
+//                        [--partial-area M2] [--partial-margin M] [LOG_NAME ...]   (default: intel aces csail fhw)
 //
-// The last five override the preset (wall_map_incremental_options()) to measure a variant.
+// The options after --settle override the preset (wall_map_incremental_options()) to measure a variant.
 //
 // Times are process CPU time, single-threaded OpenCV; wall clock beside.
 #include <algorithm>
@@ -49,6 +49,8 @@ struct ReplayVariant {
   int door_neighbours = -1;
   int cut_neighbours = -1;
   double absorb_fraction = -1.0;
+  double partial_area = -1.0;
+  double partial_margin = -1.0;
 };
 
 LogFigures replay_file(const std::string& name, const std::string& path, int batch_every, bool settle,
@@ -60,6 +62,8 @@ LogFigures replay_file(const std::string& name, const std::string& path, int bat
   if (variant.door_neighbours >= 0) options.incremental.neighbours_across_doors = variant.door_neighbours != 0;
   if (variant.cut_neighbours >= 0) options.incremental.neighbours_across_cuts = variant.cut_neighbours != 0;
   if (variant.absorb_fraction >= 0.0) options.incremental.absorb_fraction = variant.absorb_fraction;
+  if (variant.partial_area >= 0.0) options.incremental.partial_area = variant.partial_area;
+  if (variant.partial_margin > 0.0) options.incremental.partial_margin = variant.partial_margin;
   options.compare_batch = true;
   options.batch_every = batch_every;
   const std::vector<PosedScan> scans = posed_scans(read_carmen_log(path));
@@ -97,6 +101,8 @@ int main(int argc, char** argv) {
     else if (a == "--door-neighbours" && i + 1 < argc) variant.door_neighbours = std::string(argv[++i]) == "on";
     else if (a == "--cut-neighbours" && i + 1 < argc) variant.cut_neighbours = std::string(argv[++i]) == "on";
     else if (a == "--absorb-fraction" && i + 1 < argc) variant.absorb_fraction = std::max(0.0, std::atof(argv[++i]));
+    else if (a == "--partial-area" && i + 1 < argc) variant.partial_area = std::max(0.0, std::atof(argv[++i]));
+    else if (a == "--partial-margin" && i + 1 < argc) variant.partial_margin = std::atof(argv[++i]);
     else names.push_back(a);
   }
   if (names.empty()) names = {"intel", "aces", "csail", "fhw"};

@@ -165,11 +165,16 @@ struct Blob {
   bool absorb = false;
 };
 
+// Region::member values: how a room of the region takes part in its decomposition.
+constexpr char kWhole = 1;    // every cell
+constexpr char kPartial = 2;  // only its cells in Region::near_change (a room larger than partial_area)
+
 // The old rooms and pending cells one update decomposes again.
 struct Region {
   std::vector<int> ids;        // old rooms: those the change touched first, then their neighbours
-  std::vector<char> member;    // by room id: 1 if in ids
-  cv::Rect window;             // contains the pending cells and every cell of the rooms in ids
+  std::vector<char> member;    // by room id: kWhole or kPartial if in ids, else 0
+  cv::Rect window;             // contains the pending cells and every cell of the region
+  cv::Rect near_change;        // the changed box grown by partial_margin (empty: no partial rooms)
   bool whole_map = false;
 };
 
@@ -198,6 +203,19 @@ struct RegionPieces {
     int min_c = INT_MAX, max_c = -1, min_r = INT_MAX, max_r = -1;
   };
   std::vector<HeldCells> held;
+  std::vector<int> kept_by;      // by piece index + 1: the partial room whose rest it touches, 0 none
+  struct Remainder {             // a partial room's cells outside near_change, which keep its id
+    int id = 0;
+    long long cells = 0;
+    double sum_c = 0.0, sum_r = 0.0;
+  };
+  std::vector<Remainder> remainders;
+
+  const Remainder* remainder(int id) const {
+    for (const Remainder& r : remainders)
+      if (r.id == id) return &r;
+    return nullptr;
+  }
 };
 
 // Window grid coordinates (pixel centres at integers, y up) against world metres.
@@ -310,7 +328,12 @@ struct IncrementalSegmenter::State {
   std::vector<int> apply_changes(const ChangeMask& mask, const cv::Mat& blob_of, const std::vector<Blob>& blobs);
   void redecompose(Region region, std::vector<int>& touched_rooms);
   void add_neighbour_rooms(Region& region) const;
+  void frame_region(Region& region) const;
+  void decompose_whole(Region& region) const;
   RegionPieces decompose_region(Region& region);
+  void label_pieces(const Region& region, RegionPieces& found) const;
+  bool keep_partial_remainders(const Region& region, RegionPieces& found) const;
+  void trace_partial_rooms(const RegionPieces& found);
   void report_region(const Region& region, int region_cells);
   void match_ids(const Region& region, RegionPieces& found);
   void hold_back_splits(const Region& region, RegionPieces& found);
@@ -699,17 +722,16 @@ std::vector<int> IncrementalSegmenter::State::apply_changes(const ChangeMask& ma
 // result.rooms and passages.
 void IncrementalSegmenter::State::redecompose(Region region, std::vector<int>& touched_rooms) {
   add_neighbour_rooms(region);
-  RegionPieces found = decompose_region(region);
+  frame_region(region);
+  RegionPieces found;
+  for (;;) {
+    found = decompose_region(region);
+    label_pieces(region, found);
+    if (keep_partial_remainders(region, found)) break;
+    decompose_whole(region);  // the window would leave a partial room in parts
+  }
   report_region(region, found.region_cells);
   const cv::Rect& window = region.window;
-
-  found.pieces = static_cast<int>(found.set.pieces.size());
-  if (found.pieces > 0) {
-    found.local = rasterize_polygons(found.set.pieces, window.size());
-    fill_free_space_labels(found.local, found.raw);
-  } else {
-    found.local = cv::Mat::zeros(window.size(), CV_32SC1);
-  }
   found.tally = tally_pieces(result.labels, found, region);
   match_ids(region, found);
 
@@ -719,6 +741,7 @@ void IncrementalSegmenter::State::redecompose(Region region, std::vector<int>& t
   for (const int id : removed) refresh_room(id, nullptr);
   adopt_pieces(found, frame);
   adopt_held_rooms(found, frame);
+  trace_partial_rooms(found);
   // Rooms absorbed into this decomposition are refreshed here; the caller must not revive them.
   touched_rooms.erase(std::remove_if(touched_rooms.begin(), touched_rooms.end(),
                                      [&](int id) { return region.member[static_cast<std::size_t>(id)] != 0; }),
@@ -753,7 +776,7 @@ void IncrementalSegmenter::State::add_neighbour_rooms(Region& region) const {
     if (std::find(region_ids.begin() + static_cast<std::ptrdiff_t>(core), region_ids.end(), other) == region_ids.end())
       region_ids.push_back(other);
   }
-  for (std::size_t k = core; k < region_ids.size(); ++k) in_region[static_cast<std::size_t>(region_ids[k])] = 1;
+  for (std::size_t k = core; k < region_ids.size(); ++k) in_region[static_cast<std::size_t>(region_ids[k])] = kWhole;
   // A room holding back a merge and its partner are decomposed together, so that each of their
   // decompositions votes on the merge.
   for (std::size_t id = 1; id < rooms.size(); ++id) {
@@ -762,10 +785,40 @@ void IncrementalSegmenter::State::add_neighbour_rooms(Region& region) const {
         in_region[id] == in_region[static_cast<std::size_t>(partner)])
       continue;
     const int missing = in_region[id] ? partner : static_cast<int>(id);
-    in_region[static_cast<std::size_t>(missing)] = 1;
+    in_region[static_cast<std::size_t>(missing)] = kWhole;
     region_ids.push_back(missing);
   }
-  for (const int id : region_ids) region.window = unite(region.window, rooms[static_cast<std::size_t>(id)].box);
+}
+
+// The region's window: the change and every room of the region, except that a room larger than
+// partial_area that reaches beyond partial_margin of the change takes part only with its cells
+// near the change (Region::near_change), so that a long corridor costs what the change costs.
+void IncrementalSegmenter::State::frame_region(Region& region) const {
+  const cv::Rect change = region.window;
+  if (options.partial_area > 0.0 && !region.whole_map && !change.empty()) {
+    const int margin = static_cast<int>(std::ceil(options.partial_margin / resolution));
+    region.near_change = grown(change, margin, cells.size());
+    const double cell_area = resolution * resolution;
+    for (const int id : region.ids) {
+      const RoomState& room = rooms[static_cast<std::size_t>(id)];
+      if (static_cast<double>(room.cells) * cell_area > options.partial_area && (room.box & region.near_change) != room.box)
+        region.member[static_cast<std::size_t>(id)] = kPartial;
+    }
+  }
+  for (const int id : region.ids) {
+    const cv::Rect& box = rooms[static_cast<std::size_t>(id)].box;
+    region.window = unite(region.window, region.member[static_cast<std::size_t>(id)] == kPartial ? box & region.near_change : box);
+  }
+}
+
+// Every partial room of the region takes part with all its cells from now on.
+void IncrementalSegmenter::State::decompose_whole(Region& region) const {
+  for (const int id : region.ids) {
+    char& member = region.member[static_cast<std::size_t>(id)];
+    if (member != kPartial) continue;
+    member = kWhole;
+    region.window = unite(region.window, rooms[static_cast<std::size_t>(id)].box);
+  }
 }
 
 // The region's free cells (raw) and their decomposition into pieces, in window grid coordinates.
@@ -783,18 +836,23 @@ RegionPieces IncrementalSegmenter::State::decompose_region(Region& region) {
     binarized.create(window.size(), CV_8UC1);
     found.region_cells = 0;
     int binarized_cells = 0;
-    // member[id + 1]: 255 if cells labelled id are in the region (kPending = -1 always is).
+    // member[id + 1]: 255 if cells labelled id are in the region (kPending = -1 always is), 128 if
+    // only those near the change are (a partial room).
     std::vector<unsigned char> member(rooms.size() + 1, 0);
     member[0] = 255;
-    for (std::size_t id = 1; id < rooms.size(); ++id) member[id + 1] = in_region[id] ? 255 : 0;
+    for (std::size_t id = 1; id < rooms.size(); ++id)
+      member[id + 1] = in_region[id] == kWhole ? 255 : in_region[id] == kPartial ? 128 : 0;
     const unsigned char* lut = member.data() + 1;
+    const cv::Rect& near = region.near_change;
     for (int r = 0; r < window.height; ++r) {
       const int* l = labels.ptr<int>(window.y + r) + window.x;
       const unsigned char* b = bin.ptr<unsigned char>(window.y + r) + window.x;
       unsigned char* out_raw = raw.ptr<unsigned char>(r);
       unsigned char* out_bin = binarized.ptr<unsigned char>(r);
+      const bool near_row = window.y + r >= near.y && window.y + r < near.y + near.height;
       for (int c = 0; c < window.width; ++c) {
-        const unsigned char in = lut[l[c]];  // labels are >= kPending
+        unsigned char in = lut[l[c]];  // labels are >= kPending
+        if (in == 128) in = near_row && window.x + c >= near.x && window.x + c < near.x + near.width ? 255 : 0;
         out_raw[c] = in;
         out_bin[c] = in & b[c];
         found.region_cells += in & 1;
@@ -812,9 +870,10 @@ RegionPieces IncrementalSegmenter::State::decompose_region(Region& region) {
     if (region.whole_map || attempt == 1)
       throw Error("no free space is left after inflating obstacles by the robot radius and filtering");
     region.whole_map = true;
+    decompose_whole(region);
     for (std::size_t id = 1; id < rooms.size(); ++id)
       if (rooms[id].alive && !in_region[id]) {
-        in_region[id] = 1;
+        in_region[id] = kWhole;
         region.ids.push_back(static_cast<int>(id));
         window = unite(window, rooms[id].box);
       }
@@ -824,13 +883,90 @@ RegionPieces IncrementalSegmenter::State::decompose_region(Region& region) {
   return found;
 }
 
+// Every free cell of the region gets its piece (index + 1 in found.local).
+void IncrementalSegmenter::State::label_pieces(const Region& region, RegionPieces& found) const {
+  found.pieces = static_cast<int>(found.set.pieces.size());
+  if (found.pieces > 0) {
+    found.local = rasterize_polygons(found.set.pieces, region.window.size());
+    fill_free_space_labels(found.local, found.raw);
+  } else {
+    found.local = cv::Mat::zeros(region.window.size(), CV_32SC1);
+  }
+}
+
+// A partial room keeps its id on its cells outside near_change and on every piece touching them
+// across the window's edge (found.kept_by), and found.remainders tallies those cells. Returns false
+// when that cannot be done: a piece touches two partial rooms, a partial room touches no piece, or
+// its cells would no longer be one 4-connected piece (a corridor crossing the window and cut in it).
+bool IncrementalSegmenter::State::keep_partial_remainders(const Region& region, RegionPieces& found) const {
+  found.kept_by.assign(static_cast<std::size_t>(found.pieces) + 1, 0);
+  found.remainders.clear();
+  const cv::Rect& near = region.near_change;
+  const cv::Rect& window = region.window;
+  const cv::Mat& labels = result.labels;
+  bool ok = true;
+  // A cell of a partial room outside near next to one of its cells inside: that one's piece joins it.
+  auto touch = [&](int out_r, int out_c, int in_r, int in_c) {
+    if (out_r < 0 || out_c < 0 || out_r >= labels.rows || out_c >= labels.cols) return;
+    const int id = labels.at<int>(out_r, out_c);
+    if (id <= 0 || region.member[static_cast<std::size_t>(id)] != kPartial || labels.at<int>(in_r, in_c) != id) return;
+    const int piece = found.local.at<int>(in_r - window.y, in_c - window.x);
+    int& kept = found.kept_by[static_cast<std::size_t>(std::max(piece, 0))];
+    ok = ok && piece > 0 && (kept == 0 || kept == id);
+    kept = id;
+  };
+  for (int c = near.x; c < near.x + near.width; ++c) {
+    touch(near.y - 1, c, near.y, c);
+    touch(near.y + near.height, c, near.y + near.height - 1, c);
+  }
+  for (int r = near.y; r < near.y + near.height; ++r) {
+    touch(r, near.x - 1, r, near.x);
+    touch(r, near.x + near.width, r, near.x + near.width - 1);
+  }
+  for (std::size_t id = 1; id < rooms.size() && ok; ++id) {
+    if (region.member[id] != kPartial) continue;
+    // The room as it would be: its cells outside near and the pieces kept by it.
+    const cv::Rect box = rooms[id].box | window;
+    cv::Mat mask = cv::Mat::zeros(box.size(), CV_8UC1);
+    const cv::Mat before = labels(box) == static_cast<int>(id);
+    RegionPieces::Remainder rest;
+    rest.id = static_cast<int>(id);
+    for (int r = 0; r < box.height; ++r) {
+      const int gr = box.y + r;
+      const int* l = labels.ptr<int>(gr) + box.x;
+      unsigned char* m = mask.ptr<unsigned char>(r);
+      for (int c = 0; c < box.width; ++c) {
+        const int gc = box.x + c;
+        const bool in_window = window.contains(cv::Point(gc, gr));
+        const int piece = in_window && found.raw.at<unsigned char>(gr - window.y, gc - window.x)
+                              ? found.local.at<int>(gr - window.y, gc - window.x) : 0;
+        if (piece > 0) {
+          m[c] = found.kept_by[static_cast<std::size_t>(piece)] == rest.id ? 255 : 0;
+        } else if (l[c] == rest.id) {  // outside near: a partial room's cells inside it are all in the region
+          m[c] = 255;
+          ++rest.cells;
+          rest.sum_c += gc;
+          rest.sum_r += gr;
+        }
+      }
+    }
+    cv::Mat components;
+    const int parts_before = cv::connectedComponents(before, components, 4, CV_32S);
+    const int parts_after = cv::connectedComponents(mask, components, 4, CV_32S);
+    ok = ok && std::count(found.kept_by.begin(), found.kept_by.end(), rest.id) > 0 && parts_after <= parts_before;
+    found.remainders.push_back(rest);
+  }
+  return ok;
+}
+
 // The report names the region as finally decomposed, and calls it batch when it took every room.
 void IncrementalSegmenter::State::report_region(const Region& region, int region_cells) {
   report.region = region.window;
   report.region_cells = region_cells;
   report.redecomposed_rooms = static_cast<int>(region.ids.size());
+  report.partial_rooms = static_cast<int>(std::count(region.member.begin(), region.member.end(), kPartial));
   bool every_room = !region.ids.empty();
-  for (std::size_t id = 1; id < rooms.size() && every_room; ++id) every_room = !rooms[id].alive || region.member[id];
+  for (std::size_t id = 1; id < rooms.size() && every_room; ++id) every_room = !rooms[id].alive || region.member[id] == kWhole;
   if (!region.whole_map && every_room) {
     report.kind = IncrementalUpdateReport::Kind::kBatch;
     report.reason = "the change touched every room";
@@ -862,6 +998,13 @@ void IncrementalSegmenter::State::match_ids(const Region& region, RegionPieces& 
   std::vector<char>& reused = found.reused;
   id_of_piece.assign(static_cast<std::size_t>(pieces) + 1, 0);
   reused.assign(rooms.size(), 0);
+  // Pieces touching a partial room's rest are that room, whatever they overlap.
+  for (int p = 1; p <= pieces; ++p) {
+    const int kept = found.kept_by[static_cast<std::size_t>(p)];
+    if (kept == 0) continue;
+    id_of_piece[static_cast<std::size_t>(p)] = kept;
+    reused[static_cast<std::size_t>(kept)] = 1;
+  }
   for (const Candidate& candidate : candidates) {
     if (id_of_piece[static_cast<std::size_t>(candidate.piece)] != 0 || reused[static_cast<std::size_t>(candidate.old)]) continue;
     id_of_piece[static_cast<std::size_t>(candidate.piece)] = candidate.old;
@@ -1016,11 +1159,14 @@ void IncrementalSegmenter::State::adopt_pieces(const RegionPieces& found, const 
     RoomState& room = rooms[id];
     const cv::Rect box(t.min_c[piece], t.min_r[piece], t.max_c[piece] - t.min_c[piece] + 1, t.max_r[piece] - t.min_r[piece] + 1);
     if (largest[id] == 0) {
+      // A partial room starts from its cells outside the window and keeps its box.
+      const RegionPieces::Remainder* rest = found.remainder(static_cast<int>(id));
       room.alive = true;
-      room.cells = 0;
-      room.sum_c = room.sum_r = 0.0;
+      room.cells = rest != nullptr ? rest->cells : 0;
+      room.sum_c = rest != nullptr ? rest->sum_c : 0.0;
+      room.sum_r = rest != nullptr ? rest->sum_r : 0.0;
       room.absorbed = 0;
-      room.box = box;
+      room.box = rest != nullptr ? room.box | box : box;
     }
     room.cells += t.cells[piece];
     room.sum_c += static_cast<double>(t.sum_c[piece]);
@@ -1029,7 +1175,7 @@ void IncrementalSegmenter::State::adopt_pieces(const RegionPieces& found, const 
     if (largest[id] == 0 || t.cells[piece] > t.cells[static_cast<std::size_t>(largest[id])]) largest[id] = p;
   }
   for (std::size_t id = 1; id < rooms.size(); ++id) {
-    if (largest[id] == 0) continue;
+    if (largest[id] == 0 || found.remainder(static_cast<int>(id)) != nullptr) continue;  // traced later
     const PolygonWithHoles world = to_world_polygon(found.set.pieces[static_cast<std::size_t>(largest[id]) - 1], frame);
     refresh_room(static_cast<int>(id), &world);
   }
@@ -1061,7 +1207,7 @@ void IncrementalSegmenter::State::adopt_held_rooms(const RegionPieces& found, co
       if (found.id_of_piece[static_cast<std::size_t>(p)] == partner_id &&
           (partner_piece == 0 || found.tally.cells[static_cast<std::size_t>(p)] > found.tally.cells[static_cast<std::size_t>(partner_piece)]))
         partner_piece = p;
-    if (partner.cells <= 0 || partner_piece != piece) continue;
+    if (partner.cells <= 0 || partner_piece != piece || found.remainder(partner_id) != nullptr) continue;
     const cv::Rect& window = frame.window;
     cv::Mat own(window.size(), CV_8UC1);
     for (int r = 0; r < window.height; ++r) {
@@ -1080,6 +1226,23 @@ void IncrementalSegmenter::State::adopt_held_rooms(const RegionPieces& found, co
   }
 }
 
+// A partial room's polygon is traced from its cells (the rest and the pieces it kept), the largest
+// part if it has several (a held merge's room inside it makes a hole, not a part).
+void IncrementalSegmenter::State::trace_partial_rooms(const RegionPieces& found) {
+  for (const RegionPieces::Remainder& rest : found.remainders) {
+    const cv::Rect box = rooms[static_cast<std::size_t>(rest.id)].box;
+    cv::Mat own = result.labels(box) == rest.id;
+    const std::vector<FreeSpaceComponent> parts = trace_components(remove_diagonal_pinches(own));
+    const auto largest = std::max_element(parts.begin(), parts.end(), [](const FreeSpaceComponent& a, const FreeSpaceComponent& b) {
+      return a.pixel_count < b.pixel_count;
+    });
+    if (largest == parts.end()) continue;
+    const WindowFrame frame{origin, resolution, box, static_cast<double>(result.labels.rows - box.height - box.y)};
+    const PolygonWithHoles world = to_world_polygon(largest->polygon, frame);
+    refresh_room(rest.id, &world);
+  }
+}
+
 // Old passages outside the region stay as they were; one crossing its border keeps its outside
 // room and finds its inside one again (dropped if none); those inside it are gone.
 void IncrementalSegmenter::State::keep_border_passages(const Region& region, const RegionPieces& found,
@@ -1088,10 +1251,19 @@ void IncrementalSegmenter::State::keep_border_passages(const Region& region, con
   for (int p = 1; p <= found.pieces; ++p)
     if (found.tally.cells[static_cast<std::size_t>(p)] > 0)
       region_room[static_cast<std::size_t>(found.id_of_piece[static_cast<std::size_t>(p)])] = 1;
+  // A partial room's cut is in the region when its middle lies near the change.
+  const int rows = result.labels.rows;
+  auto in_region = [&](int id, const Segment2& cut) {
+    const char member = region.member[static_cast<std::size_t>(id)];
+    if (member != kPartial) return member != 0;
+    const double x = (0.5 * (cut.a.x + cut.b.x) - origin.x) / resolution;
+    const double y = (0.5 * (cut.a.y + cut.b.y) - origin.y) / resolution;
+    return region.near_change.contains(cv::Point(static_cast<int>(std::floor(x)), rows - 1 - static_cast<int>(std::floor(y))));
+  };
   for (std::size_t k = 0; k < result.passages.size(); ++k) {
     const Passage& passage = result.passages[k];
-    const bool a_in = region.member[static_cast<std::size_t>(passage.room_a)] != 0;
-    const bool b_in = region.member[static_cast<std::size_t>(passage.room_b)] != 0;
+    const bool a_in = in_region(passage.room_a, passage.cut);
+    const bool b_in = in_region(passage.room_b, passage.cut);
     if (!a_in && !b_in) {
       out.passages.push_back(passage);
       out.doors.push_back(passage_door[k]);
@@ -1170,6 +1342,10 @@ IncrementalSegmenter::IncrementalSegmenter(const IncrementalOptions& options) : 
     throw Error("the absorb fraction must be a finite, non-negative number");
   if (options.split_after < 1) throw Error("split_after must be at least 1 decomposition");
   if (options.merge_after < 1) throw Error("merge_after must be at least 1 decomposition");
+  if (!std::isfinite(options.partial_area) || options.partial_area < 0.0)
+    throw Error("the partial area must be a finite, non-negative number of square metres");
+  if (!std::isfinite(options.partial_margin) || options.partial_margin <= 0.0)
+    throw Error("the partial margin must be a positive number of metres");
   if (!std::isfinite(options.speck_size) || options.speck_size < 0.0)
     throw Error("the speck size must be a finite, non-negative number of metres");
   if (!std::isfinite(options.batch_fraction) || options.batch_fraction <= 0.0)
