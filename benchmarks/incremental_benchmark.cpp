@@ -7,7 +7,7 @@
 //
 //   incremental_benchmark [--dataset DIR] [--variant V] [--map NAME ...] [--csv FILE]
 //                         [--batch-every N] [--no-batch] [--split-after N] [--merge-after N]
-//                         [--partial-area M2] [--partial-margin M]
+//                         [--partial-area M2] [--partial-margin M] [--isolated-nearest on|off]
 //
 // Times are process CPU time (the machine may be shared), single-threaded OpenCV; the wall-clock
 // figures are printed beside them.
@@ -57,6 +57,7 @@ int run(int argc, char** argv) {
   bool compare = true;
   int split_after = 0, merge_after = 0;  // 0: the segmenter's defaults
   double partial_area = -1.0, partial_margin = -1.0;
+  int isolated_nearest = -1;
   std::vector<std::string> rest;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
@@ -72,6 +73,8 @@ int run(int argc, char** argv) {
       partial_area = std::max(0.0, std::stod(argv[++i]));
     } else if (arg == "--partial-margin" && i + 1 < argc) {
       partial_margin = std::stod(argv[++i]);
+    } else if (arg == "--isolated-nearest" && i + 1 < argc) {
+      isolated_nearest = std::string(argv[++i]) == "on";
     } else {
       rest.push_back(arg);
     }
@@ -90,6 +93,7 @@ int run(int argc, char** argv) {
   if (merge_after > 0) options.exploration.incremental.merge_after = merge_after;
   if (partial_area >= 0.0) options.exploration.incremental.partial_area = partial_area;
   if (partial_margin > 0.0) options.exploration.incremental.partial_margin = partial_margin;
+  if (isolated_nearest >= 0) options.exploration.incremental.isolated_to_nearest_room = isolated_nearest != 0;
   const std::vector<DatasetMap> maps = select_maps(discover_dataset(arguments.dataset), arguments.run.maps);
 
   std::cout << "# Incremental segmentation during exploration\n\n"

@@ -327,6 +327,7 @@ struct IncrementalSegmenter::State {
   bool is_speck(const Blob& blob) const;
   std::vector<int> apply_changes(const ChangeMask& mask, const cv::Mat& blob_of, const std::vector<Blob>& blobs);
   void redecompose(Region region, std::vector<int>& touched_rooms);
+  bool label_isolated_cells(const Region& region, std::vector<int>& touched_rooms);
   void add_neighbour_rooms(Region& region) const;
   void frame_region(Region& region) const;
   void decompose_whole(Region& region) const;
@@ -721,6 +722,9 @@ std::vector<int> IncrementalSegmenter::State::apply_changes(const ChangeMask& ma
 // the batch stages, and gives the pieces ids (match_ids). Updates labels, room states,
 // result.rooms and passages.
 void IncrementalSegmenter::State::redecompose(Region region, std::vector<int>& touched_rooms) {
+  if (options.isolated_to_nearest_room && region.ids.empty() && !region.whole_map &&
+      label_isolated_cells(region, touched_rooms))
+    return;
   add_neighbour_rooms(region);
   frame_region(region);
   RegionPieces found;
@@ -754,6 +758,44 @@ void IncrementalSegmenter::State::redecompose(Region region, std::vector<int>& t
   keep_border_passages(region, found, frame, list);
   add_new_passages(found, frame, list);
   store_sorted(list);
+}
+
+// Newly free cells that touch no room and keep no binarized free space (a ray fan seen through a
+// gap, thinner than the opening) can be no room of their own: as in batch, each takes the label of
+// the nearest room (along free space, else in a straight line). Decomposing them would find no
+// free space and take the whole map. Returns false, changing nothing, when they are not such cells.
+bool IncrementalSegmenter::State::label_isolated_cells(const Region& region, std::vector<int>& touched_rooms) {
+  const cv::Rect& window = region.window;
+  cv::Mat& labels = result.labels;
+  std::vector<int> pending;
+  for (int r = window.y; r < window.y + window.height; ++r) {
+    const int* l = labels.ptr<int>(r);
+    const unsigned char* b = bin.ptr<unsigned char>(r);
+    for (int c = window.x; c < window.x + window.width; ++c) {
+      if (l[c] != kPending) continue;
+      if (b[c] != 0) return false;  // binarized free space: it may be a room
+      pending.push_back(r * labels.cols + c);
+    }
+  }
+  if (pending.empty() || free_cells <= static_cast<long long>(pending.size())) return false;
+  int* data = labels.ptr<int>(0);
+  for (const int index : pending) data[index] = 0;
+  complete_unlabelled_cells(labels, cells == kFree, pending);
+  const bool all_labelled = std::all_of(pending.begin(), pending.end(), [&](int index) { return data[index] > 0; });
+  for (const int index : pending) {
+    if (!all_labelled) {
+      data[index] = kPending;
+      continue;
+    }
+    RoomState& room = rooms[static_cast<std::size_t>(data[index])];
+    const int r = index / labels.cols, c = index % labels.cols;
+    ++room.cells;
+    room.sum_c += c;
+    room.sum_r += r;
+    room.box = unite(room.box, cv::Rect(c, r, 1, 1));
+    add_unique(touched_rooms, data[index]);
+  }
+  return all_labelled;
 }
 
 // The rooms next to the region go with it (one ring, through the passages): batch decides on
@@ -801,7 +843,9 @@ void IncrementalSegmenter::State::frame_region(Region& region) const {
     const double cell_area = resolution * resolution;
     for (const int id : region.ids) {
       const RoomState& room = rooms[static_cast<std::size_t>(id)];
-      if (static_cast<double>(room.cells) * cell_area > options.partial_area && (room.box & region.near_change) != room.box)
+      // Worth it only when the window leaves out most of the room's box.
+      if (static_cast<double>(room.cells) * cell_area > options.partial_area &&
+          2 * (room.box & region.near_change).area() < room.box.area())
         region.member[static_cast<std::size_t>(id)] = kPartial;
     }
   }

@@ -77,6 +77,10 @@ struct IncrementalOptions {
   // when the window would leave it in parts.
   double partial_area = 0.0;
   double partial_margin = 3.0;
+  // Newly free cells that touch no room and keep no binarized free space take the nearest room's
+  // label, as in batch, instead of a decomposition (which finds no free space in them and so takes
+  // the whole map). Off by default: those whole-map decompositions also pull the rooms back to batch.
+  bool isolated_to_nearest_room = false;
   // When more cells change than this fraction of the free cells (a loop closure moving the whole
   // map), every room is decomposed again: the batch result, with ids kept where rooms overlap.
   double batch_fraction = 0.5;
