@@ -816,6 +816,62 @@ TEST(IncrementalSegmenter, LargeRoomsAbsorbGrowthUpToTheirAllowance) {
   EXPECT_EQ(exact.last_update().redecomposed_rooms, 1);
 }
 
+TEST(IncrementalSegmenter, ALongCorridorGrowingAtItsFarEndIsDecomposedOnlyThere) {
+  // A corridor 30 m x 2 m (60 m²) whose east end wall later shows a 0.9 m door into a 4.4 m x
+  // 6.5 m room. With partial_area 20 m² only the corridor's cells within partial_margin (3 m) of
+  // the change are decomposed with the new cells: the piece touching the rest of the corridor keeps
+  // its id, the room beyond the door is new, and the labels equal batch's on the same grid. A
+  // closed room elsewhere keeps the change from touching every room (a batch update).
+  OccupancyGrid world;
+  world.resolution = kRes;
+  world.cells = cv::Mat(160, 700, CV_8UC1, cv::Scalar(kOccupied));
+  const cv::Rect corridor(4, 100, 600, 40);
+  world.cells(corridor).setTo(kFree);
+  world.cells(cv::Rect(4, 4, 100, 60)).setTo(kFree);  // a room of its own, out of reach
+  world.cells(cv::Rect(608, 20, 88, 130)).setTo(kFree);
+  world.cells(cv::Rect(604, 112, 4, 18)).setTo(kFree);  // the door
+  OccupancyGrid before = world;
+  before.cells = world.cells.clone();
+  before.cells(cv::Rect(604, 0, 96, 160)).setTo(kUnknown);
+  before.cells(cv::Rect(604, 96, 4, 48)).setTo(kOccupied);  // the end wall, door closed
+  const int new_cells = cv::countNonZero(world.cells == kFree) - cv::countNonZero(before.cells == kFree);
+
+  for (const double partial_area : {20.0, 0.0}) {
+    IncrementalOptions options;
+    options.absorb_area = 0.0;  // every change decomposed
+    options.absorb_fraction = 0.0;
+    options.partial_area = partial_area;
+    IncrementalSegmenter segmenter(options);
+    const Segmentation first = segmenter.update(before);
+    ASSERT_EQ(first.rooms.size(), 2u);
+    const int corridor_id = first.labels.at<int>(corridor.y, corridor.x);
+    const Segmentation second = segmenter.update(world);
+    expect_valid(world, second);
+    const IncrementalUpdateReport& report = segmenter.last_update();
+    ASSERT_EQ(report.kind, IncrementalUpdateReport::Kind::kIncremental) << report.reason;
+    if (partial_area == 0.0) {  // the whole corridor goes again: what the option saves
+      EXPECT_EQ(report.partial_rooms, 0);
+      EXPECT_EQ(report.region_cells, corridor.area() + new_cells);
+      continue;
+    }
+    EXPECT_EQ(report.partial_rooms, 1);
+    const int margin = static_cast<int>(std::ceil(options.partial_margin / kRes));
+    EXPECT_LE(report.region_cells, new_cells + (margin + 1) * corridor.height);
+    // The corridor beyond the window keeps its id on every cell; all of it keeps the id.
+    for (int r = corridor.y; r < corridor.y + corridor.height; ++r)
+      for (int c = corridor.x; c < corridor.x + corridor.width; ++c)
+        ASSERT_EQ(second.labels.at<int>(r, c), corridor_id) << "corridor cell (" << c << ", " << r << ")";
+    // The same rooms as batch, cell for cell: the corridor and the new room parted at the door.
+    const Segmentation batch = segment(world, options.segment);
+    ASSERT_EQ(batch.rooms.size(), 3u);
+    ASSERT_EQ(second.rooms.size(), 3u);
+    const auto [precision, recall] = agreement(second.labels, batch.labels);
+    EXPECT_DOUBLE_EQ(precision, 1.0);
+    EXPECT_DOUBLE_EQ(recall, 1.0);
+    EXPECT_EQ(passage_pairs_in(second, batch), passage_pairs(batch));
+  }
+}
+
 TEST(IncrementalSegmenter, HintGivesTheSameResultAsAFullComparison) {
   const FloorPlan plan = floor_plan();
   IncrementalSegmenter with_hint, without_hint;
@@ -931,6 +987,10 @@ TEST(IncrementalSegmenter, BadInputIsOneClearError) {
   IncrementalOptions no_merge;
   no_merge.merge_after = 0;
   EXPECT_THROW(IncrementalSegmenter{no_merge}, Error);
+  IncrementalOptions no_margin;
+  no_margin.partial_area = 10.0;
+  no_margin.partial_margin = 0.0;
+  EXPECT_THROW(IncrementalSegmenter{no_margin}, Error);
   IncrementalOptions covering;
   covering.segment.labels.cover_absorbed_obstacles = true;  // would label obstacle cells
   EXPECT_THROW(IncrementalSegmenter{covering}, Error);
