@@ -147,6 +147,20 @@ int region_room_beside(const cv::Mat& labels, const cv::Rect& window, const std:
   return 0;
 }
 
+// 4-connected parts of mask (nonzero) that hold a cell of ring.
+int parts_reaching(const cv::Mat& mask, const cv::Mat& ring) {
+  cv::Mat components;
+  const int n = cv::connectedComponents(mask, components, 4, CV_32S);
+  std::vector<char> reaches(static_cast<std::size_t>(n), 0);
+  for (int r = 0; r < mask.rows; ++r) {
+    const int* p = components.ptr<int>(r);
+    const unsigned char* g = ring.ptr<unsigned char>(r);
+    for (int c = 0; c < mask.cols; ++c)
+      if (g[c]) reaches[static_cast<std::size_t>(p[c])] = 1;
+  }
+  return static_cast<int>(std::count(reaches.begin() + 1, reaches.end(), 1));
+}
+
 // The changed cells of one update, over the window where the binarized free space may differ.
 struct ChangeMask {
   cv::Rect window;  // the changed box grown by the binarization's reach
@@ -333,8 +347,11 @@ struct IncrementalSegmenter::State {
   void decompose_whole(Region& region) const;
   RegionPieces decompose_region(Region& region);
   void label_pieces(const Region& region, RegionPieces& found) const;
-  bool keep_partial_remainders(const Region& region, RegionPieces& found) const;
-  void trace_partial_rooms(const RegionPieces& found);
+  bool find_kept_pieces(const Region& region, RegionPieces& found) const;
+  bool partial_rooms_hold_together(const Region& region, RegionPieces& found) const;
+  bool decompose_partially(Region& region, RegionPieces& found);
+  void trace_partial_rooms(const RegionPieces& found, const cv::Rect& window, const std::vector<cv::Rect>& outline_boxes);
+  cv::Rect outline_box(int id) const;
   void report_region(const Region& region, int region_cells);
   void match_ids(const Region& region, RegionPieces& found);
   void hold_back_splits(const Region& region, RegionPieces& found);
@@ -728,24 +745,19 @@ void IncrementalSegmenter::State::redecompose(Region region, std::vector<int>& t
   add_neighbour_rooms(region);
   frame_region(region);
   RegionPieces found;
-  for (;;) {
-    found = decompose_region(region);
-    label_pieces(region, found);
-    if (keep_partial_remainders(region, found)) break;
-    decompose_whole(region);  // the window would leave a partial room in parts
-  }
+  while (!decompose_partially(region, found)) decompose_whole(region);
   report_region(region, found.region_cells);
   const cv::Rect& window = region.window;
-  found.tally = tally_pieces(result.labels, found, region);
-  match_ids(region, found);
 
+  std::vector<cv::Rect> outline_boxes;  // taken before refresh_room replaces the polygons
+  for (const RegionPieces::Remainder& rest : found.remainders) outline_boxes.push_back(outline_box(rest.id));
   const std::vector<int> removed = retire_old_rooms(region, found);
   const double y_offset = result.labels.rows - window.height - window.y;
   const WindowFrame frame{origin, resolution, window, y_offset};
   for (const int id : removed) refresh_room(id, nullptr);
   adopt_pieces(found, frame);
   adopt_held_rooms(found, frame);
-  trace_partial_rooms(found);
+  trace_partial_rooms(found, window, outline_boxes);
   // Rooms absorbed into this decomposition are refreshed here; the caller must not revive them.
   touched_rooms.erase(std::remove_if(touched_rooms.begin(), touched_rooms.end(),
                                      [&](int id) { return region.member[static_cast<std::size_t>(id)] != 0; }),
@@ -855,6 +867,30 @@ void IncrementalSegmenter::State::frame_region(Region& region) const {
   }
 }
 
+// Decomposes the region and gives its pieces ids (match_ids). Returns false, changing no room,
+// when a partial room could not keep its id on its rest: it must then be decomposed whole.
+bool IncrementalSegmenter::State::decompose_partially(Region& region, RegionPieces& found) {
+  found = decompose_region(region);
+  label_pieces(region, found);
+  if (!find_kept_pieces(region, found)) return false;
+  found.tally = tally_pieces(result.labels, found, region);
+  const bool partial = std::find(region.member.begin(), region.member.end(), kPartial) != region.member.end();
+  if (!partial) {
+    match_ids(region, found);
+    return true;
+  }
+  // match_ids votes on held splits and merges and hands out ids: undone if the trial fails.
+  const std::vector<RoomState> saved_rooms = rooms;
+  const int saved_next_id = next_id;
+  const IncrementalUpdateReport saved_report = report;
+  match_ids(region, found);
+  if (partial_rooms_hold_together(region, found)) return true;
+  rooms = saved_rooms;
+  next_id = saved_next_id;
+  report = saved_report;
+  return false;
+}
+
 // Every partial room of the region takes part with all its cells from now on.
 void IncrementalSegmenter::State::decompose_whole(Region& region) const {
   for (const int id : region.ids) {
@@ -938,13 +974,11 @@ void IncrementalSegmenter::State::label_pieces(const Region& region, RegionPiece
   }
 }
 
-// A partial room keeps its id on its cells outside near_change and on every piece touching them
-// across the window's edge (found.kept_by), and found.remainders tallies those cells. Returns false
-// when that cannot be done: a piece touches two partial rooms, a partial room touches no piece, or
-// its cells would no longer be one 4-connected piece (a corridor crossing the window and cut in it).
-bool IncrementalSegmenter::State::keep_partial_remainders(const Region& region, RegionPieces& found) const {
+// A partial room keeps its id on every piece touching its cells outside near_change across the
+// window's edge (found.kept_by). Returns false when a piece touches two partial rooms or a partial
+// room touches none.
+bool IncrementalSegmenter::State::find_kept_pieces(const Region& region, RegionPieces& found) const {
   found.kept_by.assign(static_cast<std::size_t>(found.pieces) + 1, 0);
-  found.remainders.clear();
   const cv::Rect& near = region.near_change;
   const cv::Rect& window = region.window;
   const cv::Mat& labels = result.labels;
@@ -967,40 +1001,60 @@ bool IncrementalSegmenter::State::keep_partial_remainders(const Region& region, 
     touch(r, near.x - 1, r, near.x);
     touch(r, near.x + near.width, r, near.x + near.width - 1);
   }
-  for (std::size_t id = 1; id < rooms.size() && ok; ++id) {
-    if (region.member[id] != kPartial) continue;
-    // The room as it would be: its cells outside near and the pieces kept by it.
-    const cv::Rect box = rooms[id].box | window;
-    cv::Mat mask = cv::Mat::zeros(box.size(), CV_8UC1);
-    const cv::Mat before = labels(box) == static_cast<int>(id);
-    RegionPieces::Remainder rest;
-    rest.id = static_cast<int>(id);
-    for (int r = 0; r < box.height; ++r) {
-      const int gr = box.y + r;
-      const int* l = labels.ptr<int>(gr) + box.x;
-      unsigned char* m = mask.ptr<unsigned char>(r);
-      for (int c = 0; c < box.width; ++c) {
-        const int gc = box.x + c;
-        const bool in_window = window.contains(cv::Point(gc, gr));
-        const int piece = in_window && found.raw.at<unsigned char>(gr - window.y, gc - window.x)
-                              ? found.local.at<int>(gr - window.y, gc - window.x) : 0;
-        if (piece > 0) {
-          m[c] = found.kept_by[static_cast<std::size_t>(piece)] == rest.id ? 255 : 0;
-        } else if (l[c] == rest.id) {  // outside near: a partial room's cells inside it are all in the region
-          m[c] = 255;
-          ++rest.cells;
-          rest.sum_c += gc;
-          rest.sum_r += gr;
+  for (std::size_t id = 1; id < rooms.size() && ok; ++id)
+    ok = region.member[id] != kPartial ||
+         std::find(found.kept_by.begin(), found.kept_by.end(), static_cast<int>(id)) != found.kept_by.end();
+  return ok;
+}
+
+// After match_ids: each partial room must hold together where the window cut it. Looked at in
+// near_change and the ring of cells around it, its parts that reach its cells on the ring must be
+// no more after than before (a corridor crossing the window and cut in it would fall apart; parts
+// may still join outside, so this errs towards decomposing the whole room). Tallies the room's
+// cells outside near_change in found.remainders.
+bool IncrementalSegmenter::State::partial_rooms_hold_together(const Region& region, RegionPieces& found) const {
+  found.remainders.clear();
+  const cv::Rect& near = region.near_change;
+  const cv::Rect& window = region.window;
+  const cv::Mat& labels = result.labels;
+  const cv::Rect area = grown(near, 1, labels.size());
+  for (const int id : region.ids) {
+    if (region.member[static_cast<std::size_t>(id)] != kPartial) continue;
+    const RoomState& room = rooms[static_cast<std::size_t>(id)];
+    RegionPieces::Remainder rest{id, room.cells, room.sum_c, room.sum_r};
+    cv::Mat before = cv::Mat::zeros(area.size(), CV_8UC1), after = before.clone(), ring = before.clone();
+    for (int r = 0; r < area.height; ++r) {
+      const int gr = area.y + r;
+      const int* l = labels.ptr<int>(gr) + area.x;
+      const bool near_row = gr >= near.y && gr < near.y + near.height;
+      const bool window_row = gr >= window.y && gr < window.y + window.height;
+      const int* k = window_row ? found.local.ptr<int>(gr - window.y) : nullptr;
+      const unsigned char* in = window_row ? found.raw.ptr<unsigned char>(gr - window.y) : nullptr;
+      unsigned char* b = before.ptr<unsigned char>(r);
+      unsigned char* a = after.ptr<unsigned char>(r);
+      unsigned char* g = ring.ptr<unsigned char>(r);
+      for (int c = 0; c < area.width; ++c) {
+        const int gc = area.x + c;
+        const bool inside = near_row && gc >= near.x && gc < near.x + near.width;
+        b[c] = l[c] == id ? 255 : 0;
+        if (!inside) {
+          a[c] = g[c] = b[c];
+          continue;
         }
+        if (b[c]) {  // in the region: leaves the rest
+          --rest.cells;
+          rest.sum_c -= gc;
+          rest.sum_r -= gr;
+        }
+        const int wc = gc - window.x;  // the room's cells in near are all in the window
+        a[c] = window_row && wc >= 0 && wc < window.width && in[wc] && k[wc] > 0 &&
+                       found.id_of_piece[static_cast<std::size_t>(k[wc])] == id ? 255 : 0;
       }
     }
-    cv::Mat components;
-    const int parts_before = cv::connectedComponents(before, components, 4, CV_32S);
-    const int parts_after = cv::connectedComponents(mask, components, 4, CV_32S);
-    ok = ok && std::count(found.kept_by.begin(), found.kept_by.end(), rest.id) > 0 && parts_after <= parts_before;
     found.remainders.push_back(rest);
+    if (parts_reaching(after, ring) > parts_reaching(before, ring)) return false;
   }
-  return ok;
+  return true;
 }
 
 // The report names the region as finally decomposed, and calls it batch when it took every room.
@@ -1271,11 +1325,14 @@ void IncrementalSegmenter::State::adopt_held_rooms(const RegionPieces& found, co
 }
 
 // A partial room's polygon is traced from its cells (the rest and the pieces it kept), the largest
-// part if it has several (a held merge's room inside it makes a hole, not a part).
-void IncrementalSegmenter::State::trace_partial_rooms(const RegionPieces& found) {
-  for (const RegionPieces::Remainder& rest : found.remainders) {
-    const cv::Rect box = rooms[static_cast<std::size_t>(rest.id)].box;
-    cv::Mat own = result.labels(box) == rest.id;
+// part, over its old polygon's box and the region's window (its box also reaches the free specks
+// labelled from it far away, which are no part of its outline).
+void IncrementalSegmenter::State::trace_partial_rooms(const RegionPieces& found, const cv::Rect& window,
+                                                      const std::vector<cv::Rect>& outline_boxes) {
+  for (std::size_t k = 0; k < found.remainders.size(); ++k) {
+    const int id = found.remainders[k].id;
+    const cv::Rect box = (outline_boxes[k] | window) & rooms[static_cast<std::size_t>(id)].box;
+    const cv::Mat own = result.labels(box) == id;
     const std::vector<FreeSpaceComponent> parts = trace_components(remove_diagonal_pinches(own));
     const auto largest = std::max_element(parts.begin(), parts.end(), [](const FreeSpaceComponent& a, const FreeSpaceComponent& b) {
       return a.pixel_count < b.pixel_count;
@@ -1283,8 +1340,22 @@ void IncrementalSegmenter::State::trace_partial_rooms(const RegionPieces& found)
     if (largest == parts.end()) continue;
     const WindowFrame frame{origin, resolution, box, static_cast<double>(result.labels.rows - box.height - box.y)};
     const PolygonWithHoles world = to_world_polygon(largest->polygon, frame);
-    refresh_room(rest.id, &world);
+    refresh_room(id, &world);
   }
+}
+
+// The cells under a room's polygon's box (before the update), for trace_partial_rooms.
+cv::Rect IncrementalSegmenter::State::outline_box(int id) const {
+  auto it = std::lower_bound(result.rooms.begin(), result.rooms.end(), id,
+                             [](const Room& room, int value) { return room.id < value; });
+  if (it == result.rooms.end() || it->id != id || it->polygon.outer.empty()) return rooms[static_cast<std::size_t>(id)].box;
+  const Box b = bounding_box(it->polygon.outer);
+  const int rows = result.labels.rows;
+  const int c0 = static_cast<int>(std::floor((b.x0 - origin.x) / resolution)) - 1;
+  const int c1 = static_cast<int>(std::ceil((b.x1 - origin.x) / resolution)) + 1;
+  const int r0 = rows - static_cast<int>(std::ceil((b.y1 - origin.y) / resolution)) - 1;
+  const int r1 = rows - static_cast<int>(std::floor((b.y0 - origin.y) / resolution)) + 1;
+  return cv::Rect(c0, r0, c1 - c0, r1 - r0) & cv::Rect(0, 0, result.labels.cols, rows);
 }
 
 // Old passages outside the region stay as they were; one crossing its border keeps its outside
