@@ -872,6 +872,45 @@ TEST(IncrementalSegmenter, ALongCorridorGrowingAtItsFarEndIsDecomposedOnlyThere)
   }
 }
 
+TEST(IncrementalSegmenter, AnIsolatedSpeckTakesTheNearestRoomWithoutADecomposition) {
+  // Two rooms; beyond the wall of the right one a ray seen through a gap leaves a line of free
+  // cells one cell wide: touching no room and gone after the 0.15 m opening, it can be no room.
+  // Without isolated_to_nearest_room its decomposition finds no free space and takes the whole
+  // map; with it, it joins the nearest room and nothing else changes.
+  OccupancyGrid before;
+  before.resolution = kRes;
+  before.cells = cv::Mat(100, 200, CV_8UC1, cv::Scalar(kOccupied));
+  before.cells(cv::Rect(4, 4, 90, 80)).setTo(kFree);
+  before.cells(cv::Rect(100, 4, 80, 80)).setTo(kFree);
+  const OccupancyGrid after = with_cells(before, {cv::Rect(184, 10, 1, 30)}, kFree);
+  for (const bool nearest : {true, false}) {
+    IncrementalOptions options;
+    options.segment.binarize.opening_size = 0.15;
+    options.isolated_to_nearest_room = nearest;
+    IncrementalSegmenter segmenter(options);
+    const Segmentation first = segmenter.update(before);
+    ASSERT_EQ(first.rooms.size(), 2u);
+    const int right = first.labels.at<int>(50, 150);
+    const Segmentation second = segmenter.update(after);
+    expect_valid(after, second);
+    const IncrementalUpdateReport& report = segmenter.last_update();
+    if (!nearest) {
+      EXPECT_EQ(report.kind, IncrementalUpdateReport::Kind::kBatch) << report.reason;
+      continue;
+    }
+    EXPECT_EQ(report.kind, IncrementalUpdateReport::Kind::kIncremental);
+    EXPECT_EQ(report.region_cells, 0);
+    for (int r = 10; r < 40; ++r) EXPECT_EQ(second.labels.at<int>(r, 184), right);
+    const int left = first.labels.at<int>(50, 50);
+    EXPECT_EQ(cells_by_room(second.labels).at(left), cells_by_room(first.labels).at(left));
+    EXPECT_EQ(cells_by_room(second.labels).at(right).size(), cells_by_room(first.labels).at(right).size() + 30);
+    // The same labels as batch on the same grid (ids aside).
+    const auto [precision, recall] = agreement(second.labels, segment(after, options.segment).labels);
+    EXPECT_DOUBLE_EQ(precision, 1.0);
+    EXPECT_DOUBLE_EQ(recall, 1.0);
+  }
+}
+
 TEST(IncrementalSegmenter, HintGivesTheSameResultAsAFullComparison) {
   const FloorPlan plan = floor_plan();
   IncrementalSegmenter with_hint, without_hint;
