@@ -348,6 +348,7 @@ struct IncrementalSegmenter::State {
   RegionPieces decompose_region(Region& region);
   void label_pieces(const Region& region, RegionPieces& found) const;
   bool find_kept_pieces(const Region& region, RegionPieces& found) const;
+  bool kept_pieces_are_mostly_theirs(const Region& region, const RegionPieces& found) const;
   bool partial_rooms_hold_together(const Region& region, RegionPieces& found) const;
   bool decompose_partially(Region& region, RegionPieces& found);
   void trace_partial_rooms(const RegionPieces& found, const cv::Rect& window, const std::vector<cv::Rect>& outline_boxes);
@@ -874,6 +875,7 @@ bool IncrementalSegmenter::State::decompose_partially(Region& region, RegionPiec
   label_pieces(region, found);
   if (!find_kept_pieces(region, found)) return false;
   found.tally = tally_pieces(result.labels, found, region);
+  if (!kept_pieces_are_mostly_theirs(region, found)) return false;
   const bool partial = std::find(region.member.begin(), region.member.end(), kPartial) != region.member.end();
   if (!partial) {
     match_ids(region, found);
@@ -1005,6 +1007,24 @@ bool IncrementalSegmenter::State::find_kept_pieces(const Region& region, RegionP
     ok = region.member[id] != kPartial ||
          std::find(found.kept_by.begin(), found.kept_by.end(), static_cast<int>(id)) != found.kept_by.end();
   return ok;
+}
+
+// A piece kept by a partial room holds no more cells of another old room than of it: else that
+// room would be merged into it only because the window's edge left no cut between them.
+bool IncrementalSegmenter::State::kept_pieces_are_mostly_theirs(const Region& region, const RegionPieces& found) const {
+  const PieceTally& t = found.tally;
+  const std::size_t columns = static_cast<std::size_t>(t.n_old) + 1;
+  std::vector<int> column(rooms.size(), -1);
+  for (int j = 0; j < t.n_old; ++j) column[static_cast<std::size_t>(region.ids[static_cast<std::size_t>(j)])] = j;
+  for (int p = 1; p <= found.pieces; ++p) {
+    const int kept = found.kept_by[static_cast<std::size_t>(p)];
+    if (kept == 0) continue;
+    const long long* overlap = &t.overlap[static_cast<std::size_t>(p) * columns];
+    const long long own = overlap[column[static_cast<std::size_t>(kept)]];
+    for (int j = 0; j < t.n_old; ++j)
+      if (overlap[j] > own) return false;
+  }
+  return true;
 }
 
 // After match_ids: each partial room must hold together where the window cut it. Looked at in
