@@ -321,6 +321,15 @@ TEST(IncrementalSegmenter, DoorClosingSplitsAndTheLargerPartKeepsTheId) {
 }
 
 // A copy of grid with the cells of every rectangle set to value.
+// A grid of obstacles (rows x cols at kRes) with the given rectangles free.
+OccupancyGrid walled(int rows, int cols, const std::vector<cv::Rect>& free) {
+  OccupancyGrid grid;
+  grid.resolution = kRes;
+  grid.cells = cv::Mat(rows, cols, CV_8UC1, cv::Scalar(kOccupied));
+  for (const cv::Rect& r : free) grid.cells(r).setTo(kFree);
+  return grid;
+}
+
 OccupancyGrid with_cells(const OccupancyGrid& grid, const std::vector<cv::Rect>& rects, unsigned char value) {
   OccupancyGrid out = grid;
   out.cells = grid.cells.clone();
@@ -822,14 +831,9 @@ TEST(IncrementalSegmenter, ALongCorridorGrowingAtItsFarEndIsDecomposedOnlyThere)
   // the change are decomposed with the new cells: the piece touching the rest of the corridor keeps
   // its id, the room beyond the door is new, and the labels equal batch's on the same grid. A
   // closed room elsewhere keeps the change from touching every room (a batch update).
-  OccupancyGrid world;
-  world.resolution = kRes;
-  world.cells = cv::Mat(160, 700, CV_8UC1, cv::Scalar(kOccupied));
   const cv::Rect corridor(4, 100, 600, 40);
-  world.cells(corridor).setTo(kFree);
-  world.cells(cv::Rect(4, 4, 100, 60)).setTo(kFree);  // a room of its own, out of reach
-  world.cells(cv::Rect(608, 20, 88, 130)).setTo(kFree);
-  world.cells(cv::Rect(604, 112, 4, 18)).setTo(kFree);  // the door
+  const cv::Rect closed_room(4, 4, 100, 60), new_room(608, 20, 88, 130), door(604, 112, 4, 18);
+  const OccupancyGrid world = walled(160, 700, {corridor, closed_room, new_room, door});
   OccupancyGrid before = world;
   before.cells = world.cells.clone();
   before.cells(cv::Rect(604, 0, 96, 160)).setTo(kUnknown);
@@ -877,11 +881,7 @@ TEST(IncrementalSegmenter, AnIsolatedSpeckTakesTheNearestRoomWithoutADecompositi
   // cells one cell wide: touching no room and gone after the 0.15 m opening, it can be no room.
   // Without isolated_to_nearest_room its decomposition finds no free space and takes the whole
   // map; with it, it joins the nearest room and nothing else changes.
-  OccupancyGrid before;
-  before.resolution = kRes;
-  before.cells = cv::Mat(100, 200, CV_8UC1, cv::Scalar(kOccupied));
-  before.cells(cv::Rect(4, 4, 90, 80)).setTo(kFree);
-  before.cells(cv::Rect(100, 4, 80, 80)).setTo(kFree);
+  const OccupancyGrid before = walled(100, 200, {cv::Rect(4, 4, 90, 80), cv::Rect(100, 4, 80, 80)});
   const OccupancyGrid after = with_cells(before, {cv::Rect(184, 10, 1, 30)}, kFree);
   for (const bool nearest : {true, false}) {
     IncrementalOptions options;

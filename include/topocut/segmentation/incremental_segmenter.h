@@ -74,7 +74,9 @@ struct IncrementalOptions {
   // A touched room larger than partial_area (m²; 0 = off, the default) is decomposed again only
   // within partial_margin (m) of the change: pieces touching the rest of the room keep its id
   // and cuts; only pieces wholly inside that window may become rooms. The whole room is decomposed
-  // when the window would leave it in parts.
+  // when the window would leave it in parts or merge another room into it. The real-log replay
+  // uses 50 m² (wall_map_incremental_options()); on the explorations it costs some images 2-3
+  // points of precision (benchmarks/README.md).
   double partial_area = 0.0;
   double partial_margin = 3.0;
   // Newly free cells that touch no room and keep no binarized free space take the nearest room's
