@@ -188,7 +188,7 @@ struct Region {
   std::vector<int> ids;        // old rooms: those the change touched first, then their neighbours
   std::vector<char> member;    // by room id: kWhole or kPartial if in ids, else 0
   cv::Rect window;             // contains the pending cells and every cell of the region
-  cv::Rect near_change;        // the changed box grown by partial_margin (empty: no partial rooms)
+  cv::Rect near_change;        // the changed box grown by partial_margin (empty when partial_area is 0)
   bool whole_map = false;
 };
 
@@ -846,8 +846,8 @@ void IncrementalSegmenter::State::add_neighbour_rooms(Region& region) const {
 }
 
 // The region's window: the change and every room of the region, except that a room larger than
-// partial_area that reaches beyond partial_margin of the change takes part only with its cells
-// near the change (Region::near_change), so that a long corridor costs what the change costs.
+// partial_area whose box lies mostly beyond partial_margin of the change takes part only with its
+// cells near the change (Region::near_change), so that a long corridor costs what the change costs.
 void IncrementalSegmenter::State::frame_region(Region& region) const {
   const cv::Rect change = region.window;
   if (options.partial_area > 0.0 && !region.whole_map && !change.empty()) {
