@@ -8,9 +8,10 @@
 //
 //   log_replay_benchmark [--batch-every N] [--settle] [--split-after N] [--merge-after N]
 //                        [--door-neighbours on|off] [--cut-neighbours on|off] [--absorb-fraction F]
-//                        [--hysteresis H] [LOG_NAME ...]   (default: intel aces csail fhw)
+//                        [--hysteresis H] [--partial-area M2] [--partial-margin M]
+//                        [--isolated-nearest on|off] [LOG_NAME ...]   (default: intel aces csail fhw)
 //
-// The last six override the preset (wall_map_incremental_options()) to measure a variant.
+// The options after --settle override the preset (wall_map_incremental_options()) to measure a variant.
 //
 // Times are process CPU time, single-threaded OpenCV; wall clock beside.
 #include <algorithm>
@@ -50,6 +51,9 @@ struct ReplayVariant {
   int cut_neighbours = -1;
   double absorb_fraction = -1.0;
   double hysteresis = -1.0;
+  double partial_area = -1.0;
+  double partial_margin = -1.0;
+  int isolated_nearest = -1;
 };
 
 LogFigures replay_file(const std::string& name, const std::string& path, int batch_every, bool settle,
@@ -62,6 +66,9 @@ LogFigures replay_file(const std::string& name, const std::string& path, int bat
   if (variant.cut_neighbours >= 0) options.incremental.neighbours_across_cuts = variant.cut_neighbours != 0;
   if (variant.absorb_fraction >= 0.0) options.incremental.absorb_fraction = variant.absorb_fraction;
   if (variant.hysteresis >= 0.0) options.incremental.segment.merge.hysteresis = variant.hysteresis;
+  if (variant.partial_area >= 0.0) options.incremental.partial_area = variant.partial_area;
+  if (variant.partial_margin > 0.0) options.incremental.partial_margin = variant.partial_margin;
+  if (variant.isolated_nearest >= 0) options.incremental.isolated_to_nearest_room = variant.isolated_nearest != 0;
   options.compare_batch = true;
   options.batch_every = batch_every;
   const std::vector<PosedScan> scans = posed_scans(read_carmen_log(path));
@@ -100,6 +107,9 @@ int main(int argc, char** argv) {
     else if (a == "--cut-neighbours" && i + 1 < argc) variant.cut_neighbours = std::string(argv[++i]) == "on";
     else if (a == "--absorb-fraction" && i + 1 < argc) variant.absorb_fraction = std::max(0.0, std::atof(argv[++i]));
     else if (a == "--hysteresis" && i + 1 < argc) variant.hysteresis = std::clamp(std::atof(argv[++i]), 0.0, 0.9);
+    else if (a == "--partial-area" && i + 1 < argc) variant.partial_area = std::max(0.0, std::atof(argv[++i]));
+    else if (a == "--partial-margin" && i + 1 < argc) variant.partial_margin = std::atof(argv[++i]);
+    else if (a == "--isolated-nearest" && i + 1 < argc) variant.isolated_nearest = std::string(argv[++i]) == "on";
     else names.push_back(a);
   }
   if (names.empty()) names = {"intel", "aces", "csail", "fhw"};

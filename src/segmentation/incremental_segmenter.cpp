@@ -148,6 +148,20 @@ int region_room_beside(const cv::Mat& labels, const cv::Rect& window, const std:
   return 0;
 }
 
+// 4-connected parts of mask (nonzero) that hold a cell of ring.
+int parts_reaching(const cv::Mat& mask, const cv::Mat& ring) {
+  cv::Mat components;
+  const int n = cv::connectedComponents(mask, components, 4, CV_32S);
+  std::vector<char> reaches(static_cast<std::size_t>(n), 0);
+  for (int r = 0; r < mask.rows; ++r) {
+    const int* p = components.ptr<int>(r);
+    const unsigned char* g = ring.ptr<unsigned char>(r);
+    for (int c = 0; c < mask.cols; ++c)
+      if (g[c]) reaches[static_cast<std::size_t>(p[c])] = 1;
+  }
+  return static_cast<int>(std::count(reaches.begin() + 1, reaches.end(), 1));
+}
+
 // The changed cells of one update, over the window where the binarized free space may differ.
 struct ChangeMask {
   cv::Rect window;  // the changed box grown by the binarization's reach
@@ -166,11 +180,16 @@ struct Blob {
   bool absorb = false;
 };
 
+// Region::member values: how a room of the region takes part in its decomposition.
+constexpr char kWhole = 1;    // every cell
+constexpr char kPartial = 2;  // only its cells in Region::near_change (a room larger than partial_area)
+
 // The old rooms and pending cells one update decomposes again.
 struct Region {
   std::vector<int> ids;        // old rooms: those the change touched first, then their neighbours
-  std::vector<char> member;    // by room id: 1 if in ids
-  cv::Rect window;             // contains the pending cells and every cell of the rooms in ids
+  std::vector<char> member;    // by room id: kWhole or kPartial if in ids, else 0
+  cv::Rect window;             // contains the pending cells and every cell of the region
+  cv::Rect near_change;        // the changed box grown by partial_margin (empty when partial_area is 0)
   bool whole_map = false;
 };
 
@@ -199,6 +218,19 @@ struct RegionPieces {
     int min_c = INT_MAX, max_c = -1, min_r = INT_MAX, max_r = -1;
   };
   std::vector<HeldCells> held;
+  std::vector<int> kept_by;      // by piece index + 1: the partial room whose rest it touches, 0 none
+  struct Remainder {             // a partial room's cells outside near_change, which keep its id
+    int id = 0;
+    long long cells = 0;
+    double sum_c = 0.0, sum_r = 0.0;
+  };
+  std::vector<Remainder> remainders;
+
+  const Remainder* remainder(int id) const {
+    for (const Remainder& r : remainders)
+      if (r.id == id) return &r;
+    return nullptr;
+  }
 };
 
 // Window grid coordinates (pixel centres at integers, y up) against world metres.
@@ -340,8 +372,18 @@ struct IncrementalSegmenter::State {
   bool is_speck(const Blob& blob) const;
   std::vector<int> apply_changes(const ChangeMask& mask, const cv::Mat& blob_of, const std::vector<Blob>& blobs);
   void redecompose(Region region, std::vector<int>& touched_rooms);
+  bool label_isolated_cells(const Region& region, std::vector<int>& touched_rooms);
   void add_neighbour_rooms(Region& region) const;
+  void frame_region(Region& region) const;
+  void decompose_whole(Region& region) const;
   RegionPieces decompose_region(Region& region);
+  void label_pieces(const Region& region, RegionPieces& found) const;
+  bool find_kept_pieces(const Region& region, RegionPieces& found) const;
+  bool kept_pieces_are_mostly_theirs(const Region& region, const RegionPieces& found) const;
+  bool partial_rooms_hold_together(const Region& region, RegionPieces& found) const;
+  bool decompose_partially(Region& region, RegionPieces& found);
+  void trace_partial_rooms(const RegionPieces& found, const cv::Rect& window, const std::vector<cv::Rect>& outline_boxes);
+  cv::Rect outline_box(int id) const;
   void report_region(const Region& region, int region_cells);
   void match_ids(const Region& region, RegionPieces& found);
   void hold_back_splits(const Region& region, RegionPieces& found);
@@ -729,27 +771,25 @@ std::vector<int> IncrementalSegmenter::State::apply_changes(const ChangeMask& ma
 // the batch stages, and gives the pieces ids (match_ids). Updates labels, room states,
 // result.rooms and passages.
 void IncrementalSegmenter::State::redecompose(Region region, std::vector<int>& touched_rooms) {
+  if (options.isolated_to_nearest_room && region.ids.empty() && !region.whole_map &&
+      label_isolated_cells(region, touched_rooms))
+    return;
   add_neighbour_rooms(region);
-  RegionPieces found = decompose_region(region);
+  frame_region(region);
+  RegionPieces found;
+  while (!decompose_partially(region, found)) decompose_whole(region);
   report_region(region, found.region_cells);
   const cv::Rect& window = region.window;
 
-  found.pieces = static_cast<int>(found.set.pieces.size());
-  if (found.pieces > 0) {
-    found.local = rasterize_polygons(found.set.pieces, window.size());
-    fill_free_space_labels(found.local, found.raw);
-  } else {
-    found.local = cv::Mat::zeros(window.size(), CV_32SC1);
-  }
-  found.tally = tally_pieces(result.labels, found, region);
-  match_ids(region, found);
-
+  std::vector<cv::Rect> outline_boxes;  // taken before refresh_room replaces the polygons
+  for (const RegionPieces::Remainder& rest : found.remainders) outline_boxes.push_back(outline_box(rest.id));
   const std::vector<int> removed = retire_old_rooms(region, found);
   const double y_offset = result.labels.rows - window.height - window.y;
   const WindowFrame frame{origin, resolution, window, y_offset};
   for (const int id : removed) refresh_room(id, nullptr);
   adopt_pieces(found, frame);
   adopt_held_rooms(found, frame);
+  trace_partial_rooms(found, window, outline_boxes);
   // Rooms absorbed into this decomposition are refreshed here; the caller must not revive them.
   touched_rooms.erase(std::remove_if(touched_rooms.begin(), touched_rooms.end(),
                                      [&](int id) { return region.member[static_cast<std::size_t>(id)] != 0; }),
@@ -762,6 +802,44 @@ void IncrementalSegmenter::State::redecompose(Region region, std::vector<int>& t
   keep_border_passages(region, found, frame, list);
   add_new_passages(found, frame, list);
   store_sorted(list);
+}
+
+// Newly free cells that touch no room and keep no binarized free space (a ray fan seen through a
+// gap, thinner than the opening) can be no room of their own: as in batch, each takes the label of
+// the nearest room (along free space, else in a straight line). Decomposing them would find no
+// free space and take the whole map. Returns false, changing nothing, when they are not such cells.
+bool IncrementalSegmenter::State::label_isolated_cells(const Region& region, std::vector<int>& touched_rooms) {
+  const cv::Rect& window = region.window;
+  cv::Mat& labels = result.labels;
+  std::vector<int> pending;
+  for (int r = window.y; r < window.y + window.height; ++r) {
+    const int* l = labels.ptr<int>(r);
+    const unsigned char* b = bin.ptr<unsigned char>(r);
+    for (int c = window.x; c < window.x + window.width; ++c) {
+      if (l[c] != kPending) continue;
+      if (b[c] != 0) return false;  // binarized free space: it may be a room
+      pending.push_back(r * labels.cols + c);
+    }
+  }
+  if (pending.empty() || free_cells <= static_cast<long long>(pending.size())) return false;
+  int* data = labels.ptr<int>(0);
+  for (const int index : pending) data[index] = 0;
+  complete_unlabelled_cells(labels, cells == kFree, pending);
+  const bool all_labelled = std::all_of(pending.begin(), pending.end(), [&](int index) { return data[index] > 0; });
+  for (const int index : pending) {
+    if (!all_labelled) {
+      data[index] = kPending;
+      continue;
+    }
+    RoomState& room = rooms[static_cast<std::size_t>(data[index])];
+    const int r = index / labels.cols, c = index % labels.cols;
+    ++room.cells;
+    room.sum_c += c;
+    room.sum_r += r;
+    room.box = unite(room.box, cv::Rect(c, r, 1, 1));
+    add_unique(touched_rooms, data[index]);
+  }
+  return all_labelled;
 }
 
 // The rooms next to the region go with it (one ring, through the passages): batch decides on
@@ -784,7 +862,7 @@ void IncrementalSegmenter::State::add_neighbour_rooms(Region& region) const {
     if (std::find(region_ids.begin() + static_cast<std::ptrdiff_t>(core), region_ids.end(), other) == region_ids.end())
       region_ids.push_back(other);
   }
-  for (std::size_t k = core; k < region_ids.size(); ++k) in_region[static_cast<std::size_t>(region_ids[k])] = 1;
+  for (std::size_t k = core; k < region_ids.size(); ++k) in_region[static_cast<std::size_t>(region_ids[k])] = kWhole;
   // A room holding back a merge and its partner are decomposed together, so that each of their
   // decompositions votes on the merge.
   for (std::size_t id = 1; id < rooms.size(); ++id) {
@@ -793,10 +871,67 @@ void IncrementalSegmenter::State::add_neighbour_rooms(Region& region) const {
         in_region[id] == in_region[static_cast<std::size_t>(partner)])
       continue;
     const int missing = in_region[id] ? partner : static_cast<int>(id);
-    in_region[static_cast<std::size_t>(missing)] = 1;
+    in_region[static_cast<std::size_t>(missing)] = kWhole;
     region_ids.push_back(missing);
   }
-  for (const int id : region_ids) region.window = unite(region.window, rooms[static_cast<std::size_t>(id)].box);
+}
+
+// The region's window: the change and every room of the region, except that a room larger than
+// partial_area whose box lies mostly beyond partial_margin of the change takes part only with its
+// cells near the change (Region::near_change), so that a long corridor costs what the change costs.
+void IncrementalSegmenter::State::frame_region(Region& region) const {
+  const cv::Rect change = region.window;
+  if (options.partial_area > 0.0 && !region.whole_map && !change.empty()) {
+    const int margin = static_cast<int>(std::ceil(options.partial_margin / resolution));
+    region.near_change = grown(change, margin, cells.size());
+    const double cell_area = resolution * resolution;
+    for (const int id : region.ids) {
+      const RoomState& room = rooms[static_cast<std::size_t>(id)];
+      // Worth it only when the window leaves out most of the room's box.
+      if (static_cast<double>(room.cells) * cell_area > options.partial_area &&
+          2 * (room.box & region.near_change).area() < room.box.area())
+        region.member[static_cast<std::size_t>(id)] = kPartial;
+    }
+  }
+  for (const int id : region.ids) {
+    const cv::Rect& box = rooms[static_cast<std::size_t>(id)].box;
+    region.window = unite(region.window, region.member[static_cast<std::size_t>(id)] == kPartial ? box & region.near_change : box);
+  }
+}
+
+// Decomposes the region and gives its pieces ids (match_ids). Returns false, changing no room,
+// when a partial room could not keep its id on its rest: it must then be decomposed whole.
+bool IncrementalSegmenter::State::decompose_partially(Region& region, RegionPieces& found) {
+  found = decompose_region(region);
+  label_pieces(region, found);
+  if (!find_kept_pieces(region, found)) return false;
+  found.tally = tally_pieces(result.labels, found, region);
+  if (!kept_pieces_are_mostly_theirs(region, found)) return false;
+  const bool partial = std::find(region.member.begin(), region.member.end(), kPartial) != region.member.end();
+  if (!partial) {
+    match_ids(region, found);
+    return true;
+  }
+  // match_ids votes on held splits and merges and hands out ids: undone if the trial fails.
+  const std::vector<RoomState> saved_rooms = rooms;
+  const int saved_next_id = next_id;
+  const IncrementalUpdateReport saved_report = report;
+  match_ids(region, found);
+  if (partial_rooms_hold_together(region, found)) return true;
+  rooms = saved_rooms;
+  next_id = saved_next_id;
+  report = saved_report;
+  return false;
+}
+
+// Every partial room of the region takes part with all its cells from now on.
+void IncrementalSegmenter::State::decompose_whole(Region& region) const {
+  for (const int id : region.ids) {
+    char& member = region.member[static_cast<std::size_t>(id)];
+    if (member != kPartial) continue;
+    member = kWhole;
+    region.window = unite(region.window, rooms[static_cast<std::size_t>(id)].box);
+  }
 }
 
 // The region's free cells (raw) and their decomposition into pieces, in window grid coordinates.
@@ -814,18 +949,23 @@ RegionPieces IncrementalSegmenter::State::decompose_region(Region& region) {
     binarized.create(window.size(), CV_8UC1);
     found.region_cells = 0;
     int binarized_cells = 0;
-    // member[id + 1]: 255 if cells labelled id are in the region (kPending = -1 always is).
+    // member[id + 1]: 255 if cells labelled id are in the region (kPending = -1 always is), 128 if
+    // only those near the change are (a partial room).
     std::vector<unsigned char> member(rooms.size() + 1, 0);
     member[0] = 255;
-    for (std::size_t id = 1; id < rooms.size(); ++id) member[id + 1] = in_region[id] ? 255 : 0;
+    for (std::size_t id = 1; id < rooms.size(); ++id)
+      member[id + 1] = in_region[id] == kWhole ? 255 : in_region[id] == kPartial ? 128 : 0;
     const unsigned char* lut = member.data() + 1;
+    const cv::Rect& near = region.near_change;
     for (int r = 0; r < window.height; ++r) {
       const int* l = labels.ptr<int>(window.y + r) + window.x;
       const unsigned char* b = bin.ptr<unsigned char>(window.y + r) + window.x;
       unsigned char* out_raw = raw.ptr<unsigned char>(r);
       unsigned char* out_bin = binarized.ptr<unsigned char>(r);
+      const bool near_row = window.y + r >= near.y && window.y + r < near.y + near.height;
       for (int c = 0; c < window.width; ++c) {
-        const unsigned char in = lut[l[c]];  // labels are >= kPending
+        unsigned char in = lut[l[c]];  // labels are >= kPending
+        if (in == 128) in = near_row && window.x + c >= near.x && window.x + c < near.x + near.width ? 255 : 0;
         out_raw[c] = in;
         out_bin[c] = in & b[c];
         found.region_cells += in & 1;
@@ -844,9 +984,10 @@ RegionPieces IncrementalSegmenter::State::decompose_region(Region& region) {
     if (region.whole_map || attempt == 1)
       throw Error("no free space is left after inflating obstacles by the robot radius and filtering");
     region.whole_map = true;
+    decompose_whole(region);
     for (std::size_t id = 1; id < rooms.size(); ++id)
       if (rooms[id].alive && !in_region[id]) {
-        in_region[id] = 1;
+        in_region[id] = kWhole;
         region.ids.push_back(static_cast<int>(id));
         window = unite(window, rooms[id].box);
       }
@@ -856,13 +997,126 @@ RegionPieces IncrementalSegmenter::State::decompose_region(Region& region) {
   return found;
 }
 
+// Every free cell of the region gets its piece (index + 1 in found.local).
+void IncrementalSegmenter::State::label_pieces(const Region& region, RegionPieces& found) const {
+  found.pieces = static_cast<int>(found.set.pieces.size());
+  if (found.pieces > 0) {
+    found.local = rasterize_polygons(found.set.pieces, region.window.size());
+    fill_free_space_labels(found.local, found.raw);
+  } else {
+    found.local = cv::Mat::zeros(region.window.size(), CV_32SC1);
+  }
+}
+
+// A partial room keeps its id on every piece touching its cells outside near_change across the
+// window's edge (found.kept_by). Returns false when a piece touches two partial rooms or a partial
+// room touches none.
+bool IncrementalSegmenter::State::find_kept_pieces(const Region& region, RegionPieces& found) const {
+  found.kept_by.assign(static_cast<std::size_t>(found.pieces) + 1, 0);
+  const cv::Rect& near = region.near_change;
+  const cv::Rect& window = region.window;
+  const cv::Mat& labels = result.labels;
+  bool ok = true;
+  // A cell of a partial room outside near next to one of its cells inside: that one's piece joins it.
+  auto touch = [&](int out_r, int out_c, int in_r, int in_c) {
+    if (out_r < 0 || out_c < 0 || out_r >= labels.rows || out_c >= labels.cols) return;
+    const int id = labels.at<int>(out_r, out_c);
+    if (id <= 0 || region.member[static_cast<std::size_t>(id)] != kPartial || labels.at<int>(in_r, in_c) != id) return;
+    const int piece = found.local.at<int>(in_r - window.y, in_c - window.x);
+    int& kept = found.kept_by[static_cast<std::size_t>(std::max(piece, 0))];
+    ok = ok && piece > 0 && (kept == 0 || kept == id);
+    kept = id;
+  };
+  for (int c = near.x; c < near.x + near.width; ++c) {
+    touch(near.y - 1, c, near.y, c);
+    touch(near.y + near.height, c, near.y + near.height - 1, c);
+  }
+  for (int r = near.y; r < near.y + near.height; ++r) {
+    touch(r, near.x - 1, r, near.x);
+    touch(r, near.x + near.width, r, near.x + near.width - 1);
+  }
+  for (std::size_t id = 1; id < rooms.size() && ok; ++id)
+    ok = region.member[id] != kPartial ||
+         std::find(found.kept_by.begin(), found.kept_by.end(), static_cast<int>(id)) != found.kept_by.end();
+  return ok;
+}
+
+// A piece kept by a partial room holds no more cells of another old room than of it: else that
+// room would be merged into it only because the window's edge left no cut between them.
+bool IncrementalSegmenter::State::kept_pieces_are_mostly_theirs(const Region& region, const RegionPieces& found) const {
+  const PieceTally& t = found.tally;
+  const std::size_t columns = static_cast<std::size_t>(t.n_old) + 1;
+  std::vector<int> column(rooms.size(), -1);
+  for (int j = 0; j < t.n_old; ++j) column[static_cast<std::size_t>(region.ids[static_cast<std::size_t>(j)])] = j;
+  for (int p = 1; p <= found.pieces; ++p) {
+    const int kept = found.kept_by[static_cast<std::size_t>(p)];
+    if (kept == 0) continue;
+    const long long* overlap = &t.overlap[static_cast<std::size_t>(p) * columns];
+    const long long own = overlap[column[static_cast<std::size_t>(kept)]];
+    for (int j = 0; j < t.n_old; ++j)
+      if (overlap[j] > own) return false;
+  }
+  return true;
+}
+
+// After match_ids: each partial room must hold together where the window cut it. Looked at in
+// near_change and the ring of cells around it, its parts that reach its cells on the ring must be
+// no more after than before (a corridor crossing the window and cut in it would fall apart; parts
+// may still join outside, so this errs towards decomposing the whole room). Tallies the room's
+// cells outside near_change in found.remainders.
+bool IncrementalSegmenter::State::partial_rooms_hold_together(const Region& region, RegionPieces& found) const {
+  found.remainders.clear();
+  const cv::Rect& near = region.near_change;
+  const cv::Rect& window = region.window;
+  const cv::Mat& labels = result.labels;
+  const cv::Rect area = grown(near, 1, labels.size());
+  for (const int id : region.ids) {
+    if (region.member[static_cast<std::size_t>(id)] != kPartial) continue;
+    const RoomState& room = rooms[static_cast<std::size_t>(id)];
+    RegionPieces::Remainder rest{id, room.cells, room.sum_c, room.sum_r};
+    cv::Mat before = cv::Mat::zeros(area.size(), CV_8UC1), after = before.clone(), ring = before.clone();
+    for (int r = 0; r < area.height; ++r) {
+      const int gr = area.y + r;
+      const int* l = labels.ptr<int>(gr) + area.x;
+      const bool near_row = gr >= near.y && gr < near.y + near.height;
+      const bool window_row = gr >= window.y && gr < window.y + window.height;
+      const int* k = window_row ? found.local.ptr<int>(gr - window.y) : nullptr;
+      const unsigned char* in = window_row ? found.raw.ptr<unsigned char>(gr - window.y) : nullptr;
+      unsigned char* b = before.ptr<unsigned char>(r);
+      unsigned char* a = after.ptr<unsigned char>(r);
+      unsigned char* g = ring.ptr<unsigned char>(r);
+      for (int c = 0; c < area.width; ++c) {
+        const int gc = area.x + c;
+        const bool inside = near_row && gc >= near.x && gc < near.x + near.width;
+        b[c] = l[c] == id ? 255 : 0;
+        if (!inside) {
+          a[c] = g[c] = b[c];
+          continue;
+        }
+        if (b[c]) {  // in the region: leaves the rest
+          --rest.cells;
+          rest.sum_c -= gc;
+          rest.sum_r -= gr;
+        }
+        const int wc = gc - window.x;  // the room's cells in near are all in the window
+        a[c] = window_row && wc >= 0 && wc < window.width && in[wc] && k[wc] > 0 &&
+                       found.id_of_piece[static_cast<std::size_t>(k[wc])] == id ? 255 : 0;
+      }
+    }
+    found.remainders.push_back(rest);
+    if (parts_reaching(after, ring) > parts_reaching(before, ring)) return false;
+  }
+  return true;
+}
+
 // The report names the region as finally decomposed, and calls it batch when it took every room.
 void IncrementalSegmenter::State::report_region(const Region& region, int region_cells) {
   report.region = region.window;
   report.region_cells = region_cells;
   report.redecomposed_rooms = static_cast<int>(region.ids.size());
+  report.partial_rooms = static_cast<int>(std::count(region.member.begin(), region.member.end(), kPartial));
   bool every_room = !region.ids.empty();
-  for (std::size_t id = 1; id < rooms.size() && every_room; ++id) every_room = !rooms[id].alive || region.member[id];
+  for (std::size_t id = 1; id < rooms.size() && every_room; ++id) every_room = !rooms[id].alive || region.member[id] == kWhole;
   if (!region.whole_map && every_room) {
     report.kind = IncrementalUpdateReport::Kind::kBatch;
     report.reason = "the change touched every room";
@@ -894,6 +1148,13 @@ void IncrementalSegmenter::State::match_ids(const Region& region, RegionPieces& 
   std::vector<char>& reused = found.reused;
   id_of_piece.assign(static_cast<std::size_t>(pieces) + 1, 0);
   reused.assign(rooms.size(), 0);
+  // Pieces touching a partial room's rest are that room, whatever they overlap.
+  for (int p = 1; p <= pieces; ++p) {
+    const int kept = found.kept_by[static_cast<std::size_t>(p)];
+    if (kept == 0) continue;
+    id_of_piece[static_cast<std::size_t>(p)] = kept;
+    reused[static_cast<std::size_t>(kept)] = 1;
+  }
   for (const Candidate& candidate : candidates) {
     if (id_of_piece[static_cast<std::size_t>(candidate.piece)] != 0 || reused[static_cast<std::size_t>(candidate.old)]) continue;
     id_of_piece[static_cast<std::size_t>(candidate.piece)] = candidate.old;
@@ -1048,11 +1309,14 @@ void IncrementalSegmenter::State::adopt_pieces(const RegionPieces& found, const 
     RoomState& room = rooms[id];
     const cv::Rect box(t.min_c[piece], t.min_r[piece], t.max_c[piece] - t.min_c[piece] + 1, t.max_r[piece] - t.min_r[piece] + 1);
     if (largest[id] == 0) {
+      // A partial room starts from its cells outside the window and keeps its box.
+      const RegionPieces::Remainder* rest = found.remainder(static_cast<int>(id));
       room.alive = true;
-      room.cells = 0;
-      room.sum_c = room.sum_r = 0.0;
+      room.cells = rest != nullptr ? rest->cells : 0;
+      room.sum_c = rest != nullptr ? rest->sum_c : 0.0;
+      room.sum_r = rest != nullptr ? rest->sum_r : 0.0;
       room.absorbed = 0;
-      room.box = box;
+      room.box = rest != nullptr ? room.box | box : box;
     }
     room.cells += t.cells[piece];
     room.sum_c += static_cast<double>(t.sum_c[piece]);
@@ -1061,7 +1325,7 @@ void IncrementalSegmenter::State::adopt_pieces(const RegionPieces& found, const 
     if (largest[id] == 0 || t.cells[piece] > t.cells[static_cast<std::size_t>(largest[id])]) largest[id] = p;
   }
   for (std::size_t id = 1; id < rooms.size(); ++id) {
-    if (largest[id] == 0) continue;
+    if (largest[id] == 0 || found.remainder(static_cast<int>(id)) != nullptr) continue;  // traced later
     const PolygonWithHoles world = to_world_polygon(found.set.pieces[static_cast<std::size_t>(largest[id]) - 1], frame);
     refresh_room(static_cast<int>(id), &world);
   }
@@ -1093,7 +1357,7 @@ void IncrementalSegmenter::State::adopt_held_rooms(const RegionPieces& found, co
       if (found.id_of_piece[static_cast<std::size_t>(p)] == partner_id &&
           (partner_piece == 0 || found.tally.cells[static_cast<std::size_t>(p)] > found.tally.cells[static_cast<std::size_t>(partner_piece)]))
         partner_piece = p;
-    if (partner.cells <= 0 || partner_piece != piece) continue;
+    if (partner.cells <= 0 || partner_piece != piece || found.remainder(partner_id) != nullptr) continue;
     const cv::Rect& window = frame.window;
     cv::Mat own(window.size(), CV_8UC1);
     for (int r = 0; r < window.height; ++r) {
@@ -1112,6 +1376,40 @@ void IncrementalSegmenter::State::adopt_held_rooms(const RegionPieces& found, co
   }
 }
 
+// A partial room's polygon is traced from its cells (the rest and the pieces it kept), the largest
+// part, over its old polygon's box and the region's window (its box also reaches the free specks
+// labelled from it far away, which are no part of its outline).
+void IncrementalSegmenter::State::trace_partial_rooms(const RegionPieces& found, const cv::Rect& window,
+                                                      const std::vector<cv::Rect>& outline_boxes) {
+  for (std::size_t k = 0; k < found.remainders.size(); ++k) {
+    const int id = found.remainders[k].id;
+    const cv::Rect box = (outline_boxes[k] | window) & rooms[static_cast<std::size_t>(id)].box;
+    const cv::Mat own = result.labels(box) == id;
+    const std::vector<FreeSpaceComponent> parts = trace_components(remove_diagonal_pinches(own));
+    const auto largest = std::max_element(parts.begin(), parts.end(), [](const FreeSpaceComponent& a, const FreeSpaceComponent& b) {
+      return a.pixel_count < b.pixel_count;
+    });
+    if (largest == parts.end()) continue;
+    const WindowFrame frame{origin, resolution, box, static_cast<double>(result.labels.rows - box.height - box.y)};
+    const PolygonWithHoles world = to_world_polygon(largest->polygon, frame);
+    refresh_room(id, &world);
+  }
+}
+
+// The cells under a room's polygon's box (before the update), for trace_partial_rooms.
+cv::Rect IncrementalSegmenter::State::outline_box(int id) const {
+  auto it = std::lower_bound(result.rooms.begin(), result.rooms.end(), id,
+                             [](const Room& room, int value) { return room.id < value; });
+  if (it == result.rooms.end() || it->id != id || it->polygon.outer.empty()) return rooms[static_cast<std::size_t>(id)].box;
+  const Box b = bounding_box(it->polygon.outer);
+  const int rows = result.labels.rows;
+  const int c0 = static_cast<int>(std::floor((b.x0 - origin.x) / resolution)) - 1;
+  const int c1 = static_cast<int>(std::ceil((b.x1 - origin.x) / resolution)) + 1;
+  const int r0 = rows - static_cast<int>(std::ceil((b.y1 - origin.y) / resolution)) - 1;
+  const int r1 = rows - static_cast<int>(std::floor((b.y0 - origin.y) / resolution)) + 1;
+  return cv::Rect(c0, r0, c1 - c0, r1 - r0) & cv::Rect(0, 0, result.labels.cols, rows);
+}
+
 // Old passages outside the region stay as they were; one crossing its border keeps its outside
 // room and finds its inside one again (dropped if none); those inside it are gone.
 void IncrementalSegmenter::State::keep_border_passages(const Region& region, const RegionPieces& found,
@@ -1120,10 +1418,19 @@ void IncrementalSegmenter::State::keep_border_passages(const Region& region, con
   for (int p = 1; p <= found.pieces; ++p)
     if (found.tally.cells[static_cast<std::size_t>(p)] > 0)
       region_room[static_cast<std::size_t>(found.id_of_piece[static_cast<std::size_t>(p)])] = 1;
+  // A partial room's cut is in the region when its middle lies near the change.
+  const int rows = result.labels.rows;
+  auto in_region = [&](int id, const Segment2& cut) {
+    const char member = region.member[static_cast<std::size_t>(id)];
+    if (member != kPartial) return member != 0;
+    const double x = (0.5 * (cut.a.x + cut.b.x) - origin.x) / resolution;
+    const double y = (0.5 * (cut.a.y + cut.b.y) - origin.y) / resolution;
+    return region.near_change.contains(cv::Point(static_cast<int>(std::floor(x)), rows - 1 - static_cast<int>(std::floor(y))));
+  };
   for (std::size_t k = 0; k < result.passages.size(); ++k) {
     const Passage& passage = result.passages[k];
-    const bool a_in = region.member[static_cast<std::size_t>(passage.room_a)] != 0;
-    const bool b_in = region.member[static_cast<std::size_t>(passage.room_b)] != 0;
+    const bool a_in = in_region(passage.room_a, passage.cut);
+    const bool b_in = in_region(passage.room_b, passage.cut);
     if (!a_in && !b_in) {
       out.passages.push_back(passage);
       out.doors.push_back(passage_door[k]);
@@ -1202,6 +1509,10 @@ IncrementalSegmenter::IncrementalSegmenter(const IncrementalOptions& options) : 
     throw Error("the absorb fraction must be a finite, non-negative number");
   if (options.split_after < 1) throw Error("split_after must be at least 1 decomposition");
   if (options.merge_after < 1) throw Error("merge_after must be at least 1 decomposition");
+  if (!std::isfinite(options.partial_area) || options.partial_area < 0.0)
+    throw Error("the partial area must be a finite, non-negative number of square metres");
+  if (!std::isfinite(options.partial_margin) || options.partial_margin <= 0.0)
+    throw Error("the partial margin must be a positive number of metres");
   if (!std::isfinite(options.speck_size) || options.speck_size < 0.0)
     throw Error("the speck size must be a finite, non-negative number of metres");
   if (!std::isfinite(options.batch_fraction) || options.batch_fraction <= 0.0)

@@ -359,6 +359,15 @@ TEST(IncrementalSegmenter, AFormerBorderIsHeldUntilTheOpeningIsAsWideAsTheRoom) 
 }
 
 // A copy of grid with the cells of every rectangle set to value.
+// A grid of obstacles (rows x cols at kRes) with the given rectangles free.
+OccupancyGrid walled(int rows, int cols, const std::vector<cv::Rect>& free) {
+  OccupancyGrid grid;
+  grid.resolution = kRes;
+  grid.cells = cv::Mat(rows, cols, CV_8UC1, cv::Scalar(kOccupied));
+  for (const cv::Rect& r : free) grid.cells(r).setTo(kFree);
+  return grid;
+}
+
 OccupancyGrid with_cells(const OccupancyGrid& grid, const std::vector<cv::Rect>& rects, unsigned char value) {
   OccupancyGrid out = grid;
   out.cells = grid.cells.clone();
@@ -854,6 +863,92 @@ TEST(IncrementalSegmenter, LargeRoomsAbsorbGrowthUpToTheirAllowance) {
   EXPECT_EQ(exact.last_update().redecomposed_rooms, 1);
 }
 
+TEST(IncrementalSegmenter, ALongCorridorGrowingAtItsFarEndIsDecomposedOnlyThere) {
+  // A corridor 30 m x 2 m (60 m²) whose east end wall later shows a 0.9 m door into a 4.4 m x
+  // 6.5 m room. With partial_area 20 m² only the corridor's cells within partial_margin (3 m) of
+  // the change are decomposed with the new cells: the piece touching the rest of the corridor keeps
+  // its id, the room beyond the door is new, and the labels equal batch's on the same grid. A
+  // closed room elsewhere keeps the change from touching every room (a batch update).
+  const cv::Rect corridor(4, 100, 600, 40);
+  const cv::Rect closed_room(4, 4, 100, 60), new_room(608, 20, 88, 130), door(604, 112, 4, 18);
+  const OccupancyGrid world = walled(160, 700, {corridor, closed_room, new_room, door});
+  OccupancyGrid before = world;
+  before.cells = world.cells.clone();
+  before.cells(cv::Rect(604, 0, 96, 160)).setTo(kUnknown);
+  before.cells(cv::Rect(604, 96, 4, 48)).setTo(kOccupied);  // the end wall, door closed
+  const int new_cells = cv::countNonZero(world.cells == kFree) - cv::countNonZero(before.cells == kFree);
+
+  for (const double partial_area : {20.0, 0.0}) {
+    IncrementalOptions options;
+    options.absorb_area = 0.0;  // every change decomposed
+    options.absorb_fraction = 0.0;
+    options.partial_area = partial_area;
+    IncrementalSegmenter segmenter(options);
+    const Segmentation first = segmenter.update(before);
+    ASSERT_EQ(first.rooms.size(), 2u);
+    const int corridor_id = first.labels.at<int>(corridor.y, corridor.x);
+    const Segmentation second = segmenter.update(world);
+    expect_valid(world, second);
+    const IncrementalUpdateReport& report = segmenter.last_update();
+    ASSERT_EQ(report.kind, IncrementalUpdateReport::Kind::kIncremental) << report.reason;
+    if (partial_area == 0.0) {  // the whole corridor goes again: what the option saves
+      EXPECT_EQ(report.partial_rooms, 0);
+      EXPECT_EQ(report.region_cells, corridor.area() + new_cells);
+      continue;
+    }
+    EXPECT_EQ(report.partial_rooms, 1);
+    const int margin = static_cast<int>(std::ceil(options.partial_margin / kRes));
+    EXPECT_LE(report.region_cells, new_cells + (margin + 1) * corridor.height);
+    // The corridor beyond the window keeps its id on every cell; all of it keeps the id.
+    for (int r = corridor.y; r < corridor.y + corridor.height; ++r)
+      for (int c = corridor.x; c < corridor.x + corridor.width; ++c)
+        ASSERT_EQ(second.labels.at<int>(r, c), corridor_id) << "corridor cell (" << c << ", " << r << ")";
+    // The same rooms as batch, cell for cell: the corridor and the new room parted at the door.
+    const Segmentation batch = segment(world, options.segment);
+    ASSERT_EQ(batch.rooms.size(), 3u);
+    ASSERT_EQ(second.rooms.size(), 3u);
+    const auto [precision, recall] = agreement(second.labels, batch.labels);
+    EXPECT_DOUBLE_EQ(precision, 1.0);
+    EXPECT_DOUBLE_EQ(recall, 1.0);
+    EXPECT_EQ(passage_pairs_in(second, batch), passage_pairs(batch));
+  }
+}
+
+TEST(IncrementalSegmenter, AnIsolatedSpeckTakesTheNearestRoomWithoutADecomposition) {
+  // Two rooms; beyond the wall of the right one a ray seen through a gap leaves a line of free
+  // cells one cell wide: touching no room and gone after the 0.15 m opening, it can be no room.
+  // Without isolated_to_nearest_room its decomposition finds no free space and takes the whole
+  // map; with it, it joins the nearest room and nothing else changes.
+  const OccupancyGrid before = walled(100, 200, {cv::Rect(4, 4, 90, 80), cv::Rect(100, 4, 80, 80)});
+  const OccupancyGrid after = with_cells(before, {cv::Rect(184, 10, 1, 30)}, kFree);
+  for (const bool nearest : {true, false}) {
+    IncrementalOptions options;
+    options.segment.binarize.opening_size = 0.15;
+    options.isolated_to_nearest_room = nearest;
+    IncrementalSegmenter segmenter(options);
+    const Segmentation first = segmenter.update(before);
+    ASSERT_EQ(first.rooms.size(), 2u);
+    const int right = first.labels.at<int>(50, 150);
+    const Segmentation second = segmenter.update(after);
+    expect_valid(after, second);
+    const IncrementalUpdateReport& report = segmenter.last_update();
+    if (!nearest) {
+      EXPECT_EQ(report.kind, IncrementalUpdateReport::Kind::kBatch) << report.reason;
+      continue;
+    }
+    EXPECT_EQ(report.kind, IncrementalUpdateReport::Kind::kIncremental);
+    EXPECT_EQ(report.region_cells, 0);
+    for (int r = 10; r < 40; ++r) EXPECT_EQ(second.labels.at<int>(r, 184), right);
+    const int left = first.labels.at<int>(50, 50);
+    EXPECT_EQ(cells_by_room(second.labels).at(left), cells_by_room(first.labels).at(left));
+    EXPECT_EQ(cells_by_room(second.labels).at(right).size(), cells_by_room(first.labels).at(right).size() + 30);
+    // The same labels as batch on the same grid (ids aside).
+    const auto [precision, recall] = agreement(second.labels, segment(after, options.segment).labels);
+    EXPECT_DOUBLE_EQ(precision, 1.0);
+    EXPECT_DOUBLE_EQ(recall, 1.0);
+  }
+}
+
 TEST(IncrementalSegmenter, HintGivesTheSameResultAsAFullComparison) {
   const FloorPlan plan = floor_plan();
   IncrementalSegmenter with_hint, without_hint;
@@ -969,6 +1064,10 @@ TEST(IncrementalSegmenter, BadInputIsOneClearError) {
   IncrementalOptions no_merge;
   no_merge.merge_after = 0;
   EXPECT_THROW(IncrementalSegmenter{no_merge}, Error);
+  IncrementalOptions no_margin;
+  no_margin.partial_area = 10.0;
+  no_margin.partial_margin = 0.0;
+  EXPECT_THROW(IncrementalSegmenter{no_margin}, Error);
   IncrementalOptions covering;
   covering.segment.labels.cover_absorbed_obstacles = true;  // would label obstacle cells
   EXPECT_THROW(IncrementalSegmenter{covering}, Error);

@@ -72,6 +72,18 @@ struct IncrementalOptions {
   // they are, which on the real laser logs halves the p95 update time on intel and also lowers
   // its churn (benchmarks/README.md).
   bool neighbours_across_cuts = true;
+  // A touched room larger than partial_area (m²; 0 = off, the default) is decomposed again only
+  // within partial_margin (m) of the change: pieces touching the rest of the room keep its id
+  // and cuts; only pieces wholly inside that window may become rooms. The whole room is decomposed
+  // when the window would leave it in parts or merge another room into it. The real-log replay
+  // uses 50 m² (wall_map_incremental_options()); on the explorations it costs some images 2-3
+  // points of precision (benchmarks/README.md).
+  double partial_area = 0.0;
+  double partial_margin = 3.0;
+  // Newly free cells that touch no room and keep no binarized free space take the nearest room's
+  // label, as in batch, instead of a decomposition (which finds no free space in them and so takes
+  // the whole map). Off by default: those whole-map decompositions also pull the rooms back to batch.
+  bool isolated_to_nearest_room = false;
   // When more cells change than this fraction of the free cells (a loop closure moving the whole
   // map), every room is decomposed again: the batch result, with ids kept where rooms overlap.
   double batch_fraction = 0.5;
@@ -92,6 +104,7 @@ struct IncrementalUpdateReport {
   int redecomposed_rooms = 0; // rooms of the previous result decomposed again
   cv::Rect region;            // window in which the decomposition ran (empty if none)
   int region_cells = 0;       // free cells decomposed again
+  int partial_rooms = 0;      // rooms of the region decomposed only near the change (partial_area)
   int new_rooms = 0;          // ids handed out by this update
   int removed_rooms = 0;      // ids that disappeared
 };
@@ -107,8 +120,10 @@ struct IncrementalUpdateReport {
 // never used before, and when rooms are decomposed again each old id goes to the piece sharing the
 // most cells with it (largest overlaps first, one id per piece), so a room cut in two keeps its id
 // on its larger part (and the other part too while split_after holds the split back; a room
-// merged into another keeps its id and cells while merge_after holds the merge back). Ids are therefore stable but not contiguous (1..N is not
-// promised, unlike segment()).
+// merged into another keeps its id and cells while merge_after holds the merge back). A room
+// larger than partial_area is decomposed only near the change: its cells farther than
+// partial_margin from the changed box keep its id and its passages there stay. Ids are therefore
+// stable but not contiguous (1..N is not promised, unlike segment()).
 class IncrementalSegmenter {
  public:
   explicit IncrementalSegmenter(const IncrementalOptions& options = {});

@@ -15,8 +15,8 @@ SegmentOptions wall_map_segment_options();
 // segment as given, without the cleaning (not incremental), splits and merges held back for three
 // decompositions, since the region decompositions a real scan triggers cut and merge rooms
 // differently from one scan to the next, and only the rooms a change touches decomposed again (no
-// neighbours across passages): faster and calmer there (benchmarks/README.md, "Incremental on real
-// laser logs").
+// neighbours across passages), rooms over 50 m² only within 3 m of the change: faster and calmer
+// there (benchmarks/README.md, "Incremental on real laser logs").
 IncrementalOptions wall_map_incremental_options(const SegmentOptions& segment = wall_map_segment_options());
 
 }  // namespace topocut
