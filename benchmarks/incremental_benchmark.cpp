@@ -7,8 +7,7 @@
 //
 //   incremental_benchmark [--dataset DIR] [--variant V] [--map NAME ...] [--csv FILE]
 //                         [--batch-every N] [--no-batch] [--split-after N] [--merge-after N]
-//                         [--hysteresis H] [--partial-area M2] [--partial-margin M]
-//                         [--isolated-nearest on|off]
+//                         [--partial-area M2] [--partial-margin M] [--isolated-nearest on|off]
 //
 // Times are process CPU time (the machine may be shared), single-threaded OpenCV; the wall-clock
 // figures are printed beside them.
@@ -57,7 +56,6 @@ int run(int argc, char** argv) {
   int batch_every = 1;
   bool compare = true;
   int split_after = 0, merge_after = 0;  // 0: the segmenter's defaults
-  double hysteresis = -1.0;              // negative: the segmenter's default
   double partial_area = -1.0, partial_margin = -1.0;
   int isolated_nearest = -1;
   std::vector<std::string> rest;
@@ -71,8 +69,6 @@ int run(int argc, char** argv) {
       split_after = std::max(1, std::stoi(argv[++i]));
     } else if (arg == "--merge-after" && i + 1 < argc) {
       merge_after = std::max(1, std::stoi(argv[++i]));
-    } else if (arg == "--hysteresis" && i + 1 < argc) {
-      hysteresis = std::clamp(std::stod(argv[++i]), 0.0, 0.9);
     } else if (arg == "--partial-area" && i + 1 < argc) {
       partial_area = std::max(0.0, std::stod(argv[++i]));
     } else if (arg == "--partial-margin" && i + 1 < argc) {
@@ -95,8 +91,6 @@ int run(int argc, char** argv) {
   options.exploration.batch_every = batch_every;
   if (split_after > 0) options.exploration.incremental.split_after = split_after;
   if (merge_after > 0) options.exploration.incremental.merge_after = merge_after;
-  // Only the incremental segmenter gives merging a prior; batch ignores the hysteresis.
-  if (hysteresis >= 0.0) options.run.segment.merge.hysteresis = hysteresis;
   if (partial_area >= 0.0) options.exploration.incremental.partial_area = partial_area;
   if (partial_margin > 0.0) options.exploration.incremental.partial_margin = partial_margin;
   if (isolated_nearest >= 0) options.exploration.incremental.isolated_to_nearest_room = isolated_nearest != 0;

@@ -8,8 +8,8 @@
 //
 //   log_replay_benchmark [--batch-every N] [--settle] [--split-after N] [--merge-after N]
 //                        [--door-neighbours on|off] [--cut-neighbours on|off] [--absorb-fraction F]
-//                        [--hysteresis H] [--partial-area M2] [--partial-margin M]
-//                        [--isolated-nearest on|off] [LOG_NAME ...]   (default: intel aces csail fhw)
+//                        [--partial-area M2] [--partial-margin M] [--isolated-nearest on|off]
+//                        [LOG_NAME ...]   (default: intel aces csail fhw)
 //
 // The options after --settle override the preset (wall_map_incremental_options()) to measure a variant.
 //
@@ -50,7 +50,6 @@ struct ReplayVariant {
   int door_neighbours = -1;
   int cut_neighbours = -1;
   double absorb_fraction = -1.0;
-  double hysteresis = -1.0;
   double partial_area = -1.0;
   double partial_margin = -1.0;
   int isolated_nearest = -1;
@@ -65,7 +64,6 @@ LogFigures replay_file(const std::string& name, const std::string& path, int bat
   if (variant.door_neighbours >= 0) options.incremental.neighbours_across_doors = variant.door_neighbours != 0;
   if (variant.cut_neighbours >= 0) options.incremental.neighbours_across_cuts = variant.cut_neighbours != 0;
   if (variant.absorb_fraction >= 0.0) options.incremental.absorb_fraction = variant.absorb_fraction;
-  if (variant.hysteresis >= 0.0) options.incremental.segment.merge.hysteresis = variant.hysteresis;
   if (variant.partial_area >= 0.0) options.incremental.partial_area = variant.partial_area;
   if (variant.partial_margin > 0.0) options.incremental.partial_margin = variant.partial_margin;
   if (variant.isolated_nearest >= 0) options.incremental.isolated_to_nearest_room = variant.isolated_nearest != 0;
@@ -106,7 +104,6 @@ int main(int argc, char** argv) {
     else if (a == "--door-neighbours" && i + 1 < argc) variant.door_neighbours = std::string(argv[++i]) == "on";
     else if (a == "--cut-neighbours" && i + 1 < argc) variant.cut_neighbours = std::string(argv[++i]) == "on";
     else if (a == "--absorb-fraction" && i + 1 < argc) variant.absorb_fraction = std::max(0.0, std::atof(argv[++i]));
-    else if (a == "--hysteresis" && i + 1 < argc) variant.hysteresis = std::clamp(std::atof(argv[++i]), 0.0, 0.9);
     else if (a == "--partial-area" && i + 1 < argc) variant.partial_area = std::max(0.0, std::atof(argv[++i]));
     else if (a == "--partial-margin" && i + 1 < argc) variant.partial_margin = std::atof(argv[++i]);
     else if (a == "--isolated-nearest" && i + 1 < argc) variant.isolated_nearest = std::string(argv[++i]) == "on";

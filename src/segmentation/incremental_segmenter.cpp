@@ -1,7 +1,6 @@
 #include "topocut/segmentation/incremental_segmenter.h"
 
 #include "segmentation/passage_kind.h"
-#include "segmentation/plane_vectors.h"
 
 #include <algorithm>
 #include <climits>
@@ -255,36 +254,6 @@ struct PassageList {
 };
 
 // A polygon in window grid coordinates, in world metres.
-// Whether the rooms before this update had a border along a cut of the region (window coordinates:
-// x the window's column, y counted up from its bottom row): at three points along it, the first
-// room cell on each side within six cells belongs to different rooms more often than to one. Six
-// cells, because a cut may now run where a wall was (an opening widened) or have wandered by a
-// cell or two; new cells (kPending) and obstacles are walked over.
-CutPrior previous_border(const cv::Mat& labels, const cv::Rect& window) {
-  return [&labels, window](const Segment2& cut) {
-    auto label_at = [&](const Point2& p) {
-      const int c = static_cast<int>(std::lround(p.x)), r = window.height - 1 - static_cast<int>(std::lround(p.y));
-      return c < 0 || r < 0 || c >= window.width || r >= window.height ? 0 : labels.at<int>(window.y + r, window.x + c);
-    };
-    const Point2 d = plane::minus(cut.b, cut.a);
-    const double l = plane::length(d);
-    if (l <= 0.0) return false;
-    const Point2 n{-d.y / l, d.x / l};
-    auto room_beside = [&](const Point2& m, double side) {
-      for (int step = 1; step <= 6; ++step)
-        if (const int label = label_at({m.x + side * step * n.x, m.y + side * step * n.y}); label > 0) return label;
-      return 0;
-    };
-    int border = 0, inside = 0;
-    for (const double t : {0.25, 0.5, 0.75}) {
-      const Point2 m{cut.a.x + t * d.x, cut.a.y + t * d.y};
-      const int left = room_beside(m, 1.0), right = room_beside(m, -1.0);
-      if (left > 0 && right > 0) ++(left == right ? inside : border);
-    }
-    return border > inside;
-  };
-}
-
 PolygonWithHoles to_world_polygon(const PolygonWithHoles& window_polygon, const WindowFrame& frame) {
   PolygonWithHoles world;
   for (const Point2& v : window_polygon.outer) world.outer.push_back(frame.to_world(v));
@@ -976,8 +945,7 @@ RegionPieces IncrementalSegmenter::State::decompose_region(Region& region) {
     if (binarized_cells > 0) {
       const FreeSpacePolygons polygons = free_space_polygons(binarized, resolution, options.segment.contours);
       for (const FreeSpaceComponent& component : polygons.components)
-        found.set.append(merge_rooms(component, decompose_pieces(component, resolution, options.segment), resolution,
-                                     options.segment.merge, previous_border(labels, window)));
+        found.set.append(decompose_component(component, resolution, options.segment));
     }
     if (found.region_cells == 0 || !found.set.pieces.empty()) break;
     // Free cells but nothing left after binarization here: as batch would, take the whole map.

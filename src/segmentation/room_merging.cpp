@@ -63,12 +63,6 @@ class Merger {
     mark_furniture_cuts(polygon);
   }
 
-  // A cut along a former border merges only from door_ratio × (1 + hysteresis).
-  void apply_prior(const CutPrior& was_border) {
-    for (std::size_t k = 0; k < sides_.size(); ++k)
-      if (sides_[k].left >= 0 && was_border(set_.cuts[k])) threshold_[k] *= 1.0 + options_.hysteresis;
-  }
-
   void merge_non_doors() {
     // Greedy: the most clearly non-door-like cut first, then the scores next to the merged room
     // change (the merged room is wider or longer than its parts), so they are measured again.
@@ -85,7 +79,7 @@ class Merger {
           score[k] = door_score(static_cast<int>(k));
           fresh[k] = true;
         }
-        if (score[k] >= threshold_[k] && (best < 0 || score[k] > best_score)) {
+        if (score[k] >= options_.door_ratio && (best < 0 || score[k] > best_score)) {
           best = static_cast<int>(k);
           best_score = score[k];
         }
@@ -237,7 +231,6 @@ class Merger {
       for (const Ring& hole : set_.pieces[i].holes) add_ring(hole);
     }
     sides_.resize(set_.cuts.size());
-    threshold_.assign(set_.cuts.size(), options_.door_ratio);
     blocked_.assign(set_.cuts.size(), false);
     stuck_.assign(set_.pieces.size(), false);
     for (std::size_t k = 0; k < set_.cuts.size(); ++k) {
@@ -409,7 +402,6 @@ class Merger {
   std::vector<double> areas_;  // m² per piece
   std::vector<double> perimeters_;  // m per piece
   std::vector<Side> sides_;
-  std::vector<double> threshold_;  // per cut: the score at which it merges
   std::vector<bool> blocked_, stuck_;
   std::map<int, double> area_sum_;          // room root -> area (m², rooms of 2+ pieces)
 };
@@ -432,8 +424,6 @@ void validate(const RoomMergeOptions& options) {
   if (!finite_non_negative(options.step_ratio) || options.step_ratio >= 1.0 || !finite_non_negative(options.step_min_area) ||
       !finite_non_negative(options.step_min_wide_depth) || !finite_non_negative(options.step_wall_line_depth))
     throw Error("the width-step ratio must lie in [0, 1) and its area and depth must be non-negative numbers");
-  if (!finite_non_negative(options.hysteresis) || options.hysteresis >= 1.0)
-    throw Error("the room merging hysteresis must lie in [0, 1)");
 }
 
 PolygonWithHoles union_of_pieces(const std::vector<PolygonWithHoles>& pieces) {
@@ -514,12 +504,11 @@ PolygonWithHoles union_of_pieces(const std::vector<PolygonWithHoles>& pieces) {
 }
 
 PieceSet merge_rooms(const FreeSpaceComponent& component, const PieceSet& pieces, double resolution,
-                     const RoomMergeOptions& options, const CutPrior& prior) {
+                     const RoomMergeOptions& options) {
   validate(options);
   if (!std::isfinite(resolution) || resolution <= 0.0) throw Error("the map resolution must be a positive number");
   if (!options.enabled || pieces.pieces.size() < 2) return pieces;
   Merger merger(component.polygon, pieces, resolution, options);
-  if (prior && options.hysteresis > 0.0) merger.apply_prior(prior);
   merger.merge_non_doors();
   merger.fold_small_rooms();
   return merger.result();

@@ -320,44 +320,6 @@ TEST(IncrementalSegmenter, DoorClosingSplitsAndTheLargerPartKeepsTheId) {
   expect_untouched_stable(plan.world, first, closed, second);
 }
 
-// The floor plan with room 0's wall to the corridor opened over its middle `width` cells.
-OccupancyGrid with_room0_opened(const FloorPlan& plan, int width) {
-  OccupancyGrid grid = plan.world;
-  grid.cells = plan.world.cells.clone();
-  grid.cells(cv::Rect(plan.rooms[0].x + (plan.rooms[0].width - width) / 2, 120, width, 4)).setTo(kFree);
-  return grid;
-}
-
-TEST(IncrementalSegmenter, AFormerBorderIsHeldUntilTheOpeningIsAsWideAsTheRoom) {
-  // Room 0's door (0.9 m) widened to 3.2 m of the room's 3.5 m: batch merges room 0 into the
-  // corridor (the cut scores 0.91, above the door ratio 0.7); the incremental segmenter holds the
-  // border it had (hysteresis 0.4: a former border merges from 0.98), with its ids, while without
-  // hysteresis it merges as batch does. With the wall gone it merges too.
-  const FloorPlan plan = floor_plan();
-  const cv::Point room0(plan.rooms[0].x + 1, plan.rooms[0].y + 1), corridor(plan.corridor.x + 1, plan.corridor.y + 1);
-  const OccupancyGrid widened = with_room0_opened(plan, 64);
-  IncrementalOptions options;
-  ASSERT_DOUBLE_EQ(options.segment.merge.hysteresis, 0.4);
-  EXPECT_EQ(segment(widened, options.segment).rooms.size(), 4u);
-  for (const double hysteresis : {0.4, 0.0}) {
-    options.segment.merge.hysteresis = hysteresis;
-    IncrementalSegmenter segmenter(options);
-    const Segmentation first = segmenter.update(plan.world);
-    ASSERT_EQ(first.rooms.size(), 5u);
-    const Segmentation second = segmenter.update(widened);
-    expect_valid(widened, second);
-    EXPECT_EQ(second.rooms.size(), hysteresis > 0.0 ? 5u : 4u) << "hysteresis " << hysteresis;
-    EXPECT_EQ(second.labels.at<int>(corridor), first.labels.at<int>(corridor));
-    EXPECT_EQ(second.labels.at<int>(room0) == first.labels.at<int>(room0), hysteresis > 0.0);
-    if (hysteresis == 0.0) continue;
-    const OccupancyGrid open = with_room0_opened(plan, plan.rooms[0].width);
-    const Segmentation third = segmenter.update(open);
-    expect_valid(open, third);
-    EXPECT_EQ(third.rooms.size(), segment(open, options.segment).rooms.size());
-    EXPECT_EQ(third.labels.at<int>(room0), third.labels.at<int>(corridor));
-  }
-}
-
 // A copy of grid with the cells of every rectangle set to value.
 // A grid of obstacles (rows x cols at kRes) with the given rectangles free.
 OccupancyGrid walled(int rows, int cols, const std::vector<cv::Rect>& free) {

@@ -89,33 +89,6 @@ TEST(MergeRooms, ADoorBetweenTwoRoomsKeepsThemApart) {
   EXPECT_TRUE(has_edge(rooms.pieces[1].outer, rooms.cuts[0].a, rooms.cuts[0].b));
 }
 
-// Two 5 x 3 m rooms side by side; a 0.6 m stub of wall hangs from the top between them, so the
-// opening is 2.4 m of the rooms' 3 m width: score 0.8, above the door ratio 0.7.
-PieceSet rooms_with_a_wide_opening() {
-  PieceSet set;
-  set.pieces = {{{{0, 0}, {100, 0}, {100, 48}, {98, 48}, {98, 60}, {0, 60}}, {}},
-                {{{100, 0}, {200, 0}, {200, 60}, {102, 60}, {102, 48}, {100, 48}}, {}}};
-  set.cuts = {{{100, 0}, {100, 48}}};
-  return set;
-}
-
-TEST(MergeRooms, HysteresisKeepsAFormerBorderThatWouldMergeByAHair) {
-  const PieceSet set = rooms_with_a_wide_opening();
-  EXPECT_EQ(merge_rooms(no_component(), set, kRes).pieces.size(), 1u);
-  RoomMergeOptions options;
-  options.hysteresis = 0.3;  // a former border merges from 0.91
-  const CutPrior border = [](const Segment2&) { return true; };
-  const CutPrior no_border = [](const Segment2&) { return false; };
-  EXPECT_EQ(merge_rooms(no_component(), set, kRes, options, border).pieces.size(), 2u);
-  EXPECT_EQ(merge_rooms(no_component(), set, kRes, options, no_border).pieces.size(), 1u);
-  options.hysteresis = 0.1;  // 0.77: the 0.8 opening merges even as a former border
-  EXPECT_EQ(merge_rooms(no_component(), set, kRes, options, border).pieces.size(), 1u);
-  options.hysteresis = 0.0;
-  EXPECT_EQ(merge_rooms(no_component(), set, kRes, options, border).pieces.size(), 1u);
-  options.hysteresis = 1.0;
-  EXPECT_THROW(merge_rooms(no_component(), set, kRes, options, border), Error);
-}
-
 TEST(MergeRooms, AKnownDoorIsNeverMergedAsAWideOpening) {
   PieceSet set;
   set.pieces = {box(0, 0, 60, 40), box(60, 0, 100, 40)};

@@ -17,8 +17,7 @@
 namespace topocut {
 
 struct IncrementalOptions {
-  // The batch options, applied unchanged to every re-decomposed region, except that its merging
-  // knows where the previous rooms met (merge.hysteresis holds those borders). Not supported:
+  // The batch options, applied unchanged to every re-decomposed region. Not supported:
   // labels.cover_absorbed_obstacles (only free cells are labelled) and clean (the real-map cleaning
   // looks beyond the changed region: ray fans, the inside of the building), so it is off here.
   SegmentOptions segment = [] {

@@ -3,7 +3,6 @@
 // convex pieces (an L-shaped corridor is at least two). This stage merges pieces across cuts that
 // are not door-like and folds pieces too small to be rooms into their neighbours. Everything is
 // measured in metres, so one set of options fits every map resolution.
-#include <functional>
 #include <vector>
 
 #include "topocut/core/geometry.h"
@@ -52,19 +51,7 @@ struct RoomMergeOptions {
   // only be this many times as deep as the narrow side is wide: a room opening onto a shallow hall.
   // An L-shaped corridor's corner is as deep as the corridor is wide, so it stays one room.
   double step_wall_line_depth = 1.25;
-  // Hysteresis for a merging that knows the rooms of a previous result (merge_rooms' prior, as the
-  // incremental segmenter has them): a cut along which two rooms met before merges only when its
-  // score reaches door_ratio × (1 + hysteresis). A border decided by a hair then stays while the map
-  // grows instead of flipping with every scan. Only borders are held: a cut through what was one room
-  // is decided as in batch, so new walls still split. 0.4 holds a border up to a score of 0.98: until
-  // the opening is as wide as the narrower room, when there is no wall left to make it a border
-  // (benchmarks/README.md: the churn of the real laser logs). Without a prior (batch) it changes
-  // nothing.
-  double hysteresis = 0.4;
 };
-
-// Whether a previous result had a border between two rooms along a cut (grid coordinates).
-using CutPrior = std::function<bool(const Segment2& cut)>;
 
 // Throws Error unless the options are usable (finite, non-negative, door_ratio > 0).
 void validate(const RoomMergeOptions& options);
@@ -77,7 +64,7 @@ void validate(const RoomMergeOptions& options);
 // that do not separate two pieces (keyhole cuts) are dropped. With options.enabled false, the
 // input is returned unchanged.
 PieceSet merge_rooms(const FreeSpaceComponent& component, const PieceSet& pieces, double resolution,
-                     const RoomMergeOptions& options = {}, const CutPrior& prior = {});
+                     const RoomMergeOptions& options = {});
 
 // The union of pieces that tile a region without overlapping and meet only along whole shared
 // edges (as DuDe's pieces do): every edge traversed in both directions is removed and the rest is
