@@ -71,8 +71,8 @@ cv::Mat nearest_room(const cv::Mat& rooms) {
 
 // A diagnostic segmenter: every segment of segmenter's result relabelled with the ground-truth room
 // it overlaps most (a segment in no room: the room nearest to it), as a merging that knew people's
-// rooms would join them. With --no-merge it tells how well the pieces can score whatever the
-// merging criterion: a ceiling set by where the cuts are.
+// rooms would join them. With --no-merge it tells how well the pieces score once joined by people's
+// rooms, whatever the merging criterion: what the cuts allow (not a proven optimum of the means).
 ImageSegmenter oracle_merged(ImageSegmenter segmenter) {
   return [segmenter](const std::string& path) {
     Segmentation s = segmenter(path);
@@ -168,7 +168,7 @@ int run(std::vector<std::string> args) {
                 << dataset_options_help()
                 << "  --details              also print the per-image tables\n"
                    "  --oracle-merge         diagnostic: join segments by the ground-truth room they overlap\n"
-                   "                         most (with --no-merge: the best any merging of the pieces scores)\n"
+                   "                         most (with --no-merge: the pieces joined by people's rooms)\n"
                    "  --floor-repetitions N  contour floor repetitions per image (default 5; 0: no times)\n"
                    "  --threads N            sets on N threads (default 1; times need 1)\n"
                    "  --shared DIR           folder holding datasets/ (default " TOPOCUT_SHARED_DIR ")\n";
