@@ -18,9 +18,9 @@ IncrementalOptions wall_map_incremental_options(const SegmentOptions& segment) {
   options.merge_after = 3;
   options.neighbours_across_doors = false;
   options.neighbours_across_cuts = false;
-  // Rooms over 50 m² (corridors, halls) are decomposed only within 3 m of the change: lower
-  // update p95 on intel, aces and fhw, lower churn p95 on three logs, fewer ids, final rooms as
-  // close to batch or closer (benchmarks/README.md, partial decomposition).
+  // Rooms over 50 m² (corridors, halls) are decomposed only within 3 m of the change: lower churn
+  // p95 and fewer ids on all four logs, final rooms as close to batch or closer, lower update p95 on
+  // intel and fhw (benchmarks/README.md, partial decomposition).
   options.partial_area = 50.0;
   options.partial_margin = 3.0;
   return options;

@@ -320,7 +320,6 @@ TEST(IncrementalSegmenter, DoorClosingSplitsAndTheLargerPartKeepsTheId) {
   expect_untouched_stable(plan.world, first, closed, second);
 }
 
-// A copy of grid with the cells of every rectangle set to value.
 // A grid of obstacles (rows x cols at kRes) with the given rectangles free.
 OccupancyGrid walled(int rows, int cols, const std::vector<cv::Rect>& free) {
   OccupancyGrid grid;
@@ -330,6 +329,7 @@ OccupancyGrid walled(int rows, int cols, const std::vector<cv::Rect>& free) {
   return grid;
 }
 
+// A copy of grid with the cells of every rectangle set to value.
 OccupancyGrid with_cells(const OccupancyGrid& grid, const std::vector<cv::Rect>& rects, unsigned char value) {
   OccupancyGrid out = grid;
   out.cells = grid.cells.clone();
