@@ -1387,13 +1387,12 @@ void IncrementalSegmenter::State::keep_border_passages(const Region& region, con
     if (found.tally.cells[static_cast<std::size_t>(p)] > 0)
       region_room[static_cast<std::size_t>(found.id_of_piece[static_cast<std::size_t>(p)])] = 1;
   // A partial room's cut is in the region when its middle lies near the change.
-  const int rows = result.labels.rows;
+  const OccupancyGrid map_frame{cells, resolution, origin};  // the whole map, for world_to_cell
   auto in_region = [&](int id, const Segment2& cut) {
     const char member = region.member[static_cast<std::size_t>(id)];
     if (member != kPartial) return member != 0;
-    const double x = (0.5 * (cut.a.x + cut.b.x) - origin.x) / resolution;
-    const double y = (0.5 * (cut.a.y + cut.b.y) - origin.y) / resolution;
-    return region.near_change.contains(cv::Point(static_cast<int>(std::floor(x)), rows - 1 - static_cast<int>(std::floor(y))));
+    const Point2 middle{0.5 * (cut.a.x + cut.b.x), 0.5 * (cut.a.y + cut.b.y)};
+    return region.near_change.contains(world_to_cell(map_frame, middle));
   };
   for (std::size_t k = 0; k < result.passages.size(); ++k) {
     const Passage& passage = result.passages[k];

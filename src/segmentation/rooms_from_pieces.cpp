@@ -369,14 +369,8 @@ int piece_containing(const std::vector<PolygonWithHoles>& pieces, const Point2& 
   for (std::size_t i = 0; i < pieces.size(); ++i) {
     const Ring& outer = pieces[i].outer;
     if (outer.size() < 3) continue;
-    double x0 = outer[0].x, x1 = x0, y0 = outer[0].y, y1 = y0;
-    for (const Point2& v : outer) {
-      x0 = std::min(x0, v.x);
-      x1 = std::max(x1, v.x);
-      y0 = std::min(y0, v.y);
-      y1 = std::max(y1, v.y);
-    }
-    if (p.x < x0 || p.x > x1 || p.y < y0 || p.y > y1) continue;
+    const Box box = bounding_box(outer);
+    if (p.x < box.x0 || p.x > box.x1 || p.y < box.y0 || p.y > box.y1) continue;
     if (contains(pieces[i], p)) return static_cast<int>(i);
   }
   return -1;
