@@ -8,6 +8,7 @@
 //   incremental_benchmark [--dataset DIR] [--variant V] [--map NAME ...] [--csv FILE]
 //                         [--batch-every N] [--no-batch] [--split-after N] [--merge-after N]
 //                         [--partial-area M2] [--partial-margin M] [--isolated-nearest on|off]
+//                         [--batch-fraction F]   (F tiny, 1e-12: every update batch, ids kept by overlap)
 //
 // Times are process CPU time (the machine may be shared), single-threaded OpenCV; the wall-clock
 // figures are printed beside them.
@@ -58,6 +59,7 @@ int run(int argc, char** argv) {
   int split_after = 0, merge_after = 0;  // 0: the segmenter's defaults
   double partial_area = -1.0, partial_margin = -1.0;
   int isolated_nearest = -1;
+  double batch_fraction = -1.0;  // tiny (1e-12): every update is batch with ids kept by overlap
   std::vector<std::string> rest;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
@@ -75,6 +77,8 @@ int run(int argc, char** argv) {
       partial_margin = std::stod(argv[++i]);
     } else if (arg == "--isolated-nearest" && i + 1 < argc) {
       isolated_nearest = std::string(argv[++i]) == "on";
+    } else if (arg == "--batch-fraction" && i + 1 < argc) {
+      batch_fraction = std::stod(argv[++i]);
     } else {
       rest.push_back(arg);
     }
@@ -94,6 +98,7 @@ int run(int argc, char** argv) {
   if (partial_area >= 0.0) options.exploration.incremental.partial_area = partial_area;
   if (partial_margin > 0.0) options.exploration.incremental.partial_margin = partial_margin;
   if (isolated_nearest >= 0) options.exploration.incremental.isolated_to_nearest_room = isolated_nearest != 0;
+  if (batch_fraction > 0.0) options.exploration.incremental.batch_fraction = batch_fraction;
   const std::vector<DatasetMap> maps = select_maps(discover_dataset(arguments.dataset), arguments.run.maps);
 
   std::cout << "# Incremental segmentation during exploration\n\n"

@@ -9,7 +9,7 @@
 //   log_replay_benchmark [--batch-every N] [--settle] [--split-after N] [--merge-after N]
 //                        [--door-neighbours on|off] [--cut-neighbours on|off] [--absorb-fraction F]
 //                        [--partial-area M2] [--partial-margin M] [--isolated-nearest on|off]
-//                        [LOG_NAME ...]   (default: intel aces csail fhw)
+//                        [--batch-fraction F] [LOG_NAME ...]   (default: intel aces csail fhw)
 //
 // The options after --settle override the preset (wall_map_incremental_options()) to measure a variant.
 //
@@ -53,6 +53,7 @@ struct ReplayVariant {
   double partial_area = -1.0;
   double partial_margin = -1.0;
   int isolated_nearest = -1;
+  double batch_fraction = -1.0;  // tiny (1e-12): every update is batch with ids kept by overlap
 };
 
 LogFigures replay_file(const std::string& name, const std::string& path, int batch_every, bool settle,
@@ -67,6 +68,7 @@ LogFigures replay_file(const std::string& name, const std::string& path, int bat
   if (variant.partial_area >= 0.0) options.incremental.partial_area = variant.partial_area;
   if (variant.partial_margin > 0.0) options.incremental.partial_margin = variant.partial_margin;
   if (variant.isolated_nearest >= 0) options.incremental.isolated_to_nearest_room = variant.isolated_nearest != 0;
+  if (variant.batch_fraction > 0.0) options.incremental.batch_fraction = variant.batch_fraction;
   options.compare_batch = true;
   options.batch_every = batch_every;
   const std::vector<PosedScan> scans = posed_scans(read_carmen_log(path));
@@ -107,6 +109,7 @@ int main(int argc, char** argv) {
     else if (a == "--partial-area" && i + 1 < argc) variant.partial_area = std::max(0.0, std::atof(argv[++i]));
     else if (a == "--partial-margin" && i + 1 < argc) variant.partial_margin = std::atof(argv[++i]);
     else if (a == "--isolated-nearest" && i + 1 < argc) variant.isolated_nearest = std::string(argv[++i]) == "on";
+    else if (a == "--batch-fraction" && i + 1 < argc) variant.batch_fraction = std::atof(argv[++i]);
     else names.push_back(a);
   }
   if (names.empty()) names = {"intel", "aces", "csail", "fhw"};
