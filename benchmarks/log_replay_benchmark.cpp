@@ -91,6 +91,15 @@ LogFigures replay_file(const std::string& name, const std::string& path, int bat
 
 }  // namespace
 
+constexpr const char* kUsage =
+    "Usage: log_replay_benchmark [--batch-every N] [--settle] [--split-after N] [--merge-after N]\n"
+    "         [--door-neighbours on|off] [--cut-neighbours on|off] [--absorb-fraction F]\n"
+    "         [--partial-area M2] [--partial-margin M] [--isolated-nearest on|off]\n"
+    "         [--batch-fraction F] [LOG_NAME ...]   (default: intel aces csail fhw)\n"
+    "Replays the CARMEN logs of ../shared/datasets/carmen into the incremental segmenter (the preset of\n"
+    "`topocut walls --incremental`); the options after --settle override the preset to measure a variant.\n"
+    "--batch-fraction 1e-12 makes every update a batch one with ids kept by overlap (batch's own churn).\n";
+
 int main(int argc, char** argv) {
   topocut::keep_freed_memory_for_reuse();
   int batch_every = 1;
@@ -110,7 +119,13 @@ int main(int argc, char** argv) {
     else if (a == "--partial-margin" && i + 1 < argc) variant.partial_margin = std::atof(argv[++i]);
     else if (a == "--isolated-nearest" && i + 1 < argc) variant.isolated_nearest = std::string(argv[++i]) == "on";
     else if (a == "--batch-fraction" && i + 1 < argc) variant.batch_fraction = std::atof(argv[++i]);
-    else names.push_back(a);
+    else if (a == "--help" || a == "-h") {
+      std::printf("%s", kUsage);
+      return 0;
+    } else if (!a.empty() && a[0] == '-') {
+      std::fprintf(stderr, "log_replay_benchmark: unknown option or missing value: %s (see --help)\n", a.c_str());
+      return 2;
+    } else names.push_back(a);
   }
   if (names.empty()) names = {"intel", "aces", "csail", "fhw"};
   const std::string folder = std::string(TOPOCUT_SHARED_DIR) + "/datasets/carmen";
