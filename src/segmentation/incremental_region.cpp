@@ -1,0 +1,441 @@
+// Which rooms an update decomposes again and how: the touched rooms, their neighbours across
+// passages, large rooms only near the change (partial_area), isolated specks to the nearest room.
+#include "segmentation/incremental_state.h"
+
+#include <algorithm>
+#include <climits>
+#include <cmath>
+#include <vector>
+
+#include <opencv2/imgproc.hpp>
+
+#include "topocut/core/error.h"
+#include "topocut/map/binarize.h"
+#include "topocut/map/free_space_polygons.h"
+#include "topocut/map/rasterize.h"
+#include "topocut/segmentation/rooms_from_pieces.h"
+
+namespace topocut {
+
+using namespace incremental;
+
+namespace {
+
+// 4-connected parts of mask (nonzero) that hold a cell of ring.
+int parts_reaching(const cv::Mat& mask, const cv::Mat& ring) {
+  cv::Mat components;
+  const int n = cv::connectedComponents(mask, components, 4, CV_32S);
+  std::vector<char> reaches(static_cast<std::size_t>(n), 0);
+  for (int r = 0; r < mask.rows; ++r) {
+    const int* p = components.ptr<int>(r);
+    const unsigned char* g = ring.ptr<unsigned char>(r);
+    for (int c = 0; c < mask.cols; ++c)
+      if (g[c]) reaches[static_cast<std::size_t>(p[c])] = 1;
+  }
+  return static_cast<int>(std::count(reaches.begin() + 1, reaches.end(), 1));
+}
+
+// One pass over the region: every piece's overlap with every old room of the region, its cell
+// count, first cell, coordinate sums and bounding box. A free cell of the region without a piece
+// is a broken decomposition: thrown, never labelled 0.
+PieceTally tally_pieces(const cv::Mat& labels, const RegionPieces& found, const Region& region) {
+  const cv::Rect& window = region.window;
+  const std::vector<int>& region_ids = region.ids;
+  PieceTally t;
+  const int n_old = static_cast<int>(region_ids.size());
+  t.n_old = n_old;
+  std::vector<int> old_index(region.member.size(), -1);
+  for (int j = 0; j < n_old; ++j) old_index[static_cast<std::size_t>(region_ids[static_cast<std::size_t>(j)])] = j;
+  const std::size_t slots = static_cast<std::size_t>(found.pieces) + 1;
+  t.overlap.assign(slots * static_cast<std::size_t>(n_old + 1), 0);  // column n_old: pending
+  t.cells.assign(slots, 0);
+  t.first_cell.assign(slots, LLONG_MAX);
+  t.sum_c.assign(slots, 0);
+  t.sum_r.assign(slots, 0);
+  t.min_c.assign(slots, INT_MAX);
+  t.max_c.assign(slots, -1);
+  t.min_r.assign(slots, INT_MAX);
+  t.max_r.assign(slots, -1);
+  for (int r = 0; r < window.height; ++r) {
+    const int* l = labels.ptr<int>(window.y + r) + window.x;
+    const int* k = found.local.ptr<int>(r);
+    const unsigned char* in = found.raw.ptr<unsigned char>(r);
+    const int gr = window.y + r;
+    for (int c = 0; c < window.width; ++c) {
+      if (!in[c]) continue;
+      const int piece = k[c];
+      if (piece <= 0) throw Error("internal: a free cell of the re-decomposed region got no room");
+      const std::size_t p = static_cast<std::size_t>(piece);
+      if (t.cells[p]++ == 0) t.first_cell[p] = static_cast<long long>(r) * window.width + c;
+      const int j = l[c] > 0 ? old_index[static_cast<std::size_t>(l[c])] : n_old;
+      ++t.overlap[p * static_cast<std::size_t>(n_old + 1) + static_cast<std::size_t>(j)];
+      const int gc = window.x + c;
+      t.sum_c[p] += gc;
+      t.sum_r[p] += gr;
+      t.min_c[p] = std::min(t.min_c[p], gc);
+      t.max_c[p] = std::max(t.max_c[p], gc);
+      t.min_r[p] = std::min(t.min_r[p], gr);
+      t.max_r[p] = std::max(t.max_r[p], gr);
+    }
+  }
+  return t;
+}
+
+}  // namespace
+
+// Decomposes again the free cells of the rooms in region plus the pending cells in its window, with
+// the batch stages, and gives the pieces ids (match_ids). Updates labels, room states,
+// result.rooms and passages.
+void IncrementalSegmenter::State::redecompose(Region region, std::vector<int>& touched_rooms) {
+  if (options.isolated_to_nearest_room && region.ids.empty() && !region.whole_map &&
+      label_isolated_cells(region, touched_rooms))
+    return;
+  add_neighbour_rooms(region);
+  frame_region(region);
+  RegionPieces found;
+  while (!decompose_partially(region, found)) decompose_whole(region);
+  report_region(region, found.region_cells);
+  const cv::Rect& window = region.window;
+
+  std::vector<cv::Rect> outline_boxes;  // taken before refresh_room replaces the polygons
+  for (const RegionPieces::Remainder& rest : found.remainders) outline_boxes.push_back(outline_box(rest.id));
+  const std::vector<int> removed = retire_old_rooms(region, found);
+  const double y_offset = result.labels.rows - window.height - window.y;
+  const WindowFrame frame{origin, resolution, window, y_offset};
+  for (const int id : removed) refresh_room(id, nullptr);
+  adopt_pieces(found, frame);
+  adopt_held_rooms(found, frame);
+  trace_partial_rooms(found, window, outline_boxes);
+  // Rooms absorbed into this decomposition are refreshed here; the caller must not revive them.
+  touched_rooms.erase(std::remove_if(touched_rooms.begin(), touched_rooms.end(),
+                                     [&](int id) { return region.member[static_cast<std::size_t>(id)] != 0; }),
+                      touched_rooms.end());
+
+  // Passages: cuts on the region's border keep their outside room and find their inside one again;
+  // cuts inside the region are replaced by the new decomposition's cuts.
+  PassageList list;
+  list.passages.reserve(result.passages.size() + found.set.cuts.size());
+  keep_border_passages(region, found, frame, list);
+  add_new_passages(found, frame, list);
+  store_sorted(list);
+}
+
+// Newly free cells that touch no room and keep no binarized free space (a ray fan seen through a
+// gap, thinner than the opening) can be no room of their own: as in batch, each takes the label of
+// the nearest room (along free space, else in a straight line). Decomposing them would find no
+// free space and take the whole map. Returns false, changing nothing, when they are not such cells.
+bool IncrementalSegmenter::State::label_isolated_cells(const Region& region, std::vector<int>& touched_rooms) {
+  const cv::Rect& window = region.window;
+  cv::Mat& labels = result.labels;
+  std::vector<int> pending;
+  for (int r = window.y; r < window.y + window.height; ++r) {
+    const int* l = labels.ptr<int>(r);
+    const unsigned char* b = bin.ptr<unsigned char>(r);
+    for (int c = window.x; c < window.x + window.width; ++c) {
+      if (l[c] != kPending) continue;
+      if (b[c] != 0) return false;  // binarized free space: it may be a room
+      pending.push_back(r * labels.cols + c);
+    }
+  }
+  if (pending.empty() || free_cells <= static_cast<long long>(pending.size())) return false;
+  int* data = labels.ptr<int>(0);
+  for (const int index : pending) data[index] = 0;
+  complete_unlabelled_cells(labels, cells == kFree, pending);
+  const bool all_labelled = std::all_of(pending.begin(), pending.end(), [&](int index) { return data[index] > 0; });
+  for (const int index : pending) {
+    if (!all_labelled) {
+      data[index] = kPending;
+      continue;
+    }
+    RoomState& room = rooms[static_cast<std::size_t>(data[index])];
+    const int r = index / labels.cols, c = index % labels.cols;
+    ++room.cells;
+    room.sum_c += c;
+    room.sum_r += r;
+    room.box = unite(room.box, cv::Rect(c, r, 1, 1));
+    add_unique(touched_rooms, data[index]);
+  }
+  return all_labelled;
+}
+
+// The rooms next to the region go with it (one ring, through the passages): batch decides on
+// the cuts between them again when it finds doors and merges pieces into rooms, and can only do
+// so with both sides in view. A door found while one side was only partly seen (or cut short by
+// the region's border) is not final, hence doors too unless options say otherwise.
+void IncrementalSegmenter::State::add_neighbour_rooms(Region& region) const {
+  std::vector<int>& region_ids = region.ids;
+  std::vector<char>& in_region = region.member;
+  in_region.assign(rooms.size(), 0);
+  for (const int id : region_ids) in_region[static_cast<std::size_t>(id)] = 1;
+  const std::size_t core = region_ids.size();
+  for (std::size_t k = 0; k < result.passages.size(); ++k) {
+    if (!(passage_door[k] ? options.neighbours_across_doors : options.neighbours_across_cuts)) continue;
+    const Passage& p = result.passages[k];
+    const bool a_in = in_region[static_cast<std::size_t>(p.room_a)] != 0;
+    const bool b_in = in_region[static_cast<std::size_t>(p.room_b)] != 0;
+    if (a_in == b_in) continue;
+    const int other = a_in ? p.room_b : p.room_a;
+    if (std::find(region_ids.begin() + static_cast<std::ptrdiff_t>(core), region_ids.end(), other) == region_ids.end())
+      region_ids.push_back(other);
+  }
+  for (std::size_t k = core; k < region_ids.size(); ++k) in_region[static_cast<std::size_t>(region_ids[k])] = kWhole;
+  // A room holding back a merge and its partner are decomposed together, so that each of their
+  // decompositions votes on the merge.
+  for (std::size_t id = 1; id < rooms.size(); ++id) {
+    const int partner = rooms[id].merge_partner;
+    if (!rooms[id].alive || partner == 0 || !rooms[static_cast<std::size_t>(partner)].alive ||
+        in_region[id] == in_region[static_cast<std::size_t>(partner)])
+      continue;
+    const int missing = in_region[id] ? partner : static_cast<int>(id);
+    in_region[static_cast<std::size_t>(missing)] = kWhole;
+    region_ids.push_back(missing);
+  }
+}
+
+// The region's window: the change and every room of the region, except that a room larger than
+// partial_area whose box lies mostly beyond partial_margin of the change takes part only with its
+// cells near the change (Region::near_change), so that a long corridor costs what the change costs.
+void IncrementalSegmenter::State::frame_region(Region& region) const {
+  const cv::Rect change = region.window;
+  if (options.partial_area > 0.0 && !region.whole_map && !change.empty()) {
+    const int margin = static_cast<int>(std::ceil(options.partial_margin / resolution));
+    region.near_change = grown(change, margin, cells.size());
+    const double cell_area = resolution * resolution;
+    for (const int id : region.ids) {
+      const RoomState& room = rooms[static_cast<std::size_t>(id)];
+      // Worth it only when the window leaves out most of the room's box.
+      if (static_cast<double>(room.cells) * cell_area > options.partial_area &&
+          2 * (room.box & region.near_change).area() < room.box.area())
+        region.member[static_cast<std::size_t>(id)] = kPartial;
+    }
+  }
+  for (const int id : region.ids) {
+    const cv::Rect& box = rooms[static_cast<std::size_t>(id)].box;
+    region.window = unite(region.window, region.member[static_cast<std::size_t>(id)] == kPartial ? box & region.near_change : box);
+  }
+}
+
+// Decomposes the region and gives its pieces ids (match_ids). Returns false, changing no room,
+// when a partial room could not keep its id on its rest: it must then be decomposed whole.
+bool IncrementalSegmenter::State::decompose_partially(Region& region, RegionPieces& found) {
+  found = decompose_region(region);
+  label_pieces(region, found);
+  if (!find_kept_pieces(region, found)) return false;
+  found.tally = tally_pieces(result.labels, found, region);
+  if (!kept_pieces_are_mostly_theirs(region, found)) return false;
+  const bool partial = std::find(region.member.begin(), region.member.end(), kPartial) != region.member.end();
+  if (!partial) {
+    match_ids(region, found);
+    return true;
+  }
+  // match_ids votes on held splits and merges and hands out ids: undone if the trial fails.
+  const std::vector<RoomState> saved_rooms = rooms;
+  const int saved_next_id = next_id;
+  const IncrementalUpdateReport saved_report = report;
+  match_ids(region, found);
+  if (partial_rooms_hold_together(region, found)) return true;
+  rooms = saved_rooms;
+  next_id = saved_next_id;
+  report = saved_report;
+  return false;
+}
+
+// Every partial room of the region takes part with all its cells from now on.
+void IncrementalSegmenter::State::decompose_whole(Region& region) const {
+  for (const int id : region.ids) {
+    char& member = region.member[static_cast<std::size_t>(id)];
+    if (member != kPartial) continue;
+    member = kWhole;
+    region.window = unite(region.window, rooms[static_cast<std::size_t>(id)].box);
+  }
+}
+
+// The region's free cells (raw) and their decomposition into pieces, in window grid coordinates.
+// Where binarization leaves nothing of a region that has free cells, the region grows to the whole
+// map, as batch would take it; a map with no binarized free space at all throws.
+RegionPieces IncrementalSegmenter::State::decompose_region(Region& region) {
+  const cv::Mat& labels = result.labels;
+  std::vector<char>& in_region = region.member;
+  cv::Rect& window = region.window;
+  RegionPieces found;
+  cv::Mat& raw = found.raw;
+  cv::Mat binarized;
+  for (int attempt = 0; attempt < 2; ++attempt) {
+    raw.create(window.size(), CV_8UC1);
+    binarized.create(window.size(), CV_8UC1);
+    found.region_cells = 0;
+    int binarized_cells = 0;
+    // member[id + 1]: 255 if cells labelled id are in the region (kPending = -1 always is), 128 if
+    // only those near the change are (a partial room).
+    std::vector<unsigned char> member(rooms.size() + 1, 0);
+    member[0] = 255;
+    for (std::size_t id = 1; id < rooms.size(); ++id)
+      member[id + 1] = in_region[id] == kWhole ? 255 : in_region[id] == kPartial ? 128 : 0;
+    const unsigned char* lut = member.data() + 1;
+    const cv::Rect& near = region.near_change;
+    for (int r = 0; r < window.height; ++r) {
+      const int* l = labels.ptr<int>(window.y + r) + window.x;
+      const unsigned char* b = bin.ptr<unsigned char>(window.y + r) + window.x;
+      unsigned char* out_raw = raw.ptr<unsigned char>(r);
+      unsigned char* out_bin = binarized.ptr<unsigned char>(r);
+      const bool near_row = window.y + r >= near.y && window.y + r < near.y + near.height;
+      for (int c = 0; c < window.width; ++c) {
+        unsigned char in = lut[l[c]];  // labels are >= kPending
+        if (in == 128) in = near_row && window.x + c >= near.x && window.x + c < near.x + near.width ? 255 : 0;
+        out_raw[c] = in;
+        out_bin[c] = in & b[c];
+        found.region_cells += in & 1;
+        binarized_cells += out_bin[c] & 1;
+      }
+    }
+    found.set = PieceSet{};
+    if (binarized_cells > 0) {
+      const FreeSpacePolygons polygons = free_space_polygons(binarized, resolution, options.segment.contours);
+      for (const FreeSpaceComponent& component : polygons.components)
+        found.set.append(decompose_component(component, resolution, options.segment));
+    }
+    if (found.region_cells == 0 || !found.set.pieces.empty()) break;
+    // Free cells but nothing left after binarization here: as batch would, take the whole map.
+    if (region.whole_map || attempt == 1)
+      throw Error("no free space is left after inflating obstacles by the robot radius and filtering");
+    region.whole_map = true;
+    decompose_whole(region);
+    for (std::size_t id = 1; id < rooms.size(); ++id)
+      if (rooms[id].alive && !in_region[id]) {
+        in_region[id] = kWhole;
+        region.ids.push_back(static_cast<int>(id));
+        window = unite(window, rooms[id].box);
+      }
+    report.kind = IncrementalUpdateReport::Kind::kBatch;
+    report.reason = "no binarized free space in the changed region";
+  }
+  return found;
+}
+
+// Every free cell of the region gets its piece (index + 1 in found.local).
+void IncrementalSegmenter::State::label_pieces(const Region& region, RegionPieces& found) const {
+  found.pieces = static_cast<int>(found.set.pieces.size());
+  if (found.pieces > 0) {
+    found.local = rasterize_polygons(found.set.pieces, region.window.size());
+    fill_free_space_labels(found.local, found.raw);
+  } else {
+    found.local = cv::Mat::zeros(region.window.size(), CV_32SC1);
+  }
+}
+
+// A partial room keeps its id on every piece touching its cells outside near_change across the
+// window's edge (found.kept_by). Returns false when a piece touches two partial rooms or a partial
+// room touches none.
+bool IncrementalSegmenter::State::find_kept_pieces(const Region& region, RegionPieces& found) const {
+  found.kept_by.assign(static_cast<std::size_t>(found.pieces) + 1, 0);
+  const cv::Rect& near = region.near_change;
+  const cv::Rect& window = region.window;
+  const cv::Mat& labels = result.labels;
+  bool ok = true;
+  // A cell of a partial room outside near next to one of its cells inside: that one's piece joins it.
+  auto touch = [&](int out_r, int out_c, int in_r, int in_c) {
+    if (out_r < 0 || out_c < 0 || out_r >= labels.rows || out_c >= labels.cols) return;
+    const int id = labels.at<int>(out_r, out_c);
+    if (id <= 0 || region.member[static_cast<std::size_t>(id)] != kPartial || labels.at<int>(in_r, in_c) != id) return;
+    const int piece = found.local.at<int>(in_r - window.y, in_c - window.x);
+    int& kept = found.kept_by[static_cast<std::size_t>(std::max(piece, 0))];
+    ok = ok && piece > 0 && (kept == 0 || kept == id);
+    kept = id;
+  };
+  for (int c = near.x; c < near.x + near.width; ++c) {
+    touch(near.y - 1, c, near.y, c);
+    touch(near.y + near.height, c, near.y + near.height - 1, c);
+  }
+  for (int r = near.y; r < near.y + near.height; ++r) {
+    touch(r, near.x - 1, r, near.x);
+    touch(r, near.x + near.width, r, near.x + near.width - 1);
+  }
+  for (std::size_t id = 1; id < rooms.size() && ok; ++id)
+    ok = region.member[id] != kPartial ||
+         std::find(found.kept_by.begin(), found.kept_by.end(), static_cast<int>(id)) != found.kept_by.end();
+  return ok;
+}
+
+// A piece kept by a partial room holds no more cells of another old room than of it: else that
+// room would be merged into it only because the window's edge left no cut between them.
+bool IncrementalSegmenter::State::kept_pieces_are_mostly_theirs(const Region& region, const RegionPieces& found) const {
+  const PieceTally& t = found.tally;
+  const std::size_t columns = static_cast<std::size_t>(t.n_old) + 1;
+  std::vector<int> column(rooms.size(), -1);
+  for (int j = 0; j < t.n_old; ++j) column[static_cast<std::size_t>(region.ids[static_cast<std::size_t>(j)])] = j;
+  for (int p = 1; p <= found.pieces; ++p) {
+    const int kept = found.kept_by[static_cast<std::size_t>(p)];
+    if (kept == 0) continue;
+    const long long* overlap = &t.overlap[static_cast<std::size_t>(p) * columns];
+    const long long own = overlap[column[static_cast<std::size_t>(kept)]];
+    for (int j = 0; j < t.n_old; ++j)
+      if (overlap[j] > own) return false;
+  }
+  return true;
+}
+
+// After match_ids: each partial room must hold together where the window cut it. Looked at in
+// near_change and the ring of cells around it, its parts that reach its cells on the ring must be
+// no more after than before (a corridor crossing the window and cut in it would fall apart; parts
+// may still join outside, so this errs towards decomposing the whole room). Tallies the room's
+// cells outside near_change in found.remainders.
+bool IncrementalSegmenter::State::partial_rooms_hold_together(const Region& region, RegionPieces& found) const {
+  found.remainders.clear();
+  const cv::Rect& near = region.near_change;
+  const cv::Rect& window = region.window;
+  const cv::Mat& labels = result.labels;
+  const cv::Rect area = grown(near, 1, labels.size());
+  for (const int id : region.ids) {
+    if (region.member[static_cast<std::size_t>(id)] != kPartial) continue;
+    const RoomState& room = rooms[static_cast<std::size_t>(id)];
+    RegionPieces::Remainder rest{id, room.cells, room.sum_c, room.sum_r};
+    cv::Mat before = cv::Mat::zeros(area.size(), CV_8UC1), after = before.clone(), ring = before.clone();
+    for (int r = 0; r < area.height; ++r) {
+      const int gr = area.y + r;
+      const int* l = labels.ptr<int>(gr) + area.x;
+      const bool near_row = gr >= near.y && gr < near.y + near.height;
+      const bool window_row = gr >= window.y && gr < window.y + window.height;
+      const int* k = window_row ? found.local.ptr<int>(gr - window.y) : nullptr;
+      const unsigned char* in = window_row ? found.raw.ptr<unsigned char>(gr - window.y) : nullptr;
+      unsigned char* b = before.ptr<unsigned char>(r);
+      unsigned char* a = after.ptr<unsigned char>(r);
+      unsigned char* g = ring.ptr<unsigned char>(r);
+      for (int c = 0; c < area.width; ++c) {
+        const int gc = area.x + c;
+        const bool inside = near_row && gc >= near.x && gc < near.x + near.width;
+        b[c] = l[c] == id ? 255 : 0;
+        if (!inside) {
+          a[c] = g[c] = b[c];
+          continue;
+        }
+        if (b[c]) {  // in the region: leaves the rest
+          --rest.cells;
+          rest.sum_c -= gc;
+          rest.sum_r -= gr;
+        }
+        const int wc = gc - window.x;  // the room's cells in near are all in the window
+        a[c] = window_row && wc >= 0 && wc < window.width && in[wc] && k[wc] > 0 &&
+                       found.id_of_piece[static_cast<std::size_t>(k[wc])] == id ? 255 : 0;
+      }
+    }
+    found.remainders.push_back(rest);
+    if (parts_reaching(after, ring) > parts_reaching(before, ring)) return false;
+  }
+  return true;
+}
+
+// The report names the region as finally decomposed, and calls it batch when it took every room.
+void IncrementalSegmenter::State::report_region(const Region& region, int region_cells) {
+  report.region = region.window;
+  report.region_cells = region_cells;
+  report.redecomposed_rooms = static_cast<int>(region.ids.size());
+  report.partial_rooms = static_cast<int>(std::count(region.member.begin(), region.member.end(), kPartial));
+  bool every_room = !region.ids.empty();
+  for (std::size_t id = 1; id < rooms.size() && every_room; ++id) every_room = !rooms[id].alive || region.member[id] == kWhole;
+  if (!region.whole_map && every_room) {
+    report.kind = IncrementalUpdateReport::Kind::kBatch;
+    report.reason = "the change touched every room";
+  }
+}
+
+}  // namespace topocut

@@ -1,0 +1,210 @@
+#pragma once
+// The incremental segmenter's state and the working types of one update, shared by its three
+// source files: incremental_segmenter.cpp (frames, changes, the public class), incremental_region.cpp
+// (which rooms are decomposed again, and how) and incremental_ids.cpp (which room each new piece
+// becomes: ids, held splits and merges, polygons, passages).
+#include <algorithm>
+#include <climits>
+#include <string>
+#include <vector>
+
+#include <opencv2/core.hpp>
+
+#include "topocut/core/geometry.h"
+#include "topocut/core/occupancy_grid.h"
+#include "topocut/core/segmentation.h"
+#include "topocut/segmentation/incremental_segmenter.h"
+#include "topocut/segmentation/rooms_from_pieces.h"
+
+namespace topocut::incremental {
+
+constexpr int kPending = -1;
+
+struct RoomState {
+  bool alive = false;
+  cv::Rect box;              // contains every cell of the room (may be larger after it lost cells)
+  long long cells = 0;
+  double sum_c = 0.0;        // sums of the column and row indices of its cells, for the centroid
+  double sum_r = 0.0;
+  long long absorbed = 0;    // cells joined without a decomposition since the last one
+  int split_votes = 0;       // decompositions in a row that cut a piece off this room (held back)
+  int merge_votes = 0;       // decompositions in a row that merged this room into merge_partner (held back)
+  int merge_partner = 0;     // the room it is held apart from (0: none); decomposed together
+};
+
+inline cv::Rect grown(const cv::Rect& r, int margin, const cv::Size& size) {
+  if (r.empty()) return r;
+  return cv::Rect(r.x - margin, r.y - margin, r.width + 2 * margin, r.height + 2 * margin) &
+         cv::Rect(0, 0, size.width, size.height);
+}
+
+inline cv::Rect unite(const cv::Rect& a, const cv::Rect& b) {
+  if (a.empty()) return b;
+  if (b.empty()) return a;
+  return a | b;
+}
+
+inline void add_unique(std::vector<int>& ids, int id) {
+  if (std::find(ids.begin(), ids.end(), id) == ids.end()) ids.push_back(id);
+}
+
+// The changed cells of one update, over the window where the binarized free space may differ.
+struct ChangeMask {
+  cv::Rect window;  // the changed box grown by the binarization's reach
+  cv::Mat change;   // per window cell: kGained, kLost, kReshaped or 0
+  int changed_cells = 0;
+};
+
+// A connected blob of changed cells and the rooms it touches (old labels of its cells and of the
+// cells around its newly free cells).
+struct Blob {
+  int gained = 0;
+  int lost = 0;
+  bool structural = false;  // lost or reshaped cells: the touched rooms must be decomposed again
+  std::vector<int> touched;
+  cv::Rect box;
+  bool absorb = false;
+};
+
+// Region::member values: how a room of the region takes part in its decomposition.
+constexpr char kWhole = 1;    // every cell
+constexpr char kPartial = 2;  // only its cells in Region::near_change (a room larger than partial_area)
+
+// The old rooms and pending cells one update decomposes again.
+struct Region {
+  std::vector<int> ids;        // old rooms: those the change touched first, then their neighbours
+  std::vector<char> member;    // by room id: kWhole or kPartial if in ids, else 0
+  cv::Rect window;             // contains the pending cells and every cell of the region
+  cv::Rect near_change;        // the changed box grown by partial_margin (empty when partial_area is 0)
+  bool whole_map = false;
+};
+
+// What one pass over the re-decomposed region learns about each piece (index 1..pieces).
+struct PieceTally {
+  int n_old = 0;                   // old rooms of the region
+  std::vector<long long> overlap;  // [piece * (n_old + 1) + j]: cells shared with old room j; j = n_old: pending
+  std::vector<long long> cells, first_cell, sum_c, sum_r;
+  std::vector<int> min_c, max_c, min_r, max_r;
+};
+
+// The region's new decomposition and the ids its pieces take.
+struct RegionPieces {
+  cv::Mat raw;               // 255 where a cell of the region is free (to be labelled)
+  int region_cells = 0;
+  PieceSet set;              // pieces and cuts in window grid coordinates
+  int pieces = 0;
+  cv::Mat local;             // piece index + 1 of each cell of the window (0 outside the region)
+  PieceTally tally;
+  std::vector<int> id_of_piece;  // by piece index + 1: its room id
+  std::vector<char> reused;      // by old room id: its id went to a piece
+  std::vector<int> held_piece;   // by old room id: the piece (index + 1) in which it keeps its cells, 0 none
+  struct HeldCells {             // the cells a held room keeps, gathered as the labels are written
+    int id = 0;
+    long long cells = 0, sum_c = 0, sum_r = 0;
+    int min_c = INT_MAX, max_c = -1, min_r = INT_MAX, max_r = -1;
+  };
+  std::vector<HeldCells> held;
+  std::vector<int> kept_by;      // by piece index + 1: the partial room whose rest it touches, 0 none
+  struct Remainder {             // a partial room's cells outside near_change, which keep its id
+    int id = 0;
+    long long cells = 0;
+    double sum_c = 0.0, sum_r = 0.0;
+  };
+  std::vector<Remainder> remainders;
+
+  const Remainder* remainder(int id) const {
+    for (const Remainder& r : remainders)
+      if (r.id == id) return &r;
+    return nullptr;
+  }
+};
+
+// Window grid coordinates (pixel centres at integers, y up) against world metres.
+struct WindowFrame {
+  Point2 origin;
+  double resolution;
+  cv::Rect window;
+  double y_offset;  // rows of the map below the window
+
+  Point2 to_world(const Point2& p) const {
+    return Point2{origin.x + (p.x + window.x + 0.5) * resolution, origin.y + (p.y + y_offset + 0.5) * resolution};
+  }
+  Point2 to_window(const Point2& p) const {
+    return Point2{(p.x - origin.x) / resolution - 0.5 - window.x, (p.y - origin.y) / resolution - 0.5 - y_offset};
+  }
+};
+
+// Passages with their door flags, in the order they were found.
+struct PassageList {
+  std::vector<Passage> passages;
+  std::vector<char> doors;
+};
+
+}  // namespace topocut::incremental
+
+namespace topocut {
+
+struct IncrementalSegmenter::State {
+  // The update's working types (incremental_state.h), by their short names.
+  using RoomState = incremental::RoomState;
+  using ChangeMask = incremental::ChangeMask;
+  using Blob = incremental::Blob;
+  using Region = incremental::Region;
+  using RegionPieces = incremental::RegionPieces;
+  using WindowFrame = incremental::WindowFrame;
+  using PassageList = incremental::PassageList;
+
+  IncrementalOptions options;
+  bool initialised = false;
+  double resolution = 0.0;
+  Point2 origin;
+  cv::Mat cells;  // copy of the previous grid (CV_8UC1)
+  cv::Mat bin;    // its binarized free space (CV_8UC1, 255 free)
+  Segmentation result;               // result.labels is the state's label image
+  std::vector<RoomState> rooms{1};   // by id; index 0 unused
+  std::vector<char> passage_door;    // per result.passages entry: its cut was found as a door
+  int next_id = 1;
+  long long free_cells = 0;
+  IncrementalUpdateReport report;
+
+  const Segmentation& update(const OccupancyGrid& grid, const cv::Rect* hint);
+
+ private:
+  void start_frame(const OccupancyGrid& grid);
+  bool move_frame(const OccupancyGrid& grid, bool& restarted);
+  void recount_rooms();
+  void process(const OccupancyGrid& grid, const cv::Rect& changed, const std::string& batch_reason);
+  ChangeMask take_changes(const OccupancyGrid& grid, const cv::Rect& changed);
+  std::vector<Blob> find_blobs(const ChangeMask& mask, cv::Mat& blob_of) const;
+  Region choose_region(std::vector<Blob>& blobs, bool whole_map);
+  bool is_speck(const Blob& blob) const;
+  std::vector<int> apply_changes(const ChangeMask& mask, const cv::Mat& blob_of, const std::vector<Blob>& blobs);
+  void redecompose(Region region, std::vector<int>& touched_rooms);
+  bool label_isolated_cells(const Region& region, std::vector<int>& touched_rooms);
+  void add_neighbour_rooms(Region& region) const;
+  void frame_region(Region& region) const;
+  void decompose_whole(Region& region) const;
+  RegionPieces decompose_region(Region& region);
+  void label_pieces(const Region& region, RegionPieces& found) const;
+  bool find_kept_pieces(const Region& region, RegionPieces& found) const;
+  bool kept_pieces_are_mostly_theirs(const Region& region, const RegionPieces& found) const;
+  bool partial_rooms_hold_together(const Region& region, RegionPieces& found) const;
+  bool decompose_partially(Region& region, RegionPieces& found);
+  void trace_partial_rooms(const RegionPieces& found, const cv::Rect& window, const std::vector<cv::Rect>& outline_boxes);
+  cv::Rect outline_box(int id) const;
+  void report_region(const Region& region, int region_cells);
+  void match_ids(const Region& region, RegionPieces& found);
+  void hold_back_splits(const Region& region, RegionPieces& found);
+  void hold_back_merges(const Region& region, RegionPieces& found);
+  void adopt_held_rooms(const RegionPieces& found, const WindowFrame& frame);
+  std::vector<int> retire_old_rooms(const Region& region, RegionPieces& found);
+  void adopt_pieces(const RegionPieces& found, const WindowFrame& frame);
+  void keep_border_passages(const Region& region, const RegionPieces& found, const WindowFrame& frame,
+                            PassageList& out) const;
+  void add_new_passages(const RegionPieces& found, const WindowFrame& frame, PassageList& out) const;
+  void store_sorted(const PassageList& list);
+  void refresh_room(int id, const PolygonWithHoles* polygon);
+  Point2 room_centroid(const RoomState& room, int height) const;
+};
+
+}  // namespace topocut
