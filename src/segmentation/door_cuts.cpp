@@ -212,8 +212,9 @@ void validate(const DoorOptions& options) {
       !std::isfinite(options.min_side_width) || options.min_side_width < 0.0 || !positive(options.wall_end_probe))
     throw Error("the wall opening gap, wall thickness and wall end probe must be positive, the other opening options non-negative");
   if (!positive(options.max_wall_line) || !positive(options.wall_line_wall) || !std::isfinite(options.wall_line_straightness) ||
-      options.wall_line_straightness < 0.0 || !std::isfinite(options.wall_line_spacing) || options.wall_line_spacing < 0.0)
-    throw Error("the wall line length and wall length must be positive, the straightness and spacing non-negative");
+      options.wall_line_straightness < 0.0 || !std::isfinite(options.wall_line_spacing) || options.wall_line_spacing < 0.0 ||
+      !std::isfinite(options.wall_line_side) || options.wall_line_side < 0.0)
+    throw Error("the wall line length and wall length must be positive, the straightness, spacing and side width non-negative");
   if (!positive(options.max_island_thickness) || !std::isfinite(options.min_island_length) || options.min_island_length < 0.0)
     throw Error("the wall island thickness must be positive, its length non-negative");
 }
@@ -515,13 +516,13 @@ double ccw_angle(const Point2& from, const Point2& to) {
 
 // The wall line of corner v (on ring r, between p and q) along dir: from v to the first
 // wall met (a vertex when the hit is within a cell of one), if it starts into free space, ends on
-// ring r, is at least min_side_width long, and leaves both sides that wide.
+// ring r, is at least wall_line_side long, and leaves both sides that wide.
 std::optional<Candidate> wall_line(const DoorSearch& search, const EdgeGrid& grid, int r, const Point2& p, const Point2& v,
                                    const Point2& q, const Point2& dir) {
   // Free space at v is the sweep counter-clockwise from the edge to q round to the edge to p.
   const double a = ccw_angle(minus(q, v), dir);
   if (a < 0.05 || a > ccw_angle(minus(q, v), minus(p, v)) - 0.05) return std::nullopt;
-  const double cap = search.options.min_side_width / search.resolution;
+  const double cap = search.options.wall_line_side / search.resolution;
   int hit_edge = -1;
   const double hit = grid.cast(v, dir, search.options.max_wall_line / search.resolution, &hit_edge);
   if (!std::isfinite(hit) || hit < cap) return std::nullopt;

@@ -77,6 +77,14 @@ const std::vector<OptionRow<SegmentSettings>>& segment_option_rows() {
       on_off("no-wall-lines", [](auto& s) -> auto& { return s.switches.no_wall_lines; },
              "no cuts where a straight wall (2.5 m or more) continued across at most 5 m of free space meets the next "
              "wall (room boundaries across wide openings, candidates that merging may remove)"),
+      number("wall-line-wall", "M", OptionRange::kPositive, [](auto& s) -> auto& { return s.options.doors.wall_line_wall; },
+             "shortest straight wall (metres) whose continuation is a wall line"),
+      number("max-wall-line", "M", OptionRange::kPositive, [](auto& s) -> auto& { return s.options.doors.max_wall_line; },
+             "longest stretch of free space (metres) a wall line crosses"),
+      number("wall-line-spacing", "M", OptionRange::kNonNegative, [](auto& s) -> auto& { return s.options.doors.wall_line_spacing; },
+             "of two wall lines closer than this (metres) along their whole length only the shorter is kept"),
+      number("wall-line-side", "M", OptionRange::kNonNegative, [](auto& s) -> auto& { return s.options.doors.wall_line_side; },
+             "a wall line is at least this long (metres) and leaves both sides this wide"),
       on_off("no-island-cuts", [](auto& s) -> auto& { return s.switches.no_island_cuts; },
              "no door-like cuts from the outline to a free-standing piece of wall (longer than 2.5 m, at most 0.25 m "
              "thick: a partition whose joint the sensor missed), which separate rooms only together (candidates that "

@@ -294,7 +294,7 @@ TEST(SegmentationOptions, EveryCommandTakesTheSameFlags) {
     const Result help = run_cli(dir, command, {"--help"});
     ASSERT_EQ(help.code, 0) << help.err;
     for (const std::string flag : {"--concavity M (=", "--parity", "--door-width M (=", "--no-merge", "--opening M (=",
-                                   "--min-room-area M2 (=", "--no-furniture-rule", "--no-wall-lines", "--no-island-cuts", "--oversegment F (=0.5)"})
+                                   "--min-room-area M2 (=", "--no-furniture-rule", "--no-wall-lines", "--wall-line-side M (=1)", "--no-island-cuts", "--oversegment F (=0.5)"})
       EXPECT_NE(help.out.find(flag), std::string::npos) << flag << " in\n" << help.out;
     EXPECT_EQ(help.out.find("00000000"), std::string::npos) << help.out;  // no 0.050000000000000003
     if (command != "walls") {

@@ -167,6 +167,25 @@ TEST(WallLines, TheWideRoomsTopWallIsDrawnOnAcrossTheOpening) {
   EXPECT_TRUE(find_wall_line_cuts(room_on_a_wider_room(), kRes, with_wall_lines(), lines).empty());
 }
 
+TEST(WallLines, LengthLimitsDecideWhichWallsAreDrawnOn) {
+  // The narrow room's left wall continued down crosses 6 m of floor: a line once max_wall_line
+  // allows it. A side limit longer than the 3.5 m top-wall line leaves that one out.
+  DoorOptions far = with_wall_lines();
+  far.max_wall_line = 8.0;
+  const std::vector<Segment2> lines = find_wall_line_cuts(room_on_a_wider_room(), kRes, far, {});
+  ASSERT_EQ(lines.size(), 2u);
+  EXPECT_DOUBLE_EQ(std::max(distance(lines[0].a, lines[0].b), distance(lines[1].a, lines[1].b)), 120.0);
+  DoorOptions wide_sides = with_wall_lines();
+  wide_sides.wall_line_side = 4.0;
+  EXPECT_TRUE(find_wall_line_cuts(room_on_a_wider_room(), kRes, wide_sides, {}).empty());
+  DoorOptions long_wall = with_wall_lines();
+  long_wall.wall_line_wall = 5.0;  // the top wall is 4.5 m
+  EXPECT_TRUE(find_wall_line_cuts(room_on_a_wider_room(), kRes, long_wall, {}).empty());
+  DoorOptions bad = with_wall_lines();
+  bad.wall_line_side = -1.0;
+  EXPECT_THROW(find_wall_line_cuts(room_on_a_wider_room(), kRes, bad, {}), Error);
+}
+
 TEST(WallLines, ThePartitionsTwoFacesGiveOneLineAcrossTheCorridor) {
   // Two 7 m deep rooms open onto a 3 m corridor, split by a 0.8 m partition (x in [192, 208]): each
   // face continued across the corridor is a wall line, but the strip between them is no room.

@@ -41,6 +41,12 @@ TEST(SegmentOptionRows, NamesAreUniqueAndEveryRowReachesTheOptions) {
   EXPECT_EQ(given({{"oversegment", 1.0}}).oversegment, 1.0);
   EXPECT_FALSE(given({{"trivial", 1}}).decompose);
   EXPECT_FALSE(given({{"no-clean", 1}}).clean);
+  const SegmentOptions lines = given({{"wall-line-wall", 0.3}, {"max-wall-line", 30.0}, {"wall-line-spacing", 0.1}, {"wall-line-side", 0.3}});
+  EXPECT_EQ(lines.doors.wall_line_wall, 0.3);
+  EXPECT_EQ(lines.doors.max_wall_line, 30.0);
+  EXPECT_EQ(lines.doors.wall_line_spacing, 0.1);
+  EXPECT_EQ(lines.doors.wall_line_side, 0.3);
+  EXPECT_EQ(lines.doors.min_side_width, DoorOptions{}.min_side_width);  // wall openings keep theirs
   SegmentSettings settings;
   EXPECT_THROW(set_option(row("oversegment"), settings, 2.0, "--oversegment"), Error);
 }

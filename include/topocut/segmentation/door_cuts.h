@@ -53,7 +53,7 @@ struct DoorOptions {
   double min_island_length = 2.5;
   // Wall lines (find_wall_line_cuts): from a corner, a straight wall at least wall_line_wall long
   // (every point within wall_line_straightness of its line) continued across at most max_wall_line
-  // metres of free space to the next wall, as people draw room boundaries across wide openings. Of
+  // metres of free space to the next wall (at least wall_line_side long, leaving both sides that wide), as people draw room boundaries across wide openings. Of
   // two lines closer than wall_line_spacing along their whole length (the two faces of a partition
   // continued across a corridor) only the shorter is kept: the strip between them is no room.
   bool wall_lines = true;
@@ -61,6 +61,8 @@ struct DoorOptions {
   double wall_line_wall = 2.5;
   double wall_line_straightness = 0.2;
   double wall_line_spacing = 2.5;
+  // A wall line is at least this long (metres) and leaves both of its sides this wide.
+  double wall_line_side = 1.0;
 };
 
 // Throws Error unless the options are usable.
@@ -82,7 +84,7 @@ std::vector<Segment2> find_island_cuts(const PolygonWithHoles& polygon, double r
 
 // Candidate room boundaries beside the doors (empty unless options.wall_lines): from every reflex
 // corner, each of its straight walls (options.wall_line_*) continued to the first wall of the same
-// ring within options.max_wall_line metres, at least options.min_side_width long and leaving both
+// ring within options.max_wall_line metres, at least options.wall_line_side long and leaving both
 // sides that wide; shortest first, none crossing a door or another, none within
 // options.wall_line_spacing of a shorter one along its whole length. Doors are not repeated.
 std::vector<Segment2> find_wall_line_cuts(const PolygonWithHoles& polygon, double resolution, const DoorOptions& options,
