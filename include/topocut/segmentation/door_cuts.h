@@ -53,9 +53,10 @@ struct DoorOptions {
   double min_island_length = 2.5;
   // Wall lines (find_wall_line_cuts): from a corner, a straight wall at least wall_line_wall long
   // (every point within wall_line_straightness of its line) continued across at most max_wall_line
-  // metres of free space to the next wall (at least wall_line_side long, leaving both sides that wide), as people draw room boundaries across wide openings. Of
-  // two lines closer than wall_line_spacing along their whole length (the two faces of a partition
-  // continued across a corridor) only the shorter is kept: the strip between them is no room.
+  // metres of free space to the next wall (at least wall_line_side long, leaving both sides that
+  // wide), as people draw room boundaries across wide openings. Of two lines closer than
+  // wall_line_spacing along their whole length (the two faces of a partition continued across a
+  // corridor) only the shorter is kept: the strip between them is no room.
   bool wall_lines = true;
   double max_wall_line = 5.0;
   double wall_line_wall = 2.5;
