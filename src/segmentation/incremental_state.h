@@ -18,8 +18,10 @@
 
 namespace topocut::incremental {
 
+// Label of a newly free cell that waits, within one update, for the room it will belong to.
 constexpr int kPending = -1;
 
+// What the state keeps per room id beside result.rooms: its cells' box, count and sums, and its holds.
 struct RoomState {
   bool alive = false;
   cv::Rect box;              // contains every cell of the room (may be larger after it lost cells)
