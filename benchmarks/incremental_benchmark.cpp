@@ -63,7 +63,17 @@ int run(int argc, char** argv) {
   std::vector<std::string> rest;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
-    if (arg == "--batch-every" && i + 1 < argc) {
+    if (arg == "--help" || arg == "-h") {
+      std::cout << "Usage: incremental_benchmark [--batch-every N] [--no-batch] [--split-after N] [--merge-after N]\n"
+                   "         [--partial-area M2] [--partial-margin M] [--isolated-nearest on|off] [--batch-fraction F]\n"
+                   "         [dataset options]\n"
+                   "A simulated robot explores every Bormann image; each update is segmented incrementally and by\n"
+                   "batch (every --batch-every'th); prints times, the rooms' stability and the final quality.\n"
+                   "--batch-fraction 1e-12 makes every update a batch one with ids kept by overlap (batch's own churn).\n\n"
+                   "Dataset options (as topocut evaluate):\n"
+                << dataset_options_help();
+      return 0;
+    } else if (arg == "--batch-every" && i + 1 < argc) {
       batch_every = std::stoi(argv[++i]);
     } else if (arg == "--no-batch") {
       compare = false;

@@ -167,6 +167,16 @@ Segmentation time_stages(const std::string& path, const MapLoadOptions& load, co
   return s;
 }
 
+constexpr const char* kUsage =
+    "Usage: segment_stages_benchmark [--repeat N] [--maps DIR] [--map NAME ...] [--variant plain|furnished|all]\n"
+    "         [--unexplored N] [--no-crop] [--quality]\n"
+    "         [--concavity M] [--parity] [--no-merge] [--door-ratio R] [--width-depth M] [--min-room-area M2]\n"
+    "         [--min-room-width M] [--no-cover] [--min-hole-area M2] [--no-gaps] [--max-gap M] [--gap-side M]\n"
+    "         [--wall-thickness M] [--gap-wall M] [--no-doors] [--door-max M] [--door-side-ratio R]\n"
+    "         [--door-depth M] [--door-turn RAD] [--simplify CELLS]\n"
+    "The least CPU time of each stage of `topocut segment` over --repeat runs, per Bormann image (or per\n"
+    "map of --maps DIR), beside the contour floor; --quality also scores each image against its ground truth.\n";
+
 int run(const std::vector<std::string>& args) {
   int repeat = 3;
   std::vector<std::string> names;
@@ -182,7 +192,10 @@ int run(const std::vector<std::string>& args) {
       if (i + 1 >= args.size()) throw Error(a + " needs a value");
       return args[++i];
     };
-    if (a == "--repeat") {
+    if (a == "--help" || a == "-h") {
+      std::cout << kUsage;
+      return 0;
+    } else if (a == "--repeat") {
       repeat = std::max(1, std::stoi(value()));
     } else if (a == "--unexplored") {
       unexplored = std::stoi(value());

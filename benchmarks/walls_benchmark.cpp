@@ -180,7 +180,16 @@ int main(int argc, char** argv) {
     if (a == "--pictures" && i + 1 < argc) pictures = argv[++i];
     else if (a == "--methods") methods = true;
     else if (a == "--sweep") sweep = true;
-    else names.push_back(a);
+    else if (a == "--help" || a == "-h") {
+      std::printf("Usage: walls_benchmark [--pictures DIR] [--methods] [--sweep] [LOG ...]\n"
+                  "LOG: intel, aces, csail or fhw (default: all four). Walls from the shared CARMEN logs: their\n"
+                  "fidelity to the raw hits and the time from file to rooms; --methods compares the five line\n"
+                  "extractors, --sweep the labeling cell and line support, --pictures writes DIR/walls_<log>.png.\n");
+      return 0;
+    } else if (!a.empty() && a[0] == '-') {
+      std::fprintf(stderr, "walls_benchmark: unknown option or missing value: %s (see --help)\n", a.c_str());
+      return 2;
+    } else names.push_back(a);
   }
   if (names.empty()) names = {"intel", "aces", "csail", "fhw"};
   const std::string folder = std::string(TOPOCUT_SHARED_DIR) + "/datasets/carmen";
