@@ -5,10 +5,7 @@
 // incremental median <= 1 ms and p95 <= 5 ms per update, >= 5x faster than batch on the same updates,
 // final precision and recall within 1.5 points of batch, state proportional to the map.
 //
-//   incremental_benchmark [--dataset DIR] [--variant V] [--map NAME ...] [--csv FILE]
-//                         [--batch-every N] [--no-batch] [--split-after N] [--merge-after N]
-//                         [--partial-area M2] [--partial-margin M] [--isolated-nearest on|off]
-//                         [--batch-fraction F]   (F tiny, 1e-12: every update batch, ids kept by overlap)
+// Options: printed by --help (run()).
 //
 // Times are process CPU time (the machine may be shared), single-threaded OpenCV; the wall-clock
 // figures are printed beside them.

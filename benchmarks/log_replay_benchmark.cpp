@@ -6,12 +6,7 @@
 // the targets: update p95 <= 5 ms, incremental >= 5x faster than batch (total time on the same
 // updates), churn median 0 and p95 <= 1 % of the labelled cells.
 //
-//   log_replay_benchmark [--batch-every N] [--settle] [--split-after N] [--merge-after N]
-//                        [--door-neighbours on|off] [--cut-neighbours on|off] [--absorb-fraction F]
-//                        [--partial-area M2] [--partial-margin M] [--isolated-nearest on|off]
-//                        [--batch-fraction F] [LOG_NAME ...]   (default: intel aces csail fhw)
-//
-// The options after --settle override the preset (wall_map_incremental_options()) to measure a variant.
+// Options: kUsage below (printed by --help).
 //
 // Times are process CPU time, single-threaded OpenCV; wall clock beside.
 #include <algorithm>

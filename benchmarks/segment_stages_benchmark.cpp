@@ -14,12 +14,7 @@
 // temporary folder; --no-crop runs the stages on the whole grid instead of segmentation_box(), as
 // segment() did before it cropped.
 //
-// Usage: segment_stages_benchmark [--repeat N] [--maps DIR] [--map NAME ...] [--variant plain|furnished|all]
-//                                 [--unexplored N] [--no-crop]
-//                                 [--concavity M] [--parity] [--quality] [--no-merge]
-//                                 [--door-ratio R] [--width-depth M] [--min-room-area M2]
-//                                 [--min-room-width M] [--no-doors] [--door-max M]
-//                                 [--door-side-ratio R] [--door-depth M] [--door-turn RAD] [--simplify CELLS]
+// Options: kUsage below (printed by --help).
 #include <time.h>
 #include <unistd.h>
 

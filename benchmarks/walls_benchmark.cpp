@@ -1,9 +1,6 @@
 // Pipeline C on the shared CARMEN logs: walls from laser scans, their fidelity to the raw hits,
 // the time from file to rooms, and the labeling speed. A plain program that prints tables.
-//   walls_benchmark [--pictures DIR] [--methods] [--sweep] [LOG ...]
-// LOG names one of intel, aces, csail, fhw (default: all four). --methods adds the comparison of the
-// five line extractors, --sweep a sweep of the labeling cell and line support; --pictures writes
-// DIR/walls_<log>.png (walls over the raw hits | rooms).
+// Options: printed by --help (main()).
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -184,7 +181,8 @@ int main(int argc, char** argv) {
       std::printf("Usage: walls_benchmark [--pictures DIR] [--methods] [--sweep] [LOG ...]\n"
                   "LOG: intel, aces, csail or fhw (default: all four). Walls from the shared CARMEN logs: their\n"
                   "fidelity to the raw hits and the time from file to rooms; --methods compares the five line\n"
-                  "extractors, --sweep the labeling cell and line support, --pictures writes DIR/walls_<log>.png.\n");
+                  "extractors, --sweep the labeling cell and line support, --pictures writes DIR/walls_<log>.png\n"
+                  "(walls over the raw hits | rooms).\n");
       return 0;
     } else if (!a.empty() && a[0] == '-') {
       std::fprintf(stderr, "walls_benchmark: unknown option or missing value: %s (see --help)\n", a.c_str());
