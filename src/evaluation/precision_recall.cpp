@@ -4,47 +4,19 @@
 #include <cstdint>
 #include <filesystem>
 #include <map>
-#include <unordered_map>
-#include <utility>
 #include <vector>
 
 #include <opencv2/imgproc.hpp>
 
+#include "evaluation/contingency.h"
 #include "topocut/core/error.h"
 #include "topocut/io/image_input.h"
 
 namespace topocut {
 
-namespace {
-
-// Brings any integer label image to CV_32SC1 so that one loop handles them all.
-cv::Mat to_int_labels(const cv::Mat& image, const std::string& what) {
-  if (image.empty()) throw Error("the " + what + " image is empty");
-  if (image.channels() != 1) {
-    throw Error("the " + what + " image must have one channel, not " + std::to_string(image.channels()));
-  }
-  const int depth = image.depth();
-  if (depth == CV_32F || depth == CV_64F || depth == CV_16F) {
-    throw Error("the " + what + " image must hold integer labels, not floating-point values");
-  }
-  cv::Mat labels;
-  if (depth == CV_32S) {
-    labels = image;
-  } else {
-    image.convertTo(labels, CV_32S);
-  }
-  double min_value = 0.0;
-  cv::minMaxLoc(labels, &min_value);
-  if (min_value < 0) throw Error("the " + what + " image holds negative labels");
-  return labels;
-}
-
-std::uint64_t pair_key(int segment, int room) {
-  return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(segment)) << 32) |
-         static_cast<std::uint32_t>(room);
-}
-
-}  // namespace
+using detail::contingency;
+using detail::counted_labels;
+using detail::to_int_labels;
 
 cv::Mat load_ground_truth(const std::string& path, const ImageLimits& limits) {
   cv::Mat image = read_image(path, "ground truth", limits);
@@ -96,78 +68,33 @@ cv::Mat ground_truth_rooms(const cv::Mat& ground_truth, const EvaluationOptions&
 
 PrecisionRecall precision_recall(const cv::Mat& segment_labels, const cv::Mat& room_labels,
                                  const EvaluationOptions& options) {
-  const cv::Mat segments = to_int_labels(segment_labels, "segmentation label");
-  const cv::Mat rooms = to_int_labels(room_labels, "ground-truth room label");
-  if (segments.size() != rooms.size()) {
-    throw Error("the segmentation is " + std::to_string(segments.cols) + "x" + std::to_string(segments.rows) +
-                " pixels but the ground truth is " + std::to_string(rooms.cols) + "x" +
-                std::to_string(rooms.rows));
-  }
-
-  // Contingency table n(s, r) = |S ∩ R| over all label pairs, label 0 included, so that the
-  // marginals give |S| and |R|. It is sparse (a segment meets few rooms), so it is a hash map
-  // filled in one pass; runs of equal pairs along a row are counted before touching the map.
-  std::unordered_map<std::uint64_t, std::int64_t> table;
-  for (int row = 0; row < segments.rows; ++row) {
-    const int* s = segments.ptr<int>(row);
-    const int* r = rooms.ptr<int>(row);
-    int run_segment = s[0];
-    int run_room = r[0];
-    std::int64_t run = 0;
-    for (int column = 0; column < segments.cols; ++column) {
-      if (s[column] == run_segment && r[column] == run_room) {
-        ++run;
-        continue;
-      }
-      table[pair_key(run_segment, run_room)] += run;
-      run_segment = s[column];
-      run_room = r[column];
-      run = 1;
-    }
-    table[pair_key(run_segment, run_room)] += run;
-  }
-
-  // Sorted copies keep every later sum in label order, so results are bit-for-bit reproducible.
-  std::vector<std::pair<std::uint64_t, std::int64_t>> cells(table.begin(), table.end());
-  std::sort(cells.begin(), cells.end());
-  std::map<int, std::int64_t> segment_size;
-  std::map<int, std::int64_t> room_size;
-  for (const auto& [key, count] : cells) {
-    segment_size[static_cast<int>(key >> 32)] += count;
-    room_size[static_cast<int>(key & 0xffffffffu)] += count;
-  }
-
-  const auto counted = [&](const std::map<int, std::int64_t>& sizes, int label) {
-    return label != 0 && sizes.at(label) > options.max_ignored_pixels;
-  };
+  // The table holds label 0 too, so that its marginals give |S| and |R| whole.
+  const detail::Contingency table =
+      contingency(to_int_labels(segment_labels, "segmentation label"), to_int_labels(room_labels, "ground-truth room label"));
   std::map<int, std::int64_t> best_room_overlap;     // per counted segment: max |S ∩ R| over counted R
   std::map<int, std::int64_t> best_segment_overlap;  // per counted room: max |S ∩ R| over counted S
-  for (const auto& [label, size] : segment_size) {
-    if (counted(segment_size, label)) best_room_overlap[label] = 0;
-  }
-  for (const auto& [label, size] : room_size) {
-    if (counted(room_size, label)) best_segment_overlap[label] = 0;
-  }
+  for (const int label : counted_labels(table.segment_size, options.max_ignored_pixels)) best_room_overlap[label] = 0;
+  for (const int label : counted_labels(table.room_size, options.max_ignored_pixels)) best_segment_overlap[label] = 0;
   if (best_segment_overlap.empty()) {
     throw Error("the ground truth has no room larger than " + std::to_string(options.max_ignored_pixels) +
                 " pixels");
   }
-  for (const auto& [key, count] : cells) {
-    const int s = static_cast<int>(key >> 32);
-    const int r = static_cast<int>(key & 0xffffffffu);
-    if (!counted(segment_size, s) || !counted(room_size, r)) continue;
-    best_room_overlap[s] = std::max(best_room_overlap[s], count);
-    best_segment_overlap[r] = std::max(best_segment_overlap[r], count);
+  for (const detail::LabelPair& pair : table.pairs) {
+    const auto s = best_room_overlap.find(pair.segment);
+    const auto r = best_segment_overlap.find(pair.room);
+    if (s == best_room_overlap.end() || r == best_segment_overlap.end()) continue;
+    s->second = std::max(s->second, pair.pixels);
+    r->second = std::max(r->second, pair.pixels);
   }
 
   PrecisionRecall result;
   result.segments = static_cast<int>(best_room_overlap.size());
   result.rooms = static_cast<int>(best_segment_overlap.size());
   for (const auto& [label, overlap] : best_room_overlap) {
-    result.segment_precision.push_back(static_cast<double>(overlap) / static_cast<double>(segment_size.at(label)));
+    result.segment_precision.push_back(static_cast<double>(overlap) / static_cast<double>(table.segment_size.at(label)));
   }
   for (const auto& [label, overlap] : best_segment_overlap) {
-    result.room_recall.push_back(static_cast<double>(overlap) / static_cast<double>(room_size.at(label)));
+    result.room_recall.push_back(static_cast<double>(overlap) / static_cast<double>(table.room_size.at(label)));
   }
   double precision_sum = 0.0;
   for (const double p : result.segment_precision) precision_sum += p;

@@ -18,6 +18,8 @@ namespace topocut {
 struct EvaluationOptions {
   int free_above = 250;          // ground-truth pixels brighter than this are free (Bormann: > 250)
   int max_ignored_pixels = 100;  // rooms and segments of at most this many pixels are ignored
+  double match_iou = 0.5;        // matched rooms: a segment and a room match when their IoU exceeds this (>= 0.5)
+  double far_distance = 0.5;     // m: a labelled cell farther than this from every ground-truth room is 'far'
 };
 
 struct PrecisionRecall {
