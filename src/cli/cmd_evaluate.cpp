@@ -1,5 +1,7 @@
-// topocut evaluate: segments every image of a Bormann-format dataset and scores it against the
-// ground truth (precision/recall as Bormann et al., ICRA 2016, define them).
+// topocut evaluate: segments every image of a Bormann-format dataset (or reads another tool's label
+// images of it) and scores it against the ground truth (precision/recall as Bormann et al., ICRA 2016,
+// define them; matched rooms; precision inside annotated space).
+#include <filesystem>
 #include <iostream>
 
 #include "cli/command.h"
@@ -96,6 +98,16 @@ std::vector<std::string> dataset_files(const std::vector<DatasetMap>& maps) {
   return files;
 }
 
+// The label images --labels may read, so that the CSV is never one of them.
+std::vector<std::string> label_files(const std::vector<DatasetMap>& maps, const std::string& folder) {
+  std::vector<std::string> files;
+  for (const DatasetMap& map : maps) {
+    for (const std::string& image : {map.plain, map.furnished})
+      files.push_back((std::filesystem::path(folder) / (std::filesystem::path(image).stem().string() + ".png")).string());
+  }
+  return files;
+}
+
 // --maps DIR: maps without ground truth, judged by the rooms no person would draw.
 int run_defects(const DatasetArguments& arguments, const std::string& folder, int floor_repetitions) {
   MapFolderOptions options;
@@ -128,12 +140,15 @@ int run(const std::vector<std::string>& args) {
        "batch, or incremental: a simulated robot (360° laser, 5 m) explores each image and every update of its map is segmented incrementally")
       ("compare-batch", po::bool_switch(), "with --mode incremental: also time batch segmentation on the same updates")
       ("batch-every", po::value<int>()->default_value(1)->value_name("N"), "with --compare-batch: every N-th update only (and the last)")
+      ("labels", po::value<std::string>()->value_name("DIR"),
+       "score the label images in DIR instead of segmenting: X.png for map X (X_furnitures.png for its furnished image), one grey or 16-bit value a region (0 none) or one colour a region (black none), restricted to the map's free pixels; a map without its image is reported as missing")
       ("maps", po::value<std::string>()->value_name("DIR"),
-       "maps without ground truth (every YAML, else image at --resolution, in DIR): count per map the rooms, the thin rooms (>= 1 m², less than half survives an opening with a 0.6 m disc: ray fans, slivers, strips) and the speck rooms (0.1 to 1 m²), time the whole segmentation and compare it with the map's contour floor")
+       "maps without ground truth (every YAML, else image at --resolution, in DIR): count per map the rooms, the thin rooms (>= 1 m², less than half survives an opening with a 0.6 m disc: ray fans, slivers, strips), the speck rooms (0.1 to 1 m²) and the open rooms (>= 1 m², more than half of their outline against walls or unknown runs into unknown cells), time the whole segmentation and compare it with the map's contour floor")
       ("floor-repetitions", po::value<int>()->default_value(3)->value_name("N"), "with --maps: repetitions of the contour floor (decode, threshold, findContours), median taken; 0: not measured");
   const auto vm = parse_options(
       "topocut evaluate [--dataset DIR] [--variant plain|furnished|all] [--csv FILE] [--concavity M]\n"
       "                        [--trivial] [--map NAME ...] [--mode batch|incremental [--compare-batch]]\n"
+      "       topocut evaluate [--dataset DIR] --labels DIR [--variant V] [--map NAME ...] [--csv FILE]\n"
       "       topocut evaluate --maps DIR [--resolution M] [--csv FILE] [segmenter options]",
       "Segments every map of a Bormann-format dataset folder (for each map X: X.png plain,\n"
       "X_furnitures.png furnished, X_gt_segmentation.png ground truth; 0.05 m/px) and scores it\n"
@@ -141,17 +156,28 @@ int run(const std::vector<std::string>& args) {
       "are free and split into rooms by 8-connected flood fill; rooms and segments of <= 100 px are\n"
       "ignored; precision = mean over segments S of max_R |S ∩ R| / |S|, recall = mean over rooms R\n"
       "of max_S |S ∩ R| / |R| (unlabelled pixels are not recalled).\n\n"
+      "Matched rooms count under- and over-segmentation alike: over the map's free pixels (regions of\n"
+      "<= 100 free px ignored), a segment and a room match when their IoU exceeds 0.5 (one-to-one);\n"
+      "F1 = TP / (TP + (FP + FN) / 2), PQ = sum of the matches' IoU / (TP + (FP + FN) / 2), with FP the\n"
+      "unmatched segments and FN the unmatched rooms; segments per room = segments / rooms (pooled over\n"
+      "maps in the summary). 'P inside' is the precision with every segment clipped to the ground\n"
+      "truth's rooms, 'far' the share of labelled pixels more than 0.5 m from every room: for maps\n"
+      "registered onto another map's ground truth, whose free cells the annotators did not all cover.\n\n"
       "Prints a per-image table (rooms found and ground-truth rooms, both counting regions > 100 px;\n"
-      "recall; precision; milliseconds for loading and segmenting the image) and a summary with\n"
-      "mean ± std over maps. --csv writes map,variant,rooms,gt_rooms,recall,precision,time_ms\n"
-      "(fractions; a failed image leaves its fields empty). Progress goes to stderr. Exits with 1\n"
-      "if any image failed (listed as FAILED in the table).\n\n"
+      "recall; precision; F1; PQ; segments per room; P inside; far; milliseconds for loading and\n"
+      "segmenting the image) and a summary per variant with mean ± std over maps. --csv writes\n"
+      "map,variant,rooms,gt_rooms,recall,precision,time_ms,matches,free_segments,free_rooms,f1,pq,\n"
+      "segments_per_room,precision_inside,far_share,status (fractions; a failed or missing image\n"
+      "leaves its fields empty). Progress goes to stderr. Exits with 1 if any image failed (listed as\n"
+      "FAILED in the table).\n\n"
+      "--labels DIR scores segmentations made by any tool instead (see --labels below): images that\n"
+      "DIR lacks are listed as missing, and the summary says over how many maps its means run.\n\n"
       "--mode incremental explores every image instead (topocut explore) and scores the final\n"
       "explored map, incremental and batch; it adds per-update times (process CPU time: median, p95,\n"
       "max) and the CSV columns updates,update_median_ms,update_p95_ms,update_max_ms,\n"
       "batch_update_median_ms (the last with --compare-batch).\n\n"
       "--maps DIR judges maps without ground truth by their defects (see --maps below); its CSV is\n"
-      "map,width,height,rooms,thin,specks,time_ms,floor_ms. A folder without furnished (or plain)\n"
+      "map,width,height,rooms,thin,specks,open,time_ms,floor_ms. A folder without furnished (or plain)\n"
       "images is evaluated with the variants it has unless --variant is given.",
       described, po::positional_options_description(), args);
   if (!vm) return 0;
@@ -165,27 +191,46 @@ int run(const std::vector<std::string>& args) {
     const int floor_repetitions = (*vm)["floor-repetitions"].as<int>();
     if (floor_repetitions < 0) throw UsageError("--floor-repetitions must not be negative");
     if (mode != "batch") throw UsageError("--maps takes no --mode (maps without ground truth are segmented in batch)");
+    if (vm->count("labels")) throw UsageError("--labels needs a dataset with ground truth, not --maps");
     return run_defects(arguments, (*vm)["maps"].as<std::string>(), floor_repetitions);
   }
 
+  const std::string labels = vm->count("labels") ? (*vm)["labels"].as<std::string>() : "";
+  if (vm->count("labels") && labels.empty()) throw UsageError("--labels needs a folder");
+  if (!labels.empty() && mode != "batch") throw UsageError("--labels takes no --mode (the label images are read, not computed)");
   const std::vector<DatasetMap> maps = select_maps(discover_dataset(arguments.dataset), arguments.run.maps);
-  if (!arguments.csv.empty()) check_outputs({arguments.csv}, dataset_files(maps));
+  if (!arguments.csv.empty()) {
+    std::vector<std::string> inputs = dataset_files(maps);
+    if (!labels.empty()) {
+      const std::vector<std::string> read = label_files(maps, labels);
+      inputs.insert(inputs.end(), read.begin(), read.end());
+    }
+    check_outputs({arguments.csv}, inputs);
+  }
   if (!arguments.variant_given) {
-    arguments.run.variants = present_variants(maps);
+    arguments.run.variants = labels.empty() ? present_variants(maps) : labelled_variants(maps, labels);
     if (arguments.run.variants.empty()) throw Error("the dataset folder has no map image (neither X.png nor X_furnitures.png)");
   }
   arguments.run.progress = [](const std::string& line) { progress(line); };
   if (mode == "incremental") return run_incremental(arguments, maps, (*vm)["compare-batch"].as<bool>(), batch_every);
-  const std::vector<ImageResult> results = run_dataset(maps, arguments.run, batch_segmenter(arguments.run));
+  const std::vector<ImageResult> results = run_dataset(
+      maps, arguments.run, labels.empty() ? batch_segmenter(arguments.run) : labels_segmenter(labels, arguments.run));
 
-  const std::string method = method_name(arguments.run.segment);
+  const std::string method = labels.empty() ? method_name(arguments.run.segment) : "labels in " + labels;
   std::cout << "Dataset " << arguments.dataset << ", " << maps.size() << " maps, method: " << method << "\n\n"
             << format_results_table(results) << "\n"
             << format_summary(results, method) << std::flush;
   if (!arguments.csv.empty()) write_file_atomically(arguments.csv, results_csv(results));
 
-  std::size_t failed = 0;
-  for (const ImageResult& result : results) failed += result.ok ? 0 : 1;
+  std::size_t failed = 0, missing = 0;
+  for (const ImageResult& result : results) {
+    failed += result.ok || result.missing ? 0 : 1;
+    missing += result.missing ? 1 : 0;
+  }
+  if (missing == results.size()) {
+    std::cerr << "topocut evaluate: error: " << labels << " holds no label image of the selected maps and variants\n";
+    return 1;
+  }
   return failure_exit_code(failed, results.size(), "images");
 }
 

@@ -21,12 +21,24 @@ constexpr const char* kGroundTruthSuffix = "_gt_segmentation.png";
 std::string status_line(std::size_t index, std::size_t total, const ImageResult& result) {
   std::string line = "[";  // appended: GCC 12 warns falsely (-Wrestrict) on "literal" + a temporary string
   line += std::to_string(index) + "/" + std::to_string(total) + "] " + result.map + " " + to_string(result.variant) + ": ";
+  if (result.missing) return line + "missing: " + result.error;
   if (!result.ok) return line + "FAILED: " + result.error;
-  return line + format("rooms %d (ground truth %d), recall %.3f, precision %.3f, %.0f ms", result.rooms,
-                       result.gt_rooms, result.recall, result.precision, result.time_ms);
+  return line + format("rooms %d (ground truth %d), recall %.3f, precision %.3f, F1 %.3f, %.0f ms", result.rooms,
+                       result.gt_rooms, result.recall, result.precision, result.matched.f1, result.time_ms);
 }
 
 }  // namespace
+
+void apply_scores(const SegmentationScores& scores, ImageResult& result) {
+  result.ok = true;
+  result.rooms = scores.overlap.segments;
+  result.gt_rooms = scores.overlap.rooms;
+  result.recall = scores.overlap.recall;
+  result.precision = scores.overlap.precision;
+  result.matched = scores.matched;
+  result.precision_inside = scores.precision_inside;
+  result.far_share = scores.far_share;
+}
 
 std::string to_string(Variant variant) { return variant == Variant::kPlain ? "plain" : "furnished"; }
 
@@ -125,12 +137,14 @@ std::vector<ImageResult> run_dataset(const std::vector<DatasetMap>& maps, const 
         const Segmentation segmentation = segmenter(map.image(variant));
         const auto stop = std::chrono::steady_clock::now();
         result.time_ms = std::chrono::duration<double, std::milli>(stop - start).count();
-        const PrecisionRecall score = precision_recall(segmentation.labels, *rooms, options.evaluation);
-        result.rooms = score.segments;
-        result.gt_rooms = score.rooms;
-        result.recall = score.recall;
-        result.precision = score.precision;
-        result.ok = true;
+        // The map's own cells say which pixels are free (matched rooms count only those) and its scale.
+        const OccupancyGrid grid = load_map(map.image(variant), options.load);
+        apply_scores(score_segmentation(segmentation.labels, *rooms, grid.cells == kFree, grid.resolution,
+                                        options.evaluation),
+                     result);
+      } catch (const MissingSegmentation& e) {
+        result.missing = true;
+        result.error = e.what();
       } catch (const std::bad_alloc&) {
         result.error = "out of memory";
       } catch (const std::exception& e) {

@@ -1,5 +1,5 @@
 // The dataset runner bound to the library's own batch pipeline. Kept apart from dataset.cpp so that
-// code which brings its own segmenter does not link load_map() and segment().
+// code which brings its own segmenter does not link segment().
 #include "topocut/evaluation/dataset.h"
 
 namespace topocut {

@@ -75,24 +75,37 @@ std::string csv_field(const std::string& text) {
 VariantSummary summarize(const std::vector<ImageResult>& results, Variant variant) {
   VariantSummary summary;
   summary.variant = variant;
-  std::vector<double> recall, precision, time;
+  std::vector<double> recall, precision, f1, pq, inside, far, time;
+  int segments = 0, rooms = 0;
   for (const ImageResult& r : results) {
     if (r.variant != variant) continue;
     ++summary.images;
     if (!r.ok) {
-      ++summary.failed;
+      ++(r.missing ? summary.missing : summary.failed);
       continue;
     }
     recall.push_back(r.recall);
     precision.push_back(r.precision);
+    f1.push_back(r.matched.f1);
+    pq.push_back(r.matched.pq);
+    inside.push_back(r.precision_inside);
+    far.push_back(r.far_share);
+    segments += r.matched.segments;
+    rooms += r.matched.rooms;
     time.push_back(r.time_ms);
   }
-  const MeanStd rs = mean_std(recall);
-  const MeanStd ps = mean_std(precision);
+  const MeanStd rs = mean_std(recall), ps = mean_std(precision), fs = mean_std(f1), qs = mean_std(pq);
   summary.recall_mean = rs.mean;
   summary.recall_std = rs.std;
   summary.precision_mean = ps.mean;
   summary.precision_std = ps.std;
+  summary.f1_mean = fs.mean;
+  summary.f1_std = fs.std;
+  summary.pq_mean = qs.mean;
+  summary.pq_std = qs.std;
+  summary.segments_per_room = rooms > 0 ? static_cast<double>(segments) / rooms : 0.0;
+  summary.precision_inside_mean = mean_std(inside).mean;
+  summary.far_share_mean = mean_std(far).mean;
   const TimeStatistics ts = time_statistics(time);
   summary.time_mean_ms = ts.mean;
   summary.time_median_ms = ts.median;
@@ -100,61 +113,80 @@ VariantSummary summarize(const std::vector<ImageResult>& results, Variant varian
   return summary;
 }
 
+namespace {
+
+std::string percent(double fraction) { return format("%.1f", 100.0 * fraction); }
+
+}  // namespace
+
 std::string format_results_table(const std::vector<ImageResult>& results) {
-  std::vector<std::vector<std::string>> rows{
-      {"map", "variant", "rooms", "gt rooms", "recall %", "precision %", "ms"}};
+  std::vector<std::vector<std::string>> rows{{"map", "variant", "rooms", "gt rooms", "recall %", "precision %", "F1 %",
+                                              "PQ %", "seg / room", "P inside %", "far %", "ms"}};
   for (const ImageResult& r : results) {
     if (!r.ok) {
-      rows.push_back({r.map, to_string(r.variant), "-", "-", "-", "-", "FAILED: " + r.error});
+      std::vector<std::string> row(rows.front().size(), "-");
+      row[0] = r.map;
+      row[1] = to_string(r.variant);
+      row.back() = r.missing ? "missing" : "FAILED: " + r.error;
+      rows.push_back(row);
       continue;
     }
-    rows.push_back({r.map, to_string(r.variant), std::to_string(r.rooms), std::to_string(r.gt_rooms),
-                    format("%.1f", 100.0 * r.recall), format("%.1f", 100.0 * r.precision),
+    rows.push_back({r.map, to_string(r.variant), std::to_string(r.rooms), std::to_string(r.gt_rooms), percent(r.recall),
+                    percent(r.precision), percent(r.matched.f1), percent(r.matched.pq),
+                    format("%.2f", r.matched.segments_per_room), percent(r.precision_inside), percent(r.far_share),
                     format("%.1f", r.time_ms)});
   }
   return markdown_table(rows);
 }
 
 std::string format_summary(const std::vector<ImageResult>& results, const std::string& method) {
-  std::vector<std::string> row{method};
+  std::vector<std::vector<std::string>> rows{{"method", "variant", "maps", "recall / precision %", "F1 / PQ %",
+                                              "segments per room", "P inside annotated %", "far %",
+                                              "time per map ms (mean / median / max)"}};
   std::string notes;
   for (const Variant variant : {Variant::kPlain, Variant::kFurnished}) {
     const VariantSummary s = summarize(results, variant);
-    const int succeeded = s.images - s.failed;
+    if (s.images == 0) continue;
+    const int succeeded = s.succeeded();
+    std::vector<std::string> row{method, to_string(variant), std::to_string(succeeded)};
     if (succeeded == 0) {
-      row.push_back("-");
+      row.resize(rows.front().size(), "-");
     } else {
       row.push_back(format("%.1f ± %.1f / %.1f ± %.1f", 100.0 * s.recall_mean, 100.0 * s.recall_std,
                            100.0 * s.precision_mean, 100.0 * s.precision_std));
+      row.push_back(format("%.1f ± %.1f / %.1f ± %.1f", 100.0 * s.f1_mean, 100.0 * s.f1_std, 100.0 * s.pq_mean,
+                           100.0 * s.pq_std));
+      row.push_back(format("%.2f", s.segments_per_room));
+      row.push_back(percent(s.precision_inside_mean));
+      row.push_back(percent(s.far_share_mean));
+      row.push_back(format("%.1f / %.1f / %.1f", s.time_mean_ms, s.time_median_ms, s.time_max_ms));
     }
-    if (s.failed > 0) {
-      notes += std::to_string(s.failed) + " of " + std::to_string(s.images) + " " + to_string(variant) +
-               " images failed; the " + to_string(variant) + " figures are over the " +
-               std::to_string(succeeded) + " that succeeded.\n";
+    rows.push_back(row);
+    if (s.failed > 0 || s.missing > 0) {
+      std::string what;
+      if (s.failed > 0) what = std::to_string(s.failed) + " failed";
+      if (s.missing > 0) what += (what.empty() ? "" : ", ") + std::to_string(s.missing) + " missing";
+      notes += "The " + to_string(variant) + " figures are over " + std::to_string(succeeded) + " of " +
+               std::to_string(s.images) + " images (" + what + ").\n";
     }
   }
-  std::vector<double> times;
-  for (const ImageResult& r : results) {
-    if (r.ok) times.push_back(r.time_ms);
-  }
-  const TimeStatistics ts = time_statistics(times);
-  row.push_back(times.empty() ? "-" : format("%.1f / %.1f / %.1f", ts.mean, ts.median, ts.max));
-  const std::string table = markdown_table(
-      {{"method", "plain recall / precision %", "furnished recall / precision %",
-        "time per map ms (mean / median / max)"},
-       row});
-  return table + notes;
+  return markdown_table(rows) + notes;
 }
 
 std::string results_csv(const std::vector<ImageResult>& results) {
-  std::string csv = "map,variant,rooms,gt_rooms,recall,precision,time_ms\n";
+  std::string csv =
+      "map,variant,rooms,gt_rooms,recall,precision,time_ms,matches,free_segments,free_rooms,f1,pq,segments_per_room,"
+      "precision_inside,far_share,status\n";
   for (const ImageResult& r : results) {
     csv += csv_field(r.map) + "," + to_string(r.variant) + ",";
     if (r.ok) {
+      const MatchedRooms& m = r.matched;
       csv += std::to_string(r.rooms) + "," + std::to_string(r.gt_rooms) + "," +
-             format("%.6f,%.6f,%.3f", r.recall, r.precision, r.time_ms);
+             format("%.6f,%.6f,%.3f,", r.recall, r.precision, r.time_ms) +
+             format("%d,%d,%d,%.6f,%.6f,%.6f,", m.matches, m.segments, m.rooms, m.f1, m.pq, m.segments_per_room) +
+             format("%.6f,%.6f,ok", r.precision_inside, r.far_share);
     } else {
-      csv += ",,,,";
+      csv += std::string(13, ',') + (r.missing ? "missing" : "failed");
     }
     csv += "\n";
   }

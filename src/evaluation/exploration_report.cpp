@@ -7,9 +7,11 @@
 
 namespace topocut {
 
-ExplorationScore score_exploration(const ExplorationRun& run, const cv::Mat& gt_rooms, const EvaluationOptions& options) {
+ExplorationScore score_exploration(const ExplorationRun& run, const cv::Mat& gt_rooms, const cv::Mat& free,
+                                   const EvaluationOptions& options) {
   auto score = [&](const Segmentation& s) {
-    return precision_recall(labels_in_frame(s.labels, run.window, gt_rooms.size()), gt_rooms, options);
+    return score_segmentation(labels_in_frame(s.labels, run.window, gt_rooms.size()), gt_rooms, free, s.resolution,
+                              options);
   };
   return {score(run.incremental), score(run.batch)};
 }
@@ -59,8 +61,8 @@ std::string format_exploration_summary(const ExplorationRun& run, const cv::Mat&
   out << "final rooms: incremental " << run.incremental.rooms.size() << ", batch " << run.batch.rooms.size() << "\n";
   if (gt_rooms.empty()) return out.str();
   const ExplorationScore score = score_exploration(run, gt_rooms);
-  const PrecisionRecall& a = score.incremental;
-  const PrecisionRecall& b = score.batch;
+  const PrecisionRecall& a = score.incremental.overlap;
+  const PrecisionRecall& b = score.batch.overlap;
   out << "ground truth " << ground_truth << ":\n"
       << "  incremental: " << format("recall %.1f %%, precision %.1f %%\n", 100.0 * a.recall, 100.0 * a.precision)
       << "  batch:       " << format("recall %.1f %%, precision %.1f %%\n", 100.0 * b.recall, 100.0 * b.precision);

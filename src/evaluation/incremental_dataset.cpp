@@ -10,18 +10,6 @@
 
 namespace topocut {
 
-namespace {
-
-void fill_scores(const PrecisionRecall& pr, ImageResult& out) {
-  out.ok = true;
-  out.rooms = pr.segments;
-  out.gt_rooms = pr.rooms;
-  out.recall = pr.recall;
-  out.precision = pr.precision;
-}
-
-}  // namespace
-
 std::vector<IncrementalImageResult> run_incremental_dataset(const std::vector<DatasetMap>& maps,
                                                             const IncrementalDatasetOptions& options) {
   std::vector<IncrementalImageResult> results;
@@ -47,9 +35,9 @@ std::vector<IncrementalImageResult> run_incremental_dataset(const std::vector<Da
         run_options.incremental.segment = options.run.segment;
         run_options.incremental.segment.clean = false;  // not incremental yet (IncrementalOptions)
         const ExplorationRun run = run_exploration(world, run_options);
-        const ExplorationScore score = score_exploration(run, gt_rooms, options.run.evaluation);
-        fill_scores(score.incremental, r.incremental);
-        fill_scores(score.batch, r.batch);
+        const ExplorationScore score = score_exploration(run, gt_rooms, world.cells == kFree, options.run.evaluation);
+        apply_scores(score.incremental, r.incremental);
+        apply_scores(score.batch, r.batch);
         r.batch.time_ms = run.batch_final_ms;
         r.scans = run.scans;
         r.updates = static_cast<int>(run.updates.size());

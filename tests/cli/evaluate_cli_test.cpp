@@ -55,6 +55,23 @@ class EvaluateCli : public ::testing::Test {
   const fs::path dir_ = temp_.path();
 };
 
+// The comma-separated fields of a CSV line without quoted fields.
+std::vector<std::string> csv_fields(const std::string& line) {
+  std::vector<std::string> fields(1);
+  for (const char c : line) {
+    if (c == ',') fields.emplace_back();
+    else fields.back() += c;
+  }
+  return fields;
+}
+
+// fields[begin, end) joined by commas.
+std::string join(const std::vector<std::string>& fields, std::size_t begin, std::size_t end) {
+  std::string text;
+  for (std::size_t i = begin; i < end; ++i) text += (i > begin ? "," : "") + fields[i];
+  return text;
+}
+
 std::size_t count_lines(const std::string& text) {
   std::size_t lines = 0;
   for (const char c : text) lines += c == '\n';
@@ -122,13 +139,27 @@ TEST_F(EvaluateCli, TrivialBaselineOnASyntheticDatasetWritesTableSummaryAndCsv) 
   // Hand-computed: closed plain is perfect; the table in room A leaves 2320 of 2400 px, so closed
   // furnished has recall (2320 / 2400 + 1) / 2; open is one segment A + door + B = 4048 px (3968
   // furnished) whose best room is A.
-  EXPECT_EQ(file_text(csv).substr(0, file_text(csv).find('\n')), "map,variant,rooms,gt_rooms,recall,precision,time_ms");
+  EXPECT_EQ(file_text(csv).substr(0, file_text(csv).find('\n')),
+            "map,variant,rooms,gt_rooms,recall,precision,time_ms,matches,free_segments,free_rooms,f1,pq,"
+            "segments_per_room,precision_inside,far_share,status");
   std::istringstream lines(file_text(csv));
   std::string line;
   std::getline(lines, line);
-  std::vector<std::string> rows;
-  while (std::getline(lines, line)) rows.push_back(line.substr(0, line.rfind(',')));  // drop time_ms
+  std::vector<std::string> rows, matched;
+  while (std::getline(lines, line)) {
+    const std::vector<std::string> fields = csv_fields(line);
+    ASSERT_EQ(fields.size(), 16u) << line;
+    rows.push_back(join(fields, 0, 6));       // up to precision
+    matched.push_back(join(fields, 7, 16));   // after time_ms
+  }
   ASSERT_EQ(rows.size(), 4u);
+  // Matched rooms: closed is perfect; open's one segment matches A (IoU 2400 / 4048 > 0.5), so TP 1,
+  // FP 0, FN 1. Inside annotated space it keeps A and B (4000 px), so its precision there is 2400 / 4000.
+  EXPECT_EQ(matched[0], "2,2,2,1.000000,1.000000,1.000000,1.000000,0.000000,ok");
+  char text[160];
+  std::snprintf(text, sizeof text, "1,1,2,%.6f,%.6f,0.500000,%.6f,0.000000,ok", 1.0 / 1.5, 2400.0 / 4048.0 / 1.5,
+                2400.0 / 4000.0);
+  EXPECT_EQ(matched[2], text);
   EXPECT_EQ(rows[0], "closed,plain,2,2,1.000000,1.000000");
   char expected[128];
   std::snprintf(expected, sizeof expected, "closed,furnished,2,2,%.6f,1.000000", (2320.0 / 2400.0 + 1.0) / 2.0);
@@ -197,6 +228,85 @@ TEST_F(EvaluateCli, MapsWithoutGroundTruthGiveTheirDefects) {
   const CliResult missing = evaluate("--maps '" + (dir_ / "nowhere").string() + "'");
   EXPECT_NE(missing.code, 0);
   EXPECT_EQ(count_lines(missing.err), 1u) << missing.err;
+}
+
+// Another tool's rooms of the synthetic dataset: closed.png a grey label image (A = 5, B = 9, A also
+// painted over the wall around it), open.png one colour over A, the door and B, closed_furnitures.png
+// 16-bit (A = 700, B = 800), none for open_furnitures.png.
+fs::path make_labels(const fs::path& dir) {
+  const fs::path labels = dir / "labels";
+  fs::create_directories(labels);
+  cv::Mat grey(60, 120, CV_8UC1, cv::Scalar(0));
+  grey(cv::Rect(2, 2, 64, 44)).setTo(5);
+  grey(cv::Rect(70, 4, 40, 40)).setTo(9);
+  EXPECT_TRUE(topocut::testing::write_test_image((labels / "closed.png").string(), grey));
+  cv::Mat colour(60, 120, CV_8UC3, cv::Scalar(0, 0, 0));
+  colour(cv::Rect(4, 4, 106, 40)).setTo(cv::Scalar(30, 200, 10));
+  EXPECT_TRUE(topocut::testing::write_test_image((labels / "open.png").string(), colour));
+  cv::Mat wide(60, 120, CV_16UC1, cv::Scalar(0));
+  wide(cv::Rect(4, 4, 60, 40)).setTo(700);
+  wide(cv::Rect(70, 4, 40, 40)).setTo(800);
+  EXPECT_TRUE(topocut::testing::write_test_image((labels / "closed_furnitures.png").string(), wide));
+  return labels;
+}
+
+TEST_F(EvaluateCli, LabelImagesOfAnotherToolAreScoredAndMissingOnesListed) {
+  const fs::path data = make_dataset();
+  const fs::path labels = make_labels(dir_);
+  const fs::path csv = dir_ / "peer.csv";
+  const CliResult run = evaluate("--dataset '" + data.string() + "' --labels '" + labels.string() + "' --csv '" +
+                                 csv.string() + "'");
+  ASSERT_EQ(run.code, 0) << run.err;
+  EXPECT_NE(run.out.find("The furnished figures are over 1 of 2 images (1 missing)."), std::string::npos) << run.out;
+  std::istringstream lines(file_text(csv));
+  std::string line;
+  std::getline(lines, line);
+  std::vector<std::vector<std::string>> rows;
+  while (std::getline(lines, line)) rows.push_back(csv_fields(line));
+  ASSERT_EQ(rows.size(), 4u);
+  // closed plain: the paint over the wall is not free, so A and B are exact.
+  EXPECT_EQ(join(rows[0], 0, 6), "closed,plain,2,2,1.000000,1.000000");
+  EXPECT_EQ(join(rows[0], 7, 16), "2,2,2,1.000000,1.000000,1.000000,1.000000,0.000000,ok");
+  // closed furnished (16-bit): the table is not free in the furnished map: recall loses it, F1 does not.
+  char text[160];
+  std::snprintf(text, sizeof text, "closed,furnished,2,2,%.6f,1.000000", (2320.0 / 2400.0 + 1.0) / 2.0);
+  EXPECT_EQ(join(rows[1], 0, 6), text);
+  EXPECT_EQ(rows[1][10], "1.000000");
+  // open plain (colour): one region over A, the door and B, as the trivial segmenter's.
+  std::snprintf(text, sizeof text, "open,plain,1,2,1.000000,%.6f", 2400.0 / 4048.0);
+  EXPECT_EQ(join(rows[2], 0, 6), text);
+  std::snprintf(text, sizeof text, "%.6f", 1.0 / 1.5);
+  EXPECT_EQ(rows[2][10], text);
+  EXPECT_EQ(join(rows[3], 0, 3) + "|" + rows[3][15], "open,furnished,|missing");
+}
+
+TEST_F(EvaluateCli, BadLabelImagesAndFoldersAreOneErrorLine) {
+  const fs::path data = make_dataset();
+  const fs::path labels = make_labels(dir_);
+  std::ofstream(labels / "open.png", std::ios::trunc) << "not a PNG";
+  const CliResult bad_image = evaluate("--dataset '" + data.string() + "' --labels '" + labels.string() + "'");
+  EXPECT_EQ(bad_image.code, 1);
+  EXPECT_NE(bad_image.out.find("FAILED"), std::string::npos) << bad_image.out;
+  EXPECT_NE(bad_image.err.find("1 of 4 images failed"), std::string::npos) << bad_image.err;
+
+  const CliResult no_folder = evaluate("--dataset '" + data.string() + "' --labels '" + (dir_ / "none").string() + "'");
+  EXPECT_EQ(no_folder.code, 1);
+  EXPECT_EQ(count_lines(no_folder.err), 1u) << no_folder.err;
+  EXPECT_NE(no_folder.err.find("does not exist"), std::string::npos) << no_folder.err;
+  EXPECT_TRUE(no_folder.out.empty()) << no_folder.out;
+
+  fs::create_directories(dir_ / "empty");
+  const CliResult empty = evaluate("--dataset '" + data.string() + "' --labels '" + (dir_ / "empty").string() + "'");
+  EXPECT_EQ(empty.code, 1);
+  EXPECT_EQ(count_lines(empty.err), 1u) << empty.err;
+
+  const CliResult nothing_asked = evaluate("--dataset '" + data.string() + "' --labels '" + labels.string() +
+                                           "' --variant furnished --map open");
+  EXPECT_EQ(nothing_asked.code, 1);
+  EXPECT_NE(nothing_asked.err.find("holds no label image"), std::string::npos) << nothing_asked.err;
+
+  EXPECT_EQ(evaluate("--maps '" + data.string() + "' --labels '" + labels.string() + "'").code, 2);
+  EXPECT_EQ(evaluate("--dataset '" + data.string() + "' --labels '" + labels.string() + "' --mode incremental").code, 2);
 }
 
 }  // namespace

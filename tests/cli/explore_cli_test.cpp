@@ -184,12 +184,13 @@ TEST_F(ExploreCli, EvaluateIncrementalModeReportsUpdatesAndCsv) {
   std::string header, line;
   std::getline(in, header);
   EXPECT_EQ(header,
-            "map,variant,rooms,gt_rooms,recall,precision,time_ms,updates,update_median_ms,update_p95_ms,update_max_ms,"
-            "batch_update_median_ms");
+            "map,variant,rooms,gt_rooms,recall,precision,time_ms,matches,free_segments,free_rooms,f1,pq,"
+            "segments_per_room,precision_inside,far_share,status,updates,update_median_ms,update_p95_ms,"
+            "update_max_ms,batch_update_median_ms");
   int rows = 0;
   while (std::getline(in, line)) {
     ++rows;
-    EXPECT_EQ(std::count(line.begin(), line.end(), ','), 11) << line;
+    EXPECT_EQ(std::count(line.begin(), line.end(), ','), 20) << line;
     EXPECT_NE(line.back(), ',') << "batch median missing: " << line;
   }
   EXPECT_EQ(rows, 4);

@@ -137,6 +137,12 @@ TEST_F(SyntheticDataset, ScoresEveryImageAndReportsFailuresAsRows) {
   EXPECT_DOUBLE_EQ(alpha_furnished.recall, (480.0 / 500.0 + 1.0) / 2.0);
   EXPECT_DOUBLE_EQ(alpha_furnished.precision, 1.0);
 
+  EXPECT_EQ(alpha_plain.matched.matches, 2);
+  EXPECT_DOUBLE_EQ(alpha_plain.matched.f1, 1.0);
+  // The table is not free in the furnished map, so room A counts its 480 free pixels: a perfect match.
+  EXPECT_EQ(alpha_furnished.matched.matches, 2);
+  EXPECT_DOUBLE_EQ(alpha_furnished.matched.pq, 1.0);
+
   // One component: A + door + B = 912 px, best room A (500 px).
   for (int i : {2, 3}) {
     ASSERT_TRUE(results[i].ok) << results[i].error;
@@ -144,6 +150,13 @@ TEST_F(SyntheticDataset, ScoresEveryImageAndReportsFailuresAsRows) {
     EXPECT_EQ(results[i].gt_rooms, 2);
     EXPECT_DOUBLE_EQ(results[i].precision, 500.0 / 912.0);
     EXPECT_DOUBLE_EQ(results[i].recall, 1.0);
+    // It still matches A (IoU 500 / 912 > 0.5): TP 1, FP 0, FN 1 (room B).
+    EXPECT_EQ(results[i].matched.matches, 1);
+    EXPECT_DOUBLE_EQ(results[i].matched.f1, 1.0 / 1.5);
+    EXPECT_DOUBLE_EQ(results[i].matched.pq, 500.0 / 912.0 / 1.5);
+    EXPECT_DOUBLE_EQ(results[i].matched.segments_per_room, 0.5);
+    EXPECT_DOUBLE_EQ(results[i].precision_inside, 500.0 / 900.0);  // the 12 door pixels are in no room
+    EXPECT_DOUBLE_EQ(results[i].far_share, 0.0);
   }
 
   EXPECT_TRUE(results[4].ok) << results[4].error;
@@ -165,9 +178,82 @@ TEST_F(SyntheticDataset, ScoresEveryImageAndReportsFailuresAsRows) {
   const double d1 = 1.0 - mean_precision, d2 = beta_precision - mean_precision;
   EXPECT_NEAR(plain.precision_std, std::sqrt((2 * d1 * d1 + d2 * d2) / 3.0), 1e-12);
 
+  EXPECT_DOUBLE_EQ(plain.f1_mean, (2.0 + 1.0 / 1.5) / 3.0);
+  EXPECT_DOUBLE_EQ(plain.segments_per_room, (2.0 + 1.0 + 1.0) / (2.0 + 2.0 + 1.0));  // pooled over the maps
+
   const VariantSummary furnished = summarize(results, Variant::kFurnished);
   EXPECT_EQ(furnished.failed, 1);
   EXPECT_DOUBLE_EQ(furnished.recall_mean, (0.98 + 1.0 + 1.0) / 3.0);
+}
+
+// Another tool's segmentations, as label images named after the maps:
+//   alpha.png: 8-bit grey, A = 3 spilling two pixels over the walls around it, B = 7;
+//   beta.png: colour, A red, B green, the door black; gamma_furnitures.png: 16-bit, A = 1000;
+//   none for delta.
+TEST_F(SyntheticDataset, ScoresLabelImagesOfAnotherToolAndReportsMissingOnes) {
+  fs::create_directories(dir_ / "labels");
+  cv::Mat grey = blank();
+  grey(cv::Rect(kRoomA.x - 2, kRoomA.y - 2, kRoomA.width + 2, kRoomA.height + 4)).setTo(3);
+  grey(kRoomB).setTo(7);
+  write("labels/alpha.png", grey);
+  cv::Mat colour(blank().size(), CV_8UC3, cv::Scalar(0, 0, 0));
+  colour(kRoomA).setTo(cv::Scalar(0, 0, 255));
+  colour(kRoomB).setTo(cv::Scalar(0, 255, 0));
+  write("labels/beta.png", colour);
+  cv::Mat wide(blank().size(), CV_16UC1, cv::Scalar(0));
+  wide(kRoomA).setTo(1000);
+  write("labels/gamma_furnitures.png", wide);
+  const std::string labels = (dir_ / "labels").string();
+
+  const std::vector<DatasetMap> maps = discover_dataset(folder());
+  DatasetRunOptions options;
+  options.variants = labelled_variants(maps, labels);
+  ASSERT_EQ(options.variants, (std::vector<Variant>{Variant::kPlain, Variant::kFurnished}));
+  const std::vector<ImageResult> results = run_dataset(maps, options, labels_segmenter(labels, options));
+  ASSERT_EQ(results.size(), 8u);
+  for (int i : {0, 2}) {  // alpha and beta plain: perfect once restricted to the free pixels
+    ASSERT_TRUE(results[i].ok) << results[i].error;
+    EXPECT_DOUBLE_EQ(results[i].recall, 1.0);
+    EXPECT_DOUBLE_EQ(results[i].precision, 1.0);
+    EXPECT_DOUBLE_EQ(results[i].matched.f1, 1.0);
+  }
+  for (int i : {1, 3, 4, 5, 6}) {  // no label image
+    EXPECT_FALSE(results[i].ok);
+    EXPECT_TRUE(results[i].missing) << results[i].error;
+  }
+  ASSERT_TRUE(results[7].ok) << results[7].error;  // gamma furnished
+  EXPECT_DOUBLE_EQ(results[7].matched.f1, 1.0);
+
+  const VariantSummary plain = summarize(results, Variant::kPlain);
+  EXPECT_EQ(plain.missing, 2);
+  EXPECT_EQ(plain.failed, 0);
+  EXPECT_EQ(plain.succeeded(), 2);
+  const std::string summary = format_summary(results, "peer");
+  EXPECT_NE(summary.find("The plain figures are over 2 of 4 images (2 missing)."), std::string::npos) << summary;
+  EXPECT_NE(format_results_table(results).find("missing"), std::string::npos);
+  EXPECT_NE(results_csv(results).find("delta,plain,,,,,,,,,,,,,,missing\n"), std::string::npos) << results_csv(results);
+}
+
+TEST_F(SyntheticDataset, BadLabelImagesFailTheirMapAndBadFoldersAreAnError) {
+  fs::create_directories(dir_ / "labels");
+  write("labels/alpha.png", cv::Mat(10, 10, CV_8UC1, cv::Scalar(1)));  // the map is 60 x 40
+  std::ofstream(dir_ / "labels" / "beta.png") << "not a PNG";
+  const std::string labels = (dir_ / "labels").string();
+  DatasetRunOptions options;
+  options.variants = {Variant::kPlain};
+  const std::vector<ImageResult> results =
+      run_dataset(select_maps(discover_dataset(folder()), {"alpha", "beta"}), options, labels_segmenter(labels, options));
+  ASSERT_EQ(results.size(), 2u);
+  EXPECT_FALSE(results[0].ok);
+  EXPECT_FALSE(results[0].missing);
+  EXPECT_NE(results[0].error.find("10x10"), std::string::npos) << results[0].error;
+  EXPECT_FALSE(results[1].ok);
+  EXPECT_FALSE(results[1].missing);
+  EXPECT_NE(results[1].error.find("beta.png"), std::string::npos) << results[1].error;
+
+  EXPECT_THROW(labels_segmenter((dir_ / "no_such_folder").string(), options), Error);
+  fs::create_directories(dir_ / "empty");
+  EXPECT_THROW(labelled_variants(discover_dataset(folder()), (dir_ / "empty").string()), Error);
 }
 
 TEST_F(SyntheticDataset, RunsOnlyTheRequestedVariants) {
@@ -245,11 +331,21 @@ TEST(DatasetReport, CsvHasExactlyTheAgreedColumns) {
   failed.map = "b,c";
   failed.variant = Variant::kFurnished;
   failed.error = "broken";
-  const std::string csv = results_csv({ok_result("a", Variant::kPlain, 0.5, 0.25, 12.5), failed});
+  ImageResult ok = ok_result("a", Variant::kPlain, 0.5, 0.25, 12.5);
+  ok.matched.matches = 2;
+  ok.matched.segments = 3;
+  ok.matched.rooms = 5;
+  ok.matched.f1 = 0.5;
+  ok.matched.pq = 0.375;
+  ok.matched.segments_per_room = 0.6;
+  ok.precision_inside = 0.75;
+  ok.far_share = 0.125;
+  const std::string csv = results_csv({ok, failed});
   EXPECT_EQ(csv,
-            "map,variant,rooms,gt_rooms,recall,precision,time_ms\n"
-            "a,plain,3,4,0.500000,0.250000,12.500\n"
-            "\"b,c\",furnished,,,,,\n");
+            "map,variant,rooms,gt_rooms,recall,precision,time_ms,matches,free_segments,free_rooms,f1,pq,"
+            "segments_per_room,precision_inside,far_share,status\n"
+            "a,plain,3,4,0.500000,0.250000,12.500,2,3,5,0.500000,0.375000,0.600000,0.750000,0.125000,ok\n"
+            "\"b,c\",furnished,,,,,,,,,,,,,,failed\n");
 }
 
 TEST(DatasetReport, SummaryShowsMeanAndStdInPercentAndCountsFailures) {
@@ -264,8 +360,8 @@ TEST(DatasetReport, SummaryShowsMeanAndStdInPercentAndCountsFailures) {
   EXPECT_NE(summary.find("method X"), std::string::npos) << summary;
   EXPECT_NE(summary.find("80.0 ± 10.0 / 90.0 ± 10.0"), std::string::npos) << summary;
   EXPECT_NE(summary.find("50.0 ± 0.0 / 50.0 ± 0.0"), std::string::npos) << summary;
-  EXPECT_NE(summary.find("20.0 / 20.0 / 30.0"), std::string::npos) << summary;
-  EXPECT_NE(summary.find("1 of 2 furnished images failed"), std::string::npos) << summary;
+  EXPECT_NE(summary.find("20.0 / 20.0 / 30.0"), std::string::npos) << summary;  // plain: 10 and 30 ms
+  EXPECT_NE(summary.find("The furnished figures are over 1 of 2 images (1 failed)."), std::string::npos) << summary;
 
   const std::string table = format_results_table(results);
   EXPECT_NE(table.find("FAILED: broken"), std::string::npos) << table;
@@ -273,9 +369,13 @@ TEST(DatasetReport, SummaryShowsMeanAndStdInPercentAndCountsFailures) {
   EXPECT_NE(table.find("90.0"), std::string::npos) << table;
 }
 
-TEST(DatasetReport, SummaryOfAVariantThatWasNotRunIsADash) {
-  const std::string summary = format_summary({ok_result("a", Variant::kPlain, 1.0, 1.0, 1.0)}, "m");
-  EXPECT_NE(summary.find("| -"), std::string::npos) << summary;
+TEST(DatasetReport, SummaryHasARowPerVariantThatWasRun) {
+  ImageResult failed;
+  failed.variant = Variant::kFurnished;
+  const std::string summary = format_summary({ok_result("a", Variant::kPlain, 1.0, 1.0, 1.0), failed}, "m");
+  EXPECT_NE(summary.find("| m      | plain "), std::string::npos) << summary;
+  EXPECT_NE(summary.find("| m      | furnished | 0    | -"), std::string::npos) << summary;
+  EXPECT_EQ(format_summary({ok_result("a", Variant::kPlain, 1.0, 1.0, 1.0)}, "m").find("furnished"), std::string::npos);
 }
 
 TEST(DatasetReport, MarkdownTablePadsColumnsByCharacters) {

@@ -84,7 +84,13 @@ TEST(ExplorationRun, FindGroundTruth) {
 }
 TEST(ExplorationRun, IncrementalCsvAddsTheUpdateColumns) {
   IncrementalImageResult ok;
-  ok.incremental = {"lab", Variant::kPlain, true, "", 5, 6, 0.9, 0.8, 12.5};
+  ok.incremental.map = "lab";
+  ok.incremental.ok = true;
+  ok.incremental.rooms = 5;
+  ok.incremental.gt_rooms = 6;
+  ok.incremental.recall = 0.9;
+  ok.incremental.precision = 0.8;
+  ok.incremental.time_ms = 12.5;
   ok.updates = 40;
   ok.incremental_times = time_statistics({1.0, 2.0, 3.0});
   ok.batch_times = time_statistics({10.0, 30.0});
@@ -102,11 +108,12 @@ TEST(ExplorationRun, IncrementalCsvAddsTheUpdateColumns) {
   std::getline(in, b);
   std::getline(in, c);
   EXPECT_EQ(header,
-            "map,variant,rooms,gt_rooms,recall,precision,time_ms,updates,update_median_ms,update_p95_ms,update_max_ms,"
-            "batch_update_median_ms");
+            "map,variant,rooms,gt_rooms,recall,precision,time_ms,matches,free_segments,free_rooms,f1,pq,"
+            "segments_per_room,precision_inside,far_share,status,updates,update_median_ms,update_p95_ms,"
+            "update_max_ms,batch_update_median_ms");
   EXPECT_NE(a.find(",40,2.0000,3.0000,3.0000,20.0000"), std::string::npos) << a;
   EXPECT_EQ(b.substr(b.size() - 1), ",");  // no batch comparison: last column empty
-  EXPECT_EQ(std::count(c.begin(), c.end(), ','), 11);
+  EXPECT_EQ(std::count(c.begin(), c.end(), ','), 20);
   EXPECT_EQ(c.rfind("broken,", 0), 0u);
 }
 TEST(ExplorationFrame, DrawsMapRoomsRobotAndPath) {

@@ -6,8 +6,10 @@
 #include <string>
 #include <vector>
 
+#include "topocut/core/error.h"
 #include "topocut/core/segmentation.h"
 #include "topocut/evaluation/precision_recall.h"
+#include "topocut/evaluation/segmentation_scores.h"
 #include "topocut/io/map_loader.h"
 #include "topocut/segmentation/segmenter.h"
 
@@ -50,22 +52,37 @@ std::vector<DatasetMap> select_maps(const std::vector<DatasetMap>& maps, const s
 // X_furnitures.png. Empty if there is no such file.
 std::string find_ground_truth(const std::string& map_path);
 
-// The outcome of one image. A failed image keeps ok = false and the reason in error; its numbers
-// are meaningless and every report leaves them out.
+// The outcome of one image. A failed image keeps ok = false and the reason in error; a missing one
+// (no segmentation to score, e.g. a peer's result that was not published) also has missing = true.
+// Their numbers are meaningless and every report leaves them out.
 struct ImageResult {
   std::string map;
   Variant variant = Variant::kPlain;
   bool ok = false;
+  bool missing = false;
   std::string error;
   int rooms = 0;          // segments larger than the ignore size (the ones precision averages over)
   int gt_rooms = 0;       // ground-truth rooms larger than the ignore size
   double recall = 0.0;    // fraction in [0, 1]
   double precision = 0.0; // fraction in [0, 1]
   double time_ms = 0.0;   // the whole segmentation of the image file, loading included
+  MatchedRooms matched;           // one-to-one matches over the map's free pixels
+  double precision_inside = 0.0;  // precision with segments clipped to the ground truth's rooms
+  double far_share = 0.0;         // labelled cells farther than far_distance from every room
 };
+
+// Copies scores into result and marks it ok.
+void apply_scores(const SegmentationScores& scores, ImageResult& result);
 
 // Segments one image file; the runner times exactly this call.
 using ImageSegmenter = std::function<Segmentation(const std::string& image_path)>;
+
+// Thrown by an ImageSegmenter that has no result for an image (a folder of label images without that
+// map's image): run_dataset reports the image as missing, not as failed.
+class MissingSegmentation : public Error {
+ public:
+  using Error::Error;
+};
 
 struct DatasetRunOptions {
   std::vector<Variant> variants{Variant::kPlain, Variant::kFurnished};
@@ -78,8 +95,9 @@ struct DatasetRunOptions {
 };
 
 // Runs segmenter on every selected image (map by map, variants in options' order), loads each
-// ground truth once per map (outside the timing) and scores the labels. Never throws for a single
-// image: a failure (unreadable file, segmenter error, size mismatch) becomes a failed ImageResult.
+// ground truth once per map and each image's free cells (load_map with options.load), both outside
+// the timing, and scores the labels (score_segmentation). Never throws for a single image: a failure
+// (unreadable file, segmenter error, size mismatch) becomes a failed ImageResult.
 // options.maps and options.segment are not used here (the caller chose maps and segmenter).
 std::vector<ImageResult> run_dataset(const std::vector<DatasetMap>& maps, const DatasetRunOptions& options,
                                      const ImageSegmenter& segmenter);
@@ -87,6 +105,16 @@ std::vector<ImageResult> run_dataset(const std::vector<DatasetMap>& maps, const 
 // The library's own pipeline as an ImageSegmenter: load_map(path, options.load) then
 // segment(grid, options.segment).
 ImageSegmenter batch_segmenter(const DatasetRunOptions& options);
+
+// Segmentations made by another tool, read instead of computed: for the map image X.png (or
+// X_furnitures.png) the label image of the same name in labels_folder, read by read_region_labels()
+// and restricted to the map's free cells (load_map with options.load). Throws MissingSegmentation when
+// there is no such file, Error when it cannot be read or its size differs from the map's.
+ImageSegmenter labels_segmenter(const std::string& labels_folder, const DatasetRunOptions& options);
+
+// The variants (plain, furnished) for which labels_folder holds the label image of at least one map.
+// Throws Error if labels_folder is not a folder or holds no label image of any map.
+std::vector<Variant> labelled_variants(const std::vector<DatasetMap>& maps, const std::string& labels_folder);
 
 // discover_dataset + select_maps(options.maps) + run_dataset with batch_segmenter(options).
 // Throws Error only for a bad folder or an unknown map name.

@@ -8,6 +8,7 @@
 #include <opencv2/core.hpp>
 
 #include "topocut/evaluation/precision_recall.h"
+#include "topocut/evaluation/segmentation_scores.h"
 #include "topocut/exploration/exploration_run.h"
 #include "topocut/exploration/grid_replay.h"
 #include "topocut/exploration/room_stability.h"
@@ -16,13 +17,15 @@ namespace topocut {
 
 // The final incremental labels and batch segment() of the same final map, scored.
 struct ExplorationScore {
-  PrecisionRecall incremental;
-  PrecisionRecall batch;
+  SegmentationScores incremental;
+  SegmentationScores batch;
 };
 
 // Scores run's final results against gt_rooms (ground_truth_rooms() of the explored map, in its
-// frame: the run's window places the labels). Throws Error if the window does not fit gt_rooms.
-ExplorationScore score_exploration(const ExplorationRun& run, const cv::Mat& gt_rooms,
+// frame: the run's window places the labels); matched rooms count the pixels where free (CV_8UC1,
+// the explored map's free cells in that frame; empty: all) is non-zero. Throws Error if the window
+// does not fit gt_rooms.
+ExplorationScore score_exploration(const ExplorationRun& run, const cv::Mat& gt_rooms, const cv::Mat& free = {},
                                    const EvaluationOptions& options = {});
 
 // Lines for people: incremental time per update (median, p95, max, total; CPU, then wall clock)
