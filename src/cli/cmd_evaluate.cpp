@@ -143,7 +143,7 @@ int run(const std::vector<std::string>& args) {
       ("labels", po::value<std::string>()->value_name("DIR"),
        "score the label images in DIR instead of segmenting: X.png for map X (X_furnitures.png for its furnished image), one grey or 16-bit value a region (0 none) or one colour a region (black none), restricted to the map's free pixels; a map without its image is reported as missing")
       ("maps", po::value<std::string>()->value_name("DIR"),
-       "maps without ground truth (every YAML, else image at --resolution, in DIR): count per map the rooms, the thin rooms (>= 1 m², less than half survives an opening with a 0.6 m disc: ray fans, slivers, strips), the speck rooms (0.1 to 1 m²) and the open rooms (>= 1 m², more than half of their outline against walls or unknown runs into unknown cells), time the whole segmentation and compare it with the map's contour floor")
+       "maps without ground truth (every YAML, else image at --resolution, in DIR): count per map the rooms, the thin rooms (>= 1 m², less than half survives an opening with a 0.6 m disc: ray fans, slivers, strips), the speck rooms (0.1 to 1 m²) and the open rooms (>= 1 m², more than half of their outline against walls or never-seen cells runs into never-seen cells; unknown cells within 0.15 m of a wall count as wall; not judged on a map without occupied cells), time the whole segmentation and compare it with the map's contour floor")
       ("floor-repetitions", po::value<int>()->default_value(3)->value_name("N"), "with --maps: repetitions of the contour floor (decode, threshold, findContours), median taken; 0: not measured");
   const auto vm = parse_options(
       "topocut evaluate [--dataset DIR] [--variant plain|furnished|all] [--csv FILE] [--concavity M]\n"

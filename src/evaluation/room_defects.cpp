@@ -50,6 +50,49 @@ long long opened_cells(const cv::Mat& labels, int id, const cv::Rect& box, const
   return cv::countNonZero(opened);
 }
 
+struct Outline {
+  long long unknown = 0;  // edges to never-seen cells or off the grid
+  long long wall = 0;     // edges to occupied cells, or to unknown cells next to them
+};
+
+// Cells that count as wall for an outline: occupied, or unknown within reach cells of an occupied cell.
+cv::Mat wall_cells(const cv::Mat& cells, double reach) {
+  cv::Mat distance;  // to the nearest occupied cell
+  cv::distanceTransform(cells != kOccupied, distance, cv::DIST_L2, cv::DIST_MASK_PRECISE);
+  return distance <= reach;
+}
+
+// The outline of a room against walls and never-seen space: the 4-neighbour edges between the room
+// with its holes filled (cells it encloses are inside it, whatever they are) and the cells around it.
+Outline outline_of(const cv::Mat& ids, int id, const cv::Rect& box, const cv::Mat& cells, const cv::Mat& walls) {
+  const cv::Rect window = cv::Rect(box.x - 1, box.y - 1, box.width + 2, box.height + 2);
+  cv::Mat outside(window.size(), CV_8UC1, cv::Scalar(255));  // 255 outside the room, 0 in it
+  const cv::Rect inner = window & cv::Rect(0, 0, ids.cols, ids.rows);
+  outside(inner - window.tl()).setTo(0, ids(inner) == id);
+  // The window's frame lies outside the room: what the fill from its corner does not reach is enclosed.
+  cv::floodFill(outside, cv::Point(0, 0), cv::Scalar(128), nullptr, cv::Scalar(0), cv::Scalar(0), 4);
+  Outline outline;
+  const auto edge = [&](int wr, int wc) {
+    if (outside.at<unsigned char>(wr, wc) != 128) return;  // inside the filled room
+    const int r = window.y + wr, c = window.x + wc;
+    if (r < 0 || c < 0 || r >= ids.rows || c >= ids.cols) {
+      ++outline.unknown;
+    } else if (ids.at<int>(r, c) == 0 && cells.at<unsigned char>(r, c) != kFree) {
+      ++(walls.at<unsigned char>(r, c) ? outline.wall : outline.unknown);
+    }
+  };
+  for (int wr = 1; wr + 1 < window.height; ++wr) {
+    for (int wc = 1; wc + 1 < window.width; ++wc) {
+      if (outside.at<unsigned char>(wr, wc) == 128) continue;
+      edge(wr - 1, wc);
+      edge(wr + 1, wc);
+      edge(wr, wc - 1);
+      edge(wr, wc + 1);
+    }
+  }
+  return outline;
+}
+
 std::string lower(std::string s) {
   for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   return s;
@@ -74,7 +117,7 @@ MapDefectResult run_one(const MapFile& map, const MapFolderOptions& options) {
     result.time_ms = elapsed_ms(start);
     result.width = grid.width();
     result.height = grid.height();
-    result.defects = count_room_defects(segmentation.labels, grid.resolution, options.defects);
+    result.defects = count_room_defects(segmentation.labels, grid, options.defects);
     if (options.floor_repetitions > 0)
       result.floor_ms = contour_floor_ms(map.path, options.load.free_min, options.floor_repetitions);
     result.ok = true;
@@ -86,22 +129,39 @@ MapDefectResult run_one(const MapFile& map, const MapFolderOptions& options) {
 
 }  // namespace
 
-RoomDefects count_room_defects(const cv::Mat& labels, double resolution, const DefectOptions& options) {
+RoomDefects count_room_defects(const cv::Mat& labels, const OccupancyGrid& grid, const DefectOptions& options) {
   if (labels.empty() || labels.channels() != 1) throw Error("the label image must be a non-empty single-channel image");
+  const double resolution = grid.resolution;
   if (!std::isfinite(resolution) || resolution <= 0.0) throw Error("the resolution must be a positive number of metres");
+  if (grid.cells.type() != CV_8UC1 || grid.cells.size() != labels.size())
+    throw Error("the label image and the grid differ in size");
   cv::Mat ids;
   labels.convertTo(ids, CV_32S);
   const double cell_area = resolution * resolution;
   const int radius = static_cast<int>(std::lround(options.thin_disc / 2.0 / resolution));
   const cv::Mat disc = cv::getStructuringElement(cv::MORPH_ELLIPSE, {2 * radius + 1, 2 * radius + 1});
   RoomDefects defects;
+  // Without a single occupied cell (walls drawn in the unknown grey) walls and never-seen space
+  // cannot be told apart, so no room is called open.
+  defects.open_judged = cv::countNonZero(grid.cells == kOccupied) > 0;
+  // The tolerance keeps 0.15 m at 0.05 m per cell three cells, as it reads, despite rounding.
+  const cv::Mat walls =
+      defects.open_judged ? wall_cells(grid.cells, options.open_wall_reach / resolution + 1e-9) : cv::Mat();
   for (const auto& [id, room] : room_extents(ids)) {
     ++defects.rooms;
     const double area = static_cast<double>(room.cells) * cell_area;
-    if (area >= options.speck_min_area && area < options.speck_max_area) ++defects.specks;
-    if (area >= options.thin_min_area &&
-        static_cast<double>(opened_cells(ids, id, room.box, disc)) < options.thin_share * static_cast<double>(room.cells))
-      ++defects.thin;
+    const bool speck = area >= options.speck_min_area && area < options.speck_max_area;
+    const bool thin = area >= options.thin_min_area && static_cast<double>(opened_cells(ids, id, room.box, disc)) <
+                                                           options.thin_share * static_cast<double>(room.cells);
+    bool open = false;
+    if (defects.open_judged && area >= options.open_min_area) {
+      const Outline edges = outline_of(ids, id, room.box, grid.cells, walls);
+      open = static_cast<double>(edges.unknown) > options.open_share * static_cast<double>(edges.unknown + edges.wall);
+    }
+    defects.specks += speck;
+    defects.thin += thin;
+    defects.open += open;
+    defects.flagged += speck || thin || open;
   }
   return defects;
 }
@@ -143,7 +203,8 @@ std::vector<MapDefectResult> run_map_files(const std::vector<MapFile>& maps, con
       std::string line = "[";
       line += std::to_string(i + 1) + "/" + std::to_string(maps.size()) + "] " + r.map + ": ";
       line += r.ok ? std::to_string(r.defects.rooms) + " rooms, " + std::to_string(r.defects.thin) + " thin, " +
-                         std::to_string(r.defects.specks) + " specks, " + fixed(r.time_ms, 0) + " ms"
+                         std::to_string(r.defects.specks) + " specks, " + std::to_string(r.defects.open) + " open, " +
+                         fixed(r.time_ms, 0) + " ms"
                    : "FAILED: " + r.error;
       options.progress(line);
     }
@@ -181,30 +242,59 @@ double contour_floor_ms(const std::string& path, int free_min, int repetitions) 
   return time_statistics(times).median;
 }
 
-std::string format_defects_table(const std::vector<MapDefectResult>& results) {
-  std::vector<std::vector<std::string>> rows{{"map", "cells", "rooms", "thin", "specks", "ms", "floor ms", "ms / floor"}};
+namespace {
+
+std::string open_text(const RoomDefects& defects) {
+  return defects.open_judged ? std::to_string(defects.open) : "-";
+}
+
+}  // namespace
+
+RoomDefects total_defects(const std::vector<MapDefectResult>& results) {
   RoomDefects total;
+  for (const MapDefectResult& r : results) {
+    if (!r.ok) continue;
+    total.rooms += r.defects.rooms;
+    total.thin += r.defects.thin;
+    total.specks += r.defects.specks;
+    total.open += r.defects.open;
+    total.flagged += r.defects.flagged;
+    total.open_judged = total.open_judged && r.defects.open_judged;
+  }
+  return total;
+}
+
+double flagged_share(const RoomDefects& defects) {
+  return defects.rooms > 0 ? static_cast<double>(defects.flagged) / defects.rooms : 0.0;
+}
+
+std::string format_defects_table(const std::vector<MapDefectResult>& results) {
+  std::vector<std::vector<std::string>> rows{
+      {"map", "cells", "rooms", "thin", "specks", "open", "ms", "floor ms", "ms / floor"}};
   std::vector<double> ratios;
   int failed = 0;
   for (const MapDefectResult& r : results) {
     if (!r.ok) {
       ++failed;
-      rows.push_back({r.map, "-", "-", "-", "-", "FAILED: " + r.error, "-", "-"});
+      rows.push_back({r.map, "-", "-", "-", "-", "-", "FAILED: " + r.error, "-", "-"});
       continue;
     }
-    total.rooms += r.defects.rooms;
-    total.thin += r.defects.thin;
-    total.specks += r.defects.specks;
     const bool floor = r.floor_ms > 0.0;
     if (floor) ratios.push_back(r.time_ms / r.floor_ms);
     rows.push_back({r.map, std::to_string(r.width) + " x " + std::to_string(r.height), std::to_string(r.defects.rooms),
-                    std::to_string(r.defects.thin), std::to_string(r.defects.specks), fixed(r.time_ms, 1),
-                    floor ? fixed(r.floor_ms, 2) : "-", floor ? fixed(r.time_ms / r.floor_ms, 1) : "-"});
+                    std::to_string(r.defects.thin), std::to_string(r.defects.specks), open_text(r.defects),
+                    fixed(r.time_ms, 1), floor ? fixed(r.floor_ms, 2) : "-",
+                    floor ? fixed(r.time_ms / r.floor_ms, 1) : "-"});
   }
-  const double share = total.rooms > 0 ? 100.0 * (total.thin + total.specks) / total.rooms : 0.0;
+  const RoomDefects total = total_defects(results);
   std::string text = markdown_table(rows) + "\n" + std::to_string(results.size() - failed) + " maps, " +
                      std::to_string(total.rooms) + " rooms: " + std::to_string(total.thin) + " thin, " +
-                     std::to_string(total.specks) + " specks (" + fixed(share, 1) + " % of the rooms)";
+                     std::to_string(total.specks) + " specks, " + std::to_string(total.open) + " open (" +
+                     std::to_string(total.flagged) + " rooms with a defect, " + fixed(100.0 * flagged_share(total), 1) +
+                     " % of the rooms)";
+  int unjudged = 0;
+  for (const MapDefectResult& r : results) unjudged += r.ok && !r.defects.open_judged;
+  if (unjudged > 0) text += "; open rooms not judged on " + std::to_string(unjudged) + " map(s) without occupied cells";
   if (!ratios.empty()) {
     const TimeStatistics ratio = time_statistics(ratios);
     text += "; ms / floor median " + fixed(ratio.median, 1) + ", max " + fixed(ratio.max, 1);
@@ -217,16 +307,17 @@ std::string format_defects_table(const std::vector<MapDefectResult>& results) {
 }
 
 std::string defects_csv(const std::vector<MapDefectResult>& results) {
-  std::string csv = "map,width,height,rooms,thin,specks,time_ms,floor_ms\n";
+  std::string csv = "map,width,height,rooms,thin,specks,open,time_ms,floor_ms\n";
   for (const MapDefectResult& r : results) {
     csv += r.map;
     if (r.ok) {
       csv += ',';
       csv += std::to_string(r.width) + "," + std::to_string(r.height) + "," + std::to_string(r.defects.rooms) + "," +
-             std::to_string(r.defects.thin) + "," + std::to_string(r.defects.specks) + "," + fixed(r.time_ms, 3) + "," +
+             std::to_string(r.defects.thin) + "," + std::to_string(r.defects.specks) + "," +
+             (r.defects.open_judged ? std::to_string(r.defects.open) : "") + "," + fixed(r.time_ms, 3) + "," +
              (r.floor_ms > 0.0 ? fixed(r.floor_ms, 3) : "");
     } else {
-      csv += ",,,,,,,";
+      csv += ",,,,,,,,";
     }
     csv += "\n";
   }

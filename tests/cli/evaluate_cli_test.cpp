@@ -221,9 +221,9 @@ TEST_F(EvaluateCli, MapsWithoutGroundTruthGiveTheirDefects) {
   EXPECT_EQ(run.code, 0) << run.err;
   EXPECT_NE(run.out.find("home.yaml"), std::string::npos) << run.out;
   EXPECT_NE(run.out.find("lab.png"), std::string::npos) << run.out;
-  EXPECT_NE(run.out.find("2 maps, 2 rooms: 0 thin, 0 specks"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("2 maps, 2 rooms: 0 thin, 0 specks, 0 open"), std::string::npos) << run.out;
   const std::string table = file_text(csv);
-  EXPECT_EQ(table.substr(0, table.find('\n')), "map,width,height,rooms,thin,specks,time_ms,floor_ms");
+  EXPECT_EQ(table.substr(0, table.find('\n')), "map,width,height,rooms,thin,specks,open,time_ms,floor_ms");
   EXPECT_EQ(count_lines(table), 3u);
   const CliResult missing = evaluate("--maps '" + (dir_ / "nowhere").string() + "'");
   EXPECT_NE(missing.code, 0);

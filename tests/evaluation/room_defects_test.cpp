@@ -21,6 +21,18 @@ cv::Mat hand_made_labels() {
   return labels;
 }
 
+// A grid of labels' size, every cell in state (free unless told), at resolution.
+OccupancyGrid grid_like(const cv::Mat& labels, double resolution, unsigned char state = kFree) {
+  OccupancyGrid grid;
+  grid.cells = cv::Mat(labels.size(), CV_8UC1, cv::Scalar(state));
+  grid.resolution = resolution;
+  return grid;
+}
+
+RoomDefects count_room_defects(const cv::Mat& labels, double resolution) {
+  return topocut::count_room_defects(labels, grid_like(labels, resolution));
+}
+
 TEST(RoomDefects, HandMadeLabelsAtTwoResolutions) {
   // 0.05 m: 4 m² square; 0.2 m x 5 m = 1 m² strip (a 13-cell disc fits nowhere: thin); 0.25 m²
   // (a speck); 0.0225 m² (neither).
@@ -44,6 +56,130 @@ TEST(RoomDefects, BadInputIsAnError) {
   EXPECT_THROW(count_room_defects(cv::Mat(), 0.05), Error);
   EXPECT_THROW(count_room_defects(hand_made_labels(), 0.0), Error);
   EXPECT_THROW(count_room_defects(cv::Mat(3, 3, CV_8UC3), 0.05), Error);
+  EXPECT_THROW(topocut::count_room_defects(hand_made_labels(), grid_like(cv::Mat(3, 3, CV_8UC1), 0.05)), Error);
+}
+
+// A 40 x 40 room (4 m² at 0.05 m) in the middle of a 60 x 60 grid of unknown cells, with walls drawn
+// one cell thick on the sides named.
+struct OpenRoomCase {
+  cv::Mat labels = cv::Mat::zeros(60, 60, CV_32SC1);
+  OccupancyGrid grid = grid_like(labels, 0.05, kUnknown);
+  const cv::Rect room{10, 10, 40, 40};
+  OpenRoomCase() {
+    labels(room).setTo(1);
+    grid.cells(room).setTo(kFree);
+  }
+  void wall(const cv::Rect& cells) { grid.cells(cells).setTo(kOccupied); }
+  void wall_top() { wall({10, 9, 40, 1}); }
+  void wall_bottom() { wall({10, 50, 40, 1}); }
+  void wall_left() { wall({9, 10, 1, 40}); }
+  void wall_right() { wall({50, 10, 1, 40}); }
+  RoomDefects count() const { return topocut::count_room_defects(labels, grid); }
+};
+
+TEST(RoomDefects, ARoomBoundedByUnknownOnThreeSidesIsOpen) {
+  OpenRoomCase c;
+  c.wall_left();  // 40 wall edges, 120 unknown
+  const RoomDefects d = c.count();
+  EXPECT_EQ(d.rooms, 1);
+  EXPECT_EQ(d.open, 1);
+  EXPECT_EQ(d.thin, 0);
+  EXPECT_EQ(d.flagged, 1);
+}
+
+TEST(RoomDefects, AWalledRoomWithOneDoorIsNotOpen) {
+  OpenRoomCase c;
+  c.wall_top();
+  c.wall_bottom();
+  c.wall_left();
+  c.wall_right();
+  c.grid.cells(cv::Rect(50, 20, 1, 6)).setTo(kFree);  // a door in the right wall ...
+  c.labels(cv::Rect(50, 20, 10, 6)).setTo(2);          // ... into another room (which is open: unknown beyond)
+  c.grid.cells(cv::Rect(50, 20, 10, 6)).setTo(kFree);
+  c.grid.cells(cv::Rect(9, 30, 1, 4)).setTo(kFree);    // and a gap to free cells no room holds
+  RoomDefects d = c.count();
+  EXPECT_EQ(d.rooms, 2);
+  EXPECT_EQ(d.open, 0);  // room 2 has 60 x 0.05² = 0.15 m²: a speck, too small to be called open
+  EXPECT_EQ(d.specks, 1);
+  EXPECT_EQ(d.flagged, 1);
+}
+
+TEST(RoomDefects, OpenNeedsMoreThanHalfOfTheOutlineUnknown) {
+  DefectOptions exact;
+  exact.open_wall_reach = 0.0;  // only occupied cells are wall here
+  OpenRoomCase c;
+  c.wall_top();
+  c.wall_left();  // 80 wall edges, 80 unknown: not more than half
+  EXPECT_EQ(topocut::count_room_defects(c.labels, c.grid, exact).open, 0);
+  c.grid.cells(cv::Rect(9, 10, 1, 1)).setTo(kUnknown);  // 79 wall edges, 81 unknown
+  EXPECT_EQ(topocut::count_room_defects(c.labels, c.grid, exact).open, 1);
+}
+
+TEST(RoomDefects, NeverSeenCellsAlongAWallCountAsWall) {
+  // Walls on three sides behind two never-seen cells: 3 cells (0.15 m) from the cells beside the room.
+  OpenRoomCase c;
+  c.wall({10, 6, 40, 1});
+  c.wall({6, 10, 1, 40});
+  c.wall({10, 53, 40, 1});
+  EXPECT_EQ(c.count().open, 0);
+  // Behind three never-seen cells (0.2 m) they are too far: the rim is never-seen space.
+  OpenRoomCase far;
+  far.wall({10, 5, 40, 1});
+  far.wall({5, 10, 1, 40});
+  far.wall({10, 54, 40, 1});
+  EXPECT_EQ(far.count().open, 1);
+}
+
+TEST(RoomDefects, HolesInsideARoomAreNotItsOutline) {
+  // A walled room with 100 never-seen cells inside it (a table the laser never saw over): closed.
+  OpenRoomCase c;
+  c.wall_top();
+  c.wall_bottom();
+  c.wall_left();
+  c.wall_right();
+  for (int k = 0; k < 25; ++k) {
+    const cv::Rect hole(13 + 7 * (k % 5), 13 + 7 * (k / 5), 2, 2);  // 25 holes of 4 cells: 200 edges
+    c.labels(hole).setTo(0);
+    c.grid.cells(hole).setTo(kUnknown);
+  }
+  EXPECT_EQ(c.count().open, 0);
+}
+
+TEST(RoomDefects, TheGridEdgeIsNeverSeenSpaceAndSmallRoomsAreNotOpen) {
+  cv::Mat labels = cv::Mat::zeros(60, 40, CV_32SC1);
+  labels(cv::Rect(0, 0, 40, 40)).setTo(1);  // touches the grid's edge on three sides ...
+  OccupancyGrid grid = grid_like(labels, 0.05);
+  grid.cells(cv::Rect(0, 40, 40, 1)).setTo(kOccupied);  // ... and a wall on the fourth
+  EXPECT_EQ(topocut::count_room_defects(labels, grid).open, 1);
+  // Below open_min_area (19 x 19 cells = 0.9 m²) a room is not called open.
+  labels.setTo(0);
+  labels(cv::Rect(0, 0, 19, 19)).setTo(1);
+  EXPECT_EQ(topocut::count_room_defects(labels, grid).open, 0);
+}
+
+TEST(RoomDefects, WithoutAnyOccupiedCellOpenRoomsAreNotJudged) {
+  OpenRoomCase c;  // unknown all around, not a single wall cell: walls drawn in the unknown grey
+  const RoomDefects d = c.count();
+  EXPECT_FALSE(d.open_judged);
+  EXPECT_EQ(d.open, 0);
+  MapDefectResult result;
+  result.map = "walls.png";
+  result.ok = true;
+  result.defects = d;
+  const std::string table = format_defects_table({result});
+  EXPECT_NE(table.find("open rooms not judged on 1 map(s)"), std::string::npos) << table;
+  EXPECT_NE(defects_csv({result}).find(",1,0,0,,"), std::string::npos) << defects_csv({result});
+}
+
+TEST(RoomDefects, AThinOpenRoomIsFlaggedOnce) {
+  cv::Mat labels = cv::Mat::zeros(30, 120, CV_32SC1);
+  labels(cv::Rect(5, 10, 100, 4)).setTo(1);  // 0.2 m x 5 m: thin
+  OccupancyGrid grid = grid_like(labels, 0.05, kUnknown);
+  grid.cells.at<unsigned char>(29, 119) = kOccupied;  // a wall far away: open rooms are judged
+  const RoomDefects d = topocut::count_room_defects(labels, grid);
+  EXPECT_EQ(d.thin, 1);
+  EXPECT_EQ(d.open, 1);
+  EXPECT_EQ(d.flagged, 1);
 }
 
 TEST(RoomDefects, MapFolderListsYamlsAndUnnamedImages) {
@@ -72,8 +208,11 @@ TEST(RoomDefects, MapFolderListsYamlsAndUnnamedImages) {
     EXPECT_GT(r.floor_ms, 0.0);
   }
   const std::string csv = defects_csv(results);
-  EXPECT_EQ(csv.substr(0, csv.find('\n')), "map,width,height,rooms,thin,specks,time_ms,floor_ms");
-  EXPECT_NE(format_defects_table(results).find("2 maps, 2 rooms: 0 thin, 0 specks"), std::string::npos);
+  EXPECT_EQ(csv.substr(0, csv.find('\n')), "map,width,height,rooms,thin,specks,open,time_ms,floor_ms");
+  // Bounded by the image's occupied frame on every side: closed.
+  EXPECT_NE(format_defects_table(results).find("2 maps, 2 rooms: 0 thin, 0 specks, 0 open (0 rooms with a defect"),
+            std::string::npos)
+      << format_defects_table(results);
   fs::remove_all(dir);
   EXPECT_THROW(discover_map_files(dir.string()), Error);
 }

@@ -2,13 +2,16 @@
 // Judging a segmentation without ground truth: rooms no person would draw. A 'thin' room (at least
 // thin_min_area, yet less than thin_share of it survives a morphological opening with a disc of
 // thin_disc diameter) is a laser-ray fan, a sliver along a wall or a strip; a 'speck' room
-// (speck_min_area to speck_max_area) is a scrap of free space. DESIGN.md, "Beyond Bormann".
+// (speck_min_area to speck_max_area) is a scrap of free space; an 'open' room (at least open_min_area)
+// has an outline that runs mostly into never-seen cells rather than walls: a ray fan through a window
+// or door, a scrap outside the building. DESIGN.md, "Beyond Bormann".
 #include <functional>
 #include <string>
 #include <vector>
 
 #include <opencv2/core.hpp>
 
+#include "topocut/core/occupancy_grid.h"
 #include "topocut/io/map_loader.h"
 #include "topocut/segmentation/segmenter.h"
 
@@ -20,18 +23,34 @@ struct DefectOptions {
   double thin_share = 0.5;      // a room is thin when less than this share survives the opening
   double speck_min_area = 0.1;  // m²
   double speck_max_area = 1.0;  // m² (exclusive)
+  // Open rooms. Smaller rooms are specks already. A room is open when more than open_share of its
+  // outline against walls or never-seen space runs into never-seen space: a person draws a room
+  // between walls, so a region bounded mostly by unknown cells is what the robot glimpsed, not a room.
+  // SLAM maps leave a rim of never-seen cells between the free space and the wall line, so unknown
+  // cells within open_wall_reach of an occupied cell count as wall (without it, every room of the raw
+  // intel map was open).
+  double open_min_area = 1.0;     // m²
+  double open_share = 0.5;
+  double open_wall_reach = 0.15;  // m
 };
 
 struct RoomDefects {
   int rooms = 0;   // distinct labels > 0
   int thin = 0;
   int specks = 0;
+  int open = 0;
+  int flagged = 0;           // rooms with at least one defect (a ray fan is often thin and open)
+  bool open_judged = true;   // false when the grid has no occupied cell: open rooms are not counted
 };
 
-// Counts the rooms, thin rooms and speck rooms of a label image (single-channel integer labels,
-// 0 = no room) at the given resolution (metres per cell). The disc has an odd diameter of
-// 2 * round(thin_disc / 2 / resolution) + 1 cells. Throws Error on a bad image or resolution.
-RoomDefects count_room_defects(const cv::Mat& labels, double resolution, const DefectOptions& options = {});
+// Counts the rooms and their defects in a label image (single-channel integer labels, 0 = no room,
+// the grid's size) of grid (its resolution; its cell states for open rooms). The disc has an odd
+// diameter of 2 * round(thin_disc / 2 / resolution) + 1 cells. A room's outline is made of the
+// 4-neighbour edges between the room with its holes filled and the cells outside it: an edge to an
+// occupied cell, or to an unknown cell within open_wall_reach of one, counts as wall; to another
+// unknown cell or off the grid as unknown; to another room or a free unlabelled cell as neither.
+// Throws Error on a bad image, a size mismatch or a bad resolution.
+RoomDefects count_room_defects(const cv::Mat& labels, const OccupancyGrid& grid, const DefectOptions& options = {});
 
 // A map of a folder without ground truth.
 struct MapFile {
@@ -71,10 +90,19 @@ std::vector<MapDefectResult> run_map_files(const std::vector<MapFile>& maps, con
 // for a YAML. Throws Error if the image cannot be read.
 double contour_floor_ms(const std::string& path, int free_min, int repetitions);
 
-// The per-map table (Markdown) and the totals line: map, size, rooms, thin, specks, ms, floor, ratio.
+// The defects of every map that succeeded, added up (open_judged: on every one of them).
+RoomDefects total_defects(const std::vector<MapDefectResult>& results);
+
+// The share of rooms with at least one defect (0 without rooms).
+double flagged_share(const RoomDefects& defects);
+
+// The per-map table (Markdown) and the totals line: map, size, rooms, thin, specks, open, ms, floor,
+// ratio; the totals give the share of rooms with at least one defect. Open shows "-" on a map where
+// it was not judged.
 std::string format_defects_table(const std::vector<MapDefectResult>& results);
 
-// CSV: map,width,height,rooms,thin,specks,time_ms,floor_ms (a failed map leaves the numbers empty).
+// CSV: map,width,height,rooms,thin,specks,open,time_ms,floor_ms (a failed map leaves the numbers empty,
+// a map where open rooms were not judged leaves open empty).
 std::string defects_csv(const std::vector<MapDefectResult>& results);
 
 }  // namespace topocut
