@@ -10,7 +10,9 @@ PYBIND11_MODULE(topocut, m) {
       "    import topocut\n"
       "    m = topocut.load_map('maps/floorplan.yaml')      # int8 grid, ROS row order\n"
       "    r = topocut.segment(m.grid, m.resolution, m.origin)\n"
-      "    r.labels, r.rooms, r.passages, r.to_json(), r.to_geojson()\n\n"
+      "    r.labels, r.rooms, r.passages, r.to_json(), r.to_geojson()\n"
+      "    s = topocut.evaluate('X_labels.png', 'X_gt_segmentation.png', free='X.png')\n"
+      "    s.recall, s.precision, s.f1, s.pq, s.segments_per_room\n\n"
       "Bad input raises ValueError with the message the topocut command prints.";
   m.attr("__version__") = TOPOCUT_VERSION;
   pybind11::register_exception_translator([](std::exception_ptr p) {
@@ -22,4 +24,5 @@ PYBIND11_MODULE(topocut, m) {
   });
   topocut::python::bind_segmentation(m);
   topocut::python::bind_geometry(m);
+  topocut::python::bind_evaluation(m);
 }
