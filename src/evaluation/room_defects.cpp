@@ -52,7 +52,7 @@ long long opened_cells(const cv::Mat& labels, int id, const cv::Rect& box, const
 
 struct Outline {
   long long unknown = 0;  // edges to never-seen cells or off the grid
-  long long wall = 0;     // edges to occupied cells, or to unknown cells next to them
+  long long wall = 0;     // edges to occupied cells, or to unknown cells near them
 };
 
 // Cells that count as wall for an outline: occupied, or unknown within reach cells of an occupied cell.

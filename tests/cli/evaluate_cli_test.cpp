@@ -82,7 +82,7 @@ TEST_F(EvaluateCli, HelpListsEveryOption) {
   const CliResult run = evaluate("--help");
   EXPECT_EQ(run.code, 0);
   EXPECT_NE(run.out.find("Usage: topocut evaluate"), std::string::npos) << run.out;
-  for (const char* option : {"--dataset", "--variant", "--csv", "--concavity", "--trivial", "--map"}) {
+  for (const char* option : {"--dataset", "--variant", "--csv", "--concavity", "--trivial", "--map", "--labels", "--maps"}) {
     EXPECT_NE(run.out.find(option), std::string::npos) << option;
   }
   EXPECT_TRUE(run.err.empty()) << run.err;
