@@ -7,5 +7,6 @@ namespace topocut::python {
 void bind_segmentation(pybind11::module_& m);  // segment, load_map, IncrementalSegmenter, results
 void bind_geometry(pybind11::module_& m);      // decompose, line extractors
 void bind_evaluation(pybind11::module_& m);    // evaluate and its Scores
+void bind_training(pybind11::module_& m);      // merge_feature_names, merge_training_rows
 
 }  // namespace topocut::python

@@ -25,4 +25,5 @@ PYBIND11_MODULE(topocut, m) {
   topocut::python::bind_segmentation(m);
   topocut::python::bind_geometry(m);
   topocut::python::bind_evaluation(m);
+  topocut::python::bind_training(m);
 }

@@ -3,6 +3,7 @@
 #include <pybind11/stl.h>
 
 #include "topocut/core/error.h"
+#include "topocut/segmentation/merge_model.h"
 #include "topocut/segmentation/segment_switches.h"
 
 namespace topocut::python {
@@ -92,7 +93,16 @@ void apply(const GridReading& reading, double resolution, const py::handle& orig
   array.occupied_max = reading.occupied_threshold;
 }
 
-SegmentOptions segment_options(const py::dict& kwargs) { return settings_from(kwargs, SegmentSettings{}); }
+SegmentOptions segment_options(const py::dict& kwargs) {
+  py::dict rest(kwargs);
+  const std::string model = pop<std::string>(rest, "merge_model", "");
+  SegmentOptions options = settings_from(rest, SegmentSettings{});
+  if (!model.empty()) {
+    options.merge.model = parse_merge_model(model);
+    options.merge.learned = true;
+  }
+  return options;
+}
 
 IncrementalOptions incremental_options(py::dict kwargs) {
   IncrementalOptions o;
@@ -116,7 +126,7 @@ std::string segment_option_names() {
     names += keyword(row.name);
     names += ", ";
   }
-  return names + "row_order, free_thresh, occupied_thresh, fixed_thresholds, free_threshold, occupied_threshold";
+  return names + "merge_model, row_order, free_thresh, occupied_thresh, fixed_thresholds, free_threshold, occupied_threshold";
 }
 
 }  // namespace topocut::python

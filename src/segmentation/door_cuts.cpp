@@ -162,6 +162,7 @@ struct Candidate {
   Segment2 segment;
   double width = 0.0;  // cells
   int ring = 0;
+  CutRule rule = CutRule::kDoor;
 };
 
 // Widest chord parallel to u beside the segment's midpoint on the side of normal n, sampled up to
@@ -441,7 +442,7 @@ std::vector<Candidate> wall_openings(const DoorSearch& search, const EdgeGrid& g
     if (side_width(grid, mid, u, {-u.y, u.x}, search.depth, cap) < cap) continue;
     if (side_width(grid, mid, u, {u.y, -u.x}, search.depth, cap) < cap) continue;
     // Openings come after every door: a narrow passage is the stronger evidence.
-    openings.push_back({{e.v, target}, gl + max_gap, e.ring});
+    openings.push_back({{e.v, target}, gl + max_gap, e.ring, CutRule::kWallOpening});
   }
   return openings;
 }
@@ -458,16 +459,17 @@ bool has_wide_sides(const DoorSearch& search, const EdgeGrid& grid, const Candid
 
 // Narrowest first; a door found from both of its jambs (or from two corners of one wall end) is
 // kept once; crossing cuts are not allowed.
-std::vector<Segment2> narrowest_compatible(std::vector<Candidate> doors, double resolution) {
+std::vector<Candidate> narrowest_compatible(std::vector<Candidate> doors, double resolution) {
   std::sort(doors.begin(), doors.end(), [](const Candidate& x, const Candidate& y) {
     return std::tie(x.width, x.segment.a.x, x.segment.a.y, x.segment.b.x, x.segment.b.y) <
            std::tie(y.width, y.segment.a.x, y.segment.a.y, y.segment.b.x, y.segment.b.y);
   });
   const double duplicate = 0.3 / resolution;
-  std::vector<Segment2> accepted;
+  std::vector<Candidate> accepted;
   for (const Candidate& c : doors) {
     bool ok = true;
-    for (const Segment2& s : accepted) {
+    for (const Candidate& taken : accepted) {
+      const Segment2& s = taken.segment;
       if (segments_conflict(c.segment, s) ||
           (distance_to_segment(c.segment.a, s) < duplicate && distance_to_segment(c.segment.b, s) < duplicate) ||
           (distance_to_segment(s.a, c.segment) < duplicate && distance_to_segment(s.b, c.segment) < duplicate)) {
@@ -475,9 +477,16 @@ std::vector<Segment2> narrowest_compatible(std::vector<Candidate> doors, double 
         break;
       }
     }
-    if (ok) accepted.push_back(c.segment);
+    if (ok) accepted.push_back(c);
   }
   return accepted;
+}
+
+std::vector<Segment2> segments_of(const std::vector<Candidate>& candidates) {
+  std::vector<Segment2> out;
+  out.reserve(candidates.size());
+  for (const Candidate& c : candidates) out.push_back(c.segment);
+  return out;
 }
 
 // The direction (unit) of the wall that arrives at corner v (vertex i), read from the first vertex
@@ -564,8 +573,8 @@ std::vector<Candidate> wall_line_cuts(const DoorSearch& search, const EdgeGrid& 
 // edges (joinable: DoorSearch::joinable), or nothing when the search is off or the polygon has no
 // edge.
 template <typename Find>
-std::vector<Segment2> search_cuts(const PolygonWithHoles& polygon, double resolution, const DoorOptions& options, bool on,
-                                  std::vector<bool> joinable, Find&& find) {
+auto search_cuts(const PolygonWithHoles& polygon, double resolution, const DoorOptions& options, bool on,
+                 std::vector<bool> joinable, Find&& find) -> decltype(find(std::declval<const DoorSearch&>(), std::declval<const EdgeGrid&>())) {
   validate(options);
   if (!std::isfinite(resolution) || resolution <= 0.0) throw Error("the map resolution must be a positive number");
   if (!on) return {};
@@ -595,7 +604,7 @@ std::vector<Segment2> find_wall_line_cuts(const PolygonWithHoles& polygon, doubl
   return search_cuts(polygon, resolution, options, options.wall_lines, {}, [&](const DoorSearch& search, const EdgeGrid& grid) {
     std::vector<Candidate> all = doors_first(doors);
     for (const Candidate& c : wall_line_cuts(search, grid)) all.push_back(c);
-    std::vector<Segment2> kept = narrowest_compatible(std::move(all), resolution);
+    const std::vector<Segment2> kept = segments_of(narrowest_compatible(std::move(all), resolution));
     // Two lines closer than wall_line_spacing along their whole length (the two faces of one
     // partition continued across a corridor) would enclose a strip no room is: the shorter stays.
     const double near = options.wall_line_spacing / resolution;
@@ -611,15 +620,23 @@ std::vector<Segment2> find_wall_line_cuts(const PolygonWithHoles& polygon, doubl
   });
 }
 
-std::vector<Segment2> find_door_cuts(const PolygonWithHoles& polygon, double resolution, const DoorOptions& options) {
+std::vector<RuledCut> find_ruled_door_cuts(const PolygonWithHoles& polygon, double resolution, const DoorOptions& options) {
   return search_cuts(polygon, resolution, options, options.enabled, {}, [&](const DoorSearch& search, const EdgeGrid& grid) {
     std::vector<Candidate> doors;
     if (options.extend_walls) doors = wall_openings(search, grid);
     for (const Candidate& c : corner_cuts(search, grid, false)) {
       if (has_wide_sides(search, grid, c)) doors.push_back(c);
     }
-    return narrowest_compatible(std::move(doors), resolution);
+    std::vector<RuledCut> out;
+    for (const Candidate& c : narrowest_compatible(std::move(doors), resolution)) out.push_back({c.segment, c.rule});
+    return out;
   });
+}
+
+std::vector<Segment2> find_door_cuts(const PolygonWithHoles& polygon, double resolution, const DoorOptions& options) {
+  std::vector<Segment2> out;
+  for (const RuledCut& c : find_ruled_door_cuts(polygon, resolution, options)) out.push_back(c.segment);
+  return out;
 }
 
 std::vector<Segment2> find_island_cuts(const PolygonWithHoles& polygon, double resolution, const DoorOptions& options,
@@ -639,7 +656,7 @@ std::vector<Segment2> find_island_cuts(const PolygonWithHoles& polygon, double r
       if (has_wide_sides(search, grid, c)) all.push_back(c);
     }
     // Only the cuts that, with the doors and each other, close a part off.
-    return without_doors(separating_chords(polygon, narrowest_compatible(std::move(all), resolution)), doors);
+    return without_doors(separating_chords(polygon, segments_of(narrowest_compatible(std::move(all), resolution))), doors);
   });
 }
 

@@ -365,7 +365,6 @@ void IncrementalSegmenter::State::keep_border_passages(const Region& region, con
     const bool b_in = in_region(passage.room_b, passage.cut);
     if (!a_in && !b_in) {
       out.passages.push_back(passage);
-      out.doors.push_back(passage_door[k]);
       continue;
     }
     if (a_in && b_in) {
@@ -373,8 +372,7 @@ void IncrementalSegmenter::State::keep_border_passages(const Region& region, con
       const int a = passage.room_a, b = passage.room_b;
       if (rooms[static_cast<std::size_t>(a)].merge_partner == b || rooms[static_cast<std::size_t>(b)].merge_partner == a) {
         out.passages.push_back(passage);
-        out.doors.push_back(passage_door[k]);
-      }
+        }
       continue;
     }
     const int outside = a_in ? passage.room_b : passage.room_a;
@@ -385,7 +383,6 @@ void IncrementalSegmenter::State::keep_border_passages(const Region& region, con
     kept.room_a = std::min(inside, outside);
     kept.room_b = std::max(inside, outside);
     out.passages.push_back(kept);
-    out.doors.push_back(passage_door[k]);
   }
 }
 
@@ -399,7 +396,8 @@ void IncrementalSegmenter::State::add_new_passages(const RegionPieces& found, co
     const std::size_t p = static_cast<std::size_t>(piece) + 1;
     return found.tally.cells[p] > 0 ? found.id_of_piece[p] : 0;
   };
-  for (const Segment2& cut : found.set.cuts) {
+  for (std::size_t k = 0; k < found.set.cuts.size(); ++k) {
+    const Segment2& cut = found.set.cuts[k];
     Point2 left, right;
     if (!cut_sides(cut.a, cut.b, left, right)) continue;
     const int a = room_of(left), b = room_of(right);
@@ -410,8 +408,8 @@ void IncrementalSegmenter::State::add_new_passages(const RegionPieces& found, co
     passage.cut = {frame.to_world(cut.a), frame.to_world(cut.b)};
     passage.width = std::hypot(cut.b.x - cut.a.x, cut.b.y - cut.a.y) * resolution;
     passage.door = is_door(passage, options.segment.doors);
+    passage.rule = k < found.set.rules.size() ? found.set.rules[k] : CutRule::kDecomposition;
     out.passages.push_back(passage);
-    out.doors.push_back(std::find(found.set.doors.begin(), found.set.doors.end(), cut) != found.set.doors.end());
   }
 }
 
@@ -427,11 +425,7 @@ void IncrementalSegmenter::State::store_sorted(const PassageList& list) {
            std::tie(y.room_a, y.room_b, y.cut.a.x, y.cut.a.y, y.cut.b.x, y.cut.b.y, j);
   });
   result.passages.clear();
-  passage_door.clear();
-  for (const std::size_t k : order) {
-    result.passages.push_back(passages[k]);
-    passage_door.push_back(list.doors[k]);
-  }
+  for (const std::size_t k : order) result.passages.push_back(passages[k]);
 }
 
 }  // namespace topocut

@@ -169,7 +169,7 @@ void IncrementalSegmenter::State::add_neighbour_rooms(Region& region) const {
   for (const int id : region_ids) in_region[static_cast<std::size_t>(id)] = 1;
   const std::size_t core = region_ids.size();
   for (std::size_t k = 0; k < result.passages.size(); ++k) {
-    if (!(passage_door[k] ? options.neighbours_across_doors : options.neighbours_across_cuts)) continue;
+    if (!(is_door_rule(result.passages[k].rule) ? options.neighbours_across_doors : options.neighbours_across_cuts)) continue;
     const Passage& p = result.passages[k];
     const bool a_in = in_region[static_cast<std::size_t>(p.room_a)] != 0;
     const bool b_in = in_region[static_cast<std::size_t>(p.room_b)] != 0;

@@ -106,7 +106,6 @@ void IncrementalSegmenter::State::start_frame(const OccupancyGrid& grid) {
   result.origin = grid.origin;
   result.rooms.clear();
   result.passages.clear();
-  passage_door.clear();
   rooms.assign(static_cast<std::size_t>(next_id), RoomState{});
   free_cells = 0;
   initialised = true;

@@ -139,7 +139,6 @@ struct WindowFrame {
 // Passages with their door flags, in the order they were found.
 struct PassageList {
   std::vector<Passage> passages;
-  std::vector<char> doors;
 };
 
 }  // namespace topocut::incremental
@@ -164,7 +163,6 @@ struct IncrementalSegmenter::State {
   cv::Mat bin;    // its binarized free space (CV_8UC1, 255 free)
   Segmentation result;               // result.labels is the state's label image
   std::vector<RoomState> rooms{1};   // by id; index 0 unused
-  std::vector<char> passage_door;    // per result.passages entry: its cut was found as a door
   int next_id = 1;
   long long free_cells = 0;
   IncrementalUpdateReport report;

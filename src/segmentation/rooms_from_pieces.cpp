@@ -322,7 +322,8 @@ std::vector<Room> room_list(const OccupancyGrid& grid, const PieceSet& set, cons
 std::vector<Passage> passages_between(const OccupancyGrid& grid, const PieceSet& set,
                                       const std::vector<int>& room_of_piece) {
   std::vector<Passage> passages;
-  for (const Segment2& cut : set.cuts) {
+  for (std::size_t k = 0; k < set.cuts.size(); ++k) {
+    const Segment2& cut = set.cuts[k];
     Point2 left, right;
     if (!cut_sides(cut.a, cut.b, left, right)) continue;
     const int piece_a = piece_containing(set.pieces, left);
@@ -336,6 +337,7 @@ std::vector<Passage> passages_between(const OccupancyGrid& grid, const PieceSet&
     p.room_b = std::max(a, b);
     p.cut = {grid_to_world(grid, cut.a), grid_to_world(grid, cut.b)};
     p.width = std::hypot(cut.b.x - cut.a.x, cut.b.y - cut.a.y) * grid.resolution;
+    p.rule = k < set.rules.size() ? set.rules[k] : CutRule::kDecomposition;
     passages.push_back(p);
   }
   std::sort(passages.begin(), passages.end(), [](const Passage& x, const Passage& y) {
@@ -347,11 +349,21 @@ std::vector<Passage> passages_between(const OccupancyGrid& grid, const PieceSet&
 
 }  // namespace
 
+void PieceSet::add_cut(const Segment2& cut, CutRule rule) {
+  cuts.push_back(cut);
+  rules.push_back(rule);
+}
+
 void PieceSet::append(const PieceSet& other) {
   pieces.insert(pieces.end(), other.pieces.begin(), other.pieces.end());
   cuts.insert(cuts.end(), other.cuts.begin(), other.cuts.end());
-  doors.insert(doors.end(), other.doors.begin(), other.doors.end());
-  wall_lines.insert(wall_lines.end(), other.wall_lines.begin(), other.wall_lines.end());
+  rules.insert(rules.end(), other.rules.begin(), other.rules.end());
+}
+
+CutRule PieceSet::rule_of(const Segment2& cut) const {
+  const auto it = std::find(cuts.begin(), cuts.end(), cut);
+  const std::size_t k = static_cast<std::size_t>(it - cuts.begin());
+  return k < rules.size() ? rules[k] : CutRule::kDecomposition;
 }
 
 bool cut_sides(const Point2& a, const Point2& b, Point2& left, Point2& right) {

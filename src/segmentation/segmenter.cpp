@@ -85,15 +85,13 @@ namespace {
 // cuts: merging may remove them.
 PieceSet decompose_polygon(const PolygonWithHoles& polygon, double resolution, const SegmentOptions& options, bool extras) {
   PieceSet set;
-  set.doors = find_door_cuts(polygon, resolution, options.doors);
-  set.cuts = set.doors;
+  for (const RuledCut& door : find_ruled_door_cuts(polygon, resolution, options.doors)) set.add_cut(door.segment, door.rule);
+  const std::vector<Segment2> doors = set.cuts;
   if (options.doors.enabled && extras) {
-    const std::vector<Segment2> islands = find_island_cuts(polygon, resolution, options.doors, set.doors);
-    set.cuts.insert(set.cuts.end(), islands.begin(), islands.end());
+    for (const Segment2& cut : find_island_cuts(polygon, resolution, options.doors, doors)) set.add_cut(cut, CutRule::kIslandCut);
   }
   if (options.doors.enabled && options.doors.wall_lines && extras) {
-    set.wall_lines = find_wall_line_cuts(polygon, resolution, options.doors, set.cuts);
-    set.cuts.insert(set.cuts.end(), set.wall_lines.begin(), set.wall_lines.end());
+    for (const Segment2& cut : find_wall_line_cuts(polygon, resolution, options.doors, set.cuts)) set.add_cut(cut, CutRule::kWallLine);
   }
   const std::vector<PolygonWithHoles> parts = split_polygon(polygon, set.cuts);
   DecompositionOptions decomposition = options.decomposition;
@@ -101,7 +99,7 @@ PieceSet decompose_polygon(const PolygonWithHoles& polygon, double resolution, c
   for (const PolygonWithHoles& part : parts) {
     const Decomposition result = decompose(part, decomposition);
     set.pieces.insert(set.pieces.end(), result.pieces.begin(), result.pieces.end());
-    for (const Cut& cut : result.cuts) set.cuts.push_back(cut.segment);
+    for (const Cut& cut : result.cuts) set.add_cut(cut.segment, CutRule::kDecomposition);
   }
   return set;
 }

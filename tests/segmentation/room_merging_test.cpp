@@ -94,7 +94,7 @@ TEST(MergeRooms, AKnownDoorIsNeverMergedAsAWideOpening) {
   set.pieces = {box(0, 0, 60, 40), box(60, 0, 100, 40)};
   set.cuts = {{{60, 0}, {60, 40}}};
   EXPECT_EQ(merge_rooms(no_component(), set, kRes).pieces.size(), 1u);
-  set.doors = set.cuts;
+  set.rules = {CutRule::kDoor};
   EXPECT_EQ(merge_rooms(no_component(), set, kRes).pieces.size(), 2u);
 }
 
@@ -228,12 +228,13 @@ TEST(MergeRooms, ARoomOpeningOntoAMuchWiderDeepSpaceStaysApart) {
   hall.pieces = {{{{0, 100}, {240, 100}, {240, 160}, {120, 160}, {80, 160}, {0, 160}}, {}}, box(80, 160, 120, 240)};
   hall.cuts = {{{80, 160}, {120, 160}}};
   EXPECT_EQ(merge_rooms(no_component(), hall, kRes, RoomMergeOptions{}).pieces.size(), 1u);
-  hall.wall_lines = hall.cuts;
+  hall.rules = {CutRule::kWallLine};
   const PieceSet kept = merge_rooms(no_component(), hall, kRes, RoomMergeOptions{});
   EXPECT_EQ(kept.pieces.size(), 2u);
-  EXPECT_EQ(kept.wall_lines, hall.cuts);
+  EXPECT_EQ(kept.cuts, hall.cuts);
+  EXPECT_EQ(kept.rules, std::vector<CutRule>{CutRule::kWallLine});
   // The 4 m room onto the 3 m corridor still merges across a wall line: 3 < 1.25 x 4 m.
-  corridor.wall_lines = corridor.cuts;
+  corridor.rules = {CutRule::kWallLine};
   EXPECT_EQ(merge_rooms(no_component(), corridor, kRes, RoomMergeOptions{}).pieces.size(), 1u);
 }
 

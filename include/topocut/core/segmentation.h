@@ -4,6 +4,7 @@
 
 #include <opencv2/core.hpp>
 
+#include "topocut/core/cut_rule.h"
 #include "topocut/core/geometry.h"
 
 namespace topocut {
@@ -29,6 +30,7 @@ struct Passage {
   Segment2 cut;         // world metres
   double width = 0.0;   // metres, length of the cut
   bool door = false;    // a door (a cut at most the door width, DoorOptions::max_width), not a wider opening
+  CutRule rule = CutRule::kDecomposition;  // the pipeline rule that made the cut
 };
 
 struct Segmentation {

@@ -8,6 +8,7 @@
 // The component is then split along both, and each part is decomposed on its own.
 #include <vector>
 
+#include "topocut/core/cut_rule.h"
 #include "topocut/core/geometry.h"
 
 namespace topocut {
@@ -75,6 +76,16 @@ void validate(const DoorOptions& options);
 // polygon, pairwise disjoint (they may share an end point), each splitting the polygon in two.
 // Deterministic.
 std::vector<Segment2> find_door_cuts(const PolygonWithHoles& polygon, double resolution, const DoorOptions& options = {});
+
+// A cut and the rule that found it.
+struct RuledCut {
+  Segment2 segment;
+  CutRule rule = CutRule::kDoor;
+};
+
+// find_door_cuts(), each cut with its rule: kDoor for a narrow passage, kWallOpening for a thin wall
+// continued to the next obstacle.
+std::vector<RuledCut> find_ruled_door_cuts(const PolygonWithHoles& polygon, double resolution, const DoorOptions& options = {});
 
 // Door-like cuts between rings (empty unless options.island_cuts): from a reflex corner of the
 // outline or of a wall island (options.*island*) to the nearest point of another of these, found

@@ -7,6 +7,8 @@
 
 #include "topocut/core/geometry.h"
 #include "topocut/map/free_space_polygons.h"
+#include "topocut/segmentation/merge_features.h"
+#include "topocut/segmentation/merge_model.h"
 #include "topocut/segmentation/rooms_from_pieces.h"
 
 namespace topocut {
@@ -14,6 +16,10 @@ namespace topocut {
 struct RoomMergeOptions {
   // false: the pieces are the rooms (the reference behaviour).
   bool enabled = true;
+  // true: two rooms merge where the learned model (merge_model.h) finds them one room; false: the
+  // hand rules below (door_ratio, width steps, furniture). Folding applies either way.
+  bool learned = false;
+  MergeModel model = default_merge_model();
   // A cut is door-like when it is narrower than door_ratio times the width of the room on each of
   // its sides (a door into a room, a room's opening onto a corridor); a cut at least this close to
   // the width of the narrower side (a corridor cut across, an L-room cut at its inner corner) is
@@ -63,8 +69,9 @@ void validate(const RoomMergeOptions& options);
 // first piece; its cuts are the cuts between two different rooms, in their input order. Cuts
 // that do not separate two pieces (keyhole cuts) are dropped. With options.enabled false, the
 // input is returned unchanged.
+// If trace is given, every candidate merge the learned criterion weighs is appended to it.
 PieceSet merge_rooms(const FreeSpaceComponent& component, const PieceSet& pieces, double resolution,
-                     const RoomMergeOptions& options = {});
+                     const RoomMergeOptions& options = {}, std::vector<MergeStep>* trace = nullptr);
 
 // The union of pieces that tile a region without overlapping and meet only along whole shared
 // edges (as DuDe's pieces do): every edge traversed in both directions is removed and the rest is

@@ -3,6 +3,7 @@
 // rooms, and turn the cuts between pieces into passages of the room graph.
 #include <vector>
 
+#include "topocut/core/cut_rule.h"
 #include "topocut/core/geometry.h"
 #include "topocut/core/occupancy_grid.h"
 #include "topocut/core/segmentation.h"
@@ -14,11 +15,14 @@ namespace topocut {
 struct PieceSet {
   std::vector<PolygonWithHoles> pieces;
   std::vector<Segment2> cuts;  // a cut between two pieces becomes a passage; others are ignored
-  std::vector<Segment2> doors; // the cuts found as doors (door_cuts.h), also listed in cuts
-  std::vector<Segment2> wall_lines;  // the cuts that continue a wall (find_wall_line_cuts), also in cuts
+  std::vector<CutRule> rules;  // the rule that made each cut (parallel to cuts)
 
+  // Adds a cut made by rule.
+  void add_cut(const Segment2& cut, CutRule rule);
   // Appends other's pieces and cuts (pieces from several components, or reused ones).
   void append(const PieceSet& other);
+  // The rule of a cut equal to cut, kDecomposition if there is none.
+  CutRule rule_of(const Segment2& cut) const;
 };
 
 struct RoomLabelOptions {

@@ -1,0 +1,45 @@
+#pragma once
+// A learned merging criterion: the probability that two adjacent rooms in the making are one room of
+// people's, as a logistic regression over the named features of merge_features.h. The shipped model
+// (src/segmentation/merge_model.txt, built into the library) is fitted by
+// scripts/train_merge_model.py on people's rooms; another can be loaded from its text.
+#include <string>
+#include <vector>
+
+namespace topocut {
+
+// A node of a regression tree: a split (feature >= 0: go to yes when the feature is at most threshold,
+// else to no) or a leaf (feature < 0: value).
+struct MergeTreeNode {
+  int feature = -1;
+  double threshold = 0.0;
+  int yes = 0, no = 0;
+  double value = 0.0;
+};
+
+struct MergeModel {
+  // p(one room) = 1 / (1 + exp(-z)), z = bias + sum_i weight_i * (feature_i - mean_i) / scale_i +
+  // the sum of the trees' leaves, over the features named in features (indices into
+  // merge_feature_names()); merged while p > threshold.
+  std::vector<int> features;
+  std::vector<double> mean, scale, weight;
+  std::vector<std::vector<MergeTreeNode>> trees;  // each rooted at its node 0
+  double bias = 0.0;
+  double threshold = 0.5;
+  std::string text;  // the model's text as parsed (for reports and equality)
+};
+
+// Parses a model's text: '#' comments, then "topocut-merge-model 1", "threshold T", "bias B", one line
+// "NAME MEAN SCALE WEIGHT" per linear feature (NAME one of merge_feature_names()), and trees: "tree",
+// its nodes in order ("split NAME THRESHOLD YES NO", YES and NO node numbers later in the tree, or
+// "leaf VALUE"), "end". Throws Error naming the line on anything else (unknown or repeated feature,
+// scale <= 0, a value that is not finite, a node pointing backwards or outside its tree).
+MergeModel parse_merge_model(const std::string& text);
+
+// The model shipped with the library.
+const MergeModel& default_merge_model();
+
+// p(one room) for a full feature vector (merge_feature_names() order).
+double merge_probability(const MergeModel& model, const std::vector<double>& features);
+
+}  // namespace topocut

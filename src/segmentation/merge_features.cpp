@@ -1,0 +1,107 @@
+#include "topocut/segmentation/merge_features.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "segmentation/room_graph.h"
+
+namespace topocut {
+
+const std::vector<std::string>& merge_feature_names() {
+  static const std::vector<std::string> names{
+      "log_cut_length",               // log(cut length, m)
+      "cut_over_narrow_width",        // cut length / narrow side's width (a door is well below 1), at most 3
+      "narrow_over_wide_width",       // narrow width / wide width: 1 a room cut across, small a width step
+      "log_narrow_width",             // log(narrow width, m)
+      "narrow_depth_over_width",      // narrow side's depth behind the cut / its width, at most 5
+      "wide_depth_over_narrow_width", // wide side's depth / narrow width, at most 5
+      "log_narrow_area",              // log(narrow room's area, m²)
+      "log_wide_area",                // log(wide room's area, m²)
+      "narrow_thickness",             // 2 area / perimeter of the narrow room, m
+      "wide_thickness",               // the same of the wide room
+      "union_solidity",               // area of the two rooms / area of their convex hull
+      "solidity_loss",                // the less convex side's solidity minus the union's
+      "shared_over_perimeter",        // cut length between the two rooms / the shorter room perimeter
+      "rule_door",                    // the cut is a door (narrow passage)
+      "rule_wall_opening",            // ... a thin wall continued to the next obstacle
+      "rule_island_cut",              // ... a cut onto a wall island
+      "rule_wall_line",               // ... a straight wall continued across an opening
+      "furniture_end",                // an end of the cut lies on furniture
+      "min_end_angle",                // the free space's angle at the cut's ends / pi: 1 in a straight wall,
+      "max_end_angle",                //   1.5 at a door jamb, 2 at a wall's end, 0.5 in a corner
+      "log_wall_continued",           // log(1 + the wall the cut continues straight on, m)
+      "narrow_open_share",            // the narrow room's cuts to other rooms / its perimeter
+      "wide_open_share",              // the same of the wide room
+      "cut_over_wide_width",          // cut length / the wide side's width
+      "union_thickness_over_narrow",  // 2 area / perimeter of the union over the narrow room's
+      "log_narrow_elongation",        // log of the narrow room's elongation (second moments: about length / width)
+      "log_union_elongation",         // log of the union's elongation
+  };
+  return names;
+}
+
+int merge_feature_index(const std::string& name) {
+  const std::vector<std::string>& names = merge_feature_names();
+  const auto it = std::find(names.begin(), names.end(), name);
+  return it == names.end() ? -1 : static_cast<int>(it - names.begin());
+}
+
+namespace {
+
+// Floors that keep logarithms and ratios finite for slivers (half a 5 cm cell, a tenth of a cell's area).
+constexpr double kMinLength = 0.025;
+constexpr double kMinArea = 0.00025;
+
+double solidity(double area, double hull) { return hull > 0.0 ? std::min(area / hull, 1.0) : 1.0; }
+
+}  // namespace
+
+std::vector<double> merge_features(RoomGraph& graph, std::size_t k, double width_depth) {
+  const RoomGraph::Side& side = graph.sides()[k];
+  const int left = graph.root(side.left), right = graph.root(side.right);
+  const double width_left = std::max(graph.side_width(k, left, true, width_depth), kMinLength);
+  const double width_right = std::max(graph.side_width(k, right, false, width_depth), kMinLength);
+  const bool left_narrow = width_left <= width_right;
+  const int narrow = left_narrow ? left : right, wide = left_narrow ? right : left;
+  const double w_narrow = std::min(width_left, width_right), w_wide = std::max(width_left, width_right);
+  const double d_narrow = graph.side_depth(k, narrow, left_narrow), d_wide = graph.side_depth(k, wide, !left_narrow);
+  const double a_narrow = std::max(graph.room_area(narrow), kMinArea), a_wide = std::max(graph.room_area(wide), kMinArea);
+  const double s_narrow = solidity(a_narrow, graph.convex_hull_area({narrow}));
+  const double s_wide = solidity(a_wide, graph.convex_hull_area({wide}));
+  const double s_union = solidity(a_narrow + a_wide, graph.convex_hull_area({narrow, wide}));
+  const double perimeter = std::max(std::min(graph.room_perimeter(narrow), graph.room_perimeter(wide)), kMinLength);
+  const double length = std::max(side.length, kMinLength);
+  const double union_perimeter = graph.room_perimeter(narrow) + graph.room_perimeter(wide) - 2.0 * graph.shared_cut_length(narrow, wide);
+  const double union_thickness = union_perimeter > 0.0 ? 2.0 * (a_narrow + a_wide) / union_perimeter : 0.0;
+  return {
+      std::log(length),
+      std::min(length / w_narrow, 3.0),
+      w_narrow / w_wide,
+      std::log(w_narrow),
+      std::min(d_narrow / w_narrow, 5.0),
+      std::min(d_wide / w_narrow, 5.0),
+      std::log(a_narrow),
+      std::log(a_wide),
+      graph.room_thickness(narrow),
+      graph.room_thickness(wide),
+      s_union,
+      std::min(s_narrow, s_wide) - s_union,
+      std::min(graph.shared_cut_length(narrow, wide) / perimeter, 1.0),
+      side.rule == CutRule::kDoor ? 1.0 : 0.0,
+      side.rule == CutRule::kWallOpening ? 1.0 : 0.0,
+      side.rule == CutRule::kIslandCut ? 1.0 : 0.0,
+      side.rule == CutRule::kWallLine ? 1.0 : 0.0,
+      side.furniture ? 1.0 : 0.0,
+      side.end_angle[0] / M_PI,
+      side.end_angle[1] / M_PI,
+      std::log1p(side.wall_continued),
+      std::min(graph.shared_cut_length(narrow, -1) / std::max(graph.room_perimeter(narrow), kMinLength), 1.0),
+      std::min(graph.shared_cut_length(wide, -1) / std::max(graph.room_perimeter(wide), kMinLength), 1.0),
+      std::min(length / w_wide, 3.0),
+      union_thickness / std::max(graph.room_thickness(narrow), kMinLength),
+      std::log(std::min(graph.elongation({narrow}), 100.0)),
+      std::log(std::min(graph.elongation({narrow, wide}), 100.0)),
+  };
+}
+
+}  // namespace topocut

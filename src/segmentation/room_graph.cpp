@@ -1,0 +1,383 @@
+#include "segmentation/room_graph.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <set>
+#include <tuple>
+#include <utility>
+
+#include <opencv2/imgproc.hpp>
+
+#include "topocut/core/error.h"
+#include "topocut/map/free_space_polygons.h"
+#include "topocut/segmentation/room_merging.h"
+
+namespace topocut {
+
+namespace {
+
+using Key = std::tuple<double, double, double, double>;  // directed edge (a.x, a.y, b.x, b.y)
+
+Key edge_key(const Point2& a, const Point2& b) { return {a.x, a.y, b.x, b.y}; }
+
+double perimeter(const PolygonWithHoles& polygon) {
+  double length = perimeter(polygon.outer);
+  for (const Ring& hole : polygon.holes) length += perimeter(hole);
+  return length;
+}
+
+// Where the line p + t·u (u a unit vector) crosses the rings of one piece, as parameters t; the
+// crossing rule is half-open on the side of the line (as the rasterizer's), so a vertex on the line
+// is counted once and the even-odd pairing of the sorted values gives the piece's chords.
+void add_crossings(const Ring& ring, const Point2& p, const Point2& u, std::vector<double>& ts) {
+  const Point2 n{-u.y, u.x};
+  const std::size_t count = ring.size();
+  for (std::size_t i = 0; i < count; ++i) {
+    const Point2& a = ring[i];
+    const Point2& b = ring[(i + 1) % count];
+    const double sa = (a.x - p.x) * n.x + (a.y - p.y) * n.y;
+    const double sb = (b.x - p.x) * n.x + (b.y - p.y) * n.y;
+    if ((sa > 0.0) == (sb > 0.0)) continue;
+    const double ta = (a.x - p.x) * u.x + (a.y - p.y) * u.y;
+    const double tb = (b.x - p.x) * u.x + (b.y - p.y) * u.y;
+    ts.push_back(ta + (tb - ta) * sa / (sa - sb));
+  }
+}
+
+// Cut k's direction (unit, a -> b), its normal into the left or right side, and its middle.
+struct CutFrame {
+  Point2 u, n, mid;
+};
+
+CutFrame cut_frame(const Segment2& c, bool left) {
+  const double length = distance(c.a, c.b);
+  const Point2 u{(c.b.x - c.a.x) / length, (c.b.y - c.a.y) / length};
+  return {u, left ? Point2{-u.y, u.x} : Point2{u.y, -u.x}, {(c.a.x + c.b.x) / 2.0, (c.a.y + c.b.y) / 2.0}};
+}
+
+// Area integrals of 1, x, y, x², xy, y² over a ring (signed: positive when counter-clockwise), by
+// Green's theorem edge by edge.
+void add_ring_moments(const Ring& ring, double m[6]) {
+  const std::size_t n = ring.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const Point2& p = ring[i];
+    const Point2& q = ring[(i + 1) % n];
+    const double c = p.x * q.y - q.x * p.y;
+    m[0] += c / 2.0;
+    m[1] += c * (p.x + q.x) / 6.0;
+    m[2] += c * (p.y + q.y) / 6.0;
+    m[3] += c * (p.x * p.x + p.x * q.x + q.x * q.x) / 12.0;
+    m[4] += c * (2.0 * p.x * p.y + p.x * q.y + q.x * p.y + 2.0 * q.x * q.y) / 24.0;
+    m[5] += c * (p.y * p.y + p.y * q.y + q.y * q.y) / 12.0;
+  }
+}
+
+}  // namespace
+
+RoomGraph::RoomGraph(const PolygonWithHoles& polygon, const PieceSet& set, double resolution, double furniture_size)
+    : set_(set), resolution_(resolution), parent_(set.pieces.size()) {
+  std::iota(parent_.begin(), parent_.end(), 0);
+  members_.resize(set.pieces.size());
+  for (std::size_t i = 0; i < set.pieces.size(); ++i) members_[i] = {static_cast<int>(i)};
+  boxes_.reserve(set.pieces.size());
+  for (const PolygonWithHoles& piece : set.pieces) {
+    boxes_.push_back(bounding_box(piece.outer));
+    areas_.push_back(area(piece) * resolution * resolution);
+    perimeters_.push_back(perimeter(piece) * resolution);
+    double m[6] = {0, 0, 0, 0, 0, 0};
+    add_ring_moments(piece.outer, m);
+    for (const Ring& hole : piece.holes) add_ring_moments(hole, m);
+    moments_.push_back({m[0], m[1], m[2], m[3], m[4], m[5]});
+  }
+  find_sides();
+  measure_cut_ends();
+  mark_furniture(polygon, furniture_size);
+}
+
+// The free-space angle at each cut end, and the wall edges there that the cut continues: pieces meet
+// only at shared vertices, so the interior angles of the pieces having the end as a vertex add up to
+// the free space's angle, and an edge met by no other piece in reverse is a wall.
+void RoomGraph::measure_cut_ends() {
+  struct Corner {
+    Point2 prev, next;
+  };
+  std::map<std::pair<double, double>, std::vector<Corner>> corners;
+  std::set<Key> edges;
+  auto add_ring = [&](const Ring& ring) {
+    const std::size_t n = ring.size();
+    for (std::size_t i = 0; i < n; ++i) {
+      const Point2& v = ring[i];
+      corners[{v.x, v.y}].push_back({ring[(i + n - 1) % n], ring[(i + 1) % n]});
+      edges.insert(edge_key(v, ring[(i + 1) % n]));
+    }
+  };
+  for (const PolygonWithHoles& piece : set_.pieces) {
+    add_ring(piece.outer);
+    for (const Ring& hole : piece.holes) add_ring(hole);
+  }
+  auto is_wall = [&](const Point2& a, const Point2& b) { return !edges.count(edge_key(b, a)); };
+  for (std::size_t k = 0; k < sides_.size(); ++k) {
+    Side& side = sides_[k];
+    if (side.left < 0) continue;
+    const Segment2& c = set_.cuts[k];
+    const double length = distance(c.a, c.b);
+    double angles[2] = {0.0, 0.0};
+    for (int e = 0; e < 2; ++e) {
+      const Point2& v = e == 0 ? c.a : c.b;
+      const Point2& other = e == 0 ? c.b : c.a;
+      const Point2 out{(v.x - other.x) / length, (v.y - other.y) / length};  // the cut's direction beyond v
+      const auto it = corners.find({v.x, v.y});
+      if (it == corners.end()) continue;
+      for (const Corner& corner : it->second) {
+        const double to_next = std::atan2(corner.next.y - v.y, corner.next.x - v.x);
+        const double to_prev = std::atan2(corner.prev.y - v.y, corner.prev.x - v.x);
+        double interior = to_prev - to_next;
+        while (interior <= 0.0) interior += 2.0 * M_PI;
+        angles[e] += interior;
+        for (const bool next : {false, true}) {
+          const Point2& w = next ? corner.next : corner.prev;
+          const bool wall = next ? is_wall(v, w) : is_wall(w, v);
+          const double wl = distance(v, w);
+          if (!wall || wl <= 0.0) continue;
+          const double along = ((w.x - v.x) * out.x + (w.y - v.y) * out.y) / wl;
+          if (along > 0.98) side.wall_continued = std::max(side.wall_continued, wl * resolution_);
+        }
+      }
+    }
+    side.end_angle[0] = std::min(angles[0], angles[1]);
+    side.end_angle[1] = std::max(angles[0], angles[1]);
+  }
+}
+
+void RoomGraph::find_sides() {
+  std::map<Key, int> owner;
+  for (std::size_t i = 0; i < set_.pieces.size(); ++i) {
+    auto add_ring = [&](const Ring& ring) {
+      for (std::size_t k = 0; k < ring.size(); ++k) owner.emplace(edge_key(ring[k], ring[(k + 1) % ring.size()]), static_cast<int>(i));
+    };
+    add_ring(set_.pieces[i].outer);
+    for (const Ring& hole : set_.pieces[i].holes) add_ring(hole);
+  }
+  sides_.resize(set_.cuts.size());
+  for (std::size_t k = 0; k < set_.cuts.size(); ++k) {
+    const Segment2& c = set_.cuts[k];
+    const auto left = owner.find(edge_key(c.a, c.b));
+    const auto right = owner.find(edge_key(c.b, c.a));
+    if (left == owner.end() || right == owner.end() || left->second == right->second) continue;
+    const CutRule rule = k < set_.rules.size() ? set_.rules[k] : CutRule::kDecomposition;
+    sides_[k] = {left->second, right->second, distance(c.a, c.b) * resolution_, rule};
+  }
+}
+
+// Cuts with an end point on a small obstacle (a hole whose bounding box is at most furniture_size a
+// side) separate no rooms: a room does not end at a table.
+void RoomGraph::mark_furniture(const PolygonWithHoles& polygon, double furniture_size) {
+  if (furniture_size <= 0.0) return;
+  const double limit = furniture_size / resolution_;
+  const double near = 1.5;  // cells: the pieces come from the polygon simplified by about a cell
+  for (const Ring& hole : polygon.holes) {
+    const Box box = bounding_box(hole);
+    if (box.x1 - box.x0 > limit || box.y1 - box.y0 > limit) continue;
+    for (std::size_t k = 0; k < sides_.size(); ++k) {
+      if (sides_[k].left < 0 || sides_[k].furniture) continue;
+      for (const Point2& end : {set_.cuts[k].a, set_.cuts[k].b}) {
+        if (end.x < box.x0 - near || end.x > box.x1 + near || end.y < box.y0 - near || end.y > box.y1 + near) continue;
+        for (std::size_t i = 0; i < hole.size() && !sides_[k].furniture; ++i)
+          sides_[k].furniture = distance_to_segment(end, {hole[i], hole[(i + 1) % hole.size()]}) <= near;
+      }
+    }
+  }
+}
+
+int RoomGraph::root(int i) {
+  while (parent_[static_cast<std::size_t>(i)] != i) {
+    parent_[static_cast<std::size_t>(i)] = parent_[static_cast<std::size_t>(parent_[static_cast<std::size_t>(i)])];
+    i = parent_[static_cast<std::size_t>(i)];
+  }
+  return i;
+}
+
+void RoomGraph::unite(int a, int b) {
+  int ra = root(a), rb = root(b);
+  if (ra == rb) return;
+  if (rb < ra) std::swap(ra, rb);
+  parent_[static_cast<std::size_t>(rb)] = ra;
+  std::vector<int>& into = members_[static_cast<std::size_t>(ra)];
+  std::vector<int>& from = members_[static_cast<std::size_t>(rb)];
+  into.insert(into.end(), from.begin(), from.end());
+  from.clear();
+  area_sum_[ra] = room_area(ra) + room_area(rb);
+  area_sum_.erase(rb);
+}
+
+bool RoomGraph::separates(std::size_t k) {
+  const Side& s = sides_[k];
+  return s.left >= 0 && root(s.left) != root(s.right);
+}
+
+double RoomGraph::room_area(int r) {
+  const auto it = area_sum_.find(r);
+  return it != area_sum_.end() ? it->second : areas_[static_cast<std::size_t>(r)];
+}
+
+double RoomGraph::room_perimeter(int r) {
+  double length = 0.0;
+  for (const int member : members(r)) length += perimeters_[static_cast<std::size_t>(member)];
+  for (const Side& s : sides_) {
+    if (s.left >= 0 && root(s.left) == r && root(s.right) == r) length -= 2.0 * s.length;
+  }
+  return length;
+}
+
+double RoomGraph::room_thickness(int r) {
+  const double length = room_perimeter(r);
+  return length > 0.0 ? 2.0 * room_area(r) / length : 0.0;
+}
+
+double RoomGraph::convex_hull_area(const std::vector<int>& rooms) {
+  std::vector<cv::Point2f> points;
+  for (const int r : rooms)
+    for (const int member : members(r))
+      for (const Point2& p : set_.pieces[static_cast<std::size_t>(member)].outer)
+        points.emplace_back(static_cast<float>(p.x), static_cast<float>(p.y));
+  if (points.size() < 3) return 0.0;
+  std::vector<cv::Point2f> hull;
+  cv::convexHull(points, hull);
+  return cv::contourArea(hull) * resolution_ * resolution_;
+}
+
+double RoomGraph::elongation(const std::vector<int>& rooms) {
+  Moments t;
+  for (const int r : rooms)
+    for (const int member : members(r)) {
+      const Moments& m = moments_[static_cast<std::size_t>(member)];
+      t.a += m.a, t.x += m.x, t.y += m.y, t.xx += m.xx, t.xy += m.xy, t.yy += m.yy;
+    }
+  if (t.a <= 0.0) return 1.0;
+  const double cx = t.x / t.a, cy = t.y / t.a;
+  const double sxx = t.xx / t.a - cx * cx, syy = t.yy / t.a - cy * cy, sxy = t.xy / t.a - cx * cy;
+  const double mean = (sxx + syy) / 2.0, spread = std::sqrt(std::max(0.0, (sxx - syy) * (sxx - syy) / 4.0 + sxy * sxy));
+  const double small = mean - spread, large = mean + spread;
+  return small > 0.0 ? std::sqrt(large / small) : 100.0;
+}
+
+double RoomGraph::shared_cut_length(int r, int s) {
+  double length = 0.0;
+  for (const Side& side : sides_) {
+    if (side.left < 0) continue;
+    const int a = root(side.left), b = root(side.right);
+    if (a == b) continue;
+    if ((a == r && (s < 0 || b == s)) || (b == r && (s < 0 || a == s))) length += side.length;
+  }
+  return length;
+}
+
+double RoomGraph::chord(int r, const Point2& p, const Point2& u) {
+  std::vector<std::pair<double, double>> spans;
+  std::vector<double> ts;
+  const Point2 n{-u.y, u.x};
+  for (const int member : members(r)) {
+    const std::size_t i = static_cast<std::size_t>(member);
+    const Box& b = boxes_[i];
+    const double s[4] = {(b.x0 - p.x) * n.x + (b.y0 - p.y) * n.y, (b.x1 - p.x) * n.x + (b.y0 - p.y) * n.y,
+                         (b.x0 - p.x) * n.x + (b.y1 - p.y) * n.y, (b.x1 - p.x) * n.x + (b.y1 - p.y) * n.y};
+    if (std::min({s[0], s[1], s[2], s[3]}) > 0.0 || std::max({s[0], s[1], s[2], s[3]}) <= 0.0) continue;
+    ts.clear();
+    add_crossings(set_.pieces[i].outer, p, u, ts);
+    for (const Ring& hole : set_.pieces[i].holes) add_crossings(hole, p, u, ts);
+    std::sort(ts.begin(), ts.end());
+    for (std::size_t k = 0; k + 1 < ts.size(); k += 2) spans.emplace_back(ts[k], ts[k + 1]);
+  }
+  std::sort(spans.begin(), spans.end());
+  // Join touching spans (pieces of one room share their cuts), keep the one around t = 0.
+  const double touch = 1e-9;
+  double lo = 0.0, hi = 0.0;
+  bool open = false;
+  for (const auto& [a, b] : spans) {
+    if (open && a <= hi + touch) {
+      hi = std::max(hi, b);
+      continue;
+    }
+    if (open && lo <= 0.0 && hi >= 0.0) return hi - lo;
+    lo = a;
+    hi = b;
+    open = true;
+  }
+  if (open && lo <= 0.0 && hi >= 0.0) return hi - lo;
+  return 0.0;
+}
+
+double RoomGraph::side_width(std::size_t k, int r, bool left, double depth_m) {
+  const auto [u, n, mid] = cut_frame(set_.cuts[k], left);
+  const double depth = std::max(depth_m / resolution_, 1.0);
+  const int samples = 8;
+  double widest = 0.0;
+  for (int s = 1; s <= samples; ++s) {
+    const double d = depth * s / samples;
+    const double w = chord(r, {mid.x + d * n.x, mid.y + d * n.y}, u);
+    if (w <= 0.0) break;
+    widest = std::max(widest, w);
+  }
+  return widest * resolution_;
+}
+
+double RoomGraph::side_depth(std::size_t k, int r, bool left) {
+  const auto [u, n, mid] = cut_frame(set_.cuts[k], left);
+  return chord(r, {mid.x + 0.5 * n.x, mid.y + 0.5 * n.y}, n) * resolution_;
+}
+
+PieceSet RoomGraph::result() {
+  // Rooms in the order of their first piece; the cuts between two rooms in input order.
+  std::vector<int> order;
+  std::vector<std::vector<int>> members(parent_.size());
+  for (std::size_t i = 0; i < parent_.size(); ++i) {
+    const int r = root(static_cast<int>(i));
+    if (members[static_cast<std::size_t>(r)].empty()) order.push_back(r);
+    members[static_cast<std::size_t>(r)].push_back(static_cast<int>(i));
+  }
+  // Each merged room's polygon is the union of its pieces. If that fails (pieces that do not
+  // meet along whole edges, which DuDe's never do), the room stays as its pieces.
+  std::map<int, PolygonWithHoles> unions;
+  std::set<int> broken;
+  for (const int r : order) {
+    const std::vector<int>& m = members[static_cast<std::size_t>(r)];
+    if (m.size() < 2) continue;
+    std::vector<PolygonWithHoles> parts;
+    for (const int i : m) parts.push_back(set_.pieces[static_cast<std::size_t>(i)]);
+    try {
+      unions[r] = union_of_pieces(parts);
+    } catch (const Error&) {
+      broken.insert(r);
+    }
+  }
+  PieceSet out;
+  std::set<std::pair<double, double>> ends;  // end points of the cuts that stay
+  for (std::size_t k = 0; k < sides_.size(); ++k) {
+    const Side& s = sides_[k];
+    if (s.left < 0 || (root(s.left) == root(s.right) && !broken.count(root(s.left)))) continue;
+    out.add_cut(set_.cuts[k], s.rule);
+    ends.insert({set_.cuts[k].a.x, set_.cuts[k].a.y});
+    ends.insert({set_.cuts[k].b.x, set_.cuts[k].b.y});
+  }
+  for (const int r : order) {
+    const std::vector<int>& m = members[static_cast<std::size_t>(r)];
+    if (m.size() == 1 || broken.count(r)) {
+      for (const int i : m) out.pieces.push_back(set_.pieces[static_cast<std::size_t>(i)]);
+      continue;
+    }
+    // Where a removed cut met a straight wall the union goes straight on; such vertices are
+    // dropped unless a remaining cut ends there (the cut must stay an edge of both rooms).
+    PolygonWithHoles room = unions.at(r);
+    auto tidy = [&](Ring& ring) {
+      Ring kept = remove_collinear_vertices(ring, [&](const Point2& p) { return ends.count({p.x, p.y}) > 0; });
+      if (kept.size() >= 3) ring = std::move(kept);
+    };
+    tidy(room.outer);
+    for (Ring& hole : room.holes) tidy(hole);
+    out.pieces.push_back(std::move(room));
+  }
+  return out;
+}
+
+}  // namespace topocut

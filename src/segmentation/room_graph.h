@@ -1,0 +1,95 @@
+#pragma once
+// The pieces of one free-space component as rooms in the making (internal to the module): which
+// pieces form each room (union-find), which cuts separate two rooms, and the measures that merging
+// decides by (chords, widths and depths beside a cut, areas, thickness, convex hulls). Grid
+// coordinates (one unit per cell); every measure it returns is in metres.
+#include <map>
+#include <vector>
+
+#include "topocut/core/cut_rule.h"
+#include "topocut/core/geometry.h"
+#include "topocut/segmentation/rooms_from_pieces.h"
+
+namespace topocut {
+
+class RoomGraph {
+ public:
+  // One cut between two pieces; left < 0 for a cut that separates no two pieces (a keyhole).
+  struct Side {
+    int left = -1, right = -1;  // pieces left and right of the cut (a -> b)
+    double length = 0.0;        // metres
+    CutRule rule = CutRule::kDecomposition;
+    bool furniture = false;     // an end lies on a furniture-sized obstacle
+    // The free space's angle at each end (radians summed over the pieces meeting there: pi in a
+    // straight wall, 3 pi / 2 at a door jamb, 2 pi at a wall's end, pi / 2 in a room's corner), smaller first.
+    double end_angle[2] = {0.0, 0.0};
+    double wall_continued = 0.0;  // m: the longest wall edge at an end that the cut continues straight on
+  };
+
+  // polygon is the component (its small holes are furniture); furniture_size in metres, 0: none.
+  RoomGraph(const PolygonWithHoles& polygon, const PieceSet& set, double resolution, double furniture_size);
+
+  const PieceSet& set() const { return set_; }
+  double resolution() const { return resolution_; }
+  const std::vector<Side>& sides() const { return sides_; }
+  std::size_t piece_count() const { return parent_.size(); }
+
+  // The room (root piece) holding piece i.
+  int root(int i);
+  // Merges the rooms of pieces a and b; the room keeps its first piece as root.
+  void unite(int a, int b);
+  // The pieces of room r (r a root).
+  const std::vector<int>& members(int r) const { return members_[static_cast<std::size_t>(r)]; }
+  // Whether cut k now separates two different rooms.
+  bool separates(std::size_t k);
+
+  double room_area(int r);       // m²
+  double room_perimeter(int r);  // m, without the cuts inside the room
+  double room_thickness(int r);  // 2 area / perimeter, m: a strip's width, half a square's side
+  double convex_hull_area(const std::vector<int>& rooms);  // m², of the rooms' pieces together
+  // The rooms' elongation together: the square root of the ratio of the principal second moments
+  // of their area (1 for a square or a disc, about L / W for an L x W strip).
+  double elongation(const std::vector<int>& rooms);
+  // Length of the cuts between rooms r and s (m); s < 0: between r and every other room.
+  double shared_cut_length(int r, int s);
+
+  // Width of room r beside cut k (m): the longest chord parallel to the cut within depth metres on
+  // r's side (left: the cut's left).
+  double side_width(std::size_t k, int r, bool left, double depth);
+  // Depth of room r behind cut k (m): its chord along the cut's normal through the cut's middle.
+  double side_depth(std::size_t k, int r, bool left);
+
+  // The rooms in the order of their first piece, each the union of its pieces, and the cuts between
+  // two rooms in input order.
+  PieceSet result();
+
+ private:
+  void find_sides();
+  void measure_cut_ends();
+  void mark_furniture(const PolygonWithHoles& polygon, double furniture_size);
+  double chord(int r, const Point2& p, const Point2& u);
+
+  const PieceSet& set_;
+  double resolution_;
+  std::vector<int> parent_;
+  std::vector<std::vector<int>> members_;  // room root -> its pieces
+  std::vector<Box> boxes_;
+  std::vector<double> areas_;       // m² per piece
+  std::vector<double> perimeters_;  // m per piece
+  struct Moments {
+    double a = 0.0, x = 0.0, y = 0.0, xx = 0.0, xy = 0.0, yy = 0.0;  // integrals of 1, x, y, x², xy, y² (cells)
+  };
+  std::vector<Moments> moments_;    // per piece
+  std::vector<Side> sides_;
+  std::map<int, double> area_sum_;  // room root -> area (m², rooms of 2+ pieces)
+};
+
+}  // namespace topocut
+
+namespace topocut {
+
+// The features (merge_features.h) of merging the two rooms on the sides of cut k of graph, the sides'
+// widths sampled within width_depth metres of the cut.
+std::vector<double> merge_features(RoomGraph& graph, std::size_t k, double width_depth);
+
+}  // namespace topocut
