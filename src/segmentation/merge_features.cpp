@@ -36,6 +36,8 @@ const std::vector<std::string>& merge_feature_names() {
       "union_thickness_over_narrow",  // 2 area / perimeter of the union over the narrow room's
       "log_narrow_elongation",        // log of the narrow room's elongation (second moments: about length / width)
       "log_union_elongation",         // log of the union's elongation
+      "ends_on_holes",                // ends of the cut on an obstacle inside the free space (0, 1 or 2)
+      "log_hole_extent",              // log(1 + the largest such obstacle's bounding-box side, m)
   };
   return names;
 }
@@ -101,6 +103,8 @@ std::vector<double> merge_features(RoomGraph& graph, std::size_t k, double width
       union_thickness / std::max(graph.room_thickness(narrow), kMinLength),
       std::log(std::min(graph.elongation({narrow}), 100.0)),
       std::log(std::min(graph.elongation({narrow, wide}), 100.0)),
+      static_cast<double>(std::min(side.ends_on_holes, 2)),
+      std::log1p(side.hole_extent),
   };
 }
 

@@ -170,21 +170,26 @@ void RoomGraph::find_sides() {
   }
 }
 
-// Cuts with an end point on a small obstacle (a hole whose bounding box is at most furniture_size a
-// side) separate no rooms: a room does not end at a table.
+// Which cut ends lie on an obstacle inside the component (a hole), how large the largest of those is,
+// and whether it is furniture (at most furniture_size a side, 0: none): a room does not end at a table.
 void RoomGraph::mark_furniture(const PolygonWithHoles& polygon, double furniture_size) {
-  if (furniture_size <= 0.0) return;
   const double limit = furniture_size / resolution_;
   const double near = 1.5;  // cells: the pieces come from the polygon simplified by about a cell
   for (const Ring& hole : polygon.holes) {
     const Box box = bounding_box(hole);
-    if (box.x1 - box.x0 > limit || box.y1 - box.y0 > limit) continue;
+    const double extent = std::max(box.x1 - box.x0, box.y1 - box.y0);
+    const bool furniture = furniture_size > 0.0 && box.x1 - box.x0 <= limit && box.y1 - box.y0 <= limit;
     for (std::size_t k = 0; k < sides_.size(); ++k) {
-      if (sides_[k].left < 0 || sides_[k].furniture) continue;
+      Side& side = sides_[k];
+      if (side.left < 0) continue;
       for (const Point2& end : {set_.cuts[k].a, set_.cuts[k].b}) {
         if (end.x < box.x0 - near || end.x > box.x1 + near || end.y < box.y0 - near || end.y > box.y1 + near) continue;
-        for (std::size_t i = 0; i < hole.size() && !sides_[k].furniture; ++i)
-          sides_[k].furniture = distance_to_segment(end, {hole[i], hole[(i + 1) % hole.size()]}) <= near;
+        bool on = false;
+        for (std::size_t i = 0; i < hole.size() && !on; ++i) on = distance_to_segment(end, {hole[i], hole[(i + 1) % hole.size()]}) <= near;
+        if (!on) continue;
+        ++side.ends_on_holes;
+        side.hole_extent = std::max(side.hole_extent, extent * resolution_);
+        side.furniture = side.furniture || furniture;
       }
     }
   }

@@ -24,6 +24,8 @@ class RoomGraph {
     // straight wall, 3 pi / 2 at a door jamb, 2 pi at a wall's end, pi / 2 in a room's corner), smaller first.
     double end_angle[2] = {0.0, 0.0};
     double wall_continued = 0.0;  // m: the longest wall edge at an end that the cut continues straight on
+    int ends_on_holes = 0;        // ends that lie on an obstacle inside the component (a hole)
+    double hole_extent = 0.0;     // m: the largest bounding-box side of those obstacles
   };
 
   // polygon is the component (its small holes are furniture); furniture_size in metres, 0: none.
