@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <string>
 #include <vector>
 
@@ -217,7 +219,33 @@ CleanedFreeSpace clean_free_space(const cv::Mat& free, const cv::Mat& grid_cells
   paint(c.inside, removed, kCellRemovedInside);
   result.removed_cells = static_cast<int>(cell_count(c.lost));
   result.outside_cells = static_cast<int>(cell_count(c.lost) - cell_count(c.inside));
+  result.speck_cells = static_cast<int>(cell_count(c.specks));
+  result.window = window;
   return result;
+}
+
+cv::Mat cells_after_cleaning(const cv::Mat& cells, const CleanedFreeSpace& cleaned) {
+  CV_Assert(cells.type() == CV_8UC1);
+  if (cleaned.outside_cells == 0 && cleaned.speck_cells == 0) return cells;
+  CV_Assert(cleaned.removed.size() == cells.size());
+  cv::Mat out = cells.clone();
+  const cv::Rect w = cleaned.window;
+  for (int y = w.y; y < w.y + w.height; ++y) {
+    const unsigned char* removed = cleaned.removed.ptr<unsigned char>(y);
+    unsigned char* cell = out.ptr<unsigned char>(y);
+    for (int x = w.x; x < w.x + w.width; ++x) {
+      // Most cells are untouched: eight at a time.
+      std::uint64_t eight = 1;
+      if (x + 8 <= w.x + w.width) std::memcpy(&eight, removed + x, sizeof eight);
+      if (eight == 0) {
+        x += 7;
+        continue;
+      }
+      if (removed[x] == kCellRemovedOutside) cell[x] = kUnknown;
+      else if (removed[x] == kCellObstacleSpeck && cell[x] == kUnknown) cell[x] = kFree;
+    }
+  }
+  return out;
 }
 
 cv::Mat render_cleaned_map(const cv::Mat& cells, const CleanedFreeSpace& cleaned) {

@@ -67,13 +67,7 @@ SegmentationInput segmentation_input(const OccupancyGrid& grid, const SegmentOpt
   // An unknown speck enclosed by floor is floor the sensor never reported (a cell between two
   // readings, a grey pixel of a half-seen spot), so it gets the room like the floor around it;
   // occupied specks (chair legs) stay obstacles.
-  const cv::Mat unknown_specks = (cleaned.removed == kCellObstacleSpeck) & (grid.cells == kUnknown);
-  const bool outside = cleaned.outside_cells > 0, specks = cv::countNonZero(unknown_specks) > 0;
-  if (outside || specks) {
-    input.labelled.cells = grid.cells.clone();
-    if (outside) input.labelled.cells.setTo(kUnknown, cleaned.removed == kCellRemovedOutside);
-    if (specks) input.labelled.cells.setTo(kFree, unknown_specks);
-  }
+  input.labelled.cells = cells_after_cleaning(grid.cells, cleaned);
   input.cleaned = std::move(cleaned);
   return input;
 }
@@ -177,7 +171,7 @@ SegmentOptions parity_segment_options(double concavity) {
 
 cv::Rect segmentation_box(const OccupancyGrid& grid, const SegmentOptions& options) {
   validate(grid);
-  const cv::Rect box = cv::boundingRect(grid.cells != kUnknown);
+  const cv::Rect box = known_box(grid.cells);
   if (box.empty()) return cv::Rect(0, 0, grid.width(), grid.height());
   // Wider than every stage looks beyond a cell: the cleaning's closing and thickness test, the
   // robot radius, the opening and the median filter.
@@ -218,6 +212,7 @@ void place_input(SegmentationInput& input, const OccupancyGrid& grid, const cv::
   input.labelled = OccupancyGrid{labelled, grid.resolution, grid.origin};
   input.cleaned.floor = placed(input.cleaned.floor, grid.cells.size(), box, 0);
   input.cleaned.removed = placed(input.cleaned.removed, grid.cells.size(), box, kCellUntouched);
+  input.cleaned.window += box.tl();
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 #include "topocut/core/geometry.h"
 
 #include <gtest/gtest.h>
+#include <opencv2/imgproc.hpp>
 
 #include "core/cgal_geometry.h"
 #include "topocut/core/error.h"
@@ -73,6 +74,20 @@ TEST(OccupancyGrid, CropKeepsEveryCellInItsWorldPlace) {
   EXPECT_NE(cv::countNonZero(grid.cells(box)), 0);
   EXPECT_THROW(crop(grid, cv::Rect(5, 0, 3, 2)), Error);  // beyond the right edge
   EXPECT_THROW(crop(grid, cv::Rect(0, 0, 0, 2)), Error);
+}
+
+TEST(OccupancyGrid, KnownBoxIsTheBoxOfTheKnownCells) {
+  cv::RNG rng(3);
+  for (int trial = 0; trial < 60; ++trial) {
+    cv::Mat cells(rng.uniform(1, 90), rng.uniform(1, 150), CV_8UC1, cv::Scalar(kUnknown));
+    for (int k = rng.uniform(0, 4); k > 0; --k) {
+      const cv::Point p(rng.uniform(0, cells.cols), rng.uniform(0, cells.rows));
+      cells(cv::Rect(p, cv::Size(rng.uniform(1, 30), rng.uniform(1, 30))) & cv::Rect(0, 0, cells.cols, cells.rows))
+          .setTo(rng.uniform(0, 2) == 0 ? kFree : kOccupied);
+    }
+    EXPECT_EQ(known_box(cells), cv::boundingRect(cells != kUnknown)) << "trial " << trial;
+  }
+  EXPECT_TRUE(known_box(cv::Mat(3, 3, CV_8UC1, cv::Scalar(kUnknown))).empty());
 }
 
 TEST(OccupancyGrid, ValidateRejectsBadResolution) {

@@ -256,6 +256,8 @@ TEST(CleanFreeSpace, IsTheDefinitionCellForCell) {
       EXPECT_EQ(count(c.removed != r.removed), 0) << "trial " << trial << ", " << resolution << " m";
       EXPECT_EQ(c.removed_cells, count(r.removed >= kCellRemovedInside));
       EXPECT_EQ(c.outside_cells, count(r.removed == kCellRemovedOutside));
+      EXPECT_EQ(c.speck_cells, count(r.removed == kCellObstacleSpeck));
+      EXPECT_EQ(count(c.removed) + count(c.floor), count(c.removed(c.window)) + count(c.floor(c.window)));
       specks += count(r.removed == kCellObstacleSpeck);
       inside += c.removed_cells - c.outside_cells;
       outside += c.outside_cells;
@@ -265,6 +267,23 @@ TEST(CleanFreeSpace, IsTheDefinitionCellForCell) {
   EXPECT_GT(specks, 0);
   EXPECT_GT(inside, 0);
   EXPECT_GT(outside, 0);
+}
+
+TEST(CleanFreeSpace, CellsAfterCleaningAsTheLabellingSeesThem) {
+  Synthetic s = synthetic_map();
+  const cv::Rect unseen(30, 100, 2, 1);  // unknown cells in room A: a speck
+  s.cells(unseen).setTo(kUnknown);
+  const CleanedFreeSpace c = clean_free_space(s.cells == kFree, s.cells, kRes);
+  const cv::Mat after = cells_after_cleaning(s.cells, c);
+  EXPECT_EQ(count(after != s.cells), c.outside_cells + 2);
+  EXPECT_EQ(count((c.removed == kCellRemovedOutside) & (after != kUnknown)), 0);
+  EXPECT_EQ(count(after(unseen) == kFree), 2);
+  EXPECT_EQ(count(after(s.speck) == kOccupied), 4);  // the occupied speck stays an obstacle
+  // Nothing to change: the cells themselves.
+  FreeSpaceCleaningOptions off;
+  off.max_obstacle_speck = 0.0;
+  off.min_width = 0.0;
+  EXPECT_EQ(cells_after_cleaning(s.cells, clean_free_space(s.cells == kFree, s.cells, kRes, off)).data, s.cells.data);
 }
 
 TEST(CleanFreeSpace, BadInputIsAnError) {
