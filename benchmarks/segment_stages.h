@@ -60,7 +60,12 @@ inline Segmentation time_stages(const std::string& path, const MapLoadOptions& l
   const double f = cpu_ms();
   Segmentation s = rooms_from_pieces(input.labelled, pieces, options.labels);
   if (part.cells.size() != grid.cells.size()) {
-    cv::Mat labels = cv::Mat::zeros(grid.cells.size(), CV_32SC1);
+    // As segment() places them (uncrop(), written here with OpenCV so that older builds time the same).
+    cv::Mat labels(grid.cells.size(), CV_32SC1);
+    labels.rowRange(0, box.y).setTo(0);
+    labels.rowRange(box.y + box.height, labels.rows).setTo(0);
+    labels.rowRange(box.y, box.y + box.height).colRange(0, box.x).setTo(0);
+    labels.rowRange(box.y, box.y + box.height).colRange(box.x + box.width, labels.cols).setTo(0);
     s.labels.copyTo(labels(box));
     s.labels = labels;
   }

@@ -90,6 +90,19 @@ cv::Rect known_box(const cv::Mat& cells) {
   return {x0, y0, x1 - x0 + 1, y1 - y0 + 1};
 }
 
+cv::Mat uncrop(const cv::Mat& part, const cv::Size& size, const cv::Rect& box, double value) {
+  CV_Assert(box.size() == part.size() && (box & cv::Rect(0, 0, size.width, size.height)) == box);
+  cv::Mat whole(size, part.type());
+  const cv::Scalar fill = cv::Scalar::all(value);
+  whole.rowRange(0, box.y).setTo(fill);
+  whole.rowRange(box.y + box.height, size.height).setTo(fill);
+  const cv::Mat band = whole.rowRange(box.y, box.y + box.height);
+  band.colRange(0, box.x).setTo(fill);
+  band.colRange(box.x + box.width, size.width).setTo(fill);
+  part.copyTo(whole(box));
+  return whole;
+}
+
 void validate(const OccupancyGrid& grid) {
   if (grid.cells.empty()) throw Error("the map is empty (0 cells)");
   if (grid.cells.type() != CV_8UC1) throw Error("the occupancy grid must be a single-channel 8-bit image");

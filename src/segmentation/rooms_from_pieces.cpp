@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <tuple>
 
@@ -127,8 +128,12 @@ SpanLabels write_span_labels(const OccupancyGrid& grid, const std::vector<CellSp
     int c = 0;
     auto gap = [&](int until) {
       std::fill(labels + c, labels + until, 0);
-      for (; c < until; ++c)
-        if (g[c] == kFree) out.unlabelled.push_back(r * w + c);
+      // Free cells are rare between spans (walls, unknown space): memchr skips to the next one.
+      for (const void* f; c < until && (f = std::memchr(g + c, kFree, static_cast<std::size_t>(until - c))) != nullptr;) {
+        c = static_cast<int>(static_cast<const unsigned char*>(f) - g);
+        out.unlabelled.push_back(r * w + c++);
+      }
+      c = until;
     };
     for (const int i : row_spans) {
       const CellSpan& span = spans[static_cast<std::size_t>(i)];

@@ -196,12 +196,9 @@ Segmentation segment_whole(const OccupancyGrid& grid, const SegmentOptions& opti
   return segmentation;
 }
 
-// An image of the given size holding image at box and value everywhere else.
+// An image of the given size holding image at box and value everywhere else (uncrop()).
 cv::Mat placed(const cv::Mat& image, const cv::Size& size, const cv::Rect& box, double value) {
-  if (image.empty()) return image;
-  cv::Mat whole(size, image.type(), cv::Scalar::all(value));
-  image.copyTo(whole(box));
-  return whole;
+  return image.empty() ? image : uncrop(image, size, box, value);
 }
 
 // The stages' images of the box, placed back into the whole grid.

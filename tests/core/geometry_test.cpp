@@ -90,6 +90,18 @@ TEST(OccupancyGrid, KnownBoxIsTheBoxOfTheKnownCells) {
   EXPECT_TRUE(known_box(cv::Mat(3, 3, CV_8UC1, cv::Scalar(kUnknown))).empty());
 }
 
+TEST(OccupancyGrid, UncropPutsThePartBackAndFillsTheRest) {
+  cv::Mat part(3, 4, CV_32SC1);
+  cv::randu(part, 1, 1000);
+  for (const cv::Rect box : {cv::Rect(2, 1, 4, 3), cv::Rect(0, 0, 4, 3), cv::Rect(5, 6, 4, 3)}) {
+    const cv::Mat whole = uncrop(part, {9, 9}, box, -7);
+    cv::Mat expected(9, 9, CV_32SC1, cv::Scalar(-7));
+    part.copyTo(expected(box));
+    EXPECT_EQ(cv::countNonZero(whole != expected), 0);
+  }
+  EXPECT_ANY_THROW(uncrop(part, {5, 5}, cv::Rect(2, 1, 4, 3), 0));
+}
+
 TEST(OccupancyGrid, ValidateRejectsBadResolution) {
   OccupancyGrid grid{cv::Mat(2, 2, CV_8UC1, cv::Scalar(kFree)), 0.0, {}};
   EXPECT_THROW(validate(grid), Error);
