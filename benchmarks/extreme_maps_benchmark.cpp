@@ -1,11 +1,16 @@
 // Extreme map sizes (issue "Hardening"): a synthetic office floor — a lattice of 10 m x 10 m rooms
 // with 0.2 m walls, a 1 m door in each wall and furniture-like blocks — of growing size, up to
-// 10,000 x 10,000 cells (500 m x 500 m at 0.05 m). Each size runs in its own child process so that
-// the peak memory (maximum resident set) is that size's alone. Prints a Markdown table:
-// load (PNG decode), segment, write labels, peak RSS and RSS per megapixel.
+// 10,000 x 10,000 cells (500 m x 500 m at 0.05 m). Each size runs in its own child processes, so
+// that the peak memory (maximum resident set) is that size's alone:
+// - one writes the map, loads it, segments it with segment() and writes the labels (wall-clock
+//   seconds and the peak RSS: what `topocut segment` costs);
+// - one times the stages of segment() one by one (segment_stages.h: process CPU time, least of
+//   --repeat runs) beside the contour floor (decode, threshold, cv::findContours), and prints each
+//   stage's time over the floor.
+// Then the growth of every stage from one size to the next, beside the growth of the cells.
 // With --unexplored CANVAS each floor lies in the middle of a CANVAS x CANVAS map of unknown cells
 // (grey 205, as map_server writes it; gmapping's default map is 4000 x 4000), as a SLAM map is.
-//   extreme_maps_benchmark [--unexplored CANVAS] [SIDE...]     (default: 1000 2500 5000 10000)
+//   extreme_maps_benchmark [--unexplored CANVAS] [--repeat N] [SIDE...]   (default: 1000 2500 5000 10000)
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -15,7 +20,9 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <functional>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include <opencv2/core.hpp>
@@ -25,6 +32,9 @@
 #include "topocut/io/label_image.h"
 #include "topocut/io/map_loader.h"
 #include "topocut/segmentation/segmenter.h"
+
+#include "benchmark_machine.h"
+#include "segment_stages.h"
 
 namespace {
 
@@ -62,12 +72,14 @@ cv::Mat map_of(int side, int canvas) {
   return map;
 }
 
-// Child: builds, writes, loads and segments one map; prints the timings on one line.
-int run_one(int side, int canvas, const std::string& folder) {
-  const std::string map_path = folder + "/floor_" + std::to_string(side) + ".png";
-  cv::imwrite(map_path, map_of(side, canvas));
+std::string map_path(const std::string& folder, int side) { return folder + "/floor_" + std::to_string(side) + ".png"; }
+
+// Child: writes the map, loads it, segments it and writes the labels; prints the timings on one line.
+void run_segment(int side, int canvas, const std::string& folder) {
+  const std::string path = map_path(folder, side);
+  cv::imwrite(path, map_of(side, canvas));
   const auto t0 = Clock::now();
-  const topocut::OccupancyGrid grid = topocut::load_map(map_path);
+  const topocut::OccupancyGrid grid = topocut::load_map(path);
   const double load = seconds_since(t0);
   const auto t1 = Clock::now();
   const topocut::Segmentation segmentation = topocut::segment(grid);
@@ -76,9 +88,98 @@ int run_one(int side, int canvas, const std::string& folder) {
   topocut::write_label_image(folder + "/labels_" + std::to_string(side) + ".png", segmentation.labels);
   const double write = seconds_since(t2);
   std::printf("%.2f %.2f %.2f %zu %zu\n", load, seg, write, segmentation.rooms.size(), segmentation.passages.size());
-  std::filesystem::remove(map_path);
   std::filesystem::remove(folder + "/labels_" + std::to_string(side) + ".png");
-  return 0;
+}
+
+// Child: the stages' least times over the runs, on one line (floor first, total last).
+void run_stages(int side, const std::string& folder, int repeat) {
+  topocut::benchmarks::StageTimes t;
+  for (int k = 0; k < repeat; ++k)
+    topocut::benchmarks::time_stages(map_path(folder, side), topocut::MapLoadOptions{}, topocut::SegmentOptions{}, false, t);
+  for (const auto& [name, ms] : topocut::benchmarks::least_stage_ms(t)) std::printf("%.1f ", ms);
+  std::printf("\n");
+}
+
+// Runs work in a forked child whose standard output comes back as the result; the child's peak
+// resident memory (MB) goes to peak_mb.
+std::string in_child(const std::function<void()>& work, double& peak_mb) {
+  int pipe_fds[2];
+  if (pipe(pipe_fds) != 0) return "error: no pipe";
+  std::fflush(stdout);
+  const pid_t child = fork();
+  if (child == 0) {
+    close(pipe_fds[0]);
+    dup2(pipe_fds[1], STDOUT_FILENO);
+    try {
+      work();
+    } catch (const std::exception& e) {
+      std::printf("error %s\n", e.what());
+    }
+    std::fflush(stdout);
+    _exit(0);
+  }
+  close(pipe_fds[1]);
+  std::string out;
+  char buffer[512];
+  ssize_t n = 0;
+  while ((n = read(pipe_fds[0], buffer, sizeof buffer)) > 0) out.append(buffer, static_cast<std::size_t>(n));
+  close(pipe_fds[0]);
+  int status = 0;
+  rusage usage{};
+  wait4(child, &status, 0, &usage);
+  peak_mb = usage.ru_maxrss / 1024.0;  // ru_maxrss is in KiB on Linux
+  return out;
+}
+
+std::vector<double> numbers_of(const std::string& line) {
+  std::vector<double> values;
+  const char* p = line.c_str();
+  char* end = nullptr;
+  for (double v = std::strtod(p, &end); end != p; v = std::strtod(p, &end)) {
+    values.push_back(v);
+    p = end;
+  }
+  return values;
+}
+
+const char* const kStages[] = {"floor", "load", "free", "clean", "polygons", "decompose", "merge", "labels", "total"};
+constexpr std::size_t kStageCount = std::size(kStages);
+
+void print_header(const char* first, bool with_floor) {
+  std::printf("| %s |", first);
+  for (std::size_t k = with_floor ? 0 : 1; k < kStageCount; ++k) std::printf(" %s |", kStages[k]);
+  std::printf("\n|---|");
+  for (std::size_t k = with_floor ? 0 : 1; k < kStageCount; ++k) std::printf("---|");
+  std::printf("\n");
+}
+
+// The stage tables: CPU ms, each stage over the floor, and each stage's growth from the size before.
+void print_stage_tables(const std::vector<int>& sides, const std::vector<double>& mpx, const std::vector<std::vector<double>>& stages,
+                        int repeat) {
+  std::printf("\nStages of segment(), process CPU ms, least of %d run(s):\n\n", repeat);
+  print_header("megapixels", true);
+  for (std::size_t i = 0; i < sides.size(); ++i) {
+    if (stages[i].size() != kStageCount) continue;
+    std::printf("| %.1f |", mpx[i]);
+    for (const double ms : stages[i]) std::printf(" %.1f |", ms);
+    std::printf("\n");
+  }
+  std::printf("\nEach stage's time over the floor:\n\n");
+  print_header("megapixels", false);
+  for (std::size_t i = 0; i < sides.size(); ++i) {
+    if (stages[i].size() != kStageCount) continue;
+    std::printf("| %.1f |", mpx[i]);
+    for (std::size_t k = 1; k < kStageCount; ++k) std::printf(" %.2f |", stages[i][k] / stages[i][0]);
+    std::printf("\n");
+  }
+  std::printf("\nGrowth from the size before (time ratio; cells grow by the first column):\n\n");
+  print_header("megapixels (cells x)", true);
+  for (std::size_t i = 1; i < sides.size(); ++i) {
+    if (stages[i].size() != kStageCount || stages[i - 1].size() != kStageCount) continue;
+    std::printf("| %.1f -> %.1f (%.1f) |", mpx[i - 1], mpx[i], mpx[i] / mpx[i - 1]);
+    for (std::size_t k = 0; k < kStageCount; ++k) std::printf(" %.2f |", stages[i][k] / stages[i - 1][k]);
+    std::printf("\n");
+  }
 }
 
 }  // namespace
@@ -86,18 +187,24 @@ int run_one(int side, int canvas, const std::string& folder) {
 int main(int argc, char** argv) {
   topocut::keep_freed_memory_for_reuse();
   std::vector<int> sides;
-  int canvas = 0;
+  int canvas = 0, repeat = 1;
   const auto usage = [] {
     std::fprintf(stderr,
-                 "usage: extreme_maps_benchmark [--unexplored CANVAS] [SIDE...]   (SIDE, CANVAS: cells per side, 100 to 40000)\n");
+                 "usage: extreme_maps_benchmark [--unexplored CANVAS] [--repeat N] [SIDE...]   (SIDE, CANVAS: cells per "
+                 "side, 100 to 40000)\n");
     return 2;
   };
   for (int i = 1; i < argc; ++i) {
-    const bool unexplored = std::string(argv[i]) == "--unexplored";
-    if (unexplored && ++i == argc) return usage();
+    const std::string flag = argv[i];
+    if ((flag == "--unexplored" || flag == "--repeat") && ++i == argc) return usage();
     const int value = std::atoi(argv[i]);
+    if (flag == "--repeat") {
+      if (value < 1) return usage();
+      repeat = value;
+      continue;
+    }
     if (value < 100 || value > 40000) return usage();  // the floor's lattice needs a room; 40,000 is 1,600 Mpx
-    if (unexplored) {
+    if (flag == "--unexplored") {
       canvas = value;
     } else {
       sides.push_back(value);
@@ -106,45 +213,33 @@ int main(int argc, char** argv) {
   if (sides.empty()) sides = {1000, 2500, 5000, 10000};
   const std::string folder = std::filesystem::temp_directory_path() / ("topocut_extreme_" + std::to_string(getpid()));
   std::filesystem::create_directories(folder);
+  double load_average[3] = {0, 0, 0};
+  getloadavg(load_average, 3);
+  std::printf("machine: %s, %u hardware threads, load average %.1f\n\n", topocut::benchmarks::cpu_model().c_str(),
+              std::thread::hardware_concurrency(), load_average[0]);
   if (canvas > 0) std::printf("Each floor in the middle of a %d x %d map of unknown cells.\n\n", canvas, canvas);
   std::printf("| side (cells) | megapixels | load s | segment s | write labels s | rooms | passages | peak RSS MB | MB per Mpx |\n");
   std::printf("|---|---|---|---|---|---|---|---|---|\n");
-  std::fflush(stdout);
+  std::vector<double> mpx;
+  std::vector<std::vector<double>> stages;
   for (const int side : sides) {
-    int pipe_fds[2];
-    if (pipe(pipe_fds) != 0) return 1;
-    const pid_t child = fork();
-    if (child == 0) {
-      close(pipe_fds[0]);
-      dup2(pipe_fds[1], STDOUT_FILENO);
-      try {
-        run_one(side, canvas, folder);
-      } catch (const std::exception& e) {
-        std::printf("error %s\n", e.what());
-      }
-      std::fflush(stdout);
-      _exit(0);
-    }
-    close(pipe_fds[1]);
-    char buffer[512] = {0};
-    const ssize_t n = read(pipe_fds[0], buffer, sizeof buffer - 1);
-    close(pipe_fds[0]);
-    int status = 0;
-    rusage usage{};
-    wait4(child, &status, 0, &usage);
     const double cells_per_side = std::max(side, canvas);
-    const double mpx = cells_per_side * cells_per_side / 1e6;
-    const double peak_mb = usage.ru_maxrss / 1024.0;  // ru_maxrss is in KiB on Linux
-    double load = 0, seg = 0, write = 0;
-    std::size_t rooms = 0, passages = 0;
-    if (n <= 0 || std::sscanf(buffer, "%lf %lf %lf %zu %zu", &load, &seg, &write, &rooms, &passages) != 5) {
-      std::printf("| %d | %.1f | failed: %s (status %d) |\n", side, mpx, buffer, status);
+    mpx.push_back(cells_per_side * cells_per_side / 1e6);
+    double peak_mb = 0, unused = 0;
+    const std::string segmented = in_child([&] { run_segment(side, canvas, folder); }, peak_mb);
+    const std::vector<double> v = numbers_of(segmented);
+    if (v.size() != 5) {
+      std::printf("| %d | %.1f | failed: %s |\n", side, mpx.back(), segmented.c_str());
+      stages.emplace_back();
       continue;
     }
-    std::printf("| %d | %.1f | %.2f | %.2f | %.2f | %zu | %zu | %.0f | %.1f |\n", side, mpx, load, seg, write, rooms, passages,
-                peak_mb, peak_mb / mpx);
+    std::printf("| %d | %.1f | %.2f | %.2f | %.2f | %.0f | %.0f | %.0f | %.1f |\n", side, mpx.back(), v[0], v[1], v[2], v[3],
+                v[4], peak_mb, peak_mb / mpx.back());
     std::fflush(stdout);
+    stages.push_back(numbers_of(in_child([&] { run_stages(side, folder, repeat); }, unused)));
+    std::filesystem::remove(map_path(folder, side));
   }
+  print_stage_tables(sides, mpx, stages, repeat);
   std::filesystem::remove_all(folder);
   return 0;
 }

@@ -1,10 +1,11 @@
 // Segmentation stage times: where the milliseconds of `topocut segment` go on the Bormann images,
 // or with --maps DIR on a folder of maps without ground truth (the real maps: YAMLs and images).
-// For every image it runs the batch pipeline stage by stage (the same calls segment() makes) and
-// prints the least CPU time of each stage over --repeat runs (thread CPU time: on a shared, busy
-// machine the least of a few runs is the steadiest estimate), next to the contour floor measured
-// the same way (decode the PNG, threshold, cv::findContours). Used to decide what to optimise;
-// the dataset benchmark gives the end-to-end wall-clock figures.
+// For every image it runs the batch pipeline stage by stage (the same calls segment() makes,
+// segment_stages.h) and prints the least CPU time of each stage over --repeat runs (process CPU
+// time: on a shared, busy machine the least of a few runs is the steadiest estimate), next to the
+// contour floor measured the same way (decode the PNG, threshold, cv::findContours), then each
+// stage's time over the floor. Used to decide what to optimise; the dataset benchmark gives the
+// end-to-end wall-clock figures.
 //
 // With --quality it also scores every image against its ground truth (recall / precision, as
 // `topocut evaluate`), so that option variants can be compared stage by stage.
@@ -15,17 +16,15 @@
 // segment() did before it cropped.
 //
 // Options: kUsage below (printed by --help).
-#include <time.h>
+#include <stdlib.h>
 #include <unistd.h>
 
 #include <algorithm>
-#include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <numeric>
-#include <sstream>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include <opencv2/imgcodecs.hpp>
@@ -42,28 +41,16 @@
 #include "topocut/map/rasterize.h"
 #include "topocut/segmentation/segmenter.h"
 
+#include "benchmark_machine.h"
+#include "segment_stages.h"
+
 namespace {
 
 using namespace topocut;
-// CPU time of the calling thread, in milliseconds.
-struct Clock {
-  static double now() {
-    timespec t{};
-    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-    return static_cast<double>(t.tv_sec) * 1e3 + static_cast<double>(t.tv_nsec) * 1e-6;
-  }
-};
-
-double ms(double a, double b) { return b - a; }
-
-double least(const std::vector<double>& v) { return *std::min_element(v.begin(), v.end()); }
+using benchmarks::least;
+using benchmarks::StageTimes;
 
 double median(std::vector<double> v) { return time_statistics(std::move(v)).median; }
-
-struct StageTimes {
-  std::vector<double> floor, load, free_space, clean, polygons, decompose, merge, rooms, total;
-  int vertices = 0, pieces = 0, rooms_found = 0;
-};
 
 // One image to time: a Bormann image (with its ground truth) or a map of a folder.
 struct Job {
@@ -105,61 +92,6 @@ std::vector<Job> folder_jobs(const std::string& folder, const std::vector<std::s
   }
   if (jobs.empty()) throw Error("no map of '" + folder + "' is selected");
   return jobs;
-}
-
-// One run of the pipeline on the map at path, stage by stage (the calls segment() makes), each
-// stage's thread CPU time appended to t; the free space is timed once more on its own (not part of
-// the total) so that the cleaning's share can be told apart.
-Segmentation time_stages(const std::string& path, const MapLoadOptions& load, const SegmentOptions& options, bool no_crop,
-                         StageTimes& t) {
-  const double t0 = Clock::now();
-  contour_floor_ms(path, load.free_min, 1);
-  t.floor.push_back(ms(t0, Clock::now()));
-
-  const double a = Clock::now();
-  const OccupancyGrid grid = load_map(path, load);
-  const double b = Clock::now();
-  // As segment() does: the stages run on the known cells' box (the labels are placed back into the
-  // whole map in the labels column).
-  const cv::Rect box = segmentation_box(grid, options);
-  const OccupancyGrid part = no_crop || box.size() == grid.cells.size() ? grid : crop(grid, box);
-  const SegmentationInput input = segmentation_input(part, options);
-  const double c = Clock::now();
-  const FreeSpacePolygons polygons = free_space_polygons(input.floor, grid.resolution, options.contours);
-  const double d = Clock::now();
-  std::vector<PieceSet> raw;
-  for (const FreeSpaceComponent& component : polygons.components)
-    raw.push_back(decompose_pieces(component, grid.resolution, options));
-  const double e = Clock::now();
-  PieceSet pieces;
-  for (std::size_t i = 0; i < raw.size(); ++i)
-    pieces.append(merge_rooms(polygons.components[i], raw[i], grid.resolution, options.merge));
-  const double f = Clock::now();
-  Segmentation s = rooms_from_pieces(input.labelled, pieces, options.labels);
-  if (part.cells.size() != grid.cells.size()) {
-    cv::Mat labels = cv::Mat::zeros(grid.cells.size(), CV_32SC1);
-    s.labels.copyTo(labels(box));
-    s.labels = labels;
-  }
-  const double g = Clock::now();
-  segmentation_free_space(part, options);
-  t.free_space.push_back(ms(g, Clock::now()));
-  t.load.push_back(ms(a, b));
-  t.clean.push_back(ms(b, c));
-  t.polygons.push_back(ms(c, d));
-  t.decompose.push_back(ms(d, e));
-  t.merge.push_back(ms(e, f));
-  t.rooms.push_back(ms(f, g));
-  t.total.push_back(ms(a, g));
-  t.vertices = 0;
-  for (const FreeSpaceComponent& component : polygons.components) {
-    t.vertices += static_cast<int>(component.polygon.outer.size());
-    for (const Ring& hole : component.polygon.holes) t.vertices += static_cast<int>(hole.size());
-  }
-  t.pieces = 0;
-  for (const PieceSet& set : raw) t.pieces += static_cast<int>(set.pieces.size());
-  t.rooms_found = static_cast<int>(s.rooms.size());
-  return s;
 }
 
 constexpr const char* kUsage =
@@ -261,25 +193,36 @@ int run(const std::vector<std::string>& args) {
   std::vector<std::vector<std::string>> rows{{"image", "floor", "load", "free", "clean", "polygons", "vertices",
                                               "decompose", "pieces", "merge", "labels", "rooms", "total",
                                               "total / floor", "recall", "precision"}};
+  std::vector<std::vector<std::string>> over{{"image"}};
+  std::vector<std::vector<double>> ratios;  // per stage after the floor, per image
   std::vector<double> recall[2], precision[2];
-  std::vector<double> all_total, all_floor, all_ratio;
+  std::vector<double> all_total, all_floor;
   for (const Job& job : jobs) {
     StageTimes t;
     Segmentation last;
     for (int k = 0; k < repeat; ++k) {
-      const Segmentation s = time_stages(job.path, load, options, no_crop, t);
+      const Segmentation s = benchmarks::time_stages(job.path, load, options, no_crop, t);
       if (k == 0) last = s;
     }
-    const double floor = least(t.floor), total = least(t.total);
+    const std::vector<std::pair<std::string, double>> stages = benchmarks::least_stage_ms(t);
+    const double floor = stages.front().second, total = stages.back().second;
     all_total.push_back(total);
     all_floor.push_back(floor);
-    all_ratio.push_back(total / floor);
-    // The cleaning alone: the front end (free space and cleaning) less the free space timed alone.
-    const double clean = std::max(0.0, least(t.clean) - least(t.free_space));
-    rows.push_back({job.name, fixed(floor, 1), fixed(least(t.load), 1), fixed(least(t.free_space), 1), fixed(clean, 1),
-                    fixed(least(t.polygons), 1), std::to_string(t.vertices), fixed(least(t.decompose), 1),
-                    std::to_string(t.pieces), fixed(least(t.merge), 1), fixed(least(t.rooms), 1),
-                    std::to_string(t.rooms_found), fixed(total, 1), fixed(total / floor, 2), "-", "-"});
+    auto ms = [&](const char* name) {
+      for (const auto& [stage, value] : stages)
+        if (stage == name) return fixed(value, 1);
+      return std::string("-");
+    };
+    rows.push_back({job.name, ms("floor"), ms("load"), ms("free"), ms("clean"), ms("polygons"), std::to_string(t.vertices),
+                    ms("decompose"), std::to_string(t.pieces), ms("merge"), ms("labels"), std::to_string(t.rooms_found),
+                    ms("total"), fixed(total / floor, 2), "-", "-"});
+    ratios.resize(stages.size() - 1);
+    over.push_back({job.name});
+    for (std::size_t k = 1; k < stages.size(); ++k) {
+      if (over.size() == 2) over.front().push_back(stages[k].first);
+      over.back().push_back(fixed(stages[k].second / floor, 2));
+      ratios[k - 1].push_back(stages[k].second / floor);
+    }
     if (quality) {
       const PrecisionRecall pr = evaluate_against_ground_truth(last.labels, load_ground_truth(job.ground_truth));
       const int v = job.variant == Variant::kPlain ? 0 : 1;
@@ -290,9 +233,21 @@ int run(const std::vector<std::string>& args) {
     }
     std::cerr << rows.back()[0] << " " << rows.back()[12] << " ms\n";
   }
-  std::cout << "CPU times in ms, least of " << repeat << " runs per image\n\n" << markdown_table(rows) << "\n";
+  double load_average[3] = {0, 0, 0};
+  getloadavg(load_average, 3);
+  std::cout << "machine: " << benchmarks::cpu_model() << ", " << std::thread::hardware_concurrency()
+            << " hardware threads, load average " << fixed(load_average[0], 1) << "; peak RSS "
+            << fixed(benchmarks::peak_rss_mb(), 0) << " MB\n";
+  std::cout << "process CPU times in ms, least of " << repeat << " runs per image\n\n" << markdown_table(rows) << "\n";
+  over.push_back({"median"});
+  over.push_back({"max"});
+  for (const std::vector<double>& r : ratios) {
+    over[over.size() - 2].push_back(fixed(median(r), 2));
+    over.back().push_back(fixed(*std::max_element(r.begin(), r.end()), 2));
+  }
+  std::cout << "each stage's time over the floor\n\n" << markdown_table(over) << "\n";
   std::cout << "median total " << fixed(median(all_total), 1) << " ms, median floor " << fixed(median(all_floor), 1)
-            << " ms, median ratio " << fixed(median(all_ratio), 2) << ", max total "
+            << " ms, median ratio " << fixed(median(ratios.back()), 2) << ", max total "
             << fixed(*std::max_element(all_total.begin(), all_total.end()), 1) << " ms\n";
   auto mean = [](const std::vector<double>& v) {
     return v.empty() ? 0.0 : 100.0 * std::accumulate(v.begin(), v.end(), 0.0) / static_cast<double>(v.size());

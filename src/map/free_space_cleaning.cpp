@@ -2,11 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <string>
 #include <vector>
 
-#include <opencv2/imgproc.hpp>
-
+#include "map/row_runs.h"
 #include "topocut/core/error.h"
 #include "topocut/core/occupancy_grid.h"
 
@@ -14,218 +15,171 @@ namespace topocut {
 
 namespace {
 
-int cells(double metres, double resolution) { return static_cast<int>(std::lround(metres / resolution)); }
-
-// A disc of the given radius (cells) as a structuring element: an odd ellipse kernel.
-cv::Mat disc(double radius) {
-  const int r = std::max(1, static_cast<int>(std::lround(radius)));
-  return cv::getStructuringElement(cv::MORPH_ELLIPSE, {2 * r + 1, 2 * r + 1});
-}
-
-// The mask (CV_8UC1) of the cells whose label the lookup marks with 255.
-cv::Mat mask_of_labels(const cv::Mat& labels, const std::vector<unsigned char>& lookup) {
-  cv::Mat mask(labels.size(), CV_8UC1);
-  for (int r = 0; r < labels.rows; ++r) {
-    const int* label = labels.ptr<int>(r);
-    unsigned char* out = mask.ptr<unsigned char>(r);
-    for (int c = 0; c < labels.cols; ++c) out[c] = lookup[static_cast<std::size_t>(label[c])];
-  }
-  return mask;
-}
-
-// Marks (2) the non-free cells (1) of a row that lie in a run of non-free cells longer than
-// max_side: their region is wider than any speck.
-void mark_long_runs(unsigned char* row, int n, int max_side) {
-  for (int c = 0; c < n;) {
-    if (row[c] == 0) {
-      ++c;
-      continue;
-    }
-    int end = c;
-    while (end < n && row[end] != 0) ++end;
-    if (end - c > max_side) std::fill(row + c, row + end, static_cast<unsigned char>(2));
-    c = end;
-  }
-}
-
-// Whether the column run of non-free cells through (r, c) is longer than max_side.
-bool in_long_column_run(const cv::Mat& state, int r, int c, int max_side) {
-  int length = 1;
-  for (int y = r - 1; y >= 0 && state.at<unsigned char>(y, c) != 0 && length <= max_side; --y) ++length;
-  for (int y = r + 1; y < state.rows && state.at<unsigned char>(y, c) != 0 && length <= max_side; ++y) ++length;
-  return length > max_side;
+// Cells in metres at the resolution, at most limit (a longer reach covers the image all the same).
+int cells(double metres, double resolution, int limit) {
+  return static_cast<int>(std::min<double>(limit, std::lround(std::min(metres / resolution, 1e9))));
 }
 
 // Non-free regions (8-connected) enclosed by free space with a bounding box of at most max_side
-// cells a side. A region holding a row or column run longer than max_side cannot be one, so only
-// regions made of short runs (next to free space; most of a SLAM map is one unknown region) are
-// followed cell by cell, and the answer is that of a labelling of every non-free region.
-cv::Mat obstacle_specks(const cv::Mat& free, int max_side) {
-  cv::Mat specks = cv::Mat::zeros(free.size(), CV_8UC1);
-  if (max_side <= 0) return specks;
-  const int h = free.rows, w = free.cols;
-  // 0 free, 1 non-free in short runs, 2 non-free in a long run (or known not to be a speck), 3 done.
-  cv::Mat state = free == 0;
-  state &= 1;
-  for (int r = 0; r < h; ++r) mark_long_runs(state.ptr<unsigned char>(r), w, max_side);
-  std::vector<cv::Point> region;
-  for (int r = 0; r < h; ++r) {
-    const unsigned char* row = state.ptr<unsigned char>(r);
-    for (int c = 0; c < w; ++c) {
-      if (row[c] != 1) continue;
-      if (in_long_column_run(state, r, c, max_side)) {
-        state.at<unsigned char>(r, c) = 2;
-        continue;
-      }
-      // Follow the region; it is a speck unless it reaches a long run, the window's edge or a box
-      // wider than max_side.
-      region.assign(1, {c, r});
-      state.at<unsigned char>(r, c) = 3;
-      bool speck = true;
-      int x0 = c, x1 = c, y0 = r, y1 = r;
-      for (std::size_t k = 0; k < region.size(); ++k) {
-        const cv::Point p = region[k];
-        if (p.x == 0 || p.y == 0 || p.x == w - 1 || p.y == h - 1) speck = false;
-        for (int dy = -1; dy <= 1; ++dy) {
-          for (int dx = -1; dx <= 1; ++dx) {
-            const int x = p.x + dx, y = p.y + dy;
-            if (x < 0 || y < 0 || x >= w || y >= h) continue;
-            unsigned char& s = state.at<unsigned char>(y, x);
-            if (s == 2) speck = false;
-            if (s != 1) continue;
-            if (in_long_column_run(state, y, x, max_side)) {
-              s = 2;
-              speck = false;
-              continue;
-            }
-            s = 3;
-            region.push_back({x, y});
-            x0 = std::min(x0, x);
-            x1 = std::max(x1, x);
-            y0 = std::min(y0, y);
-            y1 = std::max(y1, y);
-          }
-        }
-      }
-      speck = speck && x1 - x0 < max_side && y1 - y0 < max_side;
-      if (speck)
-        for (const cv::Point& p : region) specks.at<unsigned char>(p) = 255;
+// cells a side: the gaps between free runs, labelled on runs; a region reaching the window's edge
+// is no speck.
+RowRuns obstacle_specks(const RowRuns& free, int max_side) {
+  if (max_side <= 0) return no_runs(free);
+  const RowRuns gaps = complement(free);
+  int n = 0;
+  const std::vector<int> component = run_components(gaps, true, n);
+  std::vector<int> x0(static_cast<std::size_t>(n), free.width()), x1(static_cast<std::size_t>(n), -1);
+  std::vector<int> y0(static_cast<std::size_t>(n), free.height()), y1(static_cast<std::size_t>(n), -1);
+  std::vector<unsigned char> edge(static_cast<std::size_t>(n), 0);
+  const int h = free.height(), w = free.width();
+  std::size_t i = 0;
+  for (int y = 0; y < h; ++y) {
+    for (const CellRun& run : gaps.row(y)) {
+      const std::size_t c = static_cast<std::size_t>(component[i++]);
+      x0[c] = std::min(x0[c], run.begin);
+      x1[c] = std::max(x1[c], run.end - 1);
+      y0[c] = std::min(y0[c], y);
+      y1[c] = std::max(y1[c], y);
+      if (run.begin == 0 || run.end == w || y == 0 || y == h - 1) edge[c] = 1;
     }
   }
-  return specks;
-}
-
-// The cells of solid covered by discs of radius (cells) that fit into it (its opening; the map's
-// edge counts as an obstacle), grown by margin cells along solid (the corners a disc cannot reach).
-cv::Mat thick_part(const cv::Mat& solid, double radius, int margin) {
-  // A disc as wide as the map reaches past its edge from every cell, so nothing fits: the answer
-  // without an erosion whose cost grows with the disc's area (a map at 0.1 mm per cell).
-  if (std::lround(radius) >= std::min(solid.rows, solid.cols)) return cv::Mat::zeros(solid.size(), CV_8UC1);
-  const cv::Mat element = disc(radius);
-  cv::Mat thick;
-  cv::erode(solid, thick, element, cv::Point(-1, -1), 1, cv::BORDER_CONSTANT, cv::Scalar(0));
-  cv::dilate(thick, thick, element, cv::Point(-1, -1), 1, cv::BORDER_CONSTANT, cv::Scalar(0));
-  thick &= solid;
-  const cv::Mat square = cv::getStructuringElement(cv::MORPH_RECT, {3, 3});
-  for (int i = 0; i < margin; ++i) {
-    cv::dilate(thick, thick, square);
-    thick &= solid;
+  std::vector<unsigned char> keep(component.size());
+  for (std::size_t k = 0; k < keep.size(); ++k) {
+    const std::size_t c = static_cast<std::size_t>(component[k]);
+    keep[k] = !edge[c] && x1[c] - x0[c] < max_side && y1[c] - y0[c] < max_side;
   }
-  return thick;
+  return select_runs(gaps, keep);
 }
 
-// thick_part() computed within the box of solid's cells, which gives the same cells: outside the
-// box solid is empty, like the erosion's border, and every step ends by keeping solid cells only.
-// Only the shortcut for discs wider than the map looks at the size, and a disc wider than the box
-// fits nowhere either.
-cv::Mat thick_part_in_box(const cv::Mat& solid, double radius, int margin) {
-  cv::Mat thick = cv::Mat::zeros(solid.size(), CV_8UC1);
-  const cv::Rect box = cv::boundingRect(solid);
-  if (!box.empty()) thick_part(solid(box), radius, margin).copyTo(thick(box));
-  return thick;
+// The cells of solid covered by discs of radius (cells) that fit into it (its opening with
+// OpenCV's elliptic disc; the window's edge counts as an obstacle), grown by margin cells along
+// solid (the corners a disc cannot reach).
+RowRuns thick_part(const RowRuns& solid, double radius, int margin) {
+  const int r = std::max(1, static_cast<int>(std::lround(radius)));
+  // A disc as tall or as wide as the window reaches past its edge from every cell: nothing fits.
+  if (r >= std::min(solid.width(), solid.height())) return no_runs(solid);
+  const std::vector<int> disc = disc_half_widths(r);
+  return grow_within(dilate(erode(solid, disc), disc), solid, margin);
 }
 
 // The parts of thin (8-connected) that are rays: more of the non-free cells next to them are
 // unknown than occupied. A laser ray ends in the unknown; a narrow corridor, a closet or the gap
 // between a cupboard and a wall is walled in.
-cv::Mat rays_of(const cv::Mat& thin, const cv::Mat& cells) {
-  // Labelled within the thin cells' box; the cells around it are read from the whole window.
-  cv::Mat rays = cv::Mat::zeros(thin.size(), CV_8UC1);
-  const cv::Rect box = cv::boundingRect(thin);
-  if (box.empty()) return rays;
-  cv::Mat labels;
-  const int n = cv::connectedComponents(thin(box), labels, 8, CV_32S);
+RowRuns rays_of(const RowRuns& thin, const cv::Mat& grid_cells) {
+  int n = 0;
+  const std::vector<int> component = run_components(thin, true, n);
   std::vector<long long> unknown(static_cast<std::size_t>(n), 0), occupied(static_cast<std::size_t>(n), 0);
-  const int h = thin.rows, w = thin.cols;
-  auto count = [&](std::size_t l, unsigned char state) {
-    unknown[l] += state == kUnknown;
-    occupied[l] += state == kOccupied;
-  };
-  for (int r = box.y; r < box.y + box.height; ++r) {
-    const int* label = labels.ptr<int>(r - box.y) - box.x;
-    const unsigned char* row = cells.ptr<unsigned char>(r);
-    const unsigned char* above = r > 0 ? cells.ptr<unsigned char>(r - 1) : nullptr;
-    const unsigned char* below = r + 1 < h ? cells.ptr<unsigned char>(r + 1) : nullptr;
-    for (int c = box.x; c < box.x + box.width; ++c) {
-      if (label[c] == 0) continue;
-      const std::size_t l = static_cast<std::size_t>(label[c]);
-      // Beyond the window counts as unknown.
-      count(l, above ? above[c] : kUnknown);
-      count(l, below ? below[c] : kUnknown);
-      count(l, c > 0 ? row[c - 1] : kUnknown);
-      count(l, c + 1 < w ? row[c + 1] : kUnknown);
+  const int h = grid_cells.rows, w = grid_cells.cols;
+  std::size_t i = 0;
+  for (int y = 0; y < h; ++y) {
+    const unsigned char* row = grid_cells.ptr<unsigned char>(y);
+    const unsigned char* above = y > 0 ? grid_cells.ptr<unsigned char>(y - 1) : nullptr;
+    const unsigned char* below = y + 1 < h ? grid_cells.ptr<unsigned char>(y + 1) : nullptr;
+    for (const CellRun& run : thin.row(y)) {
+      const std::size_t c = static_cast<std::size_t>(component[i++]);
+      long long u = 0, o = 0;
+      auto count = [&](unsigned char state) {
+        u += state == kUnknown;
+        o += state == kOccupied;
+      };
+      // The four neighbours of every cell of the run; beyond the window counts as unknown.
+      for (int x = run.begin; x < run.end; ++x) {
+        count(above ? above[x] : kUnknown);
+        count(below ? below[x] : kUnknown);
+        count(x > 0 ? row[x - 1] : kUnknown);
+        count(x + 1 < w ? row[x + 1] : kUnknown);
+      }
+      unknown[c] += u;
+      occupied[c] += o;
     }
   }
-  std::vector<unsigned char> is_ray(static_cast<std::size_t>(n), 0);
-  for (std::size_t i = 1; i < is_ray.size(); ++i) is_ray[i] = unknown[i] > occupied[i] ? 255 : 0;
-  mask_of_labels(labels, is_ray).copyTo(rays(box));
-  return rays;
-}
-
-// Morphological closing of mask with a square of the given side (cells); the map's edge does not
-// erode. A square, not a disc: the inside test is coarse, and a square is ten times cheaper.
-cv::Mat square_closing(const cv::Mat& mask, double side) {
-  if (side <= 0.0) return cv::Mat::zeros(mask.size(), CV_8UC1);
-  const int n = std::max(1, static_cast<int>(std::lround(side / 2.0)));
-  // A square wider than the map covers all of it from every cell: full if any cell is set, else empty.
-  if (n >= std::max(mask.rows, mask.cols)) {
-    return cv::countNonZero(mask) > 0 ? cv::Mat(mask.size(), CV_8UC1, cv::Scalar(255)) : cv::Mat::zeros(mask.size(), CV_8UC1);
+  std::vector<unsigned char> keep(component.size());
+  for (std::size_t k = 0; k < keep.size(); ++k) {
+    const std::size_t c = static_cast<std::size_t>(component[k]);
+    keep[k] = unknown[c] > occupied[c];
   }
-  const cv::Mat element = cv::getStructuringElement(cv::MORPH_RECT, {2 * n + 1, 2 * n + 1});
-  cv::Mat closed;
-  cv::dilate(mask, closed, element, cv::Point(-1, -1), 1, cv::BORDER_CONSTANT, cv::Scalar(0));
-  cv::erode(closed, closed, element, cv::Point(-1, -1), 1, cv::BORDER_CONSTANT, cv::Scalar(255));
-  return closed;
+  return select_runs(thin, keep);
 }
 
 // Which of the lost cells lie inside the building: enclosed by its structure (floor and walls), once
-// gaps narrower than side cells (windows, doors, unseen stretches of wall) are closed. Rays that
-// reach into a room never entered end on its walls and stay inside; rays through a window into the
-// open do not.
-cv::Mat inside_building(const cv::Mat& lost, const cv::Mat& floor, const cv::Mat& walls, double side) {
-  if (side <= 0.0 || cv::countNonZero(lost) == 0) return cv::Mat::zeros(lost.size(), CV_8UC1);
-  const cv::Mat closed = square_closing(floor | walls, side);
-  // Flood the outside from a one-cell frame around the window; what it does not reach is enclosed.
-  cv::Mat outside;
-  cv::copyMakeBorder(~closed, outside, 1, 1, 1, 1, cv::BORDER_CONSTANT, cv::Scalar(255));
-  cv::floodFill(outside, cv::Point(0, 0), cv::Scalar(0), nullptr, cv::Scalar(0), cv::Scalar(0), 4);
-  const cv::Mat enclosed = outside(cv::Rect(1, 1, lost.cols, lost.rows)) != 0;
-  return (closed | enclosed) & lost;
+// gaps narrower than side cells (windows, doors, unseen stretches of wall) are closed by a square
+// (coarse, and separable). Rays that reach into a room never entered end on its walls and stay
+// inside; rays through a window into the open do not. Outside is what a 4-connected flood from a
+// frame around the window reaches through the open cells.
+RowRuns inside_building(const RowRuns& lost, const RowRuns& floor, const cv::Mat& grid_cells, double side) {
+  const int n = std::max(1, cells(side / 2.0, 1.0, std::max(grid_cells.rows, grid_cells.cols)));
+  const RowRuns open = complement(close_square(unite(floor, runs_of_value(grid_cells, kOccupied)), n));
+  int count = 0;
+  const std::vector<int> component = run_components(open, false, count);
+  std::vector<unsigned char> reached(static_cast<std::size_t>(count), 0);
+  const int h = open.height(), w = open.width();
+  std::size_t i = 0;
+  for (int y = 0; y < h; ++y) {
+    for (const CellRun& run : open.row(y)) {
+      if (run.begin == 0 || run.end == w || y == 0 || y == h - 1) reached[static_cast<std::size_t>(component[i])] = 1;
+      ++i;
+    }
+  }
+  std::vector<unsigned char> outside(component.size());
+  for (std::size_t k = 0; k < outside.size(); ++k) outside[k] = reached[static_cast<std::size_t>(component[k])];
+  return subtract(lost, select_runs(open, outside));
 }
 
-void clean_window(const cv::Mat& free, const cv::Mat& grid_cells, double resolution, const FreeSpaceCleaningOptions& options,
-                  cv::Mat& floor, cv::Mat& removed) {
-  const cv::Mat specks = obstacle_specks(free, cells(options.max_obstacle_speck, resolution));
-  const cv::Mat solid = free | specks;
+// What the cleaning decides in its window, as runs.
+struct WindowCleaning {
+  RowRuns floor, specks, lost, inside;  // specks: those that stay floor; inside: lost cells inside
+};
+
+WindowCleaning clean_window(const RowRuns& free, const cv::Mat& grid_cells, double resolution,
+                            const FreeSpaceCleaningOptions& options) {
+  const int size = std::max(grid_cells.rows, grid_cells.cols);
+  const RowRuns specks = obstacle_specks(free, cells(options.max_obstacle_speck, resolution, size));
+  const RowRuns solid = unite(free, specks);
   const double radius = options.min_width / resolution / 2.0;
-  const cv::Mat thick = radius > 0.5 ? thick_part_in_box(solid, radius, static_cast<int>(std::ceil(radius / 2.0))) : solid;
-  const cv::Mat thin = solid & ~thick;
-  floor = cv::countNonZero(thin) > 0 ? solid & ~rays_of(thin, grid_cells) : solid.clone();
-  const cv::Mat lost = free & ~floor;
-  removed = cv::Mat::zeros(free.size(), CV_8UC1);
-  removed.setTo(kCellObstacleSpeck, specks & floor);
-  removed.setTo(kCellRemovedOutside, lost);
-  removed.setTo(kCellRemovedInside, inside_building(lost, floor, grid_cells == kOccupied, options.inside_closing / resolution));
+  const RowRuns thin = radius > 0.5 ? subtract(solid, thick_part(solid, radius, static_cast<int>(std::ceil(radius / 2.0))))
+                                    : no_runs(free);
+  const RowRuns rays = thin.empty() ? thin : rays_of(thin, grid_cells);
+  WindowCleaning c{subtract(solid, rays), subtract(specks, rays), intersect(free, rays), no_runs(free)};
+  if (options.inside_closing > 0.0 && !c.lost.empty())
+    c.inside = inside_building(c.lost, c.floor, grid_cells, options.inside_closing / resolution);
+  return c;
+}
+
+// The runs of a window placed into an image of the given size (empty elsewhere).
+RowRuns placed(const RowRuns& runs, const cv::Rect& window, const cv::Size& size) {
+  RowRuns out(size.width);
+  out.reserve(runs.all().size(), size.height);
+  for (int y = 0; y < size.height; ++y) {
+    if (y >= window.y && y < window.y + window.height) {
+      for (const CellRun& r : runs.row(y - window.y)) out.push({r.begin + window.x, r.end + window.x});
+    }
+    out.end_row();
+  }
+  return out;
+}
+
+// The rows of runs within the window, shifted to its columns (runs must lie inside its columns).
+RowRuns cropped(const RowRuns& runs, const cv::Rect& window) {
+  RowRuns out(window.width);
+  for (int y = window.y; y < window.y + window.height; ++y) {
+    for (const CellRun& r : runs.row(y)) out.push({r.begin - window.x, r.end - window.x});
+    out.end_row();
+  }
+  return out;
+}
+
+// The box of the runs' cells (empty if there are none).
+cv::Rect box_of(const RowRuns& runs) {
+  int x0 = runs.width(), x1 = 0, y0 = -1, y1 = -1;
+  for (int y = 0; y < runs.height(); ++y) {
+    const std::span<const CellRun> row = runs.row(y);
+    if (row.empty()) continue;
+    if (y0 < 0) y0 = y;
+    y1 = y;
+    x0 = std::min(x0, row.front().begin);
+    x1 = std::max(x1, row.back().end);
+  }
+  return y0 < 0 ? cv::Rect() : cv::Rect(x0, y0, x1 - x0, y1 - y0 + 1);
 }
 
 }  // namespace
@@ -245,21 +199,53 @@ CleanedFreeSpace clean_free_space(const cv::Mat& free, const cv::Mat& grid_cells
   if (!std::isfinite(resolution) || resolution <= 0.0) throw Error("the resolution must be a positive number of metres");
   validate(options);
   CleanedFreeSpace result;
-  result.floor = cv::Mat::zeros(free.size(), CV_8UC1);
   result.removed = cv::Mat::zeros(free.size(), CV_8UC1);
+  const RowRuns free_runs = runs_of(free);
   // Work in the box around the free space (SLAM maps are mostly unknown), with room for the closing.
-  const cv::Rect box = cv::boundingRect(free);  // of the nonzero cells
-  if (box.empty()) return result;
-  const int margin = cells(options.inside_closing, resolution) + 2;
+  const cv::Rect box = box_of(free_runs);
+  if (box.empty()) {
+    result.floor = cv::Mat::zeros(free.size(), CV_8UC1);
+    return result;
+  }
+  const int margin = cells(options.inside_closing, resolution, std::max(free.rows, free.cols)) + 2;
   const cv::Rect window = cv::Rect(box.x - margin, box.y - margin, box.width + 2 * margin, box.height + 2 * margin) &
                           cv::Rect(0, 0, free.cols, free.rows);
-  cv::Mat floor, removed;
-  clean_window(free(window) != 0, grid_cells(window), resolution, options, floor, removed);
-  floor.copyTo(result.floor(window));
-  removed.copyTo(result.removed(window));
-  result.removed_cells = cv::countNonZero(removed >= kCellRemovedInside);
-  result.outside_cells = cv::countNonZero(removed == kCellRemovedOutside);
+  const WindowCleaning c = clean_window(cropped(free_runs, window), grid_cells(window), resolution, options);
+  result.floor.create(free.size(), CV_8UC1);
+  write_mask(placed(c.floor, window, free.size()), result.floor, 255, 0);
+  cv::Mat removed = result.removed(window);
+  paint(c.specks, removed, kCellObstacleSpeck);
+  paint(c.lost, removed, kCellRemovedOutside);
+  paint(c.inside, removed, kCellRemovedInside);
+  result.removed_cells = static_cast<int>(cell_count(c.lost));
+  result.outside_cells = static_cast<int>(cell_count(c.lost) - cell_count(c.inside));
+  result.speck_cells = static_cast<int>(cell_count(c.specks));
+  result.window = window;
   return result;
+}
+
+cv::Mat cells_after_cleaning(const cv::Mat& cells, const CleanedFreeSpace& cleaned) {
+  CV_Assert(cells.type() == CV_8UC1);
+  if (cleaned.outside_cells == 0 && cleaned.speck_cells == 0) return cells;
+  CV_Assert(cleaned.removed.size() == cells.size());
+  cv::Mat out = cells.clone();
+  const cv::Rect w = cleaned.window;
+  for (int y = w.y; y < w.y + w.height; ++y) {
+    const unsigned char* removed = cleaned.removed.ptr<unsigned char>(y);
+    unsigned char* cell = out.ptr<unsigned char>(y);
+    for (int x = w.x; x < w.x + w.width; ++x) {
+      // Most cells are untouched: eight at a time.
+      std::uint64_t eight = 1;
+      if (x + 8 <= w.x + w.width) std::memcpy(&eight, removed + x, sizeof eight);
+      if (eight == 0) {
+        x += 7;
+        continue;
+      }
+      if (removed[x] == kCellRemovedOutside) cell[x] = kUnknown;
+      else if (removed[x] == kCellObstacleSpeck && cell[x] == kUnknown) cell[x] = kFree;
+    }
+  }
+  return out;
 }
 
 cv::Mat render_cleaned_map(const cv::Mat& cells, const CleanedFreeSpace& cleaned) {

@@ -29,14 +29,17 @@ std::uint64_t load8(const unsigned char* p) {
 class Tracer {
  public:
   explicit Tracer(const cv::Mat& mask) : mask_(mask), w_(mask.cols), h_(mask.rows) {
-    horizontal_.assign(static_cast<std::size_t>(h_ + 1) * w_, 0);
+    horizontal_.assign((static_cast<std::size_t>(h_ + 1) * w_ + 63) / 64, 0);
     vertical_.resize(static_cast<std::size_t>(h_));
   }
 
   bool free_at(int column, int row) const {
     return column >= 0 && row >= 0 && column < w_ && row < h_ && mask_.ptr<unsigned char>(row)[column] != 0;
   }
-  bool visited(int boundary, int column) const { return horizontal_[static_cast<std::size_t>(boundary) * w_ + column] != 0; }
+  bool visited(int boundary, int column) const {
+    const std::size_t i = static_cast<std::size_t>(boundary) * w_ + column;
+    return (horizontal_[i / 64] >> (i % 64)) & 1;
+  }
 
   // Follows the boundary from corner (x, y) heading (dx, dy), free cells on the right in the
   // picture (y down), marking every horizontal edge visited and recording the ring of every
@@ -47,7 +50,8 @@ class Tracer {
     Ring ring;
     while (true) {
       if (dy == 0) {
-        horizontal_[static_cast<std::size_t>(y) * w_ + std::min(x, x + dx)] = 1;
+        const std::size_t i = static_cast<std::size_t>(y) * w_ + std::min(x, x + dx);
+        horizontal_[i / 64] |= std::uint64_t{1} << (i % 64);
       } else {
         vertical_[static_cast<std::size_t>(std::min(y, y + dy))].push_back({x, ring_id});
       }
@@ -90,7 +94,7 @@ class Tracer {
  private:
   const cv::Mat& mask_;
   int w_, h_;
-  std::vector<unsigned char> horizontal_;  // (h + 1) x w: boundary edges already traced
+  std::vector<std::uint64_t> horizontal_;  // (h + 1) x w bits: boundary edges already traced
   std::vector<std::vector<std::pair<int, int>>> vertical_;  // per row: (x, ring id) of traced vertical edges
 };
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <tuple>
 
@@ -127,8 +128,12 @@ SpanLabels write_span_labels(const OccupancyGrid& grid, const std::vector<CellSp
     int c = 0;
     auto gap = [&](int until) {
       std::fill(labels + c, labels + until, 0);
-      for (; c < until; ++c)
-        if (g[c] == kFree) out.unlabelled.push_back(r * w + c);
+      // Free cells are rare between spans (walls, unknown space): memchr skips to the next one.
+      for (const void* f; c < until && (f = std::memchr(g + c, kFree, static_cast<std::size_t>(until - c))) != nullptr;) {
+        c = static_cast<int>(static_cast<const unsigned char*>(f) - g);
+        out.unlabelled.push_back(r * w + c++);
+      }
+      c = until;
     };
     for (const int i : row_spans) {
       const CellSpan& span = spans[static_cast<std::size_t>(i)];
@@ -317,17 +322,69 @@ std::vector<Room> room_list(const OccupancyGrid& grid, const PieceSet& set, cons
   return rooms;
 }
 
+// Which piece contains a point, as piece_containing() answers it (the first piece in order whose
+// outer ring's box holds the point and which contains it), with the pieces' boxes in buckets of a
+// grid over them: one passage per cut then costs the pieces near the cut, not all of them.
+class PieceLocator {
+ public:
+  explicit PieceLocator(const std::vector<PolygonWithHoles>& pieces) : pieces_(pieces), boxes_(pieces.size()) {
+    for (std::size_t i = 0; i < pieces.size(); ++i) {
+      if (pieces[i].outer.size() < 3) continue;
+      boxes_[i] = bounding_box(pieces[i].outer);
+      all_.x0 = std::min(all_.x0, boxes_[i].x0);
+      all_.y0 = std::min(all_.y0, boxes_[i].y0);
+      all_.x1 = std::max(all_.x1, boxes_[i].x1);
+      all_.y1 = std::max(all_.y1, boxes_[i].y1);
+    }
+    if (!(all_.x0 <= all_.x1)) return;
+    // About one bucket per piece.
+    side_ = static_cast<int>(std::clamp(std::sqrt(static_cast<double>(pieces.size())), 1.0, 1024.0));
+    bucket_w_ = std::max((all_.x1 - all_.x0) / side_, 1e-9);
+    bucket_h_ = std::max((all_.y1 - all_.y0) / side_, 1e-9);
+    buckets_.resize(static_cast<std::size_t>(side_) * side_);
+    for (std::size_t i = 0; i < pieces.size(); ++i) {
+      if (pieces[i].outer.size() < 3) continue;
+      const int cx0 = column(boxes_[i].x0), cx1 = column(boxes_[i].x1), cy0 = row(boxes_[i].y0), cy1 = row(boxes_[i].y1);
+      for (int cy = cy0; cy <= cy1; ++cy)
+        for (int cx = cx0; cx <= cx1; ++cx) buckets_[static_cast<std::size_t>(cy) * side_ + cx].push_back(static_cast<int>(i));
+    }
+  }
+
+  int piece_at(const Point2& p) const {
+    if (!(p.x >= all_.x0 && p.x <= all_.x1 && p.y >= all_.y0 && p.y <= all_.y1)) return -1;
+    for (const int i : buckets_[static_cast<std::size_t>(row(p.y)) * side_ + column(p.x)]) {
+      const Box& box = boxes_[static_cast<std::size_t>(i)];
+      if (p.x < box.x0 || p.x > box.x1 || p.y < box.y0 || p.y > box.y1) continue;
+      if (contains(pieces_[static_cast<std::size_t>(i)], p)) return i;
+    }
+    return -1;
+  }
+
+ private:
+  // Monotone in the coordinate, so a box's buckets hold every point the box holds.
+  int column(double x) const { return std::clamp(static_cast<int>((x - all_.x0) / bucket_w_), 0, side_ - 1); }
+  int row(double y) const { return std::clamp(static_cast<int>((y - all_.y0) / bucket_h_), 0, side_ - 1); }
+
+  const std::vector<PolygonWithHoles>& pieces_;
+  std::vector<Box> boxes_;
+  Box all_;
+  int side_ = 0;
+  double bucket_w_ = 1.0, bucket_h_ = 1.0;
+  std::vector<std::vector<int>> buckets_;  // piece indices in ascending order
+};
+
 // A cut between two different rooms is a passage between them; a cut separates the pieces just
 // left and right of its midpoint. Sorted by rooms, then cut, so the list is deterministic.
 std::vector<Passage> passages_between(const OccupancyGrid& grid, const PieceSet& set,
                                       const std::vector<int>& room_of_piece) {
   std::vector<Passage> passages;
+  const PieceLocator locator(set.pieces);
   for (std::size_t k = 0; k < set.cuts.size(); ++k) {
     const Segment2& cut = set.cuts[k];
     Point2 left, right;
     if (!cut_sides(cut.a, cut.b, left, right)) continue;
-    const int piece_a = piece_containing(set.pieces, left);
-    const int piece_b = piece_containing(set.pieces, right);
+    const int piece_a = locator.piece_at(left);
+    const int piece_b = locator.piece_at(right);
     if (piece_a < 0 || piece_b < 0) continue;
     const int a = room_of_piece[static_cast<std::size_t>(piece_a) + 1];
     const int b = room_of_piece[static_cast<std::size_t>(piece_b) + 1];

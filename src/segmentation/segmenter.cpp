@@ -67,13 +67,7 @@ SegmentationInput segmentation_input(const OccupancyGrid& grid, const SegmentOpt
   // An unknown speck enclosed by floor is floor the sensor never reported (a cell between two
   // readings, a grey pixel of a half-seen spot), so it gets the room like the floor around it;
   // occupied specks (chair legs) stay obstacles.
-  const cv::Mat unknown_specks = (cleaned.removed == kCellObstacleSpeck) & (grid.cells == kUnknown);
-  const bool outside = cleaned.outside_cells > 0, specks = cv::countNonZero(unknown_specks) > 0;
-  if (outside || specks) {
-    input.labelled.cells = grid.cells.clone();
-    if (outside) input.labelled.cells.setTo(kUnknown, cleaned.removed == kCellRemovedOutside);
-    if (specks) input.labelled.cells.setTo(kFree, unknown_specks);
-  }
+  input.labelled.cells = cells_after_cleaning(grid.cells, cleaned);
   input.cleaned = std::move(cleaned);
   return input;
 }
@@ -175,7 +169,7 @@ SegmentOptions parity_segment_options(double concavity) {
 
 cv::Rect segmentation_box(const OccupancyGrid& grid, const SegmentOptions& options) {
   validate(grid);
-  const cv::Rect box = cv::boundingRect(grid.cells != kUnknown);
+  const cv::Rect box = known_box(grid.cells);
   if (box.empty()) return cv::Rect(0, 0, grid.width(), grid.height());
   // Wider than every stage looks beyond a cell: the cleaning's closing and thickness test, the
   // robot radius, the opening and the median filter.
@@ -200,12 +194,9 @@ Segmentation segment_whole(const OccupancyGrid& grid, const SegmentOptions& opti
   return segmentation;
 }
 
-// An image of the given size holding image at box and value everywhere else.
+// An image of the given size holding image at box and value everywhere else (uncrop()).
 cv::Mat placed(const cv::Mat& image, const cv::Size& size, const cv::Rect& box, double value) {
-  if (image.empty()) return image;
-  cv::Mat whole(size, image.type(), cv::Scalar::all(value));
-  image.copyTo(whole(box));
-  return whole;
+  return image.empty() ? image : uncrop(image, size, box, value);
 }
 
 // The stages' images of the box, placed back into the whole grid.
@@ -216,6 +207,7 @@ void place_input(SegmentationInput& input, const OccupancyGrid& grid, const cv::
   input.labelled = OccupancyGrid{labelled, grid.resolution, grid.origin};
   input.cleaned.floor = placed(input.cleaned.floor, grid.cells.size(), box, 0);
   input.cleaned.removed = placed(input.cleaned.removed, grid.cells.size(), box, kCellUntouched);
+  input.cleaned.window += box.tl();
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 #include "topocut/core/geometry.h"
 
 #include <gtest/gtest.h>
+#include <opencv2/imgproc.hpp>
 
 #include "core/cgal_geometry.h"
 #include "topocut/core/error.h"
@@ -73,6 +74,32 @@ TEST(OccupancyGrid, CropKeepsEveryCellInItsWorldPlace) {
   EXPECT_NE(cv::countNonZero(grid.cells(box)), 0);
   EXPECT_THROW(crop(grid, cv::Rect(5, 0, 3, 2)), Error);  // beyond the right edge
   EXPECT_THROW(crop(grid, cv::Rect(0, 0, 0, 2)), Error);
+}
+
+TEST(OccupancyGrid, KnownBoxIsTheBoxOfTheKnownCells) {
+  cv::RNG rng(3);
+  for (int trial = 0; trial < 60; ++trial) {
+    cv::Mat cells(rng.uniform(1, 90), rng.uniform(1, 150), CV_8UC1, cv::Scalar(kUnknown));
+    for (int k = rng.uniform(0, 4); k > 0; --k) {
+      const cv::Point p(rng.uniform(0, cells.cols), rng.uniform(0, cells.rows));
+      cells(cv::Rect(p, cv::Size(rng.uniform(1, 30), rng.uniform(1, 30))) & cv::Rect(0, 0, cells.cols, cells.rows))
+          .setTo(rng.uniform(0, 2) == 0 ? kFree : kOccupied);
+    }
+    EXPECT_EQ(known_box(cells), cv::boundingRect(cells != kUnknown)) << "trial " << trial;
+  }
+  EXPECT_TRUE(known_box(cv::Mat(3, 3, CV_8UC1, cv::Scalar(kUnknown))).empty());
+}
+
+TEST(OccupancyGrid, UncropPutsThePartBackAndFillsTheRest) {
+  cv::Mat part(3, 4, CV_32SC1);
+  cv::randu(part, 1, 1000);
+  for (const cv::Rect box : {cv::Rect(2, 1, 4, 3), cv::Rect(0, 0, 4, 3), cv::Rect(5, 6, 4, 3)}) {
+    const cv::Mat whole = uncrop(part, {9, 9}, box, -7);
+    cv::Mat expected(9, 9, CV_32SC1, cv::Scalar(-7));
+    part.copyTo(expected(box));
+    EXPECT_EQ(cv::countNonZero(whole != expected), 0);
+  }
+  EXPECT_ANY_THROW(uncrop(part, {5, 5}, cv::Rect(2, 1, 4, 3), 0));
 }
 
 TEST(OccupancyGrid, ValidateRejectsBadResolution) {

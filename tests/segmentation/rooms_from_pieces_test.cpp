@@ -1,6 +1,11 @@
 #include "topocut/segmentation/rooms_from_pieces.h"
 
+#include <algorithm>
+#include <utility>
+#include <vector>
+
 #include <gtest/gtest.h>
+#include <opencv2/core.hpp>
 
 namespace topocut {
 namespace {
@@ -68,6 +73,52 @@ TEST(RoomsFromPieces, PieceContaining) {
   EXPECT_EQ(piece_containing(t.set.pieces, {1.0, 1.0}), 1);
   EXPECT_EQ(piece_containing(t.set.pieces, {5.0, 1.0}), 0);
   EXPECT_EQ(piece_containing(t.set.pieces, {50.0, 1.0}), -1);
+}
+
+TEST(RoomsFromPieces, PassagesOfManyPiecesAreThoseOfTheLinearSearch) {
+  // A lattice of 4 x 4-cell pieces, a few overlapping pieces and degenerate ones among them, and
+  // cuts along shared edges, inside pieces and outside all of them: the passages are those that
+  // piece_containing() gives, piece by piece.
+  constexpr int kColumns = 23, kRows = 17, kSide = 4;
+  OccupancyGrid grid{cv::Mat(kRows * kSide, kColumns * kSide, CV_8UC1, cv::Scalar(kFree)), 0.05, {0.0, 0.0}};
+  PieceSet set;
+  auto square = [](double x0, double y0, double x1, double y1) { return PolygonWithHoles{{{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}}, {}}; };
+  cv::RNG rng(9);
+  for (int j = 0; j < kRows; ++j) {
+    for (int i = 0; i < kColumns; ++i) {
+      const double x0 = i * kSide - 0.5, y0 = j * kSide - 0.5;
+      set.pieces.push_back(square(x0, y0, x0 + kSide, y0 + kSide));
+      if (rng.uniform(0, 9) == 0) set.pieces.push_back(square(x0 + 1, y0 + 1, x0 + 3, y0 + 3));  // inside the one before
+      if (rng.uniform(0, 15) == 0) set.pieces.push_back({{{x0, y0}, {x0 + 1, y0}}, {}});        // no area
+      if (i > 0) set.cuts.push_back({{x0, y0}, {x0, y0 + kSide}});
+      if (j > 0) set.cuts.push_back({{x0, y0}, {x0 + kSide, y0}});
+      if (rng.uniform(0, 5) == 0) set.cuts.push_back({{x0 + 0.5, y0 + 0.5}, {x0 + 1.5, y0 + 2.5}});
+    }
+  }
+  set.cuts.push_back({{-10.0, -10.0}, {-10.0, -5.0}});
+  const Segmentation s = rooms_from_pieces(grid, set);
+  // A piece's room: the label of a cell centre it contains (1.5 cells into its box), if no piece
+  // before it contains that centre.
+  auto room_of = [&](int piece) {
+    const Box box = bounding_box(set.pieces[static_cast<std::size_t>(piece)].outer);
+    const Point2 centre{box.x0 + 1.5, box.y0 + 1.5};
+    if (piece_containing(set.pieces, centre) != piece) return 0;
+    return s.labels.at<int>(grid.height() - 1 - static_cast<int>(centre.y), static_cast<int>(centre.x));
+  };
+  std::vector<std::pair<int, int>> expected;
+  for (const Segment2& cut : set.cuts) {
+    Point2 left, right;
+    if (!cut_sides(cut.a, cut.b, left, right)) continue;
+    const int a = piece_containing(set.pieces, left), b = piece_containing(set.pieces, right);
+    if (a < 0 || b < 0) continue;
+    const int ra = room_of(a), rb = room_of(b);
+    if (ra != 0 && rb != 0 && ra != rb) expected.emplace_back(std::min(ra, rb), std::max(ra, rb));
+  }
+  std::sort(expected.begin(), expected.end());
+  std::vector<std::pair<int, int>> found;
+  for (const Passage& p : s.passages) found.emplace_back(p.room_a, p.room_b);
+  EXPECT_GT(expected.size(), 600u);
+  EXPECT_EQ(found, expected);
 }
 
 }  // namespace

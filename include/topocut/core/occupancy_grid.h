@@ -37,6 +37,16 @@ Point2 world_to_grid(const OccupancyGrid& grid, const Point2& world);
 // to the box's lower-left corner. box must lie inside the grid.
 OccupancyGrid crop(const OccupancyGrid& grid, const cv::Rect& box);
 
+// The box of the cells (CV_8UC1, OccupancyGrid::cells) that are not kUnknown; empty when every cell
+// is unknown. Reads each row only beyond the box found so far: SLAM maps are mostly unknown around
+// the building, and their known part is what the stages work on.
+cv::Rect known_box(const cv::Mat& cells);
+
+// The inverse of crop() for an image of any type: an image of the given size holding part at box
+// (box.size() == part.size(), inside the image) and value everywhere else; every cell is written
+// once (the rows and columns around box are filled, not the whole image first).
+cv::Mat uncrop(const cv::Mat& part, const cv::Size& size, const cv::Rect& box, double value);
+
 // Throws Error unless the grid is non-empty, CV_8UC1, and its resolution and origin lie in the ranges
 // of value_ranges.h.
 void validate(const OccupancyGrid& grid);

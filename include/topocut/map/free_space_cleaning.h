@@ -47,6 +47,8 @@ struct CleanedFreeSpace {
   cv::Mat removed;  // CV_8UC1, a CleanedCell per cell
   int removed_cells = 0;  // free cells removed (inside or outside)
   int outside_cells = 0;  // of those, outside the building
+  int speck_cells = 0;    // obstacle specks that count as floor (kCellObstacleSpeck)
+  cv::Rect window;        // the cells the cleaning looked at: beyond it floor and removed are 0
 };
 
 // Cleans a free-space mask (CV_8UC1, nonzero = free) of a map whose cells (CV_8UC1, kFree /
@@ -62,6 +64,12 @@ CleanedFreeSpace clean_free_space(const cv::Mat& free, const cv::Mat& cells, dou
 // count as floor light blue. cells is the grid (kFree / kOccupied / kUnknown); an empty cleaned
 // result draws the grid alone.
 cv::Mat render_cleaned_map(const cv::Mat& cells, const CleanedFreeSpace& cleaned);
+
+// The grid's cells (kFree / kOccupied / kUnknown) as the labelling sees them after the cleaning:
+// removed cells outside the building are unknown (they belong to no room) and unknown obstacle
+// specks free (floor the sensor never reported; occupied specks such as chair legs stay). cells
+// itself, not a copy, when the cleaning changes none of them.
+cv::Mat cells_after_cleaning(const cv::Mat& cells, const CleanedFreeSpace& cleaned);
 
 // Throws Error unless the options are finite and non-negative.
 void validate(const FreeSpaceCleaningOptions& options);

@@ -1,0 +1,462 @@
+#include "map/row_runs.h"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <numeric>
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
+namespace topocut {
+
+namespace {
+
+// Bit i: whether cell i of the 64 at p is set, a cell being set when it equals pattern (or, with
+// set_when_equal false, when it differs).
+std::uint64_t set_bits(const unsigned char* p, unsigned char pattern, bool set_when_equal) {
+  std::uint64_t equal = 0;
+#if defined(__SSE2__)
+  const __m128i broadcast = _mm_set1_epi8(static_cast<char>(pattern));
+  for (int k = 0; k < 4; ++k) {
+    const __m128i v = _mm_loadu_si128(reinterpret_cast<const __m128i*>(p + 16 * k));
+    equal |= static_cast<std::uint64_t>(static_cast<unsigned>(_mm_movemask_epi8(_mm_cmpeq_epi8(v, broadcast)))) << (16 * k);
+  }
+#else
+  for (int i = 0; i < 64; ++i) equal |= static_cast<std::uint64_t>(p[i] == pattern) << i;
+#endif
+  return set_when_equal ? equal : ~equal;
+}
+
+// Appends the runs of one row's set cells, 64 cells at a time: a block that continues the current
+// state is skipped, in a mixed one the state changes are its set bits' edges.
+void scan_row(const unsigned char* p, int w, unsigned char pattern, bool set_when_equal, RowRuns& out) {
+  bool in = false;
+  int start = 0;
+  int x = 0;
+  for (; x + 64 <= w; x += 64) {
+    const std::uint64_t bits = set_bits(p + x, pattern, set_when_equal);
+    if (bits == (in ? ~std::uint64_t{0} : 0)) continue;
+    // Bit i of changes: cell x+i differs from the cell before it.
+    std::uint64_t changes = bits ^ ((bits << 1) | (in ? 1 : 0));
+    while (changes != 0) {
+      const int i = std::countr_zero(changes);
+      changes &= changes - 1;
+      if (in) out.push({start, x + i});
+      else start = x + i;
+      in = !in;
+    }
+  }
+  for (; x < w; ++x) {
+    const bool set = (p[x] == pattern) == set_when_equal;
+    if (set == in) continue;
+    if (set) start = x;
+    else out.push({start, x});
+    in = set;
+  }
+  if (in) out.push({start, w});
+  out.end_row();
+}
+
+RowRuns scan(const cv::Mat& image, unsigned char pattern, bool set_when_equal) {
+  CV_Assert(image.type() == CV_8UC1);
+  RowRuns runs(image.cols);
+  runs.reserve(static_cast<std::size_t>(image.rows) * 4, image.rows);
+  for (int y = 0; y < image.rows; ++y) scan_row(image.ptr<unsigned char>(y), image.cols, pattern, set_when_equal, runs);
+  return runs;
+}
+
+// a ∪ b of one row, appended to out (canonical).
+void unite_into(std::span<const CellRun> a, std::span<const CellRun> b, std::vector<CellRun>& out) {
+  const std::size_t first = out.size();
+  std::size_t i = 0, j = 0;
+  while (i < a.size() || j < b.size()) {
+    const CellRun next = j == b.size() || (i < a.size() && a[i].begin <= b[j].begin) ? a[i++] : b[j++];
+    if (out.size() > first && next.begin <= out.back().end) {
+      out.back().end = std::max(out.back().end, next.end);
+    } else {
+      out.push_back(next);
+    }
+  }
+}
+
+// a ∩ b of one row, appended to out.
+void intersect_into(std::span<const CellRun> a, std::span<const CellRun> b, std::vector<CellRun>& out) {
+  std::size_t i = 0, j = 0;
+  while (i < a.size() && j < b.size()) {
+    const int lo = std::max(a[i].begin, b[j].begin), hi = std::min(a[i].end, b[j].end);
+    if (lo < hi) out.push_back({lo, hi});
+    if (a[i].end < b[j].end) ++i;
+    else ++j;
+  }
+}
+
+// acc ∩ (the runs of row, each shrunk by s cells at both ends), into out.
+void intersect_shrunk(std::span<const CellRun> acc, std::span<const CellRun> row, int s, std::vector<CellRun>& out) {
+  out.clear();
+  std::size_t i = 0, j = 0;
+  while (i < acc.size() && j < row.size()) {
+    const int b = row[j].begin + s, e = row[j].end - s;
+    if (b >= e) {
+      ++j;
+      continue;
+    }
+    const int lo = std::max(acc[i].begin, b), hi = std::min(acc[i].end, e);
+    if (lo < hi) out.push_back({lo, hi});
+    if (acc[i].end < e) ++i;
+    else ++j;
+  }
+}
+
+// Appends run to out, joining it to the last run when they overlap or touch (runs come in order of
+// their first cell).
+void append_joined(std::vector<CellRun>& out, CellRun run) {
+  if (!out.empty() && run.begin <= out.back().end) {
+    out.back().end = std::max(out.back().end, run.end);
+  } else {
+    out.push_back(run);
+  }
+}
+
+// acc ∪ (the runs of row, each grown by g cells at both ends, clipped to [0, w)), into out.
+void unite_grown(std::span<const CellRun> acc, std::span<const CellRun> row, int g, int w, std::vector<CellRun>& out) {
+  out.clear();
+  std::size_t i = 0, j = 0;
+  while (i < acc.size() || j < row.size()) {
+    if (j == row.size() || (i < acc.size() && acc[i].begin <= row[j].begin - g)) {
+      append_joined(out, acc[i++]);
+    } else {
+      append_joined(out, {std::max(0, row[j].begin - g), std::min(w, row[j].end + g)});
+      ++j;
+    }
+  }
+}
+
+bool same_runs(std::span<const CellRun> a, std::span<const CellRun> b) {
+  return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](const CellRun& x, const CellRun& y) {
+           return x.begin == y.begin && x.end == y.end;
+         });
+}
+
+// Per row: how many rows up to it (itself included) each equal the row before them. A row whose
+// rows in reach all repeat is the row before it, which spares maps drawn by hand most of the work.
+std::vector<int> equal_row_streaks(const RowRuns& runs) {
+  std::vector<int> streak(static_cast<std::size_t>(runs.height()), 0);
+  for (int y = 1; y < runs.height(); ++y)
+    if (same_runs(runs.row(y), runs.row(y - 1))) streak[static_cast<std::size_t>(y)] = streak[static_cast<std::size_t>(y) - 1] + 1;
+  return streak;
+}
+
+// Whether row y's output equals row y - 1's: the rows [y - reach, y + reach] lie in the image and
+// each equals the row before it.
+bool repeats(const std::vector<int>& streak, int y, int reach) {
+  return y > reach && y + reach < static_cast<int>(streak.size()) &&
+         streak[static_cast<std::size_t>(y + reach)] >= 2 * reach + 1;
+}
+
+void repeat_last_row(RowRuns& out, std::vector<CellRun>& scratch) {
+  const std::span<const CellRun> last = out.row(out.height() - 1);
+  scratch.assign(last.begin(), last.end());
+  out.append_row(scratch);
+}
+
+// Runs of each row shrunk by n at both ends, except at the image's edges (a set border).
+RowRuns shrink_rows_set_border(const RowRuns& runs, int n) {
+  const int w = runs.width();
+  RowRuns out(w);
+  out.reserve(runs.all().size(), runs.height());
+  for (int y = 0; y < runs.height(); ++y) {
+    for (const CellRun& r : runs.row(y)) {
+      const int b = r.begin == 0 ? 0 : r.begin + n, e = r.end == w ? w : r.end - n;
+      if (b < e) out.push({b, e});
+    }
+    out.end_row();
+  }
+  return out;
+}
+
+// Row y of the result is the intersection of the rows [y - n, y + n] within the image (van Herk /
+// Gil-Werman: within blocks of 2n + 1 rows, running intersections from each block's top and from
+// its bottom; a window is one block's suffix and the next block's prefix).
+RowRuns intersect_sliding_rows(const RowRuns& runs, int n) {
+  const int h = runs.height(), w = runs.width(), block = 2 * n + 1;
+  RowRuns prefix(w), suffix_reversed(w);  // the suffix of row y is row h - 1 - y of suffix_reversed
+  std::vector<CellRun> row;
+  for (int y = 0; y < h; ++y) {
+    if (y % block == 0) {
+      prefix.append_row(runs.row(y));
+    } else {
+      row.clear();
+      intersect_into(prefix.row(y - 1), runs.row(y), row);
+      prefix.append_row(row);
+    }
+  }
+  for (int y = h - 1; y >= 0; --y) {
+    if (y % block == block - 1 || y == h - 1) {
+      suffix_reversed.append_row(runs.row(y));
+    } else {
+      row.clear();
+      intersect_into(runs.row(y), suffix_reversed.row(h - 2 - y), row);
+      suffix_reversed.append_row(row);
+    }
+  }
+  RowRuns out(w);
+  for (int y = 0; y < h; ++y) {
+    const int lo = std::max(0, y - n), hi = std::min(h - 1, y + n);
+    row.clear();
+    if (lo / block == hi / block) {
+      // Within one block the window starts it (the image's top) or ends where the image does.
+      const std::span<const CellRun> whole = lo % block == 0 ? prefix.row(hi) : suffix_reversed.row(h - 1 - lo);
+      row.assign(whole.begin(), whole.end());
+    } else {
+      intersect_into(suffix_reversed.row(h - 1 - lo), prefix.row(hi), row);
+    }
+    out.append_row(row);
+  }
+  return out;
+}
+
+// Erosion by a (2n+1)-cell square with a set border: separable into rows, then columns.
+RowRuns erode_square_set_border(const RowRuns& runs, int n) {
+  return intersect_sliding_rows(shrink_rows_set_border(runs, n), n);
+}
+
+// a \ b of one row, appended to out.
+void subtract_into(std::span<const CellRun> a, std::span<const CellRun> b, std::vector<CellRun>& out) {
+  std::size_t j = 0;
+  for (const CellRun& r : a) {
+    int from = r.begin;
+    while (j < b.size() && b[j].end <= from) ++j;
+    for (std::size_t k = j; k < b.size() && b[k].begin < r.end; ++k) {
+      if (b[k].begin > from) out.push_back({from, b[k].begin});
+      from = std::max(from, b[k].end);
+    }
+    if (from < r.end) out.push_back({from, r.end});
+  }
+}
+
+template <class Op>
+RowRuns row_by_row(const RowRuns& a, const RowRuns& b, Op op) {
+  CV_Assert(a.width() == b.width() && a.height() == b.height());
+  RowRuns out(a.width());
+  out.reserve(a.all().size() + b.all().size(), a.height());
+  std::vector<CellRun> row;
+  for (int y = 0; y < a.height(); ++y) {
+    row.clear();
+    op(a.row(y), b.row(y), row);
+    out.append_row(row);
+  }
+  return out;
+}
+
+// Union-find over run indices; a component's root is its first run.
+struct RunForest {
+  std::vector<int> parent;
+  explicit RunForest(std::size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0); }
+  int find(int i) {
+    while (parent[static_cast<std::size_t>(i)] != i) {
+      int& p = parent[static_cast<std::size_t>(i)];
+      p = parent[static_cast<std::size_t>(p)];
+      i = p;
+    }
+    return i;
+  }
+  void join(int a, int b) {
+    a = find(a);
+    b = find(b);
+    if (a < b) parent[static_cast<std::size_t>(b)] = a;
+    else if (b < a) parent[static_cast<std::size_t>(a)] = b;
+  }
+};
+
+}  // namespace
+
+RowRuns no_runs(const RowRuns& like) {
+  RowRuns out(like.width());
+  for (int y = 0; y < like.height(); ++y) out.end_row();
+  return out;
+}
+
+RowRuns runs_of(const cv::Mat& mask) { return scan(mask, 0, false); }
+
+RowRuns runs_of_value(const cv::Mat& image, unsigned char value) { return scan(image, value, true); }
+
+long long cell_count(const RowRuns& runs) {
+  long long n = 0;
+  for (const CellRun& r : runs.all()) n += r.end - r.begin;
+  return n;
+}
+
+void paint(const RowRuns& runs, cv::Mat& image, unsigned char value) {
+  CV_Assert(image.type() == CV_8UC1 && image.cols == runs.width() && image.rows == runs.height());
+  for (int y = 0; y < runs.height(); ++y) {
+    unsigned char* row = image.ptr<unsigned char>(y);
+    for (const CellRun& r : runs.row(y)) std::memset(row + r.begin, value, static_cast<std::size_t>(r.end - r.begin));
+  }
+}
+
+void write_mask(const RowRuns& runs, cv::Mat& image, unsigned char set, unsigned char unset) {
+  CV_Assert(image.type() == CV_8UC1 && image.cols == runs.width() && image.rows == runs.height());
+  for (int y = 0; y < runs.height(); ++y) {
+    unsigned char* row = image.ptr<unsigned char>(y);
+    int x = 0;
+    for (const CellRun& r : runs.row(y)) {
+      std::memset(row + x, unset, static_cast<std::size_t>(r.begin - x));
+      std::memset(row + r.begin, set, static_cast<std::size_t>(r.end - r.begin));
+      x = r.end;
+    }
+    std::memset(row + x, unset, static_cast<std::size_t>(runs.width() - x));
+  }
+}
+
+RowRuns unite(const RowRuns& a, const RowRuns& b) { return row_by_row(a, b, unite_into); }
+RowRuns intersect(const RowRuns& a, const RowRuns& b) { return row_by_row(a, b, intersect_into); }
+RowRuns subtract(const RowRuns& a, const RowRuns& b) { return row_by_row(a, b, subtract_into); }
+
+RowRuns complement(const RowRuns& a) {
+  const int w = a.width();
+  RowRuns out(w);
+  out.reserve(a.all().size() + static_cast<std::size_t>(a.height()), a.height());
+  for (int y = 0; y < a.height(); ++y) {
+    int x = 0;
+    for (const CellRun& r : a.row(y)) {
+      if (r.begin > x) out.push({x, r.begin});
+      x = r.end;
+    }
+    if (x < w) out.push({x, w});
+    out.end_row();
+  }
+  return out;
+}
+
+std::vector<int> disc_half_widths(int r) {
+  CV_Assert(r >= 1 && r <= 46340);  // r * r fits an int, as in OpenCV
+  // getStructuringElement's own arithmetic for a (2r+1)-square ellipse, without its (2r+1)² cells.
+  const double inv_r2 = 1.0 / (static_cast<double>(r) * r);
+  std::vector<int> half(static_cast<std::size_t>(r) + 1);
+  for (int dy = 0; dy <= r; ++dy)
+    half[static_cast<std::size_t>(dy)] = cv::saturate_cast<int>(r * std::sqrt((r * r - dy * dy) * inv_r2));
+  return half;
+}
+
+RowRuns erode(const RowRuns& runs, const std::vector<int>& half_widths) {
+  const int r = static_cast<int>(half_widths.size()) - 1, h = runs.height();
+  const std::vector<int> streak = equal_row_streaks(runs);
+  RowRuns out(runs.width());
+  out.reserve(runs.all().size(), h);
+  std::vector<CellRun> acc, next;
+  for (int y = 0; y < h; ++y) {
+    if (y < r || y + r >= h) {  // an empty row beyond the image is in reach
+      out.end_row();
+      continue;
+    }
+    if (repeats(streak, y, r)) {
+      repeat_last_row(out, acc);
+      continue;
+    }
+    intersect_shrunk(runs.row(y), runs.row(y), half_widths[0], acc);
+    for (int k = 1; k <= r && !acc.empty(); ++k) {
+      intersect_shrunk(acc, runs.row(y - k), half_widths[static_cast<std::size_t>(k)], next);
+      intersect_shrunk(next, runs.row(y + k), half_widths[static_cast<std::size_t>(k)], acc);
+    }
+    out.append_row(acc);
+  }
+  return out;
+}
+
+RowRuns dilate(const RowRuns& runs, const std::vector<int>& half_widths) {
+  const int r = static_cast<int>(half_widths.size()) - 1, h = runs.height(), w = runs.width();
+  const std::vector<int> streak = equal_row_streaks(runs);
+  RowRuns out(w);
+  out.reserve(runs.all().size(), h);
+  std::vector<CellRun> acc, next;
+  for (int y = 0; y < h; ++y) {
+    if (repeats(streak, y, r)) {
+      repeat_last_row(out, acc);
+      continue;
+    }
+    acc.clear();
+    for (int dy = -r; dy <= r; ++dy) {
+      if (y + dy < 0 || y + dy >= h || runs.row(y + dy).empty()) continue;
+      unite_grown(acc, runs.row(y + dy), half_widths[static_cast<std::size_t>(std::abs(dy))], w, next);
+      std::swap(acc, next);
+    }
+    out.append_row(acc);
+  }
+  return out;
+}
+
+// The dilation (zero border) is the complement of the complement's erosion with a set border.
+RowRuns close_square(const RowRuns& runs, int n) {
+  return erode_square_set_border(complement(erode_square_set_border(complement(runs), n)), n);
+}
+
+RowRuns grow_within(const RowRuns& seed, const RowRuns& within, int steps) {
+  CV_Assert(seed.width() == within.width() && seed.height() == within.height());
+  const int h = seed.height(), w = seed.width();
+  const std::vector<int> within_streak = equal_row_streaks(within);
+  RowRuns current = seed;
+  std::vector<CellRun> around, next;
+  for (int step = 0; step < steps; ++step) {
+    const std::vector<int> streak = equal_row_streaks(current);
+    RowRuns grown(w);
+    grown.reserve(current.all().size(), h);
+    for (int y = 0; y < h; ++y) {
+      if (repeats(streak, y, 1) && within_streak[static_cast<std::size_t>(y)] >= 1) {
+        repeat_last_row(grown, around);
+        continue;
+      }
+      around.clear();
+      for (int dy = -1; dy <= 1; ++dy) {
+        if (y + dy < 0 || y + dy >= h) continue;
+        unite_grown(around, current.row(y + dy), 1, w, next);
+        std::swap(around, next);
+      }
+      next.clear();
+      intersect_into(around, within.row(y), next);
+      grown.append_row(next);
+    }
+    current = std::move(grown);
+  }
+  return current;
+}
+
+std::vector<int> run_components(const RowRuns& runs, bool eight_connected, int& count) {
+  const std::span<const CellRun> all = runs.all();
+  RunForest forest(all.size());
+  const int reach = eight_connected ? 1 : 0;  // a run touches the next row's runs this far beyond its ends
+  for (int y = 1; y < runs.height(); ++y) {
+    const std::size_t b0 = runs.index_of_row(y), b1 = y + 1 < runs.height() ? runs.index_of_row(y + 1) : all.size();
+    std::size_t i = runs.index_of_row(y - 1), j = b0;
+    while (i < b0 && j < b1) {
+      if (all[i].begin < all[j].end + reach && all[j].begin < all[i].end + reach)
+        forest.join(static_cast<int>(i), static_cast<int>(j));
+      if (all[i].end < all[j].end) ++i;
+      else ++j;
+    }
+  }
+  std::vector<int> component(all.size());
+  count = 0;
+  for (std::size_t i = 0; i < all.size(); ++i) {
+    const int root = forest.find(static_cast<int>(i));
+    component[i] = root == static_cast<int>(i) ? count++ : component[static_cast<std::size_t>(root)];
+  }
+  return component;
+}
+
+RowRuns select_runs(const RowRuns& runs, const std::vector<unsigned char>& keep_run) {
+  RowRuns out(runs.width());
+  const std::span<const CellRun> all = runs.all();
+  for (int y = 0; y < runs.height(); ++y) {
+    const std::size_t end = y + 1 < runs.height() ? runs.index_of_row(y + 1) : all.size();
+    for (std::size_t i = runs.index_of_row(y); i < end; ++i)
+      if (keep_run[i]) out.push(all[i]);
+    out.end_row();
+  }
+  return out;
+}
+
+}  // namespace topocut
