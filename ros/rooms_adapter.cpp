@@ -33,12 +33,11 @@ topocut::IncrementalOptions read_options(const DoubleParameter& number, const Fl
     bool value = false;
     return flag(name, &value) && value;
   };
-  if (on("no_doors")) s.doors.enabled = false;
-  if (on("no_wall_openings")) s.doors.extend_walls = false;
-  if (on("no_merge")) s.merge.enabled = false;
-  if (on("no_simplify")) s.simplify = 0.0;
-  if (on("no_width_steps")) s.merge.step_ratio = 0.0;
-  if (on("no_furniture_rule")) s.merge.furniture_size = 0.0;
+  for (const topocut::SegmentationRule& rule : topocut::segmentation_rules()) {
+    std::string name = "no_" + rule.name;
+    for (char& c : name) c = c == '-' ? '_' : c;
+    if (on(name.c_str())) rule.turn_off(s);
+  }
   topocut::validate(s);
   return options;
 }

@@ -16,6 +16,7 @@
 #include "topocut/io/rooms_json.h"
 #include "topocut/segmentation/grid_segmentation.h"
 #include "topocut/segmentation/incremental_segmenter.h"
+#include "topocut/segmentation/segmentation_rules.h"
 #include "topocut/segmentation/segmenter.h"
 
 namespace topocut {

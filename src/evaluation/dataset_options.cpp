@@ -6,6 +6,7 @@
 #include "topocut/core/format.h"
 #include "topocut/core/option_table.h"
 #include "topocut/io/map_load_flags.h"
+#include "topocut/segmentation/segmentation_rules.h"
 
 namespace topocut {
 
@@ -137,19 +138,14 @@ std::string dataset_options_help() {
 std::string method_name(const SegmentOptions& options) {
   if (!options.decompose) return "trivial (one room per component)";
   std::string name = "topocut (tau " + number(options.concavity) + " m";
-  if (!options.doors.enabled && !options.merge.enabled && options.simplify == 0.0 &&
-      !options.labels.cover_absorbed_obstacles && !options.clean) {
+  const std::vector<std::string> off = rules_off(options);
+  if (off.size() == segmentation_rules().size() && !options.labels.cover_absorbed_obstacles) {
     name += ", parity";
   } else {
-    if (!options.doors.enabled) name += ", no doors";
-    if (options.doors.enabled && !options.doors.extend_walls) name += ", no wall openings";
-    if (!options.merge.enabled) name += ", no merge";
-    if (options.simplify == 0.0) name += ", no simplify";
+    for (const std::string& rule : off) name += ", no " + rule;
     if (options.labels.cover_absorbed_obstacles) name += ", obstacles covered";
-    if (!options.clean) name += ", no cleaning";
-    if (options.merge.enabled && options.merge.step_ratio == 0.0) name += ", no width steps";
-    if (options.merge.enabled && options.merge.furniture_size == 0.0) name += ", no furniture rule";
-    if (options.doors.enabled && !options.doors.wall_lines) name += ", no wall lines";
+    if (options.merge.enabled && options.merge.learned != RoomMergeOptions{}.learned)
+      name += options.merge.learned ? ", learned merging" : ", hand-rule merging";
     if (options.merge.enabled && options.oversegment != SegmentOptions{}.oversegment)
       name += ", DuDe at " + number(options.oversegment) + " tau";
   }

@@ -115,7 +115,7 @@ IncrementalOptions incremental_options(py::dict kwargs) {
   o.split_after = pop<int>(kwargs, "split_after", o.split_after);
   o.merge_after = pop<int>(kwargs, "merge_after", o.merge_after);
   SegmentSettings s{o.segment, {}};
-  s.switches.no_clean = true;
+  s.switches.rules_off.push_back("clean");
   o.segment = settings_from(kwargs, s);
   return o;
 }

@@ -1,33 +1,27 @@
 #include "topocut/segmentation/segment_switches.h"
 
+#include <algorithm>
+
 #include "topocut/core/error.h"
+#include "topocut/segmentation/segmentation_rules.h"
 
 namespace topocut {
 
 void apply(const SegmentSwitches& s, SegmentOptions& options) {
-  if (s.parity && (s.no_doors || s.no_wall_openings || s.no_merge || s.no_simplify || options.labels.cover_absorbed_obstacles ||
-                   s.no_wall_lines || s.no_island_cuts ||
-                   s.no_clean || s.no_width_steps || s.no_furniture_rule))
+  if (s.parity && (!s.rules_off.empty() || options.labels.cover_absorbed_obstacles))
     throw Error("--parity already switches every improvement off; give it alone");
   if (s.parity) {
     const SegmentOptions reference = parity_segment_options(options.concavity);
-    options.doors = reference.doors;
-    options.merge = reference.merge;
-    options.simplify = reference.simplify;
+    for (const SegmentationRule& rule : segmentation_rules()) rule.turn_off(options);
     options.labels = reference.labels;
-    options.clean = reference.clean;
     if (!s.min_room_area_given) options.contours.min_component_area = reference.contours.min_component_area;
   }
-  if (s.no_doors) options.doors.enabled = false;
-  if (s.no_wall_openings) options.doors.extend_walls = false;
-  if (s.no_merge) options.merge.enabled = false;
-  if (s.no_simplify) options.simplify = 0.0;
-  if (s.no_clean) options.clean = false;
+  for (const std::string& name : s.rules_off) {
+    const SegmentationRule* rule = find_segmentation_rule(name);
+    if (rule == nullptr) throw Error("no segmentation rule is called '" + name + "'");
+    rule->turn_off(options);
+  }
   options.decompose = !s.trivial;
-  if (s.no_width_steps) options.merge.step_ratio = 0.0;
-  if (s.no_furniture_rule) options.merge.furniture_size = 0.0;
-  if (s.no_wall_lines) options.doors.wall_lines = false;
-  if (s.no_island_cuts) options.doors.island_cuts = false;
 }
 
 namespace {
@@ -58,10 +52,31 @@ Row given(Row row) {
   return row;
 }
 
+// rows with a --no-NAME switch for every rule of the pipeline after the first three (concavity,
+// trivial, parity), in the pipeline's order.
+std::vector<Row> with_rule_switches(std::vector<Row> rows) {
+  std::vector<Row> switches;
+  for (const SegmentationRule& rule : segmentation_rules()) {
+    const std::string name = rule.name;
+    switches.push_back({"no-" + name, "", rule.help, OptionRange::kSwitch,
+                        [name](const SegmentSettings& s) {
+                          const auto& off = s.switches.rules_off;
+                          return std::find(off.begin(), off.end(), name) != off.end() ? 1.0 : 0.0;
+                        },
+                        [name](SegmentSettings& s, double on) {
+                          auto& off = s.switches.rules_off;
+                          std::erase(off, name);
+                          if (on != 0.0) off.push_back(name);
+                        }});
+  }
+  rows.insert(rows.begin() + 3, switches.begin(), switches.end());
+  return rows;
+}
+
 }  // namespace
 
 const std::vector<OptionRow<SegmentSettings>>& segment_option_rows() {
-  static const std::vector<Row> rows = {
+  static const std::vector<Row> rows = with_rule_switches({
       number("concavity", "M", OptionRange::kPositive, [](auto& s) -> auto& { return s.options.concavity; },
              "maximum concavity tau in metres: larger values give fewer, less convex rooms"),
       on_off("trivial", [](auto& s) -> auto& { return s.switches.trivial; },
@@ -71,12 +86,6 @@ const std::vector<OptionRow<SegmentSettings>>& segment_option_rows() {
              "alone or with numbers and --trivial, not with a switch it already sets"),
       number("door-width", "M", OptionRange::kPositive, [](auto& s) -> auto& { return s.options.doors.max_width; },
              "widest passage in metres taken for a door (cut before the decomposition)"),
-      on_off("no-doors", [](auto& s) -> auto& { return s.switches.no_doors; }, "no door cuts before the decomposition"),
-      on_off("no-wall-openings", [](auto& s) -> auto& { return s.switches.no_wall_openings; },
-             "door cuts only at narrow passages, not where a thin wall stops short of the next obstacle"),
-      on_off("no-wall-lines", [](auto& s) -> auto& { return s.switches.no_wall_lines; },
-             "no cuts where a straight wall (2.5 m or more) continued across at most 5 m of free space meets the next "
-             "wall (room boundaries across wide openings, candidates that merging may remove)"),
       number("wall-line-wall", "M", OptionRange::kPositive, [](auto& s) -> auto& { return s.options.doors.wall_line_wall; },
              "shortest straight wall (metres) whose continuation is a wall line"),
       number("max-wall-line", "M", OptionRange::kPositive, [](auto& s) -> auto& { return s.options.doors.max_wall_line; },
@@ -85,16 +94,8 @@ const std::vector<OptionRow<SegmentSettings>>& segment_option_rows() {
              "of two wall lines closer than this (metres) along their whole length only the shorter is kept"),
       number("wall-line-side", "M", OptionRange::kNonNegative, [](auto& s) -> auto& { return s.options.doors.wall_line_side; },
              "a wall line is at least this long (metres) and leaves both sides this wide"),
-      on_off("no-island-cuts", [](auto& s) -> auto& { return s.switches.no_island_cuts; },
-             "no door-like cuts from the outline to a free-standing piece of wall (longer than 2.5 m, at most 0.25 m "
-             "thick: a partition whose joint the sensor missed), which separate rooms only together (candidates that "
-             "merging may remove)"),
-      on_off("no-merge", [](auto& s) -> auto& { return s.switches.no_merge; },
-             "keep DuDe's pieces as rooms instead of merging them across wide cuts"),
       number("fold-area", "M2", OptionRange::kNonNegative, [](auto& s) -> auto& { return s.options.merge.min_room_area; },
              "rooms smaller than this (m²) are folded into the neighbour they share the longest cut with"),
-      on_off("no-simplify", [](auto& s) -> auto& { return s.switches.no_simplify; },
-             "decompose the exact pixel-edge polygons (slower)"),
       on_off("cover-obstacles", [](auto& s) -> auto& { return s.options.labels.cover_absorbed_obstacles; },
              "label the obstacles a room absorbed (furniture) with the room, not with 0"),
       number("robot-radius", "M", OptionRange::kNonNegative, [](auto& s) -> auto& { return s.options.binarize.robot_radius; },
@@ -106,15 +107,9 @@ const std::vector<OptionRow<SegmentSettings>>& segment_option_rows() {
                    "free-space components smaller than this (m²) are not rooms; their cells join the nearest room")),
       number("min-hole-area", "M2", OptionRange::kNonNegative, [](auto& s) -> auto& { return s.options.contours.min_hole_area; },
              "obstacles inside free space smaller than this (m²) are ignored by the decomposition"),
-      on_off("no-clean", [](auto& s) -> auto& { return s.switches.no_clean; },
-             "decompose the free space as it is: keep laser-ray fans, slivers, free and obstacle specks"),
-      on_off("no-width-steps", [](auto& s) -> auto& { return s.switches.no_width_steps; },
-             "merge a room into a much wider space it opens onto across its whole width (no width-step rule)"),
-      on_off("no-furniture-rule", [](auto& s) -> auto& { return s.switches.no_furniture_rule; },
-             "cuts that end on furniture-sized obstacles (at most 2.5 m a side) may separate rooms"),
       number("oversegment", "F", OptionRange::kFraction, [](auto& s) -> auto& { return s.options.oversegment; },
              "with merging, DuDe cuts at F x tau, 0 < F <= 1 (merging then removes the cuts that are not door-like)"),
-  };
+  });
   return rows;
 }
 

@@ -14,6 +14,7 @@
 #include "topocut/decomposition/ring_intersections.h"
 #include "topocut/map/simplify.h"
 #include "topocut/segmentation/polygon_split.h"
+#include "topocut/segmentation/segmentation_rules.h"
 
 namespace topocut {
 
@@ -74,18 +75,13 @@ SegmentationInput segmentation_input(const OccupancyGrid& grid, const SegmentOpt
 
 namespace {
 
-// Door cuts, then (with extras) island cuts and wall lines, as far as options.doors asks for them,
-// split the polygon; each part is decomposed on its own. Island cuts and wall lines are ordinary
-// cuts: merging may remove them.
-PieceSet decompose_polygon(const PolygonWithHoles& polygon, double resolution, const SegmentOptions& options, bool extras) {
+// The cut rules (segmentation_rules()) in order, each clear of the earlier ones' cuts, then each part
+// of the polygon decomposed on its own. With fallible false, the rules that may fail are left out.
+PieceSet decompose_polygon(const PolygonWithHoles& polygon, double resolution, const SegmentOptions& options, bool fallible) {
   PieceSet set;
-  for (const RuledCut& door : find_ruled_door_cuts(polygon, resolution, options.doors)) set.add_cut(door.segment, door.rule);
-  const std::vector<Segment2> doors = set.cuts;
-  if (options.doors.enabled && extras) {
-    for (const Segment2& cut : find_island_cuts(polygon, resolution, options.doors, doors)) set.add_cut(cut, CutRule::kIslandCut);
-  }
-  if (options.doors.enabled && options.doors.wall_lines && extras) {
-    for (const Segment2& cut : find_wall_line_cuts(polygon, resolution, options.doors, set.cuts)) set.add_cut(cut, CutRule::kWallLine);
+  for (const SegmentationRule& rule : segmentation_rules()) {
+    if (!rule.find_cuts || !rule.is_on(options) || (rule.may_fail && !fallible)) continue;
+    for (const Segment2& cut : rule.find_cuts(polygon, resolution, options.doors, set.cuts)) set.add_cut(cut, rule.cut_rule);
   }
   const std::vector<PolygonWithHoles> parts = split_polygon(polygon, set.cuts);
   DecompositionOptions decomposition = options.decomposition;
@@ -121,11 +117,13 @@ PieceSet decompose_pieces(const FreeSpaceComponent& component, double resolution
     set.pieces.push_back(component.polygon);
     return set;
   }
-  // The simplified polygon first, with island cuts and wall lines if asked for; a wall line grazing
-  // a corner may leave a degenerate part, and simplified rings may touch after all (a very thin wall
-  // or gap), so each failure falls back to the next try, the exact polygon with the doors alone last.
+  // The simplified polygon first, with every cut rule; a wall line grazing a corner may leave a
+  // degenerate part, and simplified rings may touch after all (a very thin wall or gap), so each
+  // failure falls back to the next try, the exact polygon without the rules that may fail last.
+  const bool fallible_on = std::any_of(segmentation_rules().begin(), segmentation_rules().end(),
+                                       [&](const SegmentationRule& r) { return r.may_fail && r.is_on(options); });
   auto attempt = [&](const PolygonWithHoles& polygon, bool last) -> std::optional<PieceSet> {
-    if (options.doors.wall_lines || options.doors.island_cuts) {
+    if (fallible_on) {
       try {
         return decompose_polygon(polygon, resolution, options, true);
       } catch (const Error&) {
@@ -156,13 +154,8 @@ PieceSet decompose_component(const FreeSpaceComponent& component, double resolut
 SegmentOptions parity_segment_options(double concavity) {
   SegmentOptions options;
   options.concavity = concavity;
-  options.merge.enabled = false;
-  options.doors.enabled = false;
-  options.doors.wall_lines = false;
-  options.doors.island_cuts = false;
+  for (const SegmentationRule& rule : segmentation_rules()) rule.turn_off(options);
   options.labels.cover_absorbed_obstacles = false;
-  options.simplify = 0.0;
-  options.clean = false;
   options.contours.min_component_area = ContourOptions{}.min_component_area;
   return options;
 }

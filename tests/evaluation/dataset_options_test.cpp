@@ -126,11 +126,11 @@ TEST(DatasetOptions, RealMapSwitchesAndResolution) {
   EXPECT_TRUE(parse_dataset_arguments({"--variant", "plain"}).variant_given);
   EXPECT_THROW(parse_dataset_arguments({"--resolution", "0"}), Error);
   // The method name tells each switch apart from the defaults.
-  EXPECT_NE(method_name(a.run.segment).find("no cleaning"), std::string::npos);
-  EXPECT_NE(method_name(a.run.segment).find("no width steps"), std::string::npos);
+  EXPECT_NE(method_name(a.run.segment).find("no clean"), std::string::npos);
+  EXPECT_NE(method_name(a.run.segment).find("no width-steps"), std::string::npos);
   const DatasetArguments lines = parse_dataset_arguments({"--no-wall-lines"});
   EXPECT_FALSE(lines.run.segment.doors.wall_lines);
-  EXPECT_NE(method_name(lines.run.segment).find("no wall lines"), std::string::npos);
+  EXPECT_NE(method_name(lines.run.segment).find("no wall-lines"), std::string::npos);
 }
 
 }  // namespace

@@ -3,12 +3,11 @@
 // not where people put room boundaries; a door is a narrow passage between two wider spaces. This
 // stage finds such passages geometrically, at every wall corner that points into free space (a
 // reflex vertex: door jambs, wall ends), as the shortest segment that resolves the corner, and
-// keeps the segments that are much narrower than the space on both of their sides. Wall lines, the
-// straight walls continued across wide openings, are found here too, since they share the search.
-// The component is then split along both, and each part is decomposed on its own.
+// keeps the segments that are much narrower than the space on both of their sides. DoorOptions also
+// holds the options of the other cut rules, which share the search (wall_openings.h, island_cuts.h,
+// wall_lines.h); the component is split along all their cuts, and each part is decomposed on its own.
 #include <vector>
 
-#include "topocut/core/cut_rule.h"
 #include "topocut/core/geometry.h"
 
 namespace topocut {
@@ -70,36 +69,14 @@ struct DoorOptions {
 // Throws Error unless the options are usable.
 void validate(const DoorOptions& options);
 
-// The door cuts of a free-space polygon (grid coordinates, one unit per cell; resolution converts
-// the options' metres): narrow passages first, then wall openings; segments between a reflex
-// vertex and a point of the same ring (a vertex or a point on an edge), strictly inside the
-// polygon, pairwise disjoint (they may share an end point), each splitting the polygon in two.
-// Deterministic.
+// Narrow passages (the door rule): from every reflex corner of a free-space polygon (grid coordinates,
+// one unit per cell; resolution converts the options' metres), the shortest cut across it to the same
+// ring, kept where both sides are much wider (door_ratio); pairwise disjoint (they may share an end
+// point), each splitting the polygon in two, narrowest first. Empty unless options.enabled. Deterministic.
+std::vector<Segment2> find_passage_cuts(const PolygonWithHoles& polygon, double resolution, const DoorOptions& options = {});
+
+// Every door cut: the narrow passages, then the wall openings (wall_openings.h) clear of them; empty
+// unless options.enabled.
 std::vector<Segment2> find_door_cuts(const PolygonWithHoles& polygon, double resolution, const DoorOptions& options = {});
-
-// A cut and the rule that found it.
-struct RuledCut {
-  Segment2 segment;
-  CutRule rule = CutRule::kDoor;
-};
-
-// find_door_cuts(), each cut with its rule: kDoor for a narrow passage, kWallOpening for a thin wall
-// continued to the next obstacle.
-std::vector<RuledCut> find_ruled_door_cuts(const PolygonWithHoles& polygon, double resolution, const DoorOptions& options = {});
-
-// Door-like cuts between rings (empty unless options.island_cuts): from a reflex corner of the
-// outline or of a wall island (options.*island*) to the nearest point of another of these, found
-// and tested as doors are, not crossing the doors; only those that, with the doors and each other,
-// have a different part of the polygon on either side (separating_chords). Doors are not repeated.
-std::vector<Segment2> find_island_cuts(const PolygonWithHoles& polygon, double resolution, const DoorOptions& options,
-                                       const std::vector<Segment2>& doors);
-
-// Candidate room boundaries beside the doors (empty unless options.wall_lines): from every reflex
-// corner, each of its straight walls (options.wall_line_*) continued to the first wall of the same
-// ring within options.max_wall_line metres, at least options.wall_line_side long and leaving both
-// sides that wide; shortest first, none crossing a door or another, none within
-// options.wall_line_spacing of a shorter one along its whole length. Doors are not repeated.
-std::vector<Segment2> find_wall_line_cuts(const PolygonWithHoles& polygon, double resolution, const DoorOptions& options,
-                                          const std::vector<Segment2>& doors);
 
 }  // namespace topocut

@@ -1,0 +1,205 @@
+#include "segmentation/cut_search.h"
+
+#include <map>
+
+namespace topocut::cut_search {
+
+// Widest chord parallel to u beside the segment's midpoint on the side of normal n, sampled up to
+// depth; capped at cap (enough to call the side wide).
+double side_width(const EdgeGrid& grid, const Point2& mid, const Point2& u, const Point2& n, double depth, double cap) {
+  const double inside = grid.cast(mid, n, depth);  // the side ends at the first wall along n
+  const int samples = 8;
+  double widest = 0.0;
+  for (int k = 1; k <= samples; ++k) {
+    const double d = depth * k / samples;
+    if (d >= inside) break;
+    const Point2 p{mid.x + d * n.x, mid.y + d * n.y};
+    const double chord = std::min(grid.cast(p, u, cap), cap) + std::min(grid.cast(p, {-u.x, -u.y}, cap), cap);
+    widest = std::max(widest, chord);
+    if (widest >= cap) break;
+  }
+  return widest;
+}
+
+// Proper crossing or touching of two segments other than at shared end points. Not the
+// decomposition's conflict test (candidates.cpp), on purpose: that one uses exact predicates on
+// polygon corners (shared ends by vertex id) and counts a segment running along another from a
+// shared end, or the same segment, as a conflict; this one is floating point on loose points and
+// lets segments with a shared end overlap (narrowest_compatible's distance test drops those).
+bool segments_conflict(const Segment2& s, const Segment2& t) {
+  auto orient = [](const Point2& a, const Point2& b, const Point2& c) { return cross(minus(b, a), minus(c, a)); };
+  const bool shared = s.a == t.a || s.a == t.b || s.b == t.a || s.b == t.b;
+  const double d1 = orient(t.a, t.b, s.a), d2 = orient(t.a, t.b, s.b);
+  const double d3 = orient(s.a, s.b, t.a), d4 = orient(s.a, s.b, t.b);
+  if (((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) && ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0))) return true;
+  if (shared) return false;
+  auto on = [&](const Point2& a, const Point2& b, const Point2& p, double o) {
+    return o == 0.0 && std::min(a.x, b.x) <= p.x && p.x <= std::max(a.x, b.x) && std::min(a.y, b.y) <= p.y &&
+           p.y <= std::max(a.y, b.y);
+  };
+  return on(t.a, t.b, s.a, d1) || on(t.a, t.b, s.b, d2) || on(s.a, s.b, t.a, d3) || on(s.a, s.b, t.b, d4);
+}
+
+// A door cut joins two points of one ring; around a small obstacle (furniture) the region it could
+// cut off lies within the obstacle's bounding box, too small to be a room.
+bool too_small_for_a_room(const Ring& hole, double resolution) {
+  const Box box = bounding_box(hole);
+  return (box.x1 - box.x0) * (box.y1 - box.y0) * resolution * resolution < kSmallestRoom;
+}
+
+// A piece of wall standing free in the map (a partition whose joint to the next wall the sensor
+// missed, a wall between two doors): longer than furniture but thin all along, unlike furniture
+// (solid or small) and clutter. 2 area / perimeter is the mean thickness of a thin shape.
+bool is_wall_island(const Ring& hole, double resolution, const DoorOptions& options) {
+  const Box box = bounding_box(hole);
+  const double around = perimeter(hole);
+  return std::max(box.x1 - box.x0, box.y1 - box.y0) * resolution > options.min_island_length && around > 0.0 &&
+         2.0 * std::abs(signed_area(hole)) / around * resolution <= options.max_island_thickness;
+}
+
+DoorSearch door_search(const PolygonWithHoles& polygon, double resolution, const DoorOptions& options,
+                       std::vector<bool> joinable) {
+  DoorSearch search{options, resolution, {&polygon.outer}, {}, options.max_width / resolution, options.width_depth / resolution,
+                    std::move(joinable)};
+  for (const Ring& hole : polygon.holes) search.rings.push_back(&hole);
+  for (std::size_t r = 0; r < search.rings.size(); ++r) {
+    const Ring& ring = *search.rings[r];
+    for (std::size_t i = 0; i < ring.size(); ++i)
+      search.edges.push_back({ring[i], ring[(i + 1) % ring.size()], static_cast<int>(r), static_cast<int>(i)});
+  }
+  return search;
+}
+
+namespace {
+
+// The nearest boundary point within reach from the reflex corner v (vertex i of ring r, between p
+// and q), inside the cone that resolves the corner; nullopt unless it lies on ring r itself (or,
+// across, on another ring, both joinable: such a cut separates nothing alone, only with the cuts
+// on the island's other sides).
+std::optional<Candidate> nearest_across_corner(const DoorSearch& search, const EdgeGrid& grid, int r, int i,
+                                               const Point2& p, const Point2& v, const Point2& q, bool across) {
+  // Directions that resolve the corner: between the continuations of its two edges.
+  const Point2 e1 = minus(v, p), e2 = minus(v, q);
+  const double l1 = length(e1), l2 = length(e2);
+  const Point2 u1{e1.x / l1, e1.y / l1}, u2{e2.x / l2, e2.y / l2};
+  auto in_cone = [&](const Point2& x) {
+    const Point2 d = minus(x, v);
+    const double tolerance = 1e-9 * (std::abs(d.x) + std::abs(d.y));
+    return cross(u1, d) >= -tolerance && cross(d, u2) >= -tolerance;
+  };
+  const int n = static_cast<int>(search.rings[static_cast<std::size_t>(r)]->size());
+  const int before = (i + n - 1) % n;
+  double best2 = search.reach * search.reach;  // squared distance of the nearest point so far
+  Point2 best_point;
+  int best_ring = -1;
+  grid.visit_nearest(v, search.reach, [&](int id) {
+    const Edge& e = search.edges[static_cast<std::size_t>(id)];
+    if (e.ring == r && (e.index == i || e.index == before)) return;
+    // No point of the edge can beat the best so far if its bounding box is farther.
+    const double gx = std::max({std::min(e.a.x, e.b.x) - v.x, 0.0, v.x - std::max(e.a.x, e.b.x)});
+    const double gy = std::max({std::min(e.a.y, e.b.y) - v.y, 0.0, v.y - std::max(e.a.y, e.b.y)});
+    if (gx * gx + gy * gy >= best2) return;
+    auto consider = [&](const Point2& x) {
+      const Point2 d = minus(x, v);
+      const double d2 = dot(d, d);
+      if (d2 > 0.0 && d2 < best2 && in_cone(x)) {
+        best2 = d2;
+        best_point = x;
+        best_ring = e.ring;
+      }
+    };
+    consider(e.a);
+    consider(e.b);
+    const Point2 d = minus(e.b, e.a);
+    const double dd = dot(d, d);
+    if (dd > 0.0) {
+      const double t = dot(minus(v, e.a), d) / dd;
+      if (t > 0.0 && t < 1.0) consider({e.a.x + t * d.x, e.a.y + t * d.y});
+    }
+    for (const Point2& ray : {u1, u2}) {
+      const double denominator = cross(ray, d);
+      if (denominator == 0.0) continue;
+      const Point2 w = minus(e.a, v);
+      const double t = cross(w, d) / denominator, s = cross(w, ray) / denominator;
+      if (t > 0.0 && s > 0.0 && s < 1.0) consider({v.x + t * ray.x, v.y + t * ray.y});
+    }
+  }, [&](double d) { return d * d < best2; });
+  if (best_ring < 0 || (best_ring != r) != across) return std::nullopt;
+  if (across && !(search.joinable[static_cast<std::size_t>(r)] && search.joinable[static_cast<std::size_t>(best_ring)]))
+    return std::nullopt;
+  return Candidate{{v, best_point}, std::sqrt(best2), r};
+}
+
+}  // namespace
+
+// Door candidates: from every reflex corner, the shortest cut across it, to its own ring or (across)
+// to another joinable one.
+std::vector<Candidate> corner_cuts(const DoorSearch& search, const EdgeGrid& grid, bool across) {
+  std::vector<Candidate> candidates;
+  for_each_reflex_corner(
+      search,
+      [&](std::size_t r, const Ring& hole) {
+        return too_small_for_a_room(hole, search.resolution) || (across && !search.joinable[r]);
+      },
+      [&](int r, int i, const Point2& p, const Point2& v, const Point2& q) {
+        if (auto c = nearest_across_corner(search, grid, r, i, p, v, q, across)) candidates.push_back(*c);
+      });
+  return candidates;
+}
+
+// Door test: both sides much wider than the passage.
+bool has_wide_sides(const DoorSearch& search, const EdgeGrid& grid, const Candidate& c) {
+  const Point2 d = minus(c.segment.b, c.segment.a);
+  const Point2 u{d.x / c.width, d.y / c.width};
+  const Point2 mid{(c.segment.a.x + c.segment.b.x) / 2.0, (c.segment.a.y + c.segment.b.y) / 2.0};
+  const double cap = c.width / search.options.door_ratio;
+  return side_width(grid, mid, u, {-u.y, u.x}, search.depth, cap) >= cap &&
+         side_width(grid, mid, u, {u.y, -u.x}, search.depth, cap) >= cap;
+}
+
+// Narrowest first; a door found from both of its jambs (or from two corners of one wall end) is
+// kept once; crossing cuts are not allowed.
+std::vector<Candidate> narrowest_compatible(std::vector<Candidate> doors, double resolution) {
+  std::sort(doors.begin(), doors.end(), [](const Candidate& x, const Candidate& y) {
+    return std::tie(x.width, x.segment.a.x, x.segment.a.y, x.segment.b.x, x.segment.b.y) <
+           std::tie(y.width, y.segment.a.x, y.segment.a.y, y.segment.b.x, y.segment.b.y);
+  });
+  const double duplicate = 0.3 / resolution;
+  std::vector<Candidate> accepted;
+  for (const Candidate& c : doors) {
+    bool ok = true;
+    for (const Candidate& taken : accepted) {
+      const Segment2& s = taken.segment;
+      if (segments_conflict(c.segment, s) ||
+          (distance_to_segment(c.segment.a, s) < duplicate && distance_to_segment(c.segment.b, s) < duplicate) ||
+          (distance_to_segment(s.a, c.segment) < duplicate && distance_to_segment(s.b, c.segment) < duplicate)) {
+        ok = false;
+        break;
+      }
+    }
+    if (ok) accepted.push_back(c);
+  }
+  return accepted;
+}
+
+std::vector<Segment2> segments_of(const std::vector<Candidate>& candidates) {
+  std::vector<Segment2> out;
+  out.reserve(candidates.size());
+  for (const Candidate& c : candidates) out.push_back(c.segment);
+  return out;
+}
+
+// The doors as candidates that go first and stay: narrowest_compatible keeps later cuts off them.
+std::vector<Candidate> doors_first(const std::vector<Segment2>& doors) {
+  std::vector<Candidate> all;
+  for (const Segment2& d : doors) all.push_back({d, -1.0, 0});
+  return all;
+}
+
+// cuts without the doors (which went first only to keep the other cuts clear of them).
+std::vector<Segment2> without_doors(std::vector<Segment2> cuts, const std::vector<Segment2>& doors) {
+  std::erase_if(cuts, [&](const Segment2& s) { return std::find(doors.begin(), doors.end(), s) != doors.end(); });
+  return cuts;
+}
+
+}  // namespace topocut::cut_search

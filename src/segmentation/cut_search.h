@@ -1,0 +1,260 @@
+#pragma once
+// The search the cut rules share (internal to the module): the free-space polygon's edges in a grid for
+// "nearest edge" and "first edge along a ray", reflex corners, the width of the space beside a cut, and
+// the narrowest-first choice of compatible cuts. door_cuts.cpp, wall_openings.cpp, island_cuts.cpp and
+// wall_lines.cpp each build one rule's candidates on it.
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <optional>
+#include <utility>
+#include <vector>
+
+#include "segmentation/plane_vectors.h"
+#include "topocut/core/cut_rule.h"
+#include "topocut/core/error.h"
+#include "topocut/core/geometry.h"
+#include "topocut/segmentation/door_cuts.h"
+
+namespace topocut::cut_search {
+
+using namespace plane;
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+constexpr double kSmallestRoom = 1.0;  // m²: no room is smaller than a square metre
+
+struct Edge {
+  Point2 a, b;
+  int ring = 0;
+  int index = 0;  // the edge from vertex index to index + 1 of its ring
+};
+
+// A uniform grid over the edges, for "edges near this point" and "first edge along this ray".
+class EdgeGrid {
+ public:
+  EdgeGrid(const std::vector<Edge>& edges, double cell) : edges_(edges), cell_(cell) {
+    x0_ = y0_ = kInfinity;
+    double x1 = -kInfinity, y1 = -kInfinity;
+    for (const Edge& e : edges) {
+      x0_ = std::min({x0_, e.a.x, e.b.x});
+      y0_ = std::min({y0_, e.a.y, e.b.y});
+      x1 = std::max({x1, e.a.x, e.b.x});
+      y1 = std::max({y1, e.a.y, e.b.y});
+    }
+    x0_ -= cell_;
+    y0_ -= cell_;
+    nx_ = static_cast<int>((x1 - x0_) / cell_) + 2;
+    ny_ = static_cast<int>((y1 - y0_) / cell_) + 2;
+    // Compressed rows: count, then fill. An edge goes into every cell its segment passes through.
+    std::vector<int> count(static_cast<std::size_t>(nx_) * ny_ + 1, 0);
+    auto for_cells = [&](const Edge& e, auto&& f) {
+      const int cx0 = column(std::min(e.a.x, e.b.x)), cx1 = column(std::max(e.a.x, e.b.x));
+      const int cy0 = row(std::min(e.a.y, e.b.y)), cy1 = row(std::max(e.a.y, e.b.y));
+      const Point2 d = minus(e.b, e.a);
+      for (int cy = cy0; cy <= cy1; ++cy) {
+        for (int cx = cx0; cx <= cx1; ++cx) {
+          if (cx1 > cx0 && cy1 > cy0) {
+            // Skip cells the segment's line misses (all four corners on one side).
+            const double bx = x0_ + cx * cell_, by = y0_ + cy * cell_;
+            const double s0 = cross(d, minus({bx, by}, e.a)), s1 = cross(d, minus({bx + cell_, by}, e.a));
+            const double s2 = cross(d, minus({bx, by + cell_}, e.a)), s3 = cross(d, minus({bx + cell_, by + cell_}, e.a));
+            if ((s0 > 0 && s1 > 0 && s2 > 0 && s3 > 0) || (s0 < 0 && s1 < 0 && s2 < 0 && s3 < 0)) continue;
+          }
+          f(cy * nx_ + cx);
+        }
+      }
+    };
+    for (const Edge& e : edges) for_cells(e, [&](int c) { ++count[static_cast<std::size_t>(c) + 1]; });
+    for (std::size_t i = 1; i < count.size(); ++i) count[i] += count[i - 1];
+    start_ = count;
+    items_.resize(static_cast<std::size_t>(count.back()));
+    for (std::size_t i = 0; i < edges.size(); ++i)
+      for_cells(edges[i], [&](int c) { items_[static_cast<std::size_t>(count[static_cast<std::size_t>(c)]++)] = static_cast<int>(i); });
+  }
+
+  template <class F>
+  void visit_box(double x0, double y0, double x1, double y1, F&& f) const {
+    const int cx0 = std::max(0, column(x0)), cx1 = std::min(nx_ - 1, column(x1));
+    const int cy0 = std::max(0, row(y0)), cy1 = std::min(ny_ - 1, row(y1));
+    for (int cy = cy0; cy <= cy1; ++cy)
+      for (int cx = cx0; cx <= cx1; ++cx) {
+        const int c = cy * nx_ + cx;
+        for (int k = start_[static_cast<std::size_t>(c)]; k < start_[static_cast<std::size_t>(c) + 1]; ++k) f(items_[static_cast<std::size_t>(k)]);
+      }
+  }
+
+  // Calls f(edge) for the edges registered in the cells around p, ring of cells by ring of cells
+  // outward, while keep_going(d) holds for d = the least distance from p to the next ring's cells
+  // (an edge in several cells is visited several times).
+  template <class F, class G>
+  void visit_nearest(const Point2& p, double reach, F&& f, G&& keep_going) const {
+    const int cx = column(p.x), cy = row(p.y);
+    const int rings = static_cast<int>(std::ceil(reach / cell_)) + 1;
+    for (int k = 0; k <= rings; ++k) {
+      if (k > 0 && !keep_going((k - 1) * cell_)) return;
+      for (int y = cy - k; y <= cy + k; ++y) {
+        if (y < 0 || y >= ny_) continue;
+        const bool edge_row = y == cy - k || y == cy + k;
+        for (int x = cx - k; x <= cx + k; x += edge_row ? 1 : 2 * k) {
+          if (x >= 0 && x < nx_) {
+            const int c = y * nx_ + x;
+            for (int i = start_[static_cast<std::size_t>(c)]; i < start_[static_cast<std::size_t>(c) + 1]; ++i) f(items_[static_cast<std::size_t>(i)]);
+          }
+          if (k == 0) break;
+        }
+      }
+    }
+  }
+
+  // Distance along the ray p + t·u (u unit) to the first edge it meets, t in (0, t_max]; infinity
+  // if none.
+  double cast(const Point2& p, const Point2& u, double t_max, int* hit_edge = nullptr) const {
+    int cx = column(p.x), cy = row(p.y);
+    const int step_x = u.x > 0 ? 1 : -1, step_y = u.y > 0 ? 1 : -1;
+    const double next_x = x0_ + (cx + (step_x > 0 ? 1 : 0)) * cell_;
+    const double next_y = y0_ + (cy + (step_y > 0 ? 1 : 0)) * cell_;
+    double t_x = u.x != 0.0 ? (next_x - p.x) / u.x : kInfinity;
+    double t_y = u.y != 0.0 ? (next_y - p.y) / u.y : kInfinity;
+    const double d_x = u.x != 0.0 ? cell_ / std::abs(u.x) : kInfinity;
+    const double d_y = u.y != 0.0 ? cell_ / std::abs(u.y) : kInfinity;
+    double best = kInfinity;
+    double entry = 0.0;
+    while (cx >= 0 && cy >= 0 && cx < nx_ && cy < ny_ && entry <= t_max) {
+      const int c = cy * nx_ + cx;
+      for (int k = start_[static_cast<std::size_t>(c)]; k < start_[static_cast<std::size_t>(c) + 1]; ++k) {
+        const Edge& e = edges_[static_cast<std::size_t>(items_[static_cast<std::size_t>(k)])];
+        const Point2 d = minus(e.b, e.a);
+        const double denominator = cross(u, d);
+        if (denominator == 0.0) continue;
+        const Point2 w = minus(e.a, p);
+        const double t = cross(w, d) / denominator;
+        const double s = cross(w, u) / denominator;
+        if (t > 1e-9 && s >= 0.0 && s <= 1.0 && t < best) {
+          best = t;
+          if (hit_edge) *hit_edge = items_[static_cast<std::size_t>(k)];
+        }
+      }
+      const double exit = std::min(t_x, t_y);
+      if (best <= exit) break;
+      entry = exit;
+      if (t_x < t_y) {
+        t_x += d_x;
+        cx += step_x;
+      } else {
+        t_y += d_y;
+        cy += step_y;
+      }
+    }
+    return best <= t_max ? best : kInfinity;
+  }
+
+ private:
+  int column(double x) const { return static_cast<int>(std::floor((x - x0_) / cell_)); }
+  int row(double y) const { return static_cast<int>(std::floor((y - y0_) / cell_)); }
+
+  const std::vector<Edge>& edges_;
+  double cell_;
+  double x0_, y0_;
+  int nx_ = 0, ny_ = 0;
+  std::vector<int> start_, items_;
+};
+
+struct Candidate {
+  Segment2 segment;
+  double width = 0.0;  // cells
+  int ring = 0;
+  CutRule rule = CutRule::kDoor;
+};
+
+// Widest chord parallel to u beside the segment's midpoint on the side of normal n, sampled up to
+// depth; capped at cap (enough to call the side wide).
+double side_width(const EdgeGrid& grid, const Point2& mid, const Point2& u, const Point2& n, double depth, double cap);
+
+// Proper crossing or touching of two segments other than at shared end points. Not the
+// decomposition's conflict test (candidates.cpp), on purpose: that one uses exact predicates on
+// polygon corners (shared ends by vertex id) and counts a segment running along another from a
+// shared end, or the same segment, as a conflict; this one is floating point on loose points and
+// lets segments with a shared end overlap (narrowest_compatible's distance test drops those).
+bool segments_conflict(const Segment2& s, const Segment2& t);
+
+// A door cut joins two points of one ring; around a small obstacle (furniture) the region it could
+// cut off lies within the obstacle's bounding box, too small to be a room.
+bool too_small_for_a_room(const Ring& hole, double resolution);
+
+// A piece of wall standing free in the map (a partition whose joint to the next wall the sensor
+// missed, a wall between two doors): longer than furniture but thin all along, unlike furniture
+// (solid or small) and clutter. 2 area / perimeter is the mean thickness of a thin shape.
+bool is_wall_island(const Ring& hole, double resolution, const DoorOptions& options);
+
+// What every phase of the door search reads: the polygon's rings, their edges, and the option
+// lengths in cells.
+struct DoorSearch {
+  const DoorOptions& options;
+  double resolution = 1.0;
+  std::vector<const Ring*> rings;
+  std::vector<Edge> edges;
+  double reach = 0.0;  // widest door, cells
+  double depth = 0.0;  // how far beside a cut the sides are measured, cells
+  // Per ring, for the island search only: may a cut join it to another such ring (the outline, and
+  // islands of wall).
+  std::vector<bool> joinable;
+};
+
+DoorSearch door_search(const PolygonWithHoles& polygon, double resolution, const DoorOptions& options,
+                       std::vector<bool> joinable);
+
+// Calls visit(r, i, p, v, q) for every reflex corner v (vertex i of ring r, between p and q) that
+// turns by at least min_turn, skipping holes for which skip_hole(r, hole) is true.
+template <typename SkipHole, typename Visit>
+void for_each_reflex_corner(const DoorSearch& search, SkipHole&& skip_hole, Visit&& visit) {
+  for (std::size_t r = 0; r < search.rings.size(); ++r) {
+    const Ring& ring = *search.rings[r];
+    if (r > 0 && skip_hole(r, ring)) continue;
+    const int n = static_cast<int>(ring.size());
+    for (int i = 0; i < n; ++i) {
+      const Point2& p = ring[static_cast<std::size_t>((i + n - 1) % n)];
+      const Point2& v = ring[static_cast<std::size_t>(i)];
+      const Point2& q = ring[static_cast<std::size_t>((i + 1) % n)];
+      // Free space lies left of every ring (outer CCW, holes CW): a right turn is a reflex corner.
+      if (turn_angle(p, v, q) > -search.options.min_turn) continue;
+      visit(static_cast<int>(r), i, p, v, q);
+    }
+  }
+}
+
+// Door candidates: from every reflex corner, the shortest cut across it, to its own ring or (across)
+// to another joinable one.
+std::vector<Candidate> corner_cuts(const DoorSearch& search, const EdgeGrid& grid, bool across);
+
+// Door test: both sides much wider than the passage.
+bool has_wide_sides(const DoorSearch& search, const EdgeGrid& grid, const Candidate& c);
+
+// Narrowest first; a door found from both of its jambs (or from two corners of one wall end) is
+// kept once; crossing cuts are not allowed.
+std::vector<Candidate> narrowest_compatible(std::vector<Candidate> doors, double resolution);
+
+// The segments of candidates, in order.
+std::vector<Segment2> segments_of(const std::vector<Candidate>& candidates);
+
+// Validates the options and the resolution, then returns find(search, grid) over the polygon's
+// edges (joinable: DoorSearch::joinable), or nothing when the search is off or the polygon has no
+// edge.
+template <typename Find>
+auto search_cuts(const PolygonWithHoles& polygon, double resolution, const DoorOptions& options, bool on,
+                 std::vector<bool> joinable, Find&& find) -> decltype(find(std::declval<const DoorSearch&>(), std::declval<const EdgeGrid&>())) {
+  validate(options);
+  if (!std::isfinite(resolution) || resolution <= 0.0) throw Error("the map resolution must be a positive number");
+  if (!on) return {};
+  const DoorSearch search = door_search(polygon, resolution, options, std::move(joinable));
+  if (search.edges.empty()) return {};
+  const EdgeGrid grid(search.edges, std::max(4.0, search.reach / 4.0));
+  return find(search, grid);
+}
+
+// The doors as candidates that go first and stay: narrowest_compatible keeps later cuts off them.
+std::vector<Candidate> doors_first(const std::vector<Segment2>& doors);
+
+// cuts without the doors (which went first only to keep the other cuts clear of them).
+std::vector<Segment2> without_doors(std::vector<Segment2> cuts, const std::vector<Segment2>& doors);
+
+}  // namespace topocut::cut_search

@@ -1,0 +1,95 @@
+#include "topocut/segmentation/segmentation_rules.h"
+
+#include "topocut/segmentation/door_cuts.h"
+#include "topocut/segmentation/island_cuts.h"
+#include "topocut/segmentation/wall_lines.h"
+#include "topocut/segmentation/wall_openings.h"
+
+namespace topocut {
+
+namespace {
+
+SegmentationRule stage_rule(std::string name, RuleStage stage, std::string help, std::function<bool(const SegmentOptions&)> is_on,
+                            std::function<void(SegmentOptions&)> turn_off) {
+  SegmentationRule rule;
+  rule.name = std::move(name);
+  rule.stage = stage;
+  rule.help = std::move(help);
+  rule.is_on = std::move(is_on);
+  rule.turn_off = std::move(turn_off);
+  return rule;
+}
+
+SegmentationRule cut_rule(SegmentationRule rule, CutRule kind, decltype(SegmentationRule::find_cuts) find, bool may_fail) {
+  rule.cut_rule = kind;
+  rule.find_cuts = std::move(find);
+  rule.may_fail = may_fail;
+  return rule;
+}
+
+std::vector<SegmentationRule> make_rules() {
+  return {
+      stage_rule("clean", RuleStage::kClean,
+                 "decompose the free space as it is: keep laser-ray fans, slivers, free and obstacle specks",
+                 [](const SegmentOptions& o) { return o.clean; }, [](SegmentOptions& o) { o.clean = false; }),
+      stage_rule("simplify", RuleStage::kCut, "decompose the exact pixel-edge polygons (slower)",
+                 [](const SegmentOptions& o) { return o.simplify > 0.0; }, [](SegmentOptions& o) { o.simplify = 0.0; }),
+      cut_rule(stage_rule("doors", RuleStage::kCut, "no cuts across narrow passages (doors) before the decomposition",
+                          [](const SegmentOptions& o) { return o.doors.enabled; }, [](SegmentOptions& o) { o.doors.enabled = false; }),
+               CutRule::kDoor,
+               [](const PolygonWithHoles& p, double res, const DoorOptions& d, const std::vector<Segment2>&) {
+                 return find_passage_cuts(p, res, d);
+               },
+               false),
+      cut_rule(stage_rule("wall-openings", RuleStage::kCut,
+                          "no cuts where a thin wall stops short of the next obstacle (a room front open to a corridor)",
+                          [](const SegmentOptions& o) { return o.doors.extend_walls; },
+                          [](SegmentOptions& o) { o.doors.extend_walls = false; }),
+               CutRule::kWallOpening, find_wall_openings, false),
+      cut_rule(stage_rule("island-cuts", RuleStage::kCut,
+                          "no door-like cuts from the outline to a free-standing piece of wall (longer than 2.5 m, at most "
+                          "0.25 m thick: a partition whose joint the sensor missed), which separate rooms only together",
+                          [](const SegmentOptions& o) { return o.doors.island_cuts; },
+                          [](SegmentOptions& o) { o.doors.island_cuts = false; }),
+               CutRule::kIslandCut, find_island_cuts, true),
+      cut_rule(stage_rule("wall-lines", RuleStage::kCut,
+                          "no cuts where a straight wall continued across free space meets the next wall (room boundaries "
+                          "across wide openings)",
+                          [](const SegmentOptions& o) { return o.doors.wall_lines; },
+                          [](SegmentOptions& o) { o.doors.wall_lines = false; }),
+               CutRule::kWallLine, find_wall_line_cuts, true),
+      stage_rule("merge", RuleStage::kMerge, "keep DuDe's pieces as rooms instead of merging them",
+                 [](const SegmentOptions& o) { return o.merge.enabled; }, [](SegmentOptions& o) { o.merge.enabled = false; }),
+      stage_rule("furniture-rule", RuleStage::kMerge,
+                 "cuts that end on furniture-sized obstacles (at most 2.5 m a side) may separate rooms",
+                 [](const SegmentOptions& o) { return o.merge.furniture_size > 0.0; },
+                 [](SegmentOptions& o) { o.merge.furniture_size = 0.0; }),
+      stage_rule("width-steps", RuleStage::kMerge,
+                 "(hand rules) merge a room into a much wider space it opens onto across its whole width",
+                 [](const SegmentOptions& o) { return o.merge.step_ratio > 0.0; },
+                 [](SegmentOptions& o) { o.merge.step_ratio = 0.0; }),
+  };
+}
+
+}  // namespace
+
+const std::vector<SegmentationRule>& segmentation_rules() {
+  static const std::vector<SegmentationRule> rules = make_rules();
+  return rules;
+}
+
+const SegmentationRule* find_segmentation_rule(const std::string& name) {
+  for (const SegmentationRule& rule : segmentation_rules())
+    if (rule.name == name) return &rule;
+  return nullptr;
+}
+
+std::vector<std::string> rules_off(const SegmentOptions& options) {
+  const SegmentOptions defaults;
+  std::vector<std::string> off;
+  for (const SegmentationRule& rule : segmentation_rules())
+    if (rule.is_on(defaults) && !rule.is_on(options)) off.push_back(rule.name);
+  return off;
+}
+
+}  // namespace topocut
