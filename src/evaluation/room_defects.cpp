@@ -14,31 +14,13 @@
 #include "topocut/core/format.h"
 #include "topocut/evaluation/dataset_report.h"
 #include "topocut/io/image_input.h"
+#include "topocut/map/room_outline.h"
 
 namespace topocut {
 
 namespace fs = std::filesystem;
 
 namespace {
-
-struct RoomExtent {
-  cv::Rect box;
-  long long cells = 0;
-};
-
-std::map<int, RoomExtent> room_extents(const cv::Mat& labels) {
-  std::map<int, RoomExtent> rooms;
-  for (int r = 0; r < labels.rows; ++r) {
-    const int* row = labels.ptr<int>(r);
-    for (int c = 0; c < labels.cols; ++c) {
-      if (row[c] <= 0) continue;
-      RoomExtent& room = rooms[row[c]];
-      room.box = room.cells == 0 ? cv::Rect(c, r, 1, 1) : (room.box | cv::Rect(c, r, 1, 1));
-      ++room.cells;
-    }
-  }
-  return rooms;
-}
 
 // Cells of the room that survive an opening with the disc, computed in a window around the room.
 long long opened_cells(const cv::Mat& labels, int id, const cv::Rect& box, const cv::Mat& disc) {
@@ -48,49 +30,6 @@ long long opened_cells(const cv::Mat& labels, int id, const cv::Rect& box, const
   cv::Mat room = labels(window) == id, opened;
   cv::morphologyEx(room, opened, cv::MORPH_OPEN, disc, cv::Point(-1, -1), 1, cv::BORDER_CONSTANT, cv::Scalar(0));
   return cv::countNonZero(opened);
-}
-
-struct Outline {
-  long long unknown = 0;  // edges to never-seen cells or off the grid
-  long long wall = 0;     // edges to occupied cells, or to unknown cells near them
-};
-
-// Cells that count as wall for an outline: occupied, or unknown within reach cells of an occupied cell.
-cv::Mat wall_cells(const cv::Mat& cells, double reach) {
-  cv::Mat distance;  // to the nearest occupied cell
-  cv::distanceTransform(cells != kOccupied, distance, cv::DIST_L2, cv::DIST_MASK_PRECISE);
-  return distance <= reach;
-}
-
-// The outline of a room against walls and never-seen space: the 4-neighbour edges between the room
-// with its holes filled (cells it encloses are inside it, whatever they are) and the cells around it.
-Outline outline_of(const cv::Mat& ids, int id, const cv::Rect& box, const cv::Mat& cells, const cv::Mat& walls) {
-  const cv::Rect window = cv::Rect(box.x - 1, box.y - 1, box.width + 2, box.height + 2);
-  cv::Mat outside(window.size(), CV_8UC1, cv::Scalar(255));  // 255 outside the room, 0 in it
-  const cv::Rect inner = window & cv::Rect(0, 0, ids.cols, ids.rows);
-  outside(inner - window.tl()).setTo(0, ids(inner) == id);
-  // The window's frame lies outside the room: what the fill from its corner does not reach is enclosed.
-  cv::floodFill(outside, cv::Point(0, 0), cv::Scalar(128), nullptr, cv::Scalar(0), cv::Scalar(0), 4);
-  Outline outline;
-  const auto edge = [&](int wr, int wc) {
-    if (outside.at<unsigned char>(wr, wc) != 128) return;  // inside the filled room
-    const int r = window.y + wr, c = window.x + wc;
-    if (r < 0 || c < 0 || r >= ids.rows || c >= ids.cols) {
-      ++outline.unknown;
-    } else if (ids.at<int>(r, c) == 0 && cells.at<unsigned char>(r, c) != kFree) {
-      ++(walls.at<unsigned char>(r, c) ? outline.wall : outline.unknown);
-    }
-  };
-  for (int wr = 1; wr + 1 < window.height; ++wr) {
-    for (int wc = 1; wc + 1 < window.width; ++wc) {
-      if (outside.at<unsigned char>(wr, wc) == 128) continue;
-      edge(wr - 1, wc);
-      edge(wr + 1, wc);
-      edge(wr, wc - 1);
-      edge(wr, wc + 1);
-    }
-  }
-  return outline;
 }
 
 std::string lower(std::string s) {
@@ -117,7 +56,8 @@ MapDefectResult run_one(const MapFile& map, const MapFolderOptions& options) {
     result.time_ms = elapsed_ms(start);
     result.width = grid.width();
     result.height = grid.height();
-    result.defects = count_room_defects(segmentation.labels, grid, options.defects);
+    // The free space the rooms were made of, outside the timing.
+    result.defects = count_room_defects(segmentation.labels, grid, options.defects, segmentation_input(grid, options.segment).floor);
     if (options.floor_repetitions > 0)
       result.floor_ms = contour_floor_ms(map.path, options.load.free_min, options.floor_repetitions);
     result.ok = true;
@@ -129,7 +69,8 @@ MapDefectResult run_one(const MapFile& map, const MapFolderOptions& options) {
 
 }  // namespace
 
-RoomDefects count_room_defects(const cv::Mat& labels, const OccupancyGrid& grid, const DefectOptions& options) {
+RoomDefects count_room_defects(const cv::Mat& labels, const OccupancyGrid& grid, const DefectOptions& options,
+                               const cv::Mat& floor) {
   if (labels.empty() || labels.channels() != 1) throw Error("the label image must be a non-empty single-channel image");
   const double resolution = grid.resolution;
   if (!std::isfinite(resolution) || resolution <= 0.0) throw Error("the resolution must be a positive number of metres");
@@ -146,7 +87,16 @@ RoomDefects count_room_defects(const cv::Mat& labels, const OccupancyGrid& grid,
   defects.open_judged = cv::countNonZero(grid.cells == kOccupied) > 0;
   // The tolerance keeps 0.15 m at 0.05 m per cell three cells, as it reads, despite rounding.
   const cv::Mat walls =
-      defects.open_judged ? wall_cells(grid.cells, options.open_wall_reach / resolution + 1e-9) : cv::Mat();
+      defects.open_judged ? wall_cells(grid.cells, options.open.wall_reach / resolution + 1e-9) : cv::Mat();
+  // With the floor given, a room's outline is that of its floor, as the open-rooms rule sees it (the
+  // rays the cleaning removed and gave to a room reach past its own walls).
+  cv::Mat on_floor = ids;
+  if (!floor.empty()) {
+    if (floor.size() != ids.size()) throw Error("the floor and the label image differ in size");
+    on_floor = cv::Mat(ids.size(), CV_32SC1, cv::Scalar(0));  // a new image: assigning zeros() would clear ids
+    ids.copyTo(on_floor, floor);
+  }
+  const int band = static_cast<int>(std::lround(options.open.wall_band / resolution));
   for (const auto& [id, room] : room_extents(ids)) {
     ++defects.rooms;
     const double area = static_cast<double>(room.cells) * cell_area;
@@ -154,9 +104,8 @@ RoomDefects count_room_defects(const cv::Mat& labels, const OccupancyGrid& grid,
     const bool thin = area >= options.thin_min_area && static_cast<double>(opened_cells(ids, id, room.box, disc)) <
                                                            options.thin_share * static_cast<double>(room.cells);
     bool open = false;
-    if (defects.open_judged && area >= options.open_min_area) {
-      const Outline edges = outline_of(ids, id, room.box, grid.cells, walls);
-      open = static_cast<double>(edges.unknown) > options.open_share * static_cast<double>(edges.unknown + edges.wall);
+    if (defects.open_judged && area >= options.open.min_area) {
+      open = room_outline(on_floor, id, room.box, grid.cells, walls, band).open(options.open.share, options.open.ragged_share);
     }
     defects.specks += speck;
     defects.thin += thin;

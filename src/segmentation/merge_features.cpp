@@ -38,6 +38,7 @@ const std::vector<std::string>& merge_feature_names() {
       "log_union_elongation",         // log of the union's elongation
       "ends_on_holes",                // ends of the cut on an obstacle inside the free space (0, 1 or 2)
       "log_hole_extent",              // log(1 + the largest such obstacle's bounding-box side, m)
+      "hand_rule_merge",              // the hand rules would merge across the cut (door ratio, width step, furniture)
   };
   return names;
 }
@@ -58,7 +59,8 @@ double solidity(double area, double hull) { return hull > 0.0 ? std::min(area / 
 
 }  // namespace
 
-std::vector<double> merge_features(RoomGraph& graph, std::size_t k, double width_depth) {
+std::vector<double> merge_features(RoomGraph& graph, std::size_t k, const RoomMergeOptions& options) {
+  const double width_depth = options.width_depth;
   const RoomGraph::Side& side = graph.sides()[k];
   const int left = graph.root(side.left), right = graph.root(side.right);
   const double width_left = std::max(graph.side_width(k, left, true, width_depth), kMinLength);
@@ -105,6 +107,7 @@ std::vector<double> merge_features(RoomGraph& graph, std::size_t k, double width
       std::log(std::min(graph.elongation({narrow, wide}), 100.0)),
       static_cast<double>(std::min(side.ends_on_holes, 2)),
       std::log1p(side.hole_extent),
+      !is_door_rule(side.rule) && hand_rule_score(graph, k, options) >= options.door_ratio ? 1.0 : 0.0,
   };
 }
 

@@ -8,6 +8,7 @@
 
 #include "topocut/core/cut_rule.h"
 #include "topocut/core/geometry.h"
+#include "topocut/segmentation/room_merging.h"
 #include "topocut/segmentation/rooms_from_pieces.h"
 
 namespace topocut {
@@ -90,8 +91,11 @@ class RoomGraph {
 
 namespace topocut {
 
-// The features (merge_features.h) of merging the two rooms on the sides of cut k of graph, the sides'
-// widths sampled within width_depth metres of the cut.
-std::vector<double> merge_features(RoomGraph& graph, std::size_t k, double width_depth);
+// The hand rules' score of cut k (RoomMergeOptions::learned false): its length over the narrower
+// side's width (door_ratio or more: no door), 0 for a width step, infinite for a cut ending on furniture.
+double hand_rule_score(RoomGraph& graph, std::size_t k, const RoomMergeOptions& options);
+
+// The features (merge_features.h) of merging the two rooms on the sides of cut k of graph.
+std::vector<double> merge_features(RoomGraph& graph, std::size_t k, const RoomMergeOptions& options);
 
 }  // namespace topocut

@@ -32,70 +32,53 @@ void invalidate_around(RoomGraph& g, int r, std::vector<bool>& fresh) {
 }
 
 // The hand rules (RoomMergeOptions::learned false): a cut that spans the narrower side is no door.
-class RuleMerger {
- public:
-  RuleMerger(RoomGraph& graph, const RoomMergeOptions& options) : g_(graph), options_(options) {}
+}  // namespace
 
-  void merge_non_doors() {
-    // Greedy: the most clearly non-door-like cut first, then the scores next to the merged room
-    // change (the merged room is wider or longer than its parts), so they are measured again.
-    const std::size_t n = g_.sides().size();
-    std::vector<double> score(n, 0.0);
-    std::vector<bool> fresh(n, false);
-    while (true) {
-      int best = -1;
-      double best_score = 0.0;
-      for (std::size_t k = 0; k < n; ++k) {
-        if (!g_.separates(k) || is_door_rule(g_.sides()[k].rule)) continue;
-        if (!fresh[k]) {
-          score[k] = door_score(k);
-          fresh[k] = true;
-        }
-        if (score[k] >= options_.door_ratio && (best < 0 || score[k] > best_score)) {
-          best = static_cast<int>(k);
-          best_score = score[k];
-        }
+double hand_rule_score(RoomGraph& g, std::size_t k, const RoomMergeOptions& options) {
+  const RoomGraph::Side& s = g.sides()[k];
+  if (s.furniture) return std::numeric_limits<double>::infinity();
+  const int left = g.root(s.left), right = g.root(s.right);
+  const double wl = g.side_width(k, left, true, options.width_depth), wr = g.side_width(k, right, false, options.width_depth);
+  const double narrow = std::min(wl, wr);
+  if (narrow <= 0.0) return std::numeric_limits<double>::infinity();
+  // A room that opens onto a much wider, deep space (step_ratio) stays a room of its own. Across a
+  // wall line (the narrow room's wall drawn on) the wider side need only reach deeper than the narrow
+  // room is wide (step_wall_line_depth times): an L-shaped corridor's corner is as deep as the
+  // corridor is wide, so it still merges.
+  if (options.step_ratio > 0.0 && narrow < options.step_ratio * std::max(wl, wr) &&
+      std::min(g.room_area(left), g.room_area(right)) >= options.step_min_area) {
+    const bool left_narrow = wl <= wr;
+    const double depth = g.side_depth(k, left_narrow ? right : left, !left_narrow);
+    if (depth >= (s.rule == CutRule::kWallLine ? options.step_wall_line_depth * narrow : options.step_min_wide_depth)) return 0.0;
+  }
+  return s.length / narrow;
+}
+
+namespace {
+
+// The hand rules (RoomMergeOptions::learned false): the most clearly non-door-like cut first, then the
+// scores next to the merged room change (the merged room is wider or longer than its parts), so they
+// are measured again.
+void merge_by_hand_rules(RoomGraph& g, const RoomMergeOptions& options) {
+  const std::size_t n = g.sides().size();
+  std::vector<double> score(n, 0.0);
+  std::vector<bool> fresh(n, false);
+  while (true) {
+    int best = -1;
+    for (std::size_t k = 0; k < n; ++k) {
+      if (!g.separates(k) || is_door_rule(g.sides()[k].rule)) continue;
+      if (!fresh[k]) {
+        score[k] = hand_rule_score(g, k, options);
+        fresh[k] = true;
       }
-      if (best < 0) return;
-      const RoomGraph::Side& chosen = g_.sides()[static_cast<std::size_t>(best)];
-      g_.unite(chosen.left, chosen.right);
-      invalidate_around(g_, g_.root(chosen.left), fresh);
+      if (score[k] >= options.door_ratio && (best < 0 || score[k] > score[static_cast<std::size_t>(best)])) best = static_cast<int>(k);
     }
+    if (best < 0) return;
+    const RoomGraph::Side& chosen = g.sides()[static_cast<std::size_t>(best)];
+    g.unite(chosen.left, chosen.right);
+    invalidate_around(g, g.root(chosen.left), fresh);
   }
-
- private:
-  // A room that opens onto a much wider, deep space (RoomMergeOptions::step_ratio): kept apart.
-  bool is_width_step(std::size_t k, double width_left, double width_right) {
-    if (options_.step_ratio <= 0.0) return false;
-    const RoomGraph::Side& s = g_.sides()[k];
-    const bool left_narrow = width_left <= width_right;
-    const int wide_room = g_.root(left_narrow ? s.right : s.left);
-    // A wall line is the narrow room's wall drawn on: the wider side need only reach deeper than
-    // the narrow room is wide (step_wall_line_depth times), not step_min_wide_depth; an L-shaped
-    // corridor's corner is as deep as the corridor is wide, so it still merges.
-    const bool wall_line = s.rule == CutRule::kWallLine;
-    return std::min(width_left, width_right) < options_.step_ratio * std::max(width_left, width_right) &&
-           std::min(g_.room_area(g_.root(s.left)), g_.room_area(g_.root(s.right))) >= options_.step_min_area &&
-           g_.side_depth(k, wide_room, !left_narrow) >= (wall_line ? options_.step_wall_line_depth * std::min(width_left, width_right)
-                                                                   : options_.step_min_wide_depth);
-  }
-
-  // Cut length over the width of the narrower side: >= door_ratio means "not a door"; infinite for a
-  // cut that ends on furniture, 0 for a width step.
-  double door_score(std::size_t k) {
-    const RoomGraph::Side& s = g_.sides()[k];
-    if (s.furniture) return std::numeric_limits<double>::infinity();
-    const double wl = g_.side_width(k, g_.root(s.left), true, options_.width_depth);
-    const double wr = g_.side_width(k, g_.root(s.right), false, options_.width_depth);
-    const double narrow = std::min(wl, wr);
-    if (narrow <= 0.0) return std::numeric_limits<double>::infinity();
-    if (is_width_step(k, wl, wr)) return 0.0;
-    return s.length / narrow;
-  }
-
-  RoomGraph& g_;
-  const RoomMergeOptions& options_;
-};
+}
 
 // The learned criterion: the most probable merge first while its probability is above the model's
 // threshold; the probabilities next to a grown room are computed again.
@@ -108,8 +91,9 @@ void merge_learned(RoomGraph& g, const RoomMergeOptions& options, std::vector<Me
     for (std::size_t k = 0; k < n; ++k) {
       if (!g.separates(k)) continue;
       if (!fresh[k]) {
-        const std::vector<double> features = merge_features(g, k, options.width_depth);
-        probability[k] = merge_probability(options.model, features);
+        const std::vector<double> features = merge_features(g, k, options);
+        // The furniture rule holds whatever the model says: a room does not end at a table.
+        probability[k] = g.sides()[k].furniture ? 1.0 : merge_probability(options.model, features);
         fresh[k] = true;
         if (trace) {
           const RoomGraph::Side& s = g.sides()[k];
@@ -284,7 +268,7 @@ PieceSet merge_rooms(const FreeSpaceComponent& component, const PieceSet& pieces
   if (options.learned) {
     merge_learned(graph, options, trace);
   } else {
-    RuleMerger(graph, options).merge_non_doors();
+    merge_by_hand_rules(graph, options);
   }
   fold_small_rooms(graph, options);
   return graph.result();

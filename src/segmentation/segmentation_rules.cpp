@@ -68,6 +68,10 @@ std::vector<SegmentationRule> make_rules() {
                  "(hand rules) merge a room into a much wider space it opens onto across its whole width",
                  [](const SegmentOptions& o) { return o.merge.step_ratio > 0.0; },
                  [](SegmentOptions& o) { o.merge.step_ratio = 0.0; }),
+      stage_rule("open-rooms", RuleStage::kMerge,
+                 "keep rooms whose outline runs mostly into never-seen space (ray fans, scraps beyond the walls) as rooms",
+                 [](const SegmentOptions& o) { return o.open_rooms.enabled; },
+                 [](SegmentOptions& o) { o.open_rooms.enabled = false; }),
   };
 }
 

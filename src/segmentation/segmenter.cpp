@@ -33,6 +33,7 @@ void validate(const SegmentOptions& options) {
   if (!std::isfinite(options.simplify) || options.simplify < 0.0)
     throw Error("the simplification tolerance must be a non-negative number of cells");
   validate(options.cleaning);
+  validate(options.open_rooms);
 }
 
 namespace {
@@ -182,6 +183,7 @@ Segmentation segment_whole(const OccupancyGrid& grid, const SegmentOptions& opti
   PieceSet pieces;
   for (const FreeSpaceComponent& component : polygons.components)
     pieces.append(decompose_component(component, grid.resolution, options));
+  pieces = join_open_rooms(pieces, input.labelled, options.open_rooms);
   Segmentation segmentation = rooms_from_pieces(input.labelled, pieces, options.labels);
   for (Passage& passage : segmentation.passages) passage.door = is_door(passage, options.doors);
   return segmentation;

@@ -74,17 +74,57 @@ struct OpenRoomCase {
   void wall_bottom() { wall({10, 50, 40, 1}); }
   void wall_left() { wall({9, 10, 1, 40}); }
   void wall_right() { wall({50, 10, 1, 40}); }
+  // Laser rays ending at different lengths: every other cell of the side named sticks out one cell.
+  void ragged(bool top, bool bottom, bool right) {
+    for (int k = 0; k < 40; k += 2) {
+      if (top) free_room_cell(10 + k, 9);
+      if (bottom) free_room_cell(10 + k, 50);
+      if (right) free_room_cell(50, 10 + k);
+    }
+  }
+  void free_room_cell(int c, int r) {
+    labels.at<int>(r, c) = 1;
+    grid.cells.at<unsigned char>(r, c) = kFree;
+  }
   RoomDefects count() const { return topocut::count_room_defects(labels, grid); }
+  // The share rule alone: straight never-seen sides count too.
+  RoomDefects count_any_outline() const {
+    DefectOptions options;
+    options.open.ragged_share = 0.0;
+    return topocut::count_room_defects(labels, grid, options);
+  }
 };
 
-TEST(RoomDefects, ARoomBoundedByUnknownOnThreeSidesIsOpen) {
+TEST(RoomDefects, ARoomBoundedByRaggedUnknownOnThreeSidesIsOpen) {
   OpenRoomCase c;
-  c.wall_left();  // 40 wall edges, 120 unknown
+  c.wall_left();  // 40 wall edges, 120 straight unknown ones: a wall drawn in the unknown grey
+  EXPECT_EQ(c.count().open, 0);
+  EXPECT_EQ(c.count_any_outline().open, 1);
+  c.ragged(true, true, true);  // 160 unknown edges, of which all but the straight ones turn
   const RoomDefects d = c.count();
   EXPECT_EQ(d.rooms, 1);
   EXPECT_EQ(d.open, 1);
   EXPECT_EQ(d.thin, 0);
   EXPECT_EQ(d.flagged, 1);
+}
+
+TEST(RoomDefects, ABandOfUnknownBetweenTwoRoomsIsAWall) {
+  // Two rooms side by side, 4 never-seen cells (0.2 m) apart, walled elsewhere: the band is a wall
+  // drawn in grey; 12 cells (0.6 m, more than the 0.5 m band) apart it is never-seen space.
+  for (const int gap : {4, 12}) {
+    cv::Mat labels = cv::Mat::zeros(60, 100, CV_32SC1);
+    OccupancyGrid grid = grid_like(labels, 0.05, kOccupied);
+    const cv::Rect left(5, 5, 40, 50), right(45 + gap, 5, 40, 50);
+    labels(left).setTo(1);
+    labels(right).setTo(2);
+    grid.cells(left).setTo(kFree);
+    grid.cells(right).setTo(kFree);
+    grid.cells(cv::Rect(45, 5, gap, 50)).setTo(kUnknown);
+    DefectOptions straight;
+    straight.open.ragged_share = 0.0;
+    straight.open.share = 0.2;  // one side of four against never-seen space is open here
+    EXPECT_EQ(topocut::count_room_defects(labels, grid, straight).open, gap == 4 ? 0 : 2) << gap;
+  }
 }
 
 TEST(RoomDefects, AWalledRoomWithOneDoorIsNotOpen) {
@@ -106,9 +146,10 @@ TEST(RoomDefects, AWalledRoomWithOneDoorIsNotOpen) {
 
 TEST(RoomDefects, OpenNeedsMoreThanHalfOfTheOutlineUnknown) {
   DefectOptions exact;
-  exact.open_wall_reach = 0.0;  // only occupied cells are wall here
+  exact.open.wall_reach = 0.0;  // only occupied cells are wall here
   OpenRoomCase c;
   c.wall_top();
+  exact.open.ragged_share = 0.0;
   c.wall_left();  // 80 wall edges, 80 unknown: not more than half
   EXPECT_EQ(topocut::count_room_defects(c.labels, c.grid, exact).open, 0);
   c.grid.cells(cv::Rect(9, 10, 1, 1)).setTo(kUnknown);  // 79 wall edges, 81 unknown
@@ -121,13 +162,19 @@ TEST(RoomDefects, NeverSeenCellsAlongAWallCountAsWall) {
   c.wall({10, 6, 40, 1});
   c.wall({6, 10, 1, 40});
   c.wall({10, 53, 40, 1});
-  EXPECT_EQ(c.count().open, 0);
-  // Behind three never-seen cells (0.2 m) they are too far: the rim is never-seen space.
+  EXPECT_EQ(c.count_any_outline().open, 0);
+  // Behind 9 never-seen cells (0.45 m) they are beyond the rim: with walls drawn at most 0.25 m thick
+  // (the look-ahead then meets the rim 0.4 m on), that is never-seen space.
   OpenRoomCase far;
-  far.wall({10, 5, 40, 1});
-  far.wall({5, 10, 1, 40});
-  far.wall({10, 54, 40, 1});
-  EXPECT_EQ(far.count().open, 1);
+  far.wall({10, 0, 40, 1});
+  far.wall({0, 10, 1, 40});
+  far.wall({10, 59, 40, 1});
+  DefectOptions thin_walls;
+  thin_walls.open.ragged_share = 0.0;
+  thin_walls.open.wall_band = 0.25;
+  EXPECT_EQ(topocut::count_room_defects(far.labels, far.grid, thin_walls).open, 1);
+  thin_walls.open.wall_band = 0.5;  // the default: 9 cells of grey can be a drawn wall
+  EXPECT_EQ(topocut::count_room_defects(far.labels, far.grid, thin_walls).open, 0);
 }
 
 TEST(RoomDefects, HolesInsideARoomAreNotItsOutline) {
@@ -150,11 +197,13 @@ TEST(RoomDefects, TheGridEdgeIsNeverSeenSpaceAndSmallRoomsAreNotOpen) {
   labels(cv::Rect(0, 0, 40, 40)).setTo(1);  // touches the grid's edge on three sides ...
   OccupancyGrid grid = grid_like(labels, 0.05);
   grid.cells(cv::Rect(0, 40, 40, 1)).setTo(kOccupied);  // ... and a wall on the fourth
-  EXPECT_EQ(topocut::count_room_defects(labels, grid).open, 1);
+  DefectOptions straight;
+  straight.open.ragged_share = 0.0;
+  EXPECT_EQ(topocut::count_room_defects(labels, grid, straight).open, 1);
   // Below open_min_area (19 x 19 cells = 0.9 m²) a room is not called open.
   labels.setTo(0);
   labels(cv::Rect(0, 0, 19, 19)).setTo(1);
-  EXPECT_EQ(topocut::count_room_defects(labels, grid).open, 0);
+  EXPECT_EQ(topocut::count_room_defects(labels, grid, straight).open, 0);
 }
 
 TEST(RoomDefects, WithoutAnyOccupiedCellOpenRoomsAreNotJudged) {
@@ -176,7 +225,9 @@ TEST(RoomDefects, AThinOpenRoomIsFlaggedOnce) {
   labels(cv::Rect(5, 10, 100, 4)).setTo(1);  // 0.2 m x 5 m: thin
   OccupancyGrid grid = grid_like(labels, 0.05, kUnknown);
   grid.cells.at<unsigned char>(29, 119) = kOccupied;  // a wall far away: open rooms are judged
-  const RoomDefects d = topocut::count_room_defects(labels, grid);
+  DefectOptions straight;
+  straight.open.ragged_share = 0.0;
+  const RoomDefects d = topocut::count_room_defects(labels, grid, straight);
   EXPECT_EQ(d.thin, 1);
   EXPECT_EQ(d.open, 1);
   EXPECT_EQ(d.flagged, 1);

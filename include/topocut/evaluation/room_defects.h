@@ -23,15 +23,9 @@ struct DefectOptions {
   double thin_share = 0.5;      // a room is thin when less than this share survives the opening
   double speck_min_area = 0.1;  // m²
   double speck_max_area = 1.0;  // m² (exclusive)
-  // Open rooms. Smaller rooms are specks already. A room is open when more than open_share of its
-  // outline against walls or never-seen space runs into never-seen space: a person draws a room
-  // between walls, so a region bounded mostly by unknown cells is what the robot glimpsed, not a room.
-  // SLAM maps leave a rim of never-seen cells between the free space and the wall line, so unknown
-  // cells within open_wall_reach of an occupied cell count as wall (without it, every room of the raw
-  // intel map was open).
-  double open_min_area = 1.0;     // m²
-  double open_share = 0.5;
-  double open_wall_reach = 0.15;  // m
+  // Open rooms, by the same rule that joins them in segmentation (open_rooms.h); its enabled flag is not
+  // read here.
+  OpenRoomOptions open;
 };
 
 struct RoomDefects {
@@ -50,7 +44,9 @@ struct RoomDefects {
 // occupied cell, or to an unknown cell within open_wall_reach of one, counts as wall; to another
 // unknown cell or off the grid as unknown; to another room or a free unlabelled cell as neither.
 // Throws Error on a bad image, a size mismatch or a bad resolution.
-RoomDefects count_room_defects(const cv::Mat& labels, const OccupancyGrid& grid, const DefectOptions& options = {});
+// floor, if given, is the free space the rooms were made of (SegmentationInput::floor; room_outline()).
+RoomDefects count_room_defects(const cv::Mat& labels, const OccupancyGrid& grid, const DefectOptions& options = {},
+                               const cv::Mat& floor = cv::Mat());
 
 // A map of a folder without ground truth.
 struct MapFile {

@@ -5,18 +5,18 @@
 // ablation benchmark (each rule off in turn). Each rule is its own file with its own test; adding one
 // means its file, its test and a row here.
 //
-//   clean           map/free_space_cleaning.h   ray fans, slivers and specks out of the free space
-//   open-rooms      map/open_rooms.h            free space bounded mostly by never-seen cells
-//   simplify        map/simplify.h              stair steps of the outline
-//   doors           segmentation/door_cuts.h    narrow passages
+//   clean           map/free_space_cleaning.h     ray fans, slivers and specks out of the free space
+//   simplify        map/simplify.h                stair steps of the outline
+//   doors           segmentation/door_cuts.h      cuts across narrow passages
 //   wall-openings   segmentation/wall_openings.h  thin walls continued to the next obstacle
-//   island-cuts     segmentation/island_cuts.h  cuts onto free-standing pieces of wall
-//   wall-lines      segmentation/wall_lines.h   straight walls continued across wide openings
-//   (decomposition) decomposition/decompose.h   DuDe at oversegment x tau; --trivial skips it
-//   merge           segmentation/room_merging.h pieces that are one room of people's, joined
-//   furniture-rule  segmentation/room_merging.h cuts ending on furniture separate no rooms
-//   width-steps     segmentation/room_merging.h (hand rules) a room opening onto a much wider space
-//   fold            segmentation/room_merging.h rooms too small or thin to be rooms
+//   island-cuts     segmentation/island_cuts.h    cuts onto free-standing pieces of wall
+//   wall-lines      segmentation/wall_lines.h     straight walls continued across wide openings
+//   (decomposition) decomposition/decompose.h     DuDe at oversegment x tau (--trivial: none)
+//   merge           segmentation/room_merging.h   pieces joined into rooms (learned or hand rules),
+//                                                 then rooms too small or thin to be rooms folded
+//   furniture-rule  segmentation/room_merging.h   cuts ending on furniture separate no rooms
+//   width-steps     segmentation/room_merging.h   (hand rules) a room opening onto a much wider space
+//   open-rooms      segmentation/open_rooms.h     rooms bounded mostly by never-seen space join their neighbour
 #include <functional>
 #include <string>
 #include <vector>

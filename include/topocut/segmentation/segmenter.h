@@ -9,6 +9,7 @@
 #include "topocut/map/free_space_cleaning.h"
 #include "topocut/map/free_space_polygons.h"
 #include "topocut/segmentation/door_cuts.h"
+#include "topocut/segmentation/open_rooms.h"
 #include "topocut/segmentation/room_merging.h"
 #include "topocut/segmentation/rooms_from_pieces.h"
 
@@ -42,6 +43,7 @@ struct SegmentOptions {
   // Passed to decompose(); its tau is replaced by concavity / resolution (the polygons are in cells).
   DecompositionOptions decomposition;
   RoomMergeOptions merge;  // pieces -> rooms (room_merging.h)
+  OpenRoomOptions open_rooms;  // rooms bounded mostly by never-seen space join their neighbour (open_rooms.h)
   RoomLabelOptions labels; // rooms -> label image (rooms_from_pieces.h)
 };
 

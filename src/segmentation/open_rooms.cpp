@@ -1,0 +1,80 @@
+#include "topocut/segmentation/open_rooms.h"
+
+#include <cmath>
+#include <numeric>
+
+#include "topocut/core/error.h"
+#include "topocut/map/rasterize.h"
+#include "topocut/map/room_outline.h"
+#include "topocut/segmentation/room_merging.h"
+
+namespace topocut {
+
+void validate(const OpenRoomOptions& options) {
+  auto non_negative = [](double v) { return std::isfinite(v) && v >= 0.0; };
+  if (!non_negative(options.min_area) || !non_negative(options.wall_reach) || !non_negative(options.wall_band) || !non_negative(options.share) || options.share > 1.0 ||
+      !non_negative(options.ragged_share) || options.ragged_share > 1.0)
+    throw Error("the open rooms' area, wall reach and wall band must be non-negative numbers and their shares lie in [0, 1]");
+}
+
+namespace {
+
+int root(std::vector<int>& parent, int i) {
+  while (parent[static_cast<std::size_t>(i)] != i) i = parent[static_cast<std::size_t>(i)] = parent[static_cast<std::size_t>(parent[static_cast<std::size_t>(i)])];
+  return i;
+}
+
+// The rooms after the joins: each group of pieces as their union (or as the pieces, if they do not
+// form one polygon).
+PieceSet joined(const PieceSet& rooms, std::vector<int>& parent) {
+  std::vector<std::vector<int>> groups(rooms.pieces.size());
+  for (std::size_t i = 0; i < rooms.pieces.size(); ++i)
+    groups[static_cast<std::size_t>(root(parent, static_cast<int>(i)))].push_back(static_cast<int>(i));
+  PieceSet out;
+  out.cuts = rooms.cuts;
+  out.rules = rooms.rules;
+  for (const std::vector<int>& group : groups) {
+    if (group.empty()) continue;
+    std::vector<PolygonWithHoles> parts;
+    for (const int i : group) parts.push_back(rooms.pieces[static_cast<std::size_t>(i)]);
+    if (parts.size() > 1) {
+      try {
+        out.pieces.push_back(union_of_pieces(parts));
+        continue;
+      } catch (const Error&) {
+      }
+    }
+    out.pieces.insert(out.pieces.end(), parts.begin(), parts.end());
+  }
+  return out;
+}
+
+}  // namespace
+
+PieceSet join_open_rooms(const PieceSet& rooms, const OccupancyGrid& grid, const OpenRoomOptions& options) {
+  validate(options);
+  if (!options.enabled || rooms.pieces.empty() || cv::countNonZero(grid.cells == kOccupied) == 0) return rooms;
+  const cv::Mat ids = rasterize_polygons(rooms.pieces, grid.cells.size());
+  const cv::Mat walls = wall_cells(grid.cells, options.wall_reach / grid.resolution + 1e-9);
+  const double cell_area = grid.resolution * grid.resolution;
+  std::vector<int> parent(rooms.pieces.size());
+  std::iota(parent.begin(), parent.end(), 0);
+  bool changed = false;
+  for (const auto& [id, extent] : room_extents(ids)) {
+    if (static_cast<double>(extent.cells) * cell_area < options.min_area) continue;
+    const RoomOutline outline = room_outline(ids, id, extent.box, grid.cells, walls, static_cast<int>(std::lround(options.wall_band / grid.resolution)));
+    if (!outline.open(options.share, options.ragged_share)) continue;
+    int into = 0;
+    long long longest = 0;
+    for (const auto& [other, edges] : outline.neighbours) {
+      if (edges > longest) std::tie(into, longest) = std::pair{other, edges};
+    }
+    if (into == 0) continue;  // nothing beside it to join: a room seen only through its door stays
+    const int a = root(parent, id - 1), b = root(parent, into - 1);
+    parent[static_cast<std::size_t>(std::max(a, b))] = std::min(a, b);
+    changed = true;
+  }
+  return changed ? joined(rooms, parent) : rooms;
+}
+
+}  // namespace topocut
