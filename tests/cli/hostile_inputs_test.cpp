@@ -142,8 +142,8 @@ TEST(HostileInputs, FlaserWithMoreValuesThanAnnouncedIsRefusedNamingTheLine) {
 TEST(HostileInputs, ResolutionsOutsideTheRangeAreRefusedWithTheRange) {
   const TempDir dir;
   const std::string map = small_map(dir);
-  for (const char* r : {"1e308", "1e-12"})
-    expect_clean_error(run_cli(dir, "segment", {map, "--resolution", r}), "segment", "[0.0001, 1000] metres per cell");
+  for (const char* r : {"1e308", "1e-12"})  // a bad option (the table's range): a usage error, as --concavity
+    expect_clean_error(run_cli(dir, "segment", {map, "--resolution", r}), "segment", "[0.0001, 1000] metres per cell", 2);
   const std::string yaml = dir.write("m.yaml", "image: map.png\nresolution: 1e308\norigin: [0, 0, 0]\n");
   expect_clean_error(run_cli(dir, "segment", {yaml}), "segment", "[0.0001, 1000] metres per cell");
   const std::string far = dir.write("f.yaml", "image: map.png\nresolution: 0.05\norigin: [1e300, 0, 0]\n");
