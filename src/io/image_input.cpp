@@ -4,6 +4,7 @@
 #include <cctype>
 #include <cmath>
 #include <cstdio>
+#include <new>
 #include <optional>
 #include <sstream>
 #include <vector>
@@ -161,6 +162,11 @@ const char* format_name(ImageFormat format) {
   return "image";
 }
 
+std::string out_of_memory(const std::string& source, const ImageHeader& header) {
+  return "cannot read " + quoted(source) + ": out of memory for its " + std::to_string(header.width) + " x " +
+         std::to_string(header.height) + " pixels";
+}
+
 }  // namespace
 
 void validate(const ImageLimits& limits) {
@@ -235,7 +241,10 @@ cv::Mat decode_image(std::string_view bytes, const std::string& source, const Im
     throw Error("cannot read " + quoted(source) + " as an image: " + e.what());
   } catch (const codecs::CodecError&) {
     image.release();
-  } catch (const cv::Exception&) {  // an allocation the header's size made impossible
+  } catch (const std::bad_alloc&) {
+    throw Error(out_of_memory(source, header));
+  } catch (const cv::Exception& e) {  // an allocation the header's size made impossible
+    if (e.code == cv::Error::StsNoMem) throw Error(out_of_memory(source, header));
     image.release();
   }
   if (image.empty()) throw Error("cannot read " + quoted(source) + " as an image (corrupt or truncated)");

@@ -204,3 +204,38 @@ TEST(HostileInputs, WallsRefusesBadOptionsBeforeReadingTheLog) {
 }
 
 }  // namespace
+
+namespace {
+
+// A memory limit (ulimit -v) below what an 8000 x 8000 map needs: OpenCV's failed allocation is
+// reported as running out of memory, not as an internal failure. ASan reserves terabytes of
+// address space, so the limit cannot apply to a sanitizer build.
+TEST(HostileInputs, OutOfMemoryIsNamedAsSuch) {
+#if defined(__SANITIZE_ADDRESS__)
+  GTEST_SKIP() << "a virtual memory limit does not work with AddressSanitizer";
+#else
+  const TempDir dir;
+  cv::Mat map(8000, 8000, CV_8UC1, cv::Scalar(255));
+  for (int i = 0; i < map.rows; i += 200) map.row(i).setTo(0), map.col(i).setTo(0);
+  ASSERT_TRUE(topocut::testing::write_test_image(dir.file("big.png"), map));
+  const std::string line = "segment " + topocut::testing::shell_quoted(dir.file("big.png")) + " --trivial";
+  const CliResult r = topocut::testing::run_cli_line(dir.path(), line, 60, "ulimit -v 300000;");
+  expect_clean_error(r, "segment", "out of memory");
+  EXPECT_EQ(r.err.find("internal failure"), std::string::npos) << r.err;
+#endif
+}
+
+// A config file whose YAML is well formed but not a mapping of option names: one line naming the
+// file and the line, a usage error (it was "internal failure: yaml-cpp: ... bad conversion").
+TEST(HostileInputs, ConfigKeysThatAreNotNamesAreNamed) {
+  const TempDir dir;
+  const std::string map = small_map(dir);
+  for (const char* text : {"? [a, b]\n: 1\n", "{[1]: 2}\n", "trivial: true\n? {x: 1}\n: 2\n"}) {
+    const std::string config = dir.write("c.yaml", text);
+    expect_clean_error(run_cli(dir, "segment", {map, "--config", config}), "segment",
+                       "c.yaml', line ", 2);
+    expect_clean_error(run_cli(dir, "segment", {map, "--config", config}), "segment", "a key must be an option name", 2);
+  }
+}
+
+}  // namespace

@@ -27,4 +27,19 @@ std::string read_input_file(const std::string& path, const std::string& what, st
 // "N bytes" as the largest whole unit (KiB, MiB, GiB) for messages about limits.
 std::string byte_size_text(std::uint64_t bytes);
 
+// The inputs of one run: while a record is open, every regular file that read_input_file() or
+// require_regular_file() opens is noted by its identity (device and inode, whatever the name it was
+// reached by), so that the run's outputs can be checked against all of them (io/output_files.h
+// does, at its check, at each write and at the final commit). One record per process; thread-safe.
+class InputRecord {
+ public:
+  InputRecord();
+  ~InputRecord();
+  InputRecord(const InputRecord&) = delete;
+  InputRecord& operator=(const InputRecord&) = delete;
+};
+
+// Whether the existing file at path is one the open record noted (false without a record).
+bool is_recorded_input(const std::string& path);
+
 }  // namespace topocut
