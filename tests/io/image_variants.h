@@ -305,7 +305,7 @@ inline std::string exif_orientation_segment(int orientation) {
   return payload;
 }
 
-// The scan header of an AC scan of component 1 (Ss 1, Se 63, Ah 0, Al 0) with no data behind it.
+// The scan header of an AC scan of one component (Ss 1, Se 63, Ah 0, Al 0) with no data behind it.
 inline std::string empty_ac_scan(int component_id) {
   return std::string("\xFF\xDA\x00\x08\x01", 5) + static_cast<char>(component_id) + std::string("\x00\x01\x3F\x00", 4);
 }
@@ -342,12 +342,13 @@ inline std::string jpeg_bytes(const JpegLayout& l) {
     jpeg_write_scanlines(&cinfo, &row, 1);
   }
   jpeg_finish_compress(&cinfo);
+  const int first_component = cinfo.comp_info[0].component_id;  // 1 for grey and YCbCr, 'C' for CMYK
   jpeg_destroy_compress(&cinfo);
   std::string out(reinterpret_cast<const char*>(buffer), size);
   std::free(buffer);
   if (l.extra_scans > 0 && l.progressive) {
     std::string scans;
-    for (int i = 0; i < l.extra_scans; ++i) scans += empty_ac_scan(1);
+    for (int i = 0; i < l.extra_scans; ++i) scans += empty_ac_scan(first_component);
     out.insert(out.size() - 2, scans);  // before the end-of-image marker
   }
   return out;
