@@ -11,7 +11,7 @@ namespace topocut {
 // what would exhaust memory once parsed.
 inline constexpr std::uint64_t kMaxMapYamlBytes = 1ull << 20;       // ROS map_server YAML: 1 MiB
 inline constexpr std::uint64_t kMaxPolygonJsonBytes = 4ull << 20;   // decompose's polygon JSON: 4 MiB
-inline constexpr std::uint64_t kMaxScanCsvBytes = 1ull << 20;       // one scan as CSV: 1 MiB
+inline constexpr std::uint64_t kMaxScanCsvBytes = 64ull << 20;      // one scan as CSV: 64 MiB (4 million beams)
 inline constexpr std::uint64_t kMaxConfigYamlBytes = 1ull << 20;    // --config FILE.yaml: 1 MiB
 
 // Throws Error naming `what` and path unless path is an existing regular file (symlinks followed).
