@@ -88,10 +88,11 @@ void CentreIndex::insert(int id) {
   leaf_of_[id] = at;
 }
 
+// The squared distance from p to the node's box, shrunk by the slack.
 double CentreIndex::box_distance(const Node& node, const Point2& p) const {
   const double dx = std::max({node.min_x - p.x, 0.0, p.x - node.max_x});
   const double dy = std::max({node.min_y - p.y, 0.0, p.y - node.max_y});
-  return std::sqrt(dx * dx + dy * dy) * (1.0 - kSlack);
+  return (dx * dx + dy * dy) * (1.0 - kSlack);
 }
 
 void CentreIndex::offer(int id, int candidate, std::array<int, 2>& best, std::array<double, 2>& best_d) const {
@@ -111,21 +112,26 @@ std::array<int, 2> CentreIndex::nearest_two(int id) const {
   std::array<double, 2> best_d = {kInfinity, kInfinity};
   if (nodes_.empty()) return best;
   const Point2& p = centre_[id];
-  std::vector<int> stack = {0};
+  std::vector<std::pair<int, double>> stack = {{0, 0.0}};  // node, squared box distance
   while (!stack.empty()) {
-    const int at = stack.back();
-    const Node& node = nodes_[at];
+    const auto [at, box] = stack.back();
     stack.pop_back();
-    if (node.live == 0 || box_distance(node, p) > best_d[1]) continue;
+    const Node& node = nodes_[at];
+    if (node.live == 0 || box > best_d[1] * best_d[1]) continue;
     if (node.left < 0) {
       for (const int item : node.items)
         if (listed(item, at)) offer(id, item, best, best_d);
       continue;
     }
     // The nearer child last, so that it is searched first.
-    const bool left_first = box_distance(nodes_[node.left], p) <= box_distance(nodes_[node.right], p);
-    stack.push_back(left_first ? node.right : node.left);
-    stack.push_back(left_first ? node.left : node.right);
+    const double left = box_distance(nodes_[node.left], p), right = box_distance(nodes_[node.right], p);
+    if (left <= right) {
+      stack.push_back({node.right, right});
+      stack.push_back({node.left, left});
+    } else {
+      stack.push_back({node.left, left});
+      stack.push_back({node.right, right});
+    }
   }
   return best;
 }
@@ -142,12 +148,12 @@ void CentreIndex::remove(int id) {
   unlist(id);
   live_[id] = 0;
   --live_count_;
-  if (++changes_ > live_count_ / 2 + kLeafSize) rebuild();
+  if (++changes_ > 2 * live_count_ + kLeafSize) rebuild();
 }
 
 void CentreIndex::move(int id, const Point2& centre) {
   centre_[id] = centre;
-  if (++changes_ > live_count_ / 2 + kLeafSize) {
+  if (++changes_ > 2 * live_count_ + kLeafSize) {
     rebuild();
   } else {
     unlist(id);  // its old entry stays in its old leaf, skipped: leaf_of_ no longer names that leaf
@@ -162,7 +168,7 @@ void CentreIndex::within_reach(const Point2& p, std::vector<int>& out) const {
     const int at = stack.back();
     const Node& node = nodes_[at];
     stack.pop_back();
-    if (node.live == 0 || box_distance(node, p) > node.max_reach) continue;
+    if (node.live == 0 || node.max_reach < 0 || box_distance(node, p) > node.max_reach * node.max_reach) continue;
     if (node.left >= 0) {
       stack.push_back(node.left);
       stack.push_back(node.right);

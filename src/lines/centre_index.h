@@ -42,7 +42,7 @@ class CentreIndex {
   void rebuild();
   void insert(int id);
   void unlist(int id);
-  double box_distance(const Node& node, const Point2& p) const;
+  double box_distance(const Node& node, const Point2& p) const;  // squared
   void offer(int id, int candidate, std::array<int, 2>& best, std::array<double, 2>& best_d) const;
   bool listed(int id, int leaf) const { return live_[id] && leaf_of_[id] == leaf; }
 

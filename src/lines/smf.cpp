@@ -148,15 +148,20 @@ void merge_phase(std::vector<Cluster>& clusters, double sigma_max) {
     index.within_reach(kept.centre(), reached);
     for (const int c : reached) unsettled.insert(c);
   }
+  // Each point's line, then the points in order: every set increasing, in one pass over the points.
   std::vector<Cluster> merged;
+  std::vector<int> owner;
   for (int i = 0; i < n; ++i) {
     if (!live[i]) continue;
-    Set points;
     for (int member = i; member >= 0; member = next[member])
-      points.insert(points.end(), clusters[member].set.begin(), clusters[member].set.end());
-    std::sort(points.begin(), points.end());
-    merged.push_back({std::move(points), clusters[i].moments});
+      for (const std::size_t k : clusters[member].set) {
+        if (k >= owner.size()) owner.resize(k + 1, -1);
+        owner[k] = static_cast<int>(merged.size());
+      }
+    merged.push_back({{}, clusters[i].moments});
   }
+  for (std::size_t k = 0; k < owner.size(); ++k)
+    if (owner[k] >= 0) merged[static_cast<std::size_t>(owner[k])].set.push_back(k);
   clusters = std::move(merged);
 }
 
