@@ -10,6 +10,7 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "io/codecs/codecs.h"
+#include "io/error_text.h"
 #include "io/image_variants.h"
 #include "topocut/core/error.h"
 #include "topocut/io/image_codec.h"
@@ -19,15 +20,6 @@ namespace topocut {
 namespace {
 
 using namespace topocut::testing;
-
-std::string error_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const Error& e) {
-    return e.what();
-  }
-  return "";
-}
 
 constexpr std::uint16_t kShort = 3, kLong = 4;
 
