@@ -26,7 +26,10 @@ const OptionRow<Target>* find_keyword(const std::vector<OptionRow<Target>>& rows
 template <typename Target>
 std::string keyword_names(const std::vector<OptionRow<Target>>& rows) {
   std::string names;
-  for (const OptionRow<Target>& row : rows) names += (names.empty() ? "" : ", ") + keyword(row.name);
+  for (const OptionRow<Target>& row : rows) {
+    if (!names.empty()) names += ", ";
+    names += keyword(row.name);
+  }
   return names;
 }
 
