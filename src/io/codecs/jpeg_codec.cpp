@@ -51,7 +51,7 @@ void limit_scans(j_common_ptr common) {
   if (cinfo->input_scan_number <= kMaxJpegScans) return;
   auto* error = reinterpret_cast<JpegError*>(common->err);
   std::snprintf(error->message, sizeof error->message,
-                "the progressive JPEG has more than %d scans, each a pass over the whole image (the limit)", kMaxJpegScans);
+                "the JPEG has more than %d scans, each a pass over the whole image (the limit)", kMaxJpegScans);
   error->refused = true;
   std::longjmp(error->jump, 1);
 }
