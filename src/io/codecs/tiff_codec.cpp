@@ -335,7 +335,7 @@ cv::Mat decode_tiff(std::string_view bytes, const DecodeBounds& bounds) {
   lib.GetField(tiff, TIFFTAG_BITSPERSAMPLE, &bits);
   lib.GetField(tiff, TIFFTAG_SAMPLESPERPIXEL, &samples);
   lib.GetField(tiff, TIFFTAG_SAMPLEFORMAT, &format);
-  if (format != SAMPLEFORMAT_UINT) throw CodecRefusal("only unsigned integer TIFF samples are read");
+  if (format != SAMPLEFORMAT_UINT) throw CodecRefusal("TIFF samples that are not unsigned integers are not read");
   if (!(bits == 1 || bits == 2 || bits == 4 || bits == 8 || bits == 16))
     throw CodecRefusal("TIFF samples of " + std::to_string(bits) + " bits are not read (1, 2, 4, 8 or 16)");
   if (samples < 1 || samples > 4)
