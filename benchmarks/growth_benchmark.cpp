@@ -4,10 +4,12 @@
 //   comb     a comb polygon (slots 1 wide and 40 deep): `decompose` with tau 5 (the candidate
 //            diagonals of every pass)
 //   fcm      fuzzy c-means with 10 centres on every segment of a scan of a room (`label --fcm 10`)
+//   smf, iepf, sef, lt, ale
+//            line extraction with that method on the same scan of a room (`lines --method M`)
 // Each size runs in its own forked child so that the peak RSS is that size's alone. Prints one
 // Markdown table: size, median process CPU time over the repeats, the ratio to the size a tenth as
 // large, the child's peak RSS, and the machine.
-//   growth_benchmark [islands|comb|fcm ...] [--max N] [--repeats R]
+//   growth_benchmark [islands|comb|fcm|smf|iepf|sef|lt|ale ...] [--max N] [--repeats R]
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -30,6 +32,7 @@
 #include "topocut/io/map_loader.h"
 #include "topocut/labeling/fuzzy_c_means.h"
 #include "topocut/labeling/sparse_labeling.h"
+#include "topocut/lines/extract.h"
 #include "topocut/scan/scan.h"
 #include "topocut/segmentation/segmenter.h"
 
@@ -112,6 +115,15 @@ double run_case(const std::string& name, long size, const std::string& folder) {
     return t;
   }
   const Scan scan = room_scan(size);
+  if (name != "fcm") {
+    LineExtractionOptions options;
+    options.method = parse_line_method(name);
+    const double t0 = cpu_seconds();
+    const std::vector<Line> lines = extract_lines(scan, options);
+    const double t = cpu_seconds() - t0;
+    if (lines.empty()) std::fprintf(stderr, "%s %ld: no line\n", name.c_str(), size);
+    return t;
+  }
   const double t0 = cpu_seconds();
   const Labeling labeling = label_scan(scan);
   FuzzyCMeansOptions options;
@@ -175,16 +187,19 @@ int main(int argc, char** argv) {
       max_size = std::atol(argv[++i]);
     } else if (arg == "--repeats" && i + 1 < argc) {
       repeats = std::max(1, std::atoi(argv[++i]));
-    } else if (arg == "islands" || arg == "comb" || arg == "fcm") {
+    } else if (arg == "islands" || arg == "comb" || arg == "fcm" || arg == "smf" || arg == "iepf" || arg == "sef" ||
+               arg == "lt" || arg == "ale") {
       names.push_back(arg);
     } else {
-      std::fprintf(stderr, "usage: growth_benchmark [islands|comb|fcm ...] [--max N] [--repeats R]\n");
+      std::fprintf(stderr, "usage: growth_benchmark [islands|comb|fcm|smf|iepf|sef|lt|ale ...] [--max N] [--repeats R]\n");
       return 2;
     }
   }
-  if (names.empty()) names = {"islands", "comb", "fcm"};
+  if (names.empty()) names = {"islands", "comb", "fcm", "smf", "iepf", "sef", "lt", "ale"};
+  const std::vector<long> beams = {1000, 10000, 100000, 1000000};
   const std::vector<std::pair<std::string, std::vector<long>>> sizes = {
-      {"islands", {250, 2500, 25000, 250000}}, {"comb", {50, 500, 5000, 50000}}, {"fcm", {1000, 10000, 100000, 1000000}}};
+      {"islands", {250, 2500, 25000, 250000}}, {"comb", {50, 500, 5000, 50000}}, {"fcm", beams}, {"smf", beams},
+      {"iepf", beams}, {"sef", beams}, {"lt", beams}, {"ale", beams}};
   const std::string folder = std::filesystem::temp_directory_path() / ("topocut_growth_" + std::to_string(getpid()));
   std::filesystem::create_directories(folder);
   std::printf("Machine: %s, median of %d runs (process CPU time)\n\n", topocut::benchmarks::cpu_model().c_str(), repeats);

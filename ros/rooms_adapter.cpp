@@ -2,12 +2,15 @@
 
 #include <chrono>
 
+#include "topocut/core/option_table.h"
+#include "topocut/io/image_input.h"
 #include "topocut/topocut.h"
 
 namespace topocut_ros {
 
 struct RoomsAdapter::State {
   topocut::GridArray thresholds;  // map_server's thresholds, from the parameters
+  topocut::ImageLimits limits;    // the largest map segmented, as for every image the library reads
   topocut::IncrementalSegmenter segmenter;
   explicit State(const topocut::IncrementalOptions& options) : segmenter(options) {}
 };
@@ -70,6 +73,8 @@ RoomsAdapter::RoomsAdapter(const DoubleParameter& number, const FlagParameter& f
   const topocut::IncrementalOptions options = read_options(number, flag, thresholds);
   state_ = std::make_unique<State>(options);
   state_->thresholds = thresholds;
+  number("max_megapixels", &state_->limits.max_megapixels);
+  topocut::validate(state_->limits);
 }
 
 RoomsAdapter::~RoomsAdapter() = default;
@@ -78,6 +83,11 @@ RoomsOutput RoomsAdapter::update(const MapInput& map) {
   if (map.size != static_cast<std::size_t>(map.width) * map.height)
     throw topocut::Error("the map's data holds " + std::to_string(map.size) + " values for " +
                          std::to_string(map.width) + " x " + std::to_string(map.height) + " cells");
+  // Before any cell is read: a well-formed map of 2^31 cells would need about 30 GB to segment.
+  if (static_cast<double>(map.width) * map.height > state_->limits.max_megapixels * 1e6)
+    throw topocut::Error("the map has " + std::to_string(map.width) + " x " + std::to_string(map.height) +
+                         " cells, more than the limit of " + topocut::shortest_number(state_->limits.max_megapixels) +
+                         " megapixels (parameter ~max_megapixels)");
   topocut::GridArray array = state_->thresholds;
   array.data = map.data;
   array.width = static_cast<int>(map.width);

@@ -41,7 +41,10 @@ po::parsed_options config_file_options(const std::string& path, const po::option
   if (root.IsNull()) return parsed;
   if (!root.IsMap()) throw UsageError("config file '" + path + "' must be a mapping of option names to values");
   for (const auto& entry : root) {
-    const std::string key = entry.first.as<std::string>();
+    if (!entry.first.IsScalar())
+      throw UsageError("config file '" + path + "', line " + std::to_string(entry.first.Mark().line + 1) +
+                       ": a key must be an option name, not a list or mapping");
+    const std::string key = entry.first.Scalar();
     const std::string where = "'" + key + "' in config file '" + path + "'";
     const po::option_description* option = options.find_nothrow(key, false);
     if (!option || key == "config" || key == "help") throw UsageError(where + " is not an option of this command");

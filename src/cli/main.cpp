@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include <opencv2/core.hpp>
+
 #include "cli/command.h"
 #include "topocut/core/allocator.h"
 #include "topocut/core/error.h"
@@ -25,6 +27,9 @@ void print_help() {
   }
   std::cout << "\nOptions:\n  --help      show this help\n  --version   print the version\n";
 }
+
+const char* const kOutOfMemory =
+    "out of memory: the input needs more memory than this machine has (or is allowed), or declares an impossible size";
 
 // One line on stderr, whatever the message holds (see one_line_message).
 void report(const std::string& command, const std::string& message) {
@@ -66,10 +71,14 @@ int dispatch(const std::vector<std::string>& args) {
     report(args[0], "cannot use '" + e.path1().string() + "': " + e.code().message());
     return 1;
   } catch (const std::bad_alloc&) {
-    report(args[0], "out of memory: the input needs more memory than this machine has, or declares an impossible size");
+    report(args[0], kOutOfMemory);
     return 1;
   } catch (const std::length_error&) {
     report(args[0], "the input declares a size too large to hold in memory");
+    return 1;
+  } catch (const cv::Exception& e) {
+    // OpenCV reports a failed allocation as its own exception, not std::bad_alloc.
+    report(args[0], e.code == cv::Error::StsNoMem ? kOutOfMemory : std::string("internal failure: ") + e.what());
     return 1;
   } catch (const std::exception& e) {
     report(args[0], std::string("internal failure: ") + e.what());

@@ -2,6 +2,9 @@
 
 #include <cerrno>
 #include <cstring>
+#include <mutex>
+#include <set>
+#include <utility>
 
 #include <fcntl.h>
 #include <sys/stat.h>
@@ -31,6 +34,17 @@ class Descriptor {
 
 std::string quoted(const std::string& s) { return "'" + s + "'"; }
 
+// The open record: file identities (device, inode), under a lock because commands read inputs on
+// several threads (evaluate --threads).
+std::mutex record_mutex;
+bool record_open = false;
+std::set<std::pair<dev_t, ino_t>> recorded;
+
+void note(const struct stat& info) {
+  const std::lock_guard<std::mutex> lock(record_mutex);
+  if (record_open) recorded.emplace(info.st_dev, info.st_ino);
+}
+
 // O_NONBLOCK: opening a FIFO without a writer must not wait; the descriptor is checked before reading.
 int open_regular(const std::string& path, const std::string& what) {
   const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC | O_NOCTTY);
@@ -46,6 +60,7 @@ int open_regular(const std::string& path, const std::string& what) {
     throw Error("cannot read " + what + " " + quoted(path) + ": " +
                 (directory ? "it is a directory" : "not a regular file (a device, FIFO or socket)"));
   }
+  note(info);
   return fd;
 }
 
@@ -90,6 +105,26 @@ std::string read_input_file(const std::string& path, const std::string& what, st
     contents.append(chunk, static_cast<std::size_t>(got));
   }
   return contents;
+}
+
+InputRecord::InputRecord() {
+  const std::lock_guard<std::mutex> lock(record_mutex);
+  if (record_open) throw Error("internal: only one InputRecord may be open at a time");
+  record_open = true;
+  recorded.clear();
+}
+
+InputRecord::~InputRecord() {
+  const std::lock_guard<std::mutex> lock(record_mutex);
+  record_open = false;
+  recorded.clear();
+}
+
+bool is_recorded_input(const std::string& path) {
+  struct stat info {};
+  if (::stat(path.c_str(), &info) != 0) return false;
+  const std::lock_guard<std::mutex> lock(record_mutex);
+  return record_open && recorded.count({info.st_dev, info.st_ino}) > 0;
 }
 
 }  // namespace topocut

@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "topocut/core/error.h"
+#include "topocut/core/value_ranges.h"
 
 namespace topocut {
 
@@ -23,6 +24,10 @@ void check_option_value(OptionRange range, double value, const std::string& show
       if (!(value >= 0.0 && value <= 255.0) || value != std::floor(value))
         throw Error(shown + " must be a grey level, a whole number in 0..255");
       break;
+    case OptionRange::kLength: check_length(value, shown, /*zero_allowed=*/false); break;
+    case OptionRange::kLengthOrZero: check_length(value, shown); break;
+    case OptionRange::kArea: check_area(value, shown); break;
+    case OptionRange::kResolution: check_resolution(value, shown); break;
     case OptionRange::kSwitch:
     case OptionRange::kAny:
       break;

@@ -4,8 +4,10 @@
 #include <cctype>
 #include <cmath>
 #include <cstdio>
+#include <new>
 #include <optional>
 #include <sstream>
+#include <vector>
 
 #include "io/codecs/codecs.h"
 #include "topocut/core/error.h"
@@ -40,6 +42,10 @@ class HeaderBytes {
 };
 
 using Size = std::optional<std::pair<std::uint64_t, std::uint64_t>>;  // width, height
+
+struct DuplicateTag {
+  std::uint32_t tag;
+};
 
 Size png_size(const HeaderBytes& b) {
   // Signature (8), then the IHDR chunk: length (4), "IHDR", width (4), height (4), big-endian.
@@ -108,7 +114,8 @@ Size bmp_size(const HeaderBytes& b) {
                                                  static_cast<std::uint64_t>(std::abs(static_cast<std::int64_t>(height)))};
 }
 
-// Classic TIFF: the first image file directory's ImageWidth (256) and ImageLength (257).
+// Classic TIFF: the first image file directory's ImageWidth (256) and ImageLength (257). A tag given
+// twice is refused: libtiff keeps the first copy, so a second one would be a size nobody checked.
 Size tiff_size(const HeaderBytes& b) {
   const bool little = b.at(0) == 'I';
   const auto read = [&](std::size_t offset, int n) { return little ? b.little(offset, n) : b.big(offset, n); };
@@ -117,14 +124,19 @@ Size tiff_size(const HeaderBytes& b) {
   if (!b.has(ifd, 2)) return std::nullopt;
   const std::uint32_t entries = read(ifd, 2);
   std::uint64_t width = 0, height = 0;
+  std::vector<std::uint32_t> tags;
   for (std::uint32_t e = 0; e < entries; ++e) {
     const std::size_t at = ifd + 2 + 12 * static_cast<std::size_t>(e);
     if (!b.has(at, 12)) return std::nullopt;
     const std::uint32_t tag = read(at, 2), type = read(at + 2, 2);
+    tags.push_back(tag);
     if (tag != 256 && tag != 257) continue;
     const std::uint64_t value = type == 3 ? read(at + 8, 2) : type == 4 ? read(at + 8, 4) : 0;
     (tag == 256 ? width : height) = value;
   }
+  std::sort(tags.begin(), tags.end());
+  if (const auto twice = std::adjacent_find(tags.begin(), tags.end()); twice != tags.end())
+    throw DuplicateTag{*twice};
   return std::pair<std::uint64_t, std::uint64_t>{width, height};
 }
 
@@ -148,6 +160,11 @@ const char* format_name(ImageFormat format) {
     case ImageFormat::kTiff: return "TIFF";
   }
   return "image";
+}
+
+std::string out_of_memory(const std::string& source, const ImageHeader& header) {
+  return "cannot read " + quoted(source) + ": out of memory for its " + std::to_string(header.width) + " x " +
+         std::to_string(header.height) + " pixels";
 }
 
 }  // namespace
@@ -180,7 +197,14 @@ ImageHeader read_image_header(std::string_view bytes, const std::string& source)
     case ImageFormat::kNetpbm: size = netpbm_size(b); break;
     case ImageFormat::kJpeg: size = jpeg_size(b); break;
     case ImageFormat::kBmp: size = bmp_size(b); break;
-    case ImageFormat::kTiff: size = tiff_size(b); break;
+    case ImageFormat::kTiff:
+      try {
+        size = tiff_size(b);
+      } catch (const DuplicateTag& d) {
+        throw Error("cannot read " + quoted(source) + " as an image: its TIFF header gives tag " + std::to_string(d.tag) +
+                    " twice (conflicting fields)");
+      }
+      break;
   }
   if (!size || size->first == 0 || size->second == 0)
     throw Error("cannot read " + quoted(source) + " as an image: its " + format_name(*format) +
@@ -203,18 +227,24 @@ void check_image_size(const ImageHeader& header, const ImageLimits& limits, cons
 cv::Mat decode_image(std::string_view bytes, const std::string& source, const ImageLimits& limits) {
   const ImageHeader header = read_image_header(bytes, source);
   check_image_size(header, limits, source);
+  const codecs::DecodeBounds bounds{header.width, header.height};
   cv::Mat image;
   try {
     switch (header.format) {
-      case ImageFormat::kPng: image = codecs::decode_png(bytes); break;
-      case ImageFormat::kNetpbm: image = codecs::decode_netpbm(bytes); break;
-      case ImageFormat::kJpeg: image = codecs::decode_jpeg(bytes); break;
-      case ImageFormat::kBmp: image = codecs::decode_bmp(bytes); break;
-      case ImageFormat::kTiff: image = codecs::decode_tiff(bytes); break;
+      case ImageFormat::kPng: image = codecs::decode_png(bytes, bounds); break;
+      case ImageFormat::kNetpbm: image = codecs::decode_netpbm(bytes, bounds); break;
+      case ImageFormat::kJpeg: image = codecs::decode_jpeg(bytes, bounds); break;
+      case ImageFormat::kBmp: image = codecs::decode_bmp(bytes, bounds); break;
+      case ImageFormat::kTiff: image = codecs::decode_tiff(bytes, bounds); break;
     }
+  } catch (const codecs::CodecRefusal& e) {
+    throw Error("cannot read " + quoted(source) + " as an image: " + e.what());
   } catch (const codecs::CodecError&) {
     image.release();
-  } catch (const cv::Exception&) {  // an allocation the header's size made impossible
+  } catch (const std::bad_alloc&) {
+    throw Error(out_of_memory(source, header));
+  } catch (const cv::Exception& e) {  // an allocation the header's size made impossible
+    if (e.code == cv::Error::StsNoMem) throw Error(out_of_memory(source, header));
     image.release();
   }
   if (image.empty()) throw Error("cannot read " + quoted(source) + " as an image (corrupt or truncated)");

@@ -1,7 +1,5 @@
 #include "topocut/io/map_load_flags.h"
 
-#include <cmath>
-
 #include "topocut/core/error.h"
 #include "topocut/io/image_input.h"
 
@@ -10,7 +8,7 @@ namespace topocut {
 const std::vector<OptionRow<MapLoadOptions>>& map_load_option_rows() {
   using L = MapLoadOptions;
   static const std::vector<OptionRow<L>> rows = {
-      {"resolution", "M", "metres per cell of a plain image (a YAML's own resolution always wins)", OptionRange::kPositive,
+      {"resolution", "M", "metres per cell of a plain image (a YAML's own resolution always wins)", OptionRange::kResolution,
        [](const L& l) { return l.resolution; }, [](L& l, double v) { l.resolution = v; }},
       {"fixed-thresholds", "",
        "plain images: use --free-threshold and --occupied-threshold instead of reading the palette from the image",
@@ -41,9 +39,8 @@ const std::vector<OptionRow<MapLoadOptions>>& map_load_option_rows() {
 }
 
 void validate(const MapLoadOptions& options) {
-  if (!std::isfinite(options.resolution) || options.resolution <= 0.0) throw Error("--resolution must be a positive number");
-  if (options.free_min < 0 || options.free_min > 255 || options.occupied_max < 0 || options.occupied_max > 255)
-    throw Error("--free-threshold and --occupied-threshold must lie in 0..255");
+  for (const OptionRow<MapLoadOptions>& row : map_load_option_rows())
+    if (!row.is_switch()) check_option_value(row.range, row.get(options), "--" + row.name);
   if (options.occupied_max > options.free_min) throw Error("--occupied-threshold must not exceed --free-threshold");
   validate(options.limits);
 }

@@ -14,6 +14,7 @@
 #include "topocut/core/input_file.h"
 #include "topocut/core/value_ranges.h"
 #include "topocut/io/image_input.h"
+#include "topocut/io/map_load_flags.h"
 
 namespace topocut {
 
@@ -298,8 +299,6 @@ OccupancyGrid load_yaml_map(const std::string& path, const MapLoadOptions& optio
 }
 
 OccupancyGrid load_image_map(const std::string& path, const MapLoadOptions& options, std::string* palette) {
-  check_resolution(options.resolution, "the map resolution (--resolution)");
-  if (options.free_min < options.occupied_max) throw Error("the free threshold must not be below the occupied threshold");
   cv::Mat levels, transparent;
   decode_map_levels(read_input_file(path, "map image", max_image_file_bytes(options.limits)), path, levels, transparent,
                     options.limits);
@@ -317,7 +316,7 @@ OccupancyGrid load_image_map(const std::string& path, const MapLoadOptions& opti
 OccupancyGrid load_map(const std::string& path, const MapLoadOptions& options, std::string* palette) {
   if (path.empty()) throw Error("no map file given");
   if (!fs::exists(path)) throw Error("map file " + quoted(path) + " does not exist");
-  validate(options.limits);
+  validate(options);  // every option's range from the table the commands and bindings parse with
   OccupancyGrid grid = is_yaml_path(path) ? load_yaml_map(path, options, palette) : load_image_map(path, options, palette);
   validate(grid);
   return grid;

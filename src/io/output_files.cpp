@@ -14,6 +14,7 @@
 
 #include "output_staging.h"
 #include "topocut/core/error.h"
+#include "topocut/core/input_file.h"
 #include "topocut/io/atomic_file.h"
 
 namespace topocut {
@@ -63,6 +64,18 @@ extern "C" void remove_staged_and_reraise(int signal) {
 }
 
 std::string error_text(int code) { return std::strerror(code); }
+
+// The run's record of its inputs (core/input_file.h), open while the OutputRun is.
+std::optional<InputRecord> inputs_of_run;
+
+std::string both_input_and_output(const std::string& output) {
+  return "'" + output + "' is both an input and an output of this run; choose another output path";
+}
+
+// Every file the run has read so far, under any name, is refused as an output.
+void refuse_if_input(const std::string& target) {
+  if (is_recorded_input(target)) throw Error(both_input_and_output(target));
+}
 
 std::optional<struct stat> stat_of(const std::string& path) {
   struct stat info {};
@@ -172,6 +185,7 @@ namespace detail {
 void write_output(const std::string& path, const std::string& contents) {
   if (path.empty()) throw Error("output path is empty");
   check_target_kind(path);
+  refuse_if_input(path);
   Staged file{path, {}, {}};
   if (is_character_device(path)) {
     file.device_contents = contents;
@@ -219,10 +233,9 @@ void check_outputs(const std::vector<std::string>& outputs, const std::vector<st
     }
     check_writable(output);
     const std::string identity = file_identity(output);
+    refuse_if_input(output);
     for (const std::string& input : inputs) {
-      if (!input.empty() && file_identity(input) == identity) {
-        throw Error("'" + output + "' is both an input and an output of this run; choose another output path");
-      }
+      if (!input.empty() && file_identity(input) == identity) throw Error(both_input_and_output(output));
     }
     for (const auto& [other_identity, other] : seen) {
       if (other_identity == identity) throw Error("two outputs name the same file: '" + other + "' and '" + output + "'");
@@ -235,6 +248,7 @@ OutputRun::OutputRun() {
   if (run_open) throw Error("internal: only one OutputRun may be open at a time");
   SignalsBlocked blocked;
   run_open = true;
+  inputs_of_run.emplace();
   struct sigaction action {};
   action.sa_handler = remove_staged_and_reraise;
   sigemptyset(&action.sa_mask);
@@ -249,10 +263,16 @@ OutputRun::~OutputRun() {
   for (std::size_t i = 0; i < std::size(kHandledSignals); ++i) {
     ::sigaction(kHandledSignals[i], &previous_actions[i], nullptr);
   }
+  inputs_of_run.reset();
   run_open = false;
 }
 
 void OutputRun::commit() {
+  // Inputs read after a file was staged (a dataset's images, a later frame's map) are checked here,
+  // before anything is put in place.
+  for (const Staged& file : staged) {
+    if (!file.temporary.empty()) refuse_if_input(file.target);
+  }
   SignalsBlocked blocked;
   std::size_t next = 0;
   try {

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <limits>
 #include <numeric>
+#include <sstream>
 #include <string>
 #include <utility>
 
@@ -18,6 +19,8 @@ namespace {
 
 constexpr double kMaxCellsPerAxis = 1 << 30;  // cell coordinates must fit comfortably in int32
 constexpr double kMaxRasterCells = 1 << 28;   // 256 Mi cells: the raster method refuses larger boxes
+// The cell comparisons of the sparse labelling (a few seconds of work at 10^9).
+constexpr double kMaxCellPairs = 1e9;
 
 void validate_options(const LabelingOptions& options) {
   if (!std::isfinite(options.cell_size) || options.cell_size <= 0.0)
@@ -127,6 +130,40 @@ void unite(std::vector<int>& parent, int a, int b) {
   parent[static_cast<size_t>(a)] = b;  // the smaller index is the root: deterministic
 }
 
+// The forward neighbours of a bucket (itself excluded): each unordered pair of buckets once.
+constexpr int kForward[4][2] = {{0, 1}, {1, -1}, {1, 0}, {1, 1}};
+
+std::uint64_t neighbour_key(std::uint64_t key, const int offset[2]) {
+  return (((key >> 32) + static_cast<std::uint64_t>(offset[0])) << 32) |
+         ((key & 0xffffffffu) + static_cast<std::uint64_t>(static_cast<std::int64_t>(offset[1])));
+}
+
+// Every cell is compared with every cell of its bucket and of the neighbouring buckets, so a large
+// dilation (buckets of 2k + 2 cells a side) makes the work grow with the square of the cells: it is
+// counted before any is done and refused beyond kMaxCellPairs.
+void check_pair_tests(const std::vector<std::uint64_t>& keys, const std::vector<int>& start, const LabelingOptions& options) {
+  double pairs = 0.0;
+  for (std::size_t b = 0; b < keys.size(); ++b) {
+    const double size = start[b + 1] - start[b];
+    pairs += size * (size - 1) / 2;
+    for (const auto& offset : kForward) {
+      if (offset[1] < 0 && (keys[b] & 0xffffffffu) == 0) continue;
+      const auto found = std::lower_bound(keys.begin(), keys.end(), neighbour_key(keys[b], offset));
+      if (found != keys.end() && *found == neighbour_key(keys[b], offset)) {
+        const std::size_t other = static_cast<std::size_t>(found - keys.begin());
+        pairs += size * (start[other + 1] - start[other]);
+      }
+    }
+  }
+  if (pairs > kMaxCellPairs) {
+    std::ostringstream text;
+    text << "labelling these points with a dilation of " << options.dilation << " at " << options.cell_size
+         << " m per cell compares " << pairs << " pairs of cells, more than the limit of " << kMaxCellPairs
+         << ": use a smaller dilation or a larger cell size";
+    throw Error(text.str());
+  }
+}
+
 Labeling label_sparse(const Cells& cells, const LabelingOptions& options) {
   const int k = options.dilation;
   // No two joined cells are more than 2k+1 apart along an axis, so buckets of side 2k+2 need only
@@ -150,6 +187,7 @@ Labeling label_sparse(const Cells& cells, const LabelingOptions& options) {
   }
   bucket_start.push_back(static_cast<int>(n));
 
+  check_pair_tests(bucket_keys, bucket_start, options);
   std::vector<int> parent(n);
   std::iota(parent.begin(), parent.end(), 0);
   auto join_ranges = [&](int a_begin, int a_end, int b_begin, int b_end, bool same) {
@@ -163,15 +201,12 @@ Labeling label_sparse(const Cells& cells, const LabelingOptions& options) {
     }
   };
   // Each unordered pair of neighbouring buckets is visited once: itself, then the forward half.
-  constexpr int kForward[4][2] = {{0, 1}, {1, -1}, {1, 0}, {1, 1}};
   for (size_t b = 0; b < bucket_keys.size(); ++b) {
-    const std::uint64_t bx = bucket_keys[b] >> 32;
     const std::uint64_t by = bucket_keys[b] & 0xffffffffu;
     join_ranges(bucket_start[b], bucket_start[b + 1], bucket_start[b], bucket_start[b + 1], true);
     for (const auto& offset : kForward) {
       if (offset[1] < 0 && by == 0) continue;
-      const std::uint64_t key = ((bx + static_cast<std::uint64_t>(offset[0])) << 32) |
-                                (by + static_cast<std::uint64_t>(static_cast<std::int64_t>(offset[1])));
+      const std::uint64_t key = neighbour_key(bucket_keys[b], offset);
       const auto found = std::lower_bound(bucket_keys.begin(), bucket_keys.end(), key);
       if (found == bucket_keys.end() || *found != key) continue;
       const auto other = static_cast<size_t>(found - bucket_keys.begin());

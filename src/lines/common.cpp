@@ -192,4 +192,11 @@ void require_positive(double value, const char* name) {
   if (!std::isfinite(value) || value <= 0.0) throw Error(std::string("the option ") + name + " must be a positive number");
 }
 
+void SplitBudget::spend(std::size_t visits) {
+  spent_ += visits;
+  if (spent_ > kMaxSplitVisits)
+    throw Error(std::string("the scan's ") + method_ + " split needs more than " + std::to_string(kMaxSplitVisits) +
+                " point visits (the limit; a real scan needs a few per beam): a degenerate scan");
+}
+
 }  // namespace topocut::detail

@@ -1,6 +1,7 @@
 #pragma once
 // Internal pieces shared by the extractors.
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 #include "lines/moments.h"
@@ -56,6 +57,23 @@ void refine_labels(const std::vector<ScanPoint>& points, const std::vector<bool>
 // Lines of the groups with at least min_points points, in order.
 std::vector<Line> lines_from_runs(const Scan& scan, const std::vector<ScanPoint>& points,
                                   const std::vector<PointRun>& groups, std::size_t min_points);
+
+// The point visits the recursive splits of IEPF and SMF may make on one scan, in all. A scan whose
+// splits each peel one point off would need n^2 / 2 (hours at 4 million beams); a real scan needs
+// a few per beam.
+inline constexpr std::uint64_t kMaxSplitVisits = 2'000'000'000;
+
+// Counts a split phase's visits; spend() throws Error naming the method past kMaxSplitVisits.
+class SplitBudget {
+ public:
+  explicit SplitBudget(const char* method) : method_(method) {}
+  void spend(std::size_t visits);
+  std::uint64_t spent() const { return spent_; }
+
+ private:
+  const char* method_;
+  std::uint64_t spent_ = 0;
+};
 
 // Throws Error unless value is finite and > 0 (name used in the message).
 void require_positive(double value, const char* name);

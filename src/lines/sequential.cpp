@@ -119,6 +119,7 @@ std::vector<Line> extract_lines_iepf(const Scan& scan, const IepfOptions& option
   std::vector<PointRun> groups;
   std::vector<bool> neighbours;
   std::vector<PointRun> stack;
+  detail::SplitBudget budget("IEPF");
   for (const PointRun& run : split_at_breakpoints(scan, points, options.breakpoints)) {
     // Split phase (depth-first, left part first, so pieces come out in scan order).
     std::vector<PointRun> pieces;
@@ -126,6 +127,7 @@ std::vector<Line> extract_lines_iepf(const Scan& scan, const IepfOptions& option
     while (!stack.empty()) {
       const PointRun r = stack.back();
       stack.pop_back();
+      budget.spend(r.size());
       const Chord chord(points[r.first].point, points[r.last].point);
       double worst = 0.0;
       std::size_t at = r.first;

@@ -1,9 +1,12 @@
 #include "topocut/lines/smf.h"
 
 #include <algorithm>
+#include <array>
+#include <set>
 #include <cmath>
 #include <limits>
 
+#include "lines/centre_index.h"
 #include "lines/common.h"
 #include "topocut/core/error.h"
 
@@ -37,7 +40,8 @@ std::size_t initial_cut(const std::vector<ScanPoint>& points, const Set& set) {
 }
 
 // Splits a set in two with fuzzy c-lines (C = 2). Returns the two crisp parts (both non-empty).
-std::pair<Set, Set> fuzzy_split(const std::vector<ScanPoint>& points, const Set& set, const SmfOptions& options) {
+std::pair<Set, Set> fuzzy_split(const std::vector<ScanPoint>& points, const Set& set, const SmfOptions& options,
+                                detail::SplitBudget& budget) {
   const std::size_t n = set.size();
   const std::size_t cut = initial_cut(points, set);
   Set crisp_a(set.begin(), set.begin() + static_cast<std::ptrdiff_t>(cut));
@@ -51,6 +55,7 @@ std::pair<Set, Set> fuzzy_split(const std::vector<ScanPoint>& points, const Set&
   std::vector<double> u(n, 0.0);  // membership in line a (line b has 1 - u)
   for (std::size_t i = 0; i < n; ++i) u[i] = i < cut ? 1.0 : 0.0;
   for (int iteration = 0; iteration < options.max_iterations; ++iteration) {
+    budget.spend(n);
     double change = 0.0;
     Moments ma, mb;
     for (std::size_t i = 0; i < n; ++i) {
@@ -89,45 +94,75 @@ struct Cluster {
   Point2 centre() const { return {moments.sx / moments.n, moments.sy / moments.n}; }
 };
 
+// The paper's merge: while some line can be fused with the better (lower fused sigma) of its two
+// nearest lines by centre of gravity within sigma_max, the first such line in scan order is fused
+// (into the earlier of the two) and the search starts again from the first line. The lines that
+// were tried and could not merge are remembered as settled until one of their two nearest changes
+// (merged away, moved, or a fused centre comes nearer), so each fusion re-examines only those
+// instead of starting over: the same fusions in the same order, in about n log n instead of n^2.
 void merge_phase(std::vector<Cluster>& clusters, double sigma_max) {
-  bool merged = true;
-  while (merged && clusters.size() > 1) {
-    merged = false;
-    for (std::size_t i = 0; i < clusters.size() && !merged; ++i) {
-      // The two nearest lines by centre of gravity (ties to the lower index).
-      std::size_t near[2] = {clusters.size(), clusters.size()};
-      double near_d[2] = {std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
-      const Point2 ci = clusters[i].centre();
-      for (std::size_t j = 0; j < clusters.size(); ++j) {
-        if (j == i) continue;
-        const double d = distance(ci, clusters[j].centre());
-        if (d < near_d[0]) {
-          near[1] = near[0], near_d[1] = near_d[0];
-          near[0] = j, near_d[0] = d;
-        } else if (d < near_d[1]) {
-          near[1] = j, near_d[1] = d;
-        }
-      }
-      std::size_t best = clusters.size();
-      double best_sigma = std::numeric_limits<double>::infinity();
-      for (const std::size_t j : near) {
-        if (j >= clusters.size()) continue;
-        const double sigma = (clusters[i].moments + clusters[j].moments).sigma();
-        if (sigma < best_sigma) best_sigma = sigma, best = j;
-      }
-      if (best < clusters.size() && best_sigma <= sigma_max) {
-        Cluster& keep = clusters[std::min(i, best)];
-        Cluster& gone = clusters[std::max(i, best)];
-        keep.moments = keep.moments + gone.moments;
-        Set fused;
-        fused.reserve(keep.set.size() + gone.set.size());
-        std::merge(keep.set.begin(), keep.set.end(), gone.set.begin(), gone.set.end(), std::back_inserter(fused));
-        keep.set = std::move(fused);
-        clusters.erase(clusters.begin() + static_cast<std::ptrdiff_t>(std::max(i, best)));
-        merged = true;
-      }
+  const int n = static_cast<int>(clusters.size());
+  std::vector<Point2> centres;
+  for (const Cluster& c : clusters) centres.push_back(c.centre());
+  detail::CentreIndex index(std::move(centres));
+  std::vector<char> live(clusters.size(), 1);
+  std::vector<std::array<int, 2>> nearest(clusters.size(), {-1, -1});
+  std::vector<std::vector<int>> nearest_of(clusters.size());  // who had this one among their two nearest
+  std::vector<int> next(clusters.size(), -1), last(clusters.size());  // each live cluster's list of members
+  std::set<int> unsettled;
+  for (int i = 0; i < n; ++i) unsettled.insert(i), last[i] = i;
+  std::vector<int> reached;
+  while (!unsettled.empty()) {
+    const int i = *unsettled.begin();
+    unsettled.erase(unsettled.begin());
+    if (!live[i]) continue;
+    nearest[i] = index.nearest_two(i);
+    int best = -1;
+    double best_sigma = std::numeric_limits<double>::infinity();
+    for (const int j : nearest[i]) {
+      if (j < 0) continue;
+      nearest_of[j].push_back(i);
+      const double sigma = (clusters[i].moments + clusters[j].moments).sigma();
+      if (sigma < best_sigma) best_sigma = sigma, best = j;
     }
+    const Point2 centre = clusters[i].centre();
+    index.set_reach(i, nearest[i][1] >= 0 ? distance(centre, clusters[nearest[i][1]].centre())
+                                          : std::numeric_limits<double>::infinity());
+    if (best < 0 || best_sigma > sigma_max) continue;  // settled
+    const int keep = std::min(i, best), gone = std::max(i, best);
+    Cluster& kept = clusters[keep];
+    kept.moments = kept.moments + clusters[gone].moments;
+    next[last[keep]] = gone;  // the members join in a list; their points are gathered at the end
+    last[keep] = last[gone];
+    live[gone] = 0;
+    index.remove(gone);
+    index.move(keep, kept.centre());
+    index.set_reach(keep, -std::numeric_limits<double>::infinity());
+    unsettled.insert(keep);
+    for (const int changed : {keep, gone}) {
+      for (const int c : nearest_of[changed])
+        if (live[c] && (nearest[c][0] == changed || nearest[c][1] == changed)) unsettled.insert(c);
+      nearest_of[changed].clear();
+    }
+    reached.clear();
+    index.within_reach(kept.centre(), reached);
+    for (const int c : reached) unsettled.insert(c);
   }
+  // Each point's line, then the points in order: every set increasing, in one pass over the points.
+  std::vector<Cluster> merged;
+  std::vector<int> owner;
+  for (int i = 0; i < n; ++i) {
+    if (!live[i]) continue;
+    for (int member = i; member >= 0; member = next[member])
+      for (const std::size_t k : clusters[member].set) {
+        if (k >= owner.size()) owner.resize(k + 1, -1);
+        owner[k] = static_cast<int>(merged.size());
+      }
+    merged.push_back({{}, clusters[i].moments});
+  }
+  for (std::size_t k = 0; k < owner.size(); ++k)
+    if (owner[k] >= 0) merged[static_cast<std::size_t>(owner[k])].set.push_back(k);
+  clusters = std::move(merged);
 }
 
 }  // namespace
@@ -141,6 +176,7 @@ std::vector<Line> extract_lines_smf(const Scan& scan, const SmfOptions& options)
 
   std::vector<Cluster> clusters;
   std::vector<Set> stack;
+  detail::SplitBudget budget("SMF");
   const std::vector<PointRun> runs = split_at_breakpoints(scan, points, options.breakpoints);
   for (const PointRun& run : runs) {
     Set set(run.size());
@@ -150,12 +186,13 @@ std::vector<Line> extract_lines_smf(const Scan& scan, const SmfOptions& options)
     while (!stack.empty()) {
       Set s = std::move(stack.back());
       stack.pop_back();
+      budget.spend(s.size());
       const Moments m = moments_of(points, s);
       if (s.size() <= 2 || m.sigma() <= options.sigma_max) {
         clusters.push_back({std::move(s), m});
         continue;
       }
-      auto [a, b] = fuzzy_split(points, s, options);
+      auto [a, b] = fuzzy_split(points, s, options, budget);
       stack.push_back(std::move(b));
       stack.push_back(std::move(a));
     }

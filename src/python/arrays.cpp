@@ -1,6 +1,7 @@
 #include "python/arrays.h"
 
 #include <cmath>
+#include <cstring>
 
 #include "topocut/core/error.h"
 
@@ -25,6 +26,17 @@ GridArray grid_view(const py::array& grid) {
   a.width = static_cast<int>(grid.shape(1));
   a.row_stride = grid.shape(0) > 1 ? grid.strides(0) : a.width;
   a.encoding = int8 ? CellEncoding::kOccupancy : CellEncoding::kGrey;
+  return a;
+}
+
+GridArray grid_copy(const py::array& grid, std::vector<unsigned char>& storage) {
+  GridArray a = grid_view(grid);
+  const std::size_t width = static_cast<std::size_t>(a.width);
+  storage.resize(width * static_cast<std::size_t>(a.height));
+  for (int r = 0; r < a.height; ++r)
+    std::memcpy(storage.data() + width * r, static_cast<const unsigned char*>(a.data) + a.row_stride * r, width);
+  a.data = storage.data();
+  a.row_stride = a.width;
   return a;
 }
 

@@ -18,6 +18,11 @@ namespace py = pybind11;
 // stride). grid must stay alive while the view is used.
 GridArray grid_view(const py::array& grid);
 
+// grid_view() of a copy of grid's cells kept in storage: taken while the caller holds the GIL, so
+// that no Python thread can change or free the cells (ndarray.resize(refcheck=False)) while the
+// library reads them with the GIL released.
+GridArray grid_copy(const py::array& grid, std::vector<unsigned char>& storage);
+
 // An (n, 2) float array of the points.
 py::array_t<double> points_array(const std::vector<Point2>& points);
 

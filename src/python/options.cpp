@@ -3,6 +3,7 @@
 #include <pybind11/stl.h>
 
 #include "topocut/core/error.h"
+#include "topocut/io/map_load_flags.h"
 #include "topocut/segmentation/merge_model.h"
 #include "topocut/segmentation/segment_switches.h"
 
@@ -16,10 +17,21 @@ std::string keyword(const std::string& flag) {
   return name;
 }
 
-const OptionRow<SegmentSettings>* find_keyword(const std::string& name) {
-  for (const OptionRow<SegmentSettings>& row : segment_option_rows())
+template <typename Target>
+const OptionRow<Target>* find_keyword(const std::vector<OptionRow<Target>>& rows, const std::string& name) {
+  for (const OptionRow<Target>& row : rows)
     if (keyword(row.name) == name) return &row;
   return nullptr;
+}
+
+template <typename Target>
+std::string keyword_names(const std::vector<OptionRow<Target>>& rows) {
+  std::string names;
+  for (const OptionRow<Target>& row : rows) {
+    if (!names.empty()) names += ", ";
+    names += keyword(row.name);
+  }
+  return names;
 }
 
 double number(const py::handle& value, const std::string& name) {
@@ -42,20 +54,36 @@ T pop(py::dict& kwargs, const char* name, T fallback) {
   }
 }
 
-// The segment options from kwargs (the segment command's table, segment_option_rows()) over s.
-SegmentOptions settings_from(const py::dict& kwargs, SegmentSettings s) {
+// Sets every keyword of kwargs in target through its row of rows: the command's check and message,
+// with the keyword's name. An unknown keyword is a TypeError listing `names`.
+template <typename Target>
+void set_keywords(const std::vector<OptionRow<Target>>& rows, const py::dict& kwargs, Target& target, const std::string& names) {
   for (const auto& [key, value] : kwargs) {
-    const std::string name = key.cast<std::string>();
-    const OptionRow<SegmentSettings>* row = find_keyword(name);
-    if (row == nullptr)
-      throw py::type_error("unexpected keyword argument '" + name + "'; options are: " + segment_option_names());
+    const std::string name = py::str(key);
+    const OptionRow<Target>* row = find_keyword(rows, name);
+    if (row == nullptr) throw py::type_error("unexpected keyword argument '" + name + "'; options are: " + names);
     if (row->is_switch()) {
-      row->set(s, py::reinterpret_borrow<py::object>(value).cast<bool>() ? 1.0 : 0.0);
+      row->set(target, py::bool_(py::reinterpret_borrow<py::object>(value)) ? 1.0 : 0.0);
     } else {
-      set_option(*row, s, number(value, name), name);
+      set_option(*row, target, number(value, name), name);
     }
   }
+}
+
+// The segment options from kwargs (the segment command's table, segment_option_rows()) over s.
+SegmentOptions settings_from(const py::dict& kwargs, SegmentSettings s) {
+  set_keywords(segment_option_rows(), kwargs, s, segment_option_names());
   return to_segment_options(s);
+}
+
+// A value of kwargs checked by the map-loading row named flag (its range and message), or fallback.
+double checked_map_option(py::dict& kwargs, const char* flag, double fallback) {
+  const std::string name = keyword(flag);
+  if (!kwargs.contains(name.c_str())) return fallback;
+  const double value = number(kwargs[name.c_str()], name);
+  PyDict_DelItemString(kwargs.ptr(), name.c_str());
+  check_option_value(find_option(map_load_option_rows(), std::string(flag))->range, value, name);
+  return value;
 }
 
 }  // namespace
@@ -66,8 +94,8 @@ GridReading take_grid_reading(py::dict& kwargs) {
   r.free_thresh = pop<double>(kwargs, "free_thresh", r.free_thresh);
   r.occupied_thresh = pop<double>(kwargs, "occupied_thresh", r.occupied_thresh);
   const bool free_given = kwargs.contains("free_threshold"), occupied_given = kwargs.contains("occupied_threshold");
-  r.free_threshold = pop<int>(kwargs, "free_threshold", r.free_threshold);
-  r.occupied_threshold = pop<int>(kwargs, "occupied_threshold", r.occupied_threshold);
+  r.free_threshold = static_cast<int>(checked_map_option(kwargs, "free-threshold", r.free_threshold));
+  r.occupied_threshold = static_cast<int>(checked_map_option(kwargs, "occupied-threshold", r.occupied_threshold));
   // As the command: giving a threshold means fixed thresholds.
   r.fixed_thresholds = pop<bool>(kwargs, "fixed_thresholds", false) || free_given || occupied_given;
   if (!r.row_order.empty() && r.row_order != "bottom-up" && r.row_order != "top-down")
@@ -83,6 +111,7 @@ void apply(const GridReading& reading, double resolution, const py::handle& orig
   }
   if (pose.size() != 2 && pose.size() != 3) throw Error("origin must be (x, y) or (x, y, yaw) in metres and radians");
   array.origin = {pose[0], pose[1], pose.size() == 3 ? pose[2] : 0.0};
+  check_option_value(find_option(map_load_option_rows(), std::string("resolution"))->range, resolution, "resolution");
   array.resolution = resolution;
   const bool bottom_up = reading.row_order.empty() ? array.encoding == CellEncoding::kOccupancy : reading.row_order == "bottom-up";
   array.row_order = bottom_up ? RowOrder::kBottomUp : RowOrder::kTopDown;
@@ -121,12 +150,17 @@ IncrementalOptions incremental_options(py::dict kwargs) {
 }
 
 std::string segment_option_names() {
-  std::string names;
-  for (const OptionRow<SegmentSettings>& row : segment_option_rows()) {
-    names += keyword(row.name);
-    names += ", ";
-  }
-  return names + "merge_model, row_order, free_thresh, occupied_thresh, fixed_thresholds, free_threshold, occupied_threshold";
+  return keyword_names(segment_option_rows()) +
+         ", merge_model, row_order, free_thresh, occupied_thresh, fixed_thresholds, free_threshold, occupied_threshold";
 }
+
+MapLoadOptions map_load_options(const py::dict& kwargs) {
+  MapLoadOptions load;
+  set_keywords(map_load_option_rows(), kwargs, load, map_load_option_names());
+  validate(load);
+  return load;
+}
+
+std::string map_load_option_names() { return keyword_names(map_load_option_rows()); }
 
 }  // namespace topocut::python

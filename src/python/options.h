@@ -7,6 +7,7 @@
 #include <pybind11/pybind11.h>
 
 #include "topocut/core/grid_array.h"
+#include "topocut/io/map_loader.h"
 #include "topocut/segmentation/incremental_segmenter.h"
 #include "topocut/segmentation/segmenter.h"
 
@@ -42,5 +43,13 @@ IncrementalOptions incremental_options(py::dict kwargs);
 
 // The names segment() accepts, for docstrings.
 std::string segment_option_names();
+
+// load_map()'s options: the map-loading rows of every command (map_load_option_rows()) by keyword
+// (resolution, fixed_thresholds, free_threshold, occupied_threshold, max_megapixels), each checked
+// and named as there; giving a threshold means fixed thresholds, as on the command line.
+MapLoadOptions map_load_options(const py::dict& kwargs);
+
+// Their names, for docstrings and errors.
+std::string map_load_option_names();
 
 }  // namespace topocut::python

@@ -1,5 +1,7 @@
 // segment(), load_map(), IncrementalSegmenter and their result types.
 #include <memory>
+#include <mutex>
+#include <vector>
 
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
@@ -55,16 +57,18 @@ std::vector<RoomView> rooms_of(const Shared& result) {
   return rooms;
 }
 
-// The grid and its frame as the library wants them; checks raise ValueError.
-GridArray grid_array(const py::array& grid, double resolution, const py::handle& origin, const GridReading& reading) {
-  GridArray a = grid_view(grid);
+// A copy of the grid and its frame as the library wants them; checks raise ValueError.
+GridArray grid_array(const py::array& grid, double resolution, const py::handle& origin, const GridReading& reading,
+                     std::vector<unsigned char>& storage) {
+  GridArray a = grid_copy(grid, storage);
   apply(reading, resolution, origin, a);
   return a;
 }
 
 Result segment_py(const py::array& grid, double resolution, const py::object& origin, py::kwargs kwargs) {
   const GridReading reading = take_grid_reading(kwargs);
-  const GridArray array = grid_array(grid, resolution, origin, reading);
+  std::vector<unsigned char> cells;
+  const GridArray array = grid_array(grid, resolution, origin, reading, cells);
   const SegmentOptions options = segment_options(kwargs);
   std::shared_ptr<GridSegmentation> out;
   {
@@ -74,12 +78,9 @@ Result segment_py(const py::array& grid, double resolution, const py::object& or
   return {out};
 }
 
-Map load_map_py(const std::string& path, double resolution, bool fixed_thresholds, int free_threshold, int occupied_threshold) {
-  MapLoadOptions load;
-  load.resolution = resolution;
-  load.detect_palette = !fixed_thresholds;
-  load.free_min = free_threshold;
-  load.occupied_max = occupied_threshold;
+Map load_map_py(const std::string& path, const py::object& resolution, py::kwargs kwargs) {
+  if (!resolution.is_none()) kwargs["resolution"] = resolution;  // positional, as before keywords
+  const MapLoadOptions load = map_load_options(kwargs);
   OccupancyGrid grid;
   std::string cells;
   {
@@ -100,31 +101,47 @@ Map load_map_py(const std::string& path, double resolution, bool fixed_threshold
   return map;
 }
 
+// One segmenter, safe to share between threads: its calls take turns on a lock of its own, taken
+// with the GIL released (a thread waiting for the lock while holding the GIL would stop the one
+// holding the lock from ever returning into Python).
 class PyIncremental {
  public:
   explicit PyIncremental(py::kwargs kwargs) : segmenter_(incremental_options(kwargs)) {}
   Result update(const py::array& grid, double resolution, const py::object& origin, py::kwargs kwargs) {
     const GridReading reading = take_grid_reading(kwargs);
     if (!kwargs.empty()) throw py::type_error("update() takes only the grid-reading options; give segmentation options to IncrementalSegmenter()");
-    const GridArray array = grid_array(grid, resolution, origin, reading);
+    std::vector<unsigned char> cells;
+    const GridArray array = grid_array(grid, resolution, origin, reading, cells);
     std::shared_ptr<GridSegmentation> out;
     {
       py::gil_scoped_release release;
+      const std::lock_guard<std::mutex> lock(mutex_);
       out = std::make_shared<GridSegmentation>(update_grid(segmenter_, array));
     }
     return {out};
   }
-  std::string last_update() const {
-    switch (segmenter_.last_update().kind) {
+  std::string last_update() {
+    IncrementalUpdateReport::Kind kind;
+    {
+      py::gil_scoped_release release;
+      const std::lock_guard<std::mutex> lock(mutex_);
+      kind = segmenter_.last_update().kind;
+    }
+    switch (kind) {
       case IncrementalUpdateReport::Kind::kUnchanged: return "unchanged";
       case IncrementalUpdateReport::Kind::kIncremental: return "incremental";
       case IncrementalUpdateReport::Kind::kBatch: return "batch";
     }
     return "";
   }
-  void reset() { segmenter_.reset(); }
+  void reset() {
+    py::gil_scoped_release release;
+    const std::lock_guard<std::mutex> lock(mutex_);
+    segmenter_.reset();
+  }
 
  private:
+  std::mutex mutex_;
   IncrementalSegmenter segmenter_;
 };
 
@@ -190,10 +207,11 @@ void bind_segmentation(py::module_& m) {
          segment_option_names() +
          ".\nReturns a Segmentation (labels in the grid's row order, rooms and passages in the map frame).\n"
          "Raises ValueError on bad input. The GIL is released while segmenting.").c_str());
-  m.def("load_map", &load_map_py, py::arg("path"), py::arg("resolution") = 0.05, py::arg("fixed_thresholds") = false,
-        py::arg("free_threshold") = MapLoadOptions{}.free_min, py::arg("occupied_threshold") = MapLoadOptions{}.occupied_max,
-        "Loads a ROS map_server YAML or an image as the topocut command does; returns a Map whose int8 grid\n"
-        "(ROS encoding and row order) segment() takes as it is. Raises ValueError on a bad file.");
+  m.def("load_map", &load_map_py, py::arg("path"), py::arg("resolution") = py::none(),
+        ("Loads a ROS map_server YAML or an image as the topocut command does; returns a Map whose int8 grid\n"
+         "(ROS encoding and row order) segment() takes as it is. Keywords: the command's map-loading options\n"
+         "with '_' for '-' (" + map_load_option_names() + "), checked as there; giving a threshold means\n"
+         "fixed thresholds. Raises ValueError on a bad file or option.").c_str());
   py::class_<PyIncremental>(m, "IncrementalSegmenter",
                             "Segments a growing map update by update, reusing the rooms a change did not reach (ids stay).\n"
                             "Keywords: segment()'s options and absorb_area, absorb_fraction, batch_fraction, neighbours_across_doors,\n"

@@ -37,11 +37,14 @@ inline std::string file_text(const std::string& path) {
 }
 
 // `topocut ARGUMENTS` (a shell fragment: quoted as the caller needs, may redirect stdin) with
-// stdout and stderr captured through files in dir, killed after `seconds` (exit code 124).
-inline CliResult run_cli_line(const std::filesystem::path& dir, const std::string& arguments, int seconds = 600) {
+// stdout and stderr captured through files in dir, killed after `seconds` (exit code 124); `before`
+// is a shell fragment run first in the same shell (a ulimit).
+inline CliResult run_cli_line(const std::filesystem::path& dir, const std::string& arguments, int seconds = 600,
+                              const std::string& before = "") {
   const std::string out = (dir / "stdout.txt").string(), err = (dir / "stderr.txt").string();
   // Appended piece by piece: GCC 12 warns falsely (-Wrestrict) on "literal" + a temporary string.
-  std::string line = "timeout -s KILL ";
+  std::string line = before;
+  line += "timeout -s KILL ";
   line += std::to_string(seconds);
   line += ' ';
   line += shell_quoted(TOPOCUT_CLI);

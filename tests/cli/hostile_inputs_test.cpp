@@ -142,8 +142,8 @@ TEST(HostileInputs, FlaserWithMoreValuesThanAnnouncedIsRefusedNamingTheLine) {
 TEST(HostileInputs, ResolutionsOutsideTheRangeAreRefusedWithTheRange) {
   const TempDir dir;
   const std::string map = small_map(dir);
-  for (const char* r : {"1e308", "1e-12"})
-    expect_clean_error(run_cli(dir, "segment", {map, "--resolution", r}), "segment", "[0.0001, 1000] metres per cell");
+  for (const char* r : {"1e308", "1e-12"})  // a bad option (the table's range): a usage error, as --concavity
+    expect_clean_error(run_cli(dir, "segment", {map, "--resolution", r}), "segment", "[0.0001, 1000] metres per cell", 2);
   const std::string yaml = dir.write("m.yaml", "image: map.png\nresolution: 1e308\norigin: [0, 0, 0]\n");
   expect_clean_error(run_cli(dir, "segment", {yaml}), "segment", "[0.0001, 1000] metres per cell");
   const std::string far = dir.write("f.yaml", "image: map.png\nresolution: 0.05\norigin: [1e300, 0, 0]\n");
@@ -201,6 +201,41 @@ TEST(HostileInputs, WallsRefusesBadOptionsBeforeReadingTheLog) {
   TempDir dir;
   expect_clean_error(run_cli(dir, "walls", {dir.file("missing.log"), "--thickness", "-1"}), "walls",
                      "wall thickness", 2);
+}
+
+}  // namespace
+
+namespace {
+
+// A memory limit (ulimit -v) below what an 8000 x 8000 map needs: OpenCV's failed allocation is
+// reported as running out of memory, not as an internal failure. ASan reserves terabytes of
+// address space, so the limit cannot apply to a sanitizer build.
+TEST(HostileInputs, OutOfMemoryIsNamedAsSuch) {
+#if defined(__SANITIZE_ADDRESS__)
+  GTEST_SKIP() << "a virtual memory limit does not work with AddressSanitizer";
+#else
+  const TempDir dir;
+  cv::Mat map(8000, 8000, CV_8UC1, cv::Scalar(255));
+  for (int i = 0; i < map.rows; i += 200) map.row(i).setTo(0), map.col(i).setTo(0);
+  ASSERT_TRUE(topocut::testing::write_test_image(dir.file("big.png"), map));
+  const std::string line = "segment " + topocut::testing::shell_quoted(dir.file("big.png")) + " --trivial";
+  const CliResult r = topocut::testing::run_cli_line(dir.path(), line, 60, "ulimit -v 300000;");
+  expect_clean_error(r, "segment", "out of memory");
+  EXPECT_EQ(r.err.find("internal failure"), std::string::npos) << r.err;
+#endif
+}
+
+// A config file whose YAML is well formed but not a mapping of option names: one line naming the
+// file and the line, a usage error (it was "internal failure: yaml-cpp: ... bad conversion").
+TEST(HostileInputs, ConfigKeysThatAreNotNamesAreNamed) {
+  const TempDir dir;
+  const std::string map = small_map(dir);
+  for (const char* text : {"? [a, b]\n: 1\n", "{[1]: 2}\n", "trivial: true\n? {x: 1}\n: 2\n"}) {
+    const std::string config = dir.write("c.yaml", text);
+    expect_clean_error(run_cli(dir, "segment", {map, "--config", config}), "segment",
+                       "c.yaml', line ", 2);
+    expect_clean_error(run_cli(dir, "segment", {map, "--config", config}), "segment", "a key must be an option name", 2);
+  }
 }
 
 }  // namespace

@@ -46,6 +46,39 @@ TEST(OutputsCli, AnOutputOnTheInputIsRefusedAndTheInputKept) {
   EXPECT_NE(file_text(polygon).find("outer"), std::string::npos);
 }
 
+// Every file a run reads is an input (core/input_file.h records them as they are opened): a
+// --config file, the ground truth explore reads, a map that a later frame would overwrite.
+TEST(OutputsCli, EveryFileTheRunReadsIsAnInput) {
+  TempDir dir;
+  // The issue's case: a config file that names itself as an output.
+  const std::string config = dir.write("c.yaml", "out-json: " + dir.file("c.yaml") + "\ntrivial: true\n");
+  expect_clean_error(run_cli(dir, "segment", {bundled("floorplan.png"), "--config", config}), "segment",
+                     "c.yaml' is both an input and an output");
+  EXPECT_EQ(file_text(config), "out-json: " + dir.file("c.yaml") + "\ntrivial: true\n");
+  // Under another name (a hard link), and as the output of another command.
+  fs::create_hard_link(config, dir.file("linked.yaml"));
+  expect_clean_error(run_cli(dir, "segment", {bundled("floorplan.png"), "--config", config, "--out-svg", dir.file("linked.yaml")}),
+                     "segment", "both an input and an output");
+  const std::string polygon = dir.write("p.json", R"({"outer": [[0,0],[10,0],[10,4],[4,4],[4,10],[0,10]]})");
+  const std::string decompose_config = dir.write("d.yaml", "tau: 1\n");
+  expect_clean_error(run_cli(dir, "decompose", {polygon, "--config", decompose_config, "-o", decompose_config}), "decompose",
+                     "both an input and an output");
+  EXPECT_EQ(file_text(decompose_config), "tau: 1\n");
+
+  // explore: the map lies in the frames folder under the name of a later frame; the run is refused
+  // before that frame replaces it (when the outputs are put in place), and no frame is left.
+  const std::string frames = dir.file("frames");
+  fs::create_directories(frames);
+  fs::copy_file(bundled("floorplan.png"), frames + "/frame_00002.png");
+  const std::string map_before = file_text(frames + "/frame_00002.png");
+  const CliResult r = run_cli(dir, "explore", {frames + "/frame_00002.png", "--frames", frames, "--no-clean"});
+  expect_clean_error(r, "explore", "rame_00002.png' is both an input and an output");
+  EXPECT_EQ(file_text(frames + "/frame_00002.png"), map_before);
+  std::vector<std::string> left;
+  for (const auto& entry : fs::directory_iterator(frames)) left.push_back(entry.path().filename().string());
+  EXPECT_EQ(left, std::vector<std::string>{"frame_00002.png"});
+}
+
 TEST(OutputsCli, TwoOutputsOnOneFileAreRefusedBeforeAnyWork) {
   TempDir dir;
   // The log does not exist: the outputs are checked first, so that is not the error reported.

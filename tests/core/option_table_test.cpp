@@ -7,6 +7,7 @@
 #include <string>
 
 #include "topocut/core/error.h"
+#include "topocut/core/value_ranges.h"
 
 namespace topocut {
 namespace {
@@ -39,6 +40,25 @@ TEST(OptionTable, RangesAreCheckedWithTheOptionsName) {
     FAIL();
   } catch (const Error& e) {
     EXPECT_EQ(std::string(e.what()), "--door-width must be a positive number");
+  }
+}
+
+// Lengths, areas and resolutions are the library's own ranges (value_ranges.h), with its message.
+TEST(OptionTable, LengthAreaAndResolutionRangesAreTheLibrarysOwn) {
+  EXPECT_NO_THROW(check_option_value(OptionRange::kLength, kMaxLength, "--concavity"));
+  EXPECT_THROW(check_option_value(OptionRange::kLength, 0.0, "--concavity"), Error);
+  EXPECT_THROW(check_option_value(OptionRange::kLength, kMaxLength * 1.01, "--concavity"), Error);
+  EXPECT_NO_THROW(check_option_value(OptionRange::kLengthOrZero, 0.0, "--robot-radius"));
+  EXPECT_THROW(check_option_value(OptionRange::kLengthOrZero, std::nan(""), "--robot-radius"), Error);
+  EXPECT_NO_THROW(check_option_value(OptionRange::kArea, kMaxLength * kMaxLength, "--fold-area"));
+  EXPECT_THROW(check_option_value(OptionRange::kArea, -1.0, "--fold-area"), Error);
+  EXPECT_NO_THROW(check_option_value(OptionRange::kResolution, kMinResolution, "--resolution"));
+  EXPECT_THROW(check_option_value(OptionRange::kResolution, kMaxResolution * 2, "--resolution"), Error);
+  try {
+    check_option_value(OptionRange::kLength, 1e6, "--door-width");
+    FAIL();
+  } catch (const Error& e) {
+    EXPECT_EQ(std::string(e.what()), "--door-width must lie in (0, 100000] metres, got 1e+06");
   }
 }
 

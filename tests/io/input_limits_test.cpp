@@ -13,6 +13,7 @@
 #include <opencv2/imgproc.hpp>
 #include <zlib.h>
 
+#include "io/error_text.h"
 #include "io/temp_dir.h"
 #include "topocut/core/error.h"
 #include "topocut/core/input_file.h"
@@ -27,14 +28,7 @@ namespace {
 
 using testing::TempDir;
 
-std::string error_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const Error& e) {
-    return e.what();
-  }
-  return "";
-}
+using testing::error_of;
 
 std::string encoded(const cv::Mat& image, const std::string& extension) {
   std::vector<unsigned char> bytes;

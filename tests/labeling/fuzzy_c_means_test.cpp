@@ -7,6 +7,7 @@
 #include <random>
 
 #include "topocut/core/error.h"
+#include "topocut/labeling/segment_centres.h"
 
 namespace topocut {
 namespace {
@@ -199,6 +200,34 @@ TEST(FuzzyCMeans, RejectsInvalidInput) {
   EXPECT_THROW(fuzzy_c_means(points, bad), Error);
   const std::vector<Point2> nan{{0, 0}, {std::numeric_limits<double>::quiet_NaN(), 0}};
   EXPECT_THROW(fuzzy_c_means(nan), Error);
+}
+
+}  // namespace
+}  // namespace topocut
+
+namespace topocut {
+namespace {
+
+// Issue 28: fuzzy c-means on a whole scan is bounded by its point-centre pairs.
+TEST(SegmentCentres, PointCentrePairsBeyondTheLimitAreRefused) {
+  Scan scan;
+  for (int i = 0; i < 20000; ++i) {
+    scan.angles.push_back(-1.0 + 2.0 * i / 20000.0);
+    scan.ranges.push_back(4.0);
+  }
+  Labeling labeling;
+  labeling.segments.emplace_back();
+  for (int i = 0; i < 20000; ++i) labeling.segments[0].push_back(i);
+  FuzzyCMeansOptions options;
+  options.clusters = 5000;  // 10^8 pairs
+  try {
+    segment_centres(scan, labeling, options);
+    FAIL();
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("more than the limit of 5e+07"), std::string::npos) << e.what();
+  }
+  options.clusters = 2;
+  EXPECT_EQ(segment_centres(scan, labeling, options)[0].size(), 2u);
 }
 
 }  // namespace

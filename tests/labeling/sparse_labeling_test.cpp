@@ -233,3 +233,28 @@ TEST(SparseLabeling, ScanBeamsKeepTheirRows) {
 
 }  // namespace
 }  // namespace topocut
+
+namespace topocut {
+namespace {
+
+// Issue 28: the work of a labelling is bounded, not the size of its file. A large dilation puts
+// every cell into one bucket, where each is compared with every other: counted first and refused.
+TEST(SparseLabeling, WorkBeyondTheLimitIsRefusedBeforeItIsDone) {
+  std::vector<Point2> points;
+  std::mt19937 random(3);
+  std::uniform_real_distribution<double> coordinate(0.0, 50.0);
+  for (int i = 0; i < 100000; ++i) points.push_back({coordinate(random), coordinate(random)});
+  LabelingOptions options;
+  options.dilation = 1000;  // buckets of 2002 cells, 100 m a side: all 100,000 cells in one
+  try {
+    label_points(points, options);
+    FAIL() << "labelled 5 * 10^9 cell pairs";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("pairs of cells, more than the limit"), std::string::npos) << e.what();
+  }
+  options.dilation = 1;  // the same points, small buckets: labelled
+  EXPECT_EQ(label_points(points, options).labels.size(), points.size());
+}
+
+}  // namespace
+}  // namespace topocut

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "lines/common.h"
 #include "topocut/core/error.h"
 #include "topocut/lines/extract.h"
 #include "topocut/lines/line_fit.h"
@@ -323,6 +324,25 @@ TEST(Extractors, EveryMethodHasItsNameAndFunction) {
   EXPECT_TRUE(same(extract_lines(sim.scan, options_for(LineMethod::kAle)), extract_lines_ale(sim.scan)));
   // Deterministic: the same input gives the same output.
   EXPECT_TRUE(same(extract_lines_smf(sim.scan), extract_lines_smf(sim.scan)));
+}
+
+}  // namespace
+}  // namespace topocut
+
+namespace topocut {
+namespace {
+
+// Issue 28: the recursive splits count their point visits and stop at the limit with one line
+// naming the method, whatever the scan (a real one needs a few visits per beam).
+TEST(Extractors, SplitWorkIsBounded) {
+  detail::SplitBudget budget("IEPF");
+  budget.spend(detail::kMaxSplitVisits);
+  try {
+    budget.spend(1);
+    FAIL();
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("IEPF split needs more than 2000000000 point visits"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace

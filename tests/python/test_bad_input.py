@@ -33,12 +33,13 @@ def test_bad_grids(grid, message):
 
 @pytest.mark.parametrize("resolution", [0.0, -0.05, float("nan"), float("inf")])
 def test_bad_resolution(resolution):
-    with pytest.raises(ValueError, match="resolution must be a positive number"):
+    # The range of the commands' --resolution (the option table), with the keyword's name.
+    with pytest.raises(ValueError, match=r"^resolution must lie in \[0.0001, 1000\] metres per cell, got"):
         topocut.segment(free_box(), resolution)
 
 
 def test_bad_options():
-    with pytest.raises(ValueError, match="^concavity must be a positive number$"):
+    with pytest.raises(ValueError, match=r"^concavity must lie in \(0, 100000\] metres, got -1$"):
         topocut.segment(free_box(), 0.05, concavity=-1)
     with pytest.raises(ValueError, match="origin"):
         topocut.segment(free_box(), 0.05, origin=(1.0,))
@@ -81,3 +82,41 @@ def test_bad_polygons_and_scans():
         topocut.extract_lines([0.0, 0.1], [1.0], method="smf")
     with pytest.raises(ValueError):
         topocut.extract_lines([0.0, 0.1], [1.0, 1.0], method="hough")
+
+
+@pytest.mark.parametrize(
+    "flag, value",
+    [
+        ("free-threshold", "256"),
+        ("free-threshold", "-1"),
+        ("free-threshold", "250.5"),
+        ("occupied-threshold", "300"),
+        ("resolution", "0"),
+        ("resolution", "1e308"),
+        ("max-megapixels", "5000"),
+    ],
+)
+def test_load_map_and_segment_refuse_what_the_command_refuses(cli, bundled_map, flag, value):
+    # One check per option (the option table): the same values refused with the same message, the
+    # option named as each adapter spells it.
+    keyword = flag.replace("-", "_")
+    image = bundled_map.replace(".yaml", ".png")
+    run = subprocess.run([cli, "segment", image, f"--{flag}", value], capture_output=True, text=True)
+    assert run.returncode == 2
+    with pytest.raises(ValueError) as error:
+        topocut.load_map(image, **{keyword: float(value)})
+    assert run.stderr.startswith(f"topocut segment: error: {str(error.value).replace(keyword, '--' + flag, 1)} (see")
+    if flag in ("free-threshold", "occupied-threshold", "resolution"):
+        args = {keyword: float(value)} if flag != "resolution" else {}
+        with pytest.raises(ValueError) as error_segment:
+            topocut.segment(free_box(np.uint8), float(value) if flag == "resolution" else 0.05, **args)
+        assert str(error_segment.value) == str(error.value)
+
+
+def test_load_map_options_are_the_commands():
+    m = topocut.load_map(str(pytest.importorskip("pathlib").Path(__file__).parents[2] / "maps" / "floorplan.png"),
+                         free_threshold=200, max_megapixels=1)
+    assert m.cells == "free > 200, occupied < 50 (fixed)"  # a threshold given means fixed thresholds
+    assert topocut.load_map(str(pytest.importorskip("pathlib").Path(__file__).parents[2] / "maps" / "floorplan.png"), 0.1).resolution == 0.1
+    with pytest.raises(TypeError, match="max_megapixels"):
+        topocut.load_map("x.png", no_such_option=1)

@@ -4,6 +4,8 @@
 
 #include <cmath>
 #include <limits>
+#include <cstdio>
+#include <fstream>
 #include <string>
 
 #include "topocut/core/error.h"
@@ -67,6 +69,25 @@ TEST(ScanCsv, ErrorsNameTheLine) {
 }
 
 TEST(ScanCsv, MissingFileIsAnError) { EXPECT_THROW(read_scan_csv("/nonexistent/dir/scan.csv"), Error); }
+
+}  // namespace
+}  // namespace topocut
+
+namespace topocut {
+namespace {
+
+// Issue 28: a scan CSV is bounded by what the commands can do with it (64 MiB, about 4 million
+// beams), no longer by the 1 MiB (45,000 beams) the quadratic merge of SMF needed.
+TEST(ScanCsv, AScanOfSeveralMegabytesIsRead) {
+  std::string text = "angle,range\n";
+  const int beams = 200000;
+  for (int i = 0; i < beams; ++i) text += std::to_string(-3.0 + 6.0 * i / beams) + ",4.25\n";
+  ASSERT_GT(text.size(), 2u << 20);  // twice the old limit and more
+  const std::string path = ::testing::TempDir() + "/topocut_large_scan.csv";
+  { std::ofstream(path, std::ios::binary) << text; }
+  EXPECT_EQ(read_scan_csv(path).size(), static_cast<std::size_t>(beams));
+  std::remove(path.c_str());
+}
 
 }  // namespace
 }  // namespace topocut

@@ -9,8 +9,20 @@
 
 namespace topocut {
 
-// What a value must be; a switch takes no value.
-enum class OptionRange { kSwitch, kPositive, kNonNegative, kFraction, kGreyLevel, kAny };
+// What a value must be; a switch takes no value. The lengths, areas and resolutions are those of
+// core/value_ranges.h, so that an option and the library's own check agree on the range and message.
+enum class OptionRange {
+  kSwitch,
+  kPositive,
+  kNonNegative,
+  kFraction,
+  kGreyLevel,
+  kLength,          // metres, (0, kMaxLength]
+  kLengthOrZero,    // metres, [0, kMaxLength]
+  kArea,            // square metres, [0, kMaxLength^2]
+  kResolution,      // metres per cell, [kMinResolution, kMaxResolution]
+  kAny,
+};
 
 template <typename Target>
 struct OptionRow {

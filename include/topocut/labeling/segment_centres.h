@@ -9,8 +9,13 @@
 
 namespace topocut {
 
+// The point-centre pairs fuzzy c-means may weigh per iteration over a whole scan (points of each
+// segment times its centres): 1 million beams with 10 centres each are 10^7 (about 10 s).
+inline constexpr double kMaxCentrePairs = 5e7;
+
 // The fuzzy c-means centres of every segment of a labelled scan (sensor frame, ordered along the
-// segment as fuzzy_c_means orders them), one list per segment. Throws Error as fuzzy_c_means.
+// segment as fuzzy_c_means orders them), one list per segment. Throws Error as fuzzy_c_means, and
+// before any work when the segments' points times their centres exceed kMaxCentrePairs.
 std::vector<std::vector<Point2>> segment_centres(const Scan& scan, const Labeling& labeling,
                                                  const FuzzyCMeansOptions& options);
 

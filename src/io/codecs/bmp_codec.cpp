@@ -235,9 +235,10 @@ void decode_rle(const Bytes& b, const Header& h, cv::Mat& rows) {
 }
 }  // namespace
 
-cv::Mat decode_bmp(std::string_view bytes) {
+cv::Mat decode_bmp(std::string_view bytes, const DecodeBounds& bounds) {
   const Bytes b(bytes);
   const Header h = read_header(b);
+  check_decoded_size(static_cast<std::uint64_t>(h.width), static_cast<std::uint64_t>(h.height), bounds, "BMP");
   const int channels = !h.colour ? 1 : h.bits == 32 && h.compression == kBitfields ? 4 : 3;
   cv::Mat image(h.height, h.width, CV_8UC(channels));
   if (h.compression == kRle4 || h.compression == kRle8) {

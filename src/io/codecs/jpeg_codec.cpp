@@ -20,6 +20,7 @@ struct JpegError {
   std::jmp_buf jump;
   char message[JMSG_LENGTH_MAX] = "";
   bool scan_cut = false;  // the entropy-coded data stopped at a marker before the image was complete
+  bool refused = false;   // a limit of ours, not libjpeg's error
 };
 
 void on_error(j_common_ptr cinfo) {
@@ -43,18 +44,33 @@ void install(JpegError& error) {
   error.manager.emit_message = on_emit;
 }
 
+// libjpeg calls the progress monitor before it consumes each piece of input, so a scan beyond the
+// limit is refused before its pass over the coefficients: an empty scan costs as much as a full one.
+void limit_scans(j_common_ptr common) {
+  auto* cinfo = reinterpret_cast<j_decompress_ptr>(common);
+  if (cinfo->input_scan_number <= kMaxJpegScans) return;
+  auto* error = reinterpret_cast<JpegError*>(common->err);
+  std::snprintf(error->message, sizeof error->message,
+                "the JPEG has more than %d scans, each a pass over the whole image (the limit)", kMaxJpegScans);
+  error->refused = true;
+  std::longjmp(error->jump, 1);
+}
+
 class Decompress {
  public:
   Decompress() {
     install(error_);
     cinfo_.err = &error_.manager;
     jpeg_create_decompress(&cinfo_);
+    progress_.progress_monitor = limit_scans;
+    cinfo_.progress = &progress_;
   }
   ~Decompress() { jpeg_destroy_decompress(&cinfo_); }
   Decompress(const Decompress&) = delete;
   Decompress& operator=(const Decompress&) = delete;
   jpeg_decompress_struct cinfo_{};
   JpegError error_;
+  jpeg_progress_mgr progress_{};
 };
 
 class Compress {
@@ -162,17 +178,24 @@ bool write_scanlines(Compress& e, const cv::Mat& image, unsigned char** rows) {
   return true;
 }
 
+// libjpeg's error, or our refusal, as the exception decode_image() reports.
+[[noreturn]] void fail(const JpegError& error) {
+  if (error.refused) throw CodecRefusal(error.message);
+  throw CodecError(error.message);
+}
+
 }  // namespace
 
-cv::Mat decode_jpeg(std::string_view bytes) {
+cv::Mat decode_jpeg(std::string_view bytes, const DecodeBounds& bounds) {
   Decompress d;
   bool ended = false;
-  if (!read_header(d, bytes, ended)) throw CodecError(d.error_.message);
+  if (!read_header(d, bytes, ended)) fail(d.error_);
+  check_decoded_size(d.cinfo_.image_width, d.cinfo_.image_height, bounds, "JPEG");
   const int height = static_cast<int>(d.cinfo_.image_height), width = static_cast<int>(d.cinfo_.image_width);
   const int stored = d.cinfo_.out_color_space == JCS_GRAYSCALE ? 1 : d.cinfo_.out_color_space == JCS_CMYK ? 4 : 3;
   cv::Mat decoded(height, width, CV_8UC(stored), cv::Scalar::all(0));
   std::vector<unsigned char*> rows = row_pointers(decoded);
-  if (!read_scanlines(d, rows.data(), height, ended)) throw CodecError(d.error_.message);
+  if (!read_scanlines(d, rows.data(), height, ended)) fail(d.error_);
   if (stored != 4) return decoded;
   cv::Mat bgr(height, width, CV_8UC3);
   cmyk_to_bgr(decoded, bgr);

@@ -114,9 +114,10 @@ void read_samples(Reader& in, const Header& h, cv::Mat& image) {
 
 }  // namespace
 
-cv::Mat decode_netpbm(std::string_view bytes) {
+cv::Mat decode_netpbm(std::string_view bytes, const DecodeBounds& bounds) {
   Reader in(bytes);
   const Header h = read_header(in);
+  check_decoded_size(static_cast<std::uint64_t>(h.width), static_cast<std::uint64_t>(h.height), bounds, "PGM/PPM");
   const int depth = h.maxval > 255 ? CV_16U : CV_8U;
   cv::Mat image(h.height, h.width, CV_MAKETYPE(depth, h.bits == 24 ? 3 : 1));
   if (h.bits == 1) {

@@ -159,12 +159,13 @@ std::vector<png_bytep> row_pointers(const cv::Mat& image) {
 
 }  // namespace
 
-cv::Mat decode_png(std::string_view bytes) {
+cv::Mat decode_png(std::string_view bytes, const DecodeBounds& bounds) {
   PngContext context;
   context.input = bytes;
   const PngStruct reader(context, false);
   PngImage header;
   if (!read_header(reader.png(), reader.info(), header)) throw CodecError(context.message);
+  check_decoded_size(header.width, header.height, bounds, "PNG");
   cv::Mat image(static_cast<int>(header.height), static_cast<int>(header.width),
                 CV_MAKETYPE(header.bit_depth == 16 ? CV_16U : CV_8U, header.channels));
   std::vector<png_bytep> rows = row_pointers(image);
