@@ -54,7 +54,7 @@ void paint(cv::Mat& picture, const cv::Mat& labels, int scale, Colour colour, Ha
       const bool thin_edge = edge && (r == 0 || c == 0 || label(r - 1, c) != id || label(r, c - 1) != id ||
                                       r + 1 == picture.rows || c + 1 == picture.cols || label(r + 1, c) != id || label(r, c + 1) != id);
       const cv::Vec3b* mark = hatch(id);
-      if (mark && (edge || (r + c) % 8 < 2)) {
+      if (mark && (edge || (r + c) % 10 < 2)) {
         pixel = *mark;
       } else if (thin_edge) {
         pixel = mixed(pixel, {0, 0, 0}, 0.45);

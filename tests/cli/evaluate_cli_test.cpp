@@ -351,7 +351,7 @@ TEST_F(EvaluateCli, ReportDrawsEveryImageAndMarksMissesAndMerges) {
   EXPECT_GT(pixels_of(open_rooms, kMergedOrange), 1000);
   EXPECT_EQ(pixels_of(closed_truth, kMissedRed) + pixels_of(closed_rooms, kMergedOrange), 0);
   // A matched pair has one colour: room A in the truth, the segment over it (between its stripes).
-  const cv::Point in_a(4 * 30 + 2, 4 * 24);  // (x + y) % 8 == 2: no stripe
+  const cv::Point in_a(4 * 30 + 2, 4 * 24);  // (x + y) % 10 == 8: between the stripes
   EXPECT_EQ(open_truth.at<cv::Vec3b>(in_a), open_rooms.at<cv::Vec3b>(in_a));
   EXPECT_EQ(closed_truth.at<cv::Vec3b>(in_a), closed_rooms.at<cv::Vec3b>(in_a));
   EXPECT_NE(closed_truth.at<cv::Vec3b>(in_a), closed_truth.at<cv::Vec3b>(cv::Point(4 * 90 + 2, 4 * 24)));
