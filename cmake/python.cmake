@@ -50,11 +50,11 @@ endif()
 set(TOPOCUT_PYTHON_INSTALL_DIR lib/python${Python_VERSION_MAJOR}.${Python_VERSION_MINOR}/dist-packages
     CACHE STRING "Where cmake --install puts the Python package, relative to the prefix (Debian's python3 reads <prefix>/lib/python3.X/dist-packages for /usr/local)")
 # Installed only when it was built (`bash .ci/setup.sh demo` builds the command alone): a package
-# without its extension would install but not import.
-install(TARGETS topocut_python LIBRARY DESTINATION ${TOPOCUT_PYTHON_INSTALL_DIR}/topocut OPTIONAL)
+# without its extension, even an empty folder, would import as an empty namespace package.
 install(CODE "
   if(EXISTS \"$<TARGET_FILE:topocut_python>\")
-    file(INSTALL ${python_package_sources} DESTINATION \"\${CMAKE_INSTALL_PREFIX}/${TOPOCUT_PYTHON_INSTALL_DIR}/topocut\")
+    file(INSTALL \"$<TARGET_FILE:topocut_python>\" ${python_package_sources}
+         DESTINATION \"\${CMAKE_INSTALL_PREFIX}/${TOPOCUT_PYTHON_INSTALL_DIR}/topocut\")
     if(EXISTS \"${python_stubs}\")
       file(INSTALL \"${python_stubs}\" DESTINATION \"\${CMAKE_INSTALL_PREFIX}/${TOPOCUT_PYTHON_INSTALL_DIR}/topocut\")
     endif()
