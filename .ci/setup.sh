@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # One entry point for a fresh Debian 12 machine (as root) and for CI:
-#   bash .ci/setup.sh demo   install what is missing, build (Release), segment a bundled map
+#   bash .ci/setup.sh demo   install what is missing, build the topocut command alone (Release),
+#                            segment a bundled map
 #   bash .ci/setup.sh test   install what is missing, build (Release), run the whole test suite
 #   bash .ci/setup.sh sanitize
 #                            build with AddressSanitizer + UndefinedBehaviorSanitizer (GCC, -O1) in
@@ -24,11 +25,16 @@ JOBS="${JOBS:-$(nproc)}"
 packages=(build-essential cmake pkg-config libcgal-dev libopencv-dev libboost-dev
           libboost-program-options-dev libboost-graph-dev nlohmann-json3-dev libyaml-cpp-dev
           libgtest-dev libgmock-dev libbenchmark-dev zlib1g-dev libpng-dev libjpeg62-turbo-dev libtiff-dev
-          pybind11-dev python3-dev python3-numpy python3-pytest python3-matplotlib)
+          pybind11-dev python3-dev python3-numpy python3-pytest python3-matplotlib python3-venv python3-pip)
 # ROS 1 from Debian: the node (ros/) and its loopback test (rosmaster, rospy publishing the maps).
 packages+=(libroscpp-dev libnav-msgs-dev libsensor-msgs-dev libvisualization-msgs-dev libstd-msgs-dev
            python3-rosmaster python3-rospy python3-rosgraph python3-nav-msgs python3-sensor-msgs
            python3-visualization-msgs python3-std-msgs)
+# Only the test suites need these: headless Chromium opens evaluate's report page, shapely and
+# networkx take the Python results' to_shapely() / to_networkx().
+case "$mode" in
+  test|sanitize) packages+=(chromium python3-shapely python3-networkx) ;;
+esac
 # libFuzzer comes with clang only; the other modes build with GCC.
 [ "$mode" = fuzz ] && packages+=(clang libclang-rt-14-dev)
 missing=()
@@ -43,7 +49,14 @@ if [ "${#missing[@]}" -gt 0 ]; then
 fi
 
 case "$mode" in
-  demo|test)
+  demo)
+    # The command and the libraries it links, nothing else (tests, benchmarks, bindings and the node
+    # build with the test command, or by name: cmake --build build --target topocut_node).
+    echo "== configuring and building the topocut command in $BUILD_DIR (Release, $JOBS jobs)"
+    cmake -S . -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=Release >/dev/null
+    cmake --build "$BUILD_DIR" -j "$JOBS" --target topocut
+    ;;
+  test)
     echo "== configuring and building in $BUILD_DIR (Release, $JOBS jobs)"
     cmake -S . -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=Release >/dev/null
     cmake --build "$BUILD_DIR" -j "$JOBS"

@@ -37,7 +37,10 @@ write_basic_package_version_file(${CMAKE_CURRENT_BINARY_DIR}/topocutConfigVersio
 install(FILES ${CMAKE_CURRENT_BINARY_DIR}/topocutConfig.cmake ${CMAKE_CURRENT_BINARY_DIR}/topocutConfigVersion.cmake
         DESTINATION ${TOPOCUT_INSTALL_CMAKEDIR})
 
-# pkg-config: static libraries, so every module (users first) and what they link privately.
+# pkg-config: the public headers need C++20 and OpenCV's core headers only, so Cflags give -std=c++20
+# and OpenCV's include folder (as -isystem, as CMake includes imported targets: OpenCV's headers warn
+# under C++20). The module libraries are static, so Libs name every module (users first) and, after
+# them, the few libraries they link privately, never the whole of opencv4.pc (about 60 libraries).
 set(TOPOCUT_PC_LIBS)
 set(reversed_modules ${TOPOCUT_MODULES})
 list(REVERSE reversed_modules)
@@ -46,6 +49,50 @@ foreach(module IN LISTS reversed_modules)
   if(NOT module_type STREQUAL "INTERFACE_LIBRARY")
     string(APPEND TOPOCUT_PC_LIBS " -ltopocut_${module}")
   endif()
+endforeach()
+# "-L<folder> -l<name>" for an imported target or a library file; the folder is left out when the
+# linker searches it anyway.
+function(topocut_pc_link_flags out)
+  set(flags "")
+  set(items ${ARGN})
+  list(REMOVE_DUPLICATES items)
+  foreach(item IN LISTS items)
+    set(file "${item}")
+    if(TARGET ${item})
+      get_target_property(configurations ${item} IMPORTED_CONFIGURATIONS)
+      set(file "")
+      foreach(suffix _RELEASE "" _NONE)
+        if(NOT file)
+          get_target_property(file ${item} IMPORTED_LOCATION${suffix})
+        endif()
+      endforeach()
+      if(NOT file AND configurations)
+        list(GET configurations 0 configuration)
+        get_target_property(file ${item} IMPORTED_LOCATION_${configuration})
+      endif()
+      if(NOT file)
+        message(FATAL_ERROR "topocut.pc: no library file for the imported target ${item}")
+      endif()
+    endif()
+    if(file MATCHES "^-")
+      string(APPEND flags " ${file}")
+      continue()
+    endif()
+    get_filename_component(folder "${file}" DIRECTORY)
+    get_filename_component(name "${file}" NAME)
+    string(REGEX REPLACE "^lib([^.]+)\\..*$" "\\1" name "${name}")
+    if(folder AND NOT folder IN_LIST CMAKE_CXX_IMPLICIT_LINK_DIRECTORIES)
+      string(APPEND flags " -L${folder}")
+    endif()
+    string(APPEND flags " -l${name}")
+  endforeach()
+  set(${out} "${flags}" PARENT_SCOPE)
+endfunction()
+topocut_pc_link_flags(TOPOCUT_PC_PRIVATE_LIBS opencv_imgproc opencv_core yaml-cpp ${PNG_LIBRARIES} ${JPEG_LIBRARIES}
+                      ${ZLIB_LIBRARIES} -lgmp -lmpfr -lpthread ${CMAKE_DL_LIBS})
+set(TOPOCUT_PC_CFLAGS "")
+foreach(folder IN LISTS OpenCV_INCLUDE_DIRS)
+  string(APPEND TOPOCUT_PC_CFLAGS " -isystem ${folder}")
 endforeach()
 # Relocatable: the prefix is found from the .pc file's own place, so `cmake --install --prefix DIR` works.
 file(RELATIVE_PATH TOPOCUT_PC_TO_PREFIX /${CMAKE_INSTALL_LIBDIR}/pkgconfig /)

@@ -40,6 +40,7 @@ int main(int argc, char** argv) {
       print(topocut::segment_grid(topocut::load_map(argv[1]), topocut::GridFrame{}));
       return 0;
     }
+    std::cout << "topocut " << TOPOCUT_VERSION << ", two rooms held in memory:\n";
     const int width = 164, height = 64;
     const std::vector<std::int8_t> cells = two_rooms(width, height);
     topocut::GridArray grid;  // int8 occupancy, bottom-up rows: the defaults

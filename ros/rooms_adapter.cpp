@@ -62,7 +62,7 @@ RoomsOutput output_of(const topocut::GridSegmentation& rooms) {
   }
   for (const topocut::Passage& p : rooms.segmentation.passages)
     out.passages.insert(out.passages.end(), {p.cut.a.x, p.cut.a.y, p.cut.b.x, p.cut.b.y});
-  out.json = topocut::rooms_to_json(rooms.segmentation);
+  out.json = topocut::rooms_to_json(rooms.segmentation, rooms.placements);
   return out;
 }
 

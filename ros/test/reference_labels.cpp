@@ -69,7 +69,8 @@ void replay(const std::string& dir, const std::vector<std::string>& grids) {
         labels.put(static_cast<char>(v & 0xff));
         labels.put(static_cast<char>(v >> 8));
       }
-    std::ofstream(dir + "/rooms_" + std::to_string(k) + ".json") << topocut::rooms_to_json(result);
+    std::ofstream(dir + "/rooms_" + std::to_string(k) + ".json")
+        << topocut::rooms_to_json(result, topocut::in_frame(result, topocut::GridFrame{}).placements);
   }
 }
 

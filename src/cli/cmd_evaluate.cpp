@@ -3,6 +3,7 @@
 // define them; matched rooms; precision inside annotated space).
 #include <filesystem>
 #include <iostream>
+#include <optional>
 
 #include "cli/command.h"
 #include "cli/library_options.h"
@@ -10,6 +11,7 @@
 #include "topocut/evaluation/dataset.h"
 #include "topocut/evaluation/dataset_options.h"
 #include "topocut/evaluation/dataset_report.h"
+#include "topocut/evaluation/html_report.h"
 #include "topocut/evaluation/room_defects.h"
 #include "topocut/evaluation/incremental_dataset.h"
 #include "topocut/evaluation/incremental_dataset_report.h"
@@ -108,6 +110,15 @@ std::vector<std::string> label_files(const std::vector<DatasetMap>& maps, const 
   return files;
 }
 
+// The report's folder: created if missing (the pictures are written into it as images are scored).
+void prepare_report_folder(const std::string& folder) {
+  std::error_code error;
+  if (std::filesystem::exists(folder, error) && !std::filesystem::is_directory(folder, error))
+    throw Error("the report folder '" + folder + "' is a file, not a folder");
+  std::filesystem::create_directories(folder, error);
+  if (error) throw Error("cannot make the report folder '" + folder + "': " + error.message());
+}
+
 // --maps DIR: maps without ground truth, judged by the rooms no person would draw.
 int run_defects(const DatasetArguments& arguments, const std::string& folder, int floor_repetitions) {
   MapFolderOptions options;
@@ -144,7 +155,9 @@ int run(const std::vector<std::string>& args) {
        "score the label images in DIR instead of segmenting: X.png for map X (X_furnitures.png for its furnished image), one grey or 16-bit value a region (0 none) or one colour a region (black none), restricted to the map's free pixels; a map without its image is reported as missing")
       ("maps", po::value<std::string>()->value_name("DIR"),
        "maps without ground truth (every YAML, else image at --resolution, in DIR): count per map the rooms, the thin rooms (>= 1 m², less than half survives an opening with a 0.6 m disc: ray fans, slivers, strips), the speck rooms (0.1 to 1 m²) and the open rooms (>= 1 m², more than half of their outline against walls or never-seen cells runs into never-seen cells; unknown cells within 0.15 m of a wall count as wall; not judged on a map without occupied cells), time the whole segmentation and compare it with the map's contour floor")
-      ("floor-repetitions", po::value<int>()->default_value(3)->value_name("N"), "with --maps: repetitions of the contour floor (decode, threshold, findContours), median taken; 0: not measured");
+      ("floor-repetitions", po::value<int>()->default_value(3)->value_name("N"), "with --maps: repetitions of the contour floor (decode, threshold, findContours), median taken; 0: not measured")
+      ("report", po::value<std::string>()->value_name("DIR"),
+       "write DIR/index.html (created if missing): the summary and per-image tables and, per image, the ground truth's rooms beside the segmentation (DIR/MAP_VARIANT_truth.png, _rooms.png), matched pairs in one colour, missed rooms hatched red, segments that merged rooms orange");
   const auto vm = parse_options(
       "topocut evaluate [--dataset DIR] [--variant plain|furnished|all] [--csv FILE] [--concavity M]\n"
       "                        [--trivial] [--map NAME ...] [--mode batch|incremental [--compare-batch]]\n"
@@ -176,6 +189,7 @@ int run(const std::vector<std::string>& args) {
       "explored map, incremental and batch; it adds per-update times (process CPU time: median, p95,\n"
       "max) and the CSV columns updates,update_median_ms,update_p95_ms,update_max_ms,\n"
       "batch_update_median_ms (the last with --compare-batch).\n\n"
+      "--report DIR writes the same tables as a web page with pictures of every image (see --report below).\n\n"
       "--maps DIR judges maps without ground truth by their defects (see --maps below); its CSV is\n"
       "map,width,height,rooms,thin,specks,open,time_ms,floor_ms. A folder without furnished (or plain)\n"
       "images is evaluated with the variants it has unless --variant is given.",
@@ -187,6 +201,10 @@ int run(const std::vector<std::string>& args) {
   const int batch_every = (*vm)["batch-every"].as<int>();
   if (batch_every < 1) throw UsageError("--batch-every must be at least 1");
   if (!arguments.csv.empty()) check_outputs({arguments.csv}, {});
+  const std::string report = vm->count("report") ? (*vm)["report"].as<std::string>() : "";
+  if (vm->count("report") && report.empty()) throw UsageError("--report needs a folder");
+  if (!report.empty() && (mode != "batch" || vm->count("maps")))
+    throw UsageError("--report draws images scored against a ground truth in batch mode (not --mode incremental or --maps)");
   if (vm->count("maps")) {
     const int floor_repetitions = (*vm)["floor-repetitions"].as<int>();
     if (floor_repetitions < 0) throw UsageError("--floor-repetitions must not be negative");
@@ -199,17 +217,28 @@ int run(const std::vector<std::string>& args) {
   if (vm->count("labels") && labels.empty()) throw UsageError("--labels needs a folder");
   if (!labels.empty() && mode != "batch") throw UsageError("--labels takes no --mode (the label images are read, not computed)");
   const std::vector<DatasetMap> maps = select_maps(discover_dataset(arguments.dataset), arguments.run.maps);
-  if (!arguments.csv.empty()) {
+  if (!arguments.variant_given) {
+    arguments.run.variants = labels.empty() ? present_variants(maps) : labelled_variants(maps, labels);
+    if (arguments.run.variants.empty()) throw Error("the dataset folder has no map image (neither X.png nor X_furnitures.png)");
+  }
+  std::optional<HtmlReport> html;
+  if (!arguments.csv.empty() || !report.empty()) {
     std::vector<std::string> inputs = dataset_files(maps);
     if (!labels.empty()) {
       const std::vector<std::string> read = label_files(maps, labels);
       inputs.insert(inputs.end(), read.begin(), read.end());
     }
-    check_outputs({arguments.csv}, inputs);
-  }
-  if (!arguments.variant_given) {
-    arguments.run.variants = labels.empty() ? present_variants(maps) : labelled_variants(maps, labels);
-    if (arguments.run.variants.empty()) throw Error("the dataset folder has no map image (neither X.png nor X_furnitures.png)");
+    std::vector<std::string> outputs;
+    if (!arguments.csv.empty()) outputs.push_back(arguments.csv);
+    if (!report.empty()) {
+      prepare_report_folder(report);
+      const std::vector<std::string> files = HtmlReport::files(report, maps, arguments.run.variants);
+      outputs.insert(outputs.end(), files.begin(), files.end());
+      html.emplace(report, arguments.run.evaluation);
+      arguments.run.scored = [&html](const ImageResult& result, const cv::Mat& segments, const cv::Mat& rooms,
+                                     const OccupancyGrid& grid) { html->add(result, segments, rooms, grid); };
+    }
+    check_outputs(outputs, inputs);
   }
   arguments.run.progress = [](const std::string& line) { progress(line); };
   if (mode == "incremental") return run_incremental(arguments, maps, (*vm)["compare-batch"].as<bool>(), batch_every);
@@ -221,6 +250,10 @@ int run(const std::vector<std::string>& args) {
             << format_results_table(results) << "\n"
             << format_summary(results, method) << std::flush;
   if (!arguments.csv.empty()) write_file_atomically(arguments.csv, results_csv(results));
+  if (html) {
+    html->finish(results, "topocut evaluate: " + arguments.dataset, method);
+    std::cout << "wrote report: " << (std::filesystem::path(report) / "index.html").string() << "\n";
+  }
 
   std::size_t failed = 0, missing = 0;
   for (const ImageResult& result : results) {

@@ -1,6 +1,7 @@
 // topocut segment: map -> rooms (pipeline A). Loads a map, segments it, writes the requested
 // outputs (label image, colour overlay, rooms JSON, SVG) and prints a short summary.
 #include <chrono>
+#include <cmath>
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
@@ -21,6 +22,7 @@
 #include "topocut/io/rooms_json.h"
 #include "topocut/io/rooms_svg.h"
 #include "topocut/segmentation/grid_segmentation.h"
+#include "topocut/segmentation/room_at.h"
 #include "topocut/segmentation/segment_switches.h"
 
 namespace topocut::cli {
@@ -37,10 +39,17 @@ struct Outputs {
   std::string labels, color, json, svg, geojson, clean;
 };
 
+// A point given with --at: its text as given, and where it is (map frame, metres).
+struct QueryPoint {
+  std::string text;
+  Point2 point;
+};
+
 // What the command line asks for, checked.
 struct Request {
   std::string map_path;
   Outputs out;
+  std::vector<QueryPoint> at;
   SegmentSettings settings;  // as given, for the summary (trivial, parity)
   SegmentOptions options;    // the settings applied
   MapLoadOptions load;
@@ -63,8 +72,10 @@ const char* const kDescription =
     "A ROS map_server YAML supplies its own resolution, origin and thresholds; for a plain image\n"
     "the palette is read from the image (free: the brightest grey; unknown: the grey covering the\n"
     "border; occupied: the darkest other grey; transparency is unknown) unless --fixed-thresholds.\n"
-    "Prints a summary (rooms, passages, time) and writes each requested output atomically.\n\n"
-    "Example:\n  topocut segment maps/floorplan.yaml --out-color rooms.png --out-json rooms.json";
+    "Prints a summary (rooms, passages, time) and writes each requested output atomically.\n"
+    "--at X,Y (map frame, metres; repeatable) then prints 'at X,Y: room ID' for the room whose cell\n"
+    "holds the point, or 'at X,Y: none' (an obstacle, unknown space, off the map).\n\n"
+    "Example:\n  topocut segment maps/floorplan.yaml --out-color rooms.png --out-json rooms.json --at 2.0,1.5";
 
 void add_output_options(po::options_description& described, Outputs& out) {
   described.add_options()
@@ -76,6 +87,19 @@ void add_output_options(po::options_description& described, Outputs& out) {
        "write rooms (Polygons with holes) and passages (LineStrings) as a GeoJSON FeatureCollection (map frame, metres)")
       ("out-clean", po::value<std::string>(&out.clean),
        "write the map as the segmenter saw it (PNG): free, occupied, unknown, and what the cleaning removed in colour");
+}
+
+// "X,Y" in metres; a UsageError otherwise.
+QueryPoint query_point(const std::string& text) {
+  const std::size_t comma = text.find(',');
+  if (comma == std::string::npos || text.find(',', comma + 1) != std::string::npos)
+    throw UsageError("--at needs a point X,Y in metres (map frame), not '" + text + "'");
+  QueryPoint q{text, {}};
+  check_usage([&] {
+    q.point = {parse_option_number(text.substr(0, comma), "--at's X"), parse_option_number(text.substr(comma + 1), "--at's Y")};
+    if (!std::isfinite(q.point.x) || !std::isfinite(q.point.y)) throw Error("--at needs finite coordinates, not '" + text + "'");
+  });
+  return q;
 }
 
 // Every output is checked before the work starts, so a typo costs no time and leaves nothing behind.
@@ -107,6 +131,9 @@ std::optional<Request> parse_request(const std::vector<std::string>& args) {
   add_segment_options(described, request.settings);
   add_map_load_options(described, request.load);
   add_output_options(described, request.out);
+  std::vector<std::string> at;
+  described.add_options()("at", po::value<std::vector<std::string>>(&at)->composing()->value_name("X,Y"),
+                          "print the room at this point of the map frame (metres), or none; repeatable");
   po::positional_options_description positional;
   positional.add("map", 1);
   const auto vm = parse_options("topocut segment MAP [options]", kDescription, described, positional, args);
@@ -115,6 +142,7 @@ std::optional<Request> parse_request(const std::vector<std::string>& args) {
   check_usage([&] { request.options = to_segment_options(request.settings); });  // the library's ranges, before any work
   request.load = read_map_load_options(*vm, request.load);
   request.resolution_given = !vm->at("resolution").defaulted();
+  for (const std::string& text : at) request.at.push_back(query_point(text));
   check_output_files(request, *vm);
   return request;
 }
@@ -125,7 +153,7 @@ void write_outputs(const Outputs& out, const OccupancyGrid& grid, const GridSegm
   if (!out.clean.empty()) write_image_atomically(out.clean, render_cleaned_map(grid.cells, input.cleaned));
   if (!out.labels.empty()) write_label_image(out.labels, segmentation.labels);
   if (!out.color.empty()) write_overlay(out.color, grid, segmentation);
-  if (!out.json.empty()) write_rooms_json(out.json, segmentation);
+  if (!out.json.empty()) write_rooms_json(out.json, segmentation, result.placements);
   if (!out.svg.empty()) write_rooms_svg(out.svg, grid, segmentation);
   if (!out.geojson.empty()) write_rooms_geojson(out.geojson, segmentation, result.placements);
 }
@@ -166,6 +194,16 @@ std::string summary(const Request& request, const OccupancyGrid& grid, const Seg
   return text.str();
 }
 
+// One line per --at point: the room holding it, or none.
+std::string rooms_at(const std::vector<QueryPoint>& points, const GridSegmentation& result) {
+  std::string text;
+  for (const QueryPoint& q : points) {
+    const int id = room_at(result, q.point);
+    text += "at " + q.text + ": " + (id > 0 ? "room " + std::to_string(id) : std::string("none")) + "\n";
+  }
+  return text;
+}
+
 int run(const std::vector<std::string>& args) {
   const std::optional<Request> request = parse_request(args);
   if (!request) return 0;
@@ -180,7 +218,8 @@ int run(const std::vector<std::string>& args) {
   const auto done = std::chrono::steady_clock::now();
   write_outputs(request->out, grid, result, input);
   const auto ms = [](auto a, auto b) { return std::chrono::duration<double, std::milli>(b - a).count(); };
-  std::cout << summary(*request, grid, result.segmentation, palette, {ms(start, loaded), ms(loaded, done)}) << std::flush;
+  std::cout << summary(*request, grid, result.segmentation, palette, {ms(start, loaded), ms(loaded, done)})
+            << rooms_at(request->at, result) << std::flush;
   return 0;
 }
 

@@ -14,6 +14,7 @@
 #include "topocut/io/map_saver.h"
 #include "topocut/io/overlay.h"
 #include "topocut/io/rooms_json.h"
+#include "topocut/segmentation/grid_segmentation.h"
 #include "topocut/segmentation/segmenter.h"
 #include "topocut/segmentation/wall_map_segment_options.h"
 #include "topocut/walls/wall_map_replay.h"
@@ -72,7 +73,7 @@ void replay(const std::vector<PosedScan>& scans, const WallsOptions& walls, cons
   if (!arguments.frames.empty()) std::cout << "frames: " << frames.written() << " written to " << arguments.frames << "\n";
   if (!out_map.empty()) save_map(out_map, grid);
   if (!out_color.empty()) write_overlay(out_color, grid, run.incremental);
-  if (!out_rooms.empty()) write_rooms_json(out_rooms, run.incremental);
+  if (!out_rooms.empty()) write_rooms_json(out_rooms, run.incremental, in_frame(run.incremental, GridFrame{}).placements);
 }
 
 // What the command line asks for, checked; `help` when it only asked for the help.
@@ -195,7 +196,7 @@ void run_batch(const WallsRequest& r, const std::vector<PosedScan>& scans) {
   const Segmentation rooms = segment(grid, r.segment);
   std::cout << "rooms: " << rooms.rooms.size() << "\n";
   if (!r.out_color.empty()) write_overlay(r.out_color, grid, rooms);
-  if (!r.out_rooms.empty()) write_rooms_json(r.out_rooms, rooms);
+  if (!r.out_rooms.empty()) write_rooms_json(r.out_rooms, rooms, in_frame(rooms, GridFrame{}).placements);
 }
 
 int run(const std::vector<std::string>& args) {

@@ -50,15 +50,16 @@ int open_regular(const std::string& path, const std::string& what) {
   const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC | O_NOCTTY);
   if (fd < 0) {
     const int error = errno;
-    if (error == ENOENT) throw Error("cannot read " + what + " " + quoted(path) + ": no such file");
-    throw Error("cannot read " + what + " " + quoted(path) + ": " + std::strerror(error));
+    if (error == ENOENT) throw FileError(error, path, "cannot read " + what + " " + quoted(path) + ": no such file");
+    throw FileError(error, path, "cannot read " + what + " " + quoted(path) + ": " + std::strerror(error));
   }
   struct stat info {};
   if (::fstat(fd, &info) != 0 || !S_ISREG(info.st_mode)) {
     const bool directory = S_ISDIR(info.st_mode);
     ::close(fd);
-    throw Error("cannot read " + what + " " + quoted(path) + ": " +
-                (directory ? "it is a directory" : "not a regular file (a device, FIFO or socket)"));
+    const std::string message = "cannot read " + what + " " + quoted(path) + ": ";
+    if (directory) throw FileError(EISDIR, path, message + "it is a directory");
+    throw Error(message + "not a regular file (a device, FIFO or socket)");
   }
   note(info);
   return fd;

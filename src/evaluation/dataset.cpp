@@ -139,9 +139,12 @@ std::vector<ImageResult> run_dataset(const std::vector<DatasetMap>& maps, const 
         result.time_ms = std::chrono::duration<double, std::milli>(stop - start).count();
         // The map's own cells say which pixels are free (matched rooms count only those) and its scale.
         const OccupancyGrid grid = load_map(map.image(variant), options.load);
+        ImageResult scored = result;
         apply_scores(score_segmentation(segmentation.labels, *rooms, grid.cells == kFree, grid.resolution,
                                         options.evaluation),
-                     result);
+                     scored);
+        if (options.scored) options.scored(scored, segmentation.labels, *rooms, grid);
+        result = scored;  // ok only once everything for the image has succeeded
       } catch (const MissingSegmentation& e) {
         result.missing = true;
         result.error = e.what();

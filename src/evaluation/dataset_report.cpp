@@ -119,7 +119,7 @@ std::string percent(double fraction) { return format("%.1f", 100.0 * fraction); 
 
 }  // namespace
 
-std::string format_results_table(const std::vector<ImageResult>& results) {
+std::vector<std::vector<std::string>> results_table_rows(const std::vector<ImageResult>& results) {
   std::vector<std::vector<std::string>> rows{{"map", "variant", "rooms", "gt rooms", "recall %", "precision %", "F1 %",
                                               "PQ %", "seg / room", "P inside %", "far %", "ms"}};
   for (const ImageResult& r : results) {
@@ -136,14 +136,15 @@ std::string format_results_table(const std::vector<ImageResult>& results) {
                     format("%.2f", r.matched.segments_per_room), percent(r.precision_inside), percent(r.far_share),
                     format("%.1f", r.time_ms)});
   }
-  return markdown_table(rows);
+  return rows;
 }
 
-std::string format_summary(const std::vector<ImageResult>& results, const std::string& method) {
+std::string format_results_table(const std::vector<ImageResult>& results) { return markdown_table(results_table_rows(results)); }
+
+std::vector<std::vector<std::string>> summary_rows(const std::vector<ImageResult>& results, const std::string& method) {
   std::vector<std::vector<std::string>> rows{{"method", "variant", "maps", "recall / precision %", "F1 / PQ %",
                                               "segments per room", "P inside annotated %", "far %",
                                               "time per map ms (mean / median / max)"}};
-  std::string notes;
   for (const Variant variant : {Variant::kPlain, Variant::kFurnished}) {
     const VariantSummary s = summarize(results, variant);
     if (s.images == 0) continue;
@@ -162,15 +163,26 @@ std::string format_summary(const std::vector<ImageResult>& results, const std::s
       row.push_back(format("%.1f / %.1f / %.1f", s.time_mean_ms, s.time_median_ms, s.time_max_ms));
     }
     rows.push_back(row);
-    if (s.failed > 0 || s.missing > 0) {
-      std::string what;
-      if (s.failed > 0) what = std::to_string(s.failed) + " failed";
-      if (s.missing > 0) what += (what.empty() ? "" : ", ") + std::to_string(s.missing) + " missing";
-      notes += "The " + to_string(variant) + " figures are over " + std::to_string(succeeded) + " of " +
-               std::to_string(s.images) + " images (" + what + ").\n";
-    }
   }
-  return markdown_table(rows) + notes;
+  return rows;
+}
+
+std::string summary_notes(const std::vector<ImageResult>& results) {
+  std::string notes;
+  for (const Variant variant : {Variant::kPlain, Variant::kFurnished}) {
+    const VariantSummary s = summarize(results, variant);
+    if (s.failed == 0 && s.missing == 0) continue;
+    std::string what;
+    if (s.failed > 0) what = std::to_string(s.failed) + " failed";
+    if (s.missing > 0) what += (what.empty() ? "" : ", ") + std::to_string(s.missing) + " missing";
+    notes += "The " + to_string(variant) + " figures are over " + std::to_string(s.succeeded()) + " of " +
+             std::to_string(s.images) + " images (" + what + ").\n";
+  }
+  return notes;
+}
+
+std::string format_summary(const std::vector<ImageResult>& results, const std::string& method) {
+  return markdown_table(summary_rows(results, method)) + summary_notes(results);
 }
 
 std::string results_csv(const std::vector<ImageResult>& results) {

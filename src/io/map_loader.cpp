@@ -1,6 +1,7 @@
 #include "topocut/io/map_loader.h"
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -282,7 +283,8 @@ std::string yaml_image_path(const std::string& yaml_path, const RosMapMetadata& 
 OccupancyGrid load_yaml_map(const std::string& path, const MapLoadOptions& options, std::string* palette) {
   const RosMapMetadata m = parse_ros_map_yaml(read_input_file(path, "map YAML", kMaxMapYamlBytes), path);
   const std::string image = yaml_image_path(path, m);
-  if (!fs::exists(image)) throw Error("map YAML " + quoted(path) + " names image " + quoted(image) + ", which does not exist");
+  if (!fs::exists(image))
+    throw FileError(ENOENT, image, "map YAML " + quoted(path) + " names image " + quoted(image) + ", which does not exist");
   cv::Mat grey, transparent;
   decode_map_image(read_input_file(image, "map image", max_image_file_bytes(options.limits)), image, grey, transparent,
                    options.limits);
@@ -315,7 +317,7 @@ OccupancyGrid load_image_map(const std::string& path, const MapLoadOptions& opti
 
 OccupancyGrid load_map(const std::string& path, const MapLoadOptions& options, std::string* palette) {
   if (path.empty()) throw Error("no map file given");
-  if (!fs::exists(path)) throw Error("map file " + quoted(path) + " does not exist");
+  if (!fs::exists(path)) throw FileError(ENOENT, path, "map file " + quoted(path) + " does not exist");
   validate(options);  // every option's range from the table the commands and bindings parse with
   OccupancyGrid grid = is_yaml_path(path) ? load_yaml_map(path, options, palette) : load_image_map(path, options, palette);
   validate(grid);

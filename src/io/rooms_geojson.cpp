@@ -10,7 +10,6 @@ namespace topocut {
 namespace {
 
 using json_coordinates::point;
-using json_coordinates::rounded;
 using nlohmann::json;
 
 // RFC 7946 3.1.6: exterior counter-clockwise, holes clockwise, first position repeated at the end.
@@ -24,15 +23,15 @@ json closed_ring(const Ring& ring, bool counter_clockwise) {
 json room_feature(const Room& room, const RoomPlacement* placement) {
   json rings = json::array({closed_ring(room.polygon.outer, true)});
   for (const Ring& hole : room.polygon.holes) rings.push_back(closed_ring(hole, false));
-  json properties = {{"kind", "room"}, {"id", room.id}, {"area", rounded(room.area)}, {"centroid", point(room.centroid)}};
-  if (placement) properties["inside"] = point(placement->inside);
+  json properties = json_coordinates::room_properties(room, placement);
+  properties["kind"] = "room";
   return {{"type", "Feature"}, {"id", room.id}, {"geometry", {{"type", "Polygon"}, {"coordinates", rings}}}, {"properties", properties}};
 }
 
 json passage_feature(const Passage& p) {
   return {{"type", "Feature"},
           {"geometry", {{"type", "LineString"}, {"coordinates", json::array({point(p.cut.a), point(p.cut.b)})}}},
-          {"properties", {{"kind", p.door ? "door" : "opening"}, {"rooms", json::array({p.room_a, p.room_b})}, {"width", rounded(p.width)}}}};
+          {"properties", json_coordinates::passage_properties(p)}};
 }
 
 }  // namespace

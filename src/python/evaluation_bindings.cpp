@@ -80,6 +80,30 @@ SegmentationScores evaluate_py(const py::object& labels, const py::object& groun
   return score_segmentation(segments, rooms, mask, scale);
 }
 
+// Pickle state of Scores: every field, in declaration order.
+py::tuple scores_state(const SegmentationScores& s) {
+  const PrecisionRecall& o = s.overlap;
+  const MatchedRooms& m = s.matched;
+  return py::make_tuple(py::make_tuple(o.precision, o.recall, o.segments, o.rooms, o.segment_precision, o.room_recall),
+                        py::make_tuple(m.segments, m.rooms, m.matches, m.false_positives, m.false_negatives, m.iou_sum, m.f1,
+                                       m.pq, m.segments_per_room),
+                        s.precision_inside, s.far_share);
+}
+
+SegmentationScores scores_from(const py::tuple& t) {
+  if (t.size() != 4) throw std::runtime_error("not a topocut.Scores state");
+  const auto o = t[0].cast<py::tuple>();
+  const auto m = t[1].cast<py::tuple>();
+  SegmentationScores s;
+  s.overlap = {o[0].cast<double>(), o[1].cast<double>(), o[2].cast<int>(), o[3].cast<int>(),
+               o[4].cast<std::vector<double>>(), o[5].cast<std::vector<double>>()};
+  s.matched = {m[0].cast<int>(), m[1].cast<int>(), m[2].cast<int>(), m[3].cast<int>(), m[4].cast<int>(),
+               m[5].cast<double>(), m[6].cast<double>(), m[7].cast<double>(), m[8].cast<double>()};
+  s.precision_inside = t[2].cast<double>();
+  s.far_share = t[3].cast<double>();
+  return s;
+}
+
 }  // namespace
 
 void bind_evaluation(py::module_& m) {
@@ -114,7 +138,8 @@ void bind_evaluation(py::module_& m) {
         return "<topocut.Scores recall " + std::to_string(s.overlap.recall) + ", precision " +
                std::to_string(s.overlap.precision) + ", f1 " + std::to_string(s.matched.f1) + ", pq " +
                std::to_string(s.matched.pq) + ">";
-      });
+      })
+      .def(py::pickle(&scores_state, &scores_from));
   m.def("evaluate", &evaluate_py, py::arg("labels"), py::arg("ground_truth"), py::arg("free") = py::none(),
         py::arg("resolution") = 0.05, py::arg("clip_to_free") = true,
         "Scores a segmentation against a ground truth as `topocut evaluate` does; returns Scores.\n\n"

@@ -1,4 +1,4 @@
-// segment(), load_map(), IncrementalSegmenter and their result types.
+// segment(), load_map(), IncrementalSegmenter and their result types (picklable: a state tuple each).
 #include <memory>
 #include <mutex>
 #include <vector>
@@ -12,6 +12,7 @@
 #include "topocut/io/map_loader.h"
 #include "topocut/io/rooms_geojson.h"
 #include "topocut/io/rooms_json.h"
+#include "topocut/segmentation/room_at.h"
 #include "topocut/topocut.h"
 
 namespace topocut::python {
@@ -36,6 +37,91 @@ struct Map {
 };
 
 py::tuple xy(const Point2& p) { return py::make_tuple(p.x, p.y); }
+
+Point2 point_of(const py::handle& pair) {
+  const auto v = pair.cast<std::pair<double, double>>();
+  return {v.first, v.second};
+}
+
+// Pickle states: plain tuples of numbers, arrays and strings, read back field by field.
+py::tuple room_state(const RoomView& r) {
+  py::list holes;
+  for (const Ring& h : r.room.polygon.holes) holes.append(points_array(h));
+  return py::make_tuple(r.room.id, points_array(r.room.polygon.outer), holes, r.room.area, r.room.labelled_area,
+                        xy(r.room.centroid), xy(r.placement.inside), xy(r.placement.min), xy(r.placement.max));
+}
+
+RoomView room_from(const py::tuple& t) {
+  if (t.size() != 9) throw std::runtime_error("not a topocut.Room state");
+  RoomView r;
+  r.room.id = t[0].cast<int>();
+  r.room.polygon.outer = points_from(t[1], "outer");
+  for (const py::handle& h : t[2].cast<py::list>()) r.room.polygon.holes.push_back(points_from(h, "hole"));
+  r.room.area = t[3].cast<double>();
+  r.room.labelled_area = t[4].cast<double>();
+  r.room.centroid = point_of(t[5]);
+  r.placement = {point_of(t[6]), point_of(t[7]), point_of(t[8])};
+  return r;
+}
+
+py::tuple passage_state(const Passage& p) {
+  return py::make_tuple(p.room_a, p.room_b, xy(p.cut.a), xy(p.cut.b), p.width, p.door, static_cast<int>(p.rule));
+}
+
+Passage passage_from(const py::tuple& t) {
+  if (t.size() != 7) throw std::runtime_error("not a topocut.Passage state");
+  Passage p;
+  p.room_a = t[0].cast<int>();
+  p.room_b = t[1].cast<int>();
+  p.cut = {point_of(t[2]), point_of(t[3])};
+  p.width = t[4].cast<double>();
+  p.door = t[5].cast<bool>();
+  p.rule = static_cast<CutRule>(t[6].cast<int>());
+  return p;
+}
+
+// A segmentation's state: its labels (a copy), frame, rooms and passages.
+py::tuple result_state(const Result& r) {
+  const GridSegmentation& g = *r.result;
+  py::list rooms, passages;
+  for (std::size_t k = 0; k < g.segmentation.rooms.size(); ++k) rooms.append(room_state({g.segmentation.rooms[k], g.placements[k]}));
+  for (const Passage& p : g.segmentation.passages) passages.append(passage_state(p));
+  const cv::Mat& labels = g.segmentation.labels;
+  py::array_t<std::int32_t> copy({labels.rows, labels.cols});
+  for (int row = 0; row < labels.rows; ++row)
+    std::copy(labels.ptr<std::int32_t>(row), labels.ptr<std::int32_t>(row) + labels.cols, copy.mutable_data(row, 0));
+  return py::make_tuple(copy, g.segmentation.resolution, xy(g.segmentation.origin),
+                        g.frame.row_order == RowOrder::kBottomUp ? "bottom-up" : "top-down", g.frame.yaw, rooms, passages);
+}
+
+Result result_from(const py::tuple& t) {
+  if (t.size() != 7) throw std::runtime_error("not a topocut.Segmentation state");
+  auto out = std::make_shared<GridSegmentation>();
+  const auto labels = t[0].cast<py::array_t<std::int32_t, py::array::c_style | py::array::forcecast>>();
+  if (labels.ndim() != 2) throw std::runtime_error("not a topocut.Segmentation state");
+  out->segmentation.labels = cv::Mat(static_cast<int>(labels.shape(0)), static_cast<int>(labels.shape(1)), CV_32SC1);
+  std::copy(labels.data(), labels.data() + labels.size(), out->segmentation.labels.ptr<std::int32_t>());
+  out->segmentation.resolution = t[1].cast<double>();
+  out->segmentation.origin = point_of(t[2]);
+  out->frame = {t[3].cast<std::string>() == "bottom-up" ? RowOrder::kBottomUp : RowOrder::kTopDown, t[4].cast<double>()};
+  for (const py::handle& room : t[5].cast<py::list>()) {
+    const RoomView view = room_from(room.cast<py::tuple>());
+    out->segmentation.rooms.push_back(view.room);
+    out->placements.push_back(view.placement);
+  }
+  for (const py::handle& p : t[6].cast<py::list>()) out->segmentation.passages.push_back(passage_from(p.cast<py::tuple>()));
+  return {out};
+}
+
+// The room holding (x, y) of the map frame, or None: the library's room_at().
+py::object room_at_py(const Result& r, double x, double y) {
+  const int id = room_at(*r.result, {x, y});
+  const std::vector<Room>& rooms = r.result->segmentation.rooms;
+  const auto found = std::lower_bound(rooms.begin(), rooms.end(), id, [](const Room& room, int value) { return room.id < value; });
+  if (id <= 0 || found == rooms.end() || found->id != id) return py::none();
+  const std::size_t k = static_cast<std::size_t>(found - rooms.begin());
+  return py::cast(RoomView{rooms[k], r.result->placements[k]});
+}
 
 // The label image as a read-only numpy view of the result's own buffer (no copy); the array keeps
 // the result alive.
@@ -148,7 +234,9 @@ class PyIncremental {
 void bind_results(py::module_& m) {
   py::class_<RoomView>(m, "Room", "A room: id (its label), polygon in the map frame (metres), area, centroid, a point inside, bounding box.")
       .def_property_readonly("id", [](const RoomView& r) { return r.room.id; })
-      .def_property_readonly("area", [](const RoomView& r) { return r.room.area; }, "m², of the room's labelled cells")
+      .def_property_readonly("area", [](const RoomView& r) { return r.room.area; }, "m², of the polygon (outer minus holes), as every output's area")
+      .def_property_readonly("labelled_area", [](const RoomView& r) { return r.room.labelled_area; },
+                             "m², of the room's labelled cells (count of labels == id times the cell area)")
       .def_property_readonly("centroid", [](const RoomView& r) { return xy(r.room.centroid); }, "(x, y) of the labelled cells")
       .def_property_readonly("inside", [](const RoomView& r) { return xy(r.placement.inside); },
                              "(x, y) of the room's cell farthest from its edge: always in the room, a place for its name")
@@ -164,32 +252,46 @@ void bind_results(py::module_& m) {
       }, "list of (n, 2) arrays, clockwise")
       .def("__repr__", [](const RoomView& r) {
         return "<topocut.Room " + std::to_string(r.room.id) + ", " + std::to_string(r.room.area) + " m²>";
-      });
+      })
+      .def(py::pickle(&room_state, [](const py::tuple& t) { return room_from(t); }));
   py::class_<Passage>(m, "Passage", "A passage between two rooms: the cut that separates them.")
       .def_property_readonly("rooms", [](const Passage& p) { return py::make_tuple(p.room_a, p.room_b); }, "(room a, room b), a < b")
       .def_property_readonly("cut", [](const Passage& p) { return points_array({p.cut.a, p.cut.b}); }, "(2, 2) array: the cut's end points")
       .def_property_readonly("width", [](const Passage& p) { return p.width; }, "metres")
-      .def_property_readonly("kind", [](const Passage& p) { return p.door ? "door" : "opening"; },
+      .def_property_readonly("kind", [](const Passage& p) { return passage_kind(p); },
                              "'door' (a narrow gap in a wall) or 'opening' (a wider one)")
       .def("__repr__", [](const Passage& p) {
-        return "<topocut.Passage " + std::to_string(p.room_a) + "-" + std::to_string(p.room_b) + ", " + (p.door ? "door" : "opening") + ">";
-      });
+        return "<topocut.Passage " + std::to_string(p.room_a) + "-" + std::to_string(p.room_b) + ", " + passage_kind(p) + ">";
+      })
+      .def(py::pickle(&passage_state, [](const py::tuple& t) { return passage_from(t); }));
   py::class_<Result>(m, "Segmentation", "The rooms of a grid: labels, rooms, passages.")
       .def_property_readonly("labels", [](const Result& r) { return labels_view(r.result); },
                              "int32 array, the grid's shape and row order: 0 no room, else the room id (read-only view, no copy)")
       .def_property_readonly("rooms", [](const Result& r) { return rooms_of(r.result); }, "list of Room, by id")
       .def_property_readonly("passages", [](const Result& r) { return r.result->segmentation.passages; }, "list of Passage")
       .def_property_readonly("resolution", [](const Result& r) { return r.result->segmentation.resolution; })
-      .def("to_json", [](const Result& r) { return rooms_to_json(r.result->segmentation); },
+      .def_property_readonly("origin", [](const Result& r) { return xy(r.result->segmentation.origin); },
+                             "(x, y) of the grid's lower-left corner, map frame")
+      .def("room_at", &room_at_py, py::arg("x"), py::arg("y"),
+           "The Room whose labelled cell holds the point (x, y) of the map frame (metres), or None when the\n"
+           "point is on no room's cell (an obstacle, unknown space, off the grid): `topocut segment --at X,Y`.")
+      .def("to_json", [](const Result& r) { return rooms_to_json(r.result->segmentation, r.result->placements); },
            "The rooms JSON the topocut command writes with --out-json (metres, map frame).")
       .def("to_geojson", [](const Result& r) { return rooms_to_geojson(r.result->segmentation, r.result->placements); },
            "The GeoJSON FeatureCollection the topocut command writes with --out-geojson (map frame, metres):\n"
-           "rooms as Polygons (RFC 7946 ring order, closed rings), passages as LineStrings.");
+           "rooms as Polygons (RFC 7946 ring order, closed rings), passages as LineStrings.")
+      .def(py::pickle(&result_state, [](const py::tuple& t) { return result_from(t); }));
   py::class_<Map>(m, "Map", "A loaded map: grid (int8, -1 unknown / 0 free / 100 occupied, row 0 at the origin as in ROS), resolution, origin.")
       .def_readonly("grid", &Map::grid)
       .def_readonly("resolution", &Map::resolution)
       .def_readonly("origin", &Map::origin, "(x, y, yaw) of the lower-left corner")
-      .def_readonly("cells", &Map::cells, "how the file's values were read (palette or thresholds)");
+      .def_readonly("cells", &Map::cells, "how the file's values were read (palette or thresholds)")
+      .def(py::pickle([](const Map& m) { return py::make_tuple(m.grid, m.resolution, m.origin, m.cells); },
+                      [](const py::tuple& t) {
+                        if (t.size() != 4) throw std::runtime_error("not a topocut.Map state");
+                        return Map{t[0].cast<py::array_t<std::int8_t>>(), t[1].cast<double>(), t[2].cast<py::tuple>(),
+                                   t[3].cast<std::string>()};
+                      }));
 }
 
 }  // namespace

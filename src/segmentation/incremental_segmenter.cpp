@@ -189,7 +189,7 @@ Point2 IncrementalSegmenter::State::room_centroid(const RoomState& room, int hei
   return {origin.x + (room.sum_c / n + 0.5) * resolution, origin.y + (height - room.sum_r / n - 0.5) * resolution};
 }
 
-// Brings result.rooms (sorted by id) up to date for one room: erased if dead, else area and
+// Brings result.rooms (sorted by id) up to date for one room: erased if dead, else labelled area and
 // centroid from its state and, when given, the new polygon.
 void IncrementalSegmenter::State::refresh_room(int id, const PolygonWithHoles* polygon) {
   auto it = std::lower_bound(result.rooms.begin(), result.rooms.end(), id,
@@ -205,7 +205,8 @@ void IncrementalSegmenter::State::refresh_room(int id, const PolygonWithHoles* p
     it->id = id;
   }
   if (polygon != nullptr) it->polygon = *polygon;
-  it->area = static_cast<double>(state.cells) * resolution * resolution;
+  it->area = area(it->polygon);
+  it->labelled_area = static_cast<double>(state.cells) * resolution * resolution;
   it->centroid = room_centroid(state, cells.rows);
 }
 

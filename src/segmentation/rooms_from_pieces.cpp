@@ -293,7 +293,7 @@ void renumber_by_first_cells(SpanLabels& written, RoomNumbering& numbering, cons
   numbering.rooms = static_cast<int>(by_first.size());
 }
 
-// Room k is piece piece_of_room[k] in world metres, with the area and centroid of its cells.
+// Room k is piece piece_of_room[k] in world metres, with its area, and the area and centroid of its cells.
 std::vector<Room> room_list(const OccupancyGrid& grid, const PieceSet& set, const RoomNumbering& numbering,
                             const RoomCells& t) {
   const int h = grid.height();
@@ -314,7 +314,8 @@ std::vector<Room> room_list(const OccupancyGrid& grid, const PieceSet& set, cons
       world.holes.push_back(std::move(ring));
     }
     room.polygon = normalized_orientation(world);
-    room.area = static_cast<double>(t.cells[k]) * cell_area;
+    room.area = area(room.polygon);
+    room.labelled_area = static_cast<double>(t.cells[k]) * cell_area;
     const double mean_c = t.sum_c[k] / static_cast<double>(t.cells[k]);
     const double mean_r = t.sum_r[k] / static_cast<double>(t.cells[k]);
     room.centroid = {grid.origin.x + (mean_c + 0.5) * grid.resolution, grid.origin.y + (h - mean_r - 0.5) * grid.resolution};

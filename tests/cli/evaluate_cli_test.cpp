@@ -3,6 +3,7 @@
 
 #include <array>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -307,6 +308,129 @@ TEST_F(EvaluateCli, BadLabelImagesAndFoldersAreOneErrorLine) {
 
   EXPECT_EQ(evaluate("--maps '" + data.string() + "' --labels '" + labels.string() + "'").code, 2);
   EXPECT_EQ(evaluate("--dataset '" + data.string() + "' --labels '" + labels.string() + "' --mode incremental").code, 2);
+}
+
+}  // namespace
+
+namespace {
+
+int pixels_of(const cv::Mat& picture, const cv::Vec3b& colour) {
+  int n = 0;
+  for (int r = 0; r < picture.rows; ++r)
+    for (int c = 0; c < picture.cols; ++c) n += picture.at<cv::Vec3b>(r, c) == colour;
+  return n;
+}
+
+const cv::Vec3b kMissedRed(40, 40, 220), kMergedOrange(0, 140, 255);  // BGR, as comparison_pictures draws them
+
+// The trivial segmenter on the synthetic dataset: on "closed" its two segments match the two rooms;
+// on "open" its one segment (A, the door and B) matches A (IoU 2400 / 4048), misses B and merges both.
+TEST_F(EvaluateCli, ReportDrawsEveryImageAndMarksMissesAndMerges) {
+  const fs::path data = make_dataset();
+  const fs::path report = dir_ / "report";  // made by the command
+  const CliResult run = evaluate("--dataset '" + data.string() + "' --trivial --variant plain --report '" + report.string() + "'");
+  ASSERT_EQ(run.code, 0) << run.err;
+  EXPECT_NE(run.out.find("wrote report: " + (report / "index.html").string()), std::string::npos) << run.out;
+  const std::string page = file_text((report / "index.html").string());
+  for (const char* text : {"<!DOCTYPE html>", "F1 / PQ %", "segments per room", "<th>PQ %</th>", "closed (plain)", "open (plain)",
+                           "src=\"open_plain_truth.png\"", "src=\"open_plain_rooms.png\"", "src=\"closed_plain_truth.png\"",
+                           "2 rooms, 1 matched, 1 missed; segmentation: 1 segments, 1 merging rooms",
+                           "2 rooms, 2 matched, 0 missed; segmentation: 2 segments, 0 merging rooms"})
+    EXPECT_NE(page.find(text), std::string::npos) << text;
+  EXPECT_FALSE(fs::exists(report / "open_furnished_truth.png"));  // only the variant that was run
+  using topocut::testing::Pixels;
+  const cv::Mat open_truth = topocut::testing::read_test_image((report / "open_plain_truth.png").string(), Pixels::kColour);
+  const cv::Mat open_rooms = topocut::testing::read_test_image((report / "open_plain_rooms.png").string(), Pixels::kColour);
+  const cv::Mat closed_truth = topocut::testing::read_test_image((report / "closed_plain_truth.png").string(), Pixels::kColour);
+  const cv::Mat closed_rooms = topocut::testing::read_test_image((report / "closed_plain_rooms.png").string(), Pixels::kColour);
+  ASSERT_EQ(open_truth.size(), cv::Size(480, 240));  // 120 x 60 px scaled 4 x
+  EXPECT_EQ(open_rooms.size(), open_truth.size());
+  // Room B (columns 70..109) is missed: red only there; the merging segment is orange.
+  EXPECT_GT(pixels_of(open_truth(cv::Rect(4 * 70, 0, 4 * 40, 240)), kMissedRed), 1000);
+  EXPECT_EQ(pixels_of(open_truth(cv::Rect(0, 0, 4 * 64, 240)), kMissedRed), 0);
+  EXPECT_GT(pixels_of(open_rooms, kMergedOrange), 1000);
+  EXPECT_EQ(pixels_of(closed_truth, kMissedRed) + pixels_of(closed_rooms, kMergedOrange), 0);
+  // A matched pair has one colour: room A in the truth, the segment over it (between its stripes).
+  const cv::Point in_a(4 * 30 + 2, 4 * 24);  // (x + y) % 10 == 8: between the stripes
+  EXPECT_EQ(open_truth.at<cv::Vec3b>(in_a), open_rooms.at<cv::Vec3b>(in_a));
+  EXPECT_EQ(closed_truth.at<cv::Vec3b>(in_a), closed_rooms.at<cv::Vec3b>(in_a));
+  EXPECT_NE(closed_truth.at<cv::Vec3b>(in_a), closed_truth.at<cv::Vec3b>(cv::Point(4 * 90 + 2, 4 * 24)));
+}
+
+TEST_F(EvaluateCli, ReportIsRefusedWhereItCannotBeDrawn) {
+  const fs::path data = make_dataset();
+  std::ofstream(dir_ / "file") << "x";
+  const CliResult on_file = evaluate("--dataset '" + data.string() + "' --report '" + (dir_ / "file").string() + "'");
+  EXPECT_EQ(on_file.code, 1);
+  EXPECT_NE(on_file.err.find("is a file, not a folder"), std::string::npos) << on_file.err;
+  const CliResult maps = evaluate("--maps '" + data.string() + "' --report '" + (dir_ / "r").string() + "'");
+  EXPECT_EQ(maps.code, 2);
+  EXPECT_NE(maps.err.find("--report"), std::string::npos) << maps.err;
+  // The report never overwrites an input: in the dataset's own folder, a map named closed_plain_truth
+  // has the image the picture of map closed would replace.
+  fs::copy_file(data / "closed.png", data / "closed_plain_truth.png");
+  fs::copy_file(data / "closed_gt_segmentation.png", data / "closed_plain_truth_gt_segmentation.png");
+  const std::string before = file_text((data / "closed_plain_truth.png").string());
+  const CliResult over_input = evaluate("--dataset '" + data.string() + "' --variant plain --report '" + data.string() + "'");
+  EXPECT_EQ(over_input.code, 1);
+  EXPECT_NE(over_input.err.find("_truth.png' is both an input and an output"), std::string::npos) << over_input.err;
+  EXPECT_EQ(file_text((data / "closed_plain_truth.png").string()), before);
+  EXPECT_FALSE(fs::exists(data / "index.html"));
+}
+
+// The page as a browser shows it: headless Chromium loads the report inside a page of the test's
+// own (an iframe, file access allowed) and counts the pictures that decoded. Skipped without
+// Chromium (Debian's chromium; bash .ci/setup.sh test installs it).
+std::string chromium() {
+  for (const char* name : {"chromium", "chromium-browser", "google-chrome"}) {
+    const std::string line = std::string("command -v ") + name + " 2>/dev/null";
+    FILE* pipe = popen(line.c_str(), "r");
+    char path[512] = {0};
+    const bool found = pipe && fgets(path, sizeof path, pipe) != nullptr;
+    if (pipe) pclose(pipe);
+    if (found) return std::string(path, strcspn(path, "\n"));
+  }
+  return "";
+}
+
+// "loaded N of M": the report's images that Chromium decoded (complete, non-zero width).
+std::string images_loaded_in_chromium(const std::string& browser, const fs::path& page, const fs::path& work) {
+  const fs::path probe = work / "probe.html";
+  std::ofstream(probe) << "<!DOCTYPE html><html><body><iframe id=\"r\" src=\"file://" << page.string() << "\"></iframe><script>\n"
+                       << "document.getElementById('r').addEventListener('load', () => {\n"
+                       << "  const images = [...document.getElementById('r').contentDocument.images];\n"
+                       << "  const loaded = images.filter(i => i.complete && i.naturalWidth > 0).length;\n"
+                       << "  const p = document.createElement('p');\n"
+                       << "  p.id = 'result';\n"
+                       << "  p.textContent = `loaded ${loaded} of ${images.length}`;\n"
+                       << "  document.body.appendChild(p);\n"
+                       << "});\n</script></body></html>\n";
+  const std::string line = "timeout -s KILL 60 " + topocut::testing::shell_quoted(browser) +
+                           " --headless --no-sandbox --disable-gpu --allow-file-access-from-files --virtual-time-budget=10000"
+                           " --user-data-dir=" + topocut::testing::shell_quoted((work / "profile").string()) +
+                           " --dump-dom " + topocut::testing::shell_quoted("file://" + probe.string()) + " 2>/dev/null";
+  FILE* pipe = popen(line.c_str(), "r");
+  std::string dom;
+  char buffer[4096];
+  while (pipe && fgets(buffer, sizeof buffer, pipe)) dom += buffer;
+  if (pipe) pclose(pipe);
+  const std::string marker = "<p id=\"result\">";
+  const std::size_t at = dom.find(marker);
+  if (at == std::string::npos) return "no result: " + dom.substr(0, 300);
+  return dom.substr(at + marker.size(), dom.find('<', at + marker.size()) - at - marker.size());
+}
+
+TEST_F(EvaluateCli, ReportPageLoadsEveryImageInChromium) {
+  const std::string browser = chromium();
+  if (browser.empty()) GTEST_SKIP() << "chromium is not installed (apt-get install chromium): the report page is not opened";
+  const fs::path data = make_dataset();
+  const fs::path report = dir_ / "report";
+  const CliResult run = evaluate("--dataset '" + data.string() + "' --report '" + report.string() + "'");
+  ASSERT_EQ(run.code, 0) << run.err;
+  EXPECT_EQ(images_loaded_in_chromium(browser, report / "index.html", dir_), "loaded 8 of 8");  // 2 maps x 2 variants x 2
+  // The check sees a broken picture.
+  fs::remove(report / "open_furnished_rooms.png");
+  EXPECT_EQ(images_loaded_in_chromium(browser, report / "index.html", dir_), "loaded 7 of 8");
 }
 
 }  // namespace

@@ -316,3 +316,84 @@ TEST(SegmentationOptions, ParityWithASwitchItSetsIsAUsageErrorInEveryCommand) {
 }
 
 }  // namespace
+
+namespace {
+
+double ring_area(const nlohmann::json& ring) {
+  double twice = 0.0;
+  for (std::size_t i = 0; i < ring.size(); ++i) {
+    const nlohmann::json& a = ring[i];
+    const nlohmann::json& b = ring[(i + 1) % ring.size()];
+    twice += a[0].get<double>() * b[1].get<double>() - b[0].get<double>() * a[1].get<double>();
+  }
+  return std::abs(twice) / 2.0;
+}
+
+// The rooms JSON, the GeoJSON and the label image say the same of every room: the JSON carries the
+// GeoJSON's properties (kind, inside point), "area" is the polygon's and "labelled_area" the cells'.
+// On the furnished map they differ (absorbed furniture), so the test tells them apart.
+TEST(SegmentCli, JsonGeoJsonAndLabelsAgree) {
+  TempDir dir;
+  const Result r = run(dir, {bundled("furnished.yaml"), "--out-json", dir.file("r.json"), "--out-geojson", dir.file("r.geojson"),
+                             "--out-labels", dir.file("l.png")});
+  ASSERT_EQ(r.code, 0) << r.err;
+  const nlohmann::json doc = nlohmann::json::parse(file_text(dir.file("r.json")));
+  const nlohmann::json geo = nlohmann::json::parse(file_text(dir.file("r.geojson")));
+  const cv::Mat labels = topocut::testing::read_test_image(dir.file("l.png"));
+  const double cell = doc["resolution"].get<double>() * doc["resolution"].get<double>();
+  ASSERT_GE(doc["rooms"].size(), 2u);
+  double largest_difference = 0.0;
+  for (std::size_t i = 0; i < doc["rooms"].size(); ++i) {
+    const nlohmann::json& room = doc["rooms"][i];
+    double polygon = ring_area(room["outer"]);
+    for (const nlohmann::json& hole : room["holes"]) polygon -= ring_area(hole);
+    EXPECT_NEAR(room["area"].get<double>(), polygon, 1e-4) << "room " << room["id"];
+    const int id = room["id"].get<int>();
+    EXPECT_NEAR(room["labelled_area"].get<double>(), cv::countNonZero(labels == id) * cell, 1e-6) << "room " << id;
+    largest_difference = std::max(largest_difference, std::abs(room["area"].get<double>() - room["labelled_area"].get<double>()));
+    nlohmann::json properties = geo["features"][i]["properties"];
+    properties.erase("kind");
+    nlohmann::json expected = room;
+    expected.erase("outer");
+    expected.erase("holes");
+    EXPECT_EQ(expected, properties);
+    ASSERT_TRUE(room.contains("inside"));
+  }
+  EXPECT_GT(largest_difference, 0.01) << "the furnished map's polygons should cover furniture that no room's cells do";
+  ASSERT_EQ(doc["passages"].size() + doc["rooms"].size(), geo["features"].size());
+  for (std::size_t i = 0; i < doc["passages"].size(); ++i) {
+    nlohmann::json passage = doc["passages"][i];
+    passage.erase("cut");
+    EXPECT_EQ(passage, geo["features"][doc["rooms"].size() + i]["properties"]);
+    EXPECT_TRUE(passage["kind"] == "door" || passage["kind"] == "opening") << passage;
+  }
+}
+
+// --at X,Y names the room whose cell holds the point: each room's inside point is in that room; a
+// wall and a point off the map are in none; a malformed point is a usage error.
+TEST(SegmentCli, AtNamesTheRoomAtAPoint) {
+  TempDir dir;
+  const Result json_run = run(dir, {bundled("floorplan.yaml"), "--out-json", dir.file("r.json")});
+  ASSERT_EQ(json_run.code, 0) << json_run.err;
+  const nlohmann::json doc = nlohmann::json::parse(file_text(dir.file("r.json")));
+  std::vector<std::string> args = {bundled("floorplan.yaml")};
+  std::string expected;
+  for (const nlohmann::json& room : doc["rooms"]) {
+    std::ostringstream point;
+    point.precision(17);
+    point << room["inside"][0].get<double>() << "," << room["inside"][1].get<double>();
+    args.insert(args.end(), {"--at", point.str()});
+    expected += "at " + point.str() + ": room " + std::to_string(room["id"].get<int>()) + "\n";
+  }
+  args.insert(args.end(), {"--at", "0.01,0.01", "--at=-5,3"});  // the map's corner wall; off the map
+  expected += "at 0.01,0.01: none\nat -5,3: none\n";
+  const Result r = run(dir, args);
+  ASSERT_EQ(r.code, 0) << r.err;
+  ASSERT_GE(r.out.size(), expected.size());
+  EXPECT_EQ(r.out.substr(r.out.size() - expected.size()), expected) << r.out;
+  expect_error(run(dir, {bundled("floorplan.yaml"), "--at", "3"}), "--at needs a point X,Y", 2);
+  expect_error(run(dir, {bundled("floorplan.yaml"), "--at", "3,x"}), "needs a number", 2);
+  expect_error(run(dir, {bundled("floorplan.yaml"), "--at", "inf,1"}), "finite", 2);
+}
+
+}  // namespace

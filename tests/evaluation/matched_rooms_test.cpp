@@ -172,5 +172,42 @@ TEST(SegmentationScores, CarryEveryScoreOfTheSameLabels) {
   EXPECT_DOUBLE_EQ(s.far_share, 0.25);
 }
 
+// Rooms 1, 2, 3 are 20 x 20 px blocks side by side, room 4 a 20 x 20 block below room 1. Segment 1
+// takes rooms 1 and 2 (a merge), segment 2 is room 3 exactly, segments 3 and 4 split room 4 in two
+// halves, segment 5 is 60 px of nothing (ignored).
+TEST(RoomOutcomes, MissesMergesAndMatchesRegionByRegion) {
+  cv::Mat rooms = labels(40, 80), segments = labels(40, 80);
+  rooms(cv::Rect(0, 0, 20, 20)).setTo(1);
+  rooms(cv::Rect(20, 0, 20, 20)).setTo(2);
+  rooms(cv::Rect(40, 0, 20, 20)).setTo(3);
+  rooms(cv::Rect(0, 20, 20, 20)).setTo(4);
+  segments(cv::Rect(0, 0, 40, 20)).setTo(1);
+  segments(cv::Rect(40, 0, 20, 20)).setTo(2);
+  segments(cv::Rect(0, 20, 10, 20)).setTo(3);
+  segments(cv::Rect(10, 20, 10, 20)).setTo(4);
+  segments(cv::Rect(60, 30, 10, 6)).setTo(5);
+  const RoomOutcomes o = room_outcomes(segments, rooms);
+  EXPECT_EQ(o.room_match, (std::map<int, int>{{1, 0}, {2, 0}, {3, 2}, {4, 0}}));
+  EXPECT_EQ(o.segment_match, (std::map<int, int>{{1, 0}, {2, 3}, {3, 0}, {4, 0}}));
+  EXPECT_EQ(o.merges, std::set<int>{1});
+  // The counts are matched_rooms()' own.
+  const MatchedRooms m = matched_rooms(segments, rooms);
+  EXPECT_EQ(m.matches, 1);
+  EXPECT_EQ(m.false_negatives, 3);
+  EXPECT_EQ(m.false_positives, 3);
+  // Half of a room is not more than half: the split room's halves merge nothing.
+  cv::Mat halves = labels(40, 80);
+  halves(cv::Rect(0, 20, 10, 20)).setTo(1);
+  halves(cv::Rect(0, 0, 10, 20)).setTo(1);
+  EXPECT_TRUE(room_outcomes(halves, rooms).merges.empty());
+  // Only free pixels count: with room 2 off the map, segment 1 matches room 1.
+  cv::Mat free(40, 80, CV_8UC1, cv::Scalar(255));
+  free(cv::Rect(20, 0, 20, 20)).setTo(0);
+  const RoomOutcomes clipped = room_outcomes(segments, rooms, free);
+  EXPECT_EQ(clipped.room_match.at(1), 1);
+  EXPECT_EQ(clipped.room_match.count(2), 0u);
+  EXPECT_TRUE(clipped.merges.empty());
+}
+
 }  // namespace
 }  // namespace topocut

@@ -27,6 +27,7 @@ Segmentation two_rooms() {
   a.polygon.outer = {{0, 0}, {0, 4}, {4, 4}, {4, 0}};
   a.polygon.holes = {{{1, 1}, {2, 1}, {2, 2}, {1, 2}}};
   a.area = 15.0;
+  a.labelled_area = 14.5;
   a.centroid = {2.0, 2.1};
   Room b;
   b.id = 2;
@@ -68,6 +69,7 @@ TEST(RoomsGeoJson, Rfc7946RingsAndProperties) {
   EXPECT_EQ(room["properties"]["id"], 1);
   EXPECT_EQ(room["properties"]["kind"], "room");
   EXPECT_DOUBLE_EQ(room["properties"]["area"].get<double>(), 15.0);
+  EXPECT_DOUBLE_EQ(room["properties"]["labelled_area"].get<double>(), 14.5);
   EXPECT_EQ(room["properties"]["inside"], json::array({0.5, 0.5}));
   const json& door = features[2];
   EXPECT_EQ(door["geometry"]["type"], "LineString");

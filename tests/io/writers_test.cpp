@@ -8,6 +8,7 @@
 #include "io/temp_dir.h"
 #include "topocut/core/error.h"
 #include "topocut/io/overlay.h"
+#include "topocut/io/rooms_geojson.h"
 #include "topocut/io/rooms_json.h"
 #include "topocut/io/rooms_svg.h"
 
@@ -32,8 +33,12 @@ struct TwoRooms {
     // Room 1 spans x 1.5..3.5, y 2.5..4.5 in metres; room 2 x 3.5..5.5.
     seg.rooms.push_back({1, {{{1.5, 2.5}, {3.5, 2.5}, {3.5, 4.5}, {1.5, 4.5}}, {}}, 4.0, {2.5, 3.5}});
     seg.rooms.push_back({2, {{{3.5, 2.5}, {5.5, 2.5}, {5.5, 4.5}, {3.5, 4.5}}, {{{4, 3}, {4, 4}, {5, 4}, {5, 3}}}}, 4.0, {4.5, 3.5}});
-    seg.passages.push_back({1, 2, {{3.5, 3.0}, {3.5, 4.0}}, 1.0});
+    seg.rooms[1].area = 3.0;  // the polygon's: 4 m² less its 1 m² hole
+    seg.rooms[0].labelled_area = seg.rooms[1].labelled_area = 4.0;
+    seg.passages.push_back({1, 2, {{3.5, 3.0}, {3.5, 4.0}}, 1.0, true});
+    placements = {{{2.0, 3.0}, {1.5, 2.5}, {3.5, 4.5}}, {{4.5, 4.25}, {3.5, 2.5}, {5.5, 4.5}}};
   }
+  std::vector<RoomPlacement> placements;
 };
 
 TEST(RoomsJson, CarriesRoomsAndPassagesInMetres) {
@@ -44,7 +49,9 @@ TEST(RoomsJson, CarriesRoomsAndPassagesInMetres) {
   EXPECT_EQ(doc["size"], nlohmann::json::array({10, 6}));
   ASSERT_EQ(doc["rooms"].size(), 2u);
   EXPECT_EQ(doc["rooms"][1]["id"], 2);
-  EXPECT_DOUBLE_EQ(doc["rooms"][1]["area"].get<double>(), 4.0);
+  EXPECT_DOUBLE_EQ(doc["rooms"][1]["area"].get<double>(), 3.0);
+  EXPECT_DOUBLE_EQ(doc["rooms"][1]["labelled_area"].get<double>(), 4.0);
+  EXPECT_FALSE(doc["rooms"][1].contains("inside")) << "no placements given";
   EXPECT_DOUBLE_EQ(doc["rooms"][1]["centroid"][0].get<double>(), 4.5);
   EXPECT_EQ(doc["rooms"][1]["outer"].size(), 4u);
   ASSERT_EQ(doc["rooms"][1]["holes"].size(), 1u);
@@ -53,6 +60,30 @@ TEST(RoomsJson, CarriesRoomsAndPassagesInMetres) {
   EXPECT_EQ(doc["passages"][0]["rooms"], nlohmann::json::array({1, 2}));
   EXPECT_DOUBLE_EQ(doc["passages"][0]["cut"][1][1].get<double>(), 4.0);
   EXPECT_DOUBLE_EQ(doc["passages"][0]["width"].get<double>(), 1.0);
+  EXPECT_EQ(doc["passages"][0]["kind"], "door");
+  EXPECT_EQ(doc["frame"], "map");
+}
+
+// What GeoJSON and Python carry (kind, inside point), the rooms JSON carries too, with the same values.
+TEST(RoomsJson, CarriesWhatTheGeoJsonCarries) {
+  const TwoRooms t;
+  const nlohmann::json doc = nlohmann::json::parse(rooms_to_json(t.seg, t.placements));
+  const nlohmann::json geo = nlohmann::json::parse(rooms_to_geojson(t.seg, t.placements));
+  ASSERT_EQ(geo["features"].size(), doc["rooms"].size() + doc["passages"].size());
+  for (std::size_t i = 0; i < doc["rooms"].size(); ++i) {
+    nlohmann::json properties = geo["features"][i]["properties"];
+    EXPECT_EQ(properties["kind"], "room");
+    properties.erase("kind");
+    nlohmann::json room = doc["rooms"][i];
+    room.erase("outer");
+    room.erase("holes");
+    EXPECT_EQ(room, properties);
+  }
+  EXPECT_EQ(doc["rooms"][1]["inside"], nlohmann::json::array({4.5, 4.25}));
+  nlohmann::json passage = doc["passages"][0];
+  passage.erase("cut");
+  EXPECT_EQ(passage, geo["features"][2]["properties"]);
+  EXPECT_THROW(rooms_to_json(t.seg, {t.placements[0]}), Error);
 }
 
 TEST(RoomsJson, WritesAtomicallyAndReportsBadPaths) {

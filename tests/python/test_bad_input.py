@@ -1,4 +1,5 @@
-# Bad input raises one ValueError with the command's message; nothing crashes.
+# Bad input raises one ValueError with the command's message (a missing file FileNotFoundError);
+# nothing crashes.
 import subprocess
 
 import numpy as np
@@ -60,9 +61,10 @@ def test_messages_are_the_commands(cli, tmp_path):
     missing = str(tmp_path / "missing.png")
     run = subprocess.run([cli, "segment", missing], capture_output=True, text=True)
     assert run.returncode != 0
-    with pytest.raises(ValueError) as error:
+    with pytest.raises(FileNotFoundError) as error:
         topocut.load_map(missing)
-    assert run.stderr.strip() == f"topocut segment: error: {error.value}"
+    assert error.value.filename == missing
+    assert run.stderr.strip() == f"topocut segment: error: {error.value.strerror}"
     run = subprocess.run([cli, "segment", missing, "--parity", "--no-merge"], capture_output=True, text=True)
     with pytest.raises(ValueError) as error:
         topocut.segment(free_box(), 0.05, parity=True, no_merge=True)

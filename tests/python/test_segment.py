@@ -76,7 +76,7 @@ def test_rooms_passages_and_json(bundled_map):
         assert r.labels[row, col] == room.id
         xmin, ymin, xmax, ymax = room.bbox
         assert (room.outer[:, 0] >= xmin).all() and (room.outer[:, 1] <= ymax).all()
-        assert room.area == pytest.approx(np.count_nonzero(r.labels == room.id) * m.resolution**2)
+        assert room.labelled_area == pytest.approx(np.count_nonzero(r.labels == room.id) * m.resolution**2)
     assert r.passages and all(p.kind in ("door", "opening") for p in r.passages)
     data = json.loads(r.to_json())
     assert [room["id"] for room in data["rooms"]] == ids

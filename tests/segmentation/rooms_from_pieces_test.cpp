@@ -29,7 +29,9 @@ TEST(RoomsFromPieces, RoomsFollowRasterOrderAndCutsBecomePassages) {
   EXPECT_EQ(s.labels.at<int>(0, 0), 1);  // the left piece owns the first cell
   EXPECT_EQ(s.labels.at<int>(0, 9), 2);
   EXPECT_EQ(cv::countNonZero(s.labels == 1), 16);
-  EXPECT_DOUBLE_EQ(s.rooms[0].area, 16 * 0.25);
+  EXPECT_DOUBLE_EQ(s.rooms[0].labelled_area, 16 * 0.25);
+  EXPECT_DOUBLE_EQ(s.rooms[1].labelled_area, 24 * 0.25);
+  EXPECT_DOUBLE_EQ(s.rooms[0].area, 16 * 0.25);  // the pieces cover exactly their cells here
   EXPECT_DOUBLE_EQ(s.rooms[1].area, 24 * 0.25);
   // Room 1 covers columns 0..3: centroid x = 10 + 2 * 0.5, y = 20 + 2 * 0.5.
   EXPECT_DOUBLE_EQ(s.rooms[0].centroid.x, 11.0);

@@ -47,9 +47,10 @@ void expect_consistent(const OccupancyGrid& grid, const Segmentation& s) {
     EXPECT_EQ(room.id, static_cast<int>(i) + 1);
     const int cells = cv::countNonZero(s.labels == room.id);
     EXPECT_GT(cells, 0);
-    EXPECT_NEAR(room.area, cells * grid.resolution * grid.resolution, 1e-9);
+    EXPECT_NEAR(room.labelled_area, cells * grid.resolution * grid.resolution, 1e-9);
     EXPECT_GE(room.polygon.outer.size(), 3u);
-    total += room.area;
+    EXPECT_NEAR(room.area, area(room.polygon), 1e-9);  // every output's "area" is the polygon's
+    total += room.labelled_area;
   }
   EXPECT_NEAR(total, cv::countNonZero(grid.cells == kFree) * grid.resolution * grid.resolution, 1e-6);
   // Ids follow the raster order of each room's first cell.
@@ -95,6 +96,7 @@ TEST(Segment, TrivialModeOneRoomPerComponentNumberedByFirstCell) {
   EXPECT_EQ(s.labels.at<int>(47, 62), 0);  // unknown
   EXPECT_TRUE(s.passages.empty());
   // Room 3: cells 45..54 x 40..49; centroid at the middle of the block in world metres.
+  EXPECT_NEAR(s.rooms[2].labelled_area, 1.0, 1e-9);
   EXPECT_NEAR(s.rooms[2].area, 1.0, 1e-9);
   EXPECT_NEAR(s.rooms[2].centroid.x, -2.0 + 50 * 0.1, 1e-9);
   EXPECT_NEAR(s.rooms[2].centroid.y, 1.0 + (60 - 45) * 0.1, 1e-9);
@@ -296,7 +298,7 @@ TEST(Segment, AnLShapedCorridorIsOneRoomWhereDuDeAloneCutsIt) {
   // The merged room's polygon is the union of DuDe's pieces: the whole L (its cells' area, up to
   // the one-cell simplification of the outline), without holes.
   EXPECT_TRUE(s.rooms[0].polygon.holes.empty());
-  EXPECT_NEAR(area(s.rooms[0].polygon), s.rooms[0].area, 0.02 * s.rooms[0].area);
+  EXPECT_NEAR(s.rooms[0].area, s.rooms[0].labelled_area, 0.02 * s.rooms[0].labelled_area);
   const Segmentation parity = segment(grid, parity_segment_options());
   expect_consistent(grid, parity);
   EXPECT_GE(parity.rooms.size(), 2u);
@@ -312,8 +314,8 @@ TEST(Segment, TwoRoomsJoinedByADoorAreTwoRoomsWithOnePassage) {
   // Each room holds one of the 3 m x 3 m squares (and a share of the door's frame).
   EXPECT_NE(s.labels.at<int>(30, 30), s.labels.at<int>(30, 95));
   for (const Room& room : s.rooms) {
-    EXPECT_GE(room.area, 9.0 - 1e-9);
-    EXPECT_LE(room.area, 9.0 + 4 * 18 * 0.0025 + 1e-9);
+    EXPECT_GE(room.labelled_area, 9.0 - 1e-9);
+    EXPECT_LE(room.labelled_area, 9.0 + 4 * 18 * 0.0025 + 1e-9);
   }
   // The trivial baseline sees one component.
   EXPECT_EQ(segment(grid, trivial()).rooms.size(), 1u);

@@ -12,8 +12,11 @@ namespace topocut {
 struct Room {
   int id = 0;                // label value in Segmentation::labels, 1..N
   PolygonWithHoles polygon;  // world metres, outer CCW, holes CW
-  double area = 0.0;         // m², of the room's labelled cells
+  double area = 0.0;         // m², of the polygon (what every output's "area" is)
   Point2 centroid;           // world metres, of the room's labelled cells
+  // m², of the room's labelled cells: differs from area where the polygon covers cells that are no
+  // room's (absorbed obstacles) or cells outside the polygon joined the room (cleaning, specks).
+  double labelled_area = 0.0;
 };
 
 // Where a room is, beyond its polygon (map frame, metres).
@@ -32,6 +35,9 @@ struct Passage {
   bool door = false;    // a door (a cut at most the door width, DoorOptions::max_width), not a wider opening
   CutRule rule = CutRule::kDecomposition;  // the pipeline rule that made the cut
 };
+
+// "door" or "opening": a passage's kind as every output names it.
+inline const char* passage_kind(const Passage& passage) { return passage.door ? "door" : "opening"; }
 
 struct Segmentation {
   cv::Mat labels;                // CV_32SC1, grid size; 0 = not a room (obstacle, unknown), rooms 1..N

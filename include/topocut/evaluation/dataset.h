@@ -92,6 +92,11 @@ struct DatasetRunOptions {
   EvaluationOptions evaluation;
   // Called after every image with a one-line status ("[3/40] lab_ipa furnished: ..."); may be empty.
   std::function<void(const std::string&)> progress;
+  // Called for every image that was scored, with what it was scored on: the segment labels, the
+  // ground truth's rooms and the map (an HtmlReport draws them); may be empty. An exception it
+  // throws fails the image.
+  std::function<void(const ImageResult&, const cv::Mat& segment_labels, const cv::Mat& room_labels, const OccupancyGrid& grid)>
+      scored;
 };
 
 // Runs segmenter on every selected image (map by map, variants in options' order), loads each

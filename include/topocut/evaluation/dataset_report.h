@@ -38,12 +38,20 @@ VariantSummary summarize(const std::vector<ImageResult>& results, Variant varian
 // share in percent, milliseconds; a failed image shows FAILED and its reason, a missing one "missing".
 std::string format_results_table(const std::vector<ImageResult>& results);
 
+// The per-image table's rows, header first (format_results_table() as data, for other formats).
+std::vector<std::vector<std::string>> results_table_rows(const std::vector<ImageResult>& results);
+
 // The summary (Markdown), one row per variant that was run:
 //   method | variant | maps | recall / precision | F1 / PQ | segments per room | P inside annotated |
 //   far | time per map (mean / median / max)
 // with mean ± std over the maps that succeeded, in percent, then a line per variant with failed or
 // missing images saying over how many maps its means run.
 std::string format_summary(const std::vector<ImageResult>& results, const std::string& method);
+
+// The summary's rows, header first, and its notes on failed or missing images (one line each):
+// format_summary() as data.
+std::vector<std::vector<std::string>> summary_rows(const std::vector<ImageResult>& results, const std::string& method);
+std::string summary_notes(const std::vector<ImageResult>& results);
 
 // A Markdown table (first row = header) with every column padded to its widest cell, so that it
 // also reads well in a terminal; "±" and other UTF-8 characters count as one column.

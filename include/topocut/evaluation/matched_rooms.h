@@ -5,6 +5,9 @@
 // over the map's free pixels, exceeds 0.5. Then the segment holds more than half of the room and the
 // room more than half of the segment; segments do not overlap, nor do rooms, so every segment matches
 // at most one room and every room at most one segment.
+#include <map>
+#include <set>
+
 #include <opencv2/core.hpp>
 
 #include "topocut/evaluation/precision_recall.h"
@@ -30,6 +33,19 @@ struct MatchedRooms {
 // on size or type mismatch, negative labels, options.match_iou outside [0.5, 1), or a ground truth
 // without any counted room.
 MatchedRooms matched_rooms(const cv::Mat& segment_labels, const cv::Mat& room_labels, const cv::Mat& free = {},
+                           const EvaluationOptions& options = {});
+
+// What became of every counted room and segment under the same matching, for pictures that show
+// where a segmentation errs: a room without a match is missed; a segment that holds more than half
+// of two or more counted rooms merged them (each room has at most one such segment).
+struct RoomOutcomes {
+  std::map<int, int> room_match;     // every counted room -> its matched segment, 0: missed
+  std::map<int, int> segment_match;  // every counted segment -> its matched room, 0: unmatched
+  std::set<int> merges;              // counted segments holding more than half of two or more counted rooms
+};
+
+// The matching behind matched_rooms(), region by region; same arguments and errors.
+RoomOutcomes room_outcomes(const cv::Mat& segment_labels, const cv::Mat& room_labels, const cv::Mat& free = {},
                            const EvaluationOptions& options = {});
 
 }  // namespace topocut

@@ -1,0 +1,96 @@
+// The keyword arguments of segment(), IncrementalSegmenter() and merge_training_rows() as data: name,
+// type, default and help, from the option table (segment_option_rows()) and the option structs'
+// defaults. The package gives its functions signatures from them (help(), inspect) and the build
+// writes the type stubs from them, so that neither can drift from what options.cpp accepts.
+#include <pybind11/pybind11.h>
+
+#include "python/bindings.h"
+#include "python/options.h"
+#include "topocut/segmentation/incremental_segmenter.h"
+#include "topocut/segmentation/segment_switches.h"
+
+namespace topocut::python {
+namespace {
+
+namespace py = pybind11;
+
+// One keyword: (name, type name, default, help).
+py::tuple keyword(const std::string& name, const char* type, const py::object& value, const std::string& help) {
+  return py::make_tuple(name, type, value, help);
+}
+
+// The segment command's table with '_' for '-', defaults taken from settings.
+void add_segment_rows(py::list& out, const SegmentSettings& settings) {
+  for (const OptionRow<SegmentSettings>& row : segment_option_rows()) {
+    std::string name = row.name;
+    for (char& c : name) c = c == '-' ? '_' : c;
+    const double value = row.get(settings);
+    if (row.is_switch()) {
+      out.append(keyword(name, "bool", py::bool_(value != 0.0), row.help));
+    } else if (row.range == OptionRange::kGreyLevel) {
+      out.append(keyword(name, "int", py::int_(static_cast<int>(value)), row.help));
+    } else {
+      out.append(keyword(name, "float", py::float_(value), row.help));
+    }
+  }
+}
+
+// How the grid's cells are read (take_grid_reading()).
+void add_grid_reading(py::list& out) {
+  const GridReading r;
+  out.append(keyword("row_order", "str", py::str(r.row_order),
+                     "'bottom-up' or 'top-down'; '': bottom-up for int8 grids, top-down for uint8 images"));
+  out.append(keyword("free_thresh", "float", py::float_(r.free_thresh), "int8 cells: free below this occupancy fraction"));
+  out.append(keyword("occupied_thresh", "float", py::float_(r.occupied_thresh), "int8 cells: occupied above this occupancy fraction"));
+  out.append(keyword("fixed_thresholds", "bool", py::bool_(false),
+                     "uint8 images: free_threshold / occupied_threshold instead of the palette read from the image"));
+  out.append(keyword("free_threshold", "int", py::int_(r.free_threshold), "uint8 images: free above this grey (implies fixed_thresholds)"));
+  out.append(keyword("occupied_threshold", "int", py::int_(r.occupied_threshold),
+                     "uint8 images: occupied below this grey (implies fixed_thresholds)"));
+}
+
+// IncrementalSegmenter's own keywords (incremental_options()).
+void add_incremental(py::list& out) {
+  const IncrementalOptions o;
+  out.append(keyword("absorb_area", "float", py::float_(o.absorb_area), "m²: a new blob touching one room joins it within this allowance"));
+  out.append(keyword("absorb_fraction", "float", py::float_(o.absorb_fraction), "or within this share of the room's area"));
+  out.append(keyword("batch_fraction", "float", py::float_(o.batch_fraction), "share of changed cells that makes an update a batch one"));
+  out.append(keyword("neighbours_across_doors", "bool", py::bool_(o.neighbours_across_doors),
+                     "decompose a touched room's neighbours across doors with it"));
+  out.append(keyword("neighbours_across_cuts", "bool", py::bool_(o.neighbours_across_cuts),
+                     "decompose a touched room's neighbours across other cuts with it"));
+  out.append(keyword("speck_size", "float", py::float_(o.speck_size), "m: obstacle specks up to this size leave a room undecomposed"));
+  out.append(keyword("split_after", "int", py::int_(o.split_after), "decompositions in a row that must cut a room before it splits"));
+  out.append(keyword("merge_after", "int", py::int_(o.merge_after), "decompositions in a row that must merge two rooms before they merge"));
+}
+
+// kind: "options" (merge_training_rows()), "segment" (segment(): the options and the grid reading),
+// "grid" (update()) or "incremental" (IncrementalSegmenter()).
+py::list keywords(const std::string& kind) {
+  if (kind != "options" && kind != "segment" && kind != "grid" && kind != "incremental")
+    throw py::value_error("unknown keyword table '" + kind + "'");
+  py::list out;
+  if (kind == "options" || kind == "segment") {
+    add_segment_rows(out, SegmentSettings{});
+    out.append(keyword("merge_model", "str", py::str(""), "the text of a merge model to merge rooms with (empty: no learned model)"));
+  }
+  if (kind == "segment" || kind == "grid") add_grid_reading(out);
+  if (kind == "incremental") {
+    add_incremental(out);
+    SegmentSettings settings{IncrementalOptions{}.segment, {}};
+    settings.switches.no_clean = true;  // as incremental_options(): the cleaning is batch-only
+    add_segment_rows(out, settings);
+  }
+  return out;
+}
+
+}  // namespace
+
+void bind_keywords(py::module_& m) {
+  m.def("_keywords", &keywords, py::arg("kind"),
+        "The keyword arguments of segment() ('segment'), merge_training_rows() ('options'), update() ('grid') or\n"
+        "IncrementalSegmenter() ('incremental'):\n"
+        "a list of (name, type name, default, help).");
+}
+
+}  // namespace topocut::python
