@@ -78,7 +78,7 @@ py::list keywords(const std::string& kind) {
   if (kind == "incremental") {
     add_incremental(out);
     SegmentSettings settings{IncrementalOptions{}.segment, {}};
-    settings.switches.no_clean = true;  // as incremental_options(): the cleaning is batch-only
+    settings.switches.rules_off.push_back("clean");  // as incremental_options(): the cleaning is batch-only
     add_segment_rows(out, settings);
   }
   return out;
