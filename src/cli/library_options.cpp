@@ -1,13 +1,29 @@
 #include "cli/library_options.h"
 
+#include "topocut/core/error.h"
+#include "topocut/core/input_file.h"
+#include "topocut/segmentation/merge_model.h"
+
 namespace topocut::cli {
 
 void add_segment_options(po::options_description& options, const SegmentSettings& defaults) {
   add_option_rows(options, segment_option_rows(), defaults);
+  options.add_options()("merge-model", po::value<std::string>()->value_name("FILE"),
+                        "merge with this learned model instead of the built-in one (a file written by "
+                        "scripts/train_merge_model.py)");
 }
 
 SegmentSettings read_segment_settings(const po::variables_map& vm, SegmentSettings defaults) {
   read_option_rows(vm, segment_option_rows(), defaults);
+  if (vm.count("merge-model")) {
+    const std::string path = vm["merge-model"].as<std::string>();
+    const std::string text = read_input_file(path, "merge model", kMaxMergeModelBytes);
+    try {
+      defaults.options.merge.model = parse_merge_model(text);
+    } catch (const Error& e) {
+      throw Error(path + ": " + e.what());
+    }
+  }
   return defaults;
 }
 

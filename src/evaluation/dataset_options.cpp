@@ -144,8 +144,6 @@ std::string method_name(const SegmentOptions& options) {
   } else {
     for (const std::string& rule : off) name += ", no " + rule;
     if (options.labels.cover_absorbed_obstacles) name += ", obstacles covered";
-    if (options.merge.enabled && options.merge.learned != RoomMergeOptions{}.learned)
-      name += options.merge.learned ? ", learned merging" : ", hand-rule merging";
     if (options.merge.enabled && options.oversegment != SegmentOptions{}.oversegment)
       name += ", DuDe at " + number(options.oversegment) + " tau";
   }

@@ -12,8 +12,9 @@
 //   island-cuts     segmentation/island_cuts.h    cuts onto free-standing pieces of wall
 //   wall-lines      segmentation/wall_lines.h     straight walls continued across wide openings
 //   (decomposition) decomposition/decompose.h     DuDe at oversegment x tau (--trivial: none)
-//   merge           segmentation/room_merging.h   pieces joined into rooms (learned or hand rules),
-//                                                 then rooms too small or thin to be rooms folded
+//   merge           segmentation/room_merging.h   pieces joined into rooms, then rooms too small or thin
+//                                                 to be rooms folded
+//   learned-merge   segmentation/merge_model.h    by the learned model (off: by the hand rules below)
 //   furniture-rule  segmentation/room_merging.h   cuts ending on furniture separate no rooms
 //   width-steps     segmentation/room_merging.h   (hand rules) a room opening onto a much wider space
 //   open-rooms      segmentation/open_rooms.h     rooms bounded mostly by never-seen space join their neighbour
