@@ -139,7 +139,7 @@ std::string method_name(const SegmentOptions& options) {
   if (!options.decompose) return "trivial (one room per component)";
   std::string name = "topocut (tau " + number(options.concavity) + " m";
   const std::vector<std::string> off = rules_off(options);
-  if (off.size() == segmentation_rules().size() && !options.labels.cover_absorbed_obstacles) {
+  if (off == rules_off(parity_segment_options(options.concavity)) && !options.labels.cover_absorbed_obstacles) {
     name += ", parity";
   } else {
     for (const std::string& rule : off) name += ", no " + rule;
