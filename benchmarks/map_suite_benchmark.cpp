@@ -4,15 +4,7 @@
 // maps without ground truth (thin, speck and open rooms). Prints one table per set and a summary with
 // the targets of issue 25 ("Rooms a person would draw"), so an idea is judged on all sets together;
 // below topocut's row of a set, the peers' published results on it (MAORIS, DuDe, Voronoi) and, on the
-// sketches, the other annotator's rooms, all scored by the same code.
-//
-// Usage: map_suite_benchmark [evaluate's segmenter options] [--details] [--floor-repetitions N]
-//                            [--threads N] [--shared DIR] [--oracle-merge]
-//   --details              also print the per-image tables
-//   --oracle-merge         diagnostic: segments joined by the ground-truth room they overlap most
-//   --floor-repetitions N  measure each image's contour floor N times (default 5; 0: no times)
-//   --threads N            run the sets on N threads (default 1; times are only meaningful with 1)
-//   --shared DIR           the shared folder holding datasets/ (default: the source tree's ../shared)
+// sketches, the other annotator's rooms, all scored by the same code. Options: --help.
 #include <algorithm>
 #include <cstdio>
 #include <exception>
@@ -29,7 +21,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "benchmark_machine.h"
-#include "topocut/core/allocator.h"
+#include "support/benchmark_main.h"
 #include "topocut/core/error.h"
 #include "topocut/core/format.h"
 #include "topocut/evaluation/dataset.h"
@@ -40,7 +32,6 @@
 namespace {
 
 using namespace topocut;
-using topocut::benchmarks::cpu_model;
 using topocut::benchmarks::peak_rss_mb;
 
 // Another segmentation of a set's plain images, scored beside topocut's.
@@ -196,46 +187,18 @@ std::string ratio_text(const std::vector<double>& ratios) {
   return fixed(s.median, 1) + " / " + fixed(s.max, 1);
 }
 
-int run(std::vector<std::string> args) {
+// The options of a run (besides the segmenter's).
+struct SuiteOptions {
   bool details = false, oracle_merge = false;
   int floor_repetitions = 5, threads = 1;
   std::string shared = TOPOCUT_SHARED_DIR;
-  std::vector<std::string> segmenter_args;
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    const std::string& a = args[i];
-    if (a == "--help" || a == "-h") {
-      std::cout << "Usage: map_suite_benchmark [options]\n\nSegmenter options (as topocut evaluate):\n"
-                << dataset_options_help()
-                << "  --details              also print the per-image tables\n"
-                   "  --oracle-merge         diagnostic: join segments by the ground-truth room they overlap\n"
-                   "                         most (with --no-merge: the pieces joined by people's rooms)\n"
-                   "  --floor-repetitions N  contour floor repetitions per image (default 5; 0: no times)\n"
-                   "  --threads N            sets on N threads (default 1; times need 1)\n"
-                   "  --shared DIR           folder holding datasets/ (default " TOPOCUT_SHARED_DIR ")\n";
-      return 0;
-    }
-    if (a == "--details") {
-      details = true;
-    } else if (a == "--oracle-merge") {
-      oracle_merge = true;
-    } else if ((a == "--floor-repetitions" || a == "--threads" || a == "--shared") && i + 1 < args.size()) {
-      const std::string value = args[++i];
-      if (a == "--shared") {
-        shared = value;
-      } else {
-        const int n = std::stoi(value);
-        (a == "--threads" ? threads : floor_repetitions) = std::max(a == "--threads" ? 1 : 0, n);
-      }
-    } else {
-      segmenter_args.push_back(a);
-    }
-  }
-  const DatasetArguments arguments = parse_dataset_arguments(segmenter_args);
-  const std::string datasets = shared + "/datasets";
-  if (!std::filesystem::is_directory(datasets)) {
-    std::cout << "map_suite_benchmark: " << datasets << " is absent; nothing to measure\n";
-    return 0;
-  }
+};
+
+int run(const SuiteOptions& suite, const DatasetArguments& arguments) {
+  const bool details = suite.details, oracle_merge = suite.oracle_merge;
+  const int floor_repetitions = suite.floor_repetitions, threads = suite.threads;
+  const std::string datasets = suite.shared + "/datasets";
+  benchmarks::require_folder(datasets);
 
   const std::string lex = datasets + "/sketches/lex", ezvin = datasets + "/sketches/ezvin";
   std::vector<Peer> sketch_peers = published_peers(datasets + "/peers/sketches");
@@ -283,9 +246,7 @@ int run(std::vector<std::string> args) {
   for (std::thread& t : pool) t.join();
   for (const std::string& e : errors) std::cerr << "map_suite_benchmark: " << e << "\n";
 
-  std::cout << "# Map suite benchmark\n\nmachine: " << cpu_model() << ", " << std::thread::hardware_concurrency()
-            << " hardware threads; threads used: " << threads << "\nmethod: " << method_name(arguments.run.segment)
-            << "\n\n";
+  std::cout << "threads used: " << threads << "\nmethod: " << method_name(arguments.run.segment) << "\n\n";
   if (details) {
     for (const ScoredSet& set : scored) {
       std::cout << "## " << set.name << "\n\n" << format_results_table(set.results) << "\n";
@@ -336,17 +297,32 @@ int run(std::vector<std::string> args) {
   const int missing_peers = count_missing(scored);
   if (missing_peers > 0)
     std::cout << missing_peers << " peer images are missing (published for fewer maps); their means say over how many maps they run\n";
-  return failed > 0 || !errors.empty() ? 1 : 0;
+  return failed > 0 || !errors.empty() ? benchmarks::kFailed : benchmarks::kDone;
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  topocut::keep_freed_memory_for_reuse();
-  try {
-    return run(std::vector<std::string>(argv + 1, argv + argc));
-  } catch (const std::exception& e) {
-    std::cerr << "map_suite_benchmark: error: " << e.what() << "\n";
-    return 2;
-  }
+  using namespace topocut::benchmarks;
+  SuiteOptions suite;
+  topocut::DatasetArguments arguments;
+  const Program program{
+      .name = "map_suite_benchmark",
+      .title = "Map suite benchmark",
+      .about = "One set of segmenter options on every kind of map at once: Bormann (plain, furnished), the sketches\n"
+               "against both annotators, raw maps registered onto people's rooms, real maps without ground truth;\n"
+               "with the peers' published results and the targets.\n",
+      .options = {flag("details", suite.details, "also print the per-image tables"),
+                  flag("oracle-merge", suite.oracle_merge,
+                       "diagnostic: join segments by the ground-truth room they overlap most (with --no-merge: the pieces "
+                       "joined by people's rooms)"),
+                  {"floor-repetitions", "N", "contour floor repetitions per image (default 5; 0: no times)",
+                   [&suite](const std::string& value) {
+                     suite.floor_repetitions = whole_number("--floor-repetitions", value, 0, 1000);
+                   }},
+                  count("threads", suite.threads, 1, "sets on N threads (default 1; times need 1)"),
+                  text("shared", "DIR", suite.shared, "folder holding datasets/ (default " TOPOCUT_SHARED_DIR ")")},
+      .dataset = &arguments,
+      .tune_allocator = true};
+  return benchmark_main(argc, argv, program, [&] { return run(suite, arguments); });
 }

@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
+#include "cli/allocator.h"
 #include "cli/command.h"
-#include "topocut/core/allocator.h"
 #include "topocut/core/error.h"
 #include "topocut/io/output_files.h"
 
