@@ -137,13 +137,6 @@ Ring wall_polygon(const Segment2& wall, double thickness) {
           {wall.a.x - h * u.x + h * n.x, wall.a.y - h * u.y + h * n.y}};
 }
 
-std::vector<Ring> wall_polygons(std::span<const Wall> walls, double thickness) {
-  std::vector<Ring> rings;
-  rings.reserve(walls.size());
-  for (const Wall& w : walls) rings.push_back(wall_polygon(w.segment, thickness));
-  return rings;
-}
-
 OccupancyGrid build_wall_map(std::span<const PosedScan> scans, std::span<const Wall> walls, const WallMapOptions& options) {
   validate(options);
   const std::vector<Ray> rays = free_rays(scans, options);
