@@ -72,7 +72,8 @@ std::vector<Pose2> poses_along_path(std::size_t count) {
     while (leg + 1 < w.size() && cumulative[leg] < s) ++leg;
     const double t = (s - cumulative[leg - 1]) / (cumulative[leg] - cumulative[leg - 1]);
     const Point2 a = w[leg - 1], b = w[leg];
-    poses.push_back({a.x + t * (b.x - a.x), a.y + t * (b.y - a.y), std::atan2(b.y - a.y, b.x - a.x)});
+    const Point2 d = b - a, at = a + t * d;
+    poses.push_back({at.x, at.y, std::atan2(d.y, d.x)});
   }
   return poses;
 }
