@@ -9,8 +9,8 @@
 #   bash .ci/setup.sh fuzz SECONDS [TARGET...]
 #                            install clang, build the libFuzzer targets (fuzz/) in build-fuzz and run
 #                            each for SECONDS (fuzz/run.sh; findings in build-fuzz/findings/)
-# BUILD_DIR (default build, build-asan, build-fuzz by mode) and JOBS (default: number of cores) can
-# be set in the environment.
+# BUILD_DIR (default build, build-asan, build-fuzz by mode), JOBS (default: number of cores) and
+# TOPOCUT_WERROR (ON: warnings are errors, as .ci/run builds; default OFF) can be set in the environment.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 mode="${1:-demo}"
@@ -58,7 +58,7 @@ case "$mode" in
     ;;
   test)
     echo "== configuring and building in $BUILD_DIR (Release, $JOBS jobs)"
-    cmake -S . -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=Release >/dev/null
+    cmake -S . -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=Release -DTOPOCUT_WERROR="${TOPOCUT_WERROR:-OFF}" >/dev/null
     cmake --build "$BUILD_DIR" -j "$JOBS"
     ;;
   sanitize)
@@ -66,7 +66,7 @@ case "$mode" in
     # numbers in reports. Benchmarks are not built (timings under ASan mean nothing).
     echo "== configuring and building in $BUILD_DIR (ASan + UBSan, -O1, $JOBS jobs)"
     cmake -S . -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1" \
-      -DTOPOCUT_SANITIZE=ON -DTOPOCUT_BUILD_BENCHMARKS=OFF >/dev/null
+      -DTOPOCUT_SANITIZE=ON -DTOPOCUT_BUILD_BENCHMARKS=OFF -DTOPOCUT_WERROR="${TOPOCUT_WERROR:-OFF}" >/dev/null
     cmake --build "$BUILD_DIR" -j "$JOBS"
     ;;
   fuzz)

@@ -2,22 +2,14 @@
 // options and prints quality and time per image, plus a summary with medians. Each image's time is
 // put next to its "contour floor" (decode the PNG, threshold, cv::findContours: the least work any
 // contour-based pipeline must do on it), so runs on different machines compare by the ratio.
-//
-// Usage: dataset_benchmark [evaluate's options] [--repeat N] [--floor-repetitions N]
-//   --repeat N             run the whole dataset N times; an image's time is the median (default 1)
-//   --floor-repetitions N  repetitions of the contour floor per image, median taken (default 5)
-// Without --dataset it reads TOPOCUT_SHARED_DIR/datasets/bormann.
+// Options: --help.
 #include <algorithm>
-#include <cstdio>
-#include <exception>
 #include <iostream>
 #include <string>
-#include <thread>
 #include <vector>
 
 #include "benchmark_machine.h"
-#include "topocut/core/allocator.h"
-#include "topocut/core/error.h"
+#include "support/benchmark_main.h"
 #include "topocut/core/format.h"
 #include "topocut/evaluation/dataset.h"
 #include "topocut/evaluation/dataset_options.h"
@@ -28,60 +20,16 @@
 namespace {
 
 using namespace topocut;
-using topocut::benchmarks::cpu_model;
 using topocut::benchmarks::peak_rss_mb;
 
 double median(std::vector<double> values) { return time_statistics(std::move(values)).median; }
 
-int parse_count(const std::string& name, const std::string& value) {
-  std::size_t used = 0;
-  int parsed = 0;
-  try {
-    parsed = std::stoi(value, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
-  if (used == 0 || used != value.size() || parsed < 1) throw Error(name + " needs a positive whole number");
-  return parsed;
-}
-
-int run(std::vector<std::string> args) {
-  int repeat = 1;
-  int floor_repetitions = 5;
-  std::vector<std::string> dataset_args;
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    if (args[i] == "--help" || args[i] == "-h") {
-      std::cout << "Usage: dataset_benchmark [options]\n\nOptions (as topocut evaluate):\n"
-                << dataset_options_help()
-                << "  --repeat N             run the dataset N times, median time per image (default 1)\n"
-                   "  --floor-repetitions N  repetitions of the contour floor per image (default 5)\n\n"
-                   "Without --dataset it reads " TOPOCUT_SHARED_DIR "/datasets/bormann.\n";
-      return 0;
-    }
-    if ((args[i] == "--repeat" || args[i] == "--floor-repetitions") && i + 1 < args.size()) {
-      (args[i] == "--repeat" ? repeat : floor_repetitions) = parse_count(args[i], args[i + 1]);
-      ++i;
-      continue;
-    }
-    dataset_args.push_back(args[i]);
-  }
-  DatasetArguments arguments = parse_dataset_arguments(dataset_args);
-  const bool dataset_given =
-      std::find_if(dataset_args.begin(), dataset_args.end(),
-                   [](const std::string& a) { return a.rfind("--dataset", 0) == 0; }) != dataset_args.end();
-  if (!dataset_given) arguments.dataset = std::string(TOPOCUT_SHARED_DIR) + "/datasets/bormann";
+int run(int repeat, int floor_repetitions, DatasetArguments& arguments) {
+  benchmarks::require_folder(arguments.dataset);
   if (!arguments.csv.empty()) check_writable(arguments.csv);
-
   const std::vector<DatasetMap> maps = select_maps(discover_dataset(arguments.dataset), arguments.run.maps);
   const std::string method = method_name(arguments.run.segment);
-  std::cout << "# Dataset benchmark\n\n"
-            << "machine: " << cpu_model() << ", " << std::thread::hardware_concurrency() << " hardware threads\n"
-#ifdef NDEBUG
-            << "build: optimised (NDEBUG)\n"
-#else
-            << "build: assertions on (not a release build; times are not representative)\n"
-#endif
-            << "dataset: " << arguments.dataset << " (" << maps.size() << " maps)\n"
+  std::cout << "dataset: " << arguments.dataset << " (" << maps.size() << " maps)\n"
             << "method: " << method << "\n"
             << "repeat: " << repeat << ", contour floor repetitions: " << floor_repetitions << "\n\n";
 
@@ -147,22 +95,26 @@ int run(std::vector<std::string> args) {
   const auto failed = std::count_if(results.begin(), results.end(), [](const ImageResult& r) { return !r.ok; });
   if (failed > 0) {
     std::cerr << "dataset_benchmark: " << failed << " of " << results.size() << " images failed\n";
-    return 1;
+    return benchmarks::kFailed;
   }
-  return 0;
+  return benchmarks::kDone;
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  topocut::keep_freed_memory_for_reuse();
-  try {
-    return run(std::vector<std::string>(argv + 1, argv + argc));
-  } catch (const topocut::Error& e) {
-    std::cerr << "dataset_benchmark: error: " << e.what() << "\n";
-    return 2;
-  } catch (const std::exception& e) {
-    std::cerr << "dataset_benchmark: error: internal failure: " << e.what() << "\n";
-    return 1;
-  }
+  using namespace topocut;
+  using namespace topocut::benchmarks;
+  int repeat = 1, floor_repetitions = 5;
+  DatasetArguments arguments;
+  const Program program{
+      .name = "dataset_benchmark",
+      .title = "Dataset benchmark",
+      .about = "Segments every image of a Bormann-format dataset; prints quality, time and the contour floor per\n"
+               "image (decode, threshold, cv::findContours) and the medians.\n",
+      .options = {count("repeat", repeat, 1, "run the dataset N times, median time per image (default 1)"),
+                  count("floor-repetitions", floor_repetitions, 1, "repetitions of the contour floor per image (default 5)")},
+      .dataset = &arguments,
+      .tune_allocator = true};
+  return benchmark_main(argc, argv, program, [&] { return run(repeat, floor_repetitions, arguments); });
 }

@@ -2,9 +2,10 @@
 // pixel noise), spiky star polygons with a small tau (the reference's worst case: 46 s and 1.8 GB
 // for 1000 vertices), and the free-space polygons of the Bormann maps when the dataset is present.
 //
-//   decomposition_benchmark            Google Benchmark runs (CPU and wall time, vertices, pieces)
-//   decomposition_benchmark --table    one forked child per case: median CPU time and the child's
+//   decomposition_benchmark            one forked child per case: median CPU time and the child's
 //                                      own peak RSS (getrusage ru_maxrss), printed as a Markdown table
+//   decomposition_benchmark --google-benchmark [--benchmark_...]
+//                                      Google Benchmark runs (CPU and wall time, vertices, pieces)
 #include <benchmark/benchmark.h>
 
 #include <sys/resource.h>
@@ -13,7 +14,6 @@
 
 #include <algorithm>
 #include <cstdio>
-#include <cstring>
 #include <ctime>
 #include <filesystem>
 #include <functional>
@@ -23,6 +23,7 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "../tests/decomposition/dude_test_shapes.h"
+#include "support/benchmark_main.h"
 #include "topocut/decomposition/decompose.h"
 #include "topocut/map/free_space_polygons.h"
 
@@ -151,11 +152,13 @@ int print_table() {
   }
   std::printf("| family | case | tau | vertices | holes | pieces | cuts | rounds | CPU ms (median) | us / vertex | peak RSS MB |\n");
   std::printf("|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+  int failed = 0;
   for (const Case& c : cases()) {
     Row row;
     long peak_kb = 0;
     if (!measure(c, row, peak_kb)) {
       std::printf("| %s | %s | failed |\n", c.family.c_str(), c.name.c_str());
+      ++failed;
       continue;
     }
     std::printf("| %s | %s | %g | %d | %d | %d | %d | %d | %.2f | %.2f | %.1f |\n", c.family.c_str(), c.name.c_str(), c.tau,
@@ -164,15 +167,11 @@ int print_table() {
     std::fflush(stdout);
   }
   std::printf("\n(peak RSS of an idle child: %.1f MB)\n", static_cast<double>(base_kb) / 1024.0);
-  return 0;
+  return failed > 0 ? benchmarks::kFailed : benchmarks::kDone;
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
-  for (int i = 1; i < argc; ++i) {
-    if (std::strcmp(argv[i], "--table") == 0) return print_table();
-  }
+// The cases under Google Benchmark, with its flags.
+int run_google_benchmark(const char* program, const std::vector<std::string>& flags) {
   for (const Case& c : cases()) {
     benchmark::RegisterBenchmark((c.family + "/" + c.name).c_str(), [c](benchmark::State& state) {
       const PolygonWithHoles p = c.make();
@@ -190,8 +189,36 @@ int main(int argc, char** argv) {
       state.counters["process_peak_RSS_MB"] = static_cast<double>(usage.ru_maxrss) / 1024.0;
     })->Unit(benchmark::kMillisecond);
   }
-  benchmark::Initialize(&argc, argv);
+  std::vector<char*> argv{const_cast<char*>(program)};
+  for (const std::string& flag : flags) argv.push_back(const_cast<char*>(flag.c_str()));
+  int argc = static_cast<int>(argv.size());
+  benchmark::Initialize(&argc, argv.data());
+  if (benchmark::ReportUnrecognizedArguments(argc, argv.data())) return benchmarks::kBadUsage;
   benchmark::RunSpecifiedBenchmarks();
   benchmark::Shutdown();
-  return 0;
+  return benchmarks::kDone;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  using namespace topocut::benchmarks;
+  bool google_benchmark = false;
+  std::vector<std::string> flags;
+  const Program program{
+      .name = "decomposition_benchmark",
+      .title = "Decomposition over input size",
+      .about = "Times decompose() on floor plans, spiky stars and the Bormann maps' largest free-space polygons\n"
+               "(when the dataset is present): one forked child per case, median CPU time and its own peak RSS.\n",
+      .options = {flag("google-benchmark", google_benchmark,
+                       "run the cases under Google Benchmark instead; its --benchmark_... flags are passed on")},
+      .pass_on_prefix = "--benchmark_",
+      .passed_on = &flags};
+  return benchmark_main(argc, argv, program, [&] {
+    if (!google_benchmark && !flags.empty()) {
+      std::fprintf(stderr, "decomposition_benchmark: error: %s needs --google-benchmark\n", flags.front().c_str());
+      return kBadUsage;
+    }
+    return google_benchmark ? run_google_benchmark(argv[0], flags) : print_table();
+  });
 }

@@ -10,7 +10,7 @@
 // Then the growth of every stage from one size to the next, beside the growth of the cells.
 // With --unexplored CANVAS each floor lies in the middle of a CANVAS x CANVAS map of unknown cells
 // (grey 205, as map_server writes it; gmapping's default map is 4000 x 4000), as a SLAM map is.
-//   extreme_maps_benchmark [--unexplored CANVAS] [--repeat N] [SIDE...]   (default: 1000 2500 5000 10000)
+// Options: --help.
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -22,19 +22,17 @@
 #include <filesystem>
 #include <functional>
 #include <string>
-#include <thread>
 #include <vector>
 
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
 
-#include "topocut/core/allocator.h"
 #include "topocut/io/label_image.h"
 #include "topocut/io/map_loader.h"
 #include "topocut/segmentation/segmenter.h"
 
-#include "benchmark_machine.h"
 #include "segment_stages.h"
+#include "support/benchmark_main.h"
 
 namespace {
 
@@ -182,46 +180,16 @@ void print_stage_tables(const std::vector<int>& sides, const std::vector<double>
   }
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
-  topocut::keep_freed_memory_for_reuse();
-  std::vector<int> sides;
-  int canvas = 0, repeat = 1;
-  const auto usage = [] {
-    std::fprintf(stderr,
-                 "usage: extreme_maps_benchmark [--unexplored CANVAS] [--repeat N] [SIDE...]   (SIDE, CANVAS: cells per "
-                 "side, 100 to 40000)\n");
-    return 2;
-  };
-  for (int i = 1; i < argc; ++i) {
-    const std::string flag = argv[i];
-    if ((flag == "--unexplored" || flag == "--repeat") && ++i == argc) return usage();
-    const int value = std::atoi(argv[i]);
-    if (flag == "--repeat") {
-      if (value < 1) return usage();
-      repeat = value;
-      continue;
-    }
-    if (value < 100 || value > 40000) return usage();  // the floor's lattice needs a room; 40,000 is 1,600 Mpx
-    if (flag == "--unexplored") {
-      canvas = value;
-    } else {
-      sides.push_back(value);
-    }
-  }
+int run(std::vector<int> sides, int canvas, int repeat) {
   if (sides.empty()) sides = {1000, 2500, 5000, 10000};
   const std::string folder = std::filesystem::temp_directory_path() / ("topocut_extreme_" + std::to_string(getpid()));
   std::filesystem::create_directories(folder);
-  double load_average[3] = {0, 0, 0};
-  getloadavg(load_average, 3);
-  std::printf("machine: %s, %u hardware threads, load average %.1f\n\n", topocut::benchmarks::cpu_model().c_str(),
-              std::thread::hardware_concurrency(), load_average[0]);
   if (canvas > 0) std::printf("Each floor in the middle of a %d x %d map of unknown cells.\n\n", canvas, canvas);
   std::printf("| side (cells) | megapixels | load s | segment s | write labels s | rooms | passages | peak RSS MB | MB per Mpx |\n");
   std::printf("|---|---|---|---|---|---|---|---|---|\n");
   std::vector<double> mpx;
   std::vector<std::vector<double>> stages;
+  int failed = 0;
   for (const int side : sides) {
     const double cells_per_side = std::max(side, canvas);
     mpx.push_back(cells_per_side * cells_per_side / 1e6);
@@ -231,6 +199,7 @@ int main(int argc, char** argv) {
     if (v.size() != 5) {
       std::printf("| %d | %.1f | failed: %s |\n", side, mpx.back(), segmented.c_str());
       stages.emplace_back();
+      ++failed;
       continue;
     }
     std::printf("| %d | %.1f | %.2f | %.2f | %.2f | %.0f | %.0f | %.0f | %.1f |\n", side, mpx.back(), v[0], v[1], v[2], v[3],
@@ -241,5 +210,27 @@ int main(int argc, char** argv) {
   }
   print_stage_tables(sides, mpx, stages, repeat);
   std::filesystem::remove_all(folder);
-  return 0;
+  return failed > 0 ? topocut::benchmarks::kFailed : topocut::benchmarks::kDone;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  using namespace topocut::benchmarks;
+  std::vector<int> sides;
+  int canvas = 0, repeat = 1;
+  // The floor's lattice needs a room (100 cells); 40,000 cells a side is 1,600 Mpx.
+  const Program program{
+      .name = "extreme_maps_benchmark",
+      .title = "Extreme map sizes",
+      .about = "Segments a synthetic office floor of SIDE x SIDE cells (0.05 m; default 1000 2500 5000 10000) in\n"
+               "child processes: load, segment and write times with the peak memory, then the stages' CPU times\n"
+               "beside the contour floor and their growth from one size to the next.\n",
+      .options = {{"unexplored", "CANVAS", "put each floor in the middle of a CANVAS x CANVAS map of unknown cells (100..40000)",
+                   [&canvas](const std::string& value) { canvas = whole_number("--unexplored", value, 100, 40000); }},
+                  count("repeat", repeat, 1, "runs of the stages per size, least time taken (default 1)")},
+      .operands = "[SIDE ...]",
+      .operand = [&sides](const std::string& value) { sides.push_back(whole_number("SIDE", value, 100, 40000)); },
+      .tune_allocator = true};
+  return benchmark_main(argc, argv, program, [&] { return run(sides, canvas, repeat); });
 }

@@ -8,8 +8,7 @@
 //            line extraction with that method on the same scan of a room (`lines --method M`)
 // Each size runs in its own forked child so that the peak RSS is that size's alone. Prints one
 // Markdown table: size, median process CPU time over the repeats, the ratio to the size a tenth as
-// large, the child's peak RSS, and the machine.
-//   growth_benchmark [islands|comb|fcm|smf|iepf|sef|lt|ale ...] [--max N] [--repeats R]
+// large and the child's peak RSS. Options: --help.
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -27,7 +26,8 @@
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
 
-#include "benchmark_machine.h"
+#include "support/benchmark_main.h"
+#include "topocut/core/error.h"
 #include "topocut/decomposition/decompose.h"
 #include "topocut/io/map_loader.h"
 #include "topocut/labeling/fuzzy_c_means.h"
@@ -37,6 +37,8 @@
 #include "topocut/segmentation/segmenter.h"
 
 namespace {
+
+const std::vector<std::string> kCases = {"islands", "comb", "fcm", "smf", "iepf", "sef", "lt", "ale"};
 
 using namespace topocut;
 
@@ -175,36 +177,18 @@ Row measure(const std::string& name, long size, int repeats, const std::string& 
   return row;
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
-  std::vector<std::string> names;
-  long max_size = 0;
-  int repeats = 3;
-  for (int i = 1; i < argc; ++i) {
-    const std::string arg = argv[i];
-    if (arg == "--max" && i + 1 < argc) {
-      max_size = std::atol(argv[++i]);
-    } else if (arg == "--repeats" && i + 1 < argc) {
-      repeats = std::max(1, std::atoi(argv[++i]));
-    } else if (arg == "islands" || arg == "comb" || arg == "fcm" || arg == "smf" || arg == "iepf" || arg == "sef" ||
-               arg == "lt" || arg == "ale") {
-      names.push_back(arg);
-    } else {
-      std::fprintf(stderr, "usage: growth_benchmark [islands|comb|fcm|smf|iepf|sef|lt|ale ...] [--max N] [--repeats R]\n");
-      return 2;
-    }
-  }
-  if (names.empty()) names = {"islands", "comb", "fcm", "smf", "iepf", "sef", "lt", "ale"};
+int run(std::vector<std::string> names, long max_size, int repeats) {
+  if (names.empty()) names = kCases;
   const std::vector<long> beams = {1000, 10000, 100000, 1000000};
   const std::vector<std::pair<std::string, std::vector<long>>> sizes = {
       {"islands", {250, 2500, 25000, 250000}}, {"comb", {50, 500, 5000, 50000}}, {"fcm", beams}, {"smf", beams},
       {"iepf", beams}, {"sef", beams}, {"lt", beams}, {"ale", beams}};
   const std::string folder = std::filesystem::temp_directory_path() / ("topocut_growth_" + std::to_string(getpid()));
   std::filesystem::create_directories(folder);
-  std::printf("Machine: %s, median of %d runs (process CPU time)\n\n", topocut::benchmarks::cpu_model().c_str(), repeats);
+  std::printf("Median of %d runs (process CPU time)\n\n", repeats);
   std::printf("| case | size | median CPU s | ratio to size / 10 | peak RSS MB |\n|---|---|---|---|---|\n");
   std::fflush(stdout);
+  int failed = 0;
   for (const auto& [name, list] : sizes) {
     if (std::find(names.begin(), names.end(), name) == names.end()) continue;
     double previous = -1.0;
@@ -213,6 +197,7 @@ int main(int argc, char** argv) {
       const Row row = measure(name, size, repeats, folder);
       if (row.median < 0) {
         std::printf("| %s | %ld | failed | | %.0f |\n", name.c_str(), size, row.peak_mb);
+        ++failed;
         break;
       }
       char ratio[32] = "";
@@ -223,5 +208,27 @@ int main(int argc, char** argv) {
     }
   }
   std::filesystem::remove_all(folder);
-  return 0;
+  return failed > 0 ? benchmarks::kFailed : benchmarks::kDone;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  using namespace topocut::benchmarks;
+  std::vector<std::string> names;
+  int max_size = 0, repeats = 3;
+  const Program program{
+      .name = "growth_benchmark",
+      .title = "Growth with the input",
+      .about = "Cases whose work must grow no faster than their input, at sizes growing x10, each size in its own\n"
+               "child process: islands (segment), comb (decompose), fcm (label with fuzzy c-means), smf, iepf, sef,\n"
+               "lt, ale (line extraction with that method); default all.\n",
+      .options = {count("max", max_size, 1, "the largest size run (default: all sizes)"),
+                  count("repeats", repeats, 1, "runs per size, median taken (default 3)")},
+      .operands = "[islands|comb|fcm|smf|iepf|sef|lt|ale ...]",
+      .operand = [&names](const std::string& value) {
+        if (std::find(kCases.begin(), kCases.end(), value) == kCases.end()) throw topocut::Error("unknown case '" + value + "'");
+        names.push_back(value);
+      }};
+  return benchmark_main(argc, argv, program, [&] { return run(names, max_size, repeats); });
 }

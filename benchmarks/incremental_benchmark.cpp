@@ -5,7 +5,7 @@
 // incremental median <= 1 ms and p95 <= 5 ms per update, >= 5x faster than batch on the same updates,
 // final precision and recall within 1.5 points of batch, state proportional to the map.
 //
-// Options: printed by --help (run()).
+// Options: --help.
 //
 // Times are process CPU time (the machine may be shared), single-threaded OpenCV; the wall-clock
 // figures are printed beside them.
@@ -22,8 +22,7 @@
 
 #include <opencv2/core.hpp>
 
-#include "topocut/core/allocator.h"
-#include "topocut/core/error.h"
+#include "support/benchmark_main.h"
 #include "topocut/core/format.h"
 #include "topocut/evaluation/dataset_options.h"
 #include "topocut/evaluation/dataset_report.h"
@@ -35,14 +34,6 @@ namespace {
 
 using namespace topocut;
 
-std::string first_line_with(const std::string& path, const std::string& key) {
-  std::ifstream in(path);
-  std::string line;
-  while (std::getline(in, line))
-    if (line.rfind(key, 0) == 0) return line.substr(line.find(':') + 1);
-  return "?";
-}
-
 std::string load_average() {
   std::ifstream in("/proc/loadavg");
   std::string a, b, c;
@@ -50,68 +41,17 @@ std::string load_average() {
   return a + " " + b + " " + c;
 }
 
-int run(int argc, char** argv) {
-  int batch_every = 1;
-  bool compare = true;
-  int split_after = 0, merge_after = 0;  // 0: the segmenter's defaults
-  double partial_area = -1.0, partial_margin = -1.0;
-  int isolated_nearest = -1;
-  double batch_fraction = -1.0;  // tiny (1e-12): every update is batch with ids kept by overlap
-  std::vector<std::string> rest;
-  for (int i = 1; i < argc; ++i) {
-    const std::string arg = argv[i];
-    if (arg == "--help" || arg == "-h") {
-      std::cout << "Usage: incremental_benchmark [--batch-every N] [--no-batch] [--split-after N] [--merge-after N]\n"
-                   "         [--partial-area M2] [--partial-margin M] [--isolated-nearest on|off] [--batch-fraction F]\n"
-                   "         [dataset options]\n"
-                   "A simulated robot explores every Bormann image; each update is segmented incrementally and by\n"
-                   "batch (every --batch-every'th); prints times, the rooms' stability and the final quality.\n"
-                   "--batch-fraction 1e-12 makes every update a batch one with ids kept by overlap (batch's own churn).\n\n"
-                   "Dataset options (as topocut evaluate):\n"
-                << dataset_options_help();
-      return 0;
-    } else if (arg == "--batch-every" && i + 1 < argc) {
-      batch_every = std::stoi(argv[++i]);
-    } else if (arg == "--no-batch") {
-      compare = false;
-    } else if (arg == "--split-after" && i + 1 < argc) {
-      split_after = std::max(1, std::stoi(argv[++i]));
-    } else if (arg == "--merge-after" && i + 1 < argc) {
-      merge_after = std::max(1, std::stoi(argv[++i]));
-    } else if (arg == "--partial-area" && i + 1 < argc) {
-      partial_area = std::max(0.0, std::stod(argv[++i]));
-    } else if (arg == "--partial-margin" && i + 1 < argc) {
-      partial_margin = std::stod(argv[++i]);
-    } else if (arg == "--isolated-nearest" && i + 1 < argc) {
-      isolated_nearest = std::string(argv[++i]) == "on";
-    } else if (arg == "--batch-fraction" && i + 1 < argc) {
-      batch_fraction = std::stod(argv[++i]);
-    } else {
-      rest.push_back(arg);
-    }
-  }
-  DatasetArguments arguments = parse_dataset_arguments(rest);
-  if (arguments.dataset == DatasetArguments{}.dataset) arguments.dataset = std::string(TOPOCUT_SHARED_DIR) + "/datasets/bormann";
+int run(IncrementalDatasetOptions& options, const DatasetArguments& arguments) {
+  benchmarks::require_folder(arguments.dataset);
   if (!arguments.csv.empty()) check_writable(arguments.csv);
   cv::setNumThreads(1);  // both segmenters single-threaded: CPU time is then the work done
-
-  IncrementalDatasetOptions options;
+  const bool compare = options.exploration.compare_batch;
+  const int batch_every = options.exploration.batch_every;
   options.run = arguments.run;
   options.run.progress = [](const std::string& line) { std::cerr << line << std::endl; };
-  options.exploration.compare_batch = compare;
-  options.exploration.batch_every = batch_every;
-  if (split_after > 0) options.exploration.incremental.split_after = split_after;
-  if (merge_after > 0) options.exploration.incremental.merge_after = merge_after;
-  if (partial_area >= 0.0) options.exploration.incremental.partial_area = partial_area;
-  if (partial_margin > 0.0) options.exploration.incremental.partial_margin = partial_margin;
-  if (isolated_nearest >= 0) options.exploration.incremental.isolated_to_nearest_room = isolated_nearest != 0;
-  if (batch_fraction > 0.0) options.exploration.incremental.batch_fraction = batch_fraction;
   const std::vector<DatasetMap> maps = select_maps(discover_dataset(arguments.dataset), arguments.run.maps);
 
-  std::cout << "# Incremental segmentation during exploration\n\n"
-            << "machine:" << first_line_with("/proc/cpuinfo", "model name") << ", "
-            << std::to_string(cv::getNumberOfCPUs()) << " cores; load average at start " << load_average() << "\n"
-            << "dataset: " << arguments.dataset << " (" << maps.size() << " maps); method: "
+  std::cout << "dataset: " << arguments.dataset << " (" << maps.size() << " maps); method: "
             << method_name(options.run.segment) << "\n"
             << "robot: 360 deg laser, 1 deg beams, " << options.exploration.exploration.range << " m range, "
             << options.exploration.exploration.step << " m steps, seed " << options.exploration.exploration.seed
@@ -207,17 +147,34 @@ int run(int argc, char** argv) {
   std::cout << markdown_table(rows) << "\n"
             << format("Run time %.1f min; load average at the end ", minutes) << load_average() << "\n";
   if (!arguments.csv.empty()) write_file_atomically(arguments.csv, incremental_results_csv(results));
-  return 0;
+  return benchmarks::kDone;
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  topocut::keep_freed_memory_for_reuse();
-  try {
-    return run(argc, argv);
-  } catch (const std::exception& e) {
-    std::cerr << "incremental_benchmark: error: " << e.what() << "\n";
-    return 1;
-  }
+  using namespace topocut;
+  using namespace topocut::benchmarks;
+  IncrementalDatasetOptions options;
+  options.exploration.compare_batch = true;
+  IncrementalOptions& incremental = options.exploration.incremental;
+  DatasetArguments arguments;
+  const Program program{
+      .name = "incremental_benchmark",
+      .title = "Incremental segmentation during exploration",
+      .about = "A simulated robot explores every Bormann image; each update is segmented incrementally and by batch\n"
+               "(every --batch-every'th); prints times, the rooms' stability and the final quality. The segmenter's\n"
+               "options below default to IncrementalOptions'; --batch-fraction 1e-12 makes every update a batch one\n"
+               "with ids kept by overlap (batch's own churn).\n",
+      .options = {count("batch-every", options.exploration.batch_every, 1, "compare batch on every N-th update and the last (default 1)"),
+                  {"no-batch", "", "no batch comparison", [&options](const std::string&) { options.exploration.compare_batch = false; }},
+                  count("split-after", incremental.split_after, 1, "decompositions in a row that split a room (default 1)"),
+                  count("merge-after", incremental.merge_after, 1, "decompositions in a row that merge two rooms (default 1)"),
+                  number("partial-area", incremental.partial_area, "rooms larger than this (m²) are decomposed near the change (default 0: off)"),
+                  number("partial-margin", incremental.partial_margin, "how near (m; default 3)"),
+                  on_off("isolated-nearest", incremental.isolated_to_nearest_room, "isolated new cells join the nearest room (default off)"),
+                  number("batch-fraction", incremental.batch_fraction, "share of changed free cells that makes an update batch (default 0.5)")},
+      .dataset = &arguments,
+      .tune_allocator = true};
+  return benchmark_main(argc, argv, program, [&] { return run(options, arguments); });
 }

@@ -6,7 +6,7 @@
 // the targets: update p95 <= 5 ms, incremental >= 5x faster than batch (total time on the same
 // updates), churn median 0 and p95 <= 1 % of the labelled cells.
 //
-// Options: kUsage below (printed by --help).
+// Options: --help.
 //
 // Times are process CPU time, single-threaded OpenCV; wall clock beside.
 #include <algorithm>
@@ -20,7 +20,7 @@
 #include <opencv2/core.hpp>
 
 #include "benchmark_machine.h"
-#include "topocut/core/allocator.h"
+#include "support/benchmark_main.h"
 #include "topocut/evaluation/dataset_report.h"
 #include "topocut/core/format.h"
 #include "topocut/exploration/grid_replay.h"
@@ -38,32 +38,10 @@ struct LogFigures {
   TimeStatistics inc, wall, batch, paired;
 };
 
-// The segmenter's hysteresis and region options, overridable to measure variants in one build.
-struct ReplayVariant {
-  int split_after = -1;   // -1: the preset's
-  int merge_after = -1;
-  int door_neighbours = -1;
-  int cut_neighbours = -1;
-  double absorb_fraction = -1.0;
-  double partial_area = -1.0;
-  double partial_margin = -1.0;
-  int isolated_nearest = -1;
-  double batch_fraction = -1.0;  // tiny (1e-12): every update is batch with ids kept by overlap
-};
-
 LogFigures replay_file(const std::string& name, const std::string& path, int batch_every, bool settle,
-                       const ReplayVariant& variant) {
+                       const IncrementalOptions& incremental) {
   GridReplayOptions options;
-  options.incremental = wall_map_incremental_options();  // as `walls --incremental`
-  if (variant.split_after >= 0) options.incremental.split_after = variant.split_after;
-  if (variant.merge_after >= 0) options.incremental.merge_after = variant.merge_after;
-  if (variant.door_neighbours >= 0) options.incremental.neighbours_across_doors = variant.door_neighbours != 0;
-  if (variant.cut_neighbours >= 0) options.incremental.neighbours_across_cuts = variant.cut_neighbours != 0;
-  if (variant.absorb_fraction >= 0.0) options.incremental.absorb_fraction = variant.absorb_fraction;
-  if (variant.partial_area >= 0.0) options.incremental.partial_area = variant.partial_area;
-  if (variant.partial_margin > 0.0) options.incremental.partial_margin = variant.partial_margin;
-  if (variant.isolated_nearest >= 0) options.incremental.isolated_to_nearest_room = variant.isolated_nearest != 0;
-  if (variant.batch_fraction > 0.0) options.incremental.batch_fraction = variant.batch_fraction;
+  options.incremental = incremental;
   options.compare_batch = true;
   options.batch_every = batch_every;
   const std::vector<PosedScan> scans = posed_scans(read_carmen_log(path));
@@ -84,53 +62,12 @@ LogFigures replay_file(const std::string& name, const std::string& path, int bat
   return f;
 }
 
-}  // namespace
-
-constexpr const char* kUsage =
-    "Usage: log_replay_benchmark [--batch-every N] [--settle] [--split-after N] [--merge-after N]\n"
-    "         [--door-neighbours on|off] [--cut-neighbours on|off] [--absorb-fraction F]\n"
-    "         [--partial-area M2] [--partial-margin M] [--isolated-nearest on|off]\n"
-    "         [--batch-fraction F] [LOG_NAME ...]   (default: intel aces csail fhw)\n"
-    "Replays the CARMEN logs of ../shared/datasets/carmen into the incremental segmenter (the preset of\n"
-    "`topocut walls --incremental`); the options after --settle override the preset to measure a variant.\n"
-    "--batch-fraction 1e-12 makes every update a batch one with ids kept by overlap (batch's own churn).\n";
-
-int main(int argc, char** argv) {
-  topocut::keep_freed_memory_for_reuse();
-  int batch_every = 1;
-  bool settle = false;
-  ReplayVariant variant;
-  std::vector<std::string> names;
-  for (int i = 1; i < argc; ++i) {
-    const std::string a = argv[i];
-    if (a == "--batch-every" && i + 1 < argc) batch_every = std::max(1, std::atoi(argv[++i]));
-    else if (a == "--settle") settle = true;
-    else if (a == "--split-after" && i + 1 < argc) variant.split_after = std::max(1, std::atoi(argv[++i]));
-    else if (a == "--merge-after" && i + 1 < argc) variant.merge_after = std::max(1, std::atoi(argv[++i]));
-    else if (a == "--door-neighbours" && i + 1 < argc) variant.door_neighbours = std::string(argv[++i]) == "on";
-    else if (a == "--cut-neighbours" && i + 1 < argc) variant.cut_neighbours = std::string(argv[++i]) == "on";
-    else if (a == "--absorb-fraction" && i + 1 < argc) variant.absorb_fraction = std::max(0.0, std::atof(argv[++i]));
-    else if (a == "--partial-area" && i + 1 < argc) variant.partial_area = std::max(0.0, std::atof(argv[++i]));
-    else if (a == "--partial-margin" && i + 1 < argc) variant.partial_margin = std::atof(argv[++i]);
-    else if (a == "--isolated-nearest" && i + 1 < argc) variant.isolated_nearest = std::string(argv[++i]) == "on";
-    else if (a == "--batch-fraction" && i + 1 < argc) variant.batch_fraction = std::atof(argv[++i]);
-    else if (a == "--help" || a == "-h") {
-      std::printf("%s", kUsage);
-      return 0;
-    } else if (!a.empty() && a[0] == '-') {
-      std::fprintf(stderr, "log_replay_benchmark: unknown option or missing value: %s (see --help)\n", a.c_str());
-      return 2;
-    } else names.push_back(a);
-  }
+int run(std::vector<std::string> names, int batch_every, bool settle, const IncrementalOptions& incremental) {
   if (names.empty()) names = {"intel", "aces", "csail", "fhw"};
   const std::string folder = std::string(TOPOCUT_SHARED_DIR) + "/datasets/carmen";
-  if (!std::filesystem::exists(folder)) {
-    std::printf("log_replay_benchmark: skipped, the shared logs are not in %s\n", folder.c_str());
-    return 0;
-  }
+  benchmarks::require_folder(folder);
   cv::setNumThreads(1);
-  std::printf("# Incremental segmentation replayed from real laser logs\n\nmachine: %s; grid: %s; batch on %s\n\n",
-              topocut::benchmarks::cpu_model().c_str(),
+  std::printf("grid: %s; batch on %s\n\n",
               settle ? "cells settled by occupancy evidence" : "every scan drawn as it is",
               batch_every == 1 ? "every update" : ("every " + std::to_string(batch_every) + "th update and the last").c_str());
   std::vector<LogFigures> logs;
@@ -141,7 +78,7 @@ int main(int argc, char** argv) {
       continue;
     }
     std::fprintf(stderr, "replaying %s ...\n", name.c_str());
-    logs.push_back(replay_file(name, path, batch_every, settle, variant));
+    logs.push_back(replay_file(name, path, batch_every, settle, incremental));
   }
 
   std::vector<std::vector<std::string>> times{{"log", "grid", "scans", "updates", "inc median ms", "inc p95 ms", "inc max ms",
@@ -170,5 +107,38 @@ int main(int argc, char** argv) {
   std::printf("## Time per update (CPU)\n\n%s\n## Room stability\n\n%s\n## Targets\n\n%s\npeak RSS %.0f MB\n",
               markdown_table(times).c_str(), markdown_table(stability).c_str(), markdown_table(targets).c_str(),
               topocut::benchmarks::peak_rss_mb());
-  return 0;
+  return benchmarks::kDone;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  using namespace topocut;
+  using namespace topocut::benchmarks;
+  std::vector<std::string> names;
+  int batch_every = 1;
+  bool settle = false;
+  IncrementalOptions incremental = wall_map_incremental_options();  // as `walls --incremental`
+  const Program program{
+      .name = "log_replay_benchmark",
+      .title = "Incremental segmentation replayed from real laser logs",
+      .about = "Replays the CARMEN logs of ../shared/datasets/carmen (LOG: intel aces csail fhw by default) into the\n"
+               "incremental segmenter with the preset of `topocut walls --incremental`; the options after --settle\n"
+               "override the preset to measure a variant. --batch-fraction 1e-12 makes every update a batch one with\n"
+               "ids kept by overlap (batch's own churn).\n",
+      .options = {count("batch-every", batch_every, 1, "compare batch on every N-th update and the last (default 1)"),
+                  flag("settle", settle, "settle the grid's cells by occupancy evidence instead of drawing every scan"),
+                  count("split-after", incremental.split_after, 1, "decompositions in a row that split a room"),
+                  count("merge-after", incremental.merge_after, 1, "decompositions in a row that merge two rooms"),
+                  on_off("door-neighbours", incremental.neighbours_across_doors, "rooms across doors decomposed together"),
+                  on_off("cut-neighbours", incremental.neighbours_across_cuts, "rooms across other cuts decomposed together"),
+                  number("absorb-fraction", incremental.absorb_fraction, "share of a room's area it takes in undecomposed"),
+                  number("partial-area", incremental.partial_area, "rooms larger than this (m²) are decomposed near the change"),
+                  number("partial-margin", incremental.partial_margin, "how near (m)"),
+                  on_off("isolated-nearest", incremental.isolated_to_nearest_room, "isolated new cells join the nearest room"),
+                  number("batch-fraction", incremental.batch_fraction, "share of changed free cells that makes an update batch")},
+      .operands = "[LOG ...]",
+      .operand = [&names](const std::string& name) { names.push_back(name); },
+      .tune_allocator = true};
+  return benchmark_main(argc, argv, program, [&] { return run(names, batch_every, settle, incremental); });
 }

@@ -4,15 +4,8 @@
 // maps without ground truth (thin, speck and open rooms). Prints one table per set and a summary with
 // the targets of issue 25 ("Rooms a person would draw"), so an idea is judged on all sets together;
 // below topocut's row of a set, the peers' published results on it (MAORIS, DuDe, Voronoi) and, on the
-// sketches, the other annotator's rooms, all scored by the same code.
-//
-// Usage: map_suite_benchmark [evaluate's segmenter options] [--details] [--floor-repetitions N]
-//                            [--threads N] [--shared DIR] [--oracle-merge]
-//   --details              also print the per-image tables
-//   --oracle-merge         diagnostic: segments joined by the ground-truth room they overlap most
-//   --floor-repetitions N  measure each image's contour floor N times (default 5; 0: no times)
-//   --threads N            run the sets on N threads (default 1; times are only meaningful with 1)
-//   --shared DIR           the shared folder holding datasets/ (default: the source tree's ../shared)
+// sketches, the other annotator's rooms, all scored by the same code. With --ablation, the table of the
+// rule list instead: every rule switched off in turn. Options: --help.
 #include <algorithm>
 #include <cstdio>
 #include <exception>
@@ -29,18 +22,18 @@
 #include <opencv2/imgproc.hpp>
 
 #include "benchmark_machine.h"
-#include "topocut/core/allocator.h"
+#include "support/benchmark_main.h"
 #include "topocut/core/error.h"
 #include "topocut/core/format.h"
 #include "topocut/evaluation/dataset.h"
 #include "topocut/evaluation/dataset_options.h"
 #include "topocut/evaluation/dataset_report.h"
 #include "topocut/evaluation/room_defects.h"
+#include "topocut/segmentation/segmentation_rules.h"
 
 namespace {
 
 using namespace topocut;
-using topocut::benchmarks::cpu_model;
 using topocut::benchmarks::peak_rss_mb;
 
 // Another segmentation of a set's plain images, scored beside topocut's.
@@ -196,72 +189,31 @@ std::string ratio_text(const std::vector<double>& ratios) {
   return fixed(s.median, 1) + " / " + fixed(s.max, 1);
 }
 
-int run(std::vector<std::string> args) {
-  bool details = false, oracle_merge = false;
-  int floor_repetitions = 5, threads = 1;
-  std::string shared = TOPOCUT_SHARED_DIR;
-  std::vector<std::string> segmenter_args;
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    const std::string& a = args[i];
-    if (a == "--help" || a == "-h") {
-      std::cout << "Usage: map_suite_benchmark [options]\n\nSegmenter options (as topocut evaluate):\n"
-                << dataset_options_help()
-                << "  --details              also print the per-image tables\n"
-                   "  --oracle-merge         diagnostic: join segments by the ground-truth room they overlap\n"
-                   "                         most (with --no-merge: the pieces joined by people's rooms)\n"
-                   "  --floor-repetitions N  contour floor repetitions per image (default 5; 0: no times)\n"
-                   "  --threads N            sets on N threads (default 1; times need 1)\n"
-                   "  --shared DIR           folder holding datasets/ (default " TOPOCUT_SHARED_DIR ")\n";
-      return 0;
-    }
-    if (a == "--details") {
-      details = true;
-    } else if (a == "--oracle-merge") {
-      oracle_merge = true;
-    } else if ((a == "--floor-repetitions" || a == "--threads" || a == "--shared") && i + 1 < args.size()) {
-      const std::string value = args[++i];
-      if (a == "--shared") {
-        shared = value;
-      } else {
-        const int n = std::stoi(value);
-        (a == "--threads" ? threads : floor_repetitions) = std::max(a == "--threads" ? 1 : 0, n);
-      }
-    } else {
-      segmenter_args.push_back(a);
-    }
-  }
-  const DatasetArguments arguments = parse_dataset_arguments(segmenter_args);
-  const std::string datasets = shared + "/datasets";
-  if (!std::filesystem::is_directory(datasets)) {
-    std::cout << "map_suite_benchmark: " << datasets << " is absent; nothing to measure\n";
-    return 0;
-  }
-
+// The sets scored against ground truth, with their targets and (with_peers) the rows to compare with.
+std::vector<ScoredSet> scored_sets(const std::string& datasets, bool with_peers) {
   const std::string lex = datasets + "/sketches/lex", ezvin = datasets + "/sketches/ezvin";
-  std::vector<Peer> sketch_peers = published_peers(datasets + "/peers/sketches");
+  std::vector<Peer> sketch_peers = with_peers ? published_peers(datasets + "/peers/sketches") : std::vector<Peer>{};
   std::vector<ScoredSet> scored{
       {"Bormann", datasets + "/bormann", {Variant::kPlain, Variant::kFurnished},
-       {"F1 ≥ 95, R ≥ 98.5, P ≥ 97.5", "R ≥ 92.5, P ≥ 97.0"}, published_peers(datasets + "/peers/bormann"), {}, {}},
+       {"F1 ≥ 95, R ≥ 98.5, P ≥ 97.5", "R ≥ 92.5, P ≥ 97.0"}, with_peers ? published_peers(datasets + "/peers/bormann") : std::vector<Peer>{}, {}, {}},
       {"sketches (lex)", lex, {Variant::kPlain}, {"F1 ≥ 84, R ≥ 92, P ≥ 88"}, sketch_peers, {}, {}},
       {"sketches (ezvin)", ezvin, {Variant::kPlain}, {"F1 ≥ 70, R ≥ 92, P ≥ 85"}, sketch_peers, {}, {}},
       {"raw maps with people's rooms", datasets + "/real_maps_gt", {Variant::kPlain}, {"R ≥ 95, P inside ≥ 95"}, {}, {},
        {}},
   };
-  scored[1].peers.push_back(annotator("ezvin's rooms", ezvin));
-  scored[2].peers.push_back(annotator("lex's rooms", lex));
-  std::vector<MapDefectResult> real;
-  MapFolderOptions folder_options;
-  folder_options.segment = arguments.run.segment;
-  folder_options.load = arguments.run.load;
-  folder_options.floor_repetitions = floor_repetitions;
+  if (with_peers) {
+    scored[1].peers.push_back(annotator("ezvin's rooms", ezvin));
+    scored[2].peers.push_back(annotator("lex's rooms", lex));
+  }
+  return scored;
+}
 
-  std::vector<std::function<void()>> jobs;
-  for (ScoredSet& set : scored) jobs.push_back([&, floor_repetitions] { score_set(set, arguments.run, floor_repetitions, oracle_merge); });
-  jobs.push_back([&] { real = run_map_files(discover_map_files(datasets + "/real_maps"), folder_options); });
+// Runs jobs on threads threads; the messages of the jobs that threw.
+std::vector<std::string> run_jobs(const std::vector<std::function<void()>>& jobs, int threads) {
   std::mutex mutex;
+  std::vector<std::string> errors;
   std::size_t next = 0;
   std::vector<std::thread> pool;
-  std::vector<std::string> errors;
   for (int t = 0; t < threads; ++t) {
     pool.emplace_back([&] {
       for (;;) {
@@ -281,11 +233,36 @@ int run(std::vector<std::string> args) {
     });
   }
   for (std::thread& t : pool) t.join();
+  return errors;
+}
+
+// The options of a run (besides the segmenter's).
+struct SuiteOptions {
+  bool details = false, oracle_merge = false, ablation = false;
+  int floor_repetitions = 5, threads = 1;
+  std::string shared = TOPOCUT_SHARED_DIR;
+};
+
+int run(const SuiteOptions& suite, const DatasetArguments& arguments) {
+  const bool details = suite.details, oracle_merge = suite.oracle_merge;
+  const int floor_repetitions = suite.floor_repetitions, threads = suite.threads;
+  const std::string datasets = suite.shared + "/datasets";
+  benchmarks::require_folder(datasets);
+
+  std::vector<ScoredSet> scored = scored_sets(datasets, true);
+  std::vector<MapDefectResult> real;
+  MapFolderOptions folder_options;
+  folder_options.segment = arguments.run.segment;
+  folder_options.load = arguments.run.load;
+  folder_options.floor_repetitions = floor_repetitions;
+
+  std::vector<std::function<void()>> jobs;
+  for (ScoredSet& set : scored) jobs.push_back([&, floor_repetitions] { score_set(set, arguments.run, floor_repetitions, oracle_merge); });
+  jobs.push_back([&] { real = run_map_files(discover_map_files(datasets + "/real_maps"), folder_options); });
+  const std::vector<std::string> errors = run_jobs(jobs, threads);
   for (const std::string& e : errors) std::cerr << "map_suite_benchmark: " << e << "\n";
 
-  std::cout << "# Map suite benchmark\n\nmachine: " << cpu_model() << ", " << std::thread::hardware_concurrency()
-            << " hardware threads; threads used: " << threads << "\nmethod: " << method_name(arguments.run.segment)
-            << "\n\n";
+  std::cout << "threads used: " << threads << "\nmethod: " << method_name(arguments.run.segment) << "\n\n";
   if (details) {
     for (const ScoredSet& set : scored) {
       std::cout << "## " << set.name << "\n\n" << format_results_table(set.results) << "\n";
@@ -336,17 +313,84 @@ int run(std::vector<std::string> args) {
   const int missing_peers = count_missing(scored);
   if (missing_peers > 0)
     std::cout << missing_peers << " peer images are missing (published for fewer maps); their means say over how many maps they run\n";
-  return failed > 0 || !errors.empty() ? 1 : 0;
+  return failed > 0 || !errors.empty() ? benchmarks::kFailed : benchmarks::kDone;
+}
+
+
+// The ablation generated from the rule list (segmentation_rules.h): the suite with the given options,
+// then once with each rule that is on switched off. One row per run: matched F1 on every scored set
+// (the means over its maps) and the share of flagged rooms on the real maps.
+int run_ablation(const SuiteOptions& suite, const DatasetArguments& arguments) {
+  const std::string datasets = suite.shared + "/datasets";
+  benchmarks::require_folder(datasets);
+  std::vector<std::pair<std::string, SegmentOptions>> runs{{"(every rule on)", arguments.run.segment}};
+  for (const SegmentationRule& rule : segmentation_rules()) {
+    if (!rule.is_on(arguments.run.segment)) continue;
+    SegmentOptions off = arguments.run.segment;
+    rule.turn_off(off);
+    runs.emplace_back("--no-" + rule.name, off);
+  }
+  std::vector<std::vector<std::string>> rows{{"run", "Bormann plain F1", "Bormann furnished F1", "sketches lex F1",
+                                              "sketches ezvin F1", "raw maps F1", "real maps flagged %"}};
+  int failed = 0;
+  for (const auto& [name, options] : runs) {
+    DatasetRunOptions run = arguments.run;
+    run.segment = options;
+    std::vector<ScoredSet> scored = scored_sets(datasets, false);
+    std::vector<MapDefectResult> real;
+    MapFolderOptions folder_options;
+    folder_options.segment = options;
+    folder_options.load = run.load;
+    folder_options.floor_repetitions = 0;
+    std::vector<std::function<void()>> jobs;
+    for (ScoredSet& set : scored) jobs.push_back([&set, &run] { score_set(set, run, 0, false); });
+    jobs.push_back([&] { real = run_map_files(discover_map_files(datasets + "/real_maps"), folder_options); });
+    for (const std::string& e : run_jobs(jobs, suite.threads)) std::cerr << "map_suite_benchmark: " << name << ": " << e << "\n";
+    std::vector<std::string> row{name};
+    for (const ScoredSet& set : scored) {
+      for (const Variant variant : set.variants) {
+        const VariantSummary v = summarize(set.results, variant);
+        failed += v.failed;
+        row.push_back(fixed(100 * v.f1_mean, 1));
+      }
+    }
+    for (const MapDefectResult& r : real) failed += r.ok ? 0 : 1;
+    row.push_back(fixed(100.0 * flagged_share(total_defects(real)), 1));
+    rows.push_back(row);
+    std::cerr << "map_suite_benchmark: " << name << " done\n";
+  }
+  std::cout << "threads used: " << suite.threads << "\nmethod: " << method_name(arguments.run.segment) << "\n\n"
+            << markdown_table(rows) << "\nfailures: " << failed << "\n";
+  return failed > 0 ? benchmarks::kFailed : benchmarks::kDone;
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  topocut::keep_freed_memory_for_reuse();
-  try {
-    return run(std::vector<std::string>(argv + 1, argv + argc));
-  } catch (const std::exception& e) {
-    std::cerr << "map_suite_benchmark: error: " << e.what() << "\n";
-    return 2;
-  }
+  using namespace topocut::benchmarks;
+  SuiteOptions suite;
+  topocut::DatasetArguments arguments;
+  const Program program{
+      .name = "map_suite_benchmark",
+      .title = "Map suite benchmark",
+      .about = "One set of segmenter options on every kind of map at once: Bormann (plain, furnished), the sketches\n"
+               "against both annotators, raw maps registered onto people's rooms, real maps without ground truth;\n"
+               "with the peers' published results and the targets.\n",
+      .options = {flag("details", suite.details, "also print the per-image tables"),
+                  flag("ablation", suite.ablation,
+                       "the ablation instead: the suite once as given and once with each rule of the rule list "
+                       "switched off (matched F1 per set, real maps' flagged rooms)"),
+                  flag("oracle-merge", suite.oracle_merge,
+                       "diagnostic: join segments by the ground-truth room they overlap most (with --no-merge: the pieces "
+                       "joined by people's rooms)"),
+                  {"floor-repetitions", "N", "contour floor repetitions per image (default 5; 0: no times)",
+                   [&suite](const std::string& value) {
+                     suite.floor_repetitions = whole_number("--floor-repetitions", value, 0, 1000);
+                   }},
+                  count("threads", suite.threads, 1, "sets on N threads (default 1; times need 1)"),
+                  text("shared", "DIR", suite.shared, "folder holding datasets/ (default " TOPOCUT_SHARED_DIR ")")},
+      .dataset = &arguments,
+      .tune_allocator = true};
+  return benchmark_main(argc, argv, program,
+                        [&] { return suite.ablation ? run_ablation(suite, arguments) : run(suite, arguments); });
 }

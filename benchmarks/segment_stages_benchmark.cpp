@@ -15,24 +15,24 @@
 // temporary folder; --no-crop runs the stages on the whole grid instead of segmentation_box(), as
 // segment() did before it cropped.
 //
-// Options: kUsage below (printed by --help).
-#include <stdlib.h>
+// Options: --help. The segmenter's are `topocut evaluate`'s (the library's table); the numbers of
+// DoorOptions and MergeOptions that table does not have yet are this program's own, applied after it.
 #include <unistd.h>
 
 #include <algorithm>
 #include <filesystem>
+#include <functional>
 #include <iostream>
 #include <numeric>
 #include <string>
-#include <thread>
 #include <vector>
 
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
-#include "topocut/core/allocator.h"
 #include "topocut/core/error.h"
 #include "topocut/core/format.h"
+#include "topocut/core/option_table.h"
 #include "topocut/evaluation/dataset.h"
 #include "topocut/evaluation/dataset_report.h"
 #include "topocut/evaluation/precision_recall.h"
@@ -43,6 +43,7 @@
 
 #include "benchmark_machine.h"
 #include "segment_stages.h"
+#include "support/benchmark_main.h"
 
 namespace {
 
@@ -58,9 +59,10 @@ struct Job {
   Variant variant = Variant::kPlain;
 };
 
-std::vector<Job> dataset_jobs(const std::vector<std::string>& names, const std::vector<Variant>& variants) {
+std::vector<Job> dataset_jobs(const std::string& dataset, const std::vector<std::string>& names, const std::vector<Variant>& variants) {
+  benchmarks::require_folder(dataset);
   std::vector<Job> jobs;
-  for (const DatasetMap& map : select_maps(discover_dataset(std::string(TOPOCUT_SHARED_DIR) + "/datasets/bormann"), names)) {
+  for (const DatasetMap& map : select_maps(discover_dataset(dataset), names)) {
     for (const Variant variant : variants)
       jobs.push_back({map.name + (variant == Variant::kPlain ? "" : " (f)"), map.image(variant), map.ground_truth, variant});
   }
@@ -94,97 +96,39 @@ std::vector<Job> folder_jobs(const std::string& folder, const std::vector<std::s
   return jobs;
 }
 
-constexpr const char* kUsage =
-    "Usage: segment_stages_benchmark [--repeat N] [--maps DIR] [--map NAME ...] [--variant plain|furnished|all]\n"
-    "         [--unexplored N] [--no-crop] [--quality]\n"
-    "         [--concavity M] [--parity] [--no-merge] [--door-ratio R] [--width-depth M] [--min-room-area M2]\n"
-    "         [--min-room-width M] [--no-cover] [--min-hole-area M2] [--no-gaps] [--max-gap M] [--gap-side M]\n"
-    "         [--wall-thickness M] [--gap-wall M] [--no-doors] [--door-max M] [--door-side-ratio R]\n"
-    "         [--door-depth M] [--door-turn RAD] [--simplify CELLS]\n"
-    "The least CPU time of each stage of `topocut segment` over --repeat runs, per Bormann image (or per\n"
-    "map of --maps DIR), beside the contour floor; --quality also scores each image against its ground truth.\n";
+// Edits of the segmenter's options given on the command line beyond the library's table.
+using Edits = std::vector<std::function<void(SegmentOptions&)>>;
 
-int run(const std::vector<std::string>& args) {
+// An option setting the number field(options) refers to, recorded in edits.
+template <typename Field>
+benchmarks::Option extra(const char* name, const char* help, Edits& edits, Field field) {
+  return {name, "X", help, [&edits, name, field](const std::string& value) {
+            const double v = parse_option_number(value, std::string("--") + name);
+            edits.push_back([field, v](SegmentOptions& o) { field(o) = v; });
+          }};
+}
+
+// What to time and how, besides the segmenter's options.
+struct StagesOptions {
   int repeat = 3;
-  std::vector<std::string> names;
-  std::vector<Variant> variants{Variant::kPlain, Variant::kFurnished};
-  SegmentOptions options;
-  bool quality = false;
+  bool quality = false, no_crop = false;
   std::string maps_folder;
   int unexplored = 0;
-  bool no_crop = false;
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    const std::string& a = args[i];
-    auto value = [&]() -> std::string {
-      if (i + 1 >= args.size()) throw Error(a + " needs a value");
-      return args[++i];
-    };
-    if (a == "--help" || a == "-h") {
-      std::cout << kUsage;
-      return 0;
-    } else if (a == "--repeat") {
-      repeat = std::max(1, std::stoi(value()));
-    } else if (a == "--unexplored") {
-      unexplored = std::stoi(value());
-    } else if (a == "--no-crop") {
-      no_crop = true;
-    } else if (a == "--maps") {
-      maps_folder = value();
-    } else if (a == "--map") {
-      names.push_back(value());
-      while (i + 1 < args.size() && args[i + 1].rfind("--", 0) != 0) names.push_back(args[++i]);
-    } else if (a == "--variant") {
-      const std::string v = value();
-      variants = v == "all" ? std::vector<Variant>{Variant::kPlain, Variant::kFurnished}
-                            : std::vector<Variant>{parse_variant(v)};
-    } else if (a == "--concavity") {
-      options.concavity = std::stod(value());
-    } else if (a == "--parity") {
-      options = parity_segment_options(options.concavity);
-    } else if (a == "--quality") {
-      quality = true;
-    } else if (a == "--no-merge") {
-      options.merge.enabled = false;
-    } else if (a == "--door-ratio") {
-      options.merge.door_ratio = std::stod(value());
-    } else if (a == "--width-depth") {
-      options.merge.width_depth = std::stod(value());
-    } else if (a == "--min-room-area") {
-      options.merge.min_room_area = std::stod(value());
-    } else if (a == "--min-room-width") {
-      options.merge.min_room_width = std::stod(value());
-    } else if (a == "--no-cover") {
-      options.labels.cover_absorbed_obstacles = false;
-    } else if (a == "--min-hole-area") {
-      options.contours.min_hole_area = std::stod(value());
-    } else if (a == "--no-gaps") {
-      options.doors.extend_walls = false;
-    } else if (a == "--max-gap") {
-      options.doors.max_gap = std::stod(value());
-    } else if (a == "--gap-side") {
-      options.doors.min_side_width = std::stod(value());
-    } else if (a == "--wall-thickness") {
-      options.doors.max_wall_thickness = std::stod(value());
-    } else if (a == "--gap-wall") {
-      options.doors.min_wall_length = std::stod(value());
-    } else if (a == "--no-doors") {
-      options.doors.enabled = false;
-    } else if (a == "--door-max") {
-      options.doors.max_width = std::stod(value());
-    } else if (a == "--door-side-ratio") {
-      options.doors.door_ratio = std::stod(value());
-    } else if (a == "--door-depth") {
-      options.doors.width_depth = std::stod(value());
-    } else if (a == "--door-turn") {
-      options.doors.min_turn = std::stod(value());
-    } else if (a == "--simplify") {
-      options.simplify = std::stod(value());
-    } else {
-      throw Error("unknown argument '" + a + "'");
-    }
-  }
-  const MapLoadOptions load;
-  std::vector<Job> jobs = maps_folder.empty() ? dataset_jobs(names, variants) : folder_jobs(maps_folder, names);
+  Edits edits;
+};
+
+int run(const StagesOptions& stages_options, const DatasetArguments& arguments) {
+  const int repeat = stages_options.repeat;
+  const bool quality = stages_options.quality, no_crop = stages_options.no_crop;
+  const std::string& maps_folder = stages_options.maps_folder;
+  const int unexplored = stages_options.unexplored;
+  if (!arguments.csv.empty()) throw Error("--csv is not written here");
+  const std::vector<std::string>& names = arguments.run.maps;
+  SegmentOptions options = arguments.run.segment;
+  for (const auto& edit : stages_options.edits) edit(options);
+  const MapLoadOptions& load = arguments.run.load;
+  std::vector<Job> jobs =
+      maps_folder.empty() ? dataset_jobs(arguments.dataset, names, arguments.run.variants) : folder_jobs(maps_folder, names);
   const std::string padded_folder =
       (std::filesystem::temp_directory_path() / ("topocut_padded_" + std::to_string(::getpid()))).string();
   if (unexplored > 0) pad_images(jobs, unexplored, padded_folder);
@@ -233,11 +177,7 @@ int run(const std::vector<std::string>& args) {
     }
     std::cerr << rows.back()[0] << " " << rows.back()[12] << " ms\n";
   }
-  double load_average[3] = {0, 0, 0};
-  getloadavg(load_average, 3);
-  std::cout << "machine: " << benchmarks::cpu_model() << ", " << std::thread::hardware_concurrency()
-            << " hardware threads, load average " << fixed(load_average[0], 1) << "; peak RSS "
-            << fixed(benchmarks::peak_rss_mb(), 0) << " MB\n";
+  std::cout << "method: " << method_name(options) << "; peak RSS " << fixed(benchmarks::peak_rss_mb(), 0) << " MB\n";
   std::cout << "process CPU times in ms, least of " << repeat << " runs per image\n\n" << markdown_table(rows) << "\n";
   over.push_back({"median"});
   over.push_back({"max"});
@@ -260,17 +200,49 @@ int run(const std::vector<std::string>& args) {
               << fixed(std::min(lowest(precision[0]), lowest(precision[1])), 1) << "\n";
   }
   if (unexplored > 0) std::filesystem::remove_all(padded_folder);
-  return 0;
+  return benchmarks::kDone;
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  topocut::keep_freed_memory_for_reuse();
-  try {
-    return run(std::vector<std::string>(argv + 1, argv + argc));
-  } catch (const std::exception& e) {
-    std::cerr << "segment_stages_benchmark: error: " << e.what() << "\n";
-    return 1;
-  }
+  using namespace topocut::benchmarks;
+  StagesOptions o;
+  topocut::DatasetArguments arguments;
+  Edits& e = o.edits;
+  const Program program{
+      .name = "segment_stages_benchmark",
+      .title = "Segmentation stage times",
+      .about = "The least CPU time of each stage of `topocut segment` over --repeat runs, per Bormann image (or per map\n"
+               "of --maps DIR), beside the contour floor; --quality also scores each image against its ground truth.\n",
+      .options = {count("repeat", o.repeat, 1, "runs per image, least time taken (default 3)"),
+                  text("maps", "DIR", o.maps_folder, "time the maps of DIR (images and YAMLs) instead of the dataset"),
+                  count("unexplored", o.unexplored, 1, "centre every image map in an N x N image of its corner's grey"),
+                  flag("no-crop", o.no_crop, "run the stages on the whole grid, not segmentation_box()"),
+                  flag("quality", o.quality, "also score each image against its ground truth (not with --maps)"),
+                  extra("door-ratio", "merging: largest cut over the narrower side's width kept as a door", e,
+                        [](SegmentOptions& s) -> double& { return s.merge.door_ratio; }),
+                  extra("width-depth", "merging: the width-over-depth bound of a door", e,
+                        [](SegmentOptions& s) -> double& { return s.merge.width_depth; }),
+                  extra("min-room-width", "merging: narrowest room (m)", e,
+                        [](SegmentOptions& s) -> double& { return s.merge.min_room_width; }),
+                  extra("max-gap", "doors: widest gap (m) where a thin wall stops short", e,
+                        [](SegmentOptions& s) -> double& { return s.doors.max_gap; }),
+                  extra("gap-side", "doors: narrowest side (m) of a wall opening", e,
+                        [](SegmentOptions& s) -> double& { return s.doors.min_side_width; }),
+                  extra("wall-thickness", "doors: thickest wall (m) of a wall opening", e,
+                        [](SegmentOptions& s) -> double& { return s.doors.max_wall_thickness; }),
+                  extra("gap-wall", "doors: shortest wall (m) of a wall opening", e,
+                        [](SegmentOptions& s) -> double& { return s.doors.min_wall_length; }),
+                  extra("door-side-ratio", "doors: largest door width over the side's width", e,
+                        [](SegmentOptions& s) -> double& { return s.doors.door_ratio; }),
+                  extra("door-depth", "doors: the width-over-depth bound of a door", e,
+                        [](SegmentOptions& s) -> double& { return s.doors.width_depth; }),
+                  extra("door-turn", "doors: least turn (radians) at a door's ends", e,
+                        [](SegmentOptions& s) -> double& { return s.doors.min_turn; }),
+                  extra("simplify", "outline simplification tolerance (cells)", e,
+                        [](SegmentOptions& s) -> double& { return s.simplify; })},
+      .dataset = &arguments,
+      .tune_allocator = true};
+  return benchmark_main(argc, argv, program, [&] { return run(o, arguments); });
 }

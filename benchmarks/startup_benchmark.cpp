@@ -3,9 +3,9 @@
 // floor plan; for the latter also the ratio of the whole process to the time topocut itself reports
 // (loading + segmentation), and an empty process (/bin/true) as the machine's floor under the same
 // load, and empty programs linked with OpenCV core + imgproc and with core alone
-// (benchmarks/startup/opencv_floor.cpp), the floor of any binary that uses cv::Mat. With --base, an older binary is measured in the same run, alternating
-// run by run so that both see the same machine load.
-//   build/startup_benchmark [--runs N] [--base OLD_TOPOCUT] [--topocut NEW_TOPOCUT]
+// (benchmarks/startup/opencv_floor.cpp), the floor of any binary that uses cv::Mat. With --base, an
+// older binary is measured in the same run, alternating run by run so that both see the same machine
+// load. Options: --help.
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -18,10 +18,11 @@
 #include <iostream>
 #include <regex>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
-#include "benchmark_machine.h"
+#include "support/benchmark_main.h"
 
 namespace {
 
@@ -53,7 +54,7 @@ double reported_ms(const std::string& out) {
 
 Run run_once(const std::string& binary, const std::vector<std::string>& args) {
   int pipe_fds[2];
-  if (::pipe(pipe_fds) != 0) std::exit(2);
+  if (::pipe(pipe_fds) != 0) throw std::runtime_error("no pipe");
   const auto start = std::chrono::steady_clock::now();
   const pid_t pid = ::fork();
   if (pid == 0) {
@@ -73,10 +74,7 @@ Run run_once(const std::string& binary, const std::vector<std::string>& args) {
   rusage usage{};
   ::wait4(pid, &status, 0, &usage);
   const auto end = std::chrono::steady_clock::now();
-  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
-    std::cerr << "startup_benchmark: " << binary << " failed\n";
-    std::exit(1);
-  }
+  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) throw std::runtime_error(binary + " failed");
   Run r;
   r.wall_ms = std::chrono::duration<double, std::milli>(end - start).count();
   const auto ms = [](const timeval& t) { return t.tv_sec * 1e3 + t.tv_usec / 1e3; };
@@ -142,24 +140,7 @@ void print_ratios(const std::vector<Case>& cases) {
   }
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
-  int runs = 20;
-  std::string topocut = TOPOCUT_CLI, base;
-  for (int i = 1; i < argc; ++i) {
-    const std::string a = argv[i];
-    if (a == "--runs" && i + 1 < argc) {
-      runs = std::max(1, std::atoi(argv[++i]));
-    } else if (a == "--base" && i + 1 < argc) {
-      base = argv[++i];
-    } else if (a == "--topocut" && i + 1 < argc) {
-      topocut = argv[++i];
-    } else {
-      std::cerr << "usage: startup_benchmark [--runs N] [--base OLD_TOPOCUT] [--topocut NEW_TOPOCUT]\n";
-      return 2;
-    }
-  }
+int run(int runs, const std::string& topocut, const std::string& base) {
   const std::string floorplan = std::string(TOPOCUT_SOURCE_DIR) + "/maps/floorplan.yaml";
   std::vector<Case> cases;
   for (const std::string& binary : {topocut, base}) {
@@ -177,12 +158,25 @@ int main(int argc, char** argv) {
   for (Case& c : cases) run_once(c.binary, c.args);  // warm the page cache
   for (int k = 0; k < runs; ++k)
     for (Case& c : cases) c.runs.push_back(run_once(c.binary, c.args));
-  double load[3] = {0, 0, 0};
-  ::getloadavg(load, 3);
-  std::cout << "startup_benchmark: " << runs << " runs each, alternating; " << topocut::benchmarks::cpu_model() << ", "
-            << ::sysconf(_SC_NPROCESSORS_ONLN) << " hardware threads, load average " << fixed(load[0], 1)
-            << " (wall times grow with the load; CPU = user + system time)\n\n";
+  std::cout << runs << " runs each, alternating (wall times grow with the load; CPU = user + system time)\n\n";
   print_table(cases);
   if (!base.empty()) print_ratios(cases);
-  return 0;
+  return topocut::benchmarks::kDone;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  using namespace topocut::benchmarks;
+  int runs = 20;
+  std::string topocut = TOPOCUT_CLI, base;
+  const Program program{
+      .name = "startup_benchmark",
+      .title = "Start-up",
+      .about = "The topocut command run as a whole process (--version, and segment on the bundled floor plan), its\n"
+               "wall and CPU time and peak memory, beside an empty process and empty programs linked with OpenCV.\n",
+      .options = {count("runs", runs, 1, "runs of each case, alternating (default 20)"),
+                  text("base", "OLD_TOPOCUT", base, "also measure an older topocut binary, alternating with the new"),
+                  text("topocut", "NEW_TOPOCUT", topocut, "the topocut binary measured (default: this build's)")}};
+  return benchmark_main(argc, argv, program, [&] { return run(runs, topocut, base); });
 }

@@ -1,6 +1,6 @@
 // Pipeline C on the shared CARMEN logs: walls from laser scans, their fidelity to the raw hits,
 // the time from file to rooms, and the labeling speed. A plain program that prints tables.
-// Options: printed by --help (main()).
+// Options: --help.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -12,7 +12,7 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
-#include "topocut/core/allocator.h"
+#include "support/benchmark_main.h"
 #include "topocut/core/occupancy_grid.h"
 #include "topocut/io/atomic_file.h"
 #include "topocut/io/carmen_log.h"
@@ -164,37 +164,10 @@ void write_small_png(const std::string& path, cv::Mat image, std::size_t max_byt
   write_file_atomically(path, std::string(bytes.begin(), bytes.end()));
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
-  topocut::keep_freed_memory_for_reuse();
-  std::string pictures;
-  bool methods = false;
-  bool sweep = false;
-  std::vector<std::string> names;
-  for (int i = 1; i < argc; ++i) {
-    const std::string a = argv[i];
-    if (a == "--pictures" && i + 1 < argc) pictures = argv[++i];
-    else if (a == "--methods") methods = true;
-    else if (a == "--sweep") sweep = true;
-    else if (a == "--help" || a == "-h") {
-      std::printf("Usage: walls_benchmark [--pictures DIR] [--methods] [--sweep] [LOG ...]\n"
-                  "LOG: intel, aces, csail or fhw (default: all four). Walls from the shared CARMEN logs: their\n"
-                  "fidelity to the raw hits and the time from file to rooms; --methods compares the five line\n"
-                  "extractors, --sweep the labeling cell and line support, --pictures writes DIR/walls_<log>.png\n"
-                  "(walls over the raw hits | rooms).\n");
-      return 0;
-    } else if (!a.empty() && a[0] == '-') {
-      std::fprintf(stderr, "walls_benchmark: unknown option or missing value: %s (see --help)\n", a.c_str());
-      return 2;
-    } else names.push_back(a);
-  }
+int run(std::vector<std::string> names, bool methods, bool sweep, const std::string& pictures) {
   if (names.empty()) names = {"intel", "aces", "csail", "fhw"};
   const std::string folder = std::string(TOPOCUT_SHARED_DIR) + "/datasets/carmen";
-  if (!std::filesystem::exists(folder)) {
-    std::printf("walls_benchmark: skipped, the shared logs are not in %s\n", folder.c_str());
-    return 0;
-  }
+  benchmarks::require_folder(folder);
   auto path_of = [&](const std::string& name) { return folder + "/" + name + "-corrected.log.gz"; };
 
   // Whole logs, default options: fidelity and time from file to rooms (median of 5 runs).
@@ -289,5 +262,26 @@ int main(int argc, char** argv) {
       }
     }
   }
-  return 0;
+  return benchmarks::kDone;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  using namespace topocut::benchmarks;
+  std::string pictures;
+  bool methods = false, sweep = false;
+  std::vector<std::string> names;
+  const Program program{
+      .name = "walls_benchmark",
+      .title = "Walls from the shared CARMEN logs",
+      .about = "Walls from laser logs (LOG: intel, aces, csail or fhw; default all four): their fidelity to the raw\n"
+               "hits, the time from file to rooms and the labeling speed.\n",
+      .options = {text("pictures", "DIR", pictures, "write DIR/walls_<log>.png (walls over the raw hits | rooms)"),
+                  flag("methods", methods, "compare the five line extractors"),
+                  flag("sweep", sweep, "sweep the labeling cell and the line support")},
+      .operands = "[LOG ...]",
+      .operand = [&names](const std::string& name) { names.push_back(name); },
+      .tune_allocator = true};
+  return benchmark_main(argc, argv, program, [&] { return run(names, methods, sweep, pictures); });
 }

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Checks the module layering of DESIGN.md over the #include lines.
+"""Checks the module layering (cmake/modules.txt, DESIGN.md's table) over the #include lines.
 
     scripts/check_layering.py [ROOT]      (ROOT: the project, default: this script's parent folder)
 
@@ -8,31 +8,16 @@ line per include of a module that <m> may not use; prints "layering: ok" otherwi
 named by the first folder of an include: "topocut/<module>/..." (public headers) or "<module>/..."
 (a module's private headers under src/, or test helpers under tests/).
 
-The rule, from DESIGN.md ("Layout"): a module may use only the modules its row names, and what those
-use; nothing in the library includes cli, python or ros, which (like benchmarks/, fuzz/ and
-examples/, which are not read) may use everything. A test folder may use what its module may, and
-any test helper (a header under tests/).
+The rule, from DESIGN.md ("Layout"): a module may use only the modules its line of the graph names,
+and what those use; nothing in the library includes an adapter (cli, python, ros: "all" in the
+graph), which (like benchmarks/, fuzz/ and examples/, which are not read) may use everything. A test
+folder may use what its module may, and any test helper (a header under tests/).
 """
 import os
 import re
 import sys
 
-# DESIGN.md's module table, "depends on" column (modules only; third-party libraries are CMake's
-# business). Keep it in step with the table.
-DESIGN_TABLE = {
-    "core": [],
-    "io": ["core"],
-    "map": ["core"],
-    "decomposition": ["core"],
-    "segmentation": ["map", "decomposition"],
-    "evaluation": ["segmentation", "exploration", "io"],
-    "exploration": ["map", "segmentation", "scan"],
-    "scan": ["core"],
-    "lines": ["scan"],
-    "labeling": ["scan"],
-    "walls": ["lines", "labeling", "map", "io"],
-}
-ADAPTERS = ["cli", "python", "ros"]  # may use every module; no module may use them
+from module_graph import GraphError, read_graph
 
 INCLUDE = re.compile(r'^\s*#\s*include\s*"([^"]+)"')
 SOURCE_SUFFIXES = (".h", ".hpp", ".cpp", ".cc")
@@ -79,9 +64,9 @@ def files_of(root, module):
                     yield os.path.join(directory, name)
 
 
-def violations(root, table=DESIGN_TABLE):
+def violations(root, table, adapters):
     reach = allowed_modules(table)
-    known = set(table) | set(ADAPTERS)
+    known = set(table) | set(adapters)
     found = []
     for module in table:
         for path in files_of(root, module):
@@ -96,14 +81,14 @@ def violations(root, table=DESIGN_TABLE):
                     used = included_module(include, known)
                     if used is None or used in reach[module]:
                         continue
-                    if is_test and used not in ADAPTERS and os.path.isfile(os.path.join(root, "tests", include)):
+                    if is_test and used not in adapters and os.path.isfile(os.path.join(root, "tests", include)):
                         continue  # a test helper
                     if used == "topocut.h":
                         why = "the umbrella header (every module)"
-                    elif used in ADAPTERS:
+                    elif used in adapters:
                         why = "an adapter, which no library module may include"
                     else:
-                        why = "not in its DESIGN.md row (may use: " + ", ".join(sorted(reach[module] - {module})) + ")"
+                        why = "not in its line of the module graph (may use: " + ", ".join(sorted(reach[module] - {module})) + ")"
                     found.append(f"{relative}:{number}: {module} includes {used} ({include}): {why}")
     return found
 
@@ -113,11 +98,16 @@ def main(argv):
     if not os.path.isdir(os.path.join(root, "include", "topocut")):
         print(f"check_layering: {root} has no include/topocut folder", file=sys.stderr)
         return 2
-    found = violations(root)
+    try:
+        table, adapters = read_graph(root)
+    except GraphError as error:
+        print(f"check_layering: {error}", file=sys.stderr)
+        return 2
+    found = violations(root, table, adapters)
     for line in found:
         print(line)
     if found:
-        print(f"layering: {len(found)} include(s) break DESIGN.md's module table")
+        print(f"layering: {len(found)} include(s) break the module graph")
         return 1
     print("layering: ok")
     return 0

@@ -1,12 +1,16 @@
 #!/usr/bin/python3
-"""Runs scripts/check_layering.py on small planted trees: it must pass a tree that keeps DESIGN.md's
-table (transitive uses and test helpers included) and name every planted violation, one line each."""
+"""Runs scripts/check_layering.py on small planted trees that carry the project's module graph: it
+must pass a tree that keeps the graph (transitive uses and test helpers included), name every planted
+violation, one line each, and refuse a tree without a graph."""
 import os
+import shutil
 import subprocess
 import sys
 import tempfile
 
-SCRIPT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "check_layering.py")
+HERE = os.path.dirname(os.path.abspath(__file__))
+SCRIPT = os.path.join(HERE, "check_layering.py")
+GRAPH = os.path.join(HERE, "..", "cmake", "modules.txt")
 
 
 def write(root, path, includes):
@@ -29,6 +33,12 @@ def expect(condition, message):
 
 def main():
     with tempfile.TemporaryDirectory() as root:
+        write(root, "include/topocut/core/error.h", [])
+        code, lines = check(root)
+        expect(code == 2 and lines == [], f"a tree without a module graph passes: {code} {lines}")
+        os.makedirs(os.path.join(root, "cmake"))
+        shutil.copy(GRAPH, os.path.join(root, "cmake", "modules.txt"))
+
         # Allowed: direct and transitive uses (evaluation -> exploration -> scan -> core), a module's
         # private header, a test helper of another module, the adapters using everything.
         write(root, "include/topocut/evaluation/report.h", ["topocut/exploration/run.h", "topocut/core/error.h"])
@@ -61,7 +71,7 @@ def main():
         expect(len(violations) == len(expected), f"expected {len(expected)} lines, got {violations}")
         for prefix in expected:
             expect(any(line.startswith(prefix) for line in violations), f"not reported: {prefix} in {violations}")
-        expect(lines[-1] == "layering: 6 include(s) break DESIGN.md's module table", f"summary: {lines[-1]}")
+        expect(lines[-1] == "layering: 6 include(s) break the module graph", f"summary: {lines[-1]}")
     print("check_layering: detects every planted violation, passes the clean tree")
     return 0
 

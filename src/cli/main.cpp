@@ -11,8 +11,8 @@
 
 #include <opencv2/core.hpp>
 
+#include "cli/allocator.h"
 #include "cli/command.h"
-#include "topocut/core/allocator.h"
 #include "topocut/core/error.h"
 #include "topocut/io/output_files.h"
 

@@ -49,10 +49,10 @@ void add_moments(const Ring& ring, double sign, double& a2, double& mx, double& 
   for (std::size_t i = 0; i < n; ++i) {
     const Point2& p = ring[i];
     const Point2& q = ring[(i + 1) % n];
-    const double cross = p.x * q.y - q.x * p.y;
-    a2 += sign * cross;
-    mx += sign * (p.x + q.x) * cross;
-    my += sign * (p.y + q.y) * cross;
+    const double c = cross(p, q);
+    a2 += sign * c;
+    mx += sign * (p.x + q.x) * c;
+    my += sign * (p.y + q.y) * c;
   }
 }
 }  // namespace
@@ -63,15 +63,10 @@ Point2 centroid(const PolygonWithHoles& polygon) {
   add_moments(p.outer, 1.0, a2, mx, my);
   for (const Ring& hole : p.holes) add_moments(hole, 1.0, a2, mx, my);
   if (std::abs(a2) < 1e-12) {
-    Point2 mean;
-    if (p.outer.empty()) return mean;
-    for (const Point2& v : p.outer) {
-      mean.x += v.x;
-      mean.y += v.y;
-    }
-    mean.x /= static_cast<double>(p.outer.size());
-    mean.y /= static_cast<double>(p.outer.size());
-    return mean;
+    Point2 sum;
+    if (p.outer.empty()) return sum;
+    for (const Point2& v : p.outer) sum = sum + v;
+    return sum / static_cast<double>(p.outer.size());
   }
   return {mx / (3.0 * a2), my / (3.0 * a2)};
 }
@@ -92,11 +87,10 @@ PolygonWithHoles normalized_orientation(const PolygonWithHoles& polygon) {
 double distance(const Point2& a, const Point2& b) { return std::hypot(a.x - b.x, a.y - b.y); }
 
 double distance_to_segment(const Point2& p, const Segment2& s) {
-  const double dx = s.b.x - s.a.x, dy = s.b.y - s.a.y;
-  const double length2 = dx * dx + dy * dy;
-  double t = length2 > 0.0 ? ((p.x - s.a.x) * dx + (p.y - s.a.y) * dy) / length2 : 0.0;
-  t = std::clamp(t, 0.0, 1.0);
-  return std::hypot(p.x - (s.a.x + t * dx), p.y - (s.a.y + t * dy));
+  const Point2 d = s.b - s.a;
+  const double length2 = dot(d, d);
+  const double t = length2 > 0.0 ? std::clamp(dot(p - s.a, d) / length2, 0.0, 1.0) : 0.0;
+  return distance(p, s.a + t * d);
 }
 
 }  // namespace topocut

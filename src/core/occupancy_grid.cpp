@@ -26,10 +26,6 @@ Point2 grid_to_world(const OccupancyGrid& grid, const Point2& g) {
   return {grid.origin.x + (g.x + 0.5) * grid.resolution, grid.origin.y + (g.y + 0.5) * grid.resolution};
 }
 
-Point2 world_to_grid(const OccupancyGrid& grid, const Point2& w) {
-  return {(w.x - grid.origin.x) / grid.resolution - 0.5, (w.y - grid.origin.y) / grid.resolution - 0.5};
-}
-
 OccupancyGrid crop(const OccupancyGrid& grid, const cv::Rect& box) {
   if (box.empty() || (box & cv::Rect(0, 0, grid.width(), grid.height())) != box)
     throw Error("the box to crop must be a non-empty part of the map");

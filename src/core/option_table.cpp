@@ -52,4 +52,10 @@ std::string shortest_number(double value) {
   return error == std::errc() ? std::string(buffer, end) : std::string("?");
 }
 
+std::string option_help_line(const std::string& name, const std::string& value_name, const std::string& help) {
+  std::string left = "  --" + name + (value_name.empty() ? "" : " " + value_name);
+  if (left.size() < 24) left += std::string(24 - left.size(), ' ');
+  return left + " " + help + "\n";
+}
+
 }  // namespace topocut

@@ -36,19 +36,12 @@ bool apply_row(const OptionRow<Target>* row, Target& target, const std::string& 
   return true;
 }
 
-// "  --name VALUE           help" padded to the help column.
-std::string help_line(const std::string& name, const std::string& value_name, const std::string& help) {
-  std::string left = "  --" + name + (value_name.empty() ? "" : " " + value_name);
-  if (left.size() < 24) left += std::string(24 - left.size(), ' ');
-  return left + " " + help + "\n";
-}
-
 template <typename Target>
 std::string rows_help(const std::vector<OptionRow<Target>>& rows, const Target& defaults) {
   std::string help;
   for (const OptionRow<Target>& row : rows) {
     const std::string shown_default = row.is_switch() ? "" : " (default " + shortest_number(row.get(defaults)) + ")";
-    help += help_line(row.name, row.value_name, row.help + shown_default);
+    help += option_help_line(row.name, row.value_name, row.help + shown_default);
   }
   return help;
 }
@@ -130,7 +123,7 @@ DatasetArguments parse_dataset_arguments(const std::vector<std::string>& args) {
 
 std::string dataset_options_help() {
   std::string help;
-  for (const DatasetOption& option : dataset_options()) help += help_line(option.name, option.value_name, option.help);
+  for (const DatasetOption& option : dataset_options()) help += option_help_line(option.name, option.value_name, option.help);
   const DatasetArguments defaults;
   return help + rows_help(segment_option_rows(), defaults.segment) + rows_help(map_load_option_rows(), defaults.run.load);
 }

@@ -164,7 +164,7 @@ cv::Mat render_overlay(const OccupancyGrid& grid, const Segmentation& s, const O
       const Point2* a = anchor_of(p.room_a);
       const Point2* b = anchor_of(p.room_b);
       if (!a || !b) continue;
-      const Point2 mid{(p.cut.a.x + p.cut.b.x) / 2.0, (p.cut.a.y + p.cut.b.y) / 2.0};
+      const Point2 mid = (p.cut.a + p.cut.b) / 2.0;
       const cv::Scalar ink(110, 50, 20);
       cv::line(image, project.fixed(*a), project.fixed(mid), ink, thin, cv::LINE_AA, kShift);
       cv::line(image, project.fixed(mid), project.fixed(*b), ink, thin, cv::LINE_AA, kShift);

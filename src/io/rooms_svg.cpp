@@ -106,7 +106,7 @@ std::string rooms_to_svg(const OccupancyGrid& grid, const Segmentation& s, const
   for (const Passage& p : s.passages) {
     svg += "<line stroke=\"#d21e1e\" stroke-width=\"" + fmt(2.5 * line) + "\" x1=\"" + X(p.cut.a) + "\" y1=\"" +
            Y(p.cut.a) + "\" x2=\"" + X(p.cut.b) + "\" y2=\"" + Y(p.cut.b) + "\"/>\n";
-    const Point2 mid{(p.cut.a.x + p.cut.b.x) / 2.0, (p.cut.a.y + p.cut.b.y) / 2.0};
+    const Point2 mid = (p.cut.a + p.cut.b) / 2.0;
     std::string points;
     for (const int id : {p.room_a, p.room_b}) {
       for (std::size_t i = 0; i < s.rooms.size(); ++i) {

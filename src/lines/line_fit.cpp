@@ -122,9 +122,4 @@ double signed_distance(double rho, double alpha, const Point2& p) {
   return p.x * std::cos(alpha) + p.y * std::sin(alpha) - rho;
 }
 
-Point2 project_onto_line(double rho, double alpha, const Point2& p) {
-  const double d = signed_distance(rho, alpha, p);
-  return {p.x - d * std::cos(alpha), p.y - d * std::sin(alpha)};
-}
-
 }  // namespace topocut

@@ -14,27 +14,27 @@ namespace {
 // The infinite line through a and b, for distances (from a itself when the points coincide).
 struct Chord {
   Point2 a;
-  double nx = 0.0, ny = 0.0;
+  Point2 normal;  // unit
   bool degenerate = true;
   Chord(const Point2& from, const Point2& to) : a(from) {
-    const double dx = to.x - from.x, dy = to.y - from.y;
-    const double len = std::sqrt(dx * dx + dy * dy);
-    if (len > 0.0) nx = -dy / len, ny = dx / len, degenerate = false;
+    const Point2 d = to - from;
+    const double len = std::sqrt(dot(d, d));
+    if (len > 0.0) normal = {-d.y / len, d.x / len}, degenerate = false;
   }
   double distance(const Point2& p) const {
-    if (degenerate) return std::sqrt((p.x - a.x) * (p.x - a.x) + (p.y - a.y) * (p.y - a.y));
-    return std::abs((p.x - a.x) * nx + (p.y - a.y) * ny);
+    if (degenerate) return std::sqrt(dot(p - a, p - a));
+    return std::abs(dot(p - a, normal));
   }
 };
 
 // Whether p lies within t of the line through a and b (of a itself when they coincide), without
 // square roots: |cross(b - a, p - a)|^2 <= t^2 |b - a|^2.
 bool within_chord(const Point2& a, const Point2& b, const Point2& p, double t) {
-  const double dx = b.x - a.x, dy = b.y - a.y, px = p.x - a.x, py = p.y - a.y;
-  const double len2 = dx * dx + dy * dy;
-  if (len2 == 0.0) return px * px + py * py <= t * t;
-  const double cross = dx * py - dy * px;
-  return cross * cross <= t * t * len2;
+  const Point2 d = b - a, w = p - a;
+  const double len2 = dot(d, d);
+  if (len2 == 0.0) return dot(w, w) <= t * t;
+  const double c = cross(d, w);
+  return c * c <= t * t * len2;
 }
 
 // Groups of one run never touch groups of another run; inside a run they all touch.

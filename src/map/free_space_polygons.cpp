@@ -318,9 +318,7 @@ Ring remove_collinear_vertices(const Ring& ring, const std::function<bool(const 
       const Point2& a = out[(i + n - 1) % n];
       const Point2& b = out[i];
       const Point2& c = out[(i + 1) % n];
-      const double cross = (b.x - a.x) * (c.y - b.y) - (b.y - a.y) * (c.x - b.x);
-      const double dot = (b.x - a.x) * (c.x - b.x) + (b.y - a.y) * (c.y - b.y);
-      if (cross == 0.0 && dot > 0.0 && !(keep && keep(b))) {
+      if (cross(b - a, c - b) == 0.0 && dot(b - a, c - b) > 0.0 && !(keep && keep(b))) {
         changed = true;
         continue;
       }

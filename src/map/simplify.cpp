@@ -10,12 +10,12 @@ namespace {
 
 // Squared distance from p to the segment ab.
 double squared_distance(const Point2& p, const Point2& a, const Point2& b) {
-  const double dx = b.x - a.x, dy = b.y - a.y;
-  const double length2 = dx * dx + dy * dy;
-  double t = length2 > 0.0 ? ((p.x - a.x) * dx + (p.y - a.y) * dy) / length2 : 0.0;
+  const Point2 d = b - a;
+  const double length2 = dot(d, d);
+  double t = length2 > 0.0 ? dot(p - a, d) / length2 : 0.0;
   t = t < 0.0 ? 0.0 : (t > 1.0 ? 1.0 : t);
-  const double ex = a.x + t * dx - p.x, ey = a.y + t * dy - p.y;
-  return ex * ex + ey * ey;
+  const Point2 e = a + t * d - p;
+  return dot(e, e);
 }
 
 // Marks the vertices of ring[first..last] (indices modulo n) that Douglas-Peucker keeps.

@@ -286,7 +286,7 @@ void bind_results(py::module_& m) {
       .def_readonly("resolution", &Map::resolution)
       .def_readonly("origin", &Map::origin, "(x, y, yaw) of the lower-left corner")
       .def_readonly("cells", &Map::cells, "how the file's values were read (palette or thresholds)")
-      .def(py::pickle([](const Map& m) { return py::make_tuple(m.grid, m.resolution, m.origin, m.cells); },
+      .def(py::pickle([](const Map& map) { return py::make_tuple(map.grid, map.resolution, map.origin, map.cells); },
                       [](const py::tuple& t) {
                         if (t.size() != 4) throw std::runtime_error("not a topocut.Map state");
                         return Map{t[0].cast<py::array_t<std::int8_t>>(), t[1].cast<double>(), t[2].cast<py::tuple>(),

@@ -69,17 +69,17 @@ SimulatedScan simulate_scan(const std::vector<Segment2>& walls, const Pose2& pos
   SimulatedScan result{empty_scan(spec, angles), std::vector<int>(angles.size(), -1)};
   for (std::size_t i = 0; i < angles.size(); ++i) {
     const double a = pose.theta + angles[i];
-    const double dx = std::cos(a), dy = std::sin(a);
+    const Point2 d{std::cos(a), std::sin(a)};
     double best = kInf;
     int best_index = -1;
     for (std::size_t k = 0; k < walls.size(); ++k) {
       const Segment2& w = walls[k];
-      const double ex = w.b.x - w.a.x, ey = w.b.y - w.a.y;
-      const double denom = dx * ey - dy * ex;  // cross(d, e)
-      if (denom == 0.0) continue;              // parallel (a grazing beam sees no surface)
-      const double px = w.a.x - pose.x, py = w.a.y - pose.y;
-      const double t = (px * ey - py * ex) / denom;  // distance along the beam
-      const double s = (px * dy - py * dx) / denom;  // position along the wall
+      const Point2 e = w.b - w.a;
+      const double denom = cross(d, e);
+      if (denom == 0.0) continue;  // parallel (a grazing beam sees no surface)
+      const Point2 p = w.a - Point2{pose.x, pose.y};
+      const double t = cross(p, e) / denom;  // distance along the beam
+      const double s = cross(p, d) / denom;  // position along the wall
       if (t < 0.0 || s < 0.0 || s > 1.0) continue;
       if (t < best) {
         best = t;

@@ -72,17 +72,6 @@ class EdgeGrid {
       for_cells(edges[i], [&](int c) { items_[static_cast<std::size_t>(count[static_cast<std::size_t>(c)]++)] = static_cast<int>(i); });
   }
 
-  template <class F>
-  void visit_box(double x0, double y0, double x1, double y1, F&& f) const {
-    const int cx0 = std::max(0, column(x0)), cx1 = std::min(nx_ - 1, column(x1));
-    const int cy0 = std::max(0, row(y0)), cy1 = std::min(ny_ - 1, row(y1));
-    for (int cy = cy0; cy <= cy1; ++cy)
-      for (int cx = cx0; cx <= cx1; ++cx) {
-        const int c = cy * nx_ + cx;
-        for (int k = start_[static_cast<std::size_t>(c)]; k < start_[static_cast<std::size_t>(c) + 1]; ++k) f(items_[static_cast<std::size_t>(k)]);
-      }
-  }
-
   // Calls f(edge) for the edges registered in the cells around p, ring of cells by ring of cells
   // outward, while keep_going(d) holds for d = the least distance from p to the next ring's cells
   // (an edge in several cells is visited several times).

@@ -7,9 +7,9 @@
 
 namespace topocut::plane {
 
-inline double cross(const Point2& a, const Point2& b) { return a.x * b.y - a.y * b.x; }
+using topocut::cross;  // core/geometry.h's, under the names this module's code calls
+using topocut::dot;
 inline Point2 minus(const Point2& a, const Point2& b) { return {a.x - b.x, a.y - b.y}; }
-inline double dot(const Point2& a, const Point2& b) { return a.x * b.x + a.y * b.y; }
 inline double length(const Point2& a) { return std::hypot(a.x, a.y); }
 
 // The turn at b from a -> b to b -> c, in radians: positive to the left.

@@ -58,7 +58,7 @@ std::vector<WallSegment> extract_wall_segments(const Scan& scan, const Pose2& po
       along.clear();
       for (std::size_t row : line.support) {
         const Point2 p = beam_point(part, row);
-        along.emplace_back(p.x * u.x + p.y * u.y, beams[row]);
+        along.emplace_back(dot(p, u), beams[row]);
       }
       std::sort(along.begin(), along.end());
       std::size_t begin = 0;
@@ -67,8 +67,7 @@ std::vector<WallSegment> extract_wall_segments(const Scan& scan, const Pose2& po
         if (k - begin >= options.min_points) {
           const double t0 = along[begin].first, t1 = along[k - 1].first;
           WallSegment wall;
-          wall.segment = {to_world(pose, {foot.x + t0 * u.x, foot.y + t0 * u.y}),
-                          to_world(pose, {foot.x + t1 * u.x, foot.y + t1 * u.y})};
+          wall.segment = {to_world(pose, foot + t0 * u), to_world(pose, foot + t1 * u)};
           wall.scan = scan_index;
           wall.points = k - begin;
           int first_beam = along[begin].second;

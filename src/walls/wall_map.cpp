@@ -127,21 +127,11 @@ void draw_walls(OccupancyGrid& grid, const std::vector<Segment2>& walls, double 
 
 Ring wall_polygon(const Segment2& wall, double thickness) {
   const double length = distance(wall.a, wall.b);
-  const Point2 u = length > 0.0 ? Point2{(wall.b.x - wall.a.x) / length, (wall.b.y - wall.a.y) / length} : Point2{1.0, 0.0};
+  const Point2 u = length > 0.0 ? (wall.b - wall.a) / length : Point2{1.0, 0.0};
   const Point2 n{-u.y, u.x};
   const double h = 0.5 * thickness;
   // Capped by half the thickness at both ends so that walls meeting at a corner close it.
-  return {{wall.a.x - h * u.x - h * n.x, wall.a.y - h * u.y - h * n.y},
-          {wall.b.x + h * u.x - h * n.x, wall.b.y + h * u.y - h * n.y},
-          {wall.b.x + h * u.x + h * n.x, wall.b.y + h * u.y + h * n.y},
-          {wall.a.x - h * u.x + h * n.x, wall.a.y - h * u.y + h * n.y}};
-}
-
-std::vector<Ring> wall_polygons(std::span<const Wall> walls, double thickness) {
-  std::vector<Ring> rings;
-  rings.reserve(walls.size());
-  for (const Wall& w : walls) rings.push_back(wall_polygon(w.segment, thickness));
-  return rings;
+  return {wall.a - h * u - h * n, wall.b + h * u - h * n, wall.b + h * u + h * n, wall.a - h * u + h * n};
 }
 
 OccupancyGrid build_wall_map(std::span<const PosedScan> scans, std::span<const Wall> walls, const WallMapOptions& options) {

@@ -42,9 +42,9 @@ struct Moments {
 struct FittedLine {
   Point2 c;
   Point2 u;
-  double along(const Point2& p) const { return (p.x - c.x) * u.x + (p.y - c.y) * u.y; }
-  double across(const Point2& p) const { return std::abs(-(p.x - c.x) * u.y + (p.y - c.y) * u.x); }
-  Point2 at(double t) const { return {c.x + t * u.x, c.y + t * u.y}; }
+  double along(const Point2& p) const { return dot(p - c, u); }
+  double across(const Point2& p) const { return std::abs(cross(u, p - c)); }
+  Point2 at(double t) const { return c + t * u; }
 };
 
 FittedLine fit(const Moments& m) {
@@ -100,11 +100,11 @@ class WallIndex {
     scratch_.clear();
     for (int s = 0; s <= steps; ++s) {
       const double t = static_cast<double>(s) / steps;
-      const double x = a.x + t * (b.x - a.x), y = a.y + t * (b.y - a.y);
-      const auto x0 = static_cast<std::int64_t>(std::floor((x - reach) / cell_));
-      const auto x1 = static_cast<std::int64_t>(std::floor((x + reach) / cell_));
-      const auto y0 = static_cast<std::int64_t>(std::floor((y - reach) / cell_));
-      const auto y1 = static_cast<std::int64_t>(std::floor((y + reach) / cell_));
+      const Point2 q = a + t * (b - a);
+      const auto x0 = static_cast<std::int64_t>(std::floor((q.x - reach) / cell_));
+      const auto x1 = static_cast<std::int64_t>(std::floor((q.x + reach) / cell_));
+      const auto y0 = static_cast<std::int64_t>(std::floor((q.y - reach) / cell_));
+      const auto y1 = static_cast<std::int64_t>(std::floor((q.y + reach) / cell_));
       for (auto cx = x0; cx <= x1; ++cx)
         for (auto cy = y0; cy <= y1; ++cy) scratch_.push_back(key(cx, cy));
     }
@@ -125,7 +125,7 @@ double mismatch(const Item& shorter, const Item& longer, const WallMergeOptions&
   const double db = longer.line.across(shorter.last);
   if (da > options.distance_tolerance || db > options.distance_tolerance) return -1.0;
   if (shorter.length() >= options.short_length) {
-    const double cosine = std::abs(shorter.line.u.x * longer.line.u.x + shorter.line.u.y * longer.line.u.y);
+    const double cosine = std::abs(dot(shorter.line.u, longer.line.u));
     if (cosine < std::cos(options.angle_tolerance)) return -1.0;
   }
   const double s0 = longer.line.along(shorter.first), s1 = longer.line.along(shorter.last);

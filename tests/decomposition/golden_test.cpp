@@ -254,8 +254,8 @@ TEST(DudeGoldenReference, ReferenceFailureIsReproducedInReferenceMode) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Configs, DudeGolden, ::testing::Values(Config::kDefault, Config::kReferenceDp, Config::kReference),
-                         [](const auto& info) {
-                           return info.param == Config::kDefault ? "Default" : info.param == Config::kReferenceDp ? "ReferenceDP" : "Reference";
+                         [](const auto& test) {
+                           return test.param == Config::kDefault ? "Default" : test.param == Config::kReferenceDp ? "ReferenceDP" : "Reference";
                          });
 
 }  // namespace

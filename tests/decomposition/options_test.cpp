@@ -42,7 +42,9 @@ TEST(DudeOptions, HierarchicalConcavity) {
   EXPECT_DOUBLE_EQ((s.at({90, 50})), 50.0);
   EXPECT_GT((h.at({90, 50})), 50.0 + 1e-9);
   for (const auto& [v, c] : h) {
-    if (s.count(v)) EXPECT_GE(c, s.at(v) - 1e-9);
+    if (s.count(v)) {
+      EXPECT_GE(c, s.at(v) - 1e-9);
+    }
   }
   expect_valid(kSlot, dh, "hierarchical");
   for (unsigned seed = 0; seed < 10; ++seed) {

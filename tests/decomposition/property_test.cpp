@@ -28,7 +28,9 @@ void expect_minima_sane(const PolygonWithHoles& input, const Decomposition& d, d
   std::set<std::tuple<int, double, double>> pm_points;
   for (const PocketMinimum& pm : d.pocket_minima) {
     pm_points.insert({pm.pass, pm.vertex.x, pm.vertex.y});
-    if (!pm.on_hole) EXPECT_GE(pm.concavity, tau);
+    if (!pm.on_hole) {
+      EXPECT_GE(pm.concavity, tau);
+    }
   }
   for (const Cut& c : d.cuts) {
     EXPECT_TRUE(pm_points.count({c.pass, c.segment.a.x, c.segment.a.y}) ||

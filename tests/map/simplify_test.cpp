@@ -7,17 +7,10 @@
 namespace topocut {
 namespace {
 
-double distance_to_segment(const Point2& p, const Point2& a, const Point2& b) {
-  const double dx = b.x - a.x, dy = b.y - a.y;
-  double t = ((p.x - a.x) * dx + (p.y - a.y) * dy) / (dx * dx + dy * dy);
-  t = std::fmax(0.0, std::fmin(1.0, t));
-  return std::hypot(a.x + t * dx - p.x, a.y + t * dy - p.y);
-}
-
 // Distance from p to the closed ring's boundary.
 double distance_to_ring(const Point2& p, const Ring& ring) {
   double best = INFINITY;
-  for (std::size_t i = 0; i < ring.size(); ++i) best = std::fmin(best, distance_to_segment(p, ring[i], ring[(i + 1) % ring.size()]));
+  for (std::size_t i = 0; i < ring.size(); ++i) best = std::fmin(best, distance_to_segment(p, {ring[i], ring[(i + 1) % ring.size()]}));
   return best;
 }
 

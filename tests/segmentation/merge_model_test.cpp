@@ -57,9 +57,13 @@ TEST(MergeModel, BadTextIsAnErrorNamingTheLine) {
 TEST(MergeModel, TheShippedModelParsesAndUsesKnownFeatures) {
   const MergeModel& model = default_merge_model();
   EXPECT_FALSE(model.trees.empty() && model.features.empty());
-  for (const auto& tree : model.trees)
-    for (const MergeTreeNode& node : tree)
-      if (node.feature >= 0) EXPECT_LT(static_cast<std::size_t>(node.feature), merge_feature_names().size());
+  for (const auto& tree : model.trees) {
+    for (const MergeTreeNode& node : tree) {
+      if (node.feature >= 0) {
+        EXPECT_LT(static_cast<std::size_t>(node.feature), merge_feature_names().size());
+      }
+    }
+  }
   const double p = merge_probability(model, std::vector<double>(merge_feature_names().size(), 0.0));
   EXPECT_GT(p, 0.0);
   EXPECT_LT(p, 1.0);

@@ -9,8 +9,6 @@ namespace {
 
 constexpr double kRes = 0.05;
 
-PolygonWithHoles box(double x0, double y0, double x1, double y1) { return {{{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}}, {}}; }
-
 // A 2 m x 6 m corridor (x in [5, 45], y in [5, 125]) walled all round but where a 2 m x 2 m room opens
 // off its right side (x in [45, 85], y in [45, 85]) through a cut at x = 45; the room is surrounded by
 // beyond_room cells 1.5 m deep (grid rows are y = 129 - row). Its far side ends in teeth a cell long

@@ -12,6 +12,19 @@ struct Point2 {
   friend bool operator==(const Point2&, const Point2&) = default;
 };
 
+// A point also serves as a vector (from the origin): component-wise sum, difference, scaling.
+inline Point2 operator+(const Point2& a, const Point2& b) { return {a.x + b.x, a.y + b.y}; }
+inline Point2 operator-(const Point2& a, const Point2& b) { return {a.x - b.x, a.y - b.y}; }
+inline Point2 operator*(double s, const Point2& v) { return {s * v.x, s * v.y}; }
+inline Point2 operator*(const Point2& v, double s) { return {v.x * s, v.y * s}; }
+inline Point2 operator/(const Point2& v, double s) { return {v.x / s, v.y / s}; }
+
+// The dot product of two vectors.
+inline double dot(const Point2& a, const Point2& b) { return a.x * b.x + a.y * b.y; }
+
+// The z component of the cross product: positive when b turns counter-clockwise from a.
+inline double cross(const Point2& a, const Point2& b) { return a.x * b.y - a.y * b.x; }
+
 // A closed ring of vertices; the last vertex is implicitly joined to the first (never repeated).
 using Ring = std::vector<Point2>;
 

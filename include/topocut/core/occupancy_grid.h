@@ -30,9 +30,6 @@ cv::Point world_to_cell(const OccupancyGrid& grid, const Point2& world);
 // centres at integers) to world metres. Polygons traced from images use grid coordinates.
 Point2 grid_to_world(const OccupancyGrid& grid, const Point2& grid_point);
 
-// Converts a world point to grid coordinates (inverse of grid_to_world).
-Point2 world_to_grid(const OccupancyGrid& grid, const Point2& world);
-
 // The part of grid inside box (its cells copied), at the same place in the world: its origin moves
 // to the box's lower-left corner. box must lie inside the grid.
 OccupancyGrid crop(const OccupancyGrid& grid, const cv::Rect& box);

@@ -45,6 +45,9 @@ double parse_option_number(const std::string& text, const std::string& shown);
 // The shortest text that reads back as value ("0.05", not "0.050000000000000003"), for help lines.
 std::string shortest_number(double value);
 
+// One line of a help text: "  --name VALUE", padded to the help column, then help.
+std::string option_help_line(const std::string& name, const std::string& value_name, const std::string& help);
+
 // Checks value against row's range, then sets it; shown names the option in errors.
 template <typename Target>
 void set_option(const OptionRow<Target>& row, Target& target, double value, const std::string& shown) {

@@ -33,9 +33,6 @@ LineFit polar_line(const Point2& on_line, double normal_angle);
 // Signed perpendicular distance of p from the line (positive on the side away from the origin).
 double signed_distance(double rho, double alpha, const Point2& p);
 
-// Orthogonal projection of p onto the line.
-Point2 project_onto_line(double rho, double alpha, const Point2& p);
-
 // The angle wrapped into (-pi, pi].
 double normalize_angle(double angle);
 

@@ -32,9 +32,6 @@ struct WallMapOptions {
 // side `thickness` for a zero-length segment).
 Ring wall_polygon(const Segment2& wall, double thickness);
 
-// wall_polygon() of every wall, in order.
-std::vector<Ring> wall_polygons(std::span<const Wall> walls, double thickness);
-
 // The grid covering the scans' poses and traced rays and the walls (plus the margin): every cell a
 // ray passes before its hit is free, every cell under a wall polygon occupied (a wall's centre line
 // is also drawn 4-connected so no free path crosses it diagonally), the rest unknown. Throws Error

@@ -1,4 +1,4 @@
-#include "topocut/core/allocator.h"
+#include "cli/allocator.h"
 
 // Any C library header defines __GLIBC__ when glibc is the C library; without one the test below
 // is always false and the function silently does nothing.

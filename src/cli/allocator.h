@@ -1,5 +1,7 @@
 #pragma once
-// Process-wide tuning of the C allocator for programs that work on large images.
+// Process-wide tuning of the C allocator for programs that work on large images: a program's choice,
+// not the library's (the Python module and the ROS node leave their host process's allocator alone),
+// made by the topocut command and the benchmarks, which compile this file too.
 
 namespace topocut {
 
