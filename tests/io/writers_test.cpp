@@ -61,6 +61,7 @@ TEST(RoomsJson, CarriesRoomsAndPassagesInMetres) {
   EXPECT_DOUBLE_EQ(doc["passages"][0]["cut"][1][1].get<double>(), 4.0);
   EXPECT_DOUBLE_EQ(doc["passages"][0]["width"].get<double>(), 1.0);
   EXPECT_EQ(doc["passages"][0]["kind"], "door");
+  EXPECT_EQ(doc["passages"][0]["rule"], "decomposition");  // the rule a passage has when none is set
   EXPECT_EQ(doc["frame"], "map");
 }
 
