@@ -35,12 +35,14 @@ inline nlohmann::json room_properties(const Room& room, const RoomPlacement* pla
   return out;
 }
 
-// What both say of a passage besides its cut: the two rooms, width (m) and kind (door or opening).
+// What both say of a passage besides its cut: the two rooms, width (m), kind (door or opening) and
+// the pipeline rule that made its cut (segmentation_rules.h).
 inline nlohmann::json passage_properties(const Passage& passage) {
   nlohmann::json out = nlohmann::json::object();
   out["rooms"] = nlohmann::json::array({passage.room_a, passage.room_b});
   out["width"] = rounded(passage.width);
   out["kind"] = passage_kind(passage);
+  out["rule"] = to_string(passage.rule);
   return out;
 }
 

@@ -42,7 +42,39 @@ void check_sizes(const OccupancyGrid& grid, const Segmentation& s) {
                 ") differ in size");
 }
 
+// Which rules made the cuts (colour swatch and name per rule present), in the top-left corner: a
+// reader of the overlay sees why each room boundary is there.
+void draw_rule_legend(cv::Mat& image, const std::vector<Passage>& passages) {
+  std::vector<CutRule> present;
+  for (const Passage& p : passages)
+    if (std::find(present.begin(), present.end(), p.rule) == present.end()) present.push_back(p.rule);
+  std::sort(present.begin(), present.end());
+  const int line = 16;
+  int y = 6;
+  for (const CutRule rule : present) {
+    const cv::Vec3b c = cut_rule_colour(rule);
+    const cv::Rect box(6, y, 170, line);
+    cv::Mat patch = image(box & cv::Rect(0, 0, image.cols, image.rows));
+    patch = 0.25 * patch + 0.75 * cv::Scalar(255, 255, 255);
+    cv::line(image, {10, y + line / 2}, {30, y + line / 2}, cv::Scalar(c[0], c[1], c[2]), 3, cv::LINE_AA);
+    cv::putText(image, to_string(rule) + " cut", {36, y + line - 4}, cv::FONT_HERSHEY_SIMPLEX, 0.4, cv::Scalar(0, 0, 0), 1,
+                cv::LINE_AA);
+    y += line;
+  }
+}
+
 }  // namespace
+
+cv::Vec3b cut_rule_colour(CutRule rule) {
+  switch (rule) {
+    case CutRule::kDoor: return {30, 30, 210};
+    case CutRule::kWallOpening: return {0, 140, 255};
+    case CutRule::kIslandCut: return {200, 0, 200};
+    case CutRule::kWallLine: return {210, 110, 0};
+    case CutRule::kDecomposition: break;
+  }
+  return {40, 150, 40};
+}
 
 cv::Vec3b room_colour(int id) {
   // Golden-ratio hue steps keep consecutive ids (often neighbours, as ids follow the raster order)
@@ -157,7 +189,8 @@ cv::Mat render_overlay(const OccupancyGrid& grid, const Segmentation& s, const O
   const int thin = std::max(1, scale / 2);
   if (options.draw_passages) {
     for (const Passage& p : s.passages) {
-      cv::line(image, project.fixed(p.cut.a), project.fixed(p.cut.b), cv::Scalar(30, 30, 210), std::max(2, scale),
+      const cv::Vec3b c = cut_rule_colour(p.rule);
+      cv::line(image, project.fixed(p.cut.a), project.fixed(p.cut.b), cv::Scalar(c[0], c[1], c[2]), std::max(2, scale),
                cv::LINE_AA, kShift);
     }
     for (const Passage& p : s.passages) {
@@ -186,6 +219,7 @@ cv::Mat render_overlay(const OccupancyGrid& grid, const Segmentation& s, const O
       cv::putText(image, text, origin, cv::FONT_HERSHEY_SIMPLEX, font_scale, cv::Scalar(0, 0, 0), thickness, cv::LINE_AA);
     }
   }
+  if (options.draw_passages && image.cols >= 300 && !s.passages.empty()) draw_rule_legend(image, s.passages);
   return image;
 }
 

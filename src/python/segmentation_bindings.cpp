@@ -76,7 +76,9 @@ Passage passage_from(const py::tuple& t) {
   p.cut = {point_of(t[2]), point_of(t[3])};
   p.width = t[4].cast<double>();
   p.door = t[5].cast<bool>();
-  p.rule = static_cast<CutRule>(t[6].cast<int>());
+  const int rule = t[6].cast<int>();
+  if (rule < 0 || rule > static_cast<int>(CutRule::kDecomposition)) throw std::runtime_error("not a topocut.Passage state");
+  p.rule = static_cast<CutRule>(rule);
   return p;
 }
 
@@ -260,6 +262,8 @@ void bind_results(py::module_& m) {
       .def_property_readonly("width", [](const Passage& p) { return p.width; }, "metres")
       .def_property_readonly("kind", [](const Passage& p) { return passage_kind(p); },
                              "'door' (a narrow gap in a wall) or 'opening' (a wider one)")
+      .def_property_readonly("rule", [](const Passage& p) { return to_string(p.rule); },
+                             "the pipeline rule that made the cut: 'door', 'wall-opening', 'island-cut', 'wall-line' or 'decomposition'")
       .def("__repr__", [](const Passage& p) {
         return "<topocut.Passage " + std::to_string(p.room_a) + "-" + std::to_string(p.room_b) + ", " + passage_kind(p) + ">";
       })

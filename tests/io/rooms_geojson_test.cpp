@@ -41,10 +41,12 @@ Segmentation two_rooms() {
   door.cut = {{4, 1}, {4, 2}};
   door.width = 1.0;
   door.door = true;
+  door.rule = CutRule::kDoor;
   Passage opening = door;
   opening.cut = {{4, 2.5}, {4, 4}};
   opening.width = 1.5;
   opening.door = false;
+  opening.rule = CutRule::kWallLine;
   s.passages = {door, opening};
   return s;
 }
@@ -76,7 +78,9 @@ TEST(RoomsGeoJson, Rfc7946RingsAndProperties) {
   EXPECT_EQ(door["geometry"]["coordinates"], json::parse("[[4, 1], [4, 2]]"));
   EXPECT_EQ(door["properties"]["kind"], "door");
   EXPECT_EQ(door["properties"]["rooms"], json::array({1, 2}));
+  EXPECT_EQ(door["properties"]["rule"], "door");
   EXPECT_EQ(features[3]["properties"]["kind"], "opening");
+  EXPECT_EQ(features[3]["properties"]["rule"], "wall-line");
   EXPECT_DOUBLE_EQ(features[3]["properties"]["width"].get<double>(), 1.5);
 }
 

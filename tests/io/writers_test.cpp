@@ -61,6 +61,7 @@ TEST(RoomsJson, CarriesRoomsAndPassagesInMetres) {
   EXPECT_DOUBLE_EQ(doc["passages"][0]["cut"][1][1].get<double>(), 4.0);
   EXPECT_DOUBLE_EQ(doc["passages"][0]["width"].get<double>(), 1.0);
   EXPECT_EQ(doc["passages"][0]["kind"], "door");
+  EXPECT_EQ(doc["passages"][0]["rule"], "decomposition");  // the rule a passage has when none is set
   EXPECT_EQ(doc["frame"], "map");
 }
 
@@ -139,6 +140,30 @@ TEST(Overlay, ConsecutiveIdsGetDistinctColours) {
     const double d = std::sqrt(std::pow(a[0] - b[0], 2) + std::pow(a[1] - b[1], 2) + std::pow(a[2] - b[2], 2));
     EXPECT_GT(d, 60.0) << "ids " << id << " and " << id + 1;
   }
+}
+
+// A cut is drawn in its rule's colour, and a wide overlay lists the rules present in a legend.
+TEST(Overlay, CutsInTheirRulesColoursWithALegend) {
+  TwoRooms t;
+  t.seg.passages[0].cut = {{3.5, 2.5}, {3.5, 4.5}};  // the whole wall's height: clear of the anchor marker
+  t.seg.passages[0].rule = CutRule::kWallLine;
+  OverlayOptions options;
+  options.scale = 8;
+  options.draw_ids = false;
+  // x = 3.5 m is column 5, pixel 5 * 8 - 0.5; y = 2.7 m is row 6 - 1.4 = 4.6, pixel 36.3.
+  EXPECT_EQ(render_overlay(t.grid, t.seg, options).at<cv::Vec3b>(36, 39), cut_rule_colour(CutRule::kWallLine));
+  for (int a = 0; a <= static_cast<int>(CutRule::kDecomposition); ++a)
+    for (int b = a + 1; b <= static_cast<int>(CutRule::kDecomposition); ++b)
+      EXPECT_NE(cut_rule_colour(static_cast<CutRule>(a)), cut_rule_colour(static_cast<CutRule>(b)));
+  Passage door = t.seg.passages[0];
+  door.rule = CutRule::kDoor;
+  t.seg.passages.push_back(door);
+  options.scale = 32;  // 320 pixels wide: a legend, one line per rule present, in the rules' order
+  const cv::Mat wide = render_overlay(t.grid, t.seg, options);
+  EXPECT_EQ(wide.at<cv::Vec3b>(6 + 8, 20), cut_rule_colour(CutRule::kDoor));
+  EXPECT_EQ(wide.at<cv::Vec3b>(6 + 16 + 8, 20), cut_rule_colour(CutRule::kWallLine));
+  options.scale = 8;  // 80 pixels wide: no legend over the map
+  EXPECT_EQ(render_overlay(t.grid, t.seg, options).at<cv::Vec3b>(14, 20), render_overlay(t.grid, TwoRooms().seg, options).at<cv::Vec3b>(14, 20));
 }
 
 TEST(Overlay, AnchorsLieInsideTheirRooms) {

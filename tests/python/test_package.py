@@ -162,7 +162,8 @@ def test_results_pickle(floorplan):
         r.rooms[2].id, r.rooms[2].area, r.rooms[2].labelled_area, r.rooms[2].inside, r.rooms[2].bbox)
     assert np.array_equal(room.outer, r.rooms[2].outer)
     passage = pickle.loads(pickle.dumps(r.passages[0]))
-    assert (passage.rooms, passage.kind, passage.width) == (r.passages[0].rooms, r.passages[0].kind, r.passages[0].width)
+    assert (passage.rooms, passage.kind, passage.width, passage.rule) == (
+        r.passages[0].rooms, r.passages[0].kind, r.passages[0].width, r.passages[0].rule)
     loaded = pickle.loads(pickle.dumps(m))
     assert np.array_equal(loaded.grid, m.grid) and loaded.origin == m.origin and loaded.cells == m.cells
     labels = np.zeros((40, 40), np.int32)
@@ -218,3 +219,5 @@ def test_json_carries_what_python_carries(floorplan):
         assert entry["area"] == pytest.approx(room.area, abs=1e-6)
         assert entry["labelled_area"] == pytest.approx(room.labelled_area, abs=1e-6)
     assert [p["kind"] for p in data["passages"]] == [p.kind for p in r.passages]
+    assert [p["rule"] for p in data["passages"]] == [p.rule for p in r.passages]
+    assert {p.rule for p in r.passages} <= {"door", "wall-opening", "island-cut", "wall-line", "decomposition"}

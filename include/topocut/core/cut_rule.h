@@ -8,9 +8,9 @@ namespace topocut {
 
 enum class CutRule : unsigned char {
   kDoor,           // a narrow passage between two wider spaces (door_cuts.h)
-  kWallOpening,    // a thin wall continued to the next obstacle (door_cuts.h, DoorOptions::extend_walls)
-  kIslandCut,      // a door-like cut between the outline and a wall island (door_cuts.h)
-  kWallLine,       // a straight wall continued across a wide opening (door_cuts.h)
+  kWallOpening,    // a thin wall continued to the next obstacle (wall_openings.h)
+  kIslandCut,      // a door-like cut between the outline and a wall island (island_cuts.h)
+  kWallLine,       // a straight wall continued across a wide opening (wall_lines.h)
   kDecomposition,  // a cut of the dual-space decomposition (decompose.h)
 };
 

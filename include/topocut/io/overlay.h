@@ -22,13 +22,18 @@ struct OverlayOptions {
 // A distinct, deterministic colour for room id (BGR); neighbouring ids get far-apart hues.
 cv::Vec3b room_colour(int id);
 
+// The colour (BGR) a passage's cut is drawn in, by the rule that made it: doors red, wall openings
+// orange, island cuts magenta, wall lines blue, decomposition cuts green.
+cv::Vec3b cut_rule_colour(CutRule rule);
+
 // A point inside each room (world metres) to anchor its id and graph node: the centroid when it
 // lies in the room at least two cells from its border, otherwise the centre of the room cell
 // farthest from the room's border. Same order as rooms.
 std::vector<Point2> room_anchor_points(const Segmentation& segmentation);
 
 // Renders the overlay (CV_8UC3, BGR): the map in grey (obstacles dark, unknown light grey), rooms
-// tinted in their colours with darker borders, ids at the anchors, and each passage as its cut (red)
+// tinted in their colours with darker borders, ids at the anchors, and each passage as its cut (in
+// its rule's colour, with a legend of the rules drawn when the image is at least 300 pixels wide)
 // plus a line from one room's anchor through the cut's midpoint to the other's. Throws Error if the
 // grid and the segmentation differ in size.
 cv::Mat render_overlay(const OccupancyGrid& grid, const Segmentation& segmentation, const OverlayOptions& options = {});
