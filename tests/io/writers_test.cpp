@@ -155,15 +155,21 @@ TEST(Overlay, CutsInTheirRulesColoursWithALegend) {
   for (int a = 0; a <= static_cast<int>(CutRule::kDecomposition); ++a)
     for (int b = a + 1; b <= static_cast<int>(CutRule::kDecomposition); ++b)
       EXPECT_NE(cut_rule_colour(static_cast<CutRule>(a)), cut_rule_colour(static_cast<CutRule>(b)));
-  Passage door = t.seg.passages[0];
-  door.rule = CutRule::kDoor;
-  t.seg.passages.push_back(door);
-  options.scale = 32;  // 320 pixels wide: a legend, one line per rule present, in the rules' order
-  const cv::Mat wide = render_overlay(t.grid, t.seg, options);
-  EXPECT_EQ(wide.at<cv::Vec3b>(6 + 8, 20), cut_rule_colour(CutRule::kDoor));
-  EXPECT_EQ(wide.at<cv::Vec3b>(6 + 16 + 8, 20), cut_rule_colour(CutRule::kWallLine));
   options.scale = 8;  // 80 pixels wide: no legend over the map
-  EXPECT_EQ(render_overlay(t.grid, t.seg, options).at<cv::Vec3b>(14, 20), render_overlay(t.grid, TwoRooms().seg, options).at<cv::Vec3b>(14, 20));
+  EXPECT_EQ(render_overlay(t.grid, t.seg, options).at<cv::Vec3b>(14, 20),
+            render_overlay(t.grid, TwoRooms().seg, options).at<cv::Vec3b>(14, 20));
+  // 40 cells at scale 8, 320 pixels wide: a legend, one line per rule present, in the rules' order.
+  OccupancyGrid wide;
+  wide.cells = cv::Mat(10, 40, CV_8UC1, cv::Scalar(kFree));
+  wide.resolution = 0.5;
+  Segmentation two_cuts;
+  two_cuts.labels = cv::Mat(10, 40, CV_32SC1, cv::Scalar(1));
+  two_cuts.resolution = 0.5;
+  two_cuts.passages = {t.seg.passages[0], t.seg.passages[0]};
+  two_cuts.passages[1].rule = CutRule::kDoor;
+  const cv::Mat legend = render_overlay(wide, two_cuts, options);
+  EXPECT_EQ(legend.at<cv::Vec3b>(6 + 8, 20), cut_rule_colour(CutRule::kDoor));
+  EXPECT_EQ(legend.at<cv::Vec3b>(6 + 16 + 8, 20), cut_rule_colour(CutRule::kWallLine));
 }
 
 TEST(Overlay, AnchorsLieInsideTheirRooms) {
