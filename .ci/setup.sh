@@ -33,7 +33,7 @@ packages+=(libroscpp-dev libnav-msgs-dev libsensor-msgs-dev libvisualization-msg
 # Only the test suites need these: headless Chromium opens evaluate's report page, shapely and
 # networkx take the Python results' to_shapely() / to_networkx().
 case "$mode" in
-  test|sanitize) packages+=(chromium python3-shapely python3-networkx) ;;
+  test|sanitize) packages+=(chromium python3-shapely python3-networkx python3-sklearn) ;;
 esac
 # libFuzzer comes with clang only; the other modes build with GCC.
 [ "$mode" = fuzz ] && packages+=(clang libclang-rt-14-dev)
