@@ -88,13 +88,13 @@ std::size_t edit_distance(const std::string& a, const std::string& b) {
   return row[b.size()];
 }
 
-// "~name is not a parameter of topocut_node (did you mean ~nearest?)": close means a typo's distance.
-std::string unknown_name(const std::string& name) {
+// "~name is not a parameter of topocut_node[, ignored] (did you mean ~nearest?)": close means a typo's distance.
+std::string unknown_name(const std::string& name, bool ignored) {
   std::string best;
   std::size_t best_distance = 3;
   for (const std::string& known : known_names())
     if (const std::size_t d = edit_distance(name, known); d < best_distance) best = known, best_distance = d;
-  return "~" + name + " is not a parameter of topocut_node, ignored" + (best.empty() ? "" : " (did you mean ~" + best + "?)");
+  return "~" + name + " is not a parameter of topocut_node" + (ignored ? ", ignored" : "") + (best.empty() ? "" : " (did you mean ~" + best + "?)");
 }
 
 // The value of p for row: a number for a number, true/false for a switch; Error with the reason otherwise.
@@ -125,8 +125,8 @@ NodeSettings read_parameters(NodeSettings settings, const std::vector<Parameter>
     if (set_row(topocut::segment_option_rows(), dashed, settings.segment, p) ||
         set_row(map_option_rows(), underscored(p.name), settings.map, p))
       continue;
-    if (unknown == nullptr) throw Error(unknown_name(p.name));
-    unknown->push_back(unknown_name(p.name));
+    if (unknown == nullptr) throw Error(unknown_name(p.name, false));
+    unknown->push_back(unknown_name(p.name, true));
   }
   topocut::to_segment_options(settings.segment);  // the combination, checked before any map arrives
   return settings;

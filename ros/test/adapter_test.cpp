@@ -161,7 +161,7 @@ TEST(RosAdapter, SegmentOptionsGoOverTheParametersAndAreChecked) {
     }
     return std::string();
   };
-  EXPECT_EQ(error({"concavty=3"}), "~concavty is not a parameter of topocut_node, ignored (did you mean ~concavity?)");
+  EXPECT_EQ(error({"concavty=3"}), "~concavty is not a parameter of topocut_node (did you mean ~concavity?)");
   EXPECT_EQ(error({"concavity=abc"}), "~concavity needs a number, not 'abc'");
   EXPECT_EQ(error({"door-width=-2"}), "~door-width must lie in (0, 100000] metres, got -2");
   // The parameter (no door cuts) holds unless a call turns it off again.
