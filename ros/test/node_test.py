@@ -389,31 +389,43 @@ def segment_map(grid, options=(), stamp=0):
     return rospy.ServiceProxy("/rooms/segment_map", SegmentMap)(occupancy_grid_message(grid, stamp), list(options))
 
 
-def check_segment_map(args, work):
-    """The service's rooms are `topocut segment`'s: labels cell for cell, JSON byte for byte."""
+def segment_map_against_cli(cli, reference, path, work, stamp):
+    """path sent to rooms/segment_map and segmented by `topocut segment`: the answer, the number of cells
+    whose labels differ, whether the JSON is the same byte for byte, the call's round trip and the
+    command's segmenting time (ms)."""
     import numpy
     from PIL import Image  # python3-pil, which python3-matplotlib brings
+    grid_path = os.path.join(work, "static.grid")
+    subprocess.run([reference, "export", path, grid_path], check=True, timeout=120)
+    grid = read_grid(grid_path)
+    start = time.monotonic()
+    answer = segment_map(grid, stamp=stamp)
+    call_ms = 1000 * (time.monotonic() - start)
+    assert answer.error == "", "%s: segment_map: %s" % (path, answer.error)
+    labels, rooms_json = os.path.join(work, "cli_labels.png"), os.path.join(work, "cli_rooms.json")
+    out = subprocess.run([cli, "segment", path, "--out-labels", labels, "--out-json", rooms_json], check=True,
+                         capture_output=True, text=True, timeout=120)
+    with Image.open(labels) as image:
+        expected = numpy.flipud(numpy.array(image)).astype("<u2")
+    got = numpy.frombuffer(bytes(answer.labels.data), "<u2").reshape(answer.labels.height, answer.labels.width)
+    assert got.shape == expected.shape, "%s: labels %s, the CLI's %s" % (path, got.shape, expected.shape)
+    with open(rooms_json) as f:
+        json_equal = answer.json == f.read()
+    cli_ms = float(out.stdout.split(" ms (loading")[0].rsplit(" in ", 1)[1])
+    return {"grid": grid, "answer": answer, "differ": int((got != expected).sum()), "json_equal": json_equal,
+            "call_ms": call_ms, "cli_ms": cli_ms}
+
+
+def check_segment_map(args, work):
+    """The service's rooms are `topocut segment`'s: labels cell for cell, JSON byte for byte."""
     counts = []
     for k, path in enumerate(shared_maps(args.source)):
         name = os.path.basename(path)
-        grid_path = os.path.join(work, "static.grid")
-        subprocess.run([args.reference, "export", path, grid_path], check=True, timeout=60)
-        grid = read_grid(grid_path)
-        answer = segment_map(grid, stamp=500 + k)
-        assert answer.error == "", "%s: segment_map: %s" % (name, answer.error)
-        labels, rooms_json = os.path.join(work, "cli_labels.png"), os.path.join(work, "cli_rooms.json")
-        subprocess.run([args.cli, "segment", path, "--out-labels", labels, "--out-json", rooms_json], check=True,
-                       capture_output=True, timeout=60)
-        with Image.open(labels) as image:
-            expected = numpy.flipud(numpy.array(image)).astype("<u2")
-        got = numpy.frombuffer(bytes(answer.labels.data), "<u2").reshape(answer.labels.height, answer.labels.width)
-        assert got.shape == expected.shape, "%s: labels %s, the CLI's %s" % (name, got.shape, expected.shape)
+        result = segment_map_against_cli(args.cli, args.reference, path, work, 500 + k)
+        answer, grid = result["answer"], result["grid"]
         assert answer.labels.encoding == "16UC1" and answer.labels.header.stamp.secs == 1500 + k
-        differ = int((got != expected).sum())
-        assert differ == 0, "%s: %d labelled cells differ from topocut segment's" % (name, differ)
-        with open(rooms_json) as f:
-            cli_json = f.read()
-        assert answer.json == cli_json, "%s: segment_map's JSON differs from topocut segment --out-json" % name
+        assert result["differ"] == 0, "%s: %d labelled cells differ from topocut segment's" % (name, result["differ"])
+        assert result["json_equal"], "%s: segment_map's JSON differs from topocut segment --out-json" % name
         rooms = json.loads(answer.json)
         check_typed(answer.rooms, rooms, name)
         first = rooms["rooms"][0]
