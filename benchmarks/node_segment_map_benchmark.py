@@ -55,18 +55,11 @@ def main():
     sys.path.insert(0, os.path.join(args.build, "ros", "python"))
 
     work = tempfile.mkdtemp(prefix="topocut_segment_map_")
-    port = node_test.free_port()
-    env = dict(os.environ, ROS_MASTER_URI="http://127.0.0.1:%d" % port, ROS_IP="127.0.0.1",
-               ROS_HOSTNAME="127.0.0.1", ROS_HOME=work, ROS_LOG_DIR=work)
-    os.environ.update(env)
-    master = subprocess.Popen([rosmaster, "--core", "-p", str(port)], env=env, start_new_session=True,
-                              stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    master, env = node_test.private_master(rosmaster, work)
     running = None
     rows = []
     try:
-        import rosgraph
         import rospy
-        node_test.wait_for(lambda: rosgraph.is_master_online(), "rosmaster on port %d" % port)
         running = subprocess.Popen([node, "__name:=topocut"], env=env, start_new_session=True,
                                    stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
         rospy.init_node("topocut_segment_map_benchmark", anonymous=True, disable_signals=True)

@@ -4,6 +4,7 @@
 // and the room at a point (issue 26).
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -15,27 +16,21 @@ namespace {
 
 using topocut_ros::Parameter;
 
-Parameter number(const std::string& name, double value) {
+// A parameter as the server holds it: a number, a bool or a text.
+template <typename Value>
+Parameter given(const std::string& name, Value value) {
   Parameter p;
   p.name = name;
-  p.kind = Parameter::Kind::kNumber;
-  p.number = value;
-  return p;
-}
-
-Parameter flag(const std::string& name, bool value) {
-  Parameter p;
-  p.name = name;
-  p.kind = Parameter::Kind::kFlag;
-  p.flag = value;
-  return p;
-}
-
-Parameter text(const std::string& name, const std::string& value) {
-  Parameter p;
-  p.name = name;
-  p.kind = Parameter::Kind::kText;
-  p.text = value;
+  if constexpr (std::is_same_v<Value, bool>) {
+    p.kind = Parameter::Kind::kFlag;
+    p.flag = value;
+  } else if constexpr (std::is_arithmetic_v<Value>) {
+    p.kind = Parameter::Kind::kNumber;
+    p.number = value;
+  } else {
+    p.kind = Parameter::Kind::kText;
+    p.text = value;
+  }
   return p;
 }
 
@@ -102,24 +97,24 @@ TEST(RosAdapter, AMapOfTwoToTheThirtyOneCellsIsRefusedBeforeItsCellsAreRead) {
 TEST(RosAdapter, TheLimitIsAParameter) {
   std::vector<std::int8_t> cells(2000 * 1000, 0);
   topocut_ros::MapInput map{cells.data(), cells.size(), 2000, 1000, 0.05f};
-  topocut_ros::RoomsAdapter small = adapter_with({number("max_megapixels", 1.5)});
+  topocut_ros::RoomsAdapter small = adapter_with({given("max_megapixels", 1.5)});
   EXPECT_EQ(refusal(small, map), "the map has 2000 x 1000 cells, more than the limit of 1.5 megapixels (parameter ~max_megapixels)");
-  EXPECT_NE(refusal({number("max_megapixels", 5000)}), "");  // above the library's ceiling
+  EXPECT_NE(refusal({given("max_megapixels", 5000)}), "");  // above the library's ceiling
 }
 
 TEST(RosAdapter, BadParameterValuesAreRefusedWithTheReason) {
-  EXPECT_EQ(refusal({number("concavity", -1)}), "~concavity must lie in (0, 100000] metres, got -1");
-  EXPECT_EQ(refusal({text("door_width", "wide")}), "~door_width needs a number, not 'wide'");
-  EXPECT_EQ(refusal({number("no_merge", 1)}), "~no_merge is a switch: true or false, not 1");
-  EXPECT_EQ(refusal({flag("fold_area", true)}), "~fold_area needs a number, not true");
-  EXPECT_EQ(refusal({number("free_thresh", 2)}), "~free_thresh must be a probability in [0, 1]");
-  EXPECT_NE(refusal({flag("parity", true), flag("no_merge", true)}), "");  // a combination the CLI refuses too
-  EXPECT_EQ(refusal({number("concavity", 3), flag("no_merge", true), number("robot_radius", 0)}), "");
+  EXPECT_EQ(refusal({given("concavity", -1)}), "~concavity must lie in (0, 100000] metres, got -1");
+  EXPECT_EQ(refusal({given("door_width", "wide")}), "~door_width needs a number, not 'wide'");
+  EXPECT_EQ(refusal({given("no_merge", 1)}), "~no_merge is a switch: true or false, not 1");
+  EXPECT_EQ(refusal({given("fold_area", true)}), "~fold_area needs a number, not true");
+  EXPECT_EQ(refusal({given("free_thresh", 2)}), "~free_thresh must be a probability in [0, 1]");
+  EXPECT_NE(refusal({given("parity", true), given("no_merge", true)}), "");  // a combination the CLI refuses too
+  EXPECT_EQ(refusal({given("concavity", 3), given("no_merge", true), given("robot_radius", 0)}), "");
 }
 
 TEST(RosAdapter, UnknownParametersAreWarnedWithTheNearestName) {
   std::vector<std::string> unknown;
-  topocut_ros::RoomsAdapter adapter({number("concavty", 3), number("door_width", 1.5), text("frame", "map")}, unknown);
+  topocut_ros::RoomsAdapter adapter({given("concavty", 3), given("door_width", 1.5), given("frame", "map")}, unknown);
   ASSERT_EQ(unknown.size(), 2u);
   EXPECT_EQ(unknown[0], "~concavty is not a parameter of topocut_node, ignored (did you mean ~concavity?)");
   EXPECT_EQ(unknown[1], "~frame is not a parameter of topocut_node, ignored");
@@ -152,7 +147,7 @@ TEST(RosAdapter, SegmentGivesTheLibrarysBatchRoomsAtTheWrittenResolution) {
 
 TEST(RosAdapter, SegmentOptionsGoOverTheParametersAndAreChecked) {
   const TwoRooms two;
-  topocut_ros::RoomsAdapter adapter = adapter_with({flag("no_doors", true)});
+  topocut_ros::RoomsAdapter adapter = adapter_with({given("no_doors", true)});
   auto error = [&](const std::vector<std::string>& options) {
     try {
       adapter.segment(two.map(), options);

@@ -17,7 +17,7 @@ import sys
 import tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from node_test import free_port, stop, wait_for  # noqa: E402
+from node_test import private_master, stop  # noqa: E402
 
 
 def main():
@@ -30,17 +30,11 @@ def main():
         return 77
     signal.alarm(60)
     work = tempfile.mkdtemp(prefix="topocut_ros_example_")
-    port = free_port()
-    env = dict(os.environ, ROS_MASTER_URI="http://127.0.0.1:%d" % port, ROS_IP="127.0.0.1", ROS_HOSTNAME="127.0.0.1",
-               ROS_HOME=work, ROS_LOG_DIR=work, PYTHONPATH=args.msgs + os.pathsep + args.python_path)
-    os.environ.update(env)
     floorplan = os.path.join(args.source, "maps", "floorplan.yaml")
     master = node = None
     try:
-        master = subprocess.Popen([args.rosmaster, "--core", "-p", str(port)], env=env, start_new_session=True,
-                                  stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
-        import rosgraph
-        wait_for(lambda: rosgraph.is_master_online(), "rosmaster on port %d" % port)
+        master, env = private_master(args.rosmaster, work)
+        env["PYTHONPATH"] = args.msgs + os.pathsep + args.python_path
         node = subprocess.Popen([args.node], env=env, start_new_session=True, stdout=subprocess.DEVNULL,
                                 stderr=subprocess.DEVNULL)
         point = "4.4,6.9"
