@@ -143,8 +143,12 @@ std::vector<Parameter> options_as_parameters(const std::vector<std::string>& opt
       p.kind = Parameter::Kind::kFlag;
       p.flag = p.text != "false";
     } else {
-      p.kind = Parameter::Kind::kNumber;
-      p.number = topocut::parse_option_number(p.text, "~" + p.name);
+      try {
+        p.number = topocut::parse_option_number(p.text, p.name);
+        p.kind = Parameter::Kind::kNumber;
+      } catch (const topocut::Error&) {  // a text: its row, if it has one, says what it needs
+        p.kind = Parameter::Kind::kText;
+      }
     }
     out.push_back(p);
   }

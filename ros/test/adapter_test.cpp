@@ -158,6 +158,8 @@ TEST(RosAdapter, SegmentOptionsGoOverTheParametersAndAreChecked) {
   };
   EXPECT_EQ(error({"concavty=3"}), "~concavty is not a parameter of topocut_node (did you mean ~concavity?)");
   EXPECT_EQ(error({"concavity=abc"}), "~concavity needs a number, not 'abc'");
+  EXPECT_EQ(error({"frame=map"}), "~frame is not a parameter of topocut_node");
+  EXPECT_EQ(error({"no_merge=1"}), "~no_merge is a switch: true or false, not 1");
   EXPECT_EQ(error({"door-width=-2"}), "~door-width must lie in (0, 100000] metres, got -2");
   // The parameter (no door cuts) holds unless a call turns it off again.
   const std::string doors_off = adapter.segment(two.map(), {}).json;
