@@ -39,7 +39,7 @@ packages+=(libroscpp-dev libnav-msgs-dev libsensor-msgs-dev libvisualization-msg
 # networkx take the Python results' to_shapely() / to_networkx(), PIL reads the CLI's label images
 # in the ROS node's test.
 case "$mode" in
-  test|sanitize) packages+=(chromium python3-shapely python3-networkx python3-pil) ;;
+  test|sanitize) packages+=(chromium python3-shapely python3-networkx python3-sklearn python3-pil) ;;
 esac
 # libFuzzer comes with clang only; the other modes build with GCC.
 [ "$mode" = fuzz ] && packages+=(clang libclang-rt-14-dev)

@@ -81,4 +81,8 @@ if(TOPOCUT_BUILD_TESTS)
   add_test(NAME python_package COMMAND ${Python_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/tests/package/pip_install_in_venv.py
            ${CMAKE_CURRENT_SOURCE_DIR} ${CMAKE_BINARY_DIR} ${CMAKE_BINARY_DIR}/python_package)
   set_tests_properties(python_package PROPERTIES TIMEOUT 600 SKIP_RETURN_CODE 77)
+  # The shipped merge model is what the training script produces from the shared data sets.
+  add_test(NAME merge_model_trained COMMAND ${Python_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/scripts/train_merge_model.py
+           --check --build ${CMAKE_BINARY_DIR} --shared ${CMAKE_CURRENT_SOURCE_DIR}/../shared)
+  set_tests_properties(merge_model_trained PROPERTIES TIMEOUT 900 SKIP_RETURN_CODE 77)
 endif()

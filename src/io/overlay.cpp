@@ -53,11 +53,11 @@ void draw_rule_legend(cv::Mat& image, const std::vector<Passage>& passages) {
   int y = 6;
   for (const CutRule rule : present) {
     const cv::Vec3b c = cut_rule_colour(rule);
-    const cv::Rect box(6, y, 170, line);
+    const cv::Rect box(6, y, 130, line);
     cv::Mat patch = image(box & cv::Rect(0, 0, image.cols, image.rows));
     patch = 0.25 * patch + 0.75 * cv::Scalar(255, 255, 255);
     cv::line(image, {10, y + line / 2}, {30, y + line / 2}, cv::Scalar(c[0], c[1], c[2]), 3, cv::LINE_AA);
-    cv::putText(image, to_string(rule) + " cut", {36, y + line - 4}, cv::FONT_HERSHEY_SIMPLEX, 0.4, cv::Scalar(0, 0, 0), 1,
+    cv::putText(image, to_string(rule), {36, y + line - 4}, cv::FONT_HERSHEY_SIMPLEX, 0.4, cv::Scalar(0, 0, 0), 1,
                 cv::LINE_AA);
     y += line;
   }

@@ -80,6 +80,20 @@ void merge_by_hand_rules(RoomGraph& g, const RoomMergeOptions& options) {
   }
 }
 
+// A corridor continued: both rooms are strips (elongated, of about the same thickness, a corridor's
+// at most) and the cut spans the narrower one, so the union is one strip bent or cut across. People
+// draw a corridor as one room; the model, fitted on few clean bends, does not always see it.
+bool corridor_continues(RoomGraph& g, std::size_t k, const std::vector<double>& f) {
+  static const int cut = merge_feature_index("cut_over_narrow_width"), door = merge_feature_index("rule_door"),
+                   opening = merge_feature_index("rule_wall_opening"), narrow = merge_feature_index("narrow_thickness"),
+                   wide = merge_feature_index("wide_thickness"), grown = merge_feature_index("union_thickness_over_narrow");
+  const auto at = [&f](int i) { return f[static_cast<std::size_t>(i)]; };
+  if (at(door) > 0.0 || at(opening) > 0.0 || at(cut) < 0.9 || at(grown) > 1.25) return false;
+  if (std::max(at(narrow), at(wide)) > 2.5 || std::max(at(narrow), at(wide)) > 1.25 * std::min(at(narrow), at(wide))) return false;
+  const RoomGraph::Side& s = g.sides()[k];
+  return std::min(g.elongation({g.root(s.left)}), g.elongation({g.root(s.right)})) >= 3.0;
+}
+
 // The learned criterion: the most probable merge first while its probability is above the model's
 // threshold; the probabilities next to a grown room are computed again.
 void merge_learned(RoomGraph& g, const RoomMergeOptions& options, std::vector<MergeStep>* trace) {
@@ -93,7 +107,8 @@ void merge_learned(RoomGraph& g, const RoomMergeOptions& options, std::vector<Me
       if (!fresh[k]) {
         const std::vector<double> features = merge_features(g, k, options);
         // The furniture rule holds whatever the model says: a room does not end at a table.
-        probability[k] = g.sides()[k].furniture ? 1.0 : merge_probability(options.model, features);
+        const bool forced = g.sides()[k].furniture || corridor_continues(g, k, features);
+        probability[k] = forced ? 1.0 : merge_probability(options.model, features);
         fresh[k] = true;
         if (trace) {
           const RoomGraph::Side& s = g.sides()[k];

@@ -18,6 +18,20 @@ PolygonWithHoles box(double x0, double y0, double x1, double y1) {
 
 FreeSpaceComponent no_component() { return {}; }
 
+// The hand rules (door ratio, width steps, furniture), which these tests work through by hand.
+RoomMergeOptions hand_rules() {
+  RoomMergeOptions options;
+  options.learned = false;
+  return options;
+}
+
+// The learned criterion with a model that answers p = 1 / (1 + exp(-bias)) to every merge.
+RoomMergeOptions constant_model(double bias) {
+  RoomMergeOptions options;
+  options.model = parse_merge_model("topocut-merge-model 1\nthreshold 0.5\nbias " + std::to_string(bias) + "\n");
+  return options;
+}
+
 bool has_edge(const Ring& ring, const Point2& a, const Point2& b) {
   for (std::size_t i = 0; i < ring.size(); ++i) {
     const Point2& p = ring[i];
@@ -59,7 +73,7 @@ TEST(MergeRooms, AnOpeningAsWideAsTheRoomIsNoDoor) {
   PieceSet set;
   set.pieces = {box(0, 0, 60, 40), box(60, 0, 100, 40), box(60, 40, 100, 100)};
   set.cuts = {{{60, 0}, {60, 40}}, {{60, 40}, {100, 40}}};
-  const PieceSet rooms = merge_rooms(no_component(), set, kRes);
+  const PieceSet rooms = merge_rooms(no_component(), set, kRes, hand_rules());
   ASSERT_EQ(rooms.pieces.size(), 1u);
   EXPECT_TRUE(rooms.cuts.empty());
   EXPECT_DOUBLE_EQ(area(rooms.pieces[0]), 60 * 40 + 40 * 40 + 40 * 60);
@@ -77,7 +91,7 @@ TEST(MergeRooms, ADoorBetweenTwoRoomsKeepsThemApart) {
                 box(60, 20, 64, 38),
                 {{{64, 0}, {124, 0}, {124, 60}, {64, 60}, {64, 38}, {64, 20}}, {}}};
   set.cuts = {{{60, 20}, {60, 38}}, {{64, 38}, {64, 20}}};
-  const PieceSet rooms = merge_rooms(no_component(), set, kRes);
+  const PieceSet rooms = merge_rooms(no_component(), set, kRes, hand_rules());
   ASSERT_EQ(rooms.pieces.size(), 2u);
   ASSERT_EQ(rooms.cuts.size(), 1u);
   EXPECT_NEAR(distance(rooms.cuts[0].a, rooms.cuts[0].b) * kRes, 0.9, 1e-12);
@@ -93,9 +107,9 @@ TEST(MergeRooms, AKnownDoorIsNeverMergedAsAWideOpening) {
   PieceSet set;
   set.pieces = {box(0, 0, 60, 40), box(60, 0, 100, 40)};
   set.cuts = {{{60, 0}, {60, 40}}};
-  EXPECT_EQ(merge_rooms(no_component(), set, kRes).pieces.size(), 1u);
+  EXPECT_EQ(merge_rooms(no_component(), set, kRes, hand_rules()).pieces.size(), 1u);
   set.rules = {CutRule::kDoor};
-  EXPECT_EQ(merge_rooms(no_component(), set, kRes).pieces.size(), 2u);
+  EXPECT_EQ(merge_rooms(no_component(), set, kRes, hand_rules()).pieces.size(), 2u);
 }
 
 TEST(MergeRooms, ASliverIsFoldedIntoTheNeighbourWithTheLongestCut) {
@@ -107,7 +121,7 @@ TEST(MergeRooms, ASliverIsFoldedIntoTheNeighbourWithTheLongestCut) {
   // Left/strip cut 60 units (3 m), strip/right cut 20 units (1 m). The strip is a trapezoid of
   // (60 + 20) / 2 * 20 = 800 units² = 2 m².
   set.cuts = {{{80, 0}, {80, 60}}, {{100, 20}, {100, 0}}};
-  RoomMergeOptions options;
+  RoomMergeOptions options = hand_rules();
   options.door_ratio = 10.0;      // no cut is wide enough to merge as "not a door"
   options.min_room_area = 3.0;    // m²: the strip is too small to be a room
   const PieceSet rooms = merge_rooms(no_component(), set, kRes, options);
@@ -124,7 +138,7 @@ TEST(MergeRooms, AThinStripIsFoldedWhenAMinimumWidthIsSet) {
   PieceSet set;
   set.pieces = {{{{0, 0}, {120, 0}, {120, 80}, {56, 80}, {50, 80}, {0, 80}}, {}}, box(50, 80, 56, 200)};
   set.cuts = {{{56, 80}, {50, 80}}};
-  RoomMergeOptions options;
+  RoomMergeOptions options = hand_rules();
   options.door_ratio = 10.0;
   options.min_room_thickness = 0.0;
   EXPECT_EQ(merge_rooms(no_component(), set, kRes, options).pieces.size(), 2u);
@@ -165,7 +179,7 @@ TEST(MergeRooms, ASliverThinnerThanAPersonIsFolded) {
   PieceSet set;
   set.pieces = {box(0, 0, 120, 80), box(120, 0, 128, 80)};
   set.cuts = {{{120, 0}, {120, 80}}};
-  RoomMergeOptions options;
+  RoomMergeOptions options = hand_rules();
   options.door_ratio = 10.0;
   options.min_room_thickness = 0.0;
   EXPECT_EQ(merge_rooms(no_component(), set, kRes, options).pieces.size(), 2u);
@@ -193,7 +207,7 @@ PieceSet around_obstacle(int side, FreeSpaceComponent& component) {
 }
 
 TEST(MergeRooms, CutsEndingOnFurnitureSeparateNoRooms) {
-  RoomMergeOptions options;
+  RoomMergeOptions options = hand_rules();
   options.door_ratio = 10.0;  // no cut merges as "not a door": only the furniture rule can merge
   FreeSpaceComponent table;
   const PieceSet set = around_obstacle(20, table);  // a 1 m table
@@ -212,7 +226,7 @@ TEST(MergeRooms, ARoomOpeningOntoAMuchWiderDeepSpaceStaysApart) {
   PieceSet set;
   set.pieces = {{{{0, 0}, {240, 0}, {240, 160}, {160, 160}, {80, 160}, {0, 160}}, {}}, box(80, 160, 160, 240)};
   set.cuts = {{{80, 160}, {160, 160}}};
-  RoomMergeOptions options;
+  RoomMergeOptions options = hand_rules();
   EXPECT_EQ(merge_rooms(no_component(), set, kRes, options).pieces.size(), 2u);
   options.step_ratio = 0.0;  // the cut spans the narrow room: not door-like, merged
   EXPECT_EQ(merge_rooms(no_component(), set, kRes, options).pieces.size(), 1u);
@@ -220,22 +234,52 @@ TEST(MergeRooms, ARoomOpeningOntoAMuchWiderDeepSpaceStaysApart) {
   PieceSet corridor;
   corridor.pieces = {{{{0, 100}, {240, 100}, {240, 160}, {160, 160}, {80, 160}, {0, 160}}, {}}, box(80, 160, 160, 240)};
   corridor.cuts = set.cuts;
-  EXPECT_EQ(merge_rooms(no_component(), corridor, kRes, RoomMergeOptions{}).pieces.size(), 1u);
+  EXPECT_EQ(merge_rooms(no_component(), corridor, kRes, hand_rules()).pieces.size(), 1u);
   // A 2 m x 4 m room onto a 12 m wide hall only 3 m deep: merged across a DuDe cut (3 < 5 m), kept
   // apart across a wall line (the hall reaches 3 m behind it, more than 1.25 x 2 m), and the line
   // stays listed as one.
   PieceSet hall;
   hall.pieces = {{{{0, 100}, {240, 100}, {240, 160}, {120, 160}, {80, 160}, {0, 160}}, {}}, box(80, 160, 120, 240)};
   hall.cuts = {{{80, 160}, {120, 160}}};
-  EXPECT_EQ(merge_rooms(no_component(), hall, kRes, RoomMergeOptions{}).pieces.size(), 1u);
+  EXPECT_EQ(merge_rooms(no_component(), hall, kRes, hand_rules()).pieces.size(), 1u);
   hall.rules = {CutRule::kWallLine};
-  const PieceSet kept = merge_rooms(no_component(), hall, kRes, RoomMergeOptions{});
+  const PieceSet kept = merge_rooms(no_component(), hall, kRes, hand_rules());
   EXPECT_EQ(kept.pieces.size(), 2u);
   EXPECT_EQ(kept.cuts, hall.cuts);
   EXPECT_EQ(kept.rules, std::vector<CutRule>{CutRule::kWallLine});
   // The 4 m room onto the 3 m corridor still merges across a wall line: 3 < 1.25 x 4 m.
   corridor.rules = {CutRule::kWallLine};
-  EXPECT_EQ(merge_rooms(no_component(), corridor, kRes, RoomMergeOptions{}).pieces.size(), 1u);
+  EXPECT_EQ(merge_rooms(no_component(), corridor, kRes, hand_rules()).pieces.size(), 1u);
+}
+
+TEST(MergeRooms, TheLearnedCriterionMergesWhereTheModelSaysOneRoom) {
+  PieceSet set;
+  set.pieces = {box(0, 0, 60, 40), box(60, 0, 100, 40)};
+  set.cuts = {{{60, 0}, {60, 40}}};
+  EXPECT_EQ(merge_rooms(no_component(), set, kRes, constant_model(5.0)).pieces.size(), 1u);
+  EXPECT_EQ(merge_rooms(no_component(), set, kRes, constant_model(-5.0)).pieces.size(), 2u);
+  // A table's cuts are no room boundary whatever the model says.
+  FreeSpaceComponent table;
+  EXPECT_EQ(merge_rooms(table, around_obstacle(20, table), kRes, constant_model(-10.0)).pieces.size(), 1u);
+}
+
+TEST(MergeRooms, ACorridorContinuedIsOneRoomWhateverTheModel) {
+  // A corridor 2 m wide bent at a right angle, legs 10 m and 8 m beyond the corner, cut at the corner
+  // across its width (as a wall line does): one room even where the model says two.
+  PieceSet bent;
+  bent.pieces = {{{{0, 0}, {200, 0}, {200, 40}, {40, 40}, {0, 40}}, {}}, box(0, 40, 40, 200)};
+  bent.cuts = {{{0, 40}, {40, 40}}};
+  bent.rules = {CutRule::kWallLine};
+  EXPECT_EQ(merge_rooms(no_component(), bent, kRes, constant_model(-10.0)).pieces.size(), 1u);
+  // Through a door it stays two (a door is a boundary people draw), and a 4 m x 4 m room at the
+  // corridor's end is no strip: the model decides.
+  bent.rules = {CutRule::kDoor};
+  EXPECT_EQ(merge_rooms(no_component(), bent, kRes, constant_model(-10.0)).pieces.size(), 2u);
+  PieceSet room;
+  room.pieces = {box(0, 0, 200, 40), {{{200, -20}, {280, -20}, {280, 60}, {200, 60}, {200, 40}, {200, 0}}, {}}};
+  room.cuts = {{{200, 0}, {200, 40}}};
+  EXPECT_EQ(merge_rooms(no_component(), room, kRes, constant_model(-10.0)).pieces.size(), 2u);
+  EXPECT_EQ(merge_rooms(no_component(), room, kRes, constant_model(10.0)).pieces.size(), 1u);
 }
 
 }  // namespace

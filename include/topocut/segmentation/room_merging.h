@@ -18,7 +18,7 @@ struct RoomMergeOptions {
   bool enabled = true;
   // true: two rooms merge where the learned model (merge_model.h) finds them one room; false: the
   // hand rules below (door_ratio, width steps, furniture). Folding applies either way.
-  bool learned = false;
+  bool learned = true;
   MergeModel model = default_merge_model();
   // A cut is door-like when it is narrower than door_ratio times the width of the room on each of
   // its sides (a door into a room, a room's opening onto a corridor); a cut at least this close to
