@@ -26,14 +26,20 @@ packages=(build-essential cmake pkg-config libcgal-dev libopencv-dev libboost-de
           libboost-program-options-dev libboost-graph-dev nlohmann-json3-dev libyaml-cpp-dev
           libgtest-dev libgmock-dev libbenchmark-dev zlib1g-dev libpng-dev libjpeg62-turbo-dev libtiff-dev
           pybind11-dev python3-dev python3-numpy python3-pytest python3-matplotlib python3-venv python3-pip)
-# ROS 1 from Debian: the node (ros/) and its loopback test (rosmaster, rospy publishing the maps).
+# ROS 1 from Debian: the node (ros/) and its loopback test (rosmaster, rospy publishing the maps);
+# genmsg's generators and the definitions of the messages topocut_msgs uses (ros-*-msgs), from which
+# the build generates topocut_msgs; the commands of the README's ROS session (roscore and roslaunch,
+# rostopic, rosservice, rosnode, rosmsg/rossrv, rosrun).
 packages+=(libroscpp-dev libnav-msgs-dev libsensor-msgs-dev libvisualization-msgs-dev libstd-msgs-dev
-           python3-rosmaster python3-rospy python3-rosgraph python3-nav-msgs python3-sensor-msgs
-           python3-visualization-msgs python3-std-msgs)
+           libgeometry-msgs-dev python3-rosmaster python3-rospy python3-rosgraph python3-nav-msgs
+           python3-sensor-msgs python3-visualization-msgs python3-std-msgs python3-geometry-msgs
+           python3-genmsg python3-gencpp python3-genpy ros-std-msgs ros-geometry-msgs ros-nav-msgs ros-sensor-msgs
+           python3-roslaunch python3-rostopic python3-rosservice python3-rosnode python3-rosmsg rosbash)
 # Only the test suites need these: headless Chromium opens evaluate's report page, shapely and
-# networkx take the Python results' to_shapely() / to_networkx().
+# networkx take the Python results' to_shapely() / to_networkx(), PIL reads the CLI's label images
+# in the ROS node's test.
 case "$mode" in
-  test|sanitize) packages+=(chromium python3-shapely python3-networkx python3-sklearn) ;;
+  test|sanitize) packages+=(chromium python3-shapely python3-networkx python3-sklearn python3-pil) ;;
 esac
 # libFuzzer comes with clang only; the other modes build with GCC.
 [ "$mode" = fuzz ] && packages+=(clang libclang-rt-14-dev)

@@ -92,17 +92,10 @@ def main():
         return 77
 
     work = tempfile.mkdtemp(prefix="topocut_node_latency_")
-    port = node_test.free_port()
-    env = dict(os.environ, ROS_MASTER_URI="http://127.0.0.1:%d" % port, ROS_IP="127.0.0.1",
-               ROS_HOSTNAME="127.0.0.1", ROS_HOME=work, ROS_LOG_DIR=work)
-    os.environ.update(env)
-    master = subprocess.Popen([rosmaster, "--core", "-p", str(port)], env=env, start_new_session=True,
-                              stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    master, env = node_test.private_master(rosmaster, work)
     rows, all_updates, all_callbacks = [], [], []
     try:
-        import rosgraph
         import rospy
-        node_test.wait_for(lambda: rosgraph.is_master_online(), "rosmaster on port %d" % port)
         rospy.init_node("topocut_node_latency", anonymous=True, disable_signals=True)
         for name in args.maps:
             image = os.path.join(args.data, name + ".png")

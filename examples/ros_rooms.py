@@ -1,22 +1,27 @@
 #!/usr/bin/env python3
-"""Feeds a map file to a running topocut_node and prints the rooms it answers: the map goes out on
-/map as map_server would publish it (latched nav_msgs/OccupancyGrid, ROS row order), the rooms come
-back on /rooms/graph (the rooms JSON of `topocut segment --out-json`, map frame, metres).
+"""Feeds a map file to a running topocut_node and prints the rooms it answers. By default the map goes
+out on /map as map_server would publish it (latched nav_msgs/OccupancyGrid, ROS row order) and the
+rooms come back on /rooms/rooms (topocut_msgs/Rooms: the rooms and passages of `topocut segment
+--out-json`, map frame, metres); with --service the map is sent to the service /rooms/segment_map
+instead (the whole map at once, with --option overrides), which answers with the same rooms.
+--at X,Y then asks /rooms/room_at which room holds that point.
 
-    export ROS_MASTER_URI=http://127.0.0.1:11311
-    rosmaster --core -p 11311 &  build/ros/topocut_node &
-    PYTHONPATH=build/python /usr/bin/python3 examples/ros_rooms.py maps/floorplan.yaml
+    export ROS_MASTER_URI=http://127.0.0.1:11311 PYTHONPATH=build/ros/python:build/python
+    roscore &  build/ros/topocut_node &
+    /usr/bin/python3 examples/ros_rooms.py maps/floorplan.yaml [--service [--option concavity=3]] [--at 4.4,6.9]
 
-Needs python3-rospy and python3-nav-msgs (bash .ci/setup.sh installs them) and the topocut Python
-package to read the map file (build/python, or pip-installed).
+Needs python3-rospy and python3-nav-msgs (bash .ci/setup.sh installs them), the generated messages
+(build/ros/python, built with the node) and the topocut Python package to read the map file
+(build/python, or pip-installed).
 """
 import argparse
-import json
 import threading
 
 import rospy
+from geometry_msgs.msg import Point
 from nav_msgs.msg import OccupancyGrid
-from std_msgs.msg import String
+from topocut_msgs.msg import Rooms
+from topocut_msgs.srv import RoomAt, SegmentMap
 
 import topocut
 
@@ -33,27 +38,56 @@ def occupancy_grid(m):
     return msg
 
 
+def published_rooms(grid, timeout):
+    """Publishes grid on /map and waits for its rooms on /rooms/rooms."""
+    answered, rooms = threading.Event(), []
+
+    def on_rooms(msg):
+        if msg.header.stamp == grid.header.stamp:
+            rooms.append(msg)
+            answered.set()
+
+    rospy.Subscriber("rooms/rooms", Rooms, on_rooms)
+    publisher = rospy.Publisher("map", OccupancyGrid, queue_size=1, latch=True)
+    publisher.publish(grid)
+    if not answered.wait(timeout):
+        raise SystemExit(f"no rooms on {rospy.resolve_name('rooms/rooms')} within {timeout} s: is topocut_node running?")
+    return rooms[0]
+
+
+def served_rooms(grid, options, timeout):
+    """Sends grid to /rooms/segment_map."""
+    try:
+        rospy.wait_for_service("rooms/segment_map", timeout)
+    except rospy.ROSException:
+        raise SystemExit(f"no service {rospy.resolve_name('rooms/segment_map')} within {timeout} s: is topocut_node running?")
+    answer = rospy.ServiceProxy("rooms/segment_map", SegmentMap)(grid, options)
+    if answer.error:
+        raise SystemExit("segment_map: " + answer.error)
+    return answer.rooms
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("map", help="ROS map_server YAML or image")
+    parser.add_argument("--service", action="store_true", help="send the map to rooms/segment_map instead of /map")
+    parser.add_argument("--option", action="append", default=[], metavar="NAME=VALUE",
+                        help="with --service: an option over the node's parameters (repeatable), e.g. concavity=3")
+    parser.add_argument("--at", metavar="X,Y", help="then print the room at this point (map frame, metres)")
     parser.add_argument("--timeout", type=float, default=30.0, help="seconds to wait for the rooms")
     args = parser.parse_args()
     rospy.init_node("topocut_example", anonymous=True)
-    answered, graph = threading.Event(), {}
-
-    def on_graph(msg):
-        graph.update(json.loads(msg.data))
-        answered.set()
-
-    rospy.Subscriber("rooms/graph", String, on_graph)
-    publisher = rospy.Publisher("map", OccupancyGrid, queue_size=1, latch=True)
-    publisher.publish(occupancy_grid(topocut.load_map(args.map)))
-    if not answered.wait(args.timeout):
-        raise SystemExit(f"no rooms on {rospy.resolve_name('rooms/graph')} within {args.timeout} s: is topocut_node running?")
-    for room in graph["rooms"]:
-        print(f"room {room['id']}: {room['area']:.1f} m², inside ({room['inside'][0]:.2f}, {room['inside'][1]:.2f})")
-    for passage in graph["passages"]:
-        print(f"passage {passage['rooms'][0]} - {passage['rooms'][1]}: {passage['kind']}, {passage['width']:.2f} m")
+    grid = occupancy_grid(topocut.load_map(args.map))
+    rooms = served_rooms(grid, args.option, args.timeout) if args.service else published_rooms(grid, args.timeout)
+    for room in rooms.rooms:
+        print(f"room {room.id}: {room.area:.1f} m², inside ({room.inside.x:.3f}, {room.inside.y:.3f})")
+    for passage in rooms.passages:
+        kind = "door" if passage.kind == passage.DOOR else "opening"
+        print(f"passage {passage.room_a} - {passage.room_b}: {kind}, {passage.width:.2f} m")
+    if args.at:
+        x, y = (float(v) for v in args.at.split(","))
+        answer = rospy.ServiceProxy("rooms/room_at", RoomAt)(Point(x, y, 0.0))
+        print(f"at {args.at}: " + (f"room {answer.id}" if answer.id else "none"))
 
 
 if __name__ == "__main__":

@@ -1,110 +1,316 @@
 #include "rooms_adapter.h"
 
+#include <algorithm>
+#include <charconv>
 #include <chrono>
+#include <cstdlib>
+#include <optional>
 
 #include "topocut/core/option_table.h"
-#include "topocut/io/image_input.h"
+#include "topocut/io/image_input.h"  // ImageLimits
+#include "topocut/segmentation/room_at.h"
+#include "topocut/segmentation/segment_switches.h"
 #include "topocut/topocut.h"
 
 namespace topocut_ros {
-
-struct RoomsAdapter::State {
-  topocut::GridArray thresholds;  // map_server's thresholds, from the parameters
-  topocut::ImageLimits limits;    // the largest map segmented, as for every image the library reads
-  topocut::IncrementalSegmenter segmenter;
-  explicit State(const topocut::IncrementalOptions& options) : segmenter(options) {}
-};
-
 namespace {
 
-// The segmenter options and thresholds from the parameters; every default is the library's own.
-topocut::IncrementalOptions read_options(const DoubleParameter& number, const FlagParameter& flag,
-                                         topocut::GridArray& thresholds) {
-  topocut::IncrementalOptions options;
-  topocut::SegmentOptions& s = options.segment;
-  number("concavity", &s.concavity);
-  number("door_width", &s.doors.max_width);
-  number("fold_area", &s.merge.min_room_area);
-  number("robot_radius", &s.binarize.robot_radius);
-  number("opening", &s.binarize.opening_size);
-  number("min_room_area", &s.contours.min_component_area);
-  number("min_hole_area", &s.contours.min_hole_area);
-  number("free_thresh", &thresholds.free_thresh);
-  number("occupied_thresh", &thresholds.occupied_thresh);
-  number("batch_fraction", &options.batch_fraction);
-  auto on = [&](const char* name) {
-    bool value = false;
-    return flag(name, &value) && value;
-  };
-  for (const topocut::SegmentationRule& rule : topocut::segmentation_rules()) {
-    std::string name = "no_" + rule.name;
-    for (char& c : name) c = c == '-' ? '_' : c;
-    if (on(name.c_str())) rule.turn_off(s);
+using topocut::Error;
+using topocut::OptionRow;
+using topocut::SegmentSettings;
+
+// What the node reads beside the segmentation options: how a map's values become cells, when an
+// update is a batch one, and the largest map it segments.
+struct MapSettings {
+  double free_thresh = topocut::GridArray{}.free_thresh;
+  double occupied_thresh = topocut::GridArray{}.occupied_thresh;
+  double batch_fraction = topocut::IncrementalOptions{}.batch_fraction;
+  topocut::ImageLimits limits;
+};
+
+struct NodeSettings {
+  SegmentSettings segment;
+  MapSettings map;
+};
+
+// map_server's thresholds are probabilities; the table's fraction range leaves out 0.
+OptionRow<MapSettings> threshold(const char* name, double MapSettings::*field, const char* help) {
+  return {name, "P", help, topocut::OptionRange::kAny, [field](const MapSettings& s) { return s.*field; },
+          [field, name](MapSettings& s, double v) {
+            if (!(v >= 0.0 && v <= 1.0)) throw Error(std::string("~") + name + " must be a probability in [0, 1]");
+            s.*field = v;
+          }};
+}
+
+// The node's own rows, after segment_option_rows() (named with '_', as ROS parameters are).
+const std::vector<OptionRow<MapSettings>>& map_option_rows() {
+  static const std::vector<OptionRow<MapSettings>> rows = {
+      threshold("free_thresh", &MapSettings::free_thresh, "map_server's rule: a cell is free below this occupancy"),
+      threshold("occupied_thresh", &MapSettings::occupied_thresh, "and occupied above this one"),
+      {"batch_fraction", "F", "share of changed free cells that makes a live update a batch one",
+       topocut::OptionRange::kPositive, [](const MapSettings& s) { return s.batch_fraction; },
+       [](MapSettings& s, double v) { s.batch_fraction = v; }},
+      {"max_megapixels", "N", "maps of more megapixels are logged and skipped before a cell is read (at most 1000)",
+       topocut::OptionRange::kPositive,
+       [](const MapSettings& s) { return s.limits.max_megapixels; },
+       [](MapSettings& s, double v) {
+         s.limits.max_megapixels = v;
+         topocut::validate(s.limits);
+       }}};
+  return rows;
+}
+
+std::string underscored(std::string name) {
+  std::replace(name.begin(), name.end(), '-', '_');
+  return name;
+}
+
+std::vector<std::string> known_names() {
+  std::vector<std::string> names;
+  for (const auto& row : topocut::segment_option_rows()) names.push_back(underscored(row.name));
+  for (const auto& row : map_option_rows()) names.push_back(row.name);
+  return names;
+}
+
+std::size_t edit_distance(const std::string& a, const std::string& b) {
+  std::vector<std::size_t> row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diagonal = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t up = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] != b[j - 1])});
+      diagonal = up;
+    }
   }
-  topocut::validate(s);
-  return options;
+  return row[b.size()];
+}
+
+// "~name is not a parameter of topocut_node[, ignored] (did you mean ~nearest?)": close means a typo's distance.
+std::string unknown_name(const std::string& name, bool ignored) {
+  std::string best;
+  std::size_t best_distance = 3;
+  for (const std::string& known : known_names())
+    if (const std::size_t d = edit_distance(name, known); d < best_distance) best = known, best_distance = d;
+  return "~" + name + " is not a parameter of topocut_node" + (ignored ? ", ignored" : "") + (best.empty() ? "" : " (did you mean ~" + best + "?)");
+}
+
+// The value of p for row: a number for a number, true/false for a switch; Error with the reason otherwise.
+template <typename Target>
+double value_for(const OptionRow<Target>& row, const Parameter& p) {
+  const std::string shown = "~" + p.name;
+  if (row.is_switch()) {
+    if (p.kind == Parameter::Kind::kFlag) return p.flag ? 1.0 : 0.0;
+    throw Error(shown + " is a switch: true or false, not " + (p.kind == Parameter::Kind::kNumber ? topocut::shortest_number(p.number) : "'" + p.text + "'"));
+  }
+  if (p.kind == Parameter::Kind::kNumber) return p.number;
+  throw Error(shown + " needs a number, not " + (p.kind == Parameter::Kind::kFlag ? (p.flag ? "true" : "false") : "'" + p.text + "'"));
+}
+
+template <typename Target>
+bool set_row(const std::vector<OptionRow<Target>>& rows, const std::string& name, Target& target, const Parameter& p) {
+  const OptionRow<Target>* row = topocut::find_option(rows, name);
+  if (row != nullptr) topocut::set_option(*row, target, value_for(*row, p), "~" + p.name);
+  return row != nullptr;
+}
+
+// settings with the parameters given, each checked by its row of the option tables; an unknown
+// name is appended to unknown, or an Error when unknown is null (a service call's options).
+NodeSettings read_parameters(NodeSettings settings, const std::vector<Parameter>& given, std::vector<std::string>* unknown) {
+  for (const Parameter& p : given) {
+    std::string dashed = p.name;
+    std::replace(dashed.begin(), dashed.end(), '_', '-');
+    if (set_row(topocut::segment_option_rows(), dashed, settings.segment, p) ||
+        set_row(map_option_rows(), underscored(p.name), settings.map, p))
+      continue;
+    if (unknown == nullptr) throw Error(unknown_name(p.name, false));
+    unknown->push_back(unknown_name(p.name, true));
+  }
+  topocut::to_segment_options(settings.segment);  // the combination, checked before any map arrives
+  return settings;
+}
+
+// A service call's "name=value" / "name" options as the parameters they override.
+std::vector<Parameter> options_as_parameters(const std::vector<std::string>& options) {
+  std::vector<Parameter> out;
+  for (const std::string& option : options) {
+    const std::size_t equals = option.find('=');
+    Parameter p;
+    p.name = option.substr(0, equals);
+    p.text = equals == std::string::npos ? "" : option.substr(equals + 1);
+    if (equals == std::string::npos || p.text == "true" || p.text == "false") {
+      p.kind = Parameter::Kind::kFlag;
+      p.flag = p.text != "false";
+    } else {
+      try {
+        p.number = topocut::parse_option_number(p.text, p.name);
+        p.kind = Parameter::Kind::kNumber;
+      } catch (const topocut::Error&) {  // a text: its row, if it has one, says what it needs
+        p.kind = Parameter::Kind::kText;
+      }
+    }
+    out.push_back(p);
+  }
+  return out;
+}
+
+// The settings' segmentation options over base (the CLI's for segment(), the incremental segmenter's
+// for update()).
+NodeSettings over(const topocut::SegmentOptions& base, const std::vector<Parameter>& given, std::vector<std::string>* unknown) {
+  NodeSettings settings;
+  settings.segment.options = base;
+  return read_parameters(settings, given, unknown);
+}
+
+// nav_msgs holds the resolution as float32: 0.05 arrives as 0.0500000007. The shortest decimal that
+// reads back as the same float is the one the map was written with, and what `topocut segment` reads.
+double written_resolution(float resolution) {
+  char text[32];
+  const auto end = std::to_chars(text, text + sizeof text - 1, resolution).ptr;
+  *end = '\0';
+  return std::strtod(text, nullptr);
+}
+
+topocut::GridArray array_of(const MapInput& map, const MapSettings& settings) {
+  if (map.size != static_cast<std::size_t>(map.width) * map.height)
+    throw Error("the map's data holds " + std::to_string(map.size) + " values for " + std::to_string(map.width) + " x " +
+                std::to_string(map.height) + " cells");
+  // Before any cell is read: a well-formed map of 2^31 cells would need about 30 GB to segment.
+  if (static_cast<double>(map.width) * map.height > settings.limits.max_megapixels * 1e6)
+    throw Error("the map has " + std::to_string(map.width) + " x " + std::to_string(map.height) +
+                " cells, more than the limit of " + topocut::shortest_number(settings.limits.max_megapixels) +
+                " megapixels (parameter ~max_megapixels)");
+  topocut::GridArray array;
+  array.free_thresh = settings.free_thresh;
+  array.occupied_thresh = settings.occupied_thresh;
+  array.data = map.data;
+  array.width = static_cast<int>(map.width);
+  array.height = static_cast<int>(map.height);
+  array.resolution = written_resolution(map.resolution);
+  array.origin = {map.x, map.y, map.yaw};
+  return array;
+}
+
+std::vector<double> coordinates(const topocut::Ring& ring) {
+  std::vector<double> out;
+  for (const topocut::Point2& p : ring) out.insert(out.end(), {p.x, p.y});
+  return out;
+}
+
+RoomShape shape_of(const topocut::Room& room, const topocut::RoomPlacement& placement) {
+  RoomShape shape;
+  shape.id = room.id;
+  shape.outer = coordinates(room.polygon.outer);
+  for (const topocut::Ring& hole : room.polygon.holes) shape.holes.push_back(coordinates(hole));
+  shape.centre_x = room.centroid.x, shape.centre_y = room.centroid.y;
+  shape.inside_x = placement.inside.x, shape.inside_y = placement.inside.y;
+  shape.min_x = placement.min.x, shape.min_y = placement.min.y;
+  shape.max_x = placement.max.x, shape.max_y = placement.max.y;
+  shape.area = room.area;
+  return shape;
 }
 
 RoomsOutput output_of(const topocut::GridSegmentation& rooms) {
+  const topocut::Segmentation& s = rooms.segmentation;
+  if (!s.rooms.empty() && s.rooms.back().id > 0xffff)
+    throw Error("room id " + std::to_string(s.rooms.back().id) + " does not fit the 16-bit label image");
   RoomsOutput out;
-  const cv::Mat& labels = rooms.segmentation.labels;  // already bottom-up (the array's order)
-  out.labels.resize(labels.total());
+  out.labels.resize(s.labels.total());
   std::size_t k = 0;
-  for (int r = 0; r < labels.rows; ++r) {
-    const int* row = labels.ptr<int>(r);
-    for (int c = 0; c < labels.cols; ++c) out.labels[k++] = static_cast<std::uint16_t>(row[c]);
+  for (int r = 0; r < s.labels.rows; ++r) {  // already bottom-up (the map's order)
+    const int* row = s.labels.ptr<int>(r);
+    for (int c = 0; c < s.labels.cols; ++c) out.labels[k++] = static_cast<std::uint16_t>(row[c]);
   }
-  for (std::size_t i = 0; i < rooms.segmentation.rooms.size(); ++i) {
-    const topocut::Room& room = rooms.segmentation.rooms[i];
-    RoomShape shape{room.id, {}, rooms.placements[i].inside.x, rooms.placements[i].inside.y};
-    for (const topocut::Point2& p : room.polygon.outer) shape.outer.insert(shape.outer.end(), {p.x, p.y});
-    out.rooms.push_back(std::move(shape));
-  }
-  for (const topocut::Passage& p : rooms.segmentation.passages)
-    out.passages.insert(out.passages.end(), {p.cut.a.x, p.cut.a.y, p.cut.b.x, p.cut.b.y});
-  out.json = topocut::rooms_to_json(rooms.segmentation, rooms.placements);
+  for (std::size_t i = 0; i < s.rooms.size(); ++i) out.rooms.push_back(shape_of(s.rooms[i], rooms.placements[i]));
+  for (const topocut::Passage& p : s.passages)
+    out.passages.push_back({p.room_a, p.room_b, p.cut.a.x, p.cut.a.y, p.cut.b.x, p.cut.b.y, p.width, p.door,
+                            topocut::to_string(p.rule)});
+  out.json = topocut::rooms_to_json(s, rooms.placements);
   return out;
+}
+
+double ms_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 
 }  // namespace
 
-RoomsAdapter::RoomsAdapter(const DoubleParameter& number, const FlagParameter& flag) {
-  topocut::GridArray thresholds;
-  const topocut::IncrementalOptions options = read_options(number, flag, thresholds);
-  state_ = std::make_unique<State>(options);
-  state_->thresholds = thresholds;
-  number("max_megapixels", &state_->limits.max_megapixels);
-  topocut::validate(state_->limits);
+std::string parameters_help() {
+  std::string out;
+  auto line = [&](const std::string& name, const std::string& value_name, const std::string& help, const std::string& fallback) {
+    std::string left = "  _" + name + ":=" + (value_name.empty() ? "true" : value_name);
+    if (left.size() < 28) left += std::string(28 - left.size(), ' ');
+    out += left + " " + help + (fallback.empty() ? "" : " (default " + fallback + ")") + "\n";
+  };
+  const NodeSettings defaults{{topocut::IncrementalOptions{}.segment, {}}, {}};
+  for (const auto& row : topocut::segment_option_rows())
+    line(underscored(row.name), row.value_name, row.help, row.is_switch() ? "" : topocut::shortest_number(row.get(defaults.segment)));
+  for (const auto& row : map_option_rows())
+    line(row.name, row.value_name, row.help, topocut::shortest_number(row.get(defaults.map)));
+  return out;
+}
+
+struct RoomsAdapter::State {
+  std::vector<Parameter> parameters;  // as given at start-up, for segment()'s options to go over
+  NodeSettings live;                  // over the incremental segmenter's defaults
+  topocut::IncrementalSegmenter segmenter;
+  std::optional<topocut::GridSegmentation> latest;  // for room_at()
+  State(std::vector<Parameter> given, NodeSettings settings, const topocut::IncrementalOptions& options)
+      : parameters(std::move(given)), live(std::move(settings)), segmenter(options) {}
+};
+
+RoomsAdapter::RoomsAdapter(const std::vector<Parameter>& parameters, std::vector<std::string>& unknown) {
+  topocut::IncrementalOptions options;
+  NodeSettings live = over(options.segment, parameters, &unknown);
+  options.segment = topocut::to_segment_options(live.segment);
+  options.batch_fraction = live.map.batch_fraction;
+  std::vector<std::string> reported;  // the same names again
+  over(topocut::SegmentOptions{}, parameters, &reported);  // segment()'s combination is checked at start-up too
+  state_ = std::make_unique<State>(parameters, live, options);
 }
 
 RoomsAdapter::~RoomsAdapter() = default;
 
 RoomsOutput RoomsAdapter::update(const MapInput& map) {
-  if (map.size != static_cast<std::size_t>(map.width) * map.height)
-    throw topocut::Error("the map's data holds " + std::to_string(map.size) + " values for " +
-                         std::to_string(map.width) + " x " + std::to_string(map.height) + " cells");
-  // Before any cell is read: a well-formed map of 2^31 cells would need about 30 GB to segment.
-  if (static_cast<double>(map.width) * map.height > state_->limits.max_megapixels * 1e6)
-    throw topocut::Error("the map has " + std::to_string(map.width) + " x " + std::to_string(map.height) +
-                         " cells, more than the limit of " + topocut::shortest_number(state_->limits.max_megapixels) +
-                         " megapixels (parameter ~max_megapixels)");
-  topocut::GridArray array = state_->thresholds;
-  array.data = map.data;
-  array.width = static_cast<int>(map.width);
-  array.height = static_cast<int>(map.height);
-  array.resolution = map.resolution;
-  array.origin = {map.x, map.y, map.yaw};
+  const topocut::GridArray array = array_of(map, state_->live.map);
   const topocut::OccupancyGrid grid = topocut::grid_from_array(array);  // validates the array
   const auto start = std::chrono::steady_clock::now();
   const topocut::Segmentation& result = state_->segmenter.update(grid);
-  const double update_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-  if (!result.rooms.empty() && result.rooms.back().id > 0xffff)
-    throw topocut::Error("room id " + std::to_string(result.rooms.back().id) + " does not fit the 16-bit label image");
-  RoomsOutput out = output_of(topocut::in_frame(result, topocut::frame_of(array)));
+  const double update_ms = ms_since(start);
+  topocut::GridSegmentation rooms = topocut::in_frame(result, topocut::frame_of(array));
+  RoomsOutput out = output_of(rooms);
+  state_->latest = std::move(rooms);
   out.update_ms = update_ms;
   const char* kinds[] = {"unchanged", "incremental", "batch"};
   out.kind = kinds[static_cast<int>(state_->segmenter.last_update().kind)];
   return out;
+}
+
+RoomsOutput RoomsAdapter::segment(const MapInput& map, const std::vector<std::string>& options) {
+  std::vector<std::string> reported;  // the start-up parameters' unknown names, reported then
+  NodeSettings settings = over(topocut::SegmentOptions{}, state_->parameters, &reported);
+  settings = read_parameters(settings, options_as_parameters(options), nullptr);
+  const topocut::GridArray array = array_of(map, settings.map);
+  const topocut::OccupancyGrid grid = topocut::grid_from_array(array);
+  const auto start = std::chrono::steady_clock::now();
+  topocut::GridSegmentation rooms =
+      topocut::segment_grid(grid, topocut::frame_of(array), topocut::to_segment_options(settings.segment));
+  const double segment_ms = ms_since(start);
+  RoomsOutput out = output_of(rooms);
+  state_->latest = std::move(rooms);
+  out.update_ms = segment_ms;
+  out.kind = "segment";
+  return out;
+}
+
+int RoomsAdapter::room_at(double x, double y, RoomShape* room) const {
+  if (!state_->latest) return 0;
+  const topocut::GridSegmentation& latest = *state_->latest;
+  const int id = topocut::room_at(latest, {x, y});
+  for (std::size_t i = 0; i < latest.segmentation.rooms.size(); ++i)
+    if (id != 0 && latest.segmentation.rooms[i].id == id) *room = shape_of(latest.segmentation.rooms[i], latest.placements[i]);
+  return id;
 }
 
 }  // namespace topocut_ros

@@ -5,7 +5,6 @@
 // A ROS 2 node would reuse this adapter and replace only the glue.
 #include <cstddef>
 #include <cstdint>
-#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -17,39 +16,72 @@ struct MapInput {
   const std::int8_t* data = nullptr;
   std::size_t size = 0;  // number of values in data (checked against width * height)
   std::uint32_t width = 0, height = 0;
-  double resolution = 0.0;
+  float resolution = 0.0f;  // as nav_msgs/MapMetaData holds it; read as the decimal it was written as
   double x = 0.0, y = 0.0, yaw = 0.0;  // origin pose
 };
 
 struct RoomShape {
   int id = 0;
-  std::vector<double> outer;  // x0, y0, x1, y1, ... (map frame, metres)
-  double inside_x = 0.0, inside_y = 0.0;  // a point inside the room
+  std::vector<double> outer;               // x0, y0, x1, y1, ... (map frame, metres)
+  std::vector<std::vector<double>> holes;  // the same for each hole
+  double centre_x = 0.0, centre_y = 0.0;   // centroid of the room's cells
+  double inside_x = 0.0, inside_y = 0.0;   // a point inside the room
+  double min_x = 0.0, min_y = 0.0, max_x = 0.0, max_y = 0.0;  // bounding box of the outline
+  double area = 0.0;                       // m²
+};
+
+struct PassageShape {
+  int room_a = 0, room_b = 0;
+  double ax = 0.0, ay = 0.0, bx = 0.0, by = 0.0;  // the cut's ends (map frame)
+  double width = 0.0;
+  bool door = false;  // a door, not a wider opening
+  std::string rule;   // the rule that made the cut (cut_rule.h's names)
 };
 
 struct RoomsOutput {
   std::vector<std::uint16_t> labels;  // width * height ids, rows bottom-up (the map's order)
   std::vector<RoomShape> rooms;
-  std::vector<double> passages;       // ax, ay, bx, by per passage (map frame)
+  std::vector<PassageShape> passages;
   std::string json;                   // the rooms JSON (rooms_json.h)
-  double update_ms = 0.0;             // IncrementalSegmenter::update alone
-  std::string kind;                   // "unchanged", "incremental" or "batch"
+  double update_ms = 0.0;             // the library's segmentation call alone
+  std::string kind;                   // "unchanged", "incremental", "batch" (live) or "segment" (a service call)
 };
 
-// Reads one parameter; returns false when it is not set (the library's default then stays).
-using DoubleParameter = std::function<bool(const std::string& name, double* value)>;
-using FlagParameter = std::function<bool(const std::string& name, bool* value)>;
+// One private parameter as the parameter server holds it (its name without the node's namespace).
+struct Parameter {
+  enum class Kind { kNumber, kFlag, kText, kOther };
+  std::string name;
+  Kind kind = Kind::kOther;
+  double number = 0.0;  // kNumber (an int or a double)
+  bool flag = false;    // kFlag
+  std::string text;     // kText; kOther: what it is (a list, a dictionary, ...)
+};
+
+// The parameters topocut_node takes: every option of `topocut segment` (segment_option_rows(), '_'
+// for '-') and the node's own (map_server's free_thresh and occupied_thresh, batch_fraction,
+// max_megapixels), each with its help line and default, for --help.
+std::string parameters_help();
 
 class RoomsAdapter {
  public:
-  // Options from the parameters (the CLI's names with '_' for '-'); throws std::runtime_error
-  // (topocut::Error) on invalid values.
-  RoomsAdapter(const DoubleParameter& number, const FlagParameter& flag);
+  // Options from the parameters. Throws std::runtime_error (topocut::Error) naming the parameter and
+  // the reason for a value of the wrong type or out of range; appends one line per unknown name
+  // (with the nearest known name when one is close) to unknown.
+  RoomsAdapter(const std::vector<Parameter>& parameters, std::vector<std::string>& unknown);
   ~RoomsAdapter();
 
   // Segments the next map incrementally. Throws std::runtime_error with one clear sentence on a
   // malformed map (size, resolution, values: the state is unchanged then) or a room id above 65535.
   RoomsOutput update(const MapInput& map);
+
+  // Segments map at once with the options of `topocut segment`, the parameters and then options
+  // ("name=value", or "name" for a switch on) over them. Throws std::runtime_error on an unknown
+  // option, a bad value or a malformed map. Its rooms become the latest (room_at()).
+  RoomsOutput segment(const MapInput& map, const std::vector<std::string>& options);
+
+  // The id of the room holding (x, y) (map frame) in the latest rooms, update()'s or segment()'s,
+  // and that room in *room; 0 (and *room untouched) when no room holds it or nothing was segmented.
+  int room_at(double x, double y, RoomShape* room) const;
 
  private:
   struct State;

@@ -1,21 +1,27 @@
-// topocut_node: rooms of a growing ROS map, live. Subscribes `map` (nav_msgs/OccupancyGrid, latched
-// or streamed; size and origin may change between messages) and, for every map, runs the library's
-// incremental segmenter (a wholesale change such as a loop closure becomes a batch update with ids
-// kept where rooms overlap), then publishes
+// topocut_node: rooms of a ROS map, live and on request. Subscribes `map` (nav_msgs/OccupancyGrid,
+// latched or streamed; size and origin may change between messages) and, for every map, runs the
+// library's incremental segmenter (a wholesale change such as a loop closure becomes a batch update
+// with ids kept where rooms overlap), then publishes
 //   rooms/labels   sensor_msgs/Image 16UC1: the room id of every cell, in the map's row order and
 //                  header (0 = no room)
+//   rooms/rooms    topocut_msgs/Rooms: the rooms (outline, centre, inside point, bounding box, area)
+//                  and passages (rooms, doorway ends, width, door or opening, rule), typed
 //   rooms/markers  visualization_msgs/MarkerArray: room outlines, ids and passages, for RViz
 //   rooms/graph    std_msgs/String: the rooms JSON (rooms_json.h)
 //   rooms/timing   std_msgs/String: {"update_ms", "callback_ms", "kind", "rooms"} of that map
+// and answers
+//   rooms/segment_map  topocut_msgs/SegmentMap: one map segmented at once, as `topocut segment` does
+//   rooms/room_at      topocut_msgs/RoomAt: the room holding a point, in the latest rooms
 // A thin adapter: the conversion, segmentation and JSON are the library's, behind rooms_adapter.h
 // (this file is C++17 because ROS 1's message headers are); it only moves values between messages
 // and the adapter. Parameters (private, `~name`) carry the CLI's option names with '_' for '-', and
-// the library's defaults.
+// the library's defaults; `topocut_node --help` lists them.
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdint>
-#include <algorithm>
 #include <cstdio>
+#include <iostream>
 #include <string>
 #include <vector>
 
@@ -23,6 +29,9 @@
 #include <ros/ros.h>
 #include <sensor_msgs/Image.h>
 #include <std_msgs/String.h>
+#include <topocut_msgs/RoomAt.h>
+#include <topocut_msgs/Rooms.h>
+#include <topocut_msgs/SegmentMap.h>
 #include <visualization_msgs/MarkerArray.h>
 
 #include "rooms_adapter.h"
@@ -31,12 +40,34 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
+const char* const kUsage =
+    "usage: topocut_node [map:=TOPIC] [__name:=NAME] [_PARAMETER:=VALUE ...]   (or: rosrun, roslaunch)\n"
+    "Rooms of the nav_msgs/OccupancyGrid on `map`, segmented incrementally for every map and published on\n"
+    "rooms/labels (sensor_msgs/Image 16UC1), rooms/rooms (topocut_msgs/Rooms), rooms/markers (RViz),\n"
+    "rooms/graph (the rooms JSON) and rooms/timing; services rooms/segment_map (topocut_msgs/SegmentMap:\n"
+    "one map segmented at once, as `topocut segment` does) and rooms/room_at (topocut_msgs/RoomAt).\n"
+    "Parameters (private; an unknown name is warned about, a bad value stops the node with the reason):\n";
+
 double ms_between(Clock::time_point a, Clock::time_point b) {
   return std::chrono::duration<double, std::milli>(b - a).count();
 }
 
 double yaw_of(const geometry_msgs::Quaternion& q) {
   return std::atan2(2.0 * (q.w * q.z + q.x * q.y), 1.0 - 2.0 * (q.y * q.y + q.z * q.z));
+}
+
+// The map's values and metadata, viewed (msg must outlive the result).
+topocut_ros::MapInput map_input(const nav_msgs::OccupancyGrid& msg) {
+  topocut_ros::MapInput map;
+  map.data = msg.data.data();
+  map.size = msg.data.size();
+  map.width = msg.info.width;
+  map.height = msg.info.height;
+  map.resolution = msg.info.resolution;
+  map.x = msg.info.origin.position.x;
+  map.y = msg.info.origin.position.y;
+  map.yaw = yaw_of(msg.info.origin.orientation);
+  return map;
 }
 
 sensor_msgs::Image labels_image(const std_msgs::Header& header, std::uint32_t width, std::uint32_t height,
@@ -77,6 +108,48 @@ geometry_msgs::Point point_of(double x, double y) {
   return out;
 }
 
+geometry_msgs::Polygon polygon_of(const std::vector<double>& xy) {
+  geometry_msgs::Polygon out;
+  for (std::size_t i = 0; i + 1 < xy.size(); i += 2) {
+    geometry_msgs::Point32 p;
+    p.x = static_cast<float>(xy[i]);
+    p.y = static_cast<float>(xy[i + 1]);
+    out.points.push_back(p);
+  }
+  return out;
+}
+
+topocut_msgs::Room room_message(const topocut_ros::RoomShape& room) {
+  topocut_msgs::Room out;
+  out.id = static_cast<std::uint32_t>(room.id);
+  out.outline = polygon_of(room.outer);
+  for (const std::vector<double>& hole : room.holes) out.holes.push_back(polygon_of(hole));
+  out.centre = point_of(room.centre_x, room.centre_y);
+  out.inside = point_of(room.inside_x, room.inside_y);
+  out.min = point_of(room.min_x, room.min_y);
+  out.max = point_of(room.max_x, room.max_y);
+  out.area = room.area;
+  return out;
+}
+
+topocut_msgs::Rooms rooms_message(const std_msgs::Header& header, const topocut_ros::RoomsOutput& rooms) {
+  topocut_msgs::Rooms out;
+  out.header = header;
+  for (const topocut_ros::RoomShape& room : rooms.rooms) out.rooms.push_back(room_message(room));
+  for (const topocut_ros::PassageShape& p : rooms.passages) {
+    topocut_msgs::Passage passage;
+    passage.room_a = static_cast<std::uint32_t>(p.room_a);
+    passage.room_b = static_cast<std::uint32_t>(p.room_b);
+    passage.a = point_of(p.ax, p.ay);
+    passage.b = point_of(p.bx, p.by);
+    passage.width = p.width;
+    passage.kind = p.door ? topocut_msgs::Passage::DOOR : topocut_msgs::Passage::OPENING;
+    passage.rule = p.rule;
+    out.passages.push_back(passage);
+  }
+  return out;
+}
+
 visualization_msgs::Marker marker(const std_msgs::Header& header, const std::string& ns, int id, int type) {
   visualization_msgs::Marker m;
   m.header = header;
@@ -113,49 +186,94 @@ visualization_msgs::MarkerArray room_markers(const std_msgs::Header& header, con
   visualization_msgs::Marker passages = marker(header, "passages", 0, visualization_msgs::Marker::LINE_LIST);
   passages.scale.x = 3.0 * resolution;
   passages.color.r = passages.color.a = 1.0f;
-  for (std::size_t i = 0; i + 3 < rooms.passages.size(); i += 4) {
-    passages.points.push_back(point_of(rooms.passages[i], rooms.passages[i + 1]));
-    passages.points.push_back(point_of(rooms.passages[i + 2], rooms.passages[i + 3]));
+  for (const topocut_ros::PassageShape& p : rooms.passages) {
+    passages.points.push_back(point_of(p.ax, p.ay));
+    passages.points.push_back(point_of(p.bx, p.by));
   }
   out.markers.push_back(passages);
   return out;
 }
 
+// The node's private parameters as the adapter reads them (names without the node's namespace).
+std::vector<topocut_ros::Parameter> private_parameters(const ros::NodeHandle& private_nh) {
+  std::vector<std::string> names;
+  ros::param::getParamNames(names);
+  const std::string prefix = private_nh.getNamespace() + "/";
+  std::vector<topocut_ros::Parameter> out;
+  for (const std::string& name : names) {
+    if (name.compare(0, prefix.size(), prefix) != 0) continue;
+    XmlRpc::XmlRpcValue value;
+    if (!private_nh.getParam(name, value)) continue;
+    topocut_ros::Parameter p;
+    p.name = name.substr(prefix.size());
+    switch (value.getType()) {
+      case XmlRpc::XmlRpcValue::TypeInt: p.kind = topocut_ros::Parameter::Kind::kNumber, p.number = static_cast<int>(value); break;
+      case XmlRpc::XmlRpcValue::TypeDouble: p.kind = topocut_ros::Parameter::Kind::kNumber, p.number = static_cast<double>(value); break;
+      case XmlRpc::XmlRpcValue::TypeBoolean: p.kind = topocut_ros::Parameter::Kind::kFlag, p.flag = static_cast<bool>(value); break;
+      case XmlRpc::XmlRpcValue::TypeString: p.kind = topocut_ros::Parameter::Kind::kText, p.text = static_cast<std::string>(value); break;
+      default: p.text = value.toXml(); break;
+    }
+    out.push_back(p);
+  }
+  return out;
+}
+
 class RoomsNode {
  public:
-  explicit RoomsNode(ros::NodeHandle& nh, const ros::NodeHandle& private_nh)
-      : adapter_([&](const std::string& name, double* value) { return private_nh.getParam(name, *value); },
-                 [&](const std::string& name, bool* value) { return private_nh.getParam(name, *value); }) {
+  RoomsNode(ros::NodeHandle& nh, const std::vector<topocut_ros::Parameter>& parameters, std::vector<std::string>& unknown)
+      : adapter_(parameters, unknown) {
     labels_ = nh.advertise<sensor_msgs::Image>("rooms/labels", 1, true);
+    rooms_ = nh.advertise<topocut_msgs::Rooms>("rooms/rooms", 1, true);
     markers_ = nh.advertise<visualization_msgs::MarkerArray>("rooms/markers", 1, true);
     graph_ = nh.advertise<std_msgs::String>("rooms/graph", 1, true);
     timing_ = nh.advertise<std_msgs::String>("rooms/timing", 10);
+    segment_ = nh.advertiseService("rooms/segment_map", &RoomsNode::on_segment, this);
+    room_at_ = nh.advertiseService("rooms/room_at", &RoomsNode::on_room_at, this);
     map_ = nh.subscribe("map", 1, &RoomsNode::on_map, this);
   }
 
  private:
   void on_map(const nav_msgs::OccupancyGrid::ConstPtr& msg) {
     const Clock::time_point received = Clock::now();
-    const nav_msgs::MapMetaData& info = msg->info;
-    topocut_ros::MapInput map;
-    map.data = msg->data.data();
-    map.size = msg->data.size();
-    map.width = info.width;
-    map.height = info.height;
-    map.resolution = info.resolution;
-    map.x = info.origin.position.x;
-    map.y = info.origin.position.y;
-    map.yaw = yaw_of(info.origin.orientation);
     try {
-      const topocut_ros::RoomsOutput rooms = adapter_.update(map);
-      labels_.publish(labels_image(msg->header, info.width, info.height, rooms.labels));
-      markers_.publish(room_markers(msg->header, rooms, info.resolution));
+      const topocut_ros::RoomsOutput rooms = adapter_.update(map_input(*msg));
+      latest_ = msg->header;
+      labels_.publish(labels_image(msg->header, msg->info.width, msg->info.height, rooms.labels));
+      rooms_.publish(rooms_message(msg->header, rooms));
+      markers_.publish(room_markers(msg->header, rooms, msg->info.resolution));
       std_msgs::String graph;
       graph.data = rooms.json;
       graph_.publish(graph);
       publish_timing(rooms, ms_between(received, Clock::now()));
     } catch (const std::exception& e) {  // a malformed map or bad values: logged, skipped, never fatal
       ROS_ERROR("topocut_node: skipped a map: %s", e.what());
+    }
+  }
+
+  bool on_segment(topocut_msgs::SegmentMap::Request& request, topocut_msgs::SegmentMap::Response& response) {
+    try {
+      const topocut_ros::RoomsOutput rooms = adapter_.segment(map_input(request.map), request.options);
+      latest_ = request.map.header;
+      response.rooms = rooms_message(request.map.header, rooms);
+      response.labels = labels_image(request.map.header, request.map.info.width, request.map.info.height, rooms.labels);
+      response.json = rooms.json;
+    } catch (const std::exception& e) {  // the caller reads why in response.error
+      response.error = e.what();
+      ROS_WARN("topocut_node: segment_map: %s", e.what());
+    }
+    return true;
+  }
+
+  bool on_room_at(topocut_msgs::RoomAt::Request& request, topocut_msgs::RoomAt::Response& response) {
+    try {
+      topocut_ros::RoomShape room;
+      response.id = static_cast<std::uint32_t>(adapter_.room_at(request.point.x, request.point.y, &room));
+      if (response.id != 0) response.room = room_message(room);
+      response.header = latest_;
+      return true;
+    } catch (const std::exception& e) {  // a non-finite point
+      ROS_WARN("topocut_node: room_at: %s", e.what());
+      return false;
     }
   }
 
@@ -169,17 +287,32 @@ class RoomsNode {
   }
 
   topocut_ros::RoomsAdapter adapter_;
-  ros::Publisher labels_, markers_, graph_, timing_;
+  std_msgs::Header latest_;  // of the map the latest rooms are of
+  ros::Publisher labels_, rooms_, markers_, graph_, timing_;
+  ros::ServiceServer segment_, room_at_;
   ros::Subscriber map_;
 };
 
 }  // namespace
 
 int main(int argc, char** argv) {
+  // Before ros::init, which would register with the master (and replace a running node of this name).
+  std::vector<std::string> args;
+  ros::removeROSArgs(argc, argv, args);
+  for (std::size_t i = 1; i < args.size(); ++i) {
+    if (args[i] == "--help" || args[i] == "-h") {
+      std::cout << kUsage << topocut_ros::parameters_help();
+      return 0;
+    }
+    std::cerr << "topocut_node: unknown argument '" << args[i] << "' (topocut_node --help lists what it takes)\n";
+    return 2;
+  }
   ros::init(argc, argv, "topocut");
   ros::NodeHandle nh, private_nh("~");
   try {
-    RoomsNode node(nh, private_nh);
+    std::vector<std::string> unknown;
+    RoomsNode node(nh, private_parameters(private_nh), unknown);
+    for (const std::string& line : unknown) ROS_WARN("topocut_node: %s", line.c_str());
     ros::spin();
   } catch (const std::exception& e) {  // bad parameters: one clear line, non-zero exit
     ROS_FATAL("topocut_node: %s", e.what());

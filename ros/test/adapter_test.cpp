@@ -1,24 +1,52 @@
-// The node's adapter without a master (issue 28): a well-formed map of 2^31 cells, and any map
-// above the ~max_megapixels parameter, is refused with one sentence before a cell is read (the
-// data pointer here is null: reading a cell would crash), and the adapter answers the next map.
+// The node's adapter without a master: maps it must refuse before reading a cell (issue 28), the
+// parameters checked against the option table, the segment service's batch rooms (those of the
+// library's segment_grid() with the CLI's defaults, at the resolution the map was written with)
+// and the room at a point (issue 26).
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include <gtest/gtest.h>
 
 #include "rooms_adapter.h"
+#include "topocut/topocut.h"
 
 namespace {
 
-topocut_ros::RoomsAdapter adapter_with(double max_megapixels) {
-  return topocut_ros::RoomsAdapter(
-      [max_megapixels](const std::string& name, double* value) {
-        if (name != "max_megapixels" || max_megapixels <= 0) return false;
-        *value = max_megapixels;
-        return true;
-      },
-      [](const std::string&, bool*) { return false; });
+using topocut_ros::Parameter;
+
+// A parameter as the server holds it: a number, a bool or a text.
+template <typename Value>
+Parameter given(const std::string& name, Value value) {
+  Parameter p;
+  p.name = name;
+  if constexpr (std::is_same_v<Value, bool>) {
+    p.kind = Parameter::Kind::kFlag;
+    p.flag = value;
+  } else if constexpr (std::is_arithmetic_v<Value>) {
+    p.kind = Parameter::Kind::kNumber;
+    p.number = value;
+  } else {
+    p.kind = Parameter::Kind::kText;
+    p.text = value;
+  }
+  return p;
+}
+
+topocut_ros::RoomsAdapter adapter_with(const std::vector<Parameter>& parameters = {}) {
+  std::vector<std::string> unknown;
+  return topocut_ros::RoomsAdapter(parameters, unknown);
+}
+
+// Why the adapter refuses parameters, or "" when it takes them.
+std::string refusal(const std::vector<Parameter>& parameters) {
+  try {
+    adapter_with(parameters);
+  } catch (const std::runtime_error& e) {
+    return e.what();
+  }
+  return "";
 }
 
 std::string refusal(topocut_ros::RoomsAdapter& adapter, const topocut_ros::MapInput& map) {
@@ -30,13 +58,28 @@ std::string refusal(topocut_ros::RoomsAdapter& adapter, const topocut_ros::MapIn
   return "";
 }
 
+// Two 3 m rooms side by side, walls 0.1 m thick, a 0.8 m door between them (nav_msgs values, rows
+// bottom-up, 0.05 m cells).
+struct TwoRooms {
+  static constexpr int kWidth = 128, kHeight = 64;
+  std::vector<std::int8_t> cells = std::vector<std::int8_t>(kWidth * kHeight, 100);
+  TwoRooms() {
+    for (int r = 2; r < kHeight - 2; ++r)
+      for (int c = 2; c < kWidth - 2; ++c)
+        if (c < 62 || c > 65 || (r >= 24 && r < 40)) cells[r * kWidth + c] = 0;
+  }
+  topocut_ros::MapInput map(double x = 0.0, double y = 0.0) const {
+    return {cells.data(), cells.size(), kWidth, kHeight, 0.05f, x, y, 0.0};
+  }
+};
+
 TEST(RosAdapter, AMapOfTwoToTheThirtyOneCellsIsRefusedBeforeItsCellsAreRead) {
-  topocut_ros::RoomsAdapter adapter = adapter_with(0);
+  topocut_ros::RoomsAdapter adapter = adapter_with();
   topocut_ros::MapInput huge;
   huge.width = 65536;
   huge.height = 32768;
   huge.size = static_cast<std::size_t>(huge.width) * huge.height;  // well formed: 2^31 values
-  huge.resolution = 0.05;
+  huge.resolution = 0.05f;
   EXPECT_EQ(refusal(adapter, huge), "the map has 65536 x 32768 cells, more than the limit of 100 megapixels (parameter ~max_megapixels)");
   huge.width = 0xffffffffu;  // wider than an int
   huge.height = 1;
@@ -47,16 +90,109 @@ TEST(RosAdapter, AMapOfTwoToTheThirtyOneCellsIsRefusedBeforeItsCellsAreRead) {
   std::vector<std::int8_t> cells(60 * 40, 100);
   for (int r = 2; r < 38; ++r)
     for (int c = 2; c < 58; ++c) cells[r * 60 + c] = 0;
-  topocut_ros::MapInput room{cells.data(), cells.size(), 60, 40, 0.05};
+  topocut_ros::MapInput room{cells.data(), cells.size(), 60, 40, 0.05f};
   EXPECT_EQ(adapter.update(room).rooms.size(), 1u);
 }
 
 TEST(RosAdapter, TheLimitIsAParameter) {
   std::vector<std::int8_t> cells(2000 * 1000, 0);
-  topocut_ros::MapInput map{cells.data(), cells.size(), 2000, 1000, 0.05};
-  topocut_ros::RoomsAdapter small = adapter_with(1.5);
+  topocut_ros::MapInput map{cells.data(), cells.size(), 2000, 1000, 0.05f};
+  topocut_ros::RoomsAdapter small = adapter_with({given("max_megapixels", 1.5)});
   EXPECT_EQ(refusal(small, map), "the map has 2000 x 1000 cells, more than the limit of 1.5 megapixels (parameter ~max_megapixels)");
-  EXPECT_THROW(adapter_with(5000), std::runtime_error);  // above the library's ceiling
+  EXPECT_NE(refusal({given("max_megapixels", 5000)}), "");  // above the library's ceiling
+}
+
+TEST(RosAdapter, BadParameterValuesAreRefusedWithTheReason) {
+  EXPECT_EQ(refusal({given("concavity", -1)}), "~concavity must lie in (0, 100000] metres, got -1");
+  EXPECT_EQ(refusal({given("door_width", "wide")}), "~door_width needs a number, not 'wide'");
+  EXPECT_EQ(refusal({given("no_merge", 1)}), "~no_merge is a switch: true or false, not 1");
+  EXPECT_EQ(refusal({given("fold_area", true)}), "~fold_area needs a number, not true");
+  EXPECT_EQ(refusal({given("free_thresh", 2)}), "~free_thresh must be a probability in [0, 1]");
+  EXPECT_NE(refusal({given("parity", true), given("no_merge", true)}), "");  // a combination the CLI refuses too
+  EXPECT_EQ(refusal({given("concavity", 3), given("no_merge", true), given("robot_radius", 0)}), "");
+}
+
+TEST(RosAdapter, UnknownParametersAreWarnedWithTheNearestName) {
+  std::vector<std::string> unknown;
+  topocut_ros::RoomsAdapter adapter({given("concavty", 3), given("door_width", 1.5), given("frame", "map")}, unknown);
+  ASSERT_EQ(unknown.size(), 2u);
+  EXPECT_EQ(unknown[0], "~concavty is not a parameter of topocut_node, ignored (did you mean ~concavity?)");
+  EXPECT_EQ(unknown[1], "~frame is not a parameter of topocut_node, ignored");
+}
+
+TEST(RosAdapter, SegmentGivesTheLibrarysBatchRoomsAtTheWrittenResolution) {
+  const TwoRooms two;
+  topocut_ros::RoomsAdapter adapter = adapter_with();
+  const topocut_ros::RoomsOutput out = adapter.segment(two.map(1.0, -2.0), {});
+  // What `topocut segment` computes: the CLI's defaults, 0.05 m (not float32's 0.0500000007).
+  topocut::GridArray array;
+  array.data = two.cells.data();
+  array.width = TwoRooms::kWidth;
+  array.height = TwoRooms::kHeight;
+  array.resolution = 0.05;
+  array.origin = {1.0, -2.0, 0.0};
+  const topocut::GridSegmentation expected =
+      topocut::segment_grid(topocut::grid_from_array(array), topocut::frame_of(array), topocut::SegmentOptions{});
+  ASSERT_EQ(expected.segmentation.rooms.size(), 2u);
+  EXPECT_EQ(out.json, topocut::rooms_to_json(expected.segmentation, expected.placements));
+  ASSERT_EQ(out.labels.size(), two.cells.size());
+  for (int r = 0; r < TwoRooms::kHeight; ++r)
+    for (int c = 0; c < TwoRooms::kWidth; ++c)
+      ASSERT_EQ(out.labels[r * TwoRooms::kWidth + c], expected.segmentation.labels.at<int>(r, c)) << r << "," << c;
+  ASSERT_EQ(out.passages.size(), 1u);
+  EXPECT_TRUE(out.passages[0].door);
+  EXPECT_NEAR(out.passages[0].width, 0.8, 0.051);
+  EXPECT_EQ(out.kind, "segment");
+}
+
+TEST(RosAdapter, SegmentOptionsGoOverTheParametersAndAreChecked) {
+  const TwoRooms two;
+  topocut_ros::RoomsAdapter adapter = adapter_with({given("no_doors", true)});
+  auto error = [&](const std::vector<std::string>& options) {
+    try {
+      adapter.segment(two.map(), options);
+    } catch (const std::runtime_error& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  EXPECT_EQ(error({"concavty=3"}), "~concavty is not a parameter of topocut_node (did you mean ~concavity?)");
+  EXPECT_EQ(error({"concavity=abc"}), "~concavity needs a number, not 'abc'");
+  EXPECT_EQ(error({"frame=map"}), "~frame is not a parameter of topocut_node");
+  EXPECT_EQ(error({"no_merge=1"}), "~no_merge is a switch: true or false, not 1");
+  EXPECT_EQ(error({"door-width=-2"}), "~door-width must lie in (0, 100000] metres, got -2");
+  // The parameter (no door cuts) holds unless a call turns it off again.
+  const std::string doors_off = adapter.segment(two.map(), {}).json;
+  EXPECT_EQ(doors_off, adapter_with().segment(two.map(), {"no_doors"}).json);
+  const std::string doors_on = adapter.segment(two.map(), {"no_doors=false"}).json;
+  EXPECT_EQ(doors_on, adapter_with().segment(two.map(), {}).json);
+  EXPECT_NE(doors_on, doors_off);
+  EXPECT_EQ(adapter.segment(two.map(), {"trivial", "concavity=1"}).rooms.size(), 1u);
+}
+
+TEST(RosAdapter, RoomAtAnswersFromTheLatestRooms) {
+  const TwoRooms two;
+  topocut_ros::RoomsAdapter adapter = adapter_with();
+  topocut_ros::RoomShape room;
+  EXPECT_EQ(adapter.room_at(1.0, 1.0, &room), 0);  // nothing segmented yet
+  const topocut_ros::RoomsOutput out = adapter.segment(two.map(10.0, 20.0), {});
+  ASSERT_EQ(out.rooms.size(), 2u);
+  for (const topocut_ros::RoomShape& expected : out.rooms) {
+    EXPECT_EQ(adapter.room_at(expected.inside_x, expected.inside_y, &room), expected.id);
+    EXPECT_EQ(room.id, expected.id);
+    EXPECT_EQ(room.outer, expected.outer);
+    EXPECT_EQ(room.area, expected.area);
+    EXPECT_TRUE(room.min_x <= room.inside_x && room.inside_x <= room.max_x && room.min_y <= room.inside_y &&
+                room.inside_y <= room.max_y);
+  }
+  room = {};
+  EXPECT_EQ(adapter.room_at(10.0 + 64 * 0.05, 20.0 + 5 * 0.05, &room), 0);  // in the dividing wall
+  EXPECT_EQ(room.id, 0);
+  EXPECT_EQ(adapter.room_at(0.0, 0.0, &room), 0);                          // off the map
+  // A live update becomes the latest: a map moved by 100 m has its rooms there.
+  adapter.update(two.map(110.0, 20.0));
+  EXPECT_EQ(adapter.room_at(out.rooms[0].inside_x, out.rooms[0].inside_y, &room), 0);
+  EXPECT_NE(adapter.room_at(out.rooms[0].inside_x + 100.0, out.rooms[0].inside_y, &room), 0);
 }
 
 }  // namespace

@@ -1,10 +1,11 @@
 #!/usr/bin/python3
 """The README's ROS 1 start on the loopback only: a private rosmaster on a free port of 127.0.0.1,
-topocut_node, and examples/ros_rooms.py feeding it the bundled floor plan; the rooms it prints must
-be the library's (the rooms JSON of `topocut segment --out-json`). Every wait is bounded; the master
-and the node are stopped whatever happens. Exit 77: skipped.
+topocut_node, and examples/ros_rooms.py feeding it the bundled floor plan, on /map and through the
+service rooms/segment_map, then asking rooms/room_at; the rooms it prints must be the library's (the
+rooms JSON of `topocut segment --out-json`) and the room at the point `topocut segment --at`'s. Every
+wait is bounded; the master and the node are stopped whatever happens. Exit 77: skipped.
 
-    example_test.py --node NODE --rosmaster ROSMASTER --cli TOPOCUT --source SOURCE_DIR --python-path DIR
+    example_test.py --node NODE --rosmaster ROSMASTER --cli TOPOCUT --source SOURCE_DIR --python-path DIR --msgs DIR
 """
 import argparse
 import json
@@ -16,12 +17,12 @@ import sys
 import tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from node_test import free_port, stop, wait_for  # noqa: E402
+from node_test import private_master, stop  # noqa: E402
 
 
 def main():
     parser = argparse.ArgumentParser()
-    for name in ("node", "rosmaster", "cli", "source", "python-path"):
+    for name in ("node", "rosmaster", "cli", "source", "python-path", "msgs"):
         parser.add_argument("--" + name, required=True)
     args = parser.parse_args()
     if not os.path.isdir(os.path.join(args.python_path, "topocut")):
@@ -29,36 +30,33 @@ def main():
         return 77
     signal.alarm(60)
     work = tempfile.mkdtemp(prefix="topocut_ros_example_")
-    port = free_port()
-    env = dict(os.environ, ROS_MASTER_URI="http://127.0.0.1:%d" % port, ROS_IP="127.0.0.1", ROS_HOSTNAME="127.0.0.1",
-               ROS_HOME=work, ROS_LOG_DIR=work, PYTHONPATH=args.python_path)
-    os.environ.update(env)
     floorplan = os.path.join(args.source, "maps", "floorplan.yaml")
     master = node = None
     try:
-        master = subprocess.Popen([args.rosmaster, "--core", "-p", str(port)], env=env, start_new_session=True,
-                                  stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
-        import rosgraph
-        wait_for(lambda: rosgraph.is_master_online(), "rosmaster on port %d" % port)
+        master, env = private_master(args.rosmaster, work)
+        env["PYTHONPATH"] = args.msgs + os.pathsep + args.python_path
         node = subprocess.Popen([args.node], env=env, start_new_session=True, stdout=subprocess.DEVNULL,
                                 stderr=subprocess.DEVNULL)
-        out = subprocess.run([sys.executable, os.path.join(args.source, "examples", "ros_rooms.py"), floorplan],
-                             env=env, capture_output=True, text=True, timeout=45)
-        if out.returncode != 0:
-            print(out.stdout, out.stderr)
-            return 1
-        subprocess.run([args.cli, "segment", floorplan, "--out-json", os.path.join(work, "rooms.json")], check=True,
-                       capture_output=True, timeout=30)
+        point = "4.4,6.9"
+        cli = subprocess.run([args.cli, "segment", floorplan, "--out-json", os.path.join(work, "rooms.json"), "--at", point],
+                             check=True, capture_output=True, text=True, timeout=30)
         with open(os.path.join(work, "rooms.json")) as f:
             rooms = json.load(f)
-        expected = [f"room {r['id']}: {r['area']:.1f} m², inside ({r['inside'][0]:.2f}, {r['inside'][1]:.2f})" for r in rooms["rooms"]]
+        expected = [f"room {r['id']}: {r['area']:.1f} m², inside ({r['inside'][0]:.3f}, {r['inside'][1]:.3f})" for r in rooms["rooms"]]
         expected += [f"passage {p['rooms'][0]} - {p['rooms'][1]}: {p['kind']}, {p['width']:.2f} m" for p in rooms["passages"]]
-        printed = out.stdout.strip().splitlines()
-        if printed != expected:
-            print("examples/ros_rooms.py printed:\n%s\nthe command's rooms are:\n%s" % ("\n".join(printed), "\n".join(expected)))
-            return 1
+        expected += [line for line in cli.stdout.splitlines() if line.startswith("at ")]
+        assert expected[-1].startswith("at " + point + ": room "), cli.stdout
+        for mode in ([], ["--service"]):
+            out = subprocess.run([sys.executable, os.path.join(args.source, "examples", "ros_rooms.py"), floorplan, "--at", point]
+                                 + mode, env=env, capture_output=True, text=True, timeout=45)
+            printed = out.stdout.strip().splitlines()
+            if out.returncode != 0 or printed != expected:
+                print("examples/ros_rooms.py %s printed:\n%s%s\nthe command's rooms are:\n%s" %
+                      (" ".join(mode), out.stdout, out.stderr, "\n".join(expected)))
+                return 1
         print("\n".join(printed))
-        print("ros_rooms.py printed the command's %d rooms and %d passages" % (len(rooms["rooms"]), len(rooms["passages"])))
+        print("ros_rooms.py printed the command's %d rooms, %d passages and room at %s, on /map and from rooms/segment_map" %
+              (len(rooms["rooms"]), len(rooms["passages"]), point))
         return 0
     finally:
         stop(node)

@@ -16,7 +16,6 @@ Exit status 0: passed, 1: a check failed, 77: skipped (no map).
 import argparse
 import os
 import shutil
-import signal
 import statistics
 import subprocess
 import sys
@@ -24,7 +23,7 @@ import tempfile
 import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from node_test import (free_port, growing_sequence, occupancy_grid_message, read_grid, stop,  # noqa: E402
+from node_test import (growing_sequence, occupancy_grid_message, private_master, read_grid, stop,  # noqa: E402
                        wait_for)
 
 
@@ -104,15 +103,8 @@ def main():
         print("skipped: the map %s is not there" % args.map)
         return 77
     work = tempfile.mkdtemp(prefix="topocut_node_soak_")
-    port = free_port()
-    env = dict(os.environ, ROS_MASTER_URI="http://127.0.0.1:%d" % port, ROS_IP="127.0.0.1",
-               ROS_HOSTNAME="127.0.0.1", ROS_HOME=work, ROS_LOG_DIR=work)
-    os.environ.update(env)
-    master = subprocess.Popen([args.rosmaster, "--core", "-p", str(port)], env=env, start_new_session=True,
-                              stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    master, env = private_master(args.rosmaster, work)
     try:
-        import rosgraph
-        wait_for(lambda: rosgraph.is_master_online(), "rosmaster on port %d" % port)
         result = soak(args, env, work)
         if result == 0:
             shutil.rmtree(work, ignore_errors=True)

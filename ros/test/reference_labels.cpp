@@ -59,7 +59,7 @@ void replay(const std::string& dir, const std::vector<std::string>& grids) {
     array.data = g.values.data();
     array.width = g.width;
     array.height = g.height;
-    array.resolution = static_cast<float>(g.resolution);  // nav_msgs/MapMetaData holds it as float32
+    array.resolution = g.resolution;  // the node reads float32 0.0500000007 as the 0.05 written
     array.origin = {g.x, g.y, 0.0};
     const topocut::Segmentation& result = segmenter.update(topocut::grid_from_array(array));
     std::ofstream labels(dir + "/labels_" + std::to_string(k) + ".u16", std::ios::binary);
