@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <optional>
 
+#include "topocut/core/option_names.h"
 #include "topocut/core/option_table.h"
 #include "topocut/io/image_input.h"  // ImageLimits
 #include "topocut/segmentation/room_at.h"
@@ -72,27 +73,9 @@ std::vector<std::string> known_names() {
   return names;
 }
 
-std::size_t edit_distance(const std::string& a, const std::string& b) {
-  std::vector<std::size_t> row(b.size() + 1);
-  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
-  for (std::size_t i = 1; i <= a.size(); ++i) {
-    std::size_t diagonal = row[0];
-    row[0] = i;
-    for (std::size_t j = 1; j <= b.size(); ++j) {
-      const std::size_t up = row[j];
-      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] != b[j - 1])});
-      diagonal = up;
-    }
-  }
-  return row[b.size()];
-}
-
 // "~name is not a parameter of topocut_node[, ignored] (did you mean ~nearest?)": close means a typo's distance.
 std::string unknown_name(const std::string& name, bool ignored) {
-  std::string best;
-  std::size_t best_distance = 3;
-  for (const std::string& known : known_names())
-    if (const std::size_t d = edit_distance(name, known); d < best_distance) best = known, best_distance = d;
+  const std::string best = topocut::closest_option_name(name, known_names());
   return "~" + name + " is not a parameter of topocut_node" + (ignored ? ", ignored" : "") + (best.empty() ? "" : " (did you mean ~" + best + "?)");
 }
 

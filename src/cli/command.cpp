@@ -3,6 +3,8 @@
 
 #include <iostream>
 
+#include "topocut/core/option_names.h"
+
 namespace topocut::cli {
 
 namespace {
@@ -38,7 +40,25 @@ void reject_options_taken_as_values(const po::variables_map& vm, const po::optio
   }
 }
 
+// args with every option's name written with '-' for '_' (--robot_radius is --robot-radius); values,
+// operands and what follows "--" stay as given.
+std::vector<std::string> dashed_names(std::vector<std::string> args) {
+  for (std::string& arg : args) {
+    if (arg == "--") break;
+    if (arg.size() < 3 || arg.compare(0, 2, "--") != 0) continue;
+    const std::size_t end = std::min(arg.find('='), arg.size());
+    arg = "--" + dashed_option_name(arg.substr(2, end - 2)) + arg.substr(end);
+  }
+  return args;
+}
+
 }  // namespace
+
+std::vector<std::string> option_names(const po::options_description& options) {
+  std::vector<std::string> names;
+  for (const auto& option : options.options()) names.push_back(option->long_name());
+  return names;
+}
 
 std::optional<po::variables_map> parse_options(const std::string& usage, const std::string& description,
                                                const po::options_description& options,
@@ -51,7 +71,7 @@ std::optional<po::variables_map> parse_options(const std::string& usage, const s
   all.add(options);
   po::variables_map vm;
   try {
-    po::store(po::command_line_parser(args).options(all).positional(positional).run(), vm);
+    po::store(po::command_line_parser(dashed_names(args)).options(all).positional(positional).run(), vm);
     if (vm.count("help")) {
       std::cout << "Usage: " << usage << "\n\n" << description << "\n\n" << all << std::flush;
       return std::nullopt;
@@ -59,6 +79,10 @@ std::optional<po::variables_map> parse_options(const std::string& usage, const s
     // Stored second, so every option the command line gave keeps its value.
     if (vm.count("config")) po::store(config_file_options(vm["config"].as<std::string>(), all), vm);
     po::notify(vm);
+  } catch (const po::unknown_option& e) {
+    const std::string name = e.get_option_name();
+    const std::string meant = name.compare(0, 2, "--") == 0 ? closest_option_name(name.substr(2), option_names(all)) : "";
+    throw UsageError(std::string(e.what()) + (meant.empty() ? "" : " (did you mean '--" + meant + "'?)"));
   } catch (const po::error& e) {
     throw UsageError(e.what());
   }

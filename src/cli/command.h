@@ -34,8 +34,12 @@ bool register_command(Command command);
 // All registered commands, by name.
 const std::map<std::string, Command>& commands();
 
+// The long names of options ("robot-radius"), for "did you mean" hints.
+std::vector<std::string> option_names(const po::options_description& options);
+
 // Parses args for a command. Prints usage and returns nullopt on --help; throws UsageError on bad
-// options. `usage` is the synopsis line, e.g. "topocut segment MAP [options]".
+// options (an unknown one with the name meant, if close). Option names take '_' for '-'
+// (--robot_radius). `usage` is the synopsis line, e.g. "topocut segment MAP [options]".
 std::optional<po::variables_map> parse_options(const std::string& usage, const std::string& description,
                                                const po::options_description& options,
                                                const po::positional_options_description& positional,

@@ -4,6 +4,7 @@
 
 #include "topocut/core/error.h"
 #include "topocut/core/input_file.h"
+#include "topocut/core/option_names.h"
 
 namespace topocut::cli {
 namespace {
@@ -44,10 +45,13 @@ po::parsed_options config_file_options(const std::string& path, const po::option
     if (!entry.first.IsScalar())
       throw UsageError("config file '" + path + "', line " + std::to_string(entry.first.Mark().line + 1) +
                        ": a key must be an option name, not a list or mapping");
-    const std::string key = entry.first.Scalar();
-    const std::string where = "'" + key + "' in config file '" + path + "'";
+    const std::string key = dashed_option_name(entry.first.Scalar());  // robot_radius or robot-radius
+    const std::string where = "'" + entry.first.Scalar() + "' in config file '" + path + "'";
     const po::option_description* option = options.find_nothrow(key, false);
-    if (!option || key == "config" || key == "help") throw UsageError(where + " is not an option of this command");
+    if (!option || key == "config" || key == "help") {
+      const std::string meant = closest_option_name(key, option_names(options));
+      throw UsageError(where + " is not an option of this command" + (meant.empty() ? "" : " (did you mean '" + meant + "'?)"));
+    }
     po::option parsed_option;
     parsed_option.string_key = key;
     parsed_option.value = tokens(entry.second, *option, where);

@@ -3,6 +3,7 @@
 #include <pybind11/stl.h>
 
 #include "topocut/core/error.h"
+#include "topocut/core/option_names.h"
 #include "topocut/io/map_load_flags.h"
 #include "topocut/segmentation/merge_model.h"
 #include "topocut/segmentation/segment_switches.h"
@@ -20,7 +21,7 @@ std::string keyword(const std::string& flag) {
 template <typename Target>
 const OptionRow<Target>* find_keyword(const std::vector<OptionRow<Target>>& rows, const std::string& name) {
   for (const OptionRow<Target>& row : rows)
-    if (keyword(row.name) == name) return &row;
+    if (dashed_option_name(row.name) == dashed_option_name(name)) return &row;  // robot_radius or "robot-radius"
   return nullptr;
 }
 
@@ -61,7 +62,17 @@ void set_keywords(const std::vector<OptionRow<Target>>& rows, const py::dict& kw
   for (const auto& [key, value] : kwargs) {
     const std::string name = py::str(key);
     const OptionRow<Target>* row = find_keyword(rows, name);
-    if (row == nullptr) throw py::type_error("unexpected keyword argument '" + name + "'; options are: " + names);
+    if (row == nullptr) {
+      std::vector<std::string> known;
+      for (std::size_t at = 0; at < names.size();) {
+        const std::size_t end = std::min(names.find(", ", at), names.size());
+        known.push_back(names.substr(at, end - at));
+        at = end + 2;
+      }
+      const std::string meant = closest_option_name(name, known);
+      throw py::type_error("unexpected keyword argument '" + name + "'" + (meant.empty() ? "" : " (did you mean " + meant + "?)") +
+                           "; options are: " + names);
+    }
     if (row->is_switch()) {
       row->set(target, py::bool_(py::reinterpret_borrow<py::object>(value)) ? 1.0 : 0.0);
     } else {

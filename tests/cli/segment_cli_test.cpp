@@ -256,12 +256,30 @@ TEST(SegmentCli, ConfigFileGivesTheSameRoomsAsTheCommandLine) {
   EXPECT_EQ(nlohmann::json::parse(file_text(dir.file("mixed.json"))), nlohmann::json::parse(file_text(dir.file("expected.json"))));
 
   std::ofstream(dir.file("typo.yaml")) << "concavty: 1.5\n";
-  expect_error(run(dir, {bundled("floorplan.yaml"), "--config", dir.file("typo.yaml")}), "'concavty' in config file", 2);
+  expect_error(run(dir, {bundled("floorplan.yaml"), "--config", dir.file("typo.yaml")}),
+               "is not an option of this command (did you mean 'concavity'?)", 2);
   std::ofstream(dir.file("bad.yaml")) << "concavity: [1.5\n";
   expect_error(run(dir, {bundled("floorplan.yaml"), "--config", dir.file("bad.yaml")}), "is not valid YAML");
   std::ofstream(dir.file("switch.yaml")) << "no-merge: maybe\n";
   expect_error(run(dir, {bundled("floorplan.yaml"), "--config", dir.file("switch.yaml")}), "give true or false", 2);
   expect_error(run(dir, {bundled("floorplan.yaml"), "--config", dir.file("missing.yaml")}), "missing.yaml");
+}
+
+// One vocabulary (README, "Segmentation options"): robot_radius and robot-radius are one option on the
+// command line and in --config, and a typo is answered with the name meant.
+TEST(SegmentCli, UnderscoresAndDashesNameTheSameOptionAndTyposGetTheNameMeant) {
+  TempDir dir;
+  std::ofstream(dir.file("underscored.yaml")) << "robot_radius: 0.3\nno_merge: true\n";
+  Result r = run(dir, {bundled("floorplan.yaml"), "--config", dir.file("underscored.yaml"), "--out_json", dir.file("a.json")});
+  ASSERT_EQ(r.code, 0) << r.err;
+  r = run(dir, {bundled("floorplan.yaml"), "--robot-radius", "0.3", "--no-merge", "--out-json", dir.file("b.json")});
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(nlohmann::json::parse(file_text(dir.file("a.json"))), nlohmann::json::parse(file_text(dir.file("b.json"))));
+  r = run(dir, {bundled("floorplan.yaml"), "--robot_radius=0.3", "--no_merge", "--out-json", dir.file("c.json")});
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(nlohmann::json::parse(file_text(dir.file("c.json"))), nlohmann::json::parse(file_text(dir.file("b.json"))));
+  expect_error(run(dir, {bundled("floorplan.yaml"), "--robot-radios", "0.3"}), "'--robot-radios' (did you mean '--robot-radius'?)", 2);
+  expect_error(run(dir, {bundled("floorplan.yaml"), "--xyz"}), "unrecognised option '--xyz' (see", 2);  // nothing close: no guess
 }
 
 TEST(SegmentCli, GeoJsonHasOneFeaturePerRoomAndPassage) {

@@ -48,8 +48,19 @@ def test_bad_options():
         topocut.segment(free_box(), 0.05, row_order="sideways")
     with pytest.raises(ValueError, match="--parity already switches every improvement off"):
         topocut.segment(free_box(), 0.05, parity=True, no_merge=True)
-    with pytest.raises(TypeError, match="unexpected keyword argument 'concavty'"):
+    with pytest.raises(TypeError, match=r"unexpected keyword argument 'concavty' \(did you mean concavity\?\)"):
         topocut.segment(free_box(), 0.05, concavty=2.0)
+    with pytest.raises(TypeError, match=r"unexpected keyword argument 'xyz'; options are"):
+        topocut.segment(free_box(), 0.05, xyz=2.0)
+
+
+def test_dashed_keywords_are_the_same_options():
+    dashed = topocut.segment(free_box(), 0.05, **{"robot-radius": 0.3, "no-merge": True})
+    underscored = topocut.segment(free_box(), 0.05, robot_radius=0.3, no_merge=True)
+    assert np.array_equal(np.asarray(dashed.labels), np.asarray(underscored.labels))
+    # The dashed name reaches the same option: the same check refuses the same bad value.
+    with pytest.raises(ValueError, match="robot.radius"):
+        topocut.segment(free_box(), 0.05, **{"robot-radius": -1.0})
 
 
 def test_no_free_space():
