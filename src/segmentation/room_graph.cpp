@@ -75,6 +75,23 @@ void add_ring_moments(const Ring& ring, double m[6]) {
 
 }  // namespace
 
+namespace {
+
+// The convex hull of points (cv::convexHull in single precision, as the grid's cells need).
+std::vector<Point2> hull_of(const std::vector<Point2>& points) {
+  std::vector<cv::Point2f> in, hull;
+  in.reserve(points.size());
+  for (const Point2& p : points) in.emplace_back(static_cast<float>(p.x), static_cast<float>(p.y));
+  if (in.size() < 3) return points;
+  cv::convexHull(in, hull);
+  std::vector<Point2> out;
+  out.reserve(hull.size());
+  for (const cv::Point2f& p : hull) out.push_back({p.x, p.y});
+  return out;
+}
+
+}  // namespace
+
 RoomGraph::RoomGraph(const PolygonWithHoles& polygon, const PieceSet& set, double resolution, double furniture_size)
     : set_(set), resolution_(resolution), parent_(set.pieces.size()) {
   std::iota(parent_.begin(), parent_.end(), 0);
@@ -214,6 +231,15 @@ void RoomGraph::unite(int a, int b) {
   from.clear();
   area_sum_[ra] = room_area(ra) + room_area(rb);
   area_sum_.erase(rb);
+  const auto hull_a = hulls_.find(ra), hull_b = hulls_.find(rb);
+  if (hull_a != hulls_.end() && hull_b != hulls_.end()) {
+    std::vector<Point2> points = hull_a->second;
+    points.insert(points.end(), hull_b->second.begin(), hull_b->second.end());
+    hull_a->second = hull_of(points);
+  } else if (hull_a != hulls_.end()) {
+    hulls_.erase(hull_a);  // computed again from the members when asked
+  }
+  hulls_.erase(rb);
 }
 
 bool RoomGraph::separates(std::size_t k) {
@@ -240,16 +266,26 @@ double RoomGraph::room_thickness(int r) {
   return length > 0.0 ? 2.0 * room_area(r) / length : 0.0;
 }
 
+const std::vector<Point2>& RoomGraph::room_hull(int r) {
+  const auto found = hulls_.find(r);
+  if (found != hulls_.end()) return found->second;
+  std::vector<Point2> points;
+  for (const int member : members(r)) {
+    const Ring& outer = set_.pieces[static_cast<std::size_t>(member)].outer;
+    points.insert(points.end(), outer.begin(), outer.end());
+  }
+  return hulls_[r] = hull_of(points);
+}
+
 double RoomGraph::convex_hull_area(const std::vector<int>& rooms) {
-  std::vector<cv::Point2f> points;
-  for (const int r : rooms)
-    for (const int member : members(r))
-      for (const Point2& p : set_.pieces[static_cast<std::size_t>(member)].outer)
-        points.emplace_back(static_cast<float>(p.x), static_cast<float>(p.y));
+  std::vector<Point2> points;
+  for (const int r : rooms) {
+    const std::vector<Point2>& hull = room_hull(r);
+    points.insert(points.end(), hull.begin(), hull.end());
+  }
   if (points.size() < 3) return 0.0;
-  std::vector<cv::Point2f> hull;
-  cv::convexHull(points, hull);
-  return cv::contourArea(hull) * resolution_ * resolution_;
+  const std::vector<Point2> hull = rooms.size() == 1 ? points : hull_of(points);
+  return std::abs(signed_area(hull)) * resolution_ * resolution_;
 }
 
 double RoomGraph::elongation(const std::vector<int>& rooms) {

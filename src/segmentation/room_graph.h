@@ -85,6 +85,10 @@ class RoomGraph {
   std::vector<Moments> moments_;    // per piece
   std::vector<Side> sides_;
   std::map<int, double> area_sum_;  // room root -> area (m², rooms of 2+ pieces)
+  // Room root -> the convex hull of its pieces (cells), kept through merges: a room's hull is the hull
+  // of its parts' hulls, so growing a long corridor does not take the hull of all its vertices again.
+  std::map<int, std::vector<Point2>> hulls_;
+  const std::vector<Point2>& room_hull(int r);
 };
 
 }  // namespace topocut
