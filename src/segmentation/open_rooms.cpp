@@ -26,10 +26,10 @@ int root(std::vector<int>& parent, int i) {
 
 // The rooms after the joins: each group of pieces as their union (or as the pieces, if they do not
 // form one polygon).
-PieceSet joined(const PieceSet& rooms, std::vector<int>& parent) {
+PieceSet joined(const PieceSet& rooms, std::vector<int>& parent, const std::vector<bool>& dropped) {
   std::vector<std::vector<int>> groups(rooms.pieces.size());
   for (std::size_t i = 0; i < rooms.pieces.size(); ++i)
-    groups[static_cast<std::size_t>(root(parent, static_cast<int>(i)))].push_back(static_cast<int>(i));
+    if (!dropped[i]) groups[static_cast<std::size_t>(root(parent, static_cast<int>(i)))].push_back(static_cast<int>(i));
   PieceSet out;
   out.cuts = rooms.cuts;
   out.rules = rooms.rules;
@@ -59,6 +59,7 @@ PieceSet join_open_rooms(const PieceSet& rooms, const OccupancyGrid& grid, const
   const double cell_area = grid.resolution * grid.resolution;
   std::vector<int> parent(rooms.pieces.size());
   std::iota(parent.begin(), parent.end(), 0);
+  std::vector<bool> dropped(rooms.pieces.size(), false);
   bool changed = false;
   for (const auto& [id, extent] : room_extents(ids)) {
     if (static_cast<double>(extent.cells) * cell_area < options.min_area) continue;
@@ -69,12 +70,15 @@ PieceSet join_open_rooms(const PieceSet& rooms, const OccupancyGrid& grid, const
     for (const auto& [other, edges] : outline.neighbours) {
       if (edges > longest) std::tie(into, longest) = std::pair{other, edges};
     }
-    if (into == 0) continue;  // nothing beside it to join: a room seen only through its door stays
+    if (into == 0) {  // nothing beside it: free space seen through a gap, outside the building
+      dropped[static_cast<std::size_t>(id - 1)] = changed = true;
+      continue;
+    }
     const int a = root(parent, id - 1), b = root(parent, into - 1);
     parent[static_cast<std::size_t>(std::max(a, b))] = std::min(a, b);
     changed = true;
   }
-  return changed ? joined(rooms, parent) : rooms;
+  return changed ? joined(rooms, parent, dropped) : rooms;
 }
 
 }  // namespace topocut

@@ -40,6 +40,19 @@ TEST(OpenRooms, ARayFanJoinsTheCorridorItOpensFrom) {
   EXPECT_EQ(rooms.cuts, plan.rooms.cuts);  // the cut stays listed; it separates nothing now
 }
 
+// Free space seen only through a gap, with no room beside it (its own component once the cleaning
+// cut it off): outside the building, so left unlabelled; walled all round, it stays a room.
+TEST(OpenRooms, AnOpenRoomWithNothingBesideItIsDropped) {
+  for (const unsigned char beyond : {kUnknown, kOccupied}) {
+    Plan alone(true, beyond);
+    alone.grid.cells(cv::Rect(5, 5, 40, 120)).setTo(kOccupied);  // no corridor
+    alone.rooms.pieces.erase(alone.rooms.pieces.begin());
+    alone.rooms.cuts.clear();
+    alone.rooms.rules.clear();
+    EXPECT_EQ(join_open_rooms(alone.rooms, alone.grid).pieces.size(), beyond == kUnknown ? 0u : 1u);
+  }
+}
+
 TEST(OpenRooms, AWalledRoomOrOneBehindAStraightGreyWallStays) {
   EXPECT_EQ(join_open_rooms(Plan(true, kOccupied).rooms, Plan(true, kOccupied).grid).pieces.size(), 2u);
   Plan straight(false, kUnknown);  // a wall drawn in the unknown grey runs straight

@@ -29,7 +29,9 @@ struct OpenRoomOptions {
 void validate(const OpenRoomOptions& options);
 
 // rooms (each piece one room, grid coordinates of grid) with every open room joined to the room it
-// shares the longest boundary with (their union). Cuts stay as they are (a cut inside one room
+// shares the longest boundary with (their union), and an open room with no room beside it (free space
+// seen through a gap, outside the building) left out: its cells stay unlabelled unless label completion
+// gives them to a room nearby. Cuts stay as they are (a cut inside one room
 // separates nothing). Unchanged unless options.enabled, and on a grid without occupied cells (walls
 // drawn in the unknown grey: walls and never-seen space cannot be told apart).
 PieceSet join_open_rooms(const PieceSet& rooms, const OccupancyGrid& grid, const OpenRoomOptions& options = {});

@@ -18,6 +18,7 @@
 //   furniture-rule  segmentation/room_merging.h   cuts ending on furniture separate no rooms
 //   width-steps     segmentation/room_merging.h   (hand rules) a room opening onto a much wider space
 //   open-rooms      segmentation/open_rooms.h     rooms bounded mostly by never-seen space join their neighbour
+//                                                 (with none beside them, outside the building: left out)
 #include <functional>
 #include <string>
 #include <vector>
