@@ -19,26 +19,21 @@ struct SegmentOptions {
   double concavity = 2.5;  // tau, maximum concavity in metres (Fermin-Leon et al.: 2.5 m for all maps)
   bool decompose = true;   // false: the trivial baseline, each free-space component is one room
   BinarizeOptions binarize;  // defaults: raw free space (no inflation, no filtering)
-  // The real-map front end (free_space_cleaning.h): ray fans, slivers and free specks out of the
-  // free space, obstacle specks into it. false: the binarized free space is decomposed as it is.
+  // The real-map front end (free_space_cleaning.h); false: the binarized free space is decomposed.
   bool clean = true;
   FreeSpaceCleaningOptions cleaning;
-  // Minimum component and hole areas (m²). Components below 1 m² are no rooms (DESIGN.md: their
-  // cells join the nearest room), as merging folds rooms below 1 m² (RoomMergeOptions::min_room_area).
+  // Smallest component and hole, m²: below 1 m² no room (DESIGN.md), as merging's min_room_area.
   ContourOptions contours = [] {
     ContourOptions c;
     c.min_component_area = 1.0;
     return c;
   }();
-  // Douglas-Peucker tolerance, in cells, applied to the traced pixel-edge polygons before doors
-  // are searched and the decomposition runs: it removes the stair steps of slanted and noisy walls
-  // (a 45-degree stair deviates 0.71 cells from its line). Below half a cell, rings that are a cell
-  // apart cannot touch; above, if they do, the component is decomposed from its exact polygon.
-  // 0 keeps the exact pixel edges.
+  // Douglas-Peucker tolerance of the traced outlines, cells (>= 0; 0 keeps the pixel edges): removes
+  // the stair steps of slanted walls (0.71 cells at 45 degrees). Rings it would make touch stay exact.
   double simplify = 1.0;
   DoorOptions doors;  // door cuts split each component before the decomposition (door_cuts.h)
-  // With merging on, DuDe cuts at this fraction of the concavity: merging removes every cut that
-  // is not door-like, so a finer decomposition only adds candidate room boundaries. 1 cuts at tau.
+  // With merging on, DuDe cuts at this fraction (0..1] of tau: merging removes the cuts that are not
+  // room boundaries, so finer pieces only add candidates.
   double oversegment = 0.5;
   // Passed to decompose(); its tau is replaced by concavity / resolution (the polygons are in cells).
   DecompositionOptions decomposition;
