@@ -18,14 +18,11 @@ struct MapPalette {
 };
 
 struct PaletteDetectionOptions {
-  // A grey level is a mode when it is a local maximum of the histogram within +-mode_separation
-  // levels and holds at least min_mode_share of the pixels not at the border's level (the
-  // unexplored surroundings, however large the map around the building is): anti-aliasing and
-  // partly observed cells make thin spreads around the few values a map tool writes.
+  // A mode is a histogram maximum within +-mode_separation levels holding min_mode_share (0..1) of
+  // the pixels not at the border's level, so that padding a map with unknown changes nothing.
   int mode_separation = 16;
   double min_mode_share = 0.005;
-  // Free is the free mode's level give or take this much; every other level is not free (unknown is
-  // never free): partly observed and anti-aliased greys next to walls stay out of the free space.
+  // Levels within this of the free mode are free, no other (anti-aliased greys by walls stay out);
   // 4 around 255 is Bormann et al.'s "> 250 is free".
   int free_tolerance = 4;
   // The border's most common level is unknown when it covers at least this share of the border.

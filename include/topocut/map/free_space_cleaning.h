@@ -16,21 +16,14 @@
 namespace topocut {
 
 struct FreeSpaceCleaningOptions {
-  // Obstacle specks: connected non-free regions (8-connected) enclosed by free space whose bounding
-  // box is at most this long (metres) on both sides. They count as floor (no hole of a polygon, no
-  // door jamb); segment() labels the unknown ones with the room around them, the occupied ones
-  // none. 0 keeps every obstacle.
+  // Metres: a non-free region enclosed by free space whose box is at most this long both ways is a
+  // speck and counts as floor (no hole, no door jamb: clutter, chair legs). 0 keeps every obstacle.
   double max_obstacle_speck = 0.3;
-  // Thin free space: free cells farther than min_width / 4 (along free space) from every disc of
-  // diameter min_width (metres) that fits into the free space are thin. A connected thin part is
-  // removed when more of the non-free cells around it are unknown than occupied: laser rays end in
-  // the unknown, while a narrow corridor, a closet or a gap behind a cupboard is walled in and
-  // stays. A corridor or doorway at least min_width wide is never thin. 0 disables.
+  // Metres, a person's width: free space beyond min_width / 4 of every disc this wide is thin, and a
+  // thin part bordered more by unknown than by walls (rays, not a closet) is removed. 0 disables.
   double min_width = 0.6;
-  // A removed cell is inside the building when the building's structure (floor and walls) encloses
-  // it once gaps up to this wide (metres: windows, doors, unseen stretches of wall) are closed:
-  // rays into a room the robot never entered end on that room's walls and stay inside; rays through
-  // a window into the open do not. 0: every removed cell is outside.
+  // Metres: a removed cell is inside the building when floor and walls enclose it once gaps this wide
+  // (doors, windows, unseen wall) are closed; rays into the open are outside. 0: all outside.
   double inside_closing = 2.0;
 };
 
