@@ -52,14 +52,10 @@ struct RoomMergeOptions {
 // Throws Error unless the options are usable (finite, non-negative, door_ratio > 0).
 void validate(const RoomMergeOptions& options);
 
-// Merges the pieces of one free-space component (grid coordinates: one unit per cell, as from the
-// decomposition; resolution converts the options' metres) into rooms. component.polygon tells
-// furniture (its small holes) from walls. The result's pieces are the
-// rooms, each the exact union of the pieces merged into it (union_of_pieces), ordered by their
-// first piece; its cuts are the cuts between two different rooms, in their input order. Cuts
-// that do not separate two pieces (keyhole cuts) are dropped. With options.enabled false, the
-// input is returned unchanged.
-// If trace is given, every candidate merge the learned criterion weighs is appended to it.
+// Merges the pieces of one free-space component (grid coordinates; resolution converts the options'
+// metres) into rooms: each the exact union of its pieces, in order of their first piece, with the cuts
+// between two rooms in input order (keyhole cuts dropped); unchanged unless options.enabled.
+// component.polygon's small holes are the furniture. trace, if given, receives every merge weighed.
 PieceSet merge_rooms(const FreeSpaceComponent& component, const PieceSet& pieces, double resolution,
                      const RoomMergeOptions& options = {}, std::vector<MergeStep>* trace = nullptr);
 

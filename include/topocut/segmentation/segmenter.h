@@ -82,12 +82,10 @@ SegmentationInput segmentation_input(const OccupancyGrid& grid, const SegmentOpt
 // settle it in a few rounds. Valid input gives a valid polygon (intersecting_rings() finds none).
 PolygonWithHoles simplified_where_valid(const PolygonWithHoles& exact, double tolerance);
 
-// Stage 3a: the pieces of one free-space component (grid coordinates) and the cuts between them:
-// the polygon simplified (options.simplify), split along its door cuts (options.doors, listed in
-// the result's doors), and each part decomposed by decompose() at tau = options.concavity /
-// resolution (times options.oversegment when options.merge is on); or the component itself when
-// options.decompose is false. If the simplified
-// polygon cannot be decomposed, the exact one is. Errors name the component's first cell.
+// Stage 3a: the pieces of one free-space component (grid coordinates) and the cuts between them: the
+// polygon simplified, split along its door cuts (listed in the result's doors) and each part decomposed
+// at tau = concavity / resolution (times oversegment with merging), the exact polygon if the simplified
+// one fails; the component itself unless options.decompose. Errors name the component's first cell.
 PieceSet decompose_pieces(const FreeSpaceComponent& component, double resolution, const SegmentOptions& options);
 
 // Stage 3: the rooms of one free-space component (grid coordinates) and the cuts between them:
