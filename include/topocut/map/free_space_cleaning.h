@@ -1,16 +1,9 @@
 #pragma once
-// The real-map front end. A SLAM map's free space holds much that is no floor of a room: laser rays
-// through windows, glass and open doors fanning out into the unknown, slivers along walls, specks of
-// free space, and a pepper of obstacle and unknown specks inside rooms (clutter, chair legs, cells
-// seen once). Left in, they become rooms nobody would draw and they multiply the vertices of every
-// outline. This stage keeps the floor: free space a disc of a person's width fits into, plus a
-// margin around it, and walled-in narrow space; obstacle specks inside it are floor for the
-// decomposition (segment() labels the unknown ones with their room: unobserved floor). Free specks
-// are left to the contour stage, which drops components below ContourOptions::min_component_area.
-// What it removes is labelled as a person would: removed cells inside the building (rays
-// between furniture, a sliver behind a cupboard) join the room next to them; those outside it (rays
-// through windows, glass and open doors into the outside or into rooms never entered, specks beyond
-// the walls) belong to no room.
+// The real-map front end. A SLAM map's free space holds rays fanning out through windows and doors,
+// slivers along walls and specks of clutter inside rooms: left in, they become rooms nobody would draw
+// and multiply every outline's vertices. This stage keeps the floor (free space a person fits into,
+// walled-in narrow space, obstacle specks inside it); removed cells inside the building join the room
+// next to them, those outside belong to no room. Free specks are left to the contour stage.
 #include <opencv2/core.hpp>
 
 namespace topocut {
