@@ -53,22 +53,17 @@ SegmentOptions parity_segment_options(double concavity = 2.5);
 struct SegmentationInput;
 Segmentation segment(const OccupancyGrid& grid, const SegmentOptions& options = {}, SegmentationInput* input = nullptr);
 
-// Stage 0: the part of grid that segment() works on (crop()): the box of its known (free or
-// occupied) cells with a margin wider than any stage looks beyond a cell, clipped to the grid; the
-// whole grid when it has no known cell. Every cell outside is unknown, so the box alone gives the
-// same rooms, and SLAM maps are mostly unknown around the building (gmapping's default map is
-// 4000 x 4000 cells).
+// Stage 0: the part of grid that segment() works on (crop()): the box of its known cells with a margin
+// wider than any stage looks, clipped to the grid (all of it without known cells). The same rooms as
+// the whole grid, and SLAM maps are mostly unknown around the building (gmapping: 4000 x 4000 cells).
 cv::Rect segmentation_box(const OccupancyGrid& grid, const SegmentOptions& options);
 
 // Stage 1: the binarized free-space mask (options.binarize applied); throws Error if it is empty.
 cv::Mat segmentation_free_space(const OccupancyGrid& grid, const SegmentOptions& options);
 
-// Stage 2: what segment() decomposes and labels. floor is the free space to decompose (CV_8UC1,
-// 255): the binarized free space, cleaned by clean_free_space() when options.clean. labelled is the
-// grid whose free cells get a room: the input with the cells the cleaning put outside the building
-// made unknown and its unknown obstacle specks (floor nobody observed) made free. cleaned is empty
-// unless options.clean; when the cleaning would leave no floor at all (a map smaller than one
-// room), the binarized free space is used as it is.
+// Stage 2: what segment() decomposes (floor: CV_8UC1, 255 = free, cleaned when options.clean) and
+// labels (labelled: the grid as cells_after_cleaning() leaves it); cleaned is empty unless
+// options.clean. A cleaning that would leave no floor (a map smaller than a room) is not applied.
 struct SegmentationInput {
   cv::Mat floor;
   OccupancyGrid labelled;
