@@ -35,13 +35,10 @@ struct PaletteDetectionOptions {
 // Free above free_min, occupied below occupied_max, unknown between (DESIGN.md's plain-image rule).
 MapPalette threshold_palette(int free_min, int occupied_max);
 
-// The palette of a map image: levels is CV_8UC1 (the grey level of each pixel), transparent CV_8UC1
-// (non-zero where the pixel is transparent: unknown, not counted). The brightest mode is free; the
-// border's level (if it covers most of the border and is not the free mode) is unknown; the darkest
-// remaining mode is occupied; levels within free_tolerance of the free mode are free, every other
-// level takes the state of its nearest non-free mode. Falls back to
-// threshold_palette(fallback_free_min, fallback_occupied_max) when the image has no bright mode or
-// only one mode. Deterministic.
+// The palette of a map image (levels CV_8UC1; transparent CV_8UC1, non-zero: unknown, not counted):
+// the brightest mode free, the border's level unknown, the darkest other mode occupied, other levels
+// as their nearest non-free mode. threshold_palette(fallback_free_min, fallback_occupied_max) when
+// there is no bright mode or only one. Deterministic.
 MapPalette detect_palette(const cv::Mat& levels, const cv::Mat& transparent, int fallback_free_min, int fallback_occupied_max,
                           const PaletteDetectionOptions& options = {});
 
