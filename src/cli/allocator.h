@@ -5,15 +5,10 @@
 
 namespace topocut {
 
-// Makes glibc keep freed large blocks for reuse instead of returning them to the system: every
-// stage allocates and frees map-sized buffers (masks, labels, distance images), and by default each
-// one above 128 KiB is a fresh mapping whose pages fault in one by one; on virtual machines that
-// cost more than the work itself (office_a: cleaning 41 -> 15 ms, segment 43 -> 18 ms). The first
-// 256 MiB of the heap are also reserved (address space only) with transparent huge pages advised,
-// so that the first use of a buffer faults 2 MiB at a time (`topocut segment` of Benedetti.pgm:
-// 5450 -> 1450 page faults, 126 -> 73 ms CPU). Peak memory grows by at most the last huge page the
-// heap touches (1-2 MB); memory is returned when the process ends. Call once at program start (the topocut command and the benchmarks do). No
-// effect with other C libraries.
+// Makes glibc keep freed large blocks for reuse and reserves the first 256 MiB of heap in transparent
+// huge pages: every stage allocates map-sized buffers, and fresh pages faulting in one by one cost
+// more than the work on virtual machines (benchmarks/README.md, "Speed, same output: huge pages").
+// Peak memory grows by at most one huge page. Call once at program start; no effect outside glibc.
 void keep_freed_memory_for_reuse();
 
 }  // namespace topocut

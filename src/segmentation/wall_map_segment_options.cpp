@@ -12,15 +12,14 @@ IncrementalOptions wall_map_incremental_options(const SegmentOptions& segment) {
   IncrementalOptions options;
   options.segment = segment;
   options.segment.clean = false;
-  // Measured on the four CARMEN logs (benchmarks/README.md, log replay): holding merges back like
-  // splits and decomposing only the touched rooms lower both the churn p95 and the update p95.
+  // Held back three decompositions, only touched rooms decomposed: calmer and faster on the logs
+  // (benchmarks/README.md, "Incremental on real laser logs").
   options.split_after = 3;
   options.merge_after = 3;
   options.neighbours_across_doors = false;
   options.neighbours_across_cuts = false;
-  // Rooms over 50 m² (corridors, halls) are decomposed only within 3 m of the change: lower churn
-  // p95 and fewer ids on all four logs, final rooms as close to batch or closer, lower update p95 on
-  // intel and fhw (benchmarks/README.md, partial decomposition).
+  // Rooms over 50 m² (corridors, halls) decomposed only within 3 m of the change, which is at one end
+  // (benchmarks/HISTORY.md, partial decomposition).
   options.partial_area = 50.0;
   options.partial_margin = 3.0;
   return options;

@@ -42,16 +42,10 @@ cv::Mat load_ground_truth(const std::string& path, const ImageLimits& limits = {
 cv::Mat ground_truth_rooms(const cv::Mat& ground_truth, const EvaluationOptions& options = {});
 
 // Precision and recall of segment labels (single-channel 8/16/32-bit integers, 0 = not a room)
-// against ground-truth room labels of the same size (as from ground_truth_rooms). Runs one pass
-// over the pixels, building a sparse contingency table. Throws Error on size or type mismatch,
+// against ground-truth room labels of the same size (as from ground_truth_rooms()). |S| and |R| count
+// every pixel of the segment or room, also those in no counted room or segment (separator lines,
+// ignored small ones, label 0), as Bormann et al.'s code does. Throws Error on size or type mismatch,
 // negative labels, or a ground truth without any room larger than max_ignored_pixels.
-//
-// What |S| counts: every pixel that carries the segment's label, including pixels that lie in no
-// counted ground-truth room (on a separator line drawn into the ground truth, in a room of at most
-// max_ignored_pixels, or on ground-truth obstacle). The definition takes S as the segment itself,
-// so such pixels are in S but in no R and lower precision_S; Bormann et al.'s evaluation code counts
-// the same way. Likewise |R| counts all of the room's pixels, and those under label 0 or under an
-// ignored (small) segment are in R but in no counted S: they are not recalled.
 PrecisionRecall precision_recall(const cv::Mat& segment_labels, const cv::Mat& room_labels,
                                  const EvaluationOptions& options = {});
 

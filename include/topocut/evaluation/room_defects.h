@@ -37,14 +37,9 @@ struct RoomDefects {
   bool open_judged = true;   // false when the grid has no occupied cell: open rooms are not counted
 };
 
-// Counts the rooms and their defects in a label image (single-channel integer labels, 0 = no room,
-// the grid's size) of grid (its resolution; its cell states for open rooms). The disc has an odd
-// diameter of 2 * round(thin_disc / 2 / resolution) + 1 cells. A room's outline is made of the
-// 4-neighbour edges between the room with its holes filled and the cells outside it: an edge to an
-// occupied cell, or to an unknown cell within open_wall_reach of one, counts as wall; to another
-// unknown cell or off the grid as unknown; to another room or a free unlabelled cell as neither.
-// Throws Error on a bad image, a size mismatch or a bad resolution.
-// floor, if given, is the free space the rooms were made of (SegmentationInput::floor; room_outline()).
+// Counts the rooms and their defects in a label image (single-channel integers, 0 = no room, the
+// grid's size) of grid; open rooms by their outline (room_outline()), floor as there. The disc is
+// 2 * round(thin_disc / 2 / resolution) + 1 cells across. Throws Error on a bad image, size or resolution.
 RoomDefects count_room_defects(const cv::Mat& labels, const OccupancyGrid& grid, const DefectOptions& options = {},
                                const cv::Mat& floor = cv::Mat());
 

@@ -18,14 +18,11 @@ struct MapPalette {
 };
 
 struct PaletteDetectionOptions {
-  // A grey level is a mode when it is a local maximum of the histogram within +-mode_separation
-  // levels and holds at least min_mode_share of the pixels not at the border's level (the
-  // unexplored surroundings, however large the map around the building is): anti-aliasing and
-  // partly observed cells make thin spreads around the few values a map tool writes.
+  // A mode is a histogram maximum within +-mode_separation levels holding min_mode_share (0..1) of
+  // the pixels not at the border's level, so that padding a map with unknown changes nothing.
   int mode_separation = 16;
   double min_mode_share = 0.005;
-  // Free is the free mode's level give or take this much; every other level is not free (unknown is
-  // never free): partly observed and anti-aliased greys next to walls stay out of the free space.
+  // Levels within this of the free mode are free, no other (anti-aliased greys by walls stay out);
   // 4 around 255 is Bormann et al.'s "> 250 is free".
   int free_tolerance = 4;
   // The border's most common level is unknown when it covers at least this share of the border.
@@ -38,13 +35,10 @@ struct PaletteDetectionOptions {
 // Free above free_min, occupied below occupied_max, unknown between (DESIGN.md's plain-image rule).
 MapPalette threshold_palette(int free_min, int occupied_max);
 
-// The palette of a map image: levels is CV_8UC1 (the grey level of each pixel), transparent CV_8UC1
-// (non-zero where the pixel is transparent: unknown, not counted). The brightest mode is free; the
-// border's level (if it covers most of the border and is not the free mode) is unknown; the darkest
-// remaining mode is occupied; levels within free_tolerance of the free mode are free, every other
-// level takes the state of its nearest non-free mode. Falls back to
-// threshold_palette(fallback_free_min, fallback_occupied_max) when the image has no bright mode or
-// only one mode. Deterministic.
+// The palette of a map image (levels CV_8UC1; transparent CV_8UC1, non-zero: unknown, not counted):
+// the brightest mode free, the border's level unknown, the darkest other mode occupied, other levels
+// as their nearest non-free mode. threshold_palette(fallback_free_min, fallback_occupied_max) when
+// there is no bright mode or only one. Deterministic.
 MapPalette detect_palette(const cv::Mat& levels, const cv::Mat& transparent, int fallback_free_min, int fallback_occupied_max,
                           const PaletteDetectionOptions& options = {});
 

@@ -10,10 +10,10 @@
 namespace topocut {
 
 struct FuzzyCMeansOptions {
-  int clusters = 2;           // c, the number of centres wanted
+  int clusters = 2;           // c >= 1, the number of centres wanted
   double fuzzifier = 2.0;     // m > 1; Bezdek's customary value is 2
-  double tolerance = 1e-5;    // ε: stop when no membership changes by more than this
-  int max_iterations = 300;   // stop here if ε is not reached
+  double tolerance = 1e-5;    // ε >= 0: stop when no membership changes by more than this
+  int max_iterations = 300;   // >= 1: stop here if ε is not reached
 };
 
 struct FuzzyCMeansResult {
@@ -28,13 +28,10 @@ struct FuzzyCMeansResult {
   }
 };
 
-// Clusters the points into min(clusters, number of distinct points) fuzzy clusters. Initialisation
-// is deterministic (maximin: the point farthest from the mean, then repeatedly the point farthest
-// from the centres chosen so far; ties to the lower index). Centres are returned ordered by the mean
-// input index of the points they hold most, so consecutive centres of a scan segment (points in beam
-// order) can be joined into a polyline. An empty input gives an empty result. Throws Error on a
-// non-finite point or invalid options (clusters < 1, fuzzifier <= 1, tolerance < 0 or non-finite,
-// max_iterations < 1).
+// Clusters the points into min(clusters, distinct points) fuzzy clusters, seeded deterministically
+// (maximin from the point farthest from the mean; ties to the lower index). Centres come in the order
+// of the points they hold most, so a scan segment's centres form a polyline; empty input, empty result.
+// Throws Error on a non-finite point or invalid options.
 FuzzyCMeansResult fuzzy_c_means(std::span<const Point2> points, const FuzzyCMeansOptions& options = {});
 
 }  // namespace topocut

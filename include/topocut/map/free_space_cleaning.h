@@ -1,36 +1,22 @@
 #pragma once
-// The real-map front end. A SLAM map's free space holds much that is no floor of a room: laser rays
-// through windows, glass and open doors fanning out into the unknown, slivers along walls, specks of
-// free space, and a pepper of obstacle and unknown specks inside rooms (clutter, chair legs, cells
-// seen once). Left in, they become rooms nobody would draw and they multiply the vertices of every
-// outline. This stage keeps the floor: free space a disc of a person's width fits into, plus a
-// margin around it, and walled-in narrow space; obstacle specks inside it are floor for the
-// decomposition (segment() labels the unknown ones with their room: unobserved floor). Free specks
-// are left to the contour stage, which drops components below ContourOptions::min_component_area.
-// What it removes is labelled as a person would: removed cells inside the building (rays
-// between furniture, a sliver behind a cupboard) join the room next to them; those outside it (rays
-// through windows, glass and open doors into the outside or into rooms never entered, specks beyond
-// the walls) belong to no room.
+// The real-map front end. A SLAM map's free space holds rays fanning out through windows and doors,
+// slivers along walls and specks of clutter inside rooms: left in, they become rooms nobody would draw
+// and multiply every outline's vertices. This stage keeps the floor (free space a person fits into,
+// walled-in narrow space, obstacle specks inside it); removed cells inside the building join the room
+// next to them, those outside belong to no room. Free specks are left to the contour stage.
 #include <opencv2/core.hpp>
 
 namespace topocut {
 
 struct FreeSpaceCleaningOptions {
-  // Obstacle specks: connected non-free regions (8-connected) enclosed by free space whose bounding
-  // box is at most this long (metres) on both sides. They count as floor (no hole of a polygon, no
-  // door jamb); segment() labels the unknown ones with the room around them, the occupied ones
-  // none. 0 keeps every obstacle.
+  // Metres: a non-free region enclosed by free space whose box is at most this long both ways is a
+  // speck and counts as floor (no hole, no door jamb: clutter, chair legs). 0 keeps every obstacle.
   double max_obstacle_speck = 0.3;
-  // Thin free space: free cells farther than min_width / 4 (along free space) from every disc of
-  // diameter min_width (metres) that fits into the free space are thin. A connected thin part is
-  // removed when more of the non-free cells around it are unknown than occupied: laser rays end in
-  // the unknown, while a narrow corridor, a closet or a gap behind a cupboard is walled in and
-  // stays. A corridor or doorway at least min_width wide is never thin. 0 disables.
+  // Metres, a person's width: free space beyond min_width / 4 of every disc this wide is thin, and a
+  // thin part bordered more by unknown than by walls (rays, not a closet) is removed. 0 disables.
   double min_width = 0.6;
-  // A removed cell is inside the building when the building's structure (floor and walls) encloses
-  // it once gaps up to this wide (metres: windows, doors, unseen stretches of wall) are closed:
-  // rays into a room the robot never entered end on that room's walls and stay inside; rays through
-  // a window into the open do not. 0: every removed cell is outside.
+  // Metres: a removed cell is inside the building when floor and walls enclose it once gaps this wide
+  // (doors, windows, unseen wall) are closed; rays into the open are outside. 0: all outside.
   double inside_closing = 2.0;
 };
 

@@ -27,14 +27,10 @@ struct CellSpan {
 // bottom up, then by column), clipped to the image; overlaps between polygons are not resolved.
 std::vector<CellSpan> polygon_spans(const std::vector<PolygonWithHoles>& polygons, cv::Size size);
 
-// Completes labels over the free space (free_mask CV_8UC1, nonzero = free): non-free cells become
-// 0; each unlabelled free cell takes the label of the nearest labelled cell measured along the free
-// space (4-connected breadth-first search, so labels never leak through walls), and cells that
-// free space does not connect to any label take the label of the nearest labelled cell in a
-// straight line. Cells stay 0 only when there is no label at all. With keep_non_free, non-free
-// cells keep the labels they have (obstacles that a piece covers, such as furniture the
-// decomposition absorbed) instead of becoming 0; labels never spread through them. If changes is
-// given, every cell whose label this changed is appended to it (in no particular order).
+// Completes labels over the free space (free_mask CV_8UC1, nonzero = free): each unlabelled free cell
+// takes the nearest label along free space (4-connected, so never through walls), or in a straight
+// line where free space reaches no label; non-free cells become 0 unless keep_non_free (absorbed
+// furniture keeps its room). changes, if given, receives every cell whose label changed (any order).
 struct LabelChange {
   int index = 0;  // row * cols + column
   int before = 0, after = 0;

@@ -34,14 +34,11 @@ struct RoomOutline {
   }
 };
 
-// The 4-neighbour edges between room id (box: its extent) with its holes filled and the cells around
-// it; edges to free cells of no room count as none of the three. An edge to an unknown cell behind which,
-// straight on within band cells, the first known cell is a wall cell or another room's counts as wall: a
-// wall drawn in the unknown grey (floor plans, cleaned maps) is a band of unknown cells between rooms or
-// along an outline.
-// If floor is given (CV_8UC1 of labels' size, nonzero: the free space the rooms were made of), another
-// room's cells count only where they are floor, so that rays the cleaning removed and gave to a room do
-// not make the gaps between them walls.
+// The 4-neighbour edges between room id (box: its extent), holes filled, and the cells around it; edges
+// to free cells of no room count as none. An unknown cell with a wall or another room's cell straight on
+// within band cells counts as wall (walls drawn in the unknown grey). floor, if given (CV_8UC1, nonzero:
+// the free space the rooms were made of), limits other rooms' cells to it, so that rays given to a room
+// make no walls.
 RoomOutline room_outline(const cv::Mat& labels, int id, const cv::Rect& box, const cv::Mat& cells, const cv::Mat& walls,
                          int band, const cv::Mat& floor = cv::Mat());
 

@@ -13,57 +13,40 @@
 namespace topocut {
 
 struct DoorOptions {
-  // false: no door detection (the reference behaviour: DuDe alone).
+  // false: no cut rule at all (the reference behaviour: DuDe alone).
   bool enabled = true;
-  // Widest passage (metres) taken for a door. Doors are about 0.8-1.2 m wide; double doors and
-  // openings between rooms reach 2 m.
+  // Widest passage taken for a door, metres: doors are 0.8-1.2 m, double doors and openings 2 m.
   double max_width = 2.0;
-  // A passage is a door when it is narrower than door_ratio times the width of the space on each
-  // of its sides (the longest chord parallel to it within width_depth).
+  // A door is narrower than door_ratio (> 0) times the space on each side: the rooms it joins.
   double door_ratio = 0.6;
-  // How far (metres) beyond the passage the width of each side is sampled; more than a wall's
-  // thickness, so that the door frame does not count as the space behind it.
+  // Metres beyond a cut where each side's width (longest parallel chord) is sampled: past the frame.
   double width_depth = 1.0;
-  // Corners that turn by less than this (radians) are not wall corners but bends of a wall.
+  // Radians: corners turning less are bends of a wall, not wall corners.
   double min_turn = 0.5;
-  // Openings in walls: from the end of a thin wall (at most max_wall_thickness thick, so not
-  // furniture or the building's outline) along the wall to the first obstacle within max_gap, or
-  // to a wall end there that faces it (within gap_alignment radians). A room front open to a
-  // corridor is as wide as the room, so no width test can find it; a wall that stops short can.
-  // Walls shorter than min_wall_length give no direction; both sides must be min_side_width wide.
-  // The thickness is measured wall_end_probe behind the end (at most half the wall's length): an
-  // interior partition is 0.1-0.2 m thick, plus a cell of outline simplification at 5 cm; a thicker
-  // obstacle is a cupboard, a pillar or the outline. Below the 0.3 m within which two cuts count as
-  // one, so the two corners of one wall end give one opening.
+  // Wall openings (wall_openings.h): a thin wall that stops short continued to the next obstacle; a
+  // room front open to a corridor is as wide as the room, so no width test finds it.
   bool extend_walls = true;
-  double max_gap = 3.0;
-  double max_wall_thickness = 0.25;
-  double wall_end_probe = 0.15;
-  double min_wall_length = 0.3;
-  double gap_alignment = 0.2;
-  double min_side_width = 1.0;
-  // Island cuts (find_island_cuts): door-like cuts between the outline and a wall island, or two
-  // islands. A wall island is a hole longer than min_island_length (the merging's furniture size:
-  // anything smaller is furniture) whose mean thickness (2 area / perimeter) is at most
-  // max_island_thickness: a piece of partition whose joint to the next wall the sensor missed, a
-  // wall between two doors. A door onto such an island separates rooms only together with the cuts
-  // on the island's other sides, so these are ordinary cuts that merging may remove.
+  double max_gap = 3.0;              // metres: longest opening a wall is continued across
+  double max_wall_thickness = 0.25;  // metres: a partition (0.1-0.2) plus a cell; thicker is furniture
+  double wall_end_probe = 0.15;      // metres behind the end (at most half the wall) of the thickness
+  double min_wall_length = 0.3;      // metres: shorter walls give no direction
+  double gap_alignment = 0.2;        // radians: a wall end across the gap this well aligned faces it
+  double min_side_width = 1.0;       // metres: both sides of an opening at least this wide
+  // Island cuts (island_cuts.h): door-like cuts onto a free-standing piece of wall (a partition whose
+  // joint the sensor missed); ordinary cuts, so merging may remove them.
   bool island_cuts = true;
-  double max_island_thickness = 0.25;
-  double min_island_length = 2.5;
-  // Wall lines (find_wall_line_cuts): from a corner, a straight wall at least wall_line_wall long
-  // (every point within wall_line_straightness of its line) continued across at most max_wall_line
-  // metres of free space to the next wall (at least wall_line_side long, leaving both sides that
-  // wide), as people draw room boundaries across wide openings. Of two lines closer than
-  // wall_line_spacing along their whole length (the two faces of a partition continued across a
-  // corridor) only the shorter is kept: the strip between them is no room.
+  double max_island_thickness = 0.25;  // metres, mean thickness (2 area / perimeter) of a wall island
+  double min_island_length = 2.5;      // metres: shorter holes are furniture (the merging's size)
+  // Wall lines (wall_lines.h): a straight wall continued across a wide opening to the next wall, as
+  // people draw room boundaries.
   bool wall_lines = true;
-  double max_wall_line = 5.0;
-  double wall_line_wall = 2.5;
-  double wall_line_straightness = 0.2;
+  double max_wall_line = 5.0;           // metres of free space a line may cross
+  double wall_line_wall = 2.5;          // metres: shortest straight wall continued
+  double wall_line_straightness = 0.2;  // metres: every point of a straight wall this close to its line
+  // Metres: of two lines this close along their whole length (a partition's two faces) only the
+  // shorter is kept, since the strip between them is no room.
   double wall_line_spacing = 2.5;
-  // A wall line is at least this long (metres) and leaves both of its sides this wide.
-  double wall_line_side = 1.0;
+  double wall_line_side = 1.0;  // metres: a wall line at least this long, leaving both sides this wide
 };
 
 // Throws Error unless the options are usable.

@@ -11,18 +11,14 @@ namespace topocut {
 
 struct OpenRoomOptions {
   bool enabled = true;
-  // A room is open when it is at least min_area m² and more than share of its outline against walls
-  // and never-seen space (room_outline.h) runs into never-seen space. Never-seen cells within
-  // wall_reach metres of an occupied cell count as wall (SLAM maps leave a rim of them along walls),
-  // and so do bands of them at most wall_band metres thick between free cells (walls drawn in the
-  // unknown grey). And more than ragged_share of those edges must turn: laser rays end at ragged
-  // frontiers, while a drawing's walls in the unknown grey run straight. The same rule counts open rooms
-  // in evaluate --maps (DefectOptions).
-  double min_area = 1.0;
-  double share = 0.5;
-  double ragged_share = 0.3;
-  double wall_reach = 0.15;
-  double wall_band = 0.5;
+  // A room is open when more than share of its outline (room_outline.h) runs into never-seen space
+  // and more than ragged_share of those edges turn (rays end raggedly, drawn walls run straight).
+  // evaluate --maps counts open rooms by the same rule (DefectOptions).
+  double min_area = 1.0;      // m²: smaller rooms are never open
+  double share = 0.5;         // [0, 1] of the outline against walls and never-seen space
+  double ragged_share = 0.3;  // [0, 1] of the never-seen edges that turn
+  double wall_reach = 0.15;   // metres: never-seen cells this close to a wall count as wall (SLAM rim)
+  double wall_band = 0.5;     // metres: never-seen bands this thin between free cells are drawn walls
 };
 
 // Throws Error unless the numbers are finite and non-negative and share lies in [0, 1].

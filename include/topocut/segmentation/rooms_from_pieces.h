@@ -33,14 +33,10 @@ struct RoomLabelOptions {
   bool cover_absorbed_obstacles = false;
 };
 
-// Builds the segmentation of grid from pieces: each piece labels the cells whose centres it
-// contains; every other free cell (grid.cells == kFree) takes the label of the nearest piece along
-// free space (fill_free_space_labels); other non-free cells are 0 (and so are the covered ones
-// unless options.cover_absorbed_obstacles). Rooms are the pieces that label at least one cell,
-// numbered 1..N by their first cell in raster order, with the piece as polygon (world metres) and
-// area and centroid of their labelled cells. Each cut whose two sides lie in two different rooms
-// becomes a passage (end points in metres, width = its length). Passages are sorted by room ids,
-// then by cut.
+// The segmentation of grid from pieces: a piece labels the cells whose centres it contains, other free
+// cells the nearest piece along free space, non-free cells 0 (covered ones too unless
+// cover_absorbed_obstacles). Rooms: the pieces labelling a cell, numbered 1..N in raster order, polygon
+// in metres. A cut between two rooms is a passage (metres), sorted by room ids, then by cut.
 Segmentation rooms_from_pieces(const OccupancyGrid& grid, const PieceSet& pieces, const RoomLabelOptions& options = {});
 
 // Index of the piece containing point p (grid coordinates, even-odd over all rings), or -1.

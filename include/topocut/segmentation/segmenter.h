@@ -19,26 +19,21 @@ struct SegmentOptions {
   double concavity = 2.5;  // tau, maximum concavity in metres (Fermin-Leon et al.: 2.5 m for all maps)
   bool decompose = true;   // false: the trivial baseline, each free-space component is one room
   BinarizeOptions binarize;  // defaults: raw free space (no inflation, no filtering)
-  // The real-map front end (free_space_cleaning.h): ray fans, slivers and free specks out of the
-  // free space, obstacle specks into it. false: the binarized free space is decomposed as it is.
+  // The real-map front end (free_space_cleaning.h); false: the binarized free space is decomposed.
   bool clean = true;
   FreeSpaceCleaningOptions cleaning;
-  // Minimum component and hole areas (m²). Components below 1 m² are no rooms (DESIGN.md: their
-  // cells join the nearest room), as merging folds rooms below 1 m² (RoomMergeOptions::min_room_area).
+  // Smallest component and hole, m²: below 1 m² no room (DESIGN.md), as merging's min_room_area.
   ContourOptions contours = [] {
     ContourOptions c;
     c.min_component_area = 1.0;
     return c;
   }();
-  // Douglas-Peucker tolerance, in cells, applied to the traced pixel-edge polygons before doors
-  // are searched and the decomposition runs: it removes the stair steps of slanted and noisy walls
-  // (a 45-degree stair deviates 0.71 cells from its line). Below half a cell, rings that are a cell
-  // apart cannot touch; above, if they do, the component is decomposed from its exact polygon.
-  // 0 keeps the exact pixel edges.
+  // Douglas-Peucker tolerance of the traced outlines, cells (>= 0; 0 keeps the pixel edges): removes
+  // the stair steps of slanted walls (0.71 cells at 45 degrees). Rings it would make touch stay exact.
   double simplify = 1.0;
   DoorOptions doors;  // door cuts split each component before the decomposition (door_cuts.h)
-  // With merging on, DuDe cuts at this fraction of the concavity: merging removes every cut that
-  // is not door-like, so a finer decomposition only adds candidate room boundaries. 1 cuts at tau.
+  // With merging on, DuDe cuts at this fraction (0..1] of tau: merging removes the cuts that are not
+  // room boundaries, so finer pieces only add candidates.
   double oversegment = 0.5;
   // Passed to decompose(); its tau is replaced by concavity / resolution (the polygons are in cells).
   DecompositionOptions decomposition;
@@ -58,22 +53,17 @@ SegmentOptions parity_segment_options(double concavity = 2.5);
 struct SegmentationInput;
 Segmentation segment(const OccupancyGrid& grid, const SegmentOptions& options = {}, SegmentationInput* input = nullptr);
 
-// Stage 0: the part of grid that segment() works on (crop()): the box of its known (free or
-// occupied) cells with a margin wider than any stage looks beyond a cell, clipped to the grid; the
-// whole grid when it has no known cell. Every cell outside is unknown, so the box alone gives the
-// same rooms, and SLAM maps are mostly unknown around the building (gmapping's default map is
-// 4000 x 4000 cells).
+// Stage 0: the part of grid that segment() works on (crop()): the box of its known cells with a margin
+// wider than any stage looks, clipped to the grid (all of it without known cells). The same rooms as
+// the whole grid, and SLAM maps are mostly unknown around the building (gmapping: 4000 x 4000 cells).
 cv::Rect segmentation_box(const OccupancyGrid& grid, const SegmentOptions& options);
 
 // Stage 1: the binarized free-space mask (options.binarize applied); throws Error if it is empty.
 cv::Mat segmentation_free_space(const OccupancyGrid& grid, const SegmentOptions& options);
 
-// Stage 2: what segment() decomposes and labels. floor is the free space to decompose (CV_8UC1,
-// 255): the binarized free space, cleaned by clean_free_space() when options.clean. labelled is the
-// grid whose free cells get a room: the input with the cells the cleaning put outside the building
-// made unknown and its unknown obstacle specks (floor nobody observed) made free. cleaned is empty
-// unless options.clean; when the cleaning would leave no floor at all (a map smaller than one
-// room), the binarized free space is used as it is.
+// Stage 2: what segment() decomposes (floor: CV_8UC1, 255 = free, cleaned when options.clean) and
+// labels (labelled: the grid as cells_after_cleaning() leaves it); cleaned is empty unless
+// options.clean. A cleaning that would leave no floor (a map smaller than a room) is not applied.
 struct SegmentationInput {
   cv::Mat floor;
   OccupancyGrid labelled;
@@ -87,12 +77,10 @@ SegmentationInput segmentation_input(const OccupancyGrid& grid, const SegmentOpt
 // settle it in a few rounds. Valid input gives a valid polygon (intersecting_rings() finds none).
 PolygonWithHoles simplified_where_valid(const PolygonWithHoles& exact, double tolerance);
 
-// Stage 3a: the pieces of one free-space component (grid coordinates) and the cuts between them:
-// the polygon simplified (options.simplify), split along its door cuts (options.doors, listed in
-// the result's doors), and each part decomposed by decompose() at tau = options.concavity /
-// resolution (times options.oversegment when options.merge is on); or the component itself when
-// options.decompose is false. If the simplified
-// polygon cannot be decomposed, the exact one is. Errors name the component's first cell.
+// Stage 3a: the pieces of one free-space component (grid coordinates) and the cuts between them: the
+// polygon simplified, split along its door cuts (listed in the result's doors) and each part decomposed
+// at tau = concavity / resolution (times oversegment with merging), the exact polygon if the simplified
+// one fails; the component itself unless options.decompose. Errors name the component's first cell.
 PieceSet decompose_pieces(const FreeSpaceComponent& component, double resolution, const SegmentOptions& options);
 
 // Stage 3: the rooms of one free-space component (grid coordinates) and the cuts between them:

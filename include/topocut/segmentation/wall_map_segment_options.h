@@ -12,11 +12,8 @@ namespace topocut {
 SegmentOptions wall_map_segment_options();
 
 // The incremental options for such a grid built scan by scan from a real log (walls --incremental):
-// segment as given, without the cleaning (not incremental), splits and merges held back for three
-// decompositions, since the region decompositions a real scan triggers cut and merge rooms
-// differently from one scan to the next, and only the rooms a change touches decomposed again (no
-// neighbours across passages), rooms over 50 m² only within 3 m of the change: faster and calmer
-// there (benchmarks/README.md, "Incremental on real laser logs").
+// no cleaning, splits and merges held back, only touched rooms decomposed, large ones near the change,
+// since a real scan's decompositions differ from scan to scan (benchmarks/README.md, log replay).
 IncrementalOptions wall_map_incremental_options(const SegmentOptions& segment = wall_map_segment_options());
 
 }  // namespace topocut

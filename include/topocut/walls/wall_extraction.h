@@ -22,17 +22,15 @@ struct WallExtractionOptions {
     o.dilation = 1;
     return o;
   }();
-  // Line extraction on every segment; min_points of the chosen method is overridden by min_points.
-  // IEPF by default: on the four shared logs it gives the best pair of wall precision and hit
-  // coverage of the five methods (benchmarks/README.md, "Walls from laser logs").
+  // Line extraction on every segment (its min_points replaced by ours); IEPF: the best wall precision
+  // and coverage together on the logs (benchmarks/README.md, "Walls from laser logs").
   LineExtractionOptions lines = [] {
     LineExtractionOptions o;
     o.method = LineMethod::kIepf;
     return o;
   }();
-  // Lines with fewer supporting beams are dropped. 3 (the fewest that make a line more than a chord)
-  // keeps small furniture and far, sparse walls: on the shared logs it raises the share of laser
-  // hits explained by walls by 2–3 points over 4 at the cost of under a point of wall precision.
+  // Lines with fewer supporting beams are dropped; 3, the fewest that make more than a chord, keeps
+  // small furniture and far, sparse walls (benchmarks/README.md, "Walls from laser logs").
   std::size_t min_points = 3;
   // A line is cut where consecutive support points (along the line) are farther apart than this:
   // a wall is only claimed where it was seen. Some extractors (SMF) join collinear pieces across a

@@ -35,11 +35,9 @@ struct WallMergeOptions {
   double index_cell = 1.0;             // metres, cell of the spatial hash of walls
 };
 
-// Merges the segments into walls. Greedy and deterministic: segments are taken longest first (ties by
-// input order) and each joins the compatible wall whose line it is closest to, or starts a new wall;
-// the walls are then merged with each other the same way until nothing changes. A spatial hash of
-// the walls' extents keeps each look-up local. Degenerate segments (zero length or non-finite) are
-// skipped. Walls are ordered by their first member. Throws Error on invalid options.
+// Merges the segments into walls, greedily and deterministically: longest first (ties by input order),
+// each into the closest compatible wall or a new one, then walls with walls until nothing changes.
+// Degenerate segments are skipped; walls in order of their first member. Throws Error on bad options.
 // Throws Error naming the first option outside its range.
 void validate(const WallMergeOptions& options);
 

@@ -3,10 +3,8 @@
 // BGRA by the samples per pixel; 16-bit grey, RGB and RGBA read as stored, in BGR(A) order. Errors
 // and warnings go to per-handle handlers, never to stderr.
 //
-// libtiff is opened with dlopen() on the first TIFF, not linked: it brings seven more shared
-// libraries (WebP, Zstandard, LZMA, LERC, JBIG, libdeflate), which cost every topocut process about
-// 3-4 ms of CPU at start-up (10 % of `topocut --version`, benchmarks/README.md "Start-up") while
-// maps are almost never TIFF.
+// libtiff is opened with dlopen() on the first TIFF, not linked: its seven dependent libraries would
+// slow every process's start-up (benchmarks/README.md, "Start-up") while maps are almost never TIFF.
 #include <dlfcn.h>
 
 #include <algorithm>
