@@ -1,7 +1,7 @@
 #pragma once
 // Open rooms are not rooms: a region whose outline runs mostly into space the sensor never saw (a ray
 // fan through a door or window, a scrap beyond the walls) is no room a person would draw. It joins the
-// room it opens from; with no room beside it (a room seen only through its door), it stays.
+// room it opens from; with no room beside it (free space outside the building), it is left out.
 #include <opencv2/core.hpp>
 
 #include "topocut/core/occupancy_grid.h"
@@ -25,11 +25,11 @@ struct OpenRoomOptions {
 void validate(const OpenRoomOptions& options);
 
 // rooms (each piece one room, grid coordinates of grid) with every open room joined to the room it
-// shares the longest boundary with (their union), and an open room with no room beside it (free space
-// seen through a gap, outside the building) left out: its cells stay unlabelled unless label completion
-// gives them to a room nearby. Cuts stay as they are (a cut inside one room
-// separates nothing). Unchanged unless options.enabled, and on a grid without occupied cells (walls
-// drawn in the unknown grey: walls and never-seen space cannot be told apart).
+// shares the longest boundary with (their union), and every open room with no room beside it left out
+// (its cells stay unlabelled unless label completion gives them to a room nearby). Cuts stay as they
+// are (a cut inside one room separates nothing). Unchanged unless options.enabled, and on a grid
+// without occupied cells (walls drawn in the unknown grey: walls and never-seen space cannot be told
+// apart).
 PieceSet join_open_rooms(const PieceSet& rooms, const OccupancyGrid& grid, const OpenRoomOptions& options = {});
 
 }  // namespace topocut
