@@ -1,5 +1,6 @@
 #include "topocut/segmentation/open_rooms.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numeric>
 
@@ -61,7 +62,10 @@ PieceSet join_open_rooms(const PieceSet& rooms, const OccupancyGrid& grid, const
   std::iota(parent.begin(), parent.end(), 0);
   std::vector<bool> dropped(rooms.pieces.size(), false);
   bool changed = false;
-  for (const auto& [id, extent] : room_extents(ids)) {
+  const auto extents = room_extents(ids);
+  long long largest = 0;
+  for (const auto& [id, extent] : extents) largest = std::max(largest, static_cast<long long>(extent.cells));
+  for (const auto& [id, extent] : extents) {
     if (static_cast<double>(extent.cells) * cell_area < options.min_area) continue;
     const RoomOutline outline = room_outline(ids, id, extent.box, grid.cells, walls, static_cast<int>(std::lround(options.wall_band / grid.resolution)));
     if (!outline.open(options.share, options.ragged_share)) continue;
@@ -70,8 +74,10 @@ PieceSet join_open_rooms(const PieceSet& rooms, const OccupancyGrid& grid, const
     for (const auto& [other, edges] : outline.neighbours) {
       if (edges > longest) std::tie(into, longest) = std::pair{other, edges};
     }
-    if (into == 0) {  // nothing beside it: free space seen through a gap, outside the building
-      dropped[static_cast<std::size_t>(id - 1)] = changed = true;
+    if (into == 0) {
+      // Nothing beside it: free space seen through a gap, outside the building, unless it is the
+      // building itself (the map's largest room, or as large as half of it: a map explored so far).
+      if (2 * static_cast<long long>(extent.cells) < largest) dropped[static_cast<std::size_t>(id - 1)] = changed = true;
       continue;
     }
     const int a = root(parent, id - 1), b = root(parent, into - 1);

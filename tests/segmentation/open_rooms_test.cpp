@@ -49,7 +49,12 @@ TEST(OpenRooms, AnOpenRoomWithNothingBesideItIsDropped) {
     alone.rooms.pieces.erase(alone.rooms.pieces.begin());
     alone.rooms.cuts.clear();
     alone.rooms.rules.clear();
-    EXPECT_EQ(join_open_rooms(alone.rooms, alone.grid).pieces.size(), beyond == kUnknown ? 0u : 1u);
+    // Alone on the map it is the building explored so far, and stays.
+    EXPECT_EQ(join_open_rooms(alone.rooms, alone.grid).pieces.size(), 1u);
+    // Beside a walled room more than twice its size, it is a scrap outside the building.
+    alone.rooms.pieces.push_back({{{5, 5}, {44, 5}, {44, 125}, {5, 125}}, {}});
+    alone.grid.cells(cv::Rect(5, 5, 39, 120)).setTo(kFree);
+    EXPECT_EQ(join_open_rooms(alone.rooms, alone.grid).pieces.size(), beyond == kUnknown ? 1u : 2u);
   }
 }
 

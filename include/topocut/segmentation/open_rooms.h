@@ -25,8 +25,9 @@ struct OpenRoomOptions {
 void validate(const OpenRoomOptions& options);
 
 // rooms (each piece one room, grid coordinates of grid) with every open room joined to the room it
-// shares the longest boundary with (their union), and every open room with no room beside it left out
-// (its cells stay unlabelled unless label completion gives them to a room nearby). Cuts stay as they
+// shares the longest boundary with (their union), and every open room with no room beside it and less
+// than half the area of the largest room left out (its cells stay unlabelled unless label completion
+// gives them to a room nearby; a lone large one is the building, or what of it was explored). Cuts stay as they
 // are (a cut inside one room separates nothing). Unchanged unless options.enabled, and on a grid
 // without occupied cells (walls drawn in the unknown grey: walls and never-seen space cannot be told
 // apart).
