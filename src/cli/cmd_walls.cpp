@@ -69,7 +69,8 @@ void replay(const std::vector<PosedScan>& scans, const WallsOptions& walls, cons
   std::cout << "scans: " << run.scans << ", updates: " << run.updates.size() << "\n";
   std::cout << format_update_times(run.updates);
   std::cout << "stability: " << format_stability(run.stability) << "\n";
-  std::cout << "final rooms: incremental " << run.incremental.rooms.size() << ", batch " << run.batch.rooms.size() << "\n";
+  std::cout << format_batch_stability(run);
+  std::cout << final_rooms_line(run);
   if (!arguments.frames.empty()) std::cout << "frames: " << frames.written() << " written to " << arguments.frames << "\n";
   if (!out_map.empty()) save_map(out_map, grid);
   if (!out_color.empty()) write_overlay(out_color, grid, run.incremental);

@@ -11,7 +11,6 @@ SegmentOptions wall_map_segment_options() {
 IncrementalOptions wall_map_incremental_options(const SegmentOptions& segment) {
   IncrementalOptions options;
   options.segment = segment;
-  options.segment.clean = false;
   // Measured on the four CARMEN logs (benchmarks/README.md, log replay): holding merges back like
   // splits and decomposing only the touched rooms lower both the churn p95 and the update p95.
   options.split_after = 3;
