@@ -4,61 +4,62 @@
 #include <cmath>
 #include <tuple>
 #include <unordered_map>
+#include <unordered_set>
 
 #include "topocut/core/error.h"
 
 namespace topocut {
 
-namespace {
+namespace detail {
 
-struct Overlap {
-  long long cells;
-  int label;  // of next
-  int old;    // id of previous
-};
-
-// Cells shared by each (label of next, id of previous) pair, counted run by run along the rows.
-std::vector<Overlap> overlaps(const cv::Mat& previous, const cv::Mat& next) {
+std::vector<IdOverlap> id_overlaps(const cv::Mat& old_ids, const cv::Mat& next, const cv::Mat& mask, int labels,
+                                   std::vector<long long>* sizes) {
   std::unordered_map<long long, long long> count;
+  if (sizes) sizes->assign(static_cast<std::size_t>(labels) + 1, 0);
   auto key = [](int label, int old) { return (static_cast<long long>(label) << 32) | static_cast<unsigned>(old); };
+  // Run by run along the rows: a hash per run, not per cell.
   for (int r = 0; r < next.rows; ++r) {
     const int* n = next.ptr<int>(r);
-    const int* p = previous.ptr<int>(r);
+    const int* p = old_ids.ptr<int>(r);
+    const unsigned char* m = mask.empty() ? nullptr : mask.ptr<unsigned char>(r);
     int c = 0;
     while (c < next.cols) {
-      if (n[c] <= 0 || p[c] <= 0) {
+      if (n[c] <= 0 || n[c] > labels || (m && !m[c])) {
         ++c;
         continue;
       }
-      const int label = n[c], old = p[c];
-      const int start = c;
-      while (c < next.cols && n[c] == label && p[c] == old) ++c;
-      count[key(label, old)] += c - start;
+      const int label = n[c], old = p[c], start = c;
+      while (c < next.cols && n[c] == label && p[c] == old && (!m || m[c])) ++c;
+      if (sizes) (*sizes)[static_cast<std::size_t>(label)] += c - start;
+      if (old > 0) count[key(label, old)] += c - start;
     }
   }
-  std::vector<Overlap> out;
+  std::vector<IdOverlap> out;
   out.reserve(count.size());
   for (const auto& [k, cells] : count) out.push_back({cells, static_cast<int>(k >> 32), static_cast<int>(k & 0xffffffff)});
-  std::sort(out.begin(), out.end(), [](const Overlap& a, const Overlap& b) {
+  std::sort(out.begin(), out.end(), [](const IdOverlap& a, const IdOverlap& b) {
     return std::tie(b.cells, a.label, a.old) < std::tie(a.cells, b.label, b.old);
   });
   return out;
 }
 
-}  // namespace
+}  // namespace detail
 
-std::vector<int> carried_ids(const cv::Mat& previous, const cv::Mat& next, int labels, int& next_id) {
-  if (next.type() != CV_32SC1 || (!previous.empty() && (previous.type() != CV_32SC1 || previous.size() != next.size())))
+std::vector<int> carried_ids(const cv::Mat& previous, const cv::Mat& next, int labels, int& next_id,
+                             const cv::Mat& retired) {
+  auto fits = [&](const cv::Mat& m) { return m.empty() || (m.type() == CV_32SC1 && m.size() == next.size()); };
+  if (next.type() != CV_32SC1 || !fits(previous) || !fits(retired))
     throw Error("internal: ids are carried between label images (CV_32SC1) of one size");
   std::vector<int> ids(static_cast<std::size_t>(labels) + 1, 0);
+  std::unordered_set<int> taken;
   if (!previous.empty()) {
-    std::unordered_map<int, char> taken;
-    for (const Overlap& o : overlaps(previous, next)) {
-      if (o.label > labels || ids[static_cast<std::size_t>(o.label)] != 0 || taken[o.old]) continue;
+    for (const detail::IdOverlap& o : detail::id_overlaps(previous, next, cv::Mat(), labels)) {
+      if (ids[static_cast<std::size_t>(o.label)] != 0 || taken.count(o.old)) continue;
       ids[static_cast<std::size_t>(o.label)] = o.old;
-      taken[o.old] = 1;
+      taken.insert(o.old);
     }
   }
+  revived_ids(retired, next, cv::Mat(), ids, [&](int id) { return !taken.count(id) && id < next_id; });
   for (int l = 1; l <= labels; ++l)
     if (ids[static_cast<std::size_t>(l)] == 0) ids[static_cast<std::size_t>(l)] = next_id++;
   return ids;

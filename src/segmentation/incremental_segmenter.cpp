@@ -109,6 +109,7 @@ void IncrementalSegmenter::State::start_frame(const OccupancyGrid& grid) {
   floor = cv::Mat::zeros(grid.cells.size(), CV_8UC1);
   labelled = cells.clone();
   result.labels = cv::Mat::zeros(grid.cells.size(), CV_32SC1);
+  retired = cv::Mat::zeros(grid.cells.size(), CV_32SC1);
   result.resolution = grid.resolution;
   result.origin = grid.origin;
   result.rooms.clear();
@@ -140,6 +141,7 @@ bool IncrementalSegmenter::State::move_frame(const OccupancyGrid& grid, bool& re
   floor = moved(floor, CV_8UC1, 0);
   labelled = moved(labelled, CV_8UC1, kUnknown);
   result.labels = moved(result.labels, CV_32SC1, 0);
+  retired = moved(retired, CV_32SC1, 0);
   result.origin = grid.origin;
   origin = grid.origin;
   for (RoomState& room : rooms) {
@@ -303,7 +305,8 @@ void IncrementalSegmenter::State::segment_whole(const OccupancyGrid& grid, const
   }
   const int first_new = next_id;
   const int count = static_cast<int>(batch.rooms.size());
-  const std::vector<int> ids = carried_ids(result.labels, batch.labels, count, next_id);
+  const std::vector<int> ids = carried_ids(result.labels, batch.labels, count, next_id, retired);
+  remember_retired(ids);
   int kept = 0;
   for (std::size_t id = 1; id < rooms.size(); ++id) kept += rooms[id].alive;
   report.redecomposed_rooms = kept;
@@ -320,6 +323,20 @@ void IncrementalSegmenter::State::segment_whole(const OccupancyGrid& grid, const
   recount_rooms();
   report.region = cv::Rect(0, 0, grid.width(), grid.height());
   report.region_cells = static_cast<int>(free_cells);
+}
+
+// Before result.labels take the ids of a whole-map update: the cells of every room whose id goes to
+// no new room are where it last lay.
+void IncrementalSegmenter::State::remember_retired(const std::vector<int>& ids) {
+  std::vector<char> kept(static_cast<std::size_t>(next_id), 0);
+  for (const int id : ids)
+    if (id > 0) kept[static_cast<std::size_t>(id)] = 1;
+  for (int r = 0; r < retired.rows; ++r) {
+    const int* l = result.labels.ptr<int>(r);
+    int* out = retired.ptr<int>(r);
+    for (int c = 0; c < retired.cols; ++c)
+      if (l[c] > 0 && !kept[static_cast<std::size_t>(l[c])]) out[c] = l[c];
+  }
 }
 
 void IncrementalSegmenter::State::process(const OccupancyGrid& grid, const cv::Rect& changed) {
@@ -622,6 +639,7 @@ const IncrementalOptions& IncrementalSegmenter::options() const { return state_-
 std::size_t IncrementalSegmenter::state_bytes() const {
   const State& s = *state_;
   std::size_t bytes = s.cells.total() * s.cells.elemSize() + s.floor.total() * s.floor.elemSize() +
+                      s.retired.total() * s.retired.elemSize() +
                       s.labelled.total() * s.labelled.elemSize() + s.result.labels.total() * s.result.labels.elemSize();
   bytes += s.rooms.capacity() * sizeof(RoomState);
   bytes += s.result.rooms.capacity() * sizeof(Room);

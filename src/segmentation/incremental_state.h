@@ -167,6 +167,7 @@ struct IncrementalSegmenter::State {
   cv::Mat cells;     // copy of the previous grid (CV_8UC1)
   cv::Mat floor;     // its free space as decomposed: binarized and cleaned (CV_8UC1, 255)
   cv::Mat labelled;  // its cells as labelled (cells_after_cleaning(): kFree cells get a room)
+  cv::Mat retired;   // where each room that disappeared last lay (its id; CV_32SC1), to give it back its id
   Segmentation result;               // result.labels is the state's label image
   std::vector<RoomState> rooms{1};   // by id; index 0 unused
   int next_id = 1;
@@ -185,6 +186,7 @@ struct IncrementalSegmenter::State {
   void detach_labels();
   void process(const OccupancyGrid& grid, const cv::Rect& changed);
   void segment_whole(const OccupancyGrid& grid, const std::string& reason);
+  void remember_retired(const std::vector<int>& ids);
   ChangeMask take_changes(const OccupancyGrid& grid, const cv::Rect& changed);
   void front_end_window(const OccupancyGrid& grid, const cv::Rect& window, cv::Mat& new_floor, cv::Mat& new_labelled) const;
   std::vector<Blob> find_blobs(const ChangeMask& mask, cv::Mat& blob_of) const;

@@ -300,6 +300,14 @@ TEST(IncrementalSegmenter, DoorOpeningMergesIntoTheLargerRoomsId) {
     EXPECT_EQ(second.labels.at<int>(plan.rooms[k].y + 1, plan.rooms[k].x + 1),
               first.labels.at<int>(plan.rooms[k].y + 1, plan.rooms[k].x + 1));
   EXPECT_EQ(segmenter.last_update().redecomposed_rooms, 2);
+
+  // Closed again: room 0 comes back where its id last lay and takes that id back, no new one.
+  const Segmentation third = segmenter.update(plan.world);
+  expect_valid(plan.world, third);
+  ASSERT_EQ(third.rooms.size(), 5u);
+  EXPECT_EQ(third.labels.at<int>(plan.rooms[0].y + 1, plan.rooms[0].x + 1), room0_id);
+  EXPECT_EQ(third.labels.at<int>(plan.corridor.y + 1, plan.corridor.x + 1), corridor_id);
+  EXPECT_EQ(segmenter.last_update().new_rooms, 0);
 }
 
 TEST(IncrementalSegmenter, DoorClosingSplitsAndTheLargerPartKeepsTheId) {
@@ -1043,8 +1051,9 @@ TEST(IncrementalSegmenter, StateIsProportionalToTheMap) {
   IncrementalSegmenter segmenter;
   segmenter.update(plan.world);
   const std::size_t cells = plan.world.cells.total();
-  EXPECT_GE(segmenter.state_bytes(), 6 * cells);  // grid copy, free space, labels
-  EXPECT_LT(segmenter.state_bytes(), 8 * cells);
+  // Grid copy, cleaned floor, labelled cells (a byte each), labels and retired ids (four each).
+  EXPECT_GE(segmenter.state_bytes(), 11 * cells);
+  EXPECT_LT(segmenter.state_bytes(), 13 * cells);
 }
 
 }  // namespace

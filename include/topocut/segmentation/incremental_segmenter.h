@@ -105,8 +105,8 @@ struct IncrementalUpdateReport {
 };
 
 // Keeps the previous grid, its cleaned free space (what is decomposed), the cells the cleaning leaves
-// free (what is labelled) and the labels between updates (seven bytes per cell plus the rooms and
-// passages) and hands out stable room ids.
+// free (what is labelled), the labels and where rooms that disappeared last lay, between updates
+// (eleven bytes per cell plus the rooms and passages), and hands out stable room ids.
 //
 // A whole-map update (the first, a changed resolution, a frame that no longer holds the previous one,
 // more than batch_fraction of the free cells changed, resegment(), every update when windowed is
@@ -118,7 +118,9 @@ struct IncrementalUpdateReport {
 // by id); rooms the change did not reach (not next to a changed cell, not sharing a passage with such
 // a room as the neighbours_* options say, not holding back a merge with such a room) keep their id,
 // cells, polygon and passages (a room that only took in or lost a small blob keeps its polygon);
-// new rooms get ids never used before, and when rooms are decomposed again each old id goes to the
+// a new room takes back the id of a room that disappeared where more than half of it lies (a merge
+// undone, a cut found again; revived_ids()), else an id never used before; when rooms are decomposed
+// again each old id goes to the
 // piece sharing the most cells with it (largest overlaps first, one id per piece), so a room cut in
 // two keeps its id on its larger part (and the other part too while split_after holds the split
 // back; a room merged into another keeps its id and cells while merge_after holds the merge back).
