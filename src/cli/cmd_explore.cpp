@@ -56,7 +56,7 @@ int run(const std::vector<std::string>& args) {
       ("max-scans", po::value<int>(&exploration.max_scans)->default_value(exploration.max_scans), "stop after this many scans")
       ("min-frontier", po::value<double>(&exploration.min_frontier)->default_value(exploration.min_frontier), "ignore frontiers shorter than this (metres)")
       ("grow", po::bool_switch(&exploration.growing_map), "publish a map that grows with what was seen (new size and origin), as ROS does")
-      ("compare-batch", po::bool_switch(&options.compare_batch), "also run the batch segmenter on every update, timed")
+      ("compare-batch", po::bool_switch(&options.compare_batch), "also run the batch segmenter on every update, timed, with its own churn (ids carried by overlap)")
       ("batch-every", po::value<int>(&options.batch_every)->default_value(1), "with --compare-batch: only every N-th update (and the last)")
       ("no-hint", po::bool_switch(&no_hint), "do not tell the segmenter which rectangle changed")
       ("gt", po::value<std::string>(&gt_path), "ground-truth segmentation image (default: X_gt_segmentation.png next to the map)")

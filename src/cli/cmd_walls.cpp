@@ -69,7 +69,8 @@ void replay(const std::vector<PosedScan>& scans, const WallsOptions& walls, cons
   std::cout << "scans: " << run.scans << ", updates: " << run.updates.size() << "\n";
   std::cout << format_update_times(run.updates);
   std::cout << "stability: " << format_stability(run.stability) << "\n";
-  std::cout << "final rooms: incremental " << run.incremental.rooms.size() << ", batch " << run.batch.rooms.size() << "\n";
+  std::cout << format_batch_stability(run);
+  std::cout << final_rooms_line(run);
   if (!arguments.frames.empty()) std::cout << "frames: " << frames.written() << " written to " << arguments.frames << "\n";
   if (!out_map.empty()) save_map(out_map, grid);
   if (!out_color.empty()) write_overlay(out_color, grid, run.incremental);
@@ -106,7 +107,7 @@ po::options_description walls_options(WallsRequest& r, const SegmentSettings& se
       ("out-color", po::value<std::string>(&r.out_color), "write the rooms as a colour overlay (implies --segment)")
       ("out-rooms", po::value<std::string>(&r.out_rooms), "write the rooms as JSON (implies --segment)")
       ("incremental", "replay the log: build the grid scan by scan and segment every change incrementally")
-      ("compare-batch", po::bool_switch(&r.replay.compare_batch), "with --incremental: also run the batch segmenter on every update, timed")
+      ("compare-batch", po::bool_switch(&r.replay.compare_batch), "with --incremental: also run the batch segmenter on every update, timed, with its own churn (ids carried by overlap)")
       ("settle", po::bool_switch(&r.replay.settle), "with --incremental: settle each cell by occupancy evidence (log-odds, OctoMap's hit 0.7 / miss 0.4) instead of drawing every scan as it is")
       ("batch-every", po::value<int>(&r.replay.batch_every)->default_value(1), "with --compare-batch: only every N-th update (and the last)")
       ("frames", po::value<std::string>(&r.replay.frames), "with --incremental: write a PNG frame of every update into this folder")

@@ -48,6 +48,27 @@ std::string format_stability(const StabilityReport& r) {
                 r.rooms_changed, r.rooms.size(), r.room_changes, r.distinct_ids, r.final_rooms);
 }
 
+std::string final_rooms_line(const GridReplay& run) {
+  std::string out = "final rooms: incremental " + std::to_string(run.incremental.rooms.size());
+  if (run.windowed_rooms != static_cast<int>(run.incremental.rooms.size()))
+    out += " (" + std::to_string(run.windowed_rooms) + " before the map at rest was segmented as a whole)";
+  return out + ", batch " + std::to_string(run.batch.rooms.size()) + "\n";
+}
+
+std::string format_batch_stability(const GridReplay& run) {
+  const StabilityReport& b = run.batch_stability;
+  if (b.final_rooms == 0 && b.churn.empty()) return "";
+  const StabilityReport& i = run.stability;
+  auto ids_per_room = [](const StabilityReport& r) {
+    return r.final_rooms > 0 ? static_cast<double>(r.distinct_ids) / r.final_rooms : 0.0;
+  };
+  std::string out = "batch stability (ids carried by overlap): " + format_stability(b) + "\n";
+  out += "against batch: churn p95 ";
+  out += b.churn_p95 > 0.0 ? format("%.2f", i.churn_p95 / b.churn_p95) : std::string(i.churn_p95 > 0.0 ? "inf" : "-");
+  out += format(" of batch's; ids used per final room %.2f (batch %.2f)\n", ids_per_room(i), ids_per_room(b));
+  return out;
+}
+
 std::string format_exploration_summary(const ExplorationRun& run, const cv::Mat& gt_rooms, const std::string& ground_truth) {
   std::ostringstream out;
   out << "scans: " << run.scans << ", updates: " << run.updates.size() << " (" << run.stop_reason << "), path "
@@ -57,8 +78,9 @@ std::string format_exploration_summary(const ExplorationRun& run, const cv::Mat&
         << format("%.1f %% of the reachable free space\n", 100.0 * run.known_free_cells / run.reachable_free_cells);
   out << format_update_times(run.updates);
   out << "stability: " << format_stability(run.stability) << "\n";
+  out << format_batch_stability(run);
   out << "peak segmenter state: " << format("%.1f MB\n", run.peak_state_bytes / (1024.0 * 1024.0));
-  out << "final rooms: incremental " << run.incremental.rooms.size() << ", batch " << run.batch.rooms.size() << "\n";
+  out << final_rooms_line(run);
   if (gt_rooms.empty()) return out.str();
   const ExplorationScore score = score_exploration(run, gt_rooms);
   const PrecisionRecall& a = score.incremental.overlap;

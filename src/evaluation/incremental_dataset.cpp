@@ -33,7 +33,6 @@ std::vector<IncrementalImageResult> run_incremental_dataset(const std::vector<Da
           throw Error("the ground truth's size differs from the map's (" + map.ground_truth + ")");
         ExplorationRunOptions run_options = options.exploration;
         run_options.incremental.segment = options.run.segment;
-        run_options.incremental.segment.clean = false;  // not incremental yet (IncrementalOptions)
         const ExplorationRun run = run_exploration(world, run_options);
         const ExplorationScore score = score_exploration(run, gt_rooms, world.cells == kFree, options.run.evaluation);
         apply_scores(score.incremental, r.incremental);
@@ -61,6 +60,8 @@ std::vector<IncrementalImageResult> run_incremental_dataset(const std::vector<Da
         r.incremental.time_ms = r.incremental_times.total;
         r.peak_state_bytes = run.peak_state_bytes;
         r.stability = run.stability;
+        r.batch_stability = run.batch_stability;
+        r.windowed_rooms = run.windowed_rooms;
       } catch (const std::exception& e) {
         r.incremental.ok = r.batch.ok = false;
         r.incremental.error = r.batch.error = e.what();

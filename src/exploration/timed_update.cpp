@@ -1,6 +1,7 @@
 #include "exploration/timed_update.h"
 
 #include <chrono>
+#include <utility>
 
 #include <time.h>
 
@@ -34,7 +35,8 @@ Segmentation timed_segment(const OccupancyGrid& grid, const SegmentOptions& opti
   return result;
 }
 
-UpdateRecord timed_update(IncrementalSegmenter& segmenter, const OccupancyGrid& grid, const cv::Rect* hint, bool batch) {
+UpdateRecord timed_update(IncrementalSegmenter& segmenter, const OccupancyGrid& grid, const cv::Rect* hint, bool batch,
+                          Segmentation* batch_result) {
   UpdateRecord record;
   const Clock::time_point start = Clock::now();
   const double cpu_start = cpu_ms();
@@ -45,8 +47,9 @@ UpdateRecord timed_update(IncrementalSegmenter& segmenter, const OccupancyGrid& 
   record.changed_cells = segmenter.last_update().changed_cells;
   record.batch_update = segmenter.last_update().kind == IncrementalUpdateReport::Kind::kBatch;
   if (batch) {
-    const Segmentation rooms = timed_segment(grid, segmenter.options().segment, &record.batch_ms, &record.batch_wall_ms);
+    Segmentation rooms = timed_segment(grid, segmenter.options().segment, &record.batch_ms, &record.batch_wall_ms);
     record.batch_rooms = static_cast<int>(rooms.rooms.size());
+    if (batch_result) *batch_result = std::move(rooms);
   }
   return record;
 }

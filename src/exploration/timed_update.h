@@ -12,9 +12,10 @@
 namespace topocut::detail {
 
 // Updates segmenter with grid (with the changed-rectangle hint when hint is non-null) and, when
-// batch is true, also times segment(grid, segmenter.options().segment). Fills every field of the
-// record but scan.
-UpdateRecord timed_update(IncrementalSegmenter& segmenter, const OccupancyGrid& grid, const cv::Rect* hint, bool batch);
+// batch is true, also times segment(grid, segmenter.options().segment), whose result goes to
+// *batch_result when that is non-null. Fills every field of the record but scan.
+UpdateRecord timed_update(IncrementalSegmenter& segmenter, const OccupancyGrid& grid, const cv::Rect* hint, bool batch,
+                          Segmentation* batch_result = nullptr);
 
 // segment(grid, options) with its CPU and wall-clock times in milliseconds.
 Segmentation timed_segment(const OccupancyGrid& grid, const SegmentOptions& options, double* cpu_ms, double* wall_ms);

@@ -77,9 +77,7 @@ py::list keywords(const std::string& kind) {
   if (kind == "segment" || kind == "grid") add_grid_reading(out);
   if (kind == "incremental") {
     add_incremental(out);
-    SegmentSettings settings{IncrementalOptions{}.segment, {}};
-    settings.switches.rules_off.push_back("clean");  // as incremental_options(): the cleaning is batch-only
-    add_segment_rows(out, settings);
+    add_segment_rows(out, SegmentSettings{IncrementalOptions{}.segment, {}});
   }
   return out;
 }

@@ -154,9 +154,7 @@ IncrementalOptions incremental_options(py::dict kwargs) {
   o.speck_size = pop<double>(kwargs, "speck_size", o.speck_size);
   o.split_after = pop<int>(kwargs, "split_after", o.split_after);
   o.merge_after = pop<int>(kwargs, "merge_after", o.merge_after);
-  SegmentSettings s{o.segment, {}};
-  s.switches.rules_off.push_back("clean");
-  o.segment = settings_from(kwargs, s);
+  o.segment = settings_from(kwargs, SegmentSettings{o.segment, {}});
   return o;
 }
 

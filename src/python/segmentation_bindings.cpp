@@ -205,6 +205,17 @@ class PyIncremental {
       py::gil_scoped_release release;
       const std::lock_guard<std::mutex> lock(mutex_);
       out = std::make_shared<GridSegmentation>(update_grid(segmenter_, array));
+      frame_ = frame_of(array);
+    }
+    return {out};
+  }
+  Result resegment() {
+    std::shared_ptr<GridSegmentation> out;
+    {
+      py::gil_scoped_release release;
+      const std::lock_guard<std::mutex> lock(mutex_);
+      if (segmenter_.result().labels.empty()) throw Error("resegment() needs a map: call update() first");
+      out = std::make_shared<GridSegmentation>(in_frame(segmenter_.resegment(), frame_));
     }
     return {out};
   }
@@ -231,6 +242,7 @@ class PyIncremental {
  private:
   std::mutex mutex_;
   IncrementalSegmenter segmenter_;
+  GridFrame frame_;  // of the latest update, for resegment()
 };
 
 void bind_results(py::module_& m) {
@@ -327,6 +339,9 @@ void bind_segmentation(py::module_& m) {
            py::arg("origin") = py::make_tuple(0.0, 0.0, 0.0),
            "Segments the new grid (as segment() takes it; row_order and thresholds as keywords); returns a Segmentation\n"
            "whose room ids are stable across updates. The GIL is released while segmenting.")
+      .def("resegment", &PyIncremental::resegment,
+           "Segments the latest grid again as a whole (a map at rest): segment()'s rooms, ids carried by overlap.\n"
+           "Raises ValueError before the first update. The GIL is released while segmenting.")
       .def_property_readonly("last_update", &PyIncremental::last_update, "'unchanged', 'incremental' or 'batch'")
       .def("reset", &PyIncremental::reset, "Forgets everything; the next update starts afresh.");
 }

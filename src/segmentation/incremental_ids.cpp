@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "topocut/map/free_space_polygons.h"
+#include "topocut/segmentation/carried_ids.h"
 #include "topocut/segmentation/rooms_from_pieces.h"
 
 namespace topocut {
@@ -101,8 +102,21 @@ void IncrementalSegmenter::State::match_ids(const Region& region, RegionPieces& 
   std::sort(fresh.begin(), fresh.end(), [&](int a, int b) {
     return t.first_cell[static_cast<std::size_t>(a)] < t.first_cell[static_cast<std::size_t>(b)];
   });
-  for (const int p : fresh) id_of_piece[static_cast<std::size_t>(p)] = next_id++;
-  report.new_rooms = static_cast<int>(fresh.size());
+  // A piece where a room that disappeared earlier lay takes its id back (revived_ids()); ids of rooms
+  // still alive (those retiring now included) are not given twice.
+  const cv::Rect& window = region.window;
+  std::vector<int> revived(id_of_piece.size(), -1);  // -1: not fresh, left alone
+  for (const int p : fresh) revived[static_cast<std::size_t>(p)] = 0;
+  revived_ids(retired(window), found.local, found.raw, revived, [&](int id) {
+    return id < next_id && !rooms[static_cast<std::size_t>(id)].alive && !reused[static_cast<std::size_t>(id)];
+  });
+  int new_rooms = 0;
+  for (const int p : fresh) {
+    const int back = revived[static_cast<std::size_t>(p)];
+    id_of_piece[static_cast<std::size_t>(p)] = back > 0 ? back : next_id++;
+    new_rooms += back <= 0;
+  }
+  report.new_rooms = new_rooms;
   rooms.resize(static_cast<std::size_t>(next_id));
 }
 
@@ -211,6 +225,7 @@ std::vector<int> IncrementalSegmenter::State::retire_old_rooms(const Region& reg
     for (int c = 0; c < window.width; ++c) {
       if (!in[c]) continue;
       const int old = l[c];
+      if (old > 0 && !found.reused[static_cast<std::size_t>(old)]) retired.at<int>(window.y + r, window.x + c) = old;
       if (old > 0 && found.held_piece[static_cast<std::size_t>(old)] == k[c]) {
         RegionPieces::HeldCells& h = found.held[static_cast<std::size_t>(held_index[static_cast<std::size_t>(old)])];
         const int gc = window.x + c, gr = window.y + r;

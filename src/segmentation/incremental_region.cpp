@@ -13,6 +13,7 @@
 #include "topocut/map/binarize.h"
 #include "topocut/map/free_space_polygons.h"
 #include "topocut/map/rasterize.h"
+#include "topocut/segmentation/open_rooms.h"
 #include "topocut/segmentation/rooms_from_pieces.h"
 
 namespace topocut {
@@ -85,15 +86,30 @@ PieceTally tally_pieces(const cv::Mat& labels, const RegionPieces& found, const 
 
 // Decomposes again the free cells of the rooms in region plus the pending cells in its window, with
 // the batch stages, and gives the pieces ids (match_ids). Updates labels, room states,
-// result.rooms and passages.
-void IncrementalSegmenter::State::redecompose(Region region, std::vector<int>& touched_rooms) {
-  if (options.isolated_to_nearest_room && region.ids.empty() && !region.whole_map &&
-      label_isolated_cells(region, touched_rooms))
-    return;
+// result.rooms and passages. Returns false, changing no room, when the region's rooms keep no free
+// space to decompose: the whole map must be segmented again.
+bool IncrementalSegmenter::State::redecompose(Region region, std::vector<int>& touched_rooms) {
   add_neighbour_rooms(region);
   frame_region(region);
   RegionPieces found;
   while (!decompose_partially(region, found)) decompose_whole(region);
+  if (found.pieces == 0) {
+    if (!region.ids.empty()) return false;
+    // Newly labelled cells of a blob that holds no room (thinner than the opening, smaller than a
+    // room): they take the nearest room's label, as in segment().
+    std::vector<int> pending;
+    cv::Mat& labels = result.labels;
+    for (int r = region.window.y; r < region.window.y + region.window.height; ++r) {
+      int* l = labels.ptr<int>(r);
+      for (int c = region.window.x; c < region.window.x + region.window.width; ++c)
+        if (l[c] == kPending) {
+          l[c] = 0;
+          pending.push_back(r * labels.cols + c);
+        }
+    }
+    label_from_nearest_rooms(pending, touched_rooms);
+    return true;
+  }
   report_region(region, found.region_cells);
   const cv::Rect& window = region.window;
 
@@ -118,44 +134,7 @@ void IncrementalSegmenter::State::redecompose(Region region, std::vector<int>& t
   keep_border_passages(region, found, frame, list);
   add_new_passages(found, frame, list);
   store_sorted(list);
-}
-
-// Newly free cells that touch no room and keep no binarized free space (a ray fan seen through a
-// gap, thinner than the opening) can be no room of their own: as in batch, each takes the label of
-// the nearest room (along free space, else in a straight line). Decomposing them would find no
-// free space and take the whole map. Returns false, changing nothing, when they are not such cells.
-bool IncrementalSegmenter::State::label_isolated_cells(const Region& region, std::vector<int>& touched_rooms) {
-  const cv::Rect& window = region.window;
-  cv::Mat& labels = result.labels;
-  std::vector<int> pending;
-  for (int r = window.y; r < window.y + window.height; ++r) {
-    const int* l = labels.ptr<int>(r);
-    const unsigned char* b = bin.ptr<unsigned char>(r);
-    for (int c = window.x; c < window.x + window.width; ++c) {
-      if (l[c] != kPending) continue;
-      if (b[c] != 0) return false;  // binarized free space: it may be a room
-      pending.push_back(r * labels.cols + c);
-    }
-  }
-  if (pending.empty() || free_cells <= static_cast<long long>(pending.size())) return false;
-  int* data = labels.ptr<int>(0);
-  for (const int index : pending) data[index] = 0;
-  complete_unlabelled_cells(labels, cells == kFree, pending);
-  const bool all_labelled = std::all_of(pending.begin(), pending.end(), [&](int index) { return data[index] > 0; });
-  for (const int index : pending) {
-    if (!all_labelled) {
-      data[index] = kPending;
-      continue;
-    }
-    RoomState& room = rooms[static_cast<std::size_t>(data[index])];
-    const int r = index / labels.cols, c = index % labels.cols;
-    ++room.cells;
-    room.sum_c += c;
-    room.sum_r += r;
-    room.box = unite(room.box, cv::Rect(c, r, 1, 1));
-    add_unique(touched_rooms, data[index]);
-  }
-  return all_labelled;
+  return true;
 }
 
 // The rooms next to the region go with it (one ring, through the passages): batch decides on
@@ -197,7 +176,7 @@ void IncrementalSegmenter::State::add_neighbour_rooms(Region& region) const {
 // cells near the change (Region::near_change), so that a long corridor costs what the change costs.
 void IncrementalSegmenter::State::frame_region(Region& region) const {
   const cv::Rect change = region.window;
-  if (options.partial_area > 0.0 && !region.whole_map && !change.empty()) {
+  if (options.partial_area > 0.0 && !change.empty()) {
     const int margin = static_cast<int>(std::ceil(options.partial_margin / resolution));
     region.near_change = grown(change, margin, cells.size());
     const double cell_area = resolution * resolution;
@@ -213,6 +192,9 @@ void IncrementalSegmenter::State::frame_region(Region& region) const {
     const cv::Rect& box = rooms[static_cast<std::size_t>(id)].box;
     region.window = unite(region.window, region.member[static_cast<std::size_t>(id)] == kPartial ? box & region.near_change : box);
   }
+  // A frame of cells around the region as they are: the open-room rule reads the outline's far side,
+  // and a window's edge would read as never-seen space.
+  region.window = grown(region.window, 1, cells.size());
 }
 
 // Decomposes the region and gives its pieces ids (match_ids). Returns false, changing no room,
@@ -220,6 +202,7 @@ void IncrementalSegmenter::State::frame_region(Region& region) const {
 bool IncrementalSegmenter::State::decompose_partially(Region& region, RegionPieces& found) {
   found = decompose_region(region);
   label_pieces(region, found);
+  if (found.pieces == 0) return true;  // nothing to decompose: redecompose() decides
   if (!find_kept_pieces(region, found)) return false;
   found.tally = tally_pieces(result.labels, found, region);
   if (!kept_pieces_are_mostly_theirs(region, found)) return false;
@@ -250,65 +233,48 @@ void IncrementalSegmenter::State::decompose_whole(Region& region) const {
   }
 }
 
-// The region's free cells (raw) and their decomposition into pieces, in window grid coordinates.
-// Where binarization leaves nothing of a region that has free cells, the region grows to the whole
-// map, as batch would take it; a map with no binarized free space at all throws.
-RegionPieces IncrementalSegmenter::State::decompose_region(Region& region) {
+// The region's cells to label (raw) and the decomposition of its floor into pieces, in window grid
+// coordinates, with the open-room rule applied to the pieces as segment() applies it to all of them.
+// The floor is that of the region's rooms and pending cells, with the obstacle specks that count as
+// floor (no room's cells).
+RegionPieces IncrementalSegmenter::State::decompose_region(const Region& region) const {
   const cv::Mat& labels = result.labels;
-  std::vector<char>& in_region = region.member;
-  cv::Rect& window = region.window;
+  const std::vector<char>& in_region = region.member;
+  const cv::Rect& window = region.window;
   RegionPieces found;
   cv::Mat& raw = found.raw;
-  cv::Mat binarized;
-  for (int attempt = 0; attempt < 2; ++attempt) {
-    raw.create(window.size(), CV_8UC1);
-    binarized.create(window.size(), CV_8UC1);
-    found.region_cells = 0;
-    int binarized_cells = 0;
-    // member[id + 1]: 255 if cells labelled id are in the region (kPending = -1 always is), 128 if
-    // only those near the change are (a partial room).
-    std::vector<unsigned char> member(rooms.size() + 1, 0);
-    member[0] = 255;
-    for (std::size_t id = 1; id < rooms.size(); ++id)
-      member[id + 1] = in_region[id] == kWhole ? 255 : in_region[id] == kPartial ? 128 : 0;
-    const unsigned char* lut = member.data() + 1;
-    const cv::Rect& near = region.near_change;
-    for (int r = 0; r < window.height; ++r) {
-      const int* l = labels.ptr<int>(window.y + r) + window.x;
-      const unsigned char* b = bin.ptr<unsigned char>(window.y + r) + window.x;
-      unsigned char* out_raw = raw.ptr<unsigned char>(r);
-      unsigned char* out_bin = binarized.ptr<unsigned char>(r);
-      const bool near_row = window.y + r >= near.y && window.y + r < near.y + near.height;
-      for (int c = 0; c < window.width; ++c) {
-        unsigned char in = lut[l[c]];  // labels are >= kPending
-        if (in == 128) in = near_row && window.x + c >= near.x && window.x + c < near.x + near.width ? 255 : 0;
-        out_raw[c] = in;
-        out_bin[c] = in & b[c];
-        found.region_cells += in & 1;
-        binarized_cells += out_bin[c] & 1;
-      }
+  raw.create(window.size(), CV_8UC1);
+  cv::Mat region_floor(window.size(), CV_8UC1);
+  int floor_cells = 0;
+  // member[id + 1]: 255 if cells labelled id are in the region (kPending = -1 always is), 128 if
+  // only those near the change are (a partial room).
+  std::vector<unsigned char> member(rooms.size() + 1, 0);
+  member[0] = 255;
+  for (std::size_t id = 1; id < rooms.size(); ++id)
+    member[id + 1] = in_region[id] == kWhole ? 255 : in_region[id] == kPartial ? 128 : 0;
+  const unsigned char* lut = member.data() + 1;
+  const cv::Rect& near = region.near_change;
+  for (int r = 0; r < window.height; ++r) {
+    const int* l = labels.ptr<int>(window.y + r) + window.x;
+    const unsigned char* f = floor.ptr<unsigned char>(window.y + r) + window.x;
+    unsigned char* out_raw = raw.ptr<unsigned char>(r);
+    unsigned char* out_floor = region_floor.ptr<unsigned char>(r);
+    const bool near_row = window.y + r >= near.y && window.y + r < near.y + near.height;
+    for (int c = 0; c < window.width; ++c) {
+      unsigned char in = lut[l[c]];  // labels are >= kPending
+      if (in == 128) in = near_row && window.x + c >= near.x && window.x + c < near.x + near.width ? 255 : 0;
+      out_raw[c] = in;
+      out_floor[c] = (l[c] == 0 ? 255 : in) & f[c];
+      found.region_cells += in & 1;
+      floor_cells += out_floor[c] & 1;
     }
-    found.set = PieceSet{};
-    if (binarized_cells > 0) {
-      const FreeSpacePolygons polygons = free_space_polygons(binarized, resolution, options.segment.contours);
-      for (const FreeSpaceComponent& component : polygons.components)
-        found.set.append(decompose_component(component, resolution, options.segment));
-    }
-    if (found.region_cells == 0 || !found.set.pieces.empty()) break;
-    // Free cells but nothing left after binarization here: as batch would, take the whole map.
-    if (region.whole_map || attempt == 1)
-      throw Error("no free space is left after inflating obstacles by the robot radius and filtering");
-    region.whole_map = true;
-    decompose_whole(region);
-    for (std::size_t id = 1; id < rooms.size(); ++id)
-      if (rooms[id].alive && !in_region[id]) {
-        in_region[id] = kWhole;
-        region.ids.push_back(static_cast<int>(id));
-        window = unite(window, rooms[id].box);
-      }
-    report.kind = IncrementalUpdateReport::Kind::kBatch;
-    report.reason = "no binarized free space in the changed region";
   }
+  if (floor_cells == 0) return found;
+  const FreeSpacePolygons polygons = free_space_polygons(region_floor, resolution, options.segment.contours);
+  for (const FreeSpaceComponent& component : polygons.components)
+    found.set.append(decompose_component(component, resolution, options.segment));
+  if (!found.set.pieces.empty())
+    found.set = join_open_rooms(found.set, OccupancyGrid{labelled(window), resolution, {}}, options.segment.open_rooms);
   return found;
 }
 
@@ -432,7 +398,7 @@ void IncrementalSegmenter::State::report_region(const Region& region, int region
   report.partial_rooms = static_cast<int>(std::count(region.member.begin(), region.member.end(), kPartial));
   bool every_room = !region.ids.empty();
   for (std::size_t id = 1; id < rooms.size() && every_room; ++id) every_room = !rooms[id].alive || region.member[id] == kWhole;
-  if (!region.whole_map && every_room) {
+  if (every_room) {
     report.kind = IncrementalUpdateReport::Kind::kBatch;
     report.reason = "the change touched every room";
   }

@@ -12,8 +12,10 @@
 
 #include "topocut/core/error.h"
 #include "topocut/map/binarize.h"
+#include "topocut/map/free_space_cleaning.h"
 #include "topocut/map/free_space_polygons.h"
 #include "topocut/map/rasterize.h"
+#include "topocut/segmentation/carried_ids.h"
 #include "topocut/segmentation/rooms_from_pieces.h"
 
 namespace topocut {
@@ -21,11 +23,6 @@ namespace topocut {
 using namespace incremental;
 
 namespace {
-
-// Bits of the change mask: how a cell's free space changed.
-constexpr unsigned char kGained = 1;    // not free before, free now
-constexpr unsigned char kLost = 2;      // free before, not free now
-constexpr unsigned char kReshaped = 4;  // free in both, but its binarized state changed
 
 bool trivial_binarization(const BinarizeOptions& b) {
   return b.robot_radius == 0.0 && b.opening_size == 0.0 && b.median_size == 0.0;
@@ -40,6 +37,20 @@ int binarization_reach(const BinarizeOptions& b, double resolution) {
   if (b.opening_size > 0.0) reach += static_cast<int>(std::lround(b.opening_size / resolution)) + 1;
   if (b.median_size > 0.0) reach += static_cast<int>(std::lround(b.median_size / resolution)) / 2 + 2;
   return reach;
+}
+
+// How far (cells) a changed cell can change what the cleaning keeps: the thickness test (a disc of
+// min_width, grown by a quarter of it) and the obstacle specks change the floor nearby; whether a
+// removed cell is inside the building (labelled) or outside (not) depends on the structure within
+// inside_closing of it, so a wall seen there can bring it in or leave it out.
+int cleaning_reach(const FreeSpaceCleaningOptions& o, double resolution) {
+  return static_cast<int>(std::ceil((1.25 * o.min_width + o.max_obstacle_speck + o.inside_closing) / resolution)) + 2;
+}
+
+// The surroundings the cleaning of a window is given beyond it: the building's inside is judged by
+// closing gaps up to inside_closing, and a ray ends on what lies around it.
+int cleaning_context(const FreeSpaceCleaningOptions& o, double resolution) {
+  return cleaning_reach(o, resolution) + static_cast<int>(std::ceil(o.inside_closing / resolution));
 }
 
 // Bounding box of the cells that differ between a and b inside window: a row-wise memcmp first,
@@ -64,11 +75,6 @@ cv::Rect changed_box(const cv::Mat& a, const cv::Mat& b, const cv::Rect& window)
   if (top < 0) return {};
   return cv::Rect(left, top, right - left + 1, bottom - top + 1);
 }
-
-// A shift within a thousandth of a cell of a whole number of cells is that number: ROS maps carry
-// their resolution as float32, so an origin moved by 80 cells of 0.05 m reads as 79.9999988 cells.
-bool near_integer(double v) { return std::abs(v - std::round(v)) < 1e-3; }
-
 
 std::size_t polygon_bytes(const PolygonWithHoles& p) {
   std::size_t n = p.outer.capacity();
@@ -100,8 +106,10 @@ void IncrementalSegmenter::State::start_frame(const OccupancyGrid& grid) {
   resolution = grid.resolution;
   origin = grid.origin;
   cells = cv::Mat(grid.cells.size(), CV_8UC1, cv::Scalar(kUnknown));
-  bin = cv::Mat::zeros(grid.cells.size(), CV_8UC1);
+  floor = cv::Mat::zeros(grid.cells.size(), CV_8UC1);
+  labelled = cells.clone();
   result.labels = cv::Mat::zeros(grid.cells.size(), CV_32SC1);
+  retired = cv::Mat::zeros(grid.cells.size(), CV_32SC1);
   result.resolution = grid.resolution;
   result.origin = grid.origin;
   result.rooms.clear();
@@ -115,37 +123,32 @@ void IncrementalSegmenter::State::start_frame(const OccupancyGrid& grid) {
 // not contain the old one (what falls outside is dropped) or is offset by a fraction of a cell
 // (the state is restarted).
 bool IncrementalSegmenter::State::move_frame(const OccupancyGrid& grid, bool& restarted) {
-  const int old_w = cells.cols, old_h = cells.rows;
-  const double shift_c = (origin.x - grid.origin.x) / resolution;
-  const double shift_r = grid.height() - old_h - (origin.y - grid.origin.y) / resolution;
-  if (!near_integer(shift_c) || !near_integer(shift_r)) {
+  cv::Point shift;
+  if (!frame_shift(origin, cells.rows, grid.origin, grid.height(), resolution, shift)) {
     start_frame(grid);
     restarted = true;
     return false;
   }
-  const int dc = static_cast<int>(std::lround(shift_c)), dr = static_cast<int>(std::lround(shift_r));
   const cv::Rect all(0, 0, grid.width(), grid.height());
-  const cv::Rect old_in_new(dc, dr, old_w, old_h);
+  const cv::Rect old_in_new(shift.x, shift.y, cells.cols, cells.rows);
   const cv::Rect kept = old_in_new & all;
-  cv::Mat new_cells(grid.cells.size(), CV_8UC1, cv::Scalar(kUnknown));
-  cv::Mat new_bin = cv::Mat::zeros(grid.cells.size(), CV_8UC1);
-  cv::Mat new_labels = cv::Mat::zeros(grid.cells.size(), CV_32SC1);
-  if (!kept.empty()) {
-    const cv::Rect source = kept - cv::Point(dc, dr);
-    cells(source).copyTo(new_cells(kept));
-    bin(source).copyTo(new_bin(kept));
-    result.labels(source).copyTo(new_labels(kept));
-  }
-  cells = new_cells;
-  bin = new_bin;
-  result.labels = new_labels;
+  auto moved = [&](const cv::Mat& old, int type, double fill) {
+    cv::Mat out(grid.cells.size(), type, cv::Scalar(fill));
+    if (!kept.empty()) old(kept - shift).copyTo(out(kept));
+    return out;
+  };
+  cells = moved(cells, CV_8UC1, kUnknown);
+  floor = moved(floor, CV_8UC1, 0);
+  labelled = moved(labelled, CV_8UC1, kUnknown);
+  result.labels = moved(result.labels, CV_32SC1, 0);
+  retired = moved(retired, CV_32SC1, 0);
   result.origin = grid.origin;
   origin = grid.origin;
   for (RoomState& room : rooms) {
     if (!room.alive) continue;
-    room.box = (room.box + cv::Point(dc, dr)) & all;
-    room.sum_c += static_cast<double>(room.cells) * dc;
-    room.sum_r += static_cast<double>(room.cells) * dr;
+    room.box = (room.box + shift) & all;
+    room.sum_c += static_cast<double>(room.cells) * shift.x;
+    room.sum_r += static_cast<double>(room.cells) * shift.y;
   }
   if (kept == old_in_new) return true;
   recount_rooms();
@@ -210,40 +213,13 @@ void IncrementalSegmenter::State::refresh_room(int id, const PolygonWithHoles* p
   it->centroid = room_centroid(state, cells.rows);
 }
 
-const Segmentation& IncrementalSegmenter::State::update(const OccupancyGrid& grid, const cv::Rect* hint) {
-  validate(grid);
-  validate(options.segment);
-  report = {};
-  // Copy on write: a caller that still holds the previous labels keeps them unchanged.
-  if (!result.labels.empty() && result.labels.u != nullptr && result.labels.u->refcount > 1)
-    result.labels = result.labels.clone();
-
-  std::string batch_reason;
-  bool restarted = false;  // a hint is only trusted against a state in the same place
-  if (!initialised) {
-    start_frame(grid);
-    batch_reason = "first update";
-    restarted = true;
-  } else if (std::abs(grid.resolution - resolution) > 1e-12 * resolution) {
-    start_frame(grid);
-    batch_reason = "the resolution changed";
-    restarted = true;
-  } else if (grid.cells.size() != cells.size() || !(grid.origin == origin)) {
-    if (!move_frame(grid, restarted))
-      batch_reason = restarted ? "the origin moved by a fraction of a cell" : "the new map does not contain the previous one";
-  }
-  const cv::Rect all(0, 0, grid.width(), grid.height());
-  const cv::Rect search = (hint != nullptr && !restarted) ? (*hint & all) : all;
-  const cv::Rect changed = changed_box(grid.cells, cells, search);
-  report.changed = changed;
-  if (changed.empty() && batch_reason.empty()) {
-    report.kind = IncrementalUpdateReport::Kind::kUnchanged;
-    return result;
-  }
+// Runs work on the state; never keeps a half-updated state: after an exception the next update
+// starts from scratch (ids stay unique).
+template <class Work>
+void IncrementalSegmenter::State::guarded(const Work& work) {
   try {
-    process(grid, changed, batch_reason);
+    work();
   } catch (...) {
-    // Never keep a half-updated state: the next update starts from scratch.
     IncrementalOptions keep_options = options;
     const int keep_next = next_id;
     *this = State{};
@@ -252,74 +228,203 @@ const Segmentation& IncrementalSegmenter::State::update(const OccupancyGrid& gri
     rooms.assign(static_cast<std::size_t>(next_id), RoomState{});
     throw;
   }
+}
+
+// Copy on write: a caller that still holds the previous labels keeps them unchanged.
+void IncrementalSegmenter::State::detach_labels() {
+  if (!result.labels.empty() && result.labels.u != nullptr && result.labels.u->refcount > 1)
+    result.labels = result.labels.clone();
+}
+
+const Segmentation& IncrementalSegmenter::State::update(const OccupancyGrid& grid, const cv::Rect* hint) {
+  validate(grid);
+  validate(options.segment);
+  report = {};
+  detach_labels();
+
+  std::string whole_reason;
+  bool restarted = false;  // a hint is only trusted against a state in the same place
+  if (!initialised) {
+    start_frame(grid);
+    whole_reason = "first update";
+    restarted = true;
+  } else if (std::abs(grid.resolution - resolution) > 1e-12 * resolution) {
+    start_frame(grid);
+    whole_reason = "the resolution changed";
+    restarted = true;
+  } else if (grid.cells.size() != cells.size() || !(grid.origin == origin)) {
+    if (!move_frame(grid, restarted))
+      whole_reason = restarted ? "the origin moved by a fraction of a cell" : "the new map does not contain the previous one";
+  }
+  const cv::Rect all(0, 0, grid.width(), grid.height());
+  const cv::Rect search = (hint != nullptr && !restarted) ? (*hint & all) : all;
+  const cv::Rect changed = changed_box(grid.cells, cells, search);
+  report.changed = changed;
+  if (changed.empty() && whole_reason.empty()) {
+    report.kind = IncrementalUpdateReport::Kind::kUnchanged;
+    return result;
+  }
+  if (whole_reason.empty() && !options.windowed) whole_reason = "every update segments the whole map";
+  guarded([&] {
+    if (whole_reason.empty()) process(grid, changed);
+    else segment_whole(grid, whole_reason);
+  });
   return result;
 }
 
-void IncrementalSegmenter::State::process(const OccupancyGrid& grid, const cv::Rect& changed,
-                                          const std::string& batch_reason) {
+const Segmentation& IncrementalSegmenter::State::resegment() {
+  if (!initialised) return result;
+  report = {};
+  detach_labels();
+  const OccupancyGrid grid{cells.clone(), resolution, origin};
+  report.changed = cv::Rect(0, 0, grid.width(), grid.height());
+  guarded([&] { segment_whole(grid, "resegmented as a whole"); });
+  return result;
+}
+
+
+// segment() on the whole grid, its rooms taking the ids of the rooms they overlap most (carried_ids):
+// the state becomes batch's, holds and absorbed cells forgotten.
+void IncrementalSegmenter::State::segment_whole(const OccupancyGrid& grid, const std::string& reason) {
+  report.kind = IncrementalUpdateReport::Kind::kBatch;
+  report.reason = reason;
+  if (report.changed_cells == 0) report.changed_cells = cv::countNonZero(cells != grid.cells);
+  cells = grid.cells.clone();
+  Segmentation batch;
+  if (cv::countNonZero(grid.cells == kFree) > 0) {
+    SegmentationInput input;
+    batch = segment(grid, options.segment, &input);
+    floor = input.floor;
+    labelled = input.labelled.cells.data == grid.cells.data ? cells.clone() : input.labelled.cells;
+  } else {  // nothing free yet (a map before the first scan): no room, as before any update
+    floor = cv::Mat::zeros(grid.cells.size(), CV_8UC1);
+    labelled = cells.clone();
+    batch.labels = cv::Mat::zeros(grid.cells.size(), CV_32SC1);
+    batch.resolution = grid.resolution;
+    batch.origin = grid.origin;
+  }
+  const int first_new = next_id;
+  const int count = static_cast<int>(batch.rooms.size());
+  const std::vector<int> ids = carried_ids(result.labels, batch.labels, count, next_id, retired);
+  remember_retired(ids);
+  int kept = 0;
+  for (std::size_t id = 1; id < rooms.size(); ++id) kept += rooms[id].alive;
+  report.redecomposed_rooms = kept;
+  report.new_rooms = static_cast<int>(std::count_if(ids.begin() + 1, ids.end(), [&](int id) { return id >= first_new; }));
+  report.removed_rooms = kept - (count - report.new_rooms);
+  Segmentation carried = renamed(std::move(batch), ids);
+  result.labels = carried.labels;
+  result.rooms = std::move(carried.rooms);
+  result.passages = std::move(carried.passages);
+  result.resolution = grid.resolution;
+  result.origin = grid.origin;
+  rooms.assign(static_cast<std::size_t>(next_id), RoomState{});
+  for (const Room& room : result.rooms) rooms[static_cast<std::size_t>(room.id)].alive = true;
+  recount_rooms();
+  report.region = cv::Rect(0, 0, grid.width(), grid.height());
+  report.region_cells = static_cast<int>(free_cells);
+}
+
+// Before result.labels take the ids of a whole-map update: the cells of every room whose id goes to
+// no new room are where it last lay.
+void IncrementalSegmenter::State::remember_retired(const std::vector<int>& ids) {
+  std::vector<char> kept(static_cast<std::size_t>(next_id), 0);
+  for (const int id : ids)
+    if (id > 0) kept[static_cast<std::size_t>(id)] = 1;
+  for (int r = 0; r < retired.rows; ++r) {
+    const int* l = result.labels.ptr<int>(r);
+    int* out = retired.ptr<int>(r);
+    for (int c = 0; c < retired.cols; ++c)
+      if (l[c] > 0 && !kept[static_cast<std::size_t>(l[c])]) out[c] = l[c];
+  }
+}
+
+void IncrementalSegmenter::State::process(const OccupancyGrid& grid, const cv::Rect& changed) {
   const ChangeMask mask = take_changes(grid, changed);
   report.changed_cells = mask.changed_cells;
-  if (mask.changed_cells == 0 && batch_reason.empty()) {
+  if (mask.changed_cells == 0) {
     report.kind = IncrementalUpdateReport::Kind::kUnchanged;
     return;
   }
-
-  bool whole_map = !batch_reason.empty();
-  report.reason = batch_reason;
-  if (!whole_map &&
-      static_cast<double>(mask.changed_cells) > options.batch_fraction * static_cast<double>(free_cells)) {
-    whole_map = true;
-    report.reason = free_cells == 0 ? "first free space" : "more than the batch fraction of the free space changed";
+  if (static_cast<double>(mask.changed_cells) > options.batch_fraction * static_cast<double>(free_cells)) {
+    segment_whole(grid, free_cells == 0 ? "first free space" : "more than the batch fraction of the free space changed");
+    return;
   }
-
   cv::Mat blob_of;
-  std::vector<Blob> blobs;
-  if (mask.changed_cells > 0) blobs = find_blobs(mask, blob_of);
-  Region region = choose_region(blobs, whole_map);
-  std::vector<int> touched_rooms = apply_changes(mask, blob_of, blobs);  // rooms whose area or cells changed
-
-  report.kind = whole_map ? IncrementalUpdateReport::Kind::kBatch : IncrementalUpdateReport::Kind::kIncremental;
-  if (!region.ids.empty() || !region.window.empty()) {
-    redecompose(std::move(region), touched_rooms);
+  std::vector<Blob> blobs = find_blobs(mask, blob_of);
+  Region region = choose_region(blobs);
+  std::vector<int> nearest;  // cells that take the nearest room's label
+  std::vector<int> touched_rooms = apply_changes(mask, blob_of, blobs, nearest);  // rooms whose area or cells changed
+  report.kind = IncrementalUpdateReport::Kind::kIncremental;
+  if ((!region.ids.empty() || !region.window.empty()) && !redecompose(std::move(region), touched_rooms)) {
+    segment_whole(grid, "no free space to decompose in the changed rooms");
+    return;
   }
+  label_from_nearest_rooms(nearest, touched_rooms);
   for (const int id : touched_rooms) refresh_room(id, nullptr);
 }
 
-// The state's cells and free space are the grid's from here on; the returned mask is all that
-// remains of how they were.
+// The state's cells, floor and labelled cells are the grid's from here on; the returned mask is all
+// that remains of how they were.
 ChangeMask IncrementalSegmenter::State::take_changes(const OccupancyGrid& grid, const cv::Rect& changed) {
-  const BinarizeOptions& binarize = options.segment.binarize;
-  const int reach = binarization_reach(binarize, resolution);
-
-  // The binarized free space can change up to `reach` cells away from a changed cell; computing
-  // it there needs the cells up to `reach` farther again.
+  const SegmentOptions& o = options.segment;
+  const int reach = binarization_reach(o.binarize, resolution) + (o.clean ? cleaning_reach(o.cleaning, resolution) : 0);
   ChangeMask mask;
   mask.window = grown(changed, reach, grid.cells.size());
   const cv::Rect& window = mask.window;
-  const cv::Mat new_bin = binarized_window(grid, window, binarize, reach);
+  cv::Mat new_floor, new_labelled;
+  front_end_window(grid, window, new_floor, new_labelled);
 
   mask.change = cv::Mat::zeros(window.size(), CV_8UC1);
   for (int r = 0; r < window.height; ++r) {
-    const unsigned char* old_cell = cells.ptr<unsigned char>(window.y + r) + window.x;
-    const unsigned char* new_cell = grid.cells.ptr<unsigned char>(window.y + r) + window.x;
-    const unsigned char* old_bin = bin.ptr<unsigned char>(window.y + r) + window.x;
-    const unsigned char* nb = new_bin.ptr<unsigned char>(r);
+    const unsigned char* old_cell = labelled.ptr<unsigned char>(window.y + r) + window.x;
+    const unsigned char* new_cell = new_labelled.ptr<unsigned char>(r);
+    const unsigned char* old_floor = floor.ptr<unsigned char>(window.y + r) + window.x;
+    const unsigned char* nf = new_floor.ptr<unsigned char>(r);
     unsigned char* d = mask.change.ptr<unsigned char>(r);
     for (int c = 0; c < window.width; ++c) {
       const bool was = old_cell[c] == kFree, is = new_cell[c] == kFree;
-      if (is && !was) d[c] = kGained;
-      else if (was && !is) d[c] = kLost;
-      else if (was && is && (old_bin[c] != 0) != (nb[c] != 0)) d[c] = kReshaped;
+      d[c] = static_cast<unsigned char>((is && !was ? kGained : 0) | (was && !is ? kLost : 0) |
+                                        ((old_floor[c] != 0) != (nf[c] != 0) ? kFloorChanged : 0));
       mask.changed_cells += d[c] != 0;
     }
   }
   if (!changed.empty()) grid.cells(changed).copyTo(cells(changed));
-  if (!window.empty()) new_bin.copyTo(bin(window));
+  if (!window.empty()) {
+    new_floor.copyTo(floor(window));
+    new_labelled.copyTo(labelled(window));
+  }
   return mask;
 }
 
+// segment()'s front end over window: the binarized free space, cleaned (options.segment.clean) with
+// the cleaning's context around the window, as the floor to decompose and the cells to label.
+void IncrementalSegmenter::State::front_end_window(const OccupancyGrid& grid, const cv::Rect& window, cv::Mat& new_floor,
+                                                   cv::Mat& new_labelled) const {
+  const SegmentOptions& o = options.segment;
+  const int reach = binarization_reach(o.binarize, resolution);
+  if (window.empty()) return;
+  if (!o.clean) {
+    new_floor = binarized_window(grid, window, o.binarize, reach);
+    new_labelled = grid.cells(window).clone();
+    return;
+  }
+  const cv::Rect context = grown(window, cleaning_context(o.cleaning, resolution), grid.cells.size());
+  const cv::Mat free = binarized_window(grid, context, o.binarize, reach);
+  const cv::Rect inner = window - context.tl();
+  if (cv::countNonZero(free) == 0) {
+    new_floor = cv::Mat::zeros(window.size(), CV_8UC1);
+    new_labelled = grid.cells(window).clone();
+    return;
+  }
+  const CleanedFreeSpace cleaned = clean_free_space(free, grid.cells(context), resolution, o.cleaning);
+  new_floor = cleaned.floor(inner).clone();
+  new_labelled = cells_after_cleaning(grid.cells(context), cleaned)(inner).clone();
+}
+
 // Blobs of changed cells (8-connected), each with the rooms it touches in raster order of first
-// contact: the order in which choose_region adds them, so region ids never depend on history.
+// contact: the order in which choose_region adds them, so region ids never depend on history. A
+// labelled cell touches its own room, any other cell the rooms around it.
 std::vector<Blob> IncrementalSegmenter::State::find_blobs(const ChangeMask& mask, cv::Mat& blob_of) const {
   const cv::Rect& window = mask.window;
   const cv::Mat& labels = result.labels;
@@ -338,33 +443,35 @@ std::vector<Blob> IncrementalSegmenter::State::find_blobs(const ChangeMask& mask
       if (d[c] == 0) continue;
       Blob& blob = blobs[static_cast<std::size_t>(b[c])];
       const int gr = window.y + r, gc = window.x + c;
-      if (d[c] & (kLost | kReshaped)) {
-        blob.structural = true;
-        blob.lost += (d[c] & kLost) != 0;
-        const int id = labels.at<int>(gr, gc);
-        if (id > 0) add_unique(blob.touched, id);
+      blob.gained += (d[c] & kGained) != 0;
+      blob.lost += (d[c] & kLost) != 0;
+      if (d[c] & kFloorChanged) {
+        blob.floor = true;
+        blob.structural = blob.structural || floor.at<unsigned char>(gr, gc) == 0;  // floor lost
       }
-      if (d[c] & kGained) {
-        ++blob.gained;
-        for (int nr = std::max(0, gr - 1); nr <= std::min(h - 1, gr + 1); ++nr) {
-          const int* row = labels.ptr<int>(nr);
-          for (int nc = std::max(0, gc - 1); nc <= std::min(w - 1, gc + 1); ++nc)
-            if (row[nc] > 0) add_unique(blob.touched, row[nc]);
-        }
+      const int own = labels.at<int>(gr, gc);
+      if (own > 0) {
+        add_unique(blob.touched, own);
+        continue;
+      }
+      for (int nr = std::max(0, gr - 1); nr <= std::min(h - 1, gr + 1); ++nr) {
+        const int* row = labels.ptr<int>(nr);
+        for (int nc = std::max(0, gc - 1); nc <= std::min(w - 1, gc + 1); ++nc)
+          if (row[nc] > 0) add_unique(blob.touched, row[nc]);
       }
     }
   }
   return blobs;
 }
 
-// Decides per blob: join the one room it touches (small, only newly free cells) or be decomposed
-// again together with every room it touches. A room's allowance is charged as its blobs are seen,
-// so later blobs see what earlier ones took.
-Region IncrementalSegmenter::State::choose_region(std::vector<Blob>& blobs, bool whole_map) {
+// Decides per blob: its cells only take the nearest room's label (the floor did not change), join
+// the one room it touches (small, the floor only grew), or be decomposed again together with every
+// room it touches. A room's allowance is charged as its blobs are seen, so later blobs see what
+// earlier ones took.
+Region IncrementalSegmenter::State::choose_region(std::vector<Blob>& blobs) {
   const long long absorb_cells =
       static_cast<long long>(std::floor(options.absorb_area / (resolution * resolution) + 1e-9));
   Region region;
-  region.whole_map = whole_map;
   std::vector<char> in_region(rooms.size(), 0);
   auto add_region = [&](int id) {
     if (!in_region[static_cast<std::size_t>(id)]) {
@@ -372,17 +479,15 @@ Region IncrementalSegmenter::State::choose_region(std::vector<Blob>& blobs, bool
       region.ids.push_back(id);
     }
   };
-  if (whole_map)
-    for (std::size_t id = 1; id < rooms.size(); ++id)
-      if (rooms[id].alive) add_region(static_cast<int>(id));
   // A room takes newly seen cells without a decomposition until they add up to its allowance.
   auto allowance = [&](const RoomState& room) {
     return std::max(absorb_cells, static_cast<long long>(options.absorb_fraction * static_cast<double>(room.cells)));
   };
   for (std::size_t b = 1; b < blobs.size(); ++b) {
     Blob& blob = blobs[b];
+    if (!blob.floor) continue;  // labels only (label_from_nearest_rooms)
     // A blob touching several rooms joins them (a door seen open): always decomposed again.
-    blob.absorb = !whole_map && blob.touched.size() == 1 && (!blob.structural || is_speck(blob));
+    blob.absorb = blob.touched.size() == 1 && (!blob.structural || is_speck(blob));
     if (blob.absorb) {
       RoomState& room = rooms[static_cast<std::size_t>(blob.touched.front())];
       const long long taken = blob.gained + blob.lost;
@@ -400,12 +505,12 @@ Region IncrementalSegmenter::State::choose_region(std::vector<Blob>& blobs, bool
 }
 
 // A speck: a small structural blob of one room (an obstacle seen inside it, a wall's edge moved by
-// a few centimetres, free cells that only change the binarized free space). Newly free cells can
+// a few centimetres, free cells that only change the decomposed free space). Newly free cells can
 // only join parts of the room; lost ones could cut it, so the room's cells around them (in the
 // box grown by one cell, with the newly free ones) must stay one 4-connected piece, or none when
 // they were a detached island: any path of the room through the box can then go round.
 bool IncrementalSegmenter::State::is_speck(const Blob& blob) const {
-  if (blob.lost == 0) return true;  // only the binarization changed: absorbed like any new free blob
+  if (blob.lost == 0) return true;  // only the decomposed free space changed: absorbed like any new free blob
   const int limit = static_cast<int>(std::floor(options.speck_size / resolution + 1e-9));
   if (blob.box.width > limit || blob.box.height > limit) return false;
   const int id = blob.touched.front();
@@ -413,7 +518,7 @@ bool IncrementalSegmenter::State::is_speck(const Blob& blob) const {
   const cv::Rect around = grown(blob.box, 1, cells.size());
   cv::Mat room(around.size(), CV_8UC1);
   for (int r = 0; r < around.height; ++r) {
-    const unsigned char* cell = cells.ptr<unsigned char>(around.y + r) + around.x;
+    const unsigned char* cell = labelled.ptr<unsigned char>(around.y + r) + around.x;
     const int* label = result.labels.ptr<int>(around.y + r) + around.x;
     unsigned char* out = room.ptr<unsigned char>(r);
     for (int c = 0; c < around.width; ++c) out[c] = cell[c] == kFree && (label[c] == id || label[c] == 0) ? 255 : 0;
@@ -423,10 +528,11 @@ bool IncrementalSegmenter::State::is_speck(const Blob& blob) const {
 }
 
 // Applies the cell changes to the labels: lost cells leave their room, absorbed ones join theirs,
-// the others wait (kPending) for the decomposition. Returns the rooms whose cells changed (those
-// decomposed again are refreshed by the decomposition).
+// cells of blobs that left the floor alone wait for the nearest room (listed in nearest), the others
+// wait (kPending) for the decomposition. Returns the rooms whose cells changed (those decomposed
+// again are refreshed by the decomposition).
 std::vector<int> IncrementalSegmenter::State::apply_changes(const ChangeMask& mask, const cv::Mat& blob_of,
-                                                            const std::vector<Blob>& blobs) {
+                                                            const std::vector<Blob>& blobs, std::vector<int>& nearest) {
   const cv::Rect& window = mask.window;
   cv::Mat& labels = result.labels;
   std::vector<int> touched_rooms;
@@ -435,17 +541,23 @@ std::vector<int> IncrementalSegmenter::State::apply_changes(const ChangeMask& ma
     const int* b = blob_of.empty() ? nullptr : blob_of.ptr<int>(r);
     int* l = labels.ptr<int>(window.y + r) + window.x;
     for (int c = 0; c < window.width; ++c) {
-      if (d[c] == kLost && l[c] > 0) {
+      if (d[c] & kLost) {
+        --free_cells;
+        if (l[c] <= 0) continue;
         RoomState& room = rooms[static_cast<std::size_t>(l[c])];
         --room.cells;
         room.sum_c -= window.x + c;
         room.sum_r -= window.y + r;
         add_unique(touched_rooms, l[c]);
         l[c] = 0;
-        --free_cells;
-      } else if (d[c] == kGained) {
+      } else if (d[c] & kGained) {
         ++free_cells;
         const Blob& blob = blobs[static_cast<std::size_t>(b[c])];
+        if (!blob.floor) {
+          l[c] = 0;
+          nearest.push_back((window.y + r) * labels.cols + window.x + c);
+          continue;
+        }
         if (!blob.absorb) {
           l[c] = kPending;
           continue;
@@ -462,6 +574,27 @@ std::vector<int> IncrementalSegmenter::State::apply_changes(const ChangeMask& ma
     }
   }
   return touched_rooms;
+}
+
+// Each listed cell (row * cols + column, unlabelled) takes the label of the nearest room along the
+// cells left free, else in a straight line, as segment() labels the free cells no piece covers.
+void IncrementalSegmenter::State::label_from_nearest_rooms(const std::vector<int>& cells_to_label,
+                                                           std::vector<int>& touched_rooms) {
+  if (cells_to_label.empty()) return;
+  cv::Mat& labels = result.labels;
+  complete_unlabelled_cells(labels, labelled == kFree, cells_to_label);
+  const int* data = labels.ptr<int>(0);
+  for (const int index : cells_to_label) {
+    const int id = data[index];
+    if (id <= 0) continue;  // no room anywhere yet
+    RoomState& room = rooms[static_cast<std::size_t>(id)];
+    const int r = index / labels.cols, c = index % labels.cols;
+    ++room.cells;
+    room.sum_c += c;
+    room.sum_r += r;
+    room.box = unite(room.box, cv::Rect(c, r, 1, 1));
+    add_unique(touched_rooms, id);
+  }
 }
 
 IncrementalSegmenter::IncrementalSegmenter(const IncrementalOptions& options) : state_(std::make_unique<State>()) {
@@ -482,8 +615,6 @@ IncrementalSegmenter::IncrementalSegmenter(const IncrementalOptions& options) : 
   validate(options.segment);
   if (options.segment.labels.cover_absorbed_obstacles)
     throw Error("the incremental segmenter labels free cells only: cover_absorbed_obstacles is not supported");
-  if (options.segment.clean)
-    throw Error("the incremental segmenter does not clean the free space (ray fans, specks): set clean to false");
   state_->options = options;
 }
 
@@ -497,6 +628,8 @@ const Segmentation& IncrementalSegmenter::update(const OccupancyGrid& grid, cons
   return state_->update(grid, &changed);
 }
 
+const Segmentation& IncrementalSegmenter::resegment() { return state_->resegment(); }
+
 const Segmentation& IncrementalSegmenter::result() const { return state_->result; }
 
 const IncrementalUpdateReport& IncrementalSegmenter::last_update() const { return state_->report; }
@@ -505,8 +638,9 @@ const IncrementalOptions& IncrementalSegmenter::options() const { return state_-
 
 std::size_t IncrementalSegmenter::state_bytes() const {
   const State& s = *state_;
-  std::size_t bytes = s.cells.total() * s.cells.elemSize() + s.bin.total() * s.bin.elemSize() +
-                      s.result.labels.total() * s.result.labels.elemSize();
+  std::size_t bytes = s.cells.total() * s.cells.elemSize() + s.floor.total() * s.floor.elemSize() +
+                      s.retired.total() * s.retired.elemSize() +
+                      s.labelled.total() * s.labelled.elemSize() + s.result.labels.total() * s.result.labels.elemSize();
   bytes += s.rooms.capacity() * sizeof(RoomState);
   bytes += s.result.rooms.capacity() * sizeof(Room);
   for (const Room& room : s.result.rooms) bytes += polygon_bytes(room.polygon);

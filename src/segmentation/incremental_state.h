@@ -50,10 +50,15 @@ inline void add_unique(std::vector<int>& ids, int id) {
   if (std::find(ids.begin(), ids.end(), id) == ids.end()) ids.push_back(id);
 }
 
-// The changed cells of one update, over the window where the binarized free space may differ.
+// Bits of ChangeMask::change: how a cell changed.
+constexpr unsigned char kGained = 1;        // labelled now (free after the cleaning), not before
+constexpr unsigned char kLost = 2;          // labelled before, not now
+constexpr unsigned char kFloorChanged = 4;  // in the decomposed free space before or now, not both
+
+// The changed cells of one update, over the window where the cleaned free space may differ.
 struct ChangeMask {
-  cv::Rect window;  // the changed box grown by the binarization's reach
-  cv::Mat change;   // per window cell: kGained, kLost, kReshaped or 0
+  cv::Rect window;  // the changed box grown by the binarization's and the cleaning's reach
+  cv::Mat change;   // per window cell: the bits above, 0 unchanged
   int changed_cells = 0;
 };
 
@@ -62,7 +67,8 @@ struct ChangeMask {
 struct Blob {
   int gained = 0;
   int lost = 0;
-  bool structural = false;  // lost or reshaped cells: the touched rooms must be decomposed again
+  bool floor = false;       // the decomposed free space changed: else its cells only take or leave labels
+  bool structural = false;  // floor lost or reshaped: the touched rooms must be decomposed again
   std::vector<int> touched;
   cv::Rect box;
   bool absorb = false;
@@ -78,7 +84,6 @@ struct Region {
   std::vector<char> member;    // by room id: kWhole or kPartial if in ids, else 0
   cv::Rect window;             // contains the pending cells and every cell of the region
   cv::Rect near_change;        // the changed box grown by partial_margin (empty when partial_area is 0)
-  bool whole_map = false;
 };
 
 // What one pass over the re-decomposed region learns about each piece (index 1..pieces).
@@ -159,8 +164,10 @@ struct IncrementalSegmenter::State {
   bool initialised = false;
   double resolution = 0.0;
   Point2 origin;
-  cv::Mat cells;  // copy of the previous grid (CV_8UC1)
-  cv::Mat bin;    // its binarized free space (CV_8UC1, 255 free)
+  cv::Mat cells;     // copy of the previous grid (CV_8UC1)
+  cv::Mat floor;     // its free space as decomposed: binarized and cleaned (CV_8UC1, 255)
+  cv::Mat labelled;  // its cells as labelled (cells_after_cleaning(): kFree cells get a room)
+  cv::Mat retired;   // where each room that disappeared last lay (its id; CV_32SC1), to give it back its id
   Segmentation result;               // result.labels is the state's label image
   std::vector<RoomState> rooms{1};   // by id; index 0 unused
   int next_id = 1;
@@ -168,23 +175,31 @@ struct IncrementalSegmenter::State {
   IncrementalUpdateReport report;
 
   const Segmentation& update(const OccupancyGrid& grid, const cv::Rect* hint);
+  const Segmentation& resegment();
 
  private:
   void start_frame(const OccupancyGrid& grid);
   bool move_frame(const OccupancyGrid& grid, bool& restarted);
   void recount_rooms();
-  void process(const OccupancyGrid& grid, const cv::Rect& changed, const std::string& batch_reason);
+  template <class Work>
+  void guarded(const Work& work);
+  void detach_labels();
+  void process(const OccupancyGrid& grid, const cv::Rect& changed);
+  void segment_whole(const OccupancyGrid& grid, const std::string& reason);
+  void remember_retired(const std::vector<int>& ids);
   ChangeMask take_changes(const OccupancyGrid& grid, const cv::Rect& changed);
+  void front_end_window(const OccupancyGrid& grid, const cv::Rect& window, cv::Mat& new_floor, cv::Mat& new_labelled) const;
   std::vector<Blob> find_blobs(const ChangeMask& mask, cv::Mat& blob_of) const;
-  Region choose_region(std::vector<Blob>& blobs, bool whole_map);
+  Region choose_region(std::vector<Blob>& blobs);
   bool is_speck(const Blob& blob) const;
-  std::vector<int> apply_changes(const ChangeMask& mask, const cv::Mat& blob_of, const std::vector<Blob>& blobs);
-  void redecompose(Region region, std::vector<int>& touched_rooms);
-  bool label_isolated_cells(const Region& region, std::vector<int>& touched_rooms);
+  std::vector<int> apply_changes(const ChangeMask& mask, const cv::Mat& blob_of, const std::vector<Blob>& blobs,
+                                 std::vector<int>& nearest);
+  void label_from_nearest_rooms(const std::vector<int>& cells_to_label, std::vector<int>& touched_rooms);
+  bool redecompose(Region region, std::vector<int>& touched_rooms);
   void add_neighbour_rooms(Region& region) const;
   void frame_region(Region& region) const;
   void decompose_whole(Region& region) const;
-  RegionPieces decompose_region(Region& region);
+  RegionPieces decompose_region(const Region& region) const;
   void label_pieces(const Region& region, RegionPieces& found) const;
   bool find_kept_pieces(const Region& region, RegionPieces& found) const;
   bool kept_pieces_are_mostly_theirs(const Region& region, const RegionPieces& found) const;

@@ -11,7 +11,6 @@ SegmentOptions wall_map_segment_options() {
 IncrementalOptions wall_map_incremental_options(const SegmentOptions& segment) {
   IncrementalOptions options;
   options.segment = segment;
-  options.segment.clean = false;
   // Held back three decompositions, only touched rooms decomposed: calmer and faster on the logs
   // (benchmarks/README.md, "Incremental on real laser logs").
   options.split_after = 3;

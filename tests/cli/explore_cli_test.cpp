@@ -103,13 +103,18 @@ TEST_F(ExploreCli, ReportsUpdatesTimesAndGroundTruthQuality) {
   const double recall = number_after(o.out, "incremental: recall ");
   EXPECT_GT(recall, 80.0) << o.out;
   EXPECT_LE(recall, 100.0);
-  EXPECT_GT(number_after(o.out, "batch:       recall "), 80.0) << o.out;
+  // The run ends on the explored map segmented as a whole: batch's rooms, so batch's scores.
+  EXPECT_EQ(recall, number_after(o.out, "batch:       recall ")) << o.out;
+  // Batch's own churn on the same updates, in the incremental line's format, and the ratios.
+  EXPECT_GE(number_after(o.out, "batch stability (ids carried by overlap): churn median "), 0.0) << o.out;
+  EXPECT_NE(o.out.find("against batch: churn p95 "), std::string::npos) << o.out;
 
   // Without a ground truth there is no quality section; --gt names one explicitly.
   const fs::path plain = write_map("plain", false);
   const CliResult none = run(plain.string());
   ASSERT_EQ(none.code, 0) << none.err;
   EXPECT_EQ(none.out.find("ground truth"), std::string::npos);
+  EXPECT_EQ(none.out.find("batch stability"), std::string::npos);  // batch was not run
   const CliResult named = run(plain.string() + " --gt " + (dir_ / "lab_gt_segmentation.png").string());
   ASSERT_EQ(named.code, 0) << named.err;
   EXPECT_NE(named.out.find("ground truth"), std::string::npos);

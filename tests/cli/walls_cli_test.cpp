@@ -194,7 +194,8 @@ TEST_F(WallsCli, IncrementalReplaysTheLogAndWritesFrames) {
                         "' --frame-every 3 --out-rooms '" + path("rooms.json") + "'");
   ASSERT_EQ(o.code, 0) << o.err;
   for (const char* line : {"8 scans", "updates: ", "incremental per update: median", "batch per update:",
-                           "speed-up on the same updates", "stability: churn median", "ids used", "final rooms: incremental"})
+                           "speed-up on the same updates", "stability: churn median", "ids used", "final rooms: incremental",
+                           "batch stability (ids carried by overlap): churn median", "against batch: churn p95"})
     EXPECT_NE(o.out.find(line), std::string::npos) << line << "\n" << o.out;
   // Updates 1, 4, 7 and the last one (the last scan changes the map: it looks at a new wall).
   const std::size_t updates = std::stoul(o.out.substr(o.out.find("updates: ") + 9));

@@ -48,5 +48,36 @@ TEST(ExplorationReport, StabilityLine) {
             "ids used 2, final rooms 1");
 }
 
+TEST(ExplorationReport, BatchStabilityOnlyWhenCompared) {
+  GridReplay run;
+  EXPECT_EQ(format_batch_stability(run), "");
+  run.stability.churn = {0.0, 0.01, 0.02};
+  run.stability.churn_p95 = 0.02;
+  run.stability.distinct_ids = 12;
+  run.stability.final_rooms = 10;
+  run.batch_stability.churn = {0.1, 0.0, 0.2};
+  run.batch_stability.churn_median = 0.1;
+  run.batch_stability.churn_p95 = run.batch_stability.churn_max = 0.2;
+  run.batch_stability.updates_with_churn = 2;
+  run.batch_stability.distinct_ids = 15;
+  run.batch_stability.final_rooms = 10;
+  // The same line as the incremental one, then the ratios: 0.02 / 0.2, 12 / 10 and 15 / 10.
+  EXPECT_EQ(format_batch_stability(run),
+            "batch stability (ids carried by overlap): churn median 10.000 %, p95 20.000 %, max 20.000 % (2 of 3 "
+            "updates); rooms changed 0 of 0 (0 changes); ids used 15, final rooms 10\n"
+            "against batch: churn p95 0.10 of batch's; ids used per final room 1.20 (batch 1.50)\n");
+}
+
+TEST(ExplorationReport, FinalRoomsSayWhenTheRestChangedThem) {
+  GridReplay run;
+  run.incremental.rooms.resize(4);
+  run.batch.rooms.resize(4);
+  run.windowed_rooms = 4;
+  EXPECT_EQ(final_rooms_line(run), "final rooms: incremental 4, batch 4\n");
+  run.windowed_rooms = 5;
+  EXPECT_EQ(final_rooms_line(run),
+            "final rooms: incremental 4 (5 before the map at rest was segmented as a whole), batch 4\n");
+}
+
 }  // namespace
 }  // namespace topocut

@@ -54,6 +54,32 @@ def test_incremental_loop_keeps_ids():
     assert seg.last_update == "unchanged"
 
 
+def same_partition(a, b):
+    """Whether label images a and b are one partition of the same cells (equal under a renaming)."""
+    if not np.array_equal(a > 0, b > 0):
+        return False
+    pairs = set(zip(a[a > 0].tolist(), b[b > 0].tolist()))
+    return len(pairs) == len({p[0] for p in pairs}) == len({p[1] for p in pairs})
+
+
+def test_incremental_is_batch_on_a_map_given_at_once_and_at_rest():
+    world, rooms = floor_plan()
+    corridor = (slice(4, 36), slice(4, 196))
+    seg = topocut.IncrementalSegmenter()
+    with pytest.raises(ValueError):
+        seg.resegment()
+    assert np.array_equal(seg.update(world, 0.05).labels, topocut.segment(world, 0.05).labels)
+    grown = topocut.IncrementalSegmenter()
+    for k in range(3):
+        last = reveal(world, [corridor] + rooms[: k + 1])
+        windowed = grown.update(last, 0.05)
+    rest = grown.resegment()
+    assert grown.last_update == "batch"
+    assert same_partition(rest.labels, topocut.segment(last, 0.05).labels)
+    # Rooms the windowed updates found keep their ids where they keep most of their cells.
+    assert rest.labels[78, 30] == windowed.labels[78, 30]
+
+
 def test_incremental_speck_and_split_options():
     world, rooms = floor_plan()
     seg = topocut.IncrementalSegmenter(speck_size=0.5, split_after=2, merge_after=2, neighbours_across_cuts=False)

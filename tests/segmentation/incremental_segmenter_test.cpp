@@ -61,17 +61,20 @@ OccupancyGrid reveal(const FloorPlan& plan, const std::vector<cv::Rect>& seen) {
   return grid;
 }
 
-// Every free cell labelled exactly once with the id of a listed room, nothing else labelled, rooms
-// sorted by unique id with area and centroid of their cells.
-void expect_valid(const OccupancyGrid& grid, const Segmentation& s) {
+// Every cell that segment()'s cleaning leaves free (with options) labelled exactly once with the id of
+// a listed room, nothing else labelled, rooms sorted by unique id with area and centroid of their cells.
+void expect_valid(const OccupancyGrid& grid, const Segmentation& s, const SegmentOptions& options = IncrementalOptions{}.segment) {
   ASSERT_EQ(s.labels.size(), grid.cells.size());
   ASSERT_EQ(s.labels.type(), CV_32SC1);
+  SegmentationInput input;
+  segment(grid, options, &input);
+  const cv::Mat& labelled = input.labelled.cells;
   std::map<int, long long> count;
   std::map<int, std::pair<double, double>> sums;
   for (int r = 0; r < grid.height(); ++r)
     for (int c = 0; c < grid.width(); ++c) {
       const int l = s.labels.at<int>(r, c);
-      if (grid.cells.at<unsigned char>(r, c) == kFree) {
+      if (labelled.at<unsigned char>(r, c) == kFree) {
         ASSERT_GT(l, 0) << "free cell (" << c << ", " << r << ") unlabelled";
         ++count[l];
         sums[l].first += c;
@@ -227,8 +230,7 @@ TEST(IncrementalSegmenter, FirstUpdateEqualsBatchOnANoisyMap) {
   IncrementalSegmenter segmenter;
   const Segmentation& s = segmenter.update(plan.world);
   expect_valid(plan.world, s);
-  // Batch with the segmenter's own options (no real-map cleaning, which would label the unknown
-  // specks as floor).
+  // Batch with the segmenter's own options (segment()'s defaults, the real-map cleaning included).
   const Segmentation batch = segment(plan.world, IncrementalOptions{}.segment);
   EXPECT_EQ(cv::countNonZero(s.labels != batch.labels), 0);
   ASSERT_EQ(s.rooms.size(), batch.rooms.size());
@@ -298,6 +300,14 @@ TEST(IncrementalSegmenter, DoorOpeningMergesIntoTheLargerRoomsId) {
     EXPECT_EQ(second.labels.at<int>(plan.rooms[k].y + 1, plan.rooms[k].x + 1),
               first.labels.at<int>(plan.rooms[k].y + 1, plan.rooms[k].x + 1));
   EXPECT_EQ(segmenter.last_update().redecomposed_rooms, 2);
+
+  // Closed again: room 0 comes back where its id last lay and takes that id back, no new one.
+  const Segmentation third = segmenter.update(plan.world);
+  expect_valid(plan.world, third);
+  ASSERT_EQ(third.rooms.size(), 5u);
+  EXPECT_EQ(third.labels.at<int>(plan.rooms[0].y + 1, plan.rooms[0].x + 1), room0_id);
+  EXPECT_EQ(third.labels.at<int>(plan.corridor.y + 1, plan.corridor.x + 1), corridor_id);
+  EXPECT_EQ(segmenter.last_update().new_rooms, 0);
 }
 
 TEST(IncrementalSegmenter, DoorClosingSplitsAndTheLargerPartKeepsTheId) {
@@ -376,10 +386,11 @@ SpeckCase speck_case(const cv::Rect& speck) {
 }
 
 TEST(IncrementalSegmenter, ASpeckInsideARoomChangesNoOtherLabel) {
-  // A chair of 4 x 3 cells in the middle of room 0: its cells leave the room, no room is
-  // decomposed again and every other label stays; with speck_size 0 the room is decomposed again.
+  // A cupboard of 8 x 7 cells (larger than the cleaning's obstacle specks, which stay floor) in the
+  // middle of room 0: its cells leave the room, no room is decomposed again and every other label
+  // stays; with speck_size 0 the room is decomposed again.
   const FloorPlan plan = floor_plan();
-  const cv::Rect speck(plan.rooms[0].x + 30, plan.rooms[0].y + 50, 4, 3);
+  const cv::Rect speck(plan.rooms[0].x + 30, plan.rooms[0].y + 50, 8, 7);
   const SpeckCase c = speck_case(speck);
   IncrementalSegmenter segmenter;
   const Segmentation before = segmenter.update(c.plan.world);
@@ -495,7 +506,7 @@ TEST(IncrementalSegmenter, AMergeUndoneBeforeMergeAfterDecompositionsKeepsBothId
   EXPECT_EQ(segmenter.last_update().removed_rooms, 0);
 
   // Open again, and keep changing a corner of the corridor so that each update decomposes it.
-  const cv::Rect corner(plan.corridor.x + 200, plan.corridor.y + 10, 2, 2);
+  const cv::Rect corner(plan.corridor.x + 200, plan.corridor.y + 10, 8, 8);  // no cleaning speck
   const std::vector<OccupancyGrid> steps{opened, with_cells(opened, {corner}, kOccupied), opened};
   for (std::size_t k = 0; k < steps.size(); ++k) {
     const Segmentation& s = segmenter.update(steps[k]);
@@ -524,6 +535,7 @@ TEST(IncrementalSegmenter, RoomsRevealedThroughDoorsMatchBatchAtTheEnd) {
       seen.push_back(part);
       const OccupancyGrid grid = reveal(plan, seen);
       const Segmentation after = segmenter.update(grid);
+      SCOPED_TRACE("room " + std::to_string(k) + ", " + std::to_string(part.height) + " rows");
       expect_valid(grid, after);
       expect_untouched_stable(previous, before, grid, after);
       previous = grid;
@@ -725,11 +737,11 @@ TEST(IncrementalSegmenter, SmallNoiseIsAbsorbedOrRepairedLocally) {
   EXPECT_EQ(second.labels.at<int>(gap), second.labels.at<int>(plan.corridor.y + 1, gap.x));
   for (const Room& r : first.rooms) EXPECT_EQ(second.labels.at<int>(world_to_cell(grid, r.centroid)), r.id);
 
-  // A small obstacle appearing inside room 3: that room is decomposed again with its neighbours
-  // through passages (here the corridor), the others are not.
+  // A small obstacle (larger than the cleaning's specks) appearing inside room 3: that room is
+  // decomposed again with its neighbours through passages (here the corridor), the others are not.
   OccupancyGrid blocked = noisy;
   blocked.cells = noisy.cells.clone();
-  blocked.cells(cv::Rect(plan.rooms[3].x + 20, plan.rooms[3].y + 30, 3, 3)).setTo(kOccupied);
+  blocked.cells(cv::Rect(plan.rooms[3].x + 20, plan.rooms[3].y + 30, 8, 8)).setTo(kOccupied);
   const int room3 = second.labels.at<int>(plan.rooms[3].y + 30, plan.rooms[3].x + 20);
   const Segmentation third = segmenter.update(blocked);
   expect_valid(blocked, third);
@@ -749,7 +761,7 @@ TEST(IncrementalSegmenter, NeighboursBehindDoorsCanBeLeftAlone) {
   const Segmentation first = segmenter.update(plan.world);
   OccupancyGrid blocked = plan.world;
   blocked.cells = plan.world.cells.clone();
-  blocked.cells(cv::Rect(plan.rooms[1].x + 20, plan.rooms[1].y + 30, 3, 3)).setTo(kOccupied);
+  blocked.cells(cv::Rect(plan.rooms[1].x + 20, plan.rooms[1].y + 30, 8, 8)).setTo(kOccupied);
   const Segmentation second = segmenter.update(blocked);
   expect_valid(blocked, second);
   EXPECT_EQ(segmenter.last_update().redecomposed_rooms, 1);
@@ -769,7 +781,7 @@ TEST(IncrementalSegmenter, WithoutNeighboursOnlyTheTouchedRoomsChange) {
   hall.cells(cv::Rect(4, 4, 192, 92)).setTo(kFree);
   hall.cells(cv::Rect(100, 4, 2, 16)).setTo(kOccupied);
   hall.cells(cv::Rect(100, 80, 2, 16)).setTo(kOccupied);
-  const OccupancyGrid blocked = with_cells(hall, {cv::Rect(40, 40, 3, 3)}, kOccupied);
+  const OccupancyGrid blocked = with_cells(hall, {cv::Rect(40, 40, 8, 8)}, kOccupied);
   for (const bool neighbours : {true, false}) {
     IncrementalOptions options;
     options.neighbours_across_doors = neighbours;
@@ -879,15 +891,14 @@ TEST(IncrementalSegmenter, ALongCorridorGrowingAtItsFarEndIsDecomposedOnlyThere)
 
 TEST(IncrementalSegmenter, AnIsolatedSpeckTakesTheNearestRoomWithoutADecomposition) {
   // Two rooms; beyond the wall of the right one a ray seen through a gap leaves a line of free
-  // cells one cell wide: touching no room and gone after the 0.15 m opening, it can be no room.
-  // Without isolated_to_nearest_room its decomposition finds no free space and takes the whole
-  // map; with it, it joins the nearest room and nothing else changes.
+  // cells one cell wide: touching no room and gone after the 0.15 m opening, it can be no room. It
+  // joins the nearest room, as segment() labels it, and nothing else changes.
   const OccupancyGrid before = walled(100, 200, {cv::Rect(4, 4, 90, 80), cv::Rect(100, 4, 80, 80)});
   const OccupancyGrid after = with_cells(before, {cv::Rect(184, 10, 1, 30)}, kFree);
-  for (const bool nearest : {true, false}) {
+  for (const bool clean : {true, false}) {
     IncrementalOptions options;
     options.segment.binarize.opening_size = 0.15;
-    options.isolated_to_nearest_room = nearest;
+    options.segment.clean = clean;
     IncrementalSegmenter segmenter(options);
     const Segmentation first = segmenter.update(before);
     ASSERT_EQ(first.rooms.size(), 2u);
@@ -895,10 +906,6 @@ TEST(IncrementalSegmenter, AnIsolatedSpeckTakesTheNearestRoomWithoutADecompositi
     const Segmentation second = segmenter.update(after);
     expect_valid(after, second);
     const IncrementalUpdateReport& report = segmenter.last_update();
-    if (!nearest) {
-      EXPECT_EQ(report.kind, IncrementalUpdateReport::Kind::kBatch) << report.reason;
-      continue;
-    }
     EXPECT_EQ(report.kind, IncrementalUpdateReport::Kind::kIncremental);
     EXPECT_EQ(report.region_cells, 0);
     for (int r = 10; r < 40; ++r) EXPECT_EQ(second.labels.at<int>(r, 184), right);
@@ -1044,8 +1051,9 @@ TEST(IncrementalSegmenter, StateIsProportionalToTheMap) {
   IncrementalSegmenter segmenter;
   segmenter.update(plan.world);
   const std::size_t cells = plan.world.cells.total();
-  EXPECT_GE(segmenter.state_bytes(), 6 * cells);  // grid copy, free space, labels
-  EXPECT_LT(segmenter.state_bytes(), 8 * cells);
+  // Grid copy, cleaned floor, labelled cells (a byte each), labels and retired ids (four each).
+  EXPECT_GE(segmenter.state_bytes(), 11 * cells);
+  EXPECT_LT(segmenter.state_bytes(), 13 * cells);
 }
 
 }  // namespace

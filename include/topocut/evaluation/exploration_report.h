@@ -36,6 +36,14 @@ std::string format_update_times(const std::vector<UpdateRecord>& updates);
 // rooms changed 3 of 40 (5 changes); ids used 44, final rooms 40".
 std::string format_stability(const StabilityReport& report);
 
+// "final rooms: incremental N (M before the map at rest was segmented as a whole), batch K".
+std::string final_rooms_line(const GridReplay& run);
+
+// Lines for people, empty unless run compared batch: batch's own stability on the same updates
+// ("batch stability (ids carried by overlap): " and format_stability()), then the incremental churn
+// p95 and ids used per final room, each over batch's.
+std::string format_batch_stability(const GridReplay& run);
+
 // The summary `topocut explore` prints: scans, updates, path, explored share, the update times,
 // stability, peak state, final rooms, and, when gt_rooms is not empty, the score against it (the
 // ground truth named ground_truth). Throws Error like score_exploration().

@@ -36,6 +36,8 @@ struct IncrementalImageResult {
   int batch_updates = 0;               // updates on which the segmenter itself fell back to batch
   std::size_t peak_state_bytes = 0;
   StabilityReport stability;
+  StabilityReport batch_stability;  // batch's own on the compared updates, ids carried by overlap
+  int windowed_rooms = 0;           // incremental rooms before the final map at rest was segmented as a whole
 };
 
 // Explores every selected image (maps in order, variants in options' order): the robot explores the

@@ -57,6 +57,10 @@ struct GridReplayOptions {
   bool compare_batch = false;
   int batch_every = 1;
   bool use_hint = true;    // hand the step's changed rectangle to the segmenter (it also works without)
+  // At the end the map is at rest: the last grid is segmented again as a whole
+  // (IncrementalSegmenter::resegment()), so the run ends on batch's rooms with the ids carried; the
+  // stability counts that step as one more update. false: the run ends on the last windowed update.
+  bool resegment_at_rest = true;
   int progress_every = 100;  // updates between two progress lines
   std::function<void(const ReplayFrame&)> on_update;  // may be empty
   std::function<void(const std::string&)> progress;   // occasional one-line status; may be empty
@@ -81,10 +85,15 @@ struct GridReplay {
   int scans = 0;
   std::vector<Point2> path;           // every scan's sensor position, in order
   OccupancyGrid final_map;            // the grid after the last scan (its own copy)
-  Segmentation incremental;           // after the last update
+  Segmentation incremental;           // after the last update (and the resegmentation at rest)
+  int windowed_rooms = 0;             // rooms after the last update, before the resegmentation
   Segmentation batch;                 // segment() on final_map
   double batch_final_ms = 0.0;        // CPU time of that call
   StabilityReport stability;          // of the incremental labels, update by update
+  // Batch's own stability on the same updates (the compared ones, with compare_batch; empty
+  // otherwise): segment()'s labels with each room's id carried by overlap from the previous compared
+  // update (IdCarrier), the reference the incremental churn is read against.
+  StabilityReport batch_stability;
   std::size_t peak_state_bytes = 0;   // largest IncrementalSegmenter::state_bytes()
 };
 

@@ -1,9 +1,11 @@
 #pragma once
-// Incremental room segmentation for a growing map (pipeline B; Fermin-Leon et al., Algorithms 3-4).
-// Each update compares the new grid with the previous one; the rooms that the change touches are
-// merged with the changed free space and decomposed again with the batch stages, every other room
-// is kept as it is, with its id, polygon and passages. Work stays inside the bounding box of the
-// change and of the touched rooms, so an update costs what the change costs, not what the map does.
+// Incremental room segmentation for a growing map (pipeline B; Fermin-Leon et al., Algorithms 3-4):
+// the batch segmenter's stages (segment(): the real-map cleaning, the cut rules, DuDe, merging, open
+// rooms, labelling) on two schedules. A whole-map update runs segment() itself and carries the room
+// ids over by overlap; a windowed update compares the new grid with the previous one, cleans the free
+// space again around the change, and decomposes again only the rooms the change touches together with
+// the changed free space, every other room kept as it is, with its id, polygon and passages. Work stays
+// near the change, so an update costs what the change costs, not what the map does.
 #include <cstddef>
 #include <memory>
 #include <string>
@@ -17,14 +19,12 @@
 namespace topocut {
 
 struct IncrementalOptions {
-  // The batch options, applied unchanged to every re-decomposed region. Not supported:
-  // labels.cover_absorbed_obstacles (only free cells are labelled) and clean (the real-map cleaning
-  // looks beyond the changed region: ray fans, the inside of the building), so it is off here.
-  SegmentOptions segment = [] {
-    SegmentOptions o;
-    o.clean = false;
-    return o;
-  }();
+  // The batch options (segment()'s defaults), applied unchanged to every update. Not supported:
+  // labels.cover_absorbed_obstacles (only cells free after the cleaning are labelled).
+  SegmentOptions segment;
+  // false: every update that changes a cell segments the whole map with segment() and carries the ids
+  // by overlap (batch's own schedule, the reference for how calm the windowed schedule's ids are).
+  bool windowed = true;
   // Newly free blobs that touch exactly one room join that room without a new decomposition, as
   // long as everything the room has taken in since its last decomposition stays within its
   // allowance: absorb_area (m²) or absorb_fraction of the room's own area, whichever is larger.
@@ -79,10 +79,6 @@ struct IncrementalOptions {
   // points of precision (benchmarks/README.md).
   double partial_area = 0.0;
   double partial_margin = 3.0;
-  // Newly free cells that touch no room and keep no binarized free space take the nearest room's
-  // label, as in batch, instead of a decomposition (which finds no free space in them and so takes
-  // the whole map). Off by default: those whole-map decompositions also pull the rooms back to batch.
-  bool isolated_to_nearest_room = false;
   // When more cells change than this fraction of the free cells (a loop closure moving the whole
   // map), every room is decomposed again: the batch result, with ids kept where rooms overlap.
   double batch_fraction = 0.5;
@@ -108,19 +104,27 @@ struct IncrementalUpdateReport {
   int removed_rooms = 0;      // ids that disappeared
 };
 
-// Keeps the previous grid, its binarized free space and its labels between updates (six bytes per
-// cell plus the rooms and passages) and hands out stable room ids.
+// Keeps the previous grid, its cleaned free space (what is decomposed), the cells the cleaning leaves
+// free (what is labelled), the labels and where rooms that disappeared last lay, between updates
+// (eleven bytes per cell plus the rooms and passages), and hands out stable room ids.
 //
-// Promises after every update: every free cell (kFree) carries exactly one room label and no other
-// cell does; every label value is the id of one room in rooms (sorted by id); rooms the change did
-// not reach (not next to a changed cell, not sharing a passage with such a room as the neighbours_*
-// options say, not holding back a merge with such a room) keep their id, cells, polygon and
-// passages (a room that only took in or lost a small blob keeps its polygon); new rooms get ids
-// never used before, and when rooms are decomposed again each old id goes to the piece sharing the
-// most cells with it (largest overlaps first, one id per piece), so a room cut in two keeps its id
-// on its larger part (and the other part too while split_after holds the split back; a room
-// merged into another keeps its id and cells while merge_after holds the merge back). A room
-// larger than partial_area is decomposed only near the change: its cells farther than
+// A whole-map update (the first, a changed resolution, a frame that no longer holds the previous one,
+// more than batch_fraction of the free cells changed, resegment(), every update when windowed is
+// false) is segment() on the grid, with each room's id carried by overlap (carried_ids.h): on a fresh
+// segmenter its result equals segment()'s, ids included. A windowed update cleans the free space
+// again within the cleaning's reach of the change (ray fans, specks; what lies farther keeps its last
+// cleaning) and promises: every cell left free by the cleaning carries exactly one room label (if
+// any room exists) and no other cell does; every label value is the id of one room in rooms (sorted
+// by id); rooms the change did not reach (not next to a changed cell, not sharing a passage with such
+// a room as the neighbours_* options say, not holding back a merge with such a room) keep their id,
+// cells, polygon and passages (a room that only took in or lost a small blob keeps its polygon);
+// a new room takes back the id of a room that disappeared where more than half of it lies (a merge
+// undone, a cut found again; revived_ids()), else an id never used before; when rooms are decomposed
+// again each old id goes to the
+// piece sharing the most cells with it (largest overlaps first, one id per piece), so a room cut in
+// two keeps its id on its larger part (and the other part too while split_after holds the split
+// back; a room merged into another keeps its id and cells while merge_after holds the merge back).
+// A room larger than partial_area is decomposed only near the change: its cells farther than
 // partial_margin from the changed box keep its id and its passages there stay. Ids are therefore
 // stable but not contiguous (1..N is not promised, unlike segment()).
 class IncrementalSegmenter {
@@ -144,13 +148,18 @@ class IncrementalSegmenter {
   // cell changed".
   const Segmentation& update(const OccupancyGrid& grid, const cv::Rect& changed);
 
+  // Segments the latest grid again as a whole, as segment() does, keeping ids where rooms overlap:
+  // the rooms then equal segment()'s on that grid. For a map that stopped changing (the end of a
+  // log, a robot at rest) or a caller who wants batch's rooms now. Does nothing before the first update.
+  const Segmentation& resegment();
+
   // The latest result (empty before the first update).
   const Segmentation& result() const;
 
   // What the latest update did.
   const IncrementalUpdateReport& last_update() const;
 
-  // Bytes held between updates: grid copy, binarized free space, labels, rooms and passages.
+  // Bytes held between updates: grid copy, cleaned free space, labelled cells, labels, rooms and passages.
   std::size_t state_bytes() const;
 
   // Forgets everything; the next update is a batch one with fresh ids.

@@ -1,0 +1,187 @@
+// One segmenter, two schedules: the incremental segmenter runs segment()'s stages, so a map given at
+// once gets segment()'s rooms cell for cell (ids included), under every rule switch of the one rule
+// list, and a growing map segmented again as a whole ends on segment()'s rooms of the final map.
+#include "topocut/segmentation/incremental_segmenter.h"
+
+#include <map>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+#include <opencv2/imgcodecs.hpp>
+
+#include "topocut/core/error.h"
+#include "topocut/segmentation/segmentation_rules.h"
+#include "topocut/segmentation/segmenter.h"
+
+namespace topocut {
+namespace {
+
+// Read with OpenCV directly (segmentation does not use io): grey > 250 free, < 50 occupied, else unknown.
+OccupancyGrid read_bundled(const std::string& name) {
+  const std::string path = std::string(TOPOCUT_SOURCE_DIR) + "/maps/" + name + ".png";
+  const cv::Mat grey = cv::imread(path, cv::IMREAD_GRAYSCALE);
+  if (grey.empty()) throw Error("test map missing: " + path);
+  OccupancyGrid grid{cv::Mat(grey.size(), CV_8UC1, cv::Scalar(kUnknown)), 0.05, {1.5, -2.0}};
+  grid.cells.setTo(kFree, grey > 250);
+  grid.cells.setTo(kOccupied, grey < 50);
+  return grid;
+}
+
+// Two rooms and a corridor with a ray fan through a gap, unknown specks in the floor and a room
+// bounded mostly by never-seen space: the cleaning and the open-room rule have work to do.
+OccupancyGrid raw_slam_like_map() {
+  OccupancyGrid grid{cv::Mat(140, 220, CV_8UC1, cv::Scalar(kUnknown)), 0.05, {0.0, 0.0}};
+  cv::Mat& c = grid.cells;
+  c(cv::Rect(10, 10, 200, 90)).setTo(kOccupied);
+  c(cv::Rect(14, 14, 90, 82)).setTo(kFree);
+  c(cv::Rect(108, 14, 98, 82)).setTo(kFree);
+  c(cv::Rect(104, 14, 4, 82)).setTo(kOccupied);
+  c(cv::Rect(104, 45, 4, 18)).setTo(kFree);                              // a door
+  c(cv::Rect(150, 96, 6, 4)).setTo(kFree);                               // a gap in the wall ...
+  for (int r = 100; r < 135; ++r) c(cv::Rect(150 - (r - 100) / 3, r, 6 + 2 * ((r - 100) / 3), 1)).setTo(kFree);  // ... and a fan
+  for (int k = 0; k < 12; ++k) c.at<unsigned char>(30 + 5 * k, 40 + 4 * k) = kUnknown;  // floor nobody reported
+  c(cv::Rect(206, 30, 4, 40)).setTo(kUnknown);                           // a wall never seen
+  return grid;
+}
+
+void expect_identical(const Segmentation& a, const Segmentation& b) {
+  ASSERT_EQ(a.labels.size(), b.labels.size());
+  EXPECT_EQ(cv::countNonZero(a.labels != b.labels), 0);
+  ASSERT_EQ(a.rooms.size(), b.rooms.size());
+  for (std::size_t i = 0; i < a.rooms.size(); ++i) {
+    EXPECT_EQ(a.rooms[i].id, b.rooms[i].id);
+    EXPECT_EQ(a.rooms[i].polygon, b.rooms[i].polygon);
+  }
+  ASSERT_EQ(a.passages.size(), b.passages.size());
+  for (std::size_t i = 0; i < a.passages.size(); ++i) {
+    EXPECT_EQ(a.passages[i].room_a, b.passages[i].room_a);
+    EXPECT_EQ(a.passages[i].room_b, b.passages[i].room_b);
+    EXPECT_EQ(a.passages[i].door, b.passages[i].door);
+  }
+}
+
+// The label of a in each room of b, if the two images are one partition under a renaming.
+bool same_partition(const cv::Mat& a, const cv::Mat& b, std::map<int, int>* b_to_a = nullptr) {
+  std::map<int, int> forward, backward;
+  for (int r = 0; r < a.rows; ++r)
+    for (int c = 0; c < a.cols; ++c) {
+      const int x = a.at<int>(r, c), y = b.at<int>(r, c);
+      if ((x == 0) != (y == 0)) return false;
+      if (x == 0) continue;
+      if (forward.emplace(x, y).first->second != y || backward.emplace(y, x).first->second != x) return false;
+    }
+  if (b_to_a) *b_to_a = backward;
+  return true;
+}
+
+// Checks the carrying rule between two label images of one frame: a room of before with more than
+// half its cells in one room of after, and the largest share of that room, passes its id on.
+// Returns how many rooms it checked.
+int expect_ids_carried(const cv::Mat& before, const cv::Mat& after) {
+  std::map<int, std::map<int, long long>> to;  // before id -> after id -> cells
+  std::map<int, long long> size;
+  for (int r = 0; r < before.rows; ++r)
+    for (int c = 0; c < before.cols; ++c) {
+      const int a = before.at<int>(r, c), b = after.at<int>(r, c);
+      if (a > 0) ++size[a];
+      if (a > 0 && b > 0) ++to[a][b];
+    }
+  int checked = 0;
+  for (const auto& [id, shares] : to)
+    for (const auto& [now, cells] : shares) {
+      if (2 * cells <= size[id]) continue;
+      bool largest = true;
+      for (const auto& [other, other_shares] : to)
+        if (other != id && other_shares.count(now) && other_shares.at(now) > cells) largest = false;
+      if (!largest) continue;
+      EXPECT_EQ(now, id);
+      ++checked;
+    }
+  return checked;
+}
+
+TEST(IncrementalBatch, AMapGivenAtOnceGetsBatchRoomsCellForCell) {
+  std::vector<std::pair<std::string, OccupancyGrid>> maps{{"raw", raw_slam_like_map()}};
+  for (const char* name : {"floorplan", "furnished", "corridor_l"}) maps.emplace_back(name, read_bundled(name));
+  for (const auto& [name, grid] : maps) {
+    SCOPED_TRACE(name);
+    IncrementalSegmenter segmenter;
+    const Segmentation& s = segmenter.update(grid);
+    expect_identical(s, segment(grid));
+    EXPECT_GE(s.rooms.size(), name == "corridor_l" ? 1u : 2u);  // an L-shaped corridor is one room
+  }
+}
+
+TEST(IncrementalBatch, EveryRuleOfTheListIsLiveInTheIncrementalSegmenter) {
+  // Each rule switched off in turn: the incremental segmenter follows segment() with the same
+  // options, so a rule added to the list needs no code here.
+  const OccupancyGrid grid = raw_slam_like_map();
+  const Segmentation with_all = segment(grid);
+  int rules_that_change_this_map = 0;
+  for (const SegmentationRule& rule : segmentation_rules()) {
+    SCOPED_TRACE(rule.name);
+    IncrementalOptions options;
+    rule.turn_off(options.segment);
+    const Segmentation batch = segment(grid, options.segment);
+    IncrementalSegmenter segmenter(options);
+    expect_identical(segmenter.update(grid), batch);
+    rules_that_change_this_map += cv::countNonZero(batch.labels != with_all.labels) > 0;
+  }
+  EXPECT_GE(rules_that_change_this_map, 1);  // the map exercises the rules, not only the defaults
+}
+
+TEST(IncrementalBatch, AGrowingMovingMapSegmentedAgainAsAWholeEndsOnBatchRooms) {
+  // furnished revealed in five growing windows, the origin moving as a SLAM map's does; resegment()
+  // then gives segment()'s rooms of the final map, rooms keeping the ids of those they overlap most.
+  const OccupancyGrid world = read_bundled("furnished");
+  IncrementalSegmenter segmenter;
+  OccupancyGrid grid;
+  for (int k = 1; k <= 5; ++k) {
+    const int w = world.width() * k / 5, h = world.height() * (k + 5) / 10;
+    const cv::Rect window(world.width() - w, 0, w, h);  // grows leftwards and downwards
+    grid = OccupancyGrid{world.cells(window).clone(), world.resolution,
+                         {world.origin.x + window.x * world.resolution,
+                          world.origin.y + (world.height() - window.br().y) * world.resolution}};
+    segmenter.update(grid);
+  }
+  const Segmentation before = segmenter.result();
+  const Segmentation& after = segmenter.resegment();
+  const Segmentation batch = segment(grid);
+  EXPECT_EQ(segmenter.last_update().kind, IncrementalUpdateReport::Kind::kBatch);
+  std::map<int, int> batch_to_after;
+  ASSERT_TRUE(same_partition(after.labels, batch.labels, &batch_to_after));
+  EXPECT_EQ(after.rooms.size(), batch.rooms.size());
+  EXPECT_EQ(after.passages.size(), batch.passages.size());
+  // Ids carried by overlap from the windowed result.
+  EXPECT_GE(expect_ids_carried(before.labels, after.labels), static_cast<int>(after.rooms.size()) / 2);
+  // Nothing changed since: the next update of the same grid returns the same rooms.
+  const Segmentation again = segmenter.update(grid);
+  EXPECT_EQ(segmenter.last_update().kind, IncrementalUpdateReport::Kind::kUnchanged);
+  EXPECT_EQ(cv::countNonZero(again.labels != after.labels), 0);
+}
+
+TEST(IncrementalBatch, WithoutWindowsEveryUpdateIsBatchWithCarriedIds) {
+  // windowed = false: batch's own schedule, every update segment() with ids carried by overlap.
+  const OccupancyGrid world = read_bundled("floorplan");
+  IncrementalOptions options;
+  options.windowed = false;
+  IncrementalSegmenter segmenter(options);
+  cv::Mat previous;
+  for (int k = 1; k <= 3; ++k) {
+    OccupancyGrid grid = world;
+    grid.cells = cv::Mat(world.cells.size(), CV_8UC1, cv::Scalar(kUnknown));
+    const cv::Rect seen(0, 0, world.width() * k / 3, world.height());
+    world.cells(seen).copyTo(grid.cells(seen));
+    const Segmentation& s = segmenter.update(grid);
+    EXPECT_EQ(segmenter.last_update().kind, IncrementalUpdateReport::Kind::kBatch);
+    EXPECT_TRUE(same_partition(s.labels, segment(grid).labels));
+    if (!previous.empty()) {
+      EXPECT_GE(expect_ids_carried(previous, s.labels), 1);  // the map has such rooms: the check checks something
+    }
+    previous = s.labels.clone();
+  }
+}
+
+}  // namespace
+}  // namespace topocut
