@@ -12,13 +12,13 @@ Exits 77 with a message when ../shared/datasets is absent.
 import argparse
 import glob
 import os
-import platform
 import resource
 import statistics
 import subprocess
 import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
+from node_latency_benchmark import cpu_model  # noqa: E402  (the machine line the other benchmarks print)
 
 
 def cpu_seconds(command):
@@ -27,18 +27,6 @@ def cpu_seconds(command):
     subprocess.run(command, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, check=True)
     after = resource.getrusage(resource.RUSAGE_CHILDREN)
     return (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
-
-
-def cpu_model():
-    """The CPU's model name as /proc/cpuinfo gives it (the machine line of every benchmark)."""
-    try:
-        with open("/proc/cpuinfo") as f:
-            for line in f:
-                if line.startswith("model name"):
-                    return line.split(":", 1)[1].strip()
-    except OSError:
-        pass
-    return platform.machine()
 
 
 def maps(datasets):

@@ -1,6 +1,5 @@
 #include "rooms_adapter.h"
 
-#include <algorithm>
 #include <charconv>
 #include <chrono>
 #include <cstdlib>
@@ -61,14 +60,9 @@ const std::vector<OptionRow<MapSettings>>& map_option_rows() {
   return rows;
 }
 
-std::string underscored(std::string name) {
-  std::replace(name.begin(), name.end(), '-', '_');
-  return name;
-}
-
 std::vector<std::string> known_names() {
   std::vector<std::string> names;
-  for (const auto& row : topocut::segment_option_rows()) names.push_back(underscored(row.name));
+  for (const auto& row : topocut::segment_option_rows()) names.push_back(topocut::underscored_option_name(row.name));
   for (const auto& row : map_option_rows()) names.push_back(row.name);
   return names;
 }
@@ -102,10 +96,8 @@ bool set_row(const std::vector<OptionRow<Target>>& rows, const std::string& name
 // name is appended to unknown, or an Error when unknown is null (a service call's options).
 NodeSettings read_parameters(NodeSettings settings, const std::vector<Parameter>& given, std::vector<std::string>* unknown) {
   for (const Parameter& p : given) {
-    std::string dashed = p.name;
-    std::replace(dashed.begin(), dashed.end(), '_', '-');
-    if (set_row(topocut::segment_option_rows(), dashed, settings.segment, p) ||
-        set_row(map_option_rows(), underscored(p.name), settings.map, p))
+    if (set_row(topocut::segment_option_rows(), topocut::dashed_option_name(p.name), settings.segment, p) ||
+        set_row(map_option_rows(), topocut::underscored_option_name(p.name), settings.map, p))
       continue;
     if (unknown == nullptr) throw Error(unknown_name(p.name, false));
     unknown->push_back(unknown_name(p.name, true));
@@ -228,7 +220,7 @@ std::string parameters_help() {
   };
   const NodeSettings defaults{{topocut::IncrementalOptions{}.segment, {}}, {}};
   for (const auto& row : topocut::segment_option_rows())
-    line(underscored(row.name), row.value_name, row.help, row.is_switch() ? "" : topocut::shortest_number(row.get(defaults.segment)));
+    line(topocut::underscored_option_name(row.name), row.value_name, row.help, row.is_switch() ? "" : topocut::shortest_number(row.get(defaults.segment)));
   for (const auto& row : map_option_rows())
     line(row.name, row.value_name, row.help, topocut::shortest_number(row.get(defaults.map)));
   return out;

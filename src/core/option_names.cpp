@@ -29,6 +29,11 @@ std::string dashed_option_name(std::string name) {
   return name;
 }
 
+std::string underscored_option_name(std::string name) {
+  std::replace(name.begin(), name.end(), '-', '_');
+  return name;
+}
+
 std::string closest_option_name(const std::string& name, const std::vector<std::string>& known) {
   const std::string dashed = dashed_option_name(name);
   std::string best;

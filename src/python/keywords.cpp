@@ -6,6 +6,7 @@
 
 #include "python/bindings.h"
 #include "python/options.h"
+#include "topocut/core/option_names.h"
 #include "topocut/segmentation/incremental_segmenter.h"
 #include "topocut/segmentation/segment_switches.h"
 
@@ -22,8 +23,7 @@ py::tuple keyword(const std::string& name, const char* type, const py::object& v
 // The segment command's table with '_' for '-', defaults taken from settings.
 void add_segment_rows(py::list& out, const SegmentSettings& settings) {
   for (const OptionRow<SegmentSettings>& row : segment_option_rows()) {
-    std::string name = row.name;
-    for (char& c : name) c = c == '-' ? '_' : c;
+    const std::string name = underscored_option_name(row.name);
     const double value = row.get(settings);
     if (row.is_switch()) {
       out.append(keyword(name, "bool", py::bool_(value != 0.0), row.help));

@@ -12,12 +12,6 @@ namespace topocut::python {
 namespace {
 
 // Python's keyword for a row of the library's table: the command's flag with '_' for '-'.
-std::string keyword(const std::string& flag) {
-  std::string name = flag;
-  for (char& c : name) c = c == '-' ? '_' : c;
-  return name;
-}
-
 template <typename Target>
 const OptionRow<Target>* find_keyword(const std::vector<OptionRow<Target>>& rows, const std::string& name) {
   for (const OptionRow<Target>& row : rows)
@@ -25,13 +19,26 @@ const OptionRow<Target>* find_keyword(const std::vector<OptionRow<Target>>& rows
   return nullptr;
 }
 
+// The keywords of rows: their names with '_' for '-'.
 template <typename Target>
-std::string keyword_names(const std::vector<OptionRow<Target>>& rows) {
-  std::string names;
-  for (const OptionRow<Target>& row : rows) {
-    if (!names.empty()) names += ", ";
-    names += keyword(row.name);
-  }
+std::vector<std::string> keywords(const std::vector<OptionRow<Target>>& rows) {
+  std::vector<std::string> names;
+  for (const OptionRow<Target>& row : rows) names.push_back(underscored_option_name(row.name));
+  return names;
+}
+
+std::string comma_separated(const std::vector<std::string>& names) {
+  std::string out;
+  for (const std::string& name : names) out += (out.empty() ? "" : ", ") + name;
+  return out;
+}
+
+// Every keyword segment() takes: the segment command's table and the map's own.
+std::vector<std::string> segment_keywords() {
+  std::vector<std::string> names = keywords(segment_option_rows());
+  for (const char* name : {"merge_model", "row_order", "free_thresh", "occupied_thresh", "fixed_thresholds", "free_threshold",
+                           "occupied_threshold"})
+    names.push_back(name);
   return names;
 }
 
@@ -56,22 +63,17 @@ T pop(py::dict& kwargs, const char* name, T fallback) {
 }
 
 // Sets every keyword of kwargs in target through its row of rows: the command's check and message,
-// with the keyword's name. An unknown keyword is a TypeError listing `names`.
+// with the keyword's name. An unknown keyword is a TypeError naming the closest of `known` and listing them.
 template <typename Target>
-void set_keywords(const std::vector<OptionRow<Target>>& rows, const py::dict& kwargs, Target& target, const std::string& names) {
+void set_keywords(const std::vector<OptionRow<Target>>& rows, const py::dict& kwargs, Target& target,
+                  const std::vector<std::string>& known) {
   for (const auto& [key, value] : kwargs) {
     const std::string name = py::str(key);
     const OptionRow<Target>* row = find_keyword(rows, name);
     if (row == nullptr) {
-      std::vector<std::string> known;
-      for (std::size_t at = 0; at < names.size();) {
-        const std::size_t end = std::min(names.find(", ", at), names.size());
-        known.push_back(names.substr(at, end - at));
-        at = end + 2;
-      }
       const std::string meant = closest_option_name(name, known);
       throw py::type_error("unexpected keyword argument '" + name + "'" + (meant.empty() ? "" : " (did you mean " + meant + "?)") +
-                           "; options are: " + names);
+                           "; options are: " + comma_separated(known));
     }
     if (row->is_switch()) {
       row->set(target, py::bool_(py::reinterpret_borrow<py::object>(value)) ? 1.0 : 0.0);
@@ -83,13 +85,13 @@ void set_keywords(const std::vector<OptionRow<Target>>& rows, const py::dict& kw
 
 // The segment options from kwargs (the segment command's table, segment_option_rows()) over s.
 SegmentOptions settings_from(const py::dict& kwargs, SegmentSettings s) {
-  set_keywords(segment_option_rows(), kwargs, s, segment_option_names());
+  set_keywords(segment_option_rows(), kwargs, s, segment_keywords());
   return to_segment_options(s);
 }
 
 // A value of kwargs checked by the map-loading row named flag (its range and message), or fallback.
 double checked_map_option(py::dict& kwargs, const char* flag, double fallback) {
-  const std::string name = keyword(flag);
+  const std::string name = underscored_option_name(flag);
   if (!kwargs.contains(name.c_str())) return fallback;
   const double value = number(kwargs[name.c_str()], name);
   PyDict_DelItemString(kwargs.ptr(), name.c_str());
@@ -158,18 +160,15 @@ IncrementalOptions incremental_options(py::dict kwargs) {
   return o;
 }
 
-std::string segment_option_names() {
-  return keyword_names(segment_option_rows()) +
-         ", merge_model, row_order, free_thresh, occupied_thresh, fixed_thresholds, free_threshold, occupied_threshold";
-}
+std::string segment_option_names() { return comma_separated(segment_keywords()); }
 
 MapLoadOptions map_load_options(const py::dict& kwargs) {
   MapLoadOptions load;
-  set_keywords(map_load_option_rows(), kwargs, load, map_load_option_names());
+  set_keywords(map_load_option_rows(), kwargs, load, keywords(map_load_option_rows()));
   validate(load);
   return load;
 }
 
-std::string map_load_option_names() { return keyword_names(map_load_option_rows()); }
+std::string map_load_option_names() { return comma_separated(keywords(map_load_option_rows())); }
 
 }  // namespace topocut::python

@@ -9,6 +9,8 @@ TEST(OptionNames, UnderscoresAndDashesAreAlike) {
   EXPECT_EQ(dashed_option_name("robot_radius"), "robot-radius");
   EXPECT_EQ(dashed_option_name("no_wall_lines"), "no-wall-lines");
   EXPECT_EQ(dashed_option_name("concavity"), "concavity");
+  EXPECT_EQ(underscored_option_name("robot-radius"), "robot_radius");
+  EXPECT_EQ(underscored_option_name("no-wall-lines"), "no_wall_lines");
 }
 
 TEST(OptionNames, ATypoGetsTheNameMeantAndAnythingElseNone) {
