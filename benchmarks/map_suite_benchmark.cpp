@@ -208,6 +208,16 @@ std::vector<ScoredSet> scored_sets(const std::string& datasets, bool with_peers)
   return scored;
 }
 
+// The job that segments the real maps (no ground truth) with run's options into real.
+std::function<void()> real_maps_job(const std::string& datasets, const DatasetRunOptions& run, int floor_repetitions,
+                                    std::vector<MapDefectResult>& real) {
+  MapFolderOptions options;
+  options.segment = run.segment;
+  options.load = run.load;
+  options.floor_repetitions = floor_repetitions;
+  return [datasets, options, &real] { real = run_map_files(discover_map_files(datasets + "/real_maps"), options); };
+}
+
 // Runs jobs on threads threads; the messages of the jobs that threw.
 std::vector<std::string> run_jobs(const std::vector<std::function<void()>>& jobs, int threads) {
   std::mutex mutex;
@@ -251,14 +261,10 @@ int run(const SuiteOptions& suite, const DatasetArguments& arguments) {
 
   std::vector<ScoredSet> scored = scored_sets(datasets, true);
   std::vector<MapDefectResult> real;
-  MapFolderOptions folder_options;
-  folder_options.segment = arguments.run.segment;
-  folder_options.load = arguments.run.load;
-  folder_options.floor_repetitions = floor_repetitions;
 
   std::vector<std::function<void()>> jobs;
   for (ScoredSet& set : scored) jobs.push_back([&, floor_repetitions] { score_set(set, arguments.run, floor_repetitions, oracle_merge); });
-  jobs.push_back([&] { real = run_map_files(discover_map_files(datasets + "/real_maps"), folder_options); });
+  jobs.push_back(real_maps_job(datasets, arguments.run, floor_repetitions, real));
   const std::vector<std::string> errors = run_jobs(jobs, threads);
   for (const std::string& e : errors) std::cerr << "map_suite_benchmark: " << e << "\n";
 
@@ -338,13 +344,9 @@ int run_ablation(const SuiteOptions& suite, const DatasetArguments& arguments) {
     run.segment = options;
     std::vector<ScoredSet> scored = scored_sets(datasets, false);
     std::vector<MapDefectResult> real;
-    MapFolderOptions folder_options;
-    folder_options.segment = options;
-    folder_options.load = run.load;
-    folder_options.floor_repetitions = 0;
     std::vector<std::function<void()>> jobs;
     for (ScoredSet& set : scored) jobs.push_back([&set, &run] { score_set(set, run, 0, false); });
-    jobs.push_back([&] { real = run_map_files(discover_map_files(datasets + "/real_maps"), folder_options); });
+    jobs.push_back(real_maps_job(datasets, run, 0, real));
     for (const std::string& e : run_jobs(jobs, suite.threads)) std::cerr << "map_suite_benchmark: " << name << ": " << e << "\n";
     std::vector<std::string> row{name};
     for (const ScoredSet& set : scored) {
