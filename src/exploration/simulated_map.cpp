@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <map>
 #include <random>
 #include <string>
 #include <vector>
@@ -188,13 +189,19 @@ class PoseDrift {
   double x_ = 0.0, y_ = 0.0, theta_ = 0.0;
 };
 
-// A drivable cell of the largest 4-connected drivable region, drawn by the seed.
+// A drivable cell of the largest 4-connected drivable region (of equal ones, the first in raster
+// order: OpenCV's label numbers depend on its thread count), drawn by the seed.
 Point2 start_position(const SimulatedWorld& w, std::uint32_t seed) {
   cv::Mat labels, stats, centroids;
   const int n = cv::connectedComponentsWithStats(w.drivable, labels, stats, centroids, 4, CV_32S);
+  std::vector<char> met(static_cast<std::size_t>(n), 0);
   int best = 0;
-  for (int i = 1; i < n; ++i)
+  for (auto it = labels.begin<int>(); it != labels.end<int>(); ++it) {
+    const int i = *it;
+    if (i == 0 || met[static_cast<std::size_t>(i)]) continue;
+    met[static_cast<std::size_t>(i)] = 1;
     if (best == 0 || stats.at<int>(i, cv::CC_STAT_AREA) > stats.at<int>(best, cv::CC_STAT_AREA)) best = i;
+  }
   if (best == 0) throw Error("the plan's rooms leave the robot nowhere to stand (try a smaller --robot-radius)");
   SeededRandom rng(seed, kStartStream);
   std::uint64_t k = rng.below(static_cast<std::uint64_t>(stats.at<int>(best, cv::CC_STAT_AREA)));
@@ -283,6 +290,29 @@ cv::Mat carry_rooms(const cv::Mat& rooms, const cv::Mat& map_cells, double fill_
   return out;
 }
 
+// rooms renumbered 1..N in raster order of their first cells, and the input's label of each (index
+// 0 unused): what is drawn per room, and which of two touching rooms gives way, then depends on the
+// rooms themselves, not on how they were numbered (OpenCV's parallel labelling numbers them by its
+// thread count).
+cv::Mat canonical_rooms(const cv::Mat& rooms, std::vector<int>& original) {
+  std::map<int, int> number;
+  original.assign(1, 0);
+  cv::Mat out(rooms.size(), CV_32SC1);
+  for (int r = 0; r < rooms.rows; ++r)
+    for (int c = 0; c < rooms.cols; ++c) {
+      const int room = rooms.at<int>(r, c);
+      int& mine = out.at<int>(r, c);
+      if (room == 0) {
+        mine = 0;
+        continue;
+      }
+      const auto [it, added] = number.emplace(room, static_cast<int>(original.size()));
+      if (added) original.push_back(room);
+      mine = it->second;
+    }
+  return out;
+}
+
 // seed mixed with a hash of the plan's cells (FNV-1a), through std::seed_seq (fixed by the standard).
 std::uint32_t plan_seed(const OccupancyGrid& plan, std::uint32_t seed) {
   std::uint32_t hash = 2166136261u;
@@ -315,7 +345,8 @@ SimulatedMap simulate_map(const OccupancyGrid& plan, const cv::Mat& rooms, const
   // The seed's draws also depend on the plan, so that a folder converted with seeds 1..N does not
   // give every plan the same N sensors.
   seed = plan_seed(plan, seed);
-  SimulatedWorld world = build_simulated_world(plan, rooms, options, seed);
+  std::vector<int> original;
+  SimulatedWorld world = build_simulated_world(plan, canonical_rooms(rooms, original), options, seed);
   SimulatedMap out;
   SeededRandom sensor(seed, kSensorStream);
   out.range = sensor.uniform(options.range_from, options.range_to);
@@ -324,6 +355,7 @@ SimulatedMap simulate_map(const OccupancyGrid& plan, const cv::Mat& rooms, const
   out.map.origin = world.world.origin;
   explore_and_map(world, options, seed, out);
   out.rooms = carry_rooms(world.rooms, out.map.cells, options.room_fill / plan.resolution);
+  for (auto it = out.rooms.begin<int>(); it != out.rooms.end<int>(); ++it) *it = original[static_cast<std::size_t>(*it)];
   out.offset = world.offset;
   out.wall_change = world.wall_change;
   out.doors = world.doors;

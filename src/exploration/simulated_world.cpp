@@ -18,7 +18,7 @@ namespace {
 
 constexpr unsigned char kOn = 255;
 // Metres of floor kept in front of furniture and around tables: a way past for the robot.
-constexpr double kPassage = 0.6;
+constexpr double kPassage = 0.8;
 
 // The random streams of the stages (SeededRandom's second argument).
 enum Stream : std::uint32_t { kWallStream = 1, kDoorStream, kWindowStream, kFurnitureStream, kClutterStream, kOutsideStream };
@@ -151,6 +151,9 @@ std::vector<Door> find_doors(const Draft& d, double max_width) {
     const double across = std::hypot(stats.at<int>(i, cv::CC_STAT_WIDTH), stats.at<int>(i, cv::CC_STAT_HEIGHT)) * d.resolution;
     if (touched[static_cast<std::size_t>(i)].size() >= 2 && across <= max_width) doors.push_back(std::move(parts[static_cast<std::size_t>(i)]));
   }
+  // In raster order of their first cells: OpenCV's parallel labelling numbers components by how
+  // many threads it ran on, and the doors' draws must not depend on that.
+  std::sort(doors.begin(), doors.end(), [](const Door& a, const Door& b) { return a.cells.front() < b.cells.front(); });
   return doors;
 }
 
@@ -289,12 +292,18 @@ void place_furniture(Draft& d, const SimulatedMapOptions& o, SeededRandom& rng) 
       const int sign = rng.chance(0.5) ? 1 : -1;
       const int dx = along_x ? 0 : sign, dy = along_x ? sign : 0;
       while (fits(where, x + dx, y + dy, w, h)) x += dx, y += dy;
-      // Floor in front of it, so that no piece closes a passage inside a room.
+      // Its back against a wall (not stopped by a door's clearance or another room), and floor in
+      // front of it, so that no piece closes a passage inside a room.
+      const cv::Rect back = dy > 0 ? cv::Rect(x, y + h, w, 1)
+                            : dy < 0 ? cv::Rect(x, y - 1, w, 1)
+                            : dx > 0 ? cv::Rect(x + w, y, 1, h)
+                                     : cv::Rect(x - 1, y, 1, h);
       const cv::Rect front = dy > 0 ? cv::Rect(x, y - passage, w, passage)
                              : dy < 0 ? cv::Rect(x, y + h, w, passage)
                              : dx > 0 ? cv::Rect(x - passage, y, passage, h)
                                       : cv::Rect(x + w, y, passage, h);
-      if (!all_floor(d, front)) continue;
+      const cv::Rect frame(0, 0, d.floor.cols, d.floor.rows);
+      if ((back & frame) != back || 2 * cv::countNonZero(d.solid(back)) < back.area() || !all_floor(d, front)) continue;
       set_solid(d, allowed, cv::Rect(x, y, w, h));
       covered += w * h;
     }
