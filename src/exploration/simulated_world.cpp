@@ -75,11 +75,11 @@ cv::Mat framed(const cv::Mat& image, const cv::Rect& box, const cv::Scalar& fill
   return out;
 }
 
-// The exterior: non-floor space reached from the frame's border through cells that are unknown,
-// free outside the building, beyond the plan, or occupied farther than outer_wall from the floor.
-cv::Mat find_exterior(const cv::Mat& plan_cells, const cv::Mat& floor, int outer_wall_cells) {
-  const cv::Mat far = distance_to(floor) > outer_wall_cells;
-  const cv::Mat open = (floor == 0) & ((plan_cells != kOccupied) | far);
+// The exterior: space reached from the frame's border through cells farther than outer_wall from
+// the floor. What lies closer is wall, whatever the plan drew there: black, the grey of unknown space
+// (r2v's outside, walls drawn grey in some Bormann maps) or a free background.
+cv::Mat find_exterior(const cv::Mat& floor, int outer_wall_cells) {
+  const cv::Mat open = distance_to(floor) > outer_wall_cells;
   cv::Mat labels;
   const int n = cv::connectedComponents(open, labels, 4, CV_32S);
   std::vector<unsigned char> outside(static_cast<std::size_t>(n), 0);
@@ -420,10 +420,9 @@ SimulatedWorld build_simulated_world(const OccupancyGrid& plan, const cv::Mat& p
 
   Draft d;
   d.resolution = res;
-  const cv::Mat plan_cells = framed(plan.cells, box, cv::Scalar(kUnknown));
   d.floor = framed(inside, box, cv::Scalar(0));
   d.rooms = framed(plan_rooms, box, cv::Scalar(0));
-  d.exterior = find_exterior(plan_cells, d.floor, std::max(1, cells(o.outer_wall, res)));
+  d.exterior = find_exterior(d.floor, std::max(1, cells(o.outer_wall, res)));
   d.solid = ~(d.floor | d.exterior);
 
   SimulatedWorld out;

@@ -17,10 +17,12 @@
 namespace topocut {
 
 // The defaults are those of common indoor robots: a lidar of the SICK LMS 2xx / Hokuyo UTM-30LX /
-// RPLIDAR class (data sheets: 8 to 30 m range, 0.25 to 1 degree steps, 1 to 3 cm range noise),
+// RPLIDAR class (data sheets: 8 to 30 m range, 0.25 to 1 degree steps, 1 to 3 cm range noise) and
 // gmapping's occupancy threshold (occ_thresh 0.25: a cell is occupied when a quarter of the beams
-// that reached it ended there) and Cartographer's missing_data_ray_length (5 m of free space for a
-// beam without a return). Every realism has a value that switches it off (0, or from = to).
+// that reached it ended there). A beam without a return draws nothing, as in gmapping and as the raw
+// maps of the shared real_maps/ show (fans of single rays to what lies outside); Cartographer instead
+// clears its missing_data_ray_length, 5 m (no_return_length). Every realism has a value that switches
+// it off (0, or from = to).
 struct SimulatedMapOptions {
   // Lidar. The range limit and the angular step are drawn per seed, uniformly between from and to.
   double range_from = 8.0;                                  // metres
@@ -41,13 +43,13 @@ struct SimulatedMapOptions {
   // or blurred while people's rooms stay within a cell or two of the map's.
   double drift = 0.05;                                // metres, largest position error
   double drift_angle = 0.3 * std::numbers::pi / 180;  // radians, largest heading error
-  // The building. The exterior (non-free space reached from the image border beyond outer walls of
-  // at most outer_wall, or the plan's unknown outside) becomes open ground within `outside` metres of
-  // the building; windows (glass doors, open outer doors) open that share of the outer wall's length
-  // to the laser (not to the robot), so beams leave and draw fans outside.
+  // The building. The exterior (space reached from the image border through cells farther than
+  // outer_wall from the floor, whatever the plan drew there) becomes open ground, `outside` metres of
+  // it around the building; windows (glass doors, open outer doors) open that share of the outer
+  // wall's length to the laser (not to the robot), so beams leave and draw fans outside.
   double outside = 3.0;            // metres of open ground around the building (0: a solid exterior)
   double outer_wall = 0.25;        // metres: outer walls are kept at most this thick
-  double windows = 0.2;            // share of the outer wall the laser sees through
+  double windows = 0.1;            // share of the outer wall the laser sees through
   double outside_obstacles = 8.0;  // trees, bushes, posts and cars per 100 m² of open ground
   // Inside. Doors are the openings people's rooms are cut at (free in the plan, in no room, between
   // two rooms, at most max_door_width across); each is closed with probability closed_doors.
