@@ -28,9 +28,10 @@ const char* const kDescription =
     "Turns a plan with people's rooms (a map image or ROS YAML: free floor, walls, anything outside;\n"
     "its ground truth in the Bormann layout: white rooms, black elsewhere) into the map a robot would\n"
     "build of it, with the rooms carried over:\n"
-    "  - the exterior (unknown, or non-free space reached from the border beyond the outer walls)\n"
-    "    becomes open ground with trees, posts and cars; windows open spans of the outer wall to the\n"
-    "    laser, so beams leave the building and draw fans outside;\n"
+    "  - the exterior (space reached from the border farther than --outer-wall from the floor,\n"
+    "    whatever the plan drew there) becomes open ground with trees, posts and cars; windows open\n"
+    "    spans of the outer wall to the laser (not to the robot), so beams leave the building and\n"
+    "    draw fans outside;\n"
     "  - walls are thinned or thickened by a cell, doors between rooms are closed at random (rooms\n"
     "    behind them may stay unseen), furniture stands against walls, tables and chairs show legs;\n"
     "  - the robot explores from a random start inside with the frontier explorer (topocut explore)\n"
@@ -80,7 +81,7 @@ Arguments parse(const std::vector<std::string>& args, bool& help) {
       ("out-map", po::value<std::string>(&a.out_map)->value_name("FILE"), "write the robot's map here (.png, .pgm, ...; .yaml: ROS map_server map)")
       ("out-gt", po::value<std::string>(&a.out_gt)->value_name("FILE"), "write people's rooms in the map's frame here (PNG: 255 rooms, 0 elsewhere)")
       ("out-world", po::value<std::string>(&a.out_world)->value_name("FILE"),
-       "also write the world the robot was in (PNG, map's frame): floor and open ground white, walls and furniture black, glass grey")
+       "also write the world the robot was in (PNG, map's frame): floor the robot drives on white (light grey near walls), open ground grey, windows dark grey, walls and furniture black")
       ("dataset", po::value<std::string>(&a.dataset)->value_name("DIR"), "convert every map of this Bormann-format folder instead of one plan")
       ("out", po::value<std::string>(&a.out)->value_name("DIR"), "with --dataset: the folder written (X_sN.png, X_sN_gt_segmentation.png)")
       ("seeds", po::value<int>(&a.seeds)->default_value(a.seeds)->value_name("N"), "with --dataset: maps per plan, seeds --seed .. --seed + N - 1")
