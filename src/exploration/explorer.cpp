@@ -47,21 +47,33 @@ void validate(const ExplorationOptions& o) {
     throw Error("the start position must be finite");
 }
 
-Explorer::Explorer(const OccupancyGrid& ground_truth, const ExplorationOptions& options) : options_(options) {
+Explorer::Explorer(const OccupancyGrid& ground_truth, const ExplorationOptions& options)
+    : Explorer(ground_truth, cv::Mat(), options) {}
+
+Explorer::Explorer(const OccupancyGrid& ground_truth, const cv::Mat& drivable, const ExplorationOptions& options)
+    : options_(options) {
   validate(ground_truth);
   validate(options);
   truth_ = ground_truth;
   truth_.cells = ground_truth.cells.clone();
   const int w = truth_.width(), h = truth_.height();
-  const cv::Mat free = truth_.cells == kFree;
+  cv::Mat free = truth_.cells == kFree;
   if (cv::countNonZero(free) == 0) throw Error("the map has no free space to explore");
+  if (!drivable.empty()) {
+    if (drivable.type() != CV_8UC1 || drivable.size() != truth_.cells.size())
+      throw Error("the drivable mask must be an 8-bit single-channel image of the map's size");
+    drivable_ = drivable != 0;
+    free &= drivable_;
+    if (cv::countNonZero(free) == 0) throw Error("the map has no drivable free space to explore");
+  }
 
   cv::Point start_cell;
   if (options.start) {
     start_cell = world_to_cell(truth_, *options.start);
     if (start_cell.x < 0 || start_cell.y < 0 || start_cell.x >= w || start_cell.y >= h ||
-        truth_.cells.at<unsigned char>(start_cell) != kFree)
-      throw Error("the start position " + format_point(*options.start) + " is not in the map's free space");
+        !free.at<unsigned char>(start_cell))
+      throw Error("the start position " + format_point(*options.start) + " is not in the map's " +
+                  (drivable_.empty() ? "free space" : "drivable free space"));
   } else {
     // Clearance of every free cell of the largest component (distance to the nearest non-free cell).
     const cv::Mat component = largest_component(free);
@@ -225,6 +237,7 @@ bool Explorer::target_still_frontier() const {
 bool Explorer::plan() {
   const int w = known_.cols, h = known_.rows;
   const unsigned char* k = known_.ptr<unsigned char>(0);
+  const unsigned char* drive = drivable_.empty() ? nullptr : drivable_.ptr<unsigned char>(0);
   ++generation_;
   const std::uint32_t stamp = generation_;
   std::vector<int> queue{robot_cell_};
@@ -248,7 +261,7 @@ bool Explorer::plan() {
       const int nr = r + kDr[d], nc = c + kDc[d];
       if (nr < 0 || nr >= h || nc < 0 || nc >= w) continue;
       const int j = nr * w + nc;
-      if (visited_[static_cast<std::size_t>(j)] == stamp || k[j] != kFree) continue;
+      if (visited_[static_cast<std::size_t>(j)] == stamp || k[j] != kFree || (drive && !drive[j])) continue;
       if (d >= 4 && (k[r * w + nc] != kFree || k[nr * w + c] != kFree)) continue;
       visited_[static_cast<std::size_t>(j)] = stamp;
       parent_[static_cast<std::size_t>(j)] = i;

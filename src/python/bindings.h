@@ -8,6 +8,7 @@ void bind_segmentation(pybind11::module_& m);  // segment, load_map, Incremental
 void bind_geometry(pybind11::module_& m);      // decompose, line extractors
 void bind_evaluation(pybind11::module_& m);    // evaluate and its Scores
 void bind_training(pybind11::module_& m);      // merge_feature_names, merge_training_rows
+void bind_simulation(pybind11::module_& m);    // simulate_map
 void bind_keywords(pybind11::module_& m);      // _keywords: the keyword arguments as data
 
 }  // namespace topocut::python

@@ -7,6 +7,7 @@
 #include "python/bindings.h"
 #include "python/options.h"
 #include "topocut/core/option_names.h"
+#include "topocut/exploration/simulated_map.h"
 #include "topocut/segmentation/incremental_segmenter.h"
 #include "topocut/segmentation/segment_switches.h"
 
@@ -64,9 +65,26 @@ void add_incremental(py::list& out) {
   out.append(keyword("merge_after", "int", py::int_(o.merge_after), "decompositions in a row that must merge two rooms before they merge"));
 }
 
+// simulate_map()'s keywords: simulate-map's table with '_' for '-'; the whole-number rows (cells,
+// scans) as int.
+void add_simulation_rows(py::list& out) {
+  const SimulatedMapOptions defaults;
+  for (const OptionRow<SimulatedMapOptions>& row : simulated_map_option_rows()) {
+    const double value = row.get(defaults);
+    const bool whole = row.value_name == "CELLS" || row.value_name == "SCANS";
+    out.append(keyword(underscored_option_name(row.name), whole ? "int" : "float",
+                       whole ? py::object(py::int_(static_cast<int>(value))) : py::object(py::float_(value)), row.help));
+  }
+}
+
 // kind: "options" (merge_training_rows()), "segment" (segment(): the options and the grid reading),
-// "grid" (update()) or "incremental" (IncrementalSegmenter()).
+// "grid" (update()), "incremental" (IncrementalSegmenter()) or "simulate" (simulate_map()).
 py::list keywords(const std::string& kind) {
+  if (kind == "simulate") {
+    py::list out;
+    add_simulation_rows(out);
+    return out;
+  }
   if (kind != "options" && kind != "segment" && kind != "grid" && kind != "incremental")
     throw py::value_error("unknown keyword table '" + kind + "'");
   py::list out;
@@ -86,8 +104,8 @@ py::list keywords(const std::string& kind) {
 
 void bind_keywords(py::module_& m) {
   m.def("_keywords", &keywords, py::arg("kind"),
-        "The keyword arguments of segment() ('segment'), merge_training_rows() ('options'), update() ('grid') or\n"
-        "IncrementalSegmenter() ('incremental'):\n"
+        "The keyword arguments of segment() ('segment'), merge_training_rows() ('options'), update() ('grid'),\n"
+        "IncrementalSegmenter() ('incremental') or simulate_map() ('simulate'):\n"
         "a list of (name, type name, default, help).");
 }
 

@@ -34,5 +34,6 @@ PYBIND11_MODULE(_topocut, m) {
   topocut::python::bind_geometry(m);
   topocut::python::bind_evaluation(m);
   topocut::python::bind_training(m);
+  topocut::python::bind_simulation(m);
   topocut::python::bind_keywords(m);
 }

@@ -171,4 +171,13 @@ MapLoadOptions map_load_options(const py::dict& kwargs) {
 
 std::string map_load_option_names() { return comma_separated(keywords(map_load_option_rows())); }
 
+SimulatedMapOptions simulated_map_options(const py::dict& kwargs) {
+  SimulatedMapOptions options;
+  set_keywords(simulated_map_option_rows(), kwargs, options, keywords(simulated_map_option_rows()));
+  validate(options);
+  return options;
+}
+
+std::string simulated_map_option_names() { return comma_separated(keywords(simulated_map_option_rows())); }
+
 }  // namespace topocut::python

@@ -7,6 +7,7 @@
 #include <pybind11/pybind11.h>
 
 #include "topocut/core/grid_array.h"
+#include "topocut/exploration/simulated_map.h"
 #include "topocut/io/map_loader.h"
 #include "topocut/segmentation/incremental_segmenter.h"
 #include "topocut/segmentation/segmenter.h"
@@ -51,5 +52,12 @@ MapLoadOptions map_load_options(const py::dict& kwargs);
 
 // Their names, for docstrings and errors.
 std::string map_load_option_names();
+
+// simulate_map()'s options: simulate-map's rows (simulated_map_option_rows()) by keyword, each
+// checked and named as there, then validated together.
+SimulatedMapOptions simulated_map_options(const py::dict& kwargs);
+
+// Their names, for docstrings and errors.
+std::string simulated_map_option_names();
 
 }  // namespace topocut::python

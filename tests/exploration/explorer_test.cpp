@@ -1,5 +1,6 @@
 #include "topocut/exploration/explorer.h"
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -182,6 +183,35 @@ TEST(Explorer, GivenStartAndBadInput) {
   ExplorationOptions no_scans;
   no_scans.max_scans = 0;
   EXPECT_THROW(Explorer(world, no_scans), Error);
+}
+
+TEST(Explorer, ADrivableMaskKeepsTheRobotOutButNotTheLaser) {
+  const OccupancyGrid world = building();
+  // The right room (behind the corridor's end) may be seen but not entered.
+  cv::Mat drivable = world.cells == kFree;
+  const cv::Rect right_room(334, 0, 66, 240);
+  drivable(right_room).setTo(0);
+  ExplorationOptions options;
+  options.start = Point2{-3.0 + 20.5 * kRes, 2.0 + (240 - 199.5) * kRes};  // corridor
+  Explorer explorer(world, drivable, options);
+  explore_all(explorer);
+  ASSERT_TRUE(explorer.finished());
+  for (const Point2& p : explorer.path()) {
+    const cv::Point cell = world_to_cell(world, p);
+    ASSERT_NE(drivable.at<unsigned char>(cell), 0) << p.x << ", " << p.y;
+  }
+  EXPECT_GT(cv::countNonZero(explorer.known_cells()(right_room) == kFree), 100);  // seen through its door
+  // Without the mask the robot walks in.
+  Explorer free_to_go(world, options);
+  explore_all(free_to_go);
+  const auto inside = [&](const Point2& p) { return right_room.contains(world_to_cell(world, p)); };
+  EXPECT_TRUE(std::any_of(free_to_go.path().begin(), free_to_go.path().end(), inside));
+  // The start must be drivable; the mask must fit the map.
+  options.start = Point2{-3.0 + 360.5 * kRes, 2.0 + (240 - 100.5) * kRes};  // right room
+  EXPECT_THROW(Explorer(world, drivable, options), Error);
+  options.start.reset();
+  EXPECT_THROW(Explorer(world, drivable(cv::Rect(0, 0, 10, 10)).clone(), options), Error);
+  EXPECT_THROW(Explorer(world, cv::Mat::zeros(world.cells.size(), CV_8UC1), options), Error);
 }
 
 TEST(Explorer, ScanCapStopsExploration) {

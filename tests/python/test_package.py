@@ -42,7 +42,8 @@ def stub_functions(tree):
 def test_stubs_list_every_keyword_with_its_type_and_default():
     functions = stub_functions(stub_tree())
     for stub, kind in [("segment", "segment"), ("IncrementalSegmenter.__init__", "incremental"),
-                       ("IncrementalSegmenter.update", "grid"), ("merge_training_rows", "options")]:
+                       ("IncrementalSegmenter.update", "grid"), ("merge_training_rows", "options"),
+                       ("simulate_map", "simulate")]:
         table = topocut._topocut._keywords(kind)
         assert stub_keywords(functions[stub]) == {name: default for name, _, default, _ in table}, stub
         annotations = {a.arg: ast.unparse(a.annotation) for a in functions[stub].args.kwonlyargs}

@@ -45,6 +45,11 @@ class Explorer {
   // Keeps a copy of the ground truth. Throws Error on an invalid grid or options, a map without
   // free space, or a start position that is not free.
   Explorer(const OccupancyGrid& ground_truth, const ExplorationOptions& options = {});
+  // The same robot kept to the cells where drivable (CV_8UC1, the ground truth's size) is non-zero:
+  // the laser still sees every free cell (through glass, over ground the robot may not enter), but
+  // routes, frontier targets and the start stay on drivable free cells. Throws Error as above, on a
+  // mask of another size or type, or when no free cell is drivable.
+  Explorer(const OccupancyGrid& ground_truth, const cv::Mat& drivable, const ExplorationOptions& options);
 
   // Takes the next scan: the first call scans at the start; every later call first moves the robot
   // one step along its path to the nearest reachable frontier (choosing a new one when the old one
@@ -78,6 +83,7 @@ class Explorer {
   void publish();
 
   OccupancyGrid truth_;
+  cv::Mat drivable_;  // CV_8UC1, non-zero where the robot may stand; empty: every free cell
   ExplorationOptions options_;
   cv::Mat known_;  // CV_8UC1, ground-truth frame
   OccupancyGrid published_;

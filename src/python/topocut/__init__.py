@@ -9,6 +9,7 @@
     r.to_shapely(), r.to_networkx()                        # with python3-shapely / python3-networkx
     s = topocut.evaluate("X_labels.png", "X_gt_segmentation.png", free="X.png")
     s.recall, s.precision, s.f1, s.pq, s.segments_per_room
+    robot_map, rooms = topocut.simulate_map("X.png", "X_gt_segmentation.png", seed=3)  # robot-made map
 
 Bad input raises ValueError with the message the topocut command prints; a file that is missing or
 cannot be opened raises FileNotFoundError, PermissionError or IsADirectoryError; an unknown keyword
@@ -38,7 +39,8 @@ from ._topocut import (
 
 __all__ = [
     "IncrementalSegmenter", "Map", "Passage", "Room", "Scores", "Segmentation", "ale", "decompose", "evaluate",
-    "extract_lines", "iepf", "load_map", "lt", "merge_feature_names", "merge_training_rows", "segment", "sef", "smf",
+    "extract_lines", "iepf", "load_map", "lt", "merge_feature_names", "merge_training_rows", "segment", "sef",
+    "simulate_map", "smf",
 ]
 
 _TYPES = {"bool": bool, "int": int, "float": float, "str": str}
@@ -79,6 +81,15 @@ def merge_training_rows(image, ground_truth, resolution=0.05, **options):
 
 merge_training_rows.__doc__ = _topocut.merge_training_rows.__doc__.split("\n\n", 1)[1].strip()
 _with_keywords(merge_training_rows, "options", [_positional("image"), _positional("ground_truth"), _positional("resolution", 0.05)])
+
+
+def simulate_map(plan, ground_truth, seed=1, resolution=0.05, **options):
+    return _topocut.simulate_map(plan, ground_truth, seed, resolution, **options)
+
+
+simulate_map.__doc__ = _topocut.simulate_map.__doc__.split("\n\n", 1)[1].strip()
+_with_keywords(simulate_map, "simulate",
+               [_positional("plan"), _positional("ground_truth"), _positional("seed", 1), _positional("resolution", 0.05)])
 
 
 class IncrementalSegmenter(_topocut.IncrementalSegmenter):

@@ -1,0 +1,230 @@
+// topocut simulate-map: the map a robot would build of a plan with people's rooms, and those rooms
+// in its frame; for one plan, or for every map of a Bormann-format folder with several seeds.
+#include <cctype>
+#include <cstdint>
+#include <filesystem>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "cli/command.h"
+#include "cli/library_options.h"
+#include "topocut/core/error.h"
+#include "topocut/core/format.h"
+#include "topocut/evaluation/dataset.h"
+#include "topocut/evaluation/precision_recall.h"
+#include "topocut/exploration/simulated_map.h"
+#include "topocut/io/atomic_file.h"
+#include "topocut/io/map_loader.h"
+#include "topocut/io/map_saver.h"
+#include "topocut/io/output_files.h"
+
+namespace topocut::cli {
+namespace {
+
+namespace fs = std::filesystem;
+
+const char* const kDescription =
+    "Turns a plan with people's rooms (a map image or ROS YAML: free floor, walls, anything outside;\n"
+    "its ground truth in the Bormann layout: white rooms, black elsewhere) into the map a robot would\n"
+    "build of it, with the rooms carried over:\n"
+    "  - the exterior (space reached from the border farther than --outer-wall from the floor,\n"
+    "    whatever the plan drew there) becomes open ground with trees, posts and cars; windows open\n"
+    "    spans of the outer wall to the laser (not to the robot), so beams leave the building and\n"
+    "    draw fans outside;\n"
+    "  - walls are thinned or thickened by a cell, doors between rooms are closed at random (rooms\n"
+    "    behind them may stay unseen), furniture stands against walls, tables and chairs show legs;\n"
+    "  - the robot explores from a random start inside with the frontier explorer (topocut explore)\n"
+    "    while a 360° lidar (range limit and angular step drawn per seed, Gaussian range noise, no\n"
+    "    return beyond the range) maps it from slightly drifting poses: each cell counts the beams\n"
+    "    that ended there and those that passed, never-seen cells stay unknown;\n"
+    "  - people's rooms are kept on the cells the robot saw as free.\n"
+    "The same plan, ground truth, options and seed give the same files, byte for byte.\n\n"
+    "Outputs: the map as an image (0 occupied, 255 free, 205 unknown) or, for a .yaml name, a ROS\n"
+    "map_server map (YAML + PGM); the ground truth as a PNG (255 rooms, 0 elsewhere). The map is\n"
+    "framed around the building with --outside metres to spare (at least 0.5 m), at the plan's\n"
+    "resolution.\n\n"
+    "--dataset DIR converts a Bormann-format folder (every X.png with X_gt_segmentation.png) into\n"
+    "--out DIR (created if missing) as X_sN.png and X_sN_gt_segmentation.png for --seeds seeds N from\n"
+    "--seed on, so that 'topocut evaluate --dataset OUT --variant plain' scores it. A plan that fails\n"
+    "is reported and skipped (exit code 1 at the end); progress goes to stderr.\n\n"
+    "Examples:\n"
+    "  topocut simulate-map ../shared/datasets/r2v/X.png --seed 3 --out-map m.png --out-gt m_gt.png\n"
+    "  topocut simulate-map --dataset ../shared/datasets/r2v --seeds 3 --limit 20 --out /tmp/sim";
+
+struct Arguments {
+  std::string plan, gt, out_map, out_gt, out_world, dataset, out;
+  std::vector<std::string> maps;
+  std::uint32_t seed = 1;
+  int seeds = 1;
+  int limit = 0;
+  SimulatedMapOptions options;
+  MapLoadOptions load;
+};
+
+std::uint32_t parse_seed(const std::string& text) {
+  const bool digits = !text.empty() && text.size() <= 10 &&
+                      std::all_of(text.begin(), text.end(), [](char c) { return std::isdigit(static_cast<unsigned char>(c)) != 0; });
+  if (!digits || std::stoull(text) > 0xffffffffull)
+    throw UsageError("--seed must be a whole number in 0..4294967295, not '" + text + "'");
+  return static_cast<std::uint32_t>(std::stoull(text));
+}
+
+Arguments parse(const std::vector<std::string>& args, bool& help) {
+  Arguments a;
+  std::string seed = "1";
+  po::options_description described("Simulation");
+  described.add_options()
+      ("plan", po::value<std::string>(&a.plan)->value_name("PLAN"), "the plan: a map image or ROS YAML")
+      ("gt", po::value<std::string>(&a.gt)->value_name("FILE"), "its people's rooms, Bormann layout (default: X_gt_segmentation.png beside X.png)")
+      ("seed", po::value<std::string>(&seed)->default_value(seed)->value_name("N"), "the seed, 0..4294967295 (with --dataset: the first of --seeds seeds)")
+      ("out-map", po::value<std::string>(&a.out_map)->value_name("FILE"), "write the robot's map here (.png, .pgm, ...; .yaml: ROS map_server map)")
+      ("out-gt", po::value<std::string>(&a.out_gt)->value_name("FILE"), "write people's rooms in the map's frame here (PNG: 255 rooms, 0 elsewhere)")
+      ("out-world", po::value<std::string>(&a.out_world)->value_name("FILE"),
+       "also write the world the robot was in (PNG, map's frame): floor the robot drives on white (light grey near walls), open ground grey, windows dark grey, walls and furniture black")
+      ("dataset", po::value<std::string>(&a.dataset)->value_name("DIR"), "convert every map of this Bormann-format folder instead of one plan")
+      ("out", po::value<std::string>(&a.out)->value_name("DIR"), "with --dataset: the folder written (X_sN.png, X_sN_gt_segmentation.png)")
+      ("seeds", po::value<int>(&a.seeds)->default_value(a.seeds)->value_name("N"), "with --dataset: maps per plan, seeds --seed .. --seed + N - 1")
+      ("limit", po::value<int>(&a.limit)->default_value(a.limit)->value_name("N"), "with --dataset: only the first N plans (by name; 0: all)")
+      ("map", po::value<std::vector<std::string>>(&a.maps)->value_name("NAME"), "with --dataset: only this plan (repeatable)");
+  add_option_rows(described, simulated_map_option_rows(), SimulatedMapOptions{});
+  add_map_load_options(described, MapLoadOptions{});
+  po::positional_options_description positional;
+  positional.add("plan", 1);
+  const auto vm = parse_options(
+      "topocut simulate-map PLAN [--gt GT] [--seed N] --out-map M --out-gt G [options]\n"
+      "       topocut simulate-map --dataset DIR [--seeds N] [--seed FIRST] [--limit N] [--map NAME ...] --out DIR [options]",
+      kDescription, described, positional, args);
+  help = !vm;
+  if (!vm) return a;
+  a.seed = parse_seed(seed);
+  read_option_rows(*vm, simulated_map_option_rows(), a.options);
+  check_usage([&] { validate(a.options); });
+  a.load = read_map_load_options(*vm, MapLoadOptions{});
+  if (a.dataset.empty()) {
+    if (a.plan.empty()) throw UsageError("give a PLAN (or --dataset DIR)");
+    if (a.out_map.empty() || a.out_gt.empty()) throw UsageError("give both --out-map and --out-gt");
+    if (!a.out.empty() || !a.maps.empty() || !(*vm)["seeds"].defaulted() || !(*vm)["limit"].defaulted())
+      throw UsageError("--out, --seeds, --limit and --map go with --dataset");
+  } else {
+    if (!a.plan.empty() || !a.gt.empty() || !a.out_map.empty() || !a.out_gt.empty() || !a.out_world.empty())
+      throw UsageError("--dataset converts a folder: give no PLAN, --gt, --out-map, --out-gt or --out-world with it");
+    if (a.out.empty()) throw UsageError("--dataset needs --out DIR");
+    if (a.seeds < 1) throw UsageError("--seeds must be at least 1");
+    if (a.limit < 0) throw UsageError("--limit must be 0 (all) or more");
+    if (a.seed + static_cast<std::uint64_t>(a.seeds) - 1 > 0xffffffffull) throw UsageError("--seed + --seeds - 1 must fit in 32 bits");
+  }
+  return a;
+}
+
+// The plan and its people's rooms (room labels of the plan's size).
+OccupancyGrid load_plan(const std::string& plan_path, const std::string& gt_path, const MapLoadOptions& load, cv::Mat& rooms) {
+  OccupancyGrid plan = load_map(plan_path, load);
+  rooms = ground_truth_rooms(load_ground_truth(gt_path, load.limits));
+  if (rooms.size() != plan.cells.size())
+    throw Error("the ground truth " + gt_path + " (" + std::to_string(rooms.cols) + " x " + std::to_string(rooms.rows) +
+                ") differs in size from the plan (" + std::to_string(plan.width()) + " x " + std::to_string(plan.height()) + ")");
+  return plan;
+}
+
+bool is_yaml(const std::string& path) {
+  std::string e = fs::path(path).extension().string();
+  for (char& c : e) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return e == ".yaml" || e == ".yml";
+}
+
+void write_map(const std::string& path, const SimulatedMap& simulated) {
+  if (is_yaml(path)) {
+    save_map(path, simulated.map);
+  } else {
+    write_image_atomically(path, map_image(simulated));
+  }
+}
+
+std::string summary(const SimulatedMap& s) {
+  int rooms = 0;
+  double high = 0.0;
+  cv::minMaxLoc(s.rooms, nullptr, &high);
+  std::vector<char> seen(static_cast<std::size_t>(high) + 1, 0);
+  for (auto it = s.rooms.begin<int>(); it != s.rooms.end<int>(); ++it)
+    if (*it > 0 && !seen[static_cast<std::size_t>(*it)]) seen[static_cast<std::size_t>(*it)] = 1, ++rooms;
+  return format("%d x %d cells, range %.1f m, step %.2f°, walls %+d cell, doors %d (%d closed), windows %d, "
+                "%d scans, %.1f m driven, %d rooms seen",
+                s.map.width(), s.map.height(), s.range, s.angular_step * 180.0 / std::numbers::pi, s.wall_change, s.doors,
+                s.closed_doors, s.windows, s.scans, s.path_length, rooms);
+}
+
+int run_one(const Arguments& a) {
+  std::string gt = a.gt.empty() ? find_ground_truth(a.plan) : a.gt;
+  if (gt.empty()) throw Error("no ground truth beside " + a.plan + " (X_gt_segmentation.png): give --gt");
+  std::vector<std::string> outputs{a.out_map, a.out_gt};
+  if (!a.out_world.empty()) outputs.push_back(a.out_world);
+  if (is_yaml(a.out_map)) outputs.push_back(map_image_path(a.out_map));
+  std::vector<std::string> inputs = map_files(a.plan);
+  inputs.push_back(gt);
+  check_outputs(outputs, inputs);
+  cv::Mat rooms;
+  const OccupancyGrid plan = load_plan(a.plan, gt, a.load, rooms);
+  const SimulatedMap simulated = simulate_map(plan, rooms, a.options, a.seed);
+  write_map(a.out_map, simulated);
+  write_image_atomically(a.out_gt, rooms_image(simulated));
+  if (!a.out_world.empty()) write_image_atomically(a.out_world, world_image(simulated));
+  std::cout << "simulated " << a.plan << " seed " << a.seed << ": " << summary(simulated) << "\n";
+  return 0;
+}
+
+int run_dataset(const Arguments& a) {
+  std::vector<DatasetMap> maps = select_maps(discover_dataset(a.dataset), a.maps);
+  if (a.limit > 0 && static_cast<std::size_t>(a.limit) < maps.size()) maps.resize(static_cast<std::size_t>(a.limit));
+  std::error_code error;
+  fs::create_directories(a.out, error);
+  if (error || !fs::is_directory(a.out)) throw Error("cannot create the output folder " + a.out);
+  auto output = [&](const DatasetMap& m, std::uint32_t seed, const char* suffix) {
+    return (fs::path(a.out) / (m.name + "_s" + std::to_string(seed) + suffix)).string();
+  };
+  std::vector<std::string> outputs, inputs;
+  for (const DatasetMap& m : maps) {
+    inputs.push_back(m.plain);
+    inputs.push_back(m.ground_truth);
+    for (int k = 0; k < a.seeds; ++k) {
+      outputs.push_back(output(m, a.seed + k, ".png"));
+      outputs.push_back(output(m, a.seed + k, "_gt_segmentation.png"));
+    }
+  }
+  check_outputs(outputs, inputs);
+  int failed = 0, written = 0;
+  for (std::size_t i = 0; i < maps.size(); ++i) {
+    const DatasetMap& m = maps[i];
+    progress("simulate-map: " + std::to_string(i + 1) + "/" + std::to_string(maps.size()) + " " + m.name);
+    try {
+      cv::Mat rooms;
+      const OccupancyGrid plan = load_plan(m.plain, m.ground_truth, a.load, rooms);
+      for (int k = 0; k < a.seeds; ++k) {
+        const SimulatedMap simulated = simulate_map(plan, rooms, a.options, a.seed + k);
+        write_image_atomically(output(m, a.seed + k, ".png"), map_image(simulated));
+        write_image_atomically(output(m, a.seed + k, "_gt_segmentation.png"), rooms_image(simulated));
+        ++written;
+      }
+    } catch (const Error& e) {
+      std::cerr << "topocut simulate-map: " << m.name << " FAILED: " << one_line_message(e.what()) << "\n";
+      ++failed;
+    }
+  }
+  std::cout << "simulated " << written << " maps of " << maps.size() - failed << " plans into " << a.out;
+  if (failed > 0) std::cout << "; " << failed << " plans FAILED";
+  std::cout << "\n";
+  return failed > 0 ? 1 : 0;
+}
+
+int run(const std::vector<std::string>& args) {
+  bool help = false;
+  const Arguments a = parse(args, help);
+  if (help) return 0;
+  return a.dataset.empty() ? run_one(a) : run_dataset(a);
+}
+
+const bool registered =
+    register_command({"simulate-map", "turn a plan with people's rooms into the map a robot would build of it", &run});
+
+}  // namespace
+}  // namespace topocut::cli
