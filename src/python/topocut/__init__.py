@@ -30,6 +30,7 @@ from ._topocut import (
     extract_lines,
     iepf,
     load_map,
+    load_options,
     lt,
     merge_feature_names,
     sef,
@@ -38,7 +39,7 @@ from ._topocut import (
 
 __all__ = [
     "IncrementalSegmenter", "Map", "Passage", "Room", "Scores", "Segmentation", "ale", "decompose", "evaluate",
-    "extract_lines", "iepf", "load_map", "lt", "merge_feature_names", "merge_training_rows", "segment", "sef", "smf",
+    "extract_lines", "iepf", "load_map", "load_options", "lt", "merge_feature_names", "merge_training_rows", "segment", "sef", "smf",
 ]
 
 _TYPES = {"bool": bool, "int": int, "float": float, "str": str}
