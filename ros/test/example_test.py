@@ -46,7 +46,7 @@ def main():
         expected += [f"passage {p['rooms'][0]} - {p['rooms'][1]}: {p['kind']}, {p['width']:.2f} m" for p in rooms["passages"]]
         expected += [line for line in cli.stdout.splitlines() if line.startswith("at ")]
         assert expected[-1].startswith("at " + point + ": room "), cli.stdout
-        for mode in ([], ["--service"]):
+        for mode in ([], ["--service"], ["--action"]):
             out = subprocess.run([sys.executable, os.path.join(args.source, "examples", "ros_rooms.py"), floorplan, "--at", point]
                                  + mode, env=env, capture_output=True, text=True, timeout=45)
             printed = out.stdout.strip().splitlines()

@@ -11,13 +11,16 @@ this script publishing maps with rospy and checking what comes back.
 3. Malformed maps (data size not width x height, zero resolution) are logged and skipped; the node
    lives on and answers the next good map.
 4. The typed rooms (rooms/rooms, topocut_msgs/Rooms) say what the rooms JSON says, for every map.
-5. rooms/room_at finds each room at its inside point, and nothing off the map or in a wall.
-6. rooms/segment_map on the bundled map and on every real map of ../shared/datasets/real_maps and
+5. ~room_at (/topocut/room_at) finds each room at its inside point, and nothing off the map or in a wall.
+6. ~segment_map (/topocut/segment_map) on the bundled map and on every real map of ../shared/datasets/real_maps and
    real_maps_gt (skipped with a message when absent): labels equal `topocut segment --out-labels`
    cell for cell and the JSON equals `--out-json` byte for byte; a bad option and a malformed map
    come back as an error; room_at then answers from that map.
 7. `topocut_node --help` prints the parameters and exits 0 while the node runs, which lives on; a bad
-   parameter value stops a second node with the reason and exit 1; an unknown name is warned about.
+   parameter value stops a second node with the reason and exit 1; an unknown name is warned about; a
+   second node under another name serves its own private services and leaves the first node's alone.
+8. rooms/grid (nav_msgs/OccupancyGrid) holds the labels on the map's grid (-1 no room, else the id),
+   and the node logs its topics, services, action and parameters at start and one line per map.
 Prints the node's latency (map received -> rooms published) beside the library's update time.
 Every wait is bounded; the master and the node are stopped whatever happens. Exit 77: skipped.
 """
@@ -219,12 +222,13 @@ def run_checks(args, env, work, node_log, full, grids):
     node_holder.append(node)
     rospy.init_node("topocut_node_test", anonymous=True, disable_signals=True)
     from topocut_msgs.msg import Rooms
-    received = {"labels": [], "markers": [], "graph": [], "timing": [], "rooms": []}
+    received = {"labels": [], "markers": [], "graph": [], "timing": [], "rooms": [], "grid": []}
     rospy.Subscriber("/rooms/labels", Image, lambda m: received["labels"].append(m))
     rospy.Subscriber("/rooms/rooms", Rooms, lambda m: received["rooms"].append(m))
     rospy.Subscriber("/rooms/markers", MarkerArray, lambda m: received["markers"].append(m))
     rospy.Subscriber("/rooms/graph", String, lambda m: received["graph"].append(m))
     rospy.Subscriber("/rooms/timing", String, lambda m: received["timing"].append(m))
+    rospy.Subscriber("/rooms/grid", OccupancyGrid, lambda m: received["grid"].append(m))
     publisher = rospy.Publisher("/map", OccupancyGrid, queue_size=10, latch=True)
     wait_for(lambda: publisher.get_num_connections() > 0, "the node to subscribe to /map")
     # The node's publishers must have connected to our subscribers before we publish.
@@ -238,8 +242,10 @@ def run_checks(args, env, work, node_log, full, grids):
         wait_for(lambda: any(x.header.stamp == stamp for x in received["labels"][counts["labels"]:]) and
                  any(x.header.stamp == stamp for x in received["rooms"][counts["rooms"]:]) and
                  len(received["graph"]) > counts["graph"] and len(received["markers"]) > counts["markers"] and
-                 len(received["timing"]) > counts["timing"], "rooms for map stamp %s" % stamp.secs)
+                 len(received["timing"]) > counts["timing"] and
+                 any(x.header.stamp == stamp for x in received["grid"][counts["grid"]:]), "rooms for map stamp %s" % stamp.secs)
         labels = [x for x in received["labels"][counts["labels"]:] if x.header.stamp == stamp][-1]
+        check_grid([x for x in received["grid"][counts["grid"]:] if x.header.stamp == stamp][-1], m, labels)
         typed = [x for x in received["rooms"][counts["rooms"]:] if x.header.stamp == stamp][-1]
         check_typed(typed, json.loads(received["graph"][-1].data), "map stamp %s" % stamp.secs)
         return labels, received["markers"][-1], received["graph"][-1], json.loads(received["timing"][-1].data)
@@ -280,6 +286,7 @@ def run_checks(args, env, work, node_log, full, grids):
     print("full map %d x %d: %d rooms, node callback %.2f ms, library update %.2f ms" %
           (full["width"], full["height"], len(ids), timing["callback_ms"], timing["update_ms"]))
     check_room_at(json.loads(graph.data), labels.header, full)
+    check_node_log(node_log, full, len(ids))
     check_node_arguments(args, env, work, node)
 
     # 3a. Malformed maps between the two runs: logged, skipped, the node lives on.
@@ -362,8 +369,8 @@ def room_at(x, y):
     import rospy
     from topocut_msgs.srv import RoomAt
     from geometry_msgs.msg import Point
-    rospy.wait_for_service("/rooms/room_at", TIMEOUT)
-    return rospy.ServiceProxy("/rooms/room_at", RoomAt)(Point(x, y, 0.0))
+    rospy.wait_for_service("/topocut/room_at", TIMEOUT)
+    return rospy.ServiceProxy("/topocut/room_at", RoomAt)(Point(x, y, 0.0))
 
 
 def check_room_at(rooms, header, grid):
@@ -398,8 +405,8 @@ def shared_maps(source):
 def segment_map(grid, options=(), stamp=0):
     import rospy
     from topocut_msgs.srv import SegmentMap
-    rospy.wait_for_service("/rooms/segment_map", TIMEOUT)
-    return rospy.ServiceProxy("/rooms/segment_map", SegmentMap)(occupancy_grid_message(grid, stamp), list(options))
+    rospy.wait_for_service("/topocut/segment_map", TIMEOUT)
+    return rospy.ServiceProxy("/topocut/segment_map", SegmentMap)(occupancy_grid_message(grid, stamp), list(options))
 
 
 def segment_map_against_cli(cli, reference, path, work, stamp):
@@ -473,9 +480,42 @@ def check_node_arguments(args, env, work, node):
     node_holder.append(typo)
     wait_for(lambda: log_has(typo_log, b"~concavty is not a parameter of topocut_node, ignored (did you mean ~concavity?)"),
              "the warning about ~concavty")
+    # The services are the node's own: a second node answers under its name and takes nothing over.
+    first_uri = service_uri("/topocut/segment_map")
+    wait_for(lambda: service_uri("/other/topocut_typo/segment_map") is not None, "the second node's ~segment_map")
+    assert service_uri("/topocut/segment_map") == first_uri != service_uri("/other/topocut_typo/segment_map"), \
+        "a second node took over /topocut/segment_map"
     stop(typo)
     assert node.poll() is None and "/topocut" in rosnode_names()
-    print("--help exits 0 and leaves the running node; ~concavity:=-1 is refused (exit 1); ~concavty is warned about")
+    print("--help exits 0 and leaves the running node; ~concavity:=-1 is refused (exit 1); ~concavty is warned about; "
+          "a second node's services are its own (/other/topocut_typo/segment_map)")
+
+
+def service_uri(name):
+    """The address of the node serving name, or None."""
+    import rosgraph
+    try:
+        return rosgraph.Master("/topocut_node_test").lookupService(name)
+    except rosgraph.MasterError:
+        return None
+
+
+def check_grid(grid, sent, labels):
+    """rooms/grid: the map's header and metadata, -1 where the labels say no room, else the id."""
+    assert grid.header.frame_id == sent.header.frame_id and grid.info == sent.info, "rooms/grid's header or metadata"
+    ids = struct.unpack("<%dH" % (len(labels.data) // 2), bytes(labels.data))
+    expected = [-1 if i == 0 else 1 + (i - 1) % 100 for i in ids]
+    assert list(grid.data) == expected, "rooms/grid differs from the labels"
+
+
+def check_node_log(node_log, grid, rooms):
+    """The start-up lines (topics, services, action, parameters) and the line of the map just segmented."""
+    for needle in (b"maps from /map; rooms on /rooms/labels, /rooms/grid, /rooms/rooms",
+                   b"services /topocut/segment_map, /topocut/room_at; action /topocut/map_segmentation",
+                   b"parameters defaults: concavity 2.5, robot_radius 0",
+                   b"topocut_node: map %d x %d at %g m: %d rooms" % (grid["width"], grid["height"], grid["resolution"], rooms)):
+        wait_for(lambda: log_has(node_log, needle), "the node to log %r" % needle)
+    print("the node logs its names and parameters at start and one line per map")
 
 
 def log_has(path, needle):
