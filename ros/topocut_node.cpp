@@ -378,6 +378,9 @@ class RoomsNode {
 }  // namespace
 
 int main(int argc, char** argv) {
+  // rosconsole writes INFO to stdout: one line at a time, so that a log file, roslaunch's pipe or the
+  // journal sees each line when it happens, not when a buffer fills or the node ends.
+  std::setvbuf(stdout, nullptr, _IOLBF, 0);
   // Before ros::init, which would register with the master (and replace a running node of this name).
   std::vector<std::string> args;
   ros::removeROSArgs(argc, argv, args);

@@ -55,7 +55,7 @@ def main():
                       (" ".join(mode), out.stdout, out.stderr, "\n".join(expected)))
                 return 1
         print("\n".join(printed))
-        print("ros_rooms.py printed the command's %d rooms, %d passages and room at %s, on /map and from rooms/segment_map" %
+        print("ros_rooms.py printed the command's %d rooms, %d passages and room at %s, on /map, from ~segment_map and from ~map_segmentation" %
               (len(rooms["rooms"]), len(rooms["passages"]), point))
         return 0
     finally:

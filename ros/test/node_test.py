@@ -475,20 +475,23 @@ def check_node_arguments(args, env, work, node):
     assert bad.returncode == 1 and "~concavity must lie in (0, 100000] metres, got -1" in bad.stdout + bad.stderr, bad
     typo_log = os.path.join(work, "typo.log")
     with open(typo_log, "wb") as log:
-        typo = subprocess.Popen([args.node, "__ns:=/other", "__name:=topocut_typo", "_concavty:=3"], env=env, start_new_session=True,
+        # Beside the first node, in its namespace (no map reaches it): the case where shared service
+        # names would be taken over.
+        typo = subprocess.Popen([args.node, "__name:=topocut_typo", "map:=/topocut_test_no_map", "_concavty:=3"], env=env,
+                                start_new_session=True,
                                 stdout=log, stderr=subprocess.STDOUT)
     node_holder.append(typo)
     wait_for(lambda: log_has(typo_log, b"~concavty is not a parameter of topocut_node, ignored (did you mean ~concavity?)"),
              "the warning about ~concavty")
     # The services are the node's own: a second node answers under its name and takes nothing over.
     first_uri = service_uri("/topocut/segment_map")
-    wait_for(lambda: service_uri("/other/topocut_typo/segment_map") is not None, "the second node's ~segment_map")
-    assert service_uri("/topocut/segment_map") == first_uri != service_uri("/other/topocut_typo/segment_map"), \
+    wait_for(lambda: service_uri("/topocut_typo/segment_map") is not None, "the second node's ~segment_map")
+    assert service_uri("/topocut/segment_map") == first_uri != service_uri("/topocut_typo/segment_map"), \
         "a second node took over /topocut/segment_map"
     stop(typo)
     assert node.poll() is None and "/topocut" in rosnode_names()
     print("--help exits 0 and leaves the running node; ~concavity:=-1 is refused (exit 1); ~concavty is warned about; "
-          "a second node's services are its own (/other/topocut_typo/segment_map)")
+          "a second node's services are its own (/topocut_typo/segment_map)")
 
 
 def service_uri(name):
@@ -502,7 +505,9 @@ def service_uri(name):
 
 def check_grid(grid, sent, labels):
     """rooms/grid: the map's header and metadata, -1 where the labels say no room, else the id."""
-    assert grid.header.frame_id == sent.header.frame_id and grid.info == sent.info, "rooms/grid's header or metadata"
+    assert grid.header.frame_id == sent.header.frame_id and (grid.info.width, grid.info.height) == (sent.info.width, sent.info.height) \
+        and grid.info.origin == sent.info.origin, "rooms/grid's header or metadata"
+    close(grid.info.resolution, sent.info.resolution, "rooms/grid's resolution (float32)", 1e-7)
     ids = struct.unpack("<%dH" % (len(labels.data) // 2), bytes(labels.data))
     expected = [-1 if i == 0 else 1 + (i - 1) % 100 for i in ids]
     assert list(grid.data) == expected, "rooms/grid differs from the labels"

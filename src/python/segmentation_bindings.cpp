@@ -211,6 +211,12 @@ Map load_map_py(const std::string& path, const py::object& resolution, py::kwarg
   map.resolution = grid.resolution;
   map.origin = py::make_tuple(grid.origin.x, grid.origin.y, 0.0);
   map.cells = cells;
+  // An image holds no scale: say so, as the segment command's summary does.
+  if (!is_yaml_path(path) && !kwargs.contains("resolution")) {
+    const std::string note = path + ": an image holds no scale: its cells were taken as " + shortest_number(grid.resolution) +
+                             " m (the default); pass resolution=M, or load the map_server YAML beside it";
+    if (PyErr_WarnEx(PyExc_UserWarning, note.c_str(), 1) != 0) throw py::error_already_set();
+  }
   return map;
 }
 
@@ -385,7 +391,8 @@ void bind_segmentation(py::module_& m) {
         ("Loads a ROS map_server YAML or an image as the topocut command does; returns a Map whose int8 grid\n"
          "(ROS encoding and row order) segment() takes as it is. Keywords: the command's map-loading options\n"
          "with '_' for '-' (" + map_load_option_names() + "), checked as there; giving a threshold means\n"
-         "fixed thresholds. Raises ValueError on a bad file or option.").c_str());
+         "fixed thresholds. An image without resolution= warns (UserWarning) that 0.05 m was assumed.\n"
+         "Raises ValueError on a bad file or option.").c_str());
   py::class_<PyIncremental>(m, "IncrementalSegmenter",
                             "Segments a growing map update by update, reusing the rooms a change did not reach (ids stay).\n"
                             "Keywords: segment()'s options and absorb_area, absorb_fraction, batch_fraction, neighbours_across_doors,\n"

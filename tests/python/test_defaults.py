@@ -2,6 +2,7 @@
 # loads with the names, checks and messages of `topocut segment --config`.
 import pickle
 import subprocess
+import warnings
 
 import numpy as np
 import pytest
@@ -48,7 +49,8 @@ def test_load_options_reads_the_config_file(cli, bundled_map, tmp_path):
     assert r.to_json() == out.read_text()
 
 
-def test_load_options_refuses_as_config_does(cli, bundled_map, tmp_path):
+def test_load_options_refuses_as_config_does(cli, bundled_map, tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)   # short paths: a message keeps only the two ends of a long one
     cases = {
         "concavty: 3\n": "'concavty' in config file '{}' is not a segmentation option (did you mean 'concavity'?)",
         "concavity: -1\n": "'concavity' in config file '{}' must",
@@ -57,19 +59,30 @@ def test_load_options_refuses_as_config_does(cli, bundled_map, tmp_path):
         "concavity: [1, 2]\n": "'concavity' in config file '{}' takes one number, not a list",
     }
     for k, (text, message) in enumerate(cases.items()):
-        path = tmp_path / f"bad{k}.yaml"
-        path.write_text(text)
+        path = f"bad{k}.yaml"
+        (tmp_path / path).write_text(text)
         with pytest.raises(ValueError) as raised:
-            topocut.load_options(str(path))
+            topocut.load_options(path)
         assert message.format(path) in str(raised.value)
         # The command refuses the same file.
-        run = subprocess.run([cli, "segment", bundled_map, "--config", str(path)], capture_output=True, text=True)
+        run = subprocess.run([cli, "segment", bundled_map, "--config", path], capture_output=True, text=True)
         assert run.returncode == 2 and run.stdout == "", run
     with pytest.raises(FileNotFoundError):
         topocut.load_options(str(tmp_path / "missing.yaml"))
     (tmp_path / "output.yaml").write_text("out-json: rooms.json\n")
     with pytest.raises(ValueError, match="is not a segmentation option"):
         topocut.load_options(str(tmp_path / "output.yaml"))
+
+
+def test_an_images_assumed_resolution_is_announced(bundled_map):
+    image = str(SOURCE_DIR / "maps" / "floorplan.png")
+    with pytest.warns(UserWarning, match="an image holds no scale: its cells were taken as 0.05 m"):
+        assert topocut.load_map(image).resolution == 0.05
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        assert topocut.load_map(image, 0.1).resolution == 0.1
+        assert topocut.load_map(image, resolution=0.05).resolution == 0.05
+        assert topocut.load_map(bundled_map).resolution == 0.05   # the YAML gives it
 
 
 def test_map_and_room_fields_are_documented(bundled_map):
