@@ -1,8 +1,9 @@
 #!/usr/bin/python3
 """The README's ROS 1 start on the loopback only: a private rosmaster on a free port of 127.0.0.1,
-topocut_node, and examples/ros_rooms.py feeding it the bundled floor plan, on /map and through the
-service rooms/segment_map, then asking rooms/room_at; the rooms it prints must be the library's (the
-rooms JSON of `topocut segment --out-json`) and the room at the point `topocut segment --at`'s. Every
+topocut_node, and examples/ros_rooms.py feeding it the bundled floor plan, on /map, through the
+service /topocut/segment_map and through the action /topocut/map_segmentation, then asking
+/topocut/room_at; the rooms it prints must be the library's (the rooms JSON of `topocut segment
+--out-json`) and the room at the point `topocut segment --at`'s. Every
 wait is bounded; the master and the node are stopped whatever happens. Exit 77: skipped.
 
     example_test.py --node NODE --rosmaster ROSMASTER --cli TOPOCUT --source SOURCE_DIR --python-path DIR --msgs DIR

@@ -410,7 +410,7 @@ def segment_map(grid, options=(), stamp=0):
 
 
 def segment_map_against_cli(cli, reference, path, work, stamp):
-    """path sent to rooms/segment_map and segmented by `topocut segment`: the answer, the number of cells
+    """path sent to ~segment_map (/topocut/segment_map) and segmented by `topocut segment`: the answer, the number of cells
     whose labels differ, whether the JSON is the same byte for byte, the call's round trip and the
     command's segmenting time (ms)."""
     import numpy
