@@ -71,26 +71,35 @@ def served_rooms(grid, node, options, timeout):
 
 
 def action_rooms(grid, node, options, timeout):
-    """Sends grid as a goal to the node's action map_segmentation; prints its feedback on stderr."""
+    """Sends grid as a goal to the node's action map_segmentation; prints its feedback on stderr.
+    actionlib's ActionClient, not SimpleActionClient: rospy's SimpleActionClient records its goal only
+    after sending it, so the first feedback of a server that answers within milliseconds (as this one
+    does on small maps) can arrive before it and be dropped; ActionClient registers the callbacks first."""
     import sys
 
     import actionlib
+    from actionlib_msgs.msg import GoalStatus
 
     name = f"/{node}/map_segmentation"
-    client = actionlib.SimpleActionClient(name, MapSegmentationAction)
+    client = actionlib.ActionClient(name, MapSegmentationAction)
     if not client.wait_for_server(rospy.Duration(timeout)):
         raise SystemExit(f"no action server {name} within {timeout} s: is topocut_node running?")
+    done = threading.Event()
 
-    def on_feedback(feedback):
+    def on_transition(handle):
+        if handle.get_comm_state() == actionlib.CommState.DONE:
+            done.set()
+
+    def on_feedback(handle, feedback):
         print(f"{name}: {feedback.stage} ({feedback.progress:.0%})", file=sys.stderr)
 
-    client.send_goal(MapSegmentationGoal(map=grid, options=options), feedback_cb=on_feedback)
-    if not client.wait_for_result(rospy.Duration(timeout)):
-        client.cancel_goal()
+    handle = client.send_goal(MapSegmentationGoal(map=grid, options=options), on_transition, on_feedback)
+    if not done.wait(timeout):
+        handle.cancel()
         raise SystemExit(f"{name}: no result within {timeout} s")
-    result = client.get_result()
-    if result is None or result.error:
-        raise SystemExit(f"{name}: " + (result.error if result else client.get_goal_status_text()))
+    result = handle.get_result()
+    if handle.get_goal_status() != GoalStatus.SUCCEEDED or result is None or result.error:
+        raise SystemExit(f"{name}: " + (result.error if result and result.error else handle.get_goal_status_text()))
     return result.rooms
 
 

@@ -19,7 +19,9 @@ this script publishing maps with rospy and checking what comes back.
 7. `topocut_node --help` prints the parameters and exits 0 while the node runs, which lives on; a bad
    parameter value stops a second node with the reason and exit 1; an unknown name is warned about; a
    second node under another name serves its own private services and leaves the first node's alone.
-8. rooms/grid (nav_msgs/OccupancyGrid) holds the labels on the map's grid (-1 no room, else the id),
+8. The action ~map_segmentation answers a goal with ~segment_map's rooms, labels and JSON, and the
+   labels as a grid; its feedback names the stages in order; a bad option aborts the goal.
+9. rooms/grid (nav_msgs/OccupancyGrid) holds the labels on the map's grid (-1 no room, else the id),
    and the node logs its topics, services, action and parameters at start and one line per map.
 Prints the node's latency (map received -> rooms published) beside the library's update time.
 Every wait is bounded; the master and the node are stopped whatever happens. Exit 77: skipped.
@@ -35,6 +37,7 @@ import struct
 import subprocess
 import sys
 import tempfile
+import threading
 import time
 
 TIMEOUT = 20.0  # seconds for any one answer
@@ -321,7 +324,7 @@ def run_checks(args, env, work, node_log, full, grids):
             churns.append(churn(previous, current))
         previous = current
     assert node.poll() is None
-    check_segment_map(args, work)
+    check_action(*check_segment_map(args, work))
     assert node.poll() is None
     # Ids are carried across updates: the node's labels are the library's byte for byte (check_rooms),
     # whose updates of this sequence are batch runs (each growth changes the frame) with ids kept by
@@ -437,8 +440,9 @@ def segment_map_against_cli(cli, reference, path, work, stamp):
 
 
 def check_segment_map(args, work):
-    """The service's rooms are `topocut segment`'s: labels cell for cell, JSON byte for byte."""
-    counts = []
+    """The service's rooms are `topocut segment`'s: labels cell for cell, JSON byte for byte. Returns the
+    first map's grid and answer."""
+    counts, first_answer = [], None
     for k, path in enumerate(shared_maps(args.source)):
         name = os.path.basename(path)
         result = segment_map_against_cli(args.cli, args.reference, path, work, 500 + k)
@@ -452,6 +456,7 @@ def check_segment_map(args, work):
         at = room_at(*first["inside"])
         assert at.id == first["id"] and at.header.stamp.secs == 1500 + k, name + ": room_at after segment_map"
         counts.append("%s %d" % (name, len(rooms["rooms"])))
+        first_answer = first_answer or (grid, answer)
     print("segment_map = topocut segment (labels, JSON) on %d maps; rooms: %s" % (len(counts), ", ".join(counts)))
     answer = segment_map(grid, ["concavty=3"])
     assert "did you mean ~concavity?" in answer.error and not answer.rooms.rooms, answer.error
@@ -461,6 +466,50 @@ def check_segment_map(args, work):
     answer = segment_map(bad)
     assert "values for" in answer.error, answer.error
     print("segment_map refuses: %s" % answer.error)
+    return first_answer
+
+
+def check_action(grid, expected):
+    """~map_segmentation (/topocut/map_segmentation): a goal's result is ~segment_map's answer for the
+    same map (labels, JSON, and the labels as a grid); its feedback, read on the action's feedback topic
+    (a client may drop feedback that comes after the result, which travels on another topic), names the
+    three stages in order with growing progress; a bad option aborts the goal with the reason."""
+    import actionlib
+    import rospy
+    from actionlib_msgs.msg import GoalStatus
+    from topocut_msgs.msg import MapSegmentationAction, MapSegmentationActionFeedback, MapSegmentationGoal
+    feedback = []
+    subscriber = rospy.Subscriber("/topocut/map_segmentation/feedback", MapSegmentationActionFeedback, feedback.append)
+    client = actionlib.ActionClient("/topocut/map_segmentation", MapSegmentationAction)
+    assert client.wait_for_server(rospy.Duration(TIMEOUT)), "no action server /topocut/map_segmentation"
+    wait_for(lambda: subscriber.get_num_connections() > 0, "the action's feedback topic")
+    sent = occupancy_grid_message(grid, 700)
+
+    def run(options):
+        done = threading.Event()
+        handle = client.send_goal(MapSegmentationGoal(map=sent, options=options),
+                                  lambda h: h.get_comm_state() == actionlib.CommState.DONE and done.set())
+        assert done.wait(TIMEOUT), "no result for the goal %s" % options
+        return handle
+
+    handle = run([])
+    result = handle.get_result()
+    assert handle.get_goal_status() == GoalStatus.SUCCEEDED and result.error == "", handle.get_goal_status_text()
+    assert result.json == expected.json, "the action's JSON differs from segment_map's"
+    assert bytes(result.labels.data) == bytes(expected.labels.data), "the action's labels differ from segment_map's"
+    check_grid(result.grid, sent, result.labels)
+    goal_id = handle.comm_state_machine.action_goal.goal_id.id
+    mine = lambda: [f.feedback for f in feedback if f.status.goal_id.id == goal_id]  # noqa: E731
+    wait_for(lambda: len(mine()) == 3, "the goal's three feedback messages")
+    stages = [(f.stage, f.progress) for f in mine()]
+    assert [stage for stage, _ in stages] == ["accepted", "segmenting", "writing the result"], stages
+    assert [p for _, p in stages] == sorted(p for _, p in stages) and 0 <= stages[0][1] and stages[-1][1] < 1, stages
+    bad = run(["concavty=3"])
+    assert bad.get_goal_status() == GoalStatus.ABORTED and "did you mean ~concavity?" in bad.get_result().error, \
+        bad.get_result()
+    subscriber.unregister()
+    print("map_segmentation: the result is segment_map's (%d rooms), feedback %s; a bad option aborts: %s" %
+          (len(result.rooms.rooms), ", ".join("%s %.2f" % sp for sp in stages), bad.get_result().error))
 
 
 def check_node_arguments(args, env, work, node):
