@@ -70,6 +70,10 @@ class RoomsAdapter {
   RoomsAdapter(const std::vector<Parameter>& parameters, std::vector<std::string>& unknown);
   ~RoomsAdapter();
 
+  // One line for the start-up log: the parameters given with the values they set, then concavity and
+  // robot_radius when they were not given ("given: ...; defaults: ...").
+  std::string settings_summary() const;
+
   // Segments the next map incrementally. Throws std::runtime_error with one clear sentence on a
   // malformed map (size, resolution, values: the state is unchanged then) or a room id above 65535.
   RoomsOutput update(const MapInput& map);
