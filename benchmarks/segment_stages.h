@@ -56,7 +56,7 @@ inline Segmentation time_stages(const std::string& path, const MapLoadOptions& l
   const double e = cpu_ms();
   PieceSet pieces;
   for (std::size_t i = 0; i < raw.size(); ++i)
-    pieces.append(merge_rooms(polygons.components[i], raw[i], grid.resolution, options.merge));
+    pieces.append(merge_rooms(polygons.components[i], raw[i], input.labelled.cells, grid.resolution, options.merge));
   const double f = cpu_ms();
   Segmentation s = rooms_from_pieces(input.labelled, pieces, options.labels);
   if (part.cells.size() != grid.cells.size()) {

@@ -148,8 +148,8 @@ PieceSet decompose_pieces(const FreeSpaceComponent& component, double resolution
   }
 }
 
-PieceSet decompose_component(const FreeSpaceComponent& component, double resolution, const SegmentOptions& options) {
-  return merge_rooms(component, decompose_pieces(component, resolution, options), resolution, options.merge);
+PieceSet decompose_component(const FreeSpaceComponent& component, const OccupancyGrid& grid, const SegmentOptions& options) {
+  return merge_rooms(component, decompose_pieces(component, grid.resolution, options), grid.cells, grid.resolution, options.merge);
 }
 
 SegmentOptions parity_segment_options(double concavity) {
@@ -182,7 +182,7 @@ Segmentation segment_whole(const OccupancyGrid& grid, const SegmentOptions& opti
   const FreeSpacePolygons polygons = free_space_polygons(input.floor, grid.resolution, options.contours);
   PieceSet pieces;
   for (const FreeSpaceComponent& component : polygons.components)
-    pieces.append(decompose_component(component, grid.resolution, options));
+    pieces.append(decompose_component(component, input.labelled, options));
   pieces = join_open_rooms(pieces, input.labelled, options.open_rooms);
   Segmentation segmentation = rooms_from_pieces(input.labelled, pieces, options.labels);
   for (Passage& passage : segmentation.passages) passage.door = is_door(passage, options.doors);
