@@ -49,6 +49,7 @@ ROOT = os.path.dirname(HERE)
 MODEL_FILE = os.path.join(ROOT, "src", "segmentation", "merge_model.txt")
 ROUNDS = 3
 SEED = 0
+RESOLUTION = 0.05  # metres a cell: the Bormann-layout images hold no scale (merge_training_rows's default too)
 TREES = dict(n_estimators=300, max_depth=4, learning_rate=0.05, max_bin=256)
 FOLDS = 5  # --generalisation's default: every map scored by a model fitted without its building, plan or sketch
 SKIPPED = 77  # ctest's skip code: --check without the shared data sets
@@ -197,7 +198,7 @@ def train(topocut, sets, workers, progress=print):
 def _f1_of_map(job):
     import topocut
     image, truth, model = job
-    m = topocut.load_map(image)
+    m = topocut.load_map(image, resolution=RESOLUTION)
     result = topocut.segment(m.grid, m.resolution, m.origin, merge_model=model)
     return topocut.evaluate(result, truth, free=image, clip_to_free=False).f1
 
