@@ -223,14 +223,14 @@ def without_kind(sets, kind):
     return {s: m for s, m in sets.items() if kind_of(s) != kind and PLAN_KIND.get(s) != kind}
 
 
-def generalisation(topocut, sets, workers, folds):
+def generalisation(topocut, sets, workers, folds, with_kinds=True):
     """Matched-room F1 per set: fitted on every kind; fitted without the set's kind (and the robot-made
-    maps of its plans); and on maps whose building, plan or sketch was not fitted on (folds folds, none
-    when 0)."""
+    maps of its plans; skipped unless with_kinds); and on maps whose building, plan or sketch was not
+    fitted on (folds folds, none when 0)."""
     quiet = lambda s: print("train_merge_model: " + s, file=sys.stderr)
     full = scores(sets, train(topocut, sets, workers, quiet), workers)
     others = {}
-    for kind in KINDS:
+    for kind in KINDS if with_kinds else []:
         model = train(topocut, without_kind(sets, kind), workers, quiet)
         others.update(scores({s: sets[s] for s in KINDS[kind]}, model, workers))
     fold = lambda image: zlib.crc32(plan_key(image).encode()) % folds
@@ -241,11 +241,13 @@ def generalisation(topocut, sets, workers, folds):
         held = {name: maps for name, maps in held.items() if maps}
         for name, f1 in scores(held, train(topocut, trained, workers, quiet), workers).items():
             unseen[name].append((f1, len(held[name])))
-    print(f"| set | kind | fitted on every kind | fitted without its kind |" +
+    print("| set | kind | fitted on every kind |" + (" fitted without its kind |" if with_kinds else "") +
           (f" on maps not fitted on ({folds} folds) |" if folds else ""))
-    print("|---|---|---|---|" + ("---|" if folds else ""))
+    print("|---|---|---|" + ("---|" if with_kinds else "") + ("---|" if folds else ""))
     for name in sets:
-        row = f"| {name} | {kind_of(name)} | {full[name]:.1f} | {others[name]:.1f} ({others[name] - full[name]:+.1f}) |"
+        row = f"| {name} | {kind_of(name)} | {full[name]:.1f} |"
+        if with_kinds:
+            row += f" {others[name]:.1f} ({others[name] - full[name]:+.1f}) |"
         if folds:
             fold_f1 = sum(f * n for f, n in unseen[name]) / sum(n for _, n in unseen[name])
             row += f" {fold_f1:.1f} ({fold_f1 - full[name]:+.1f}) |"
@@ -265,7 +267,12 @@ def main():
     parser.add_argument("--generalisation", action="store_true", help="print the leave-one-kind-out and fold table")
     parser.add_argument("--folds", type=int, default=FOLDS,
                         help=f"--generalisation: folds by building, plan or sketch (default {FOLDS}; 0: leave-one-kind-out only)")
+    parser.add_argument("--no-kinds", action="store_true", help="--generalisation: the folds only, no leave-one-kind-out")
     args = parser.parse_args()
+    if args.folds < 0 or args.folds == 1:
+        parser.error("--folds must be 0 or at least 2")
+    if args.no_kinds and args.folds == 0:
+        parser.error("--no-kinds with --folds 0 leaves nothing to measure")
     if not os.path.isdir(os.path.join(args.shared, "datasets")):
         print(f"train_merge_model: skipped: no {os.path.join(args.shared, 'datasets')} to train on", file=sys.stderr)
         return SKIPPED if args.check else 1
@@ -275,9 +282,7 @@ def main():
     sets = datasets(args.shared, os.path.join(args.build, "topocut"), args.robot_maps or os.path.join(args.build, "robot_maps"),
                     progress)
     if args.generalisation:
-        if args.folds < 0 or args.folds == 1:
-            parser.error("--folds must be 0 or at least 2")
-        generalisation(topocut, sets, args.workers, args.folds)
+        generalisation(topocut, sets, args.workers, args.folds, not args.no_kinds)
         return 0
     text = train(topocut, sets, args.workers, progress)
     if args.check:
