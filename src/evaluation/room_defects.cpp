@@ -94,7 +94,8 @@ RoomDefects count_room_defects(const cv::Mat& labels, const OccupancyGrid& grid,
     ids.copyTo(on_floor, floor);
   }
   const int band = static_cast<int>(std::lround(options.open.wall_band / resolution));
-  for (const auto& [id, room] : room_extents(ids)) {
+  const LabelRuns outlines = defects.open_judged ? label_runs(on_floor) : LabelRuns();
+  for (const auto& [id, room] : room_extents(label_runs(ids))) {
     ++defects.rooms;
     const double area = static_cast<double>(room.cells) * cell_area;
     const bool speck = area >= options.speck_min_area && area < options.speck_max_area;
@@ -102,7 +103,7 @@ RoomDefects count_room_defects(const cv::Mat& labels, const OccupancyGrid& grid,
                                                            options.thin_share * static_cast<double>(room.cells);
     bool open = false;
     if (defects.open_judged && area >= options.open.min_area) {
-      open = room_outline(on_floor, id, room.box, grid.cells, walls, band).open(options.open.share, options.open.ragged_share);
+      open = room_outline(outlines, id, room.box, grid.cells, walls, band).open(options.open.share, options.open.ragged_share);
     }
     defects.specks += speck;
     defects.thin += thin;
