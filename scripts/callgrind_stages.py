@@ -11,7 +11,8 @@ TOPOCUT / BASE_TOPOCUT. Stages: load (load_map), front end (segmentation_input, 
 simplified_where_valid), cuts and decomposition (decompose_pieces less the simplification), of which
 DuDe (decompose), merging (merge_rooms), open rooms (join_open_rooms), labelling (rooms_from_pieces),
 segment (the whole of segment()), outputs (in_frame: the JSON's points inside rooms), process (all).
-Needs valgrind; callgrind runs about 50 times slower than the program.
+Runs with one OpenCV thread (OPENCV_FOR_THREADS_NUM=1), so that the work of OpenCV's pool is counted
+in the stage that asked for it. Needs valgrind; callgrind runs about 50 times slower than the program.
 """
 import argparse
 import concurrent.futures
@@ -58,8 +59,10 @@ def inclusive_counts(profile):
 
 def profile(binary, path, folder):
     out = os.path.join(folder, "callgrind.out")
+    # One OpenCV thread: work its pool would share out lands in the function that asked for it.
     subprocess.run(["valgrind", "--tool=callgrind", f"--callgrind-out-file={out}", binary, "segment", path,
-                    "--out-json", os.path.join(folder, "rooms.json")], check=True, capture_output=True)
+                    "--out-json", os.path.join(folder, "rooms.json")], check=True, capture_output=True,
+                   env=dict(os.environ, OPENCV_FOR_THREADS_NUM="1"))
     counts = inclusive_counts(out)
     row = []
     for _, parts in STAGES:

@@ -4,6 +4,8 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
+#include <cstdint>
+#include <cstring>
 #include <filesystem>
 #include <limits>
 #include <sstream>
@@ -265,9 +267,28 @@ MapPalette plain_image_palette(const cv::Mat& levels, const cv::Mat& transparent
 
 cv::Mat plain_image_cells(const cv::Mat& levels, const cv::Mat& transparent, const MapPalette& palette) {
   CV_Assert(levels.type() == CV_8UC1 && transparent.type() == CV_8UC1 && levels.size() == transparent.size());
-  cv::Mat cells;
-  cv::LUT(levels, cv::Mat(1, 256, CV_8UC1, const_cast<unsigned char*>(palette.state.data())), cells);
-  cells.setTo(kUnknown, transparent);
+  cv::Mat cells(levels.size(), CV_8UC1);
+  const unsigned char* state = palette.state.data();
+  for (int r = 0; r < levels.rows; ++r) {
+    const unsigned char* level = levels.ptr<unsigned char>(r);
+    const unsigned char* clear = transparent.ptr<unsigned char>(r);
+    unsigned char* out = cells.ptr<unsigned char>(r);
+    const int n = levels.cols;
+    int c = 0;
+    // Most of a map is long runs of one level: 16 opaque cells of one level are written at once.
+    for (; c + 16 <= n; c += 16) {
+      std::uint64_t words[4];  // the levels and transparency flags of the 16 cells
+      std::memcpy(words, level + c, 16);
+      std::memcpy(words + 2, clear + c, 16);
+      const std::uint64_t all = 0x0101010101010101ULL * level[c];
+      if (((words[0] ^ all) | (words[1] ^ all) | words[2] | words[3]) == 0) {
+        std::memset(out + c, state[level[c]], 16);
+        continue;
+      }
+      for (int k = c; k < c + 16; ++k) out[k] = clear[k] ? kUnknown : state[level[k]];
+    }
+    for (; c < n; ++c) out[c] = clear[c] ? kUnknown : state[level[c]];
+  }
   return cells;
 }
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <numeric>
 
 #include "topocut/core/error.h"
@@ -24,7 +25,7 @@ namespace {
 bool has_occupied_cell(const cv::Mat& cells) {
   for (int r = 0; r < cells.rows; ++r) {
     const unsigned char* row = cells.ptr<unsigned char>(r);
-    if (std::find(row, row + cells.cols, kOccupied) != row + cells.cols) return true;
+    if (std::memchr(row, kOccupied, static_cast<std::size_t>(cells.cols)) != nullptr) return true;
   }
   return false;
 }

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <optional>
 #include <string>
 
@@ -43,7 +44,7 @@ namespace {
 bool has_free_cell(const cv::Mat& cells) {
   for (int r = 0; r < cells.rows; ++r) {
     const unsigned char* row = cells.ptr<unsigned char>(r);
-    if (std::find(row, row + cells.cols, kFree) != row + cells.cols) return true;
+    if (std::memchr(row, kFree, static_cast<std::size_t>(cells.cols)) != nullptr) return true;
   }
   return false;
 }
