@@ -65,10 +65,6 @@ int LabelRuns::at(int y, int x) const {
   return run != runs.end() && run->begin <= x ? run->label : 0;
 }
 
-int LabelRuns::row_of(std::size_t index) const {
-  return static_cast<int>(std::upper_bound(row_end_.begin(), row_end_.end(), index) - row_end_.begin());
-}
-
 std::span<const std::size_t> LabelRuns::runs_of(int label) const {
   const auto found = std::lower_bound(labels_.begin(), labels_.end(), label);
   if (found == labels_.end() || *found != label) return {};

@@ -110,6 +110,13 @@ RoomOutline room_outline(const LabelRuns& labels, int id, const cv::Rect& box, c
   const cv::Rect window = cv::Rect(box.x - 1, box.y - 1, box.width + 2, box.height + 2);
   const RoomWindow filled(labels, id, window);
   RoomOutline outline;
+  // Edges to other rooms come in long stretches along one neighbour: counted here, then in the map.
+  int neighbour = 0;
+  long long neighbour_edges = 0;
+  const auto flush = [&] {
+    if (neighbour_edges > 0) outline.neighbours[neighbour] += neighbour_edges;
+    neighbour_edges = 0;
+  };
   const cv::Size size = labels.size();
   const auto inside_grid = [&](int r, int c) { return r >= 0 && c >= 0 && r < size.height && c < size.width; };
   // Straight on behind the unknown cell (r, c), within band cells, the first cell that is not unknown is
@@ -143,7 +150,11 @@ RoomOutline room_outline(const LabelRuns& labels, int id, const cv::Rect& box, c
     }
     const int other = labels.at(r, c);
     if (other > 0) {
-      ++outline.neighbours[other];
+      if (other != neighbour) {
+        flush();
+        neighbour = other;
+      }
+      ++neighbour_edges;
     } else if (cells.at<unsigned char>(r, c) != kFree) {
       const bool wall = walls.at<unsigned char>(r, c) || (cells.at<unsigned char>(r, c) == kUnknown && drawn_wall(r, c, dr, dc));
       ++(wall ? outline.wall : outline.unknown);
@@ -174,6 +185,7 @@ RoomOutline room_outline(const LabelRuns& labels, int id, const cv::Rect& box, c
       if (filled.outside(wr, run.end)) edge(wr, run.end, 0, 1);
     }
   }
+  flush();
   return outline;
 }
 

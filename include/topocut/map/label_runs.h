@@ -34,7 +34,7 @@ class LabelRuns {
   // The label of cell (x, y) of the image, 0 without one.
   int at(int y, int x) const;
   // The row of run index of all().
-  int row_of(std::size_t index) const;
+  int row_of(std::size_t index) const { return row_of_[index]; }
   // The labels that have runs, ascending, and the indices into all() of a label's runs, row after row
   // (none for a label without cells).
   std::span<const int> labels() const { return labels_; }
@@ -42,7 +42,10 @@ class LabelRuns {
 
   // Building row after row: the runs of the row begun last (maximal, in column order), then end_row();
   // index() once every row is in.
-  void push(const LabelRun& run) { runs_.push_back(run); }
+  void push(const LabelRun& run) {
+    runs_.push_back(run);
+    row_of_.push_back(static_cast<int>(row_end_.size()));
+  }
   void end_row() { row_end_.push_back(runs_.size()); }
   void index();
 
@@ -50,6 +53,7 @@ class LabelRuns {
   cv::Size size_;
   std::vector<LabelRun> runs_;
   std::vector<std::size_t> row_end_;             // per row: one past its last run
+  std::vector<int> row_of_;                      // per run: its row
   std::vector<int> labels_;                      // the labels with runs, ascending
   std::vector<std::size_t> label_begin_, order_;  // order_[label_begin_[k]..label_begin_[k + 1]): label k's runs
 };
