@@ -79,7 +79,8 @@ namespace {
 // across, on another ring, both joinable: such a cut separates nothing alone, only with the cuts
 // on the island's other sides).
 std::optional<Candidate> nearest_across_corner(const DoorSearch& search, const EdgeGrid& grid, int r, int i,
-                                               const Point2& p, const Point2& v, const Point2& q, bool across) {
+                                               const Point2& p, const Point2& v, const Point2& q, bool across,
+                                               std::vector<unsigned>& seen, unsigned stamp) {
   // Directions that resolve the corner: between the continuations of its two edges.
   const Point2 e1 = minus(v, p), e2 = minus(v, q);
   const double l1 = length(e1), l2 = length(e2);
@@ -89,18 +90,36 @@ std::optional<Candidate> nearest_across_corner(const DoorSearch& search, const E
     const double tolerance = 1e-9 * (std::abs(d.x) + std::abs(d.y));
     return cross(u1, d) >= -tolerance && cross(d, u2) >= -tolerance;
   };
+  // Whether no point of the box [x0, x1] x [y0, y1] passes in_cone(): all four corners beyond one side
+  // of the cone by more than the tolerance any point of the box is given (it is linear over the box).
+  auto box_outside_cone = [&](double x0, double y0, double x1, double y1) {
+    double side1 = -kInfinity, side2 = -kInfinity, reach = 0.0;
+    for (const Point2& c : {Point2{x0, y0}, Point2{x1, y0}, Point2{x0, y1}, Point2{x1, y1}}) {
+      const Point2 d = minus(c, v);
+      side1 = std::max(side1, cross(u1, d));
+      side2 = std::max(side2, cross(d, u2));
+      reach = std::max(reach, std::abs(d.x) + std::abs(d.y));
+    }
+    const double margin = 2e-9 * reach + 1e-12;
+    return side1 < -margin || side2 < -margin;
+  };
   const int n = static_cast<int>(search.rings[static_cast<std::size_t>(r)]->size());
   const int before = (i + n - 1) % n;
   double best2 = search.reach * search.reach;  // squared distance of the nearest point so far
   Point2 best_point;
   int best_ring = -1;
   grid.visit_nearest(v, search.reach, [&](int id) {
+    // An edge in several cells is met again: its points cannot beat the best so far a second time.
+    if (seen[static_cast<std::size_t>(id)] == stamp) return;
+    seen[static_cast<std::size_t>(id)] = stamp;
     const Edge& e = search.edges[static_cast<std::size_t>(id)];
     if (e.ring == r && (e.index == i || e.index == before)) return;
-    // No point of the edge can beat the best so far if its bounding box is farther.
+    // No point of the edge can beat the best so far if its bounding box is farther, or lie in the
+    // cone if its box lies outside.
     const double gx = std::max({std::min(e.a.x, e.b.x) - v.x, 0.0, v.x - std::max(e.a.x, e.b.x)});
     const double gy = std::max({std::min(e.a.y, e.b.y) - v.y, 0.0, v.y - std::max(e.a.y, e.b.y)});
     if (gx * gx + gy * gy >= best2) return;
+    if (box_outside_cone(std::min(e.a.x, e.b.x), std::min(e.a.y, e.b.y), std::max(e.a.x, e.b.x), std::max(e.a.y, e.b.y))) return;
     auto consider = [&](const Point2& x) {
       const Point2 d = minus(x, v);
       const double d2 = dot(d, d);
@@ -138,13 +157,15 @@ std::optional<Candidate> nearest_across_corner(const DoorSearch& search, const E
 // to another joinable one.
 std::vector<Candidate> corner_cuts(const DoorSearch& search, const EdgeGrid& grid, bool across) {
   std::vector<Candidate> candidates;
+  std::vector<unsigned> seen(search.edges.size(), 0);  // per edge: the last corner that looked at it
+  unsigned stamp = 0;
   for_each_reflex_corner(
       search,
       [&](std::size_t r, const Ring& hole) {
         return too_small_for_a_room(hole, search.resolution) || (across && !search.joinable[r]);
       },
       [&](int r, int i, const Point2& p, const Point2& v, const Point2& q) {
-        if (auto c = nearest_across_corner(search, grid, r, i, p, v, q, across)) candidates.push_back(*c);
+        if (auto c = nearest_across_corner(search, grid, r, i, p, v, q, across, seen, ++stamp)) candidates.push_back(*c);
       });
   return candidates;
 }
