@@ -1,8 +1,6 @@
 #include "segmentation/cut_search.h"
 
-#include <cstdint>
 #include <map>
-#include <unordered_map>
 
 namespace topocut::cut_search {
 
@@ -180,61 +178,6 @@ bool has_wide_sides(const DoorSearch& search, const EdgeGrid& grid, const Candid
          side_width(grid, mid, u, {u.y, -u.x}, search.depth, cap) >= cap;
 }
 
-namespace {
-
-// The accepted cuts in a uniform grid, each in the cells its box grown by the duplicate distance
-// covers: a candidate that conflicts with a cut, or lies within that distance of it at both ends (or
-// has it within that distance at both of its ends), has its own box in one of those cells.
-class AcceptedCuts {
- public:
-  explicit AcceptedCuts(double duplicate) : duplicate_(duplicate), cell_(std::max(8.0, 4.0 * duplicate)) {}
-
-  // Calls f(index) for every accepted cut registered in a cell that s's box covers, once each, until
-  // f returns true; whether it did.
-  template <typename F>
-  bool any_near(const Segment2& s, F&& f) {
-    ++stamp_;
-    bool found = false;
-    for_cells(s, 0.0, [&](std::int64_t key) {
-      const auto cell = cells_.find(key);
-      if (found || cell == cells_.end()) return;
-      for (const int i : cell->second) {
-        if (seen_[static_cast<std::size_t>(i)] == stamp_) continue;
-        seen_[static_cast<std::size_t>(i)] = stamp_;
-        if (f(i)) {
-          found = true;
-          return;
-        }
-      }
-    });
-    return found;
-  }
-
-  void add(const Segment2& s) {
-    const int index = static_cast<int>(seen_.size());
-    seen_.push_back(0);
-    // A margin beyond the duplicate distance keeps rounding at a cell's edge on the safe side.
-    for_cells(s, duplicate_ * 1.001 + 1e-9, [&](std::int64_t key) { cells_[key].push_back(index); });
-  }
-
- private:
-  template <typename F>
-  void for_cells(const Segment2& s, double margin, F&& f) const {
-    const long long x0 = cell_of(std::min(s.a.x, s.b.x) - margin), x1 = cell_of(std::max(s.a.x, s.b.x) + margin);
-    const long long y0 = cell_of(std::min(s.a.y, s.b.y) - margin), y1 = cell_of(std::max(s.a.y, s.b.y) + margin);
-    for (long long y = y0; y <= y1; ++y)
-      for (long long x = x0; x <= x1; ++x) f(static_cast<std::int64_t>((x << 32) ^ (y & 0xffffffffLL)));
-  }
-  long long cell_of(double v) const { return static_cast<long long>(std::floor(v / cell_)); }
-
-  double duplicate_, cell_;
-  std::unordered_map<std::int64_t, std::vector<int>> cells_;
-  std::vector<unsigned> seen_;  // per accepted cut: the last query that saw it
-  unsigned stamp_ = 0;
-};
-
-}  // namespace
-
 // Narrowest first; a door found from both of its jambs (or from two corners of one wall end) is
 // kept once; crossing cuts are not allowed. Each candidate is tested against the accepted cuts near
 // it only (a grid of their boxes), not against all of them.
@@ -245,7 +188,7 @@ std::vector<Candidate> narrowest_compatible(std::vector<Candidate> doors, double
   });
   const double duplicate = 0.3 / resolution;
   std::vector<Candidate> accepted;
-  AcceptedCuts near(duplicate);
+  CutGrid near(duplicate);
   for (const Candidate& c : doors) {
     const bool conflict = near.any_near(c.segment, [&](int i) {
       const Segment2& s = accepted[static_cast<std::size_t>(i)].segment;
