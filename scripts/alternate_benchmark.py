@@ -7,9 +7,11 @@
 
 On a shared machine the load changes from minute to minute: the base and the new binary run one
 after the other, N rounds (default 3), with the same arguments. Every Markdown table they print is
-read; each numeric cell becomes the median of its rounds. Printed: the machine line of every run
+read; each numeric cell (or each number of a cell like "110.8 / 93.1 / 411.1") becomes the median of
+its rounds. Printed: the machine line of every run
 (with its load average), the base's tables, the new binary's tables, and for every numeric cell
-the ratio new / base. Both binaries must print tables of the same shape.
+the ratio new / base, with the median of each column's ratios under every table of several rows.
+Both binaries must print tables of the same shape.
 
 --commits builds the benchmark NAME of two commits first: each commit's tree (git archive, so
 nothing is registered in the repository) in DIR/SHA (default build/commits of this checkout, next
@@ -45,41 +47,63 @@ def tables_of(text):
     return tables
 
 
-def number(cell):
+def numbers(cell):
+    """The numbers of a cell: one ("12.5") or several separated by " / " ("110.8 / 93.1 / 411.1"); None if
+    any part is no number."""
     try:
-        return float(cell)
+        return [float(part) for part in cell.split(" / ")]
     except ValueError:
         return None
 
 
 def medians(runs):
-    """Cell-wise medians of the numeric cells of several runs' tables (the first run's text elsewhere)."""
+    """Cell-wise medians of the numeric cells of several runs' tables, part by part in cells of several
+    numbers (the first run's text elsewhere)."""
     result = []
     for t, table in enumerate(runs[0]):
         rows = []
         for r, row in enumerate(table):
             cells = []
             for c, cell in enumerate(row):
-                values = [number(run[t][r][c]) for run in runs if t < len(run) and r < len(run[t]) and c < len(run[t][r])]
-                ok = all(v is not None for v in values) and len(values) == len(runs)
-                cells.append(f"{statistics.median(values):g}" if ok else cell)
+                values = [numbers(run[t][r][c]) for run in runs if t < len(run) and r < len(run[t]) and c < len(run[t][r])]
+                ok = len(values) == len(runs) and all(v is not None and len(v) == len(values[0]) for v in values)
+                cells.append(" / ".join(f"{statistics.median(parts):g}" for parts in zip(*values)) if ok else cell)
             rows.append(cells)
         result.append(rows)
     return result
 
 
 def ratios(base, new):
+    """new / base cell by cell, part by part in cells of several numbers."""
     result = []
     for tb, tn in zip(base, new):
         rows = []
         for rb, rn in zip(tb, tn):
             cells = []
             for cb, cn in zip(rb, rn):
-                b, n = number(cb), number(cn)
-                cells.append(f"{n / b:.2f}" if b and n is not None else cn)
+                b, n = numbers(cb), numbers(cn)
+                ok = b is not None and n is not None and len(b) == len(n) and all(b)
+                cells.append(" / ".join(f"{y / x:.2f}" for x, y in zip(b, n)) if ok else cn)
             rows.append(cells)
         result.append(rows)
     return result
+
+
+def with_median_rows(tables):
+    """Each table of ratios with a last row "median of rows": the median of each column's single-number
+    cells (tables of more than two rows)."""
+    out = []
+    for table in tables:
+        if len(table) <= 3:
+            out.append(table)
+            continue
+        row = ["median of rows"]
+        for c in range(1, len(table[0])):
+            values = [numbers(r[c]) for r in table[1:] if c < len(r)]
+            values = [v[0] for v in values if v is not None and len(v) == 1]
+            row.append(f"{statistics.median(values):.2f}" if values else "")
+        out.append(table + [row])
+    return out
 
 
 def print_tables(title, tables):
@@ -178,7 +202,7 @@ def main(argv):
     base_tables, new_tables = medians(runs[0]), medians(runs[1])
     print_tables(f"base ({base}), medians of {rounds} rounds", base_tables)
     print_tables(f"new ({new}), medians of {rounds} rounds", new_tables)
-    print_tables("new / base", ratios(base_tables, new_tables))
+    print_tables("new / base", with_median_rows(ratios(base_tables, new_tables)))
     return 0
 
 
