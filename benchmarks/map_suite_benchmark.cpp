@@ -440,9 +440,15 @@ int run(const SuiteOptions& suite, const DatasetArguments& arguments) {
   if (!total.open_judged) std::cout << "open rooms are not judged on maps without occupied cells (see the table above)\n";
   if (floor_repetitions > 0) {
     std::vector<std::vector<std::string>> stages{stage_header()};
-    for (const ScoredSet& set : scored)
-      for (const Variant variant : set.variants)
-        stages.push_back(stage_row(set.variants.size() > 1 ? set.name + " " + to_string(variant) : set.name, times_of(set, variant)));
+    for (const ScoredSet& set : scored) {
+      std::vector<ImageTimes> all;
+      for (const Variant variant : set.variants) {
+        const std::vector<ImageTimes> times = times_of(set, variant);
+        stages.push_back(stage_row(set.variants.size() > 1 ? set.name + " " + to_string(variant) : set.name, times));
+        all.insert(all.end(), times.begin(), times.end());
+      }
+      if (set.variants.size() > 1) stages.push_back(stage_row(set.name + ", all images", all));
+    }
     stages.push_back(stage_row("real maps", times_of(real)));
     std::cout << "\nWhere the time goes: CPU time of the segmenting thread over the image's contour floor (decode,\n"
                  "threshold, findContours), median over the images (the stages' medians need not add up); segment =\n"
