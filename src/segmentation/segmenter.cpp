@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <optional>
 #include <string>
 
@@ -14,6 +15,7 @@
 #include "topocut/decomposition/ring_intersections.h"
 #include "topocut/map/simplify.h"
 #include "topocut/segmentation/polygon_split.h"
+#include "topocut/segmentation/segment_times.h"
 #include "topocut/segmentation/segmentation_rules.h"
 
 namespace topocut {
@@ -42,7 +44,7 @@ namespace {
 bool has_free_cell(const cv::Mat& cells) {
   for (int r = 0; r < cells.rows; ++r) {
     const unsigned char* row = cells.ptr<unsigned char>(r);
-    if (std::find(row, row + cells.cols, kFree) != row + cells.cols) return true;
+    if (std::memchr(row, kFree, static_cast<std::size_t>(cells.cols)) != nullptr) return true;
   }
   return false;
 }
@@ -78,12 +80,15 @@ namespace {
 
 // The cut rules (segmentation_rules()) in order, each clear of the earlier ones' cuts, then each part
 // of the polygon decomposed on its own. With fallible false, the rules that may fail are left out.
-PieceSet decompose_polygon(const PolygonWithHoles& polygon, double resolution, const SegmentOptions& options, bool fallible) {
+PieceSet decompose_polygon(const PolygonWithHoles& polygon, double resolution, const SegmentOptions& options, bool fallible,
+                           SegmentTimes* times) {
+  StageTimer timer(times, SegmentStage::kCuts);
   PieceSet set;
   for (const SegmentationRule& rule : segmentation_rules()) {
     if (!rule.find_cuts || !rule.is_on(options) || (rule.may_fail && !fallible)) continue;
     for (const Segment2& cut : rule.find_cuts(polygon, resolution, options.doors, set.cuts)) set.add_cut(cut, rule.cut_rule);
   }
+  timer.next(SegmentStage::kDecomposition);
   const std::vector<PolygonWithHoles> parts = split_polygon(polygon, set.cuts);
   DecompositionOptions decomposition = options.decomposition;
   decomposition.tau = options.concavity * (options.merge.enabled ? options.oversegment : 1.0) / resolution;
@@ -112,7 +117,8 @@ PolygonWithHoles simplified_where_valid(const PolygonWithHoles& exact, double to
   return exact;
 }
 
-PieceSet decompose_pieces(const FreeSpaceComponent& component, double resolution, const SegmentOptions& options) {
+PieceSet decompose_pieces(const FreeSpaceComponent& component, double resolution, const SegmentOptions& options,
+                          SegmentTimes* times) {
   if (!options.decompose) {
     PieceSet set;
     set.pieces.push_back(component.polygon);
@@ -126,20 +132,25 @@ PieceSet decompose_pieces(const FreeSpaceComponent& component, double resolution
   auto attempt = [&](const PolygonWithHoles& polygon, bool last) -> std::optional<PieceSet> {
     if (fallible_on) {
       try {
-        return decompose_polygon(polygon, resolution, options, true);
+        return decompose_polygon(polygon, resolution, options, true, times);
       } catch (const Error&) {
       }
     }
-    if (last) return decompose_polygon(polygon, resolution, options, false);
+    if (last) return decompose_polygon(polygon, resolution, options, false, times);
     try {
-      return decompose_polygon(polygon, resolution, options, false);
+      return decompose_polygon(polygon, resolution, options, false, times);
     } catch (const Error&) {
       return std::nullopt;
     }
   };
   try {
     if (options.simplify > 0.0) {
-      if (std::optional<PieceSet> set = attempt(simplified_where_valid(component.polygon, options.simplify), false)) return *set;
+      std::optional<PolygonWithHoles> simplified;
+      {
+        const StageTimer timer(times, SegmentStage::kFrontEnd);
+        simplified = simplified_where_valid(component.polygon, options.simplify);
+      }
+      if (std::optional<PieceSet> set = attempt(*simplified, false)) return *set;
     }
     return *attempt(component.polygon, true);
   } catch (const Error& e) {
@@ -148,8 +159,11 @@ PieceSet decompose_pieces(const FreeSpaceComponent& component, double resolution
   }
 }
 
-PieceSet decompose_component(const FreeSpaceComponent& component, const OccupancyGrid& grid, const SegmentOptions& options) {
-  return merge_rooms(component, decompose_pieces(component, grid.resolution, options), grid.cells, grid.resolution, options.merge);
+PieceSet decompose_component(const FreeSpaceComponent& component, const OccupancyGrid& grid, const SegmentOptions& options,
+                             SegmentTimes* times) {
+  const PieceSet pieces = decompose_pieces(component, grid.resolution, options, times);
+  const StageTimer timer(times, SegmentStage::kMerging);
+  return merge_rooms(component, pieces, grid.cells, grid.resolution, options.merge);
 }
 
 SegmentOptions parity_segment_options(double concavity) {
@@ -177,14 +191,22 @@ cv::Rect segmentation_box(const OccupancyGrid& grid, const SegmentOptions& optio
 
 namespace {
 
-Segmentation segment_whole(const OccupancyGrid& grid, const SegmentOptions& options, SegmentationInput& input) {
-  input = segmentation_input(grid, options);
-  const FreeSpacePolygons polygons = free_space_polygons(input.floor, grid.resolution, options.contours);
+Segmentation segment_whole(const OccupancyGrid& grid, const SegmentOptions& options, SegmentationInput& input,
+                           SegmentTimes* times) {
+  FreeSpacePolygons polygons;
+  {
+    const StageTimer timer(times, SegmentStage::kFrontEnd);
+    input = segmentation_input(grid, options);
+    polygons = free_space_polygons(input.floor, grid.resolution, options.contours);
+  }
   PieceSet pieces;
   for (const FreeSpaceComponent& component : polygons.components)
-    pieces.append(decompose_component(component, input.labelled, options));
+    pieces.append(decompose_component(component, input.labelled, options, times));
+  StageTimer timer(times, SegmentStage::kOpenRooms);
   pieces = join_open_rooms(pieces, input.labelled, options.open_rooms);
+  timer.next(SegmentStage::kLabelling);
   Segmentation segmentation = rooms_from_pieces(input.labelled, pieces, options.labels);
+  timer.next(SegmentStage::kOutputs);
   for (Passage& passage : segmentation.passages) passage.door = is_door(passage, options.doors);
   return segmentation;
 }
@@ -207,15 +229,23 @@ void place_input(SegmentationInput& input, const OccupancyGrid& grid, const cv::
 
 }  // namespace
 
-Segmentation segment(const OccupancyGrid& grid, const SegmentOptions& options, SegmentationInput* used) {
-  validate(options);
+Segmentation segment(const OccupancyGrid& grid, const SegmentOptions& options, SegmentationInput* used,
+                     SegmentTimes* times) {
   SegmentationInput local;
   SegmentationInput& input = used ? *used : local;
-  // SLAM maps are mostly unknown around the building (gmapping's default is 4000 x 4000 cells):
-  // the stages run on the known cells' box only (segmentation_box validates the grid).
-  const cv::Rect box = segmentation_box(grid, options);
-  if (box.size() == grid.cells.size()) return segment_whole(grid, options, input);
-  Segmentation segmentation = segment_whole(crop(grid, box), options, input);
+  cv::Rect box;
+  OccupancyGrid part;
+  {
+    const StageTimer timer(times, SegmentStage::kFrontEnd);
+    validate(options);
+    // SLAM maps are mostly unknown around the building (gmapping's default is 4000 x 4000 cells):
+    // the stages run on the known cells' box only (segmentation_box validates the grid).
+    box = segmentation_box(grid, options);
+    if (box.size() != grid.cells.size()) part = crop(grid, box);
+  }
+  if (box.size() == grid.cells.size()) return segment_whole(grid, options, input, times);
+  Segmentation segmentation = segment_whole(part, options, input, times);
+  const StageTimer timer(times, SegmentStage::kOutputs);
   segmentation.labels = placed(segmentation.labels, grid.cells.size(), box, 0);
   segmentation.origin = grid.origin;
   if (used) place_input(input, grid, box);
