@@ -9,6 +9,7 @@
 
 #include "topocut/core/error.h"
 #include "topocut/core/format.h"
+#include "topocut/io/image_input.h"
 
 namespace topocut {
 
@@ -25,6 +26,19 @@ std::string status_line(std::size_t index, std::size_t total, const ImageResult&
   if (!result.ok) return line + "FAILED: " + result.error;
   return line + format("rooms %d (ground truth %d), recall %.3f, precision %.3f, F1 %.3f, %.0f ms", result.rooms,
                        result.gt_rooms, result.recall, result.precision, result.matched.f1, result.time_ms);
+}
+
+// The size the map's ground truth must have: its first variant image whose header reads (nothing is
+// decoded), or none (its own error is the variant's).
+std::optional<ExpectedSize> map_size(const DatasetMap& map, const DatasetRunOptions& options) {
+  for (const Variant variant : options.variants) {
+    try {
+      const ImageHeader header = read_image_size(map.image(variant), "map image", options.load.limits);
+      return ExpectedSize{header.width, header.height, "the map"};
+    } catch (const Error&) {
+    }
+  }
+  return std::nullopt;
 }
 
 }  // namespace
@@ -123,7 +137,9 @@ std::vector<ImageResult> run_dataset(const std::vector<DatasetMap>& maps, const 
     std::optional<cv::Mat> rooms;
     std::string ground_truth_error;
     try {
-      rooms = ground_truth_rooms(load_ground_truth(map.ground_truth, options.load.limits), options.evaluation);
+      const std::optional<ExpectedSize> size = map_size(map, options);
+      rooms = ground_truth_rooms(load_ground_truth(map.ground_truth, options.load.limits, size ? &*size : nullptr),
+                                 options.evaluation);
     } catch (const std::exception& e) {
       ground_truth_error = e.what();
     }
