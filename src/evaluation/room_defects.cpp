@@ -258,7 +258,7 @@ std::string format_defects_table(const std::vector<MapDefectResult>& results) {
 std::string defects_csv(const std::vector<MapDefectResult>& results) {
   std::string csv = "map,width,height,rooms,thin,specks,open,time_ms,floor_ms\n";
   for (const MapDefectResult& r : results) {
-    csv += r.map;
+    csv += csv_cell(r.map);
     if (r.ok) {
       csv += ',';
       csv += std::to_string(r.width) + "," + std::to_string(r.height) + "," + std::to_string(r.defects.rooms) + "," +
