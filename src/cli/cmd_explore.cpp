@@ -106,10 +106,10 @@ int run(const std::vector<std::string>& args) {
   const ExplorationRun run = run_exploration(world, options);
   // End the sequence on the finished map: the final map is the last update's grid.
   writer.finish(static_cast<int>(run.updates.size()), run.scans, run.final_map, run.incremental, run.path, run.final_pose);
-  std::cout << "map: " << map_path << " (" << world.width() << " x " << world.height() << " cells, "
+  std::cout << "map: " << terminal_text(map_path) << " (" << world.width() << " x " << world.height() << " cells, "
             << format("%g m/cell)\n", world.resolution);
   std::cout << format_exploration_summary(run, gt_rooms, gt_path);
-  if (!frames.empty()) std::cout << "frames: " << writer.written() << " written to " << frames << "\n";
+  if (!frames.empty()) std::cout << "frames: " << writer.written() << " written to " << terminal_text(frames) << "\n";
   return 0;
 }
 

@@ -3,7 +3,9 @@
 
 #include <iostream>
 
+#include "topocut/core/format.h"
 #include "topocut/core/option_names.h"
+#include "topocut/core/option_table.h"
 
 namespace topocut::cli {
 
@@ -83,6 +85,8 @@ std::optional<po::variables_map> parse_options(const std::string& usage, const s
     const std::string name = e.get_option_name();
     const std::string meant = name.compare(0, 2, "--") == 0 ? closest_option_name(name.substr(2), option_names(all)) : "";
     throw UsageError(std::string(e.what()) + (meant.empty() ? "" : " (did you mean '--" + meant + "'?)"));
+  } catch (const po::multiple_occurrences& e) {  // the message every front end gives
+    throw UsageError(given_twice_error(e.get_option_name()));
   } catch (const po::error& e) {
     throw UsageError(e.what());
   }
@@ -90,6 +94,8 @@ std::optional<po::variables_map> parse_options(const std::string& usage, const s
   return vm;
 }
 
-void progress(const std::string& message) { std::cerr << message << std::endl; }
+// A progress line names maps by their file names: escaped, so that none can move the cursor or
+// rewrite the terminal.
+void progress(const std::string& message) { std::cerr << terminal_text(message) << std::endl; }
 
 }  // namespace topocut::cli
