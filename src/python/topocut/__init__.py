@@ -15,6 +15,7 @@ cannot be opened raises FileNotFoundError, PermissionError or IsADirectoryError;
 TypeError. Results (Segmentation, Room, Passage, Map, Scores) can be pickled.
 """
 import inspect as _inspect
+import typing as _typing
 
 from . import _topocut
 from ._topocut import (
@@ -41,7 +42,7 @@ __all__ = [
     "extract_lines", "iepf", "load_map", "lt", "merge_feature_names", "merge_training_rows", "segment", "sef", "smf",
 ]
 
-_TYPES = {"bool": bool, "int": int, "float": float, "str": str}
+_TYPES = {"bool": bool, "int": int, "float": float, "str": str, "str | None": _typing.Optional[str]}
 
 
 def _with_keywords(function, kind, positional):
