@@ -15,7 +15,8 @@ this script publishing maps with rospy and checking what comes back.
 6. rooms/segment_map on the bundled map and on every real map of ../shared/datasets/real_maps and
    real_maps_gt (skipped with a message when absent): labels equal `topocut segment --out-labels`
    cell for cell and the JSON equals `--out-json` byte for byte; a bad option and a malformed map
-   come back as an error; room_at then answers from that map.
+   come back as an error, as do options the command line refuses (hexadecimal, given twice) and
+   room_at at a point that is not a number; room_at then answers from that map.
 7. `topocut_node --help` prints the parameters and exits 0 while the node runs, which lives on; a bad
    parameter value stops a second node with the reason and exit 1; an unknown name is warned about.
 Prints the node's latency (map received -> rooms published) beside the library's update time.
@@ -450,6 +451,14 @@ def check_segment_map(args, work):
     assert "did you mean ~concavity?" in answer.error and not answer.rooms.rooms, answer.error
     answer = segment_map(grid, ["door_width=-1"])
     assert "~door_width must lie in" in answer.error, answer.error
+    # Read as the command line reads them: no hexadecimal, no option twice, no 1 MB name echoed.
+    for options, reason in [(["concavity=0x10"], "~concavity needs a number, not '0x10'"),
+                            (["concavity=2", "concavity=3"], "~concavity is given twice"),
+                            (["x" * 100000 + "=1"], "is not a parameter of topocut_node")]:
+        answer = segment_map(grid, options)
+        assert reason in answer.error and len(answer.error) <= 200 and not answer.rooms.rooms, answer.error[:300]
+    answer = room_at(float("nan"), 0.0)
+    assert answer.id == 0 and "finite coordinates" in answer.error, "room_at(nan): %r" % answer.error
     bad = dict(grid, values=grid["values"][:-1])
     answer = segment_map(bad)
     assert "values for" in answer.error, answer.error
