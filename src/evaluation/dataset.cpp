@@ -28,9 +28,9 @@ std::string status_line(std::size_t index, std::size_t total, const ImageResult&
                        result.gt_rooms, result.recall, result.precision, result.matched.f1, result.time_ms);
 }
 
-// The size the map's ground truth must have: its first variant image whose header reads (nothing is
-// decoded), or none (its own error is the variant's).
-std::optional<ExpectedSize> map_size(const DatasetMap& map, const DatasetRunOptions& options) {
+}  // namespace
+
+std::optional<ExpectedSize> map_image_size(const DatasetMap& map, const DatasetRunOptions& options) {
   for (const Variant variant : options.variants) {
     try {
       const ImageHeader header = read_image_size(map.image(variant), "map image", options.load.limits);
@@ -40,8 +40,6 @@ std::optional<ExpectedSize> map_size(const DatasetMap& map, const DatasetRunOpti
   }
   return std::nullopt;
 }
-
-}  // namespace
 
 void apply_scores(const SegmentationScores& scores, ImageResult& result) {
   result.ok = true;
@@ -137,7 +135,7 @@ std::vector<ImageResult> run_dataset(const std::vector<DatasetMap>& maps, const 
     std::optional<cv::Mat> rooms;
     std::string ground_truth_error;
     try {
-      const std::optional<ExpectedSize> size = map_size(map, options);
+      const std::optional<ExpectedSize> size = map_image_size(map, options);
       rooms = ground_truth_rooms(load_ground_truth(map.ground_truth, options.load.limits, size ? &*size : nullptr),
                                  options.evaluation);
     } catch (const std::exception& e) {
