@@ -45,20 +45,27 @@ std::vector<std::string> segment_keywords() {
   return names;
 }
 
-// A number keyword's value: an int or a float (not a bool, not a text), as the command line reads
-// only numbers; the row's range then checks it, with the command's message.
+// Whether value is True or False (Python's or numpy's).
+bool is_bool(const py::handle& value) {
+  return py::isinstance<py::bool_>(value) || py::str(py::type::handle_of(value).attr("__name__")).cast<std::string>() == "bool_";
+}
+
+// A number keyword's value: a number (Python's or numpy's; not a bool, not a text), as the command
+// line reads only numbers; the row's range then checks it, with the command's message.
 double number(const py::handle& value, const std::string& name) {
-  if (py::isinstance<py::bool_>(value) || !(py::isinstance<py::int_>(value) || py::isinstance<py::float_>(value)))
-    throw Error(name + " needs a number, not '" + py::str(value).cast<std::string>() + "'");
-  return value.cast<double>();
+  const std::string refused = name + " needs a number, not '" + py::str(value).cast<std::string>() + "'";
+  if (is_bool(value) || py::isinstance<py::str>(value) || py::isinstance<py::bytes>(value)) throw Error(refused);
+  try {
+    return value.cast<double>();
+  } catch (const py::cast_error&) {
+    throw Error(refused);
+  }
 }
 
 // A switch keyword's value: True or False (numpy's bool too), as the command line's switches and
 // --config's true and false.
 bool switch_value(const py::handle& value, const std::string& name) {
-  const std::string type = py::str(py::type::handle_of(value).attr("__name__")).cast<std::string>();
-  if (!py::isinstance<py::bool_>(value) && type != "bool_")
-    throw Error(switch_value_error(name, py::str(value).cast<std::string>()));
+  if (!is_bool(value)) throw Error(switch_value_error(name, py::str(value).cast<std::string>()));
   return py::bool_(py::reinterpret_borrow<py::object>(value));
 }
 

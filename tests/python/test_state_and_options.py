@@ -209,6 +209,9 @@ def test_every_bad_value_of_the_table_gives_the_commands_message(cli, tmp_path):
             assert tail(python, name) == tail(command, "--" + name.replace("_", "-")), (python, command)
             walked += 1
     assert walked > 40
+    # numpy's numbers and bools are numbers and switches too.
+    assert np.array_equal(np.asarray(topocut.segment(grid, 0.05, concavity=np.int64(2), trivial=np.bool_(True)).labels),
+                          np.asarray(topocut.segment(grid, 0.05, concavity=2.0, trivial=True).labels))
     # A switch takes True or False, as --config takes YAML's booleans; an option is given once.
     with pytest.raises(ValueError, match="^trivial is a switch: give true or false, not '1'$"):
         topocut.segment(grid, 0.05, trivial=1)
