@@ -31,9 +31,8 @@ bool trivial_binarization(const BinarizeOptions& b) {
 }
 
 // How far (cells) a changed cell can change the binarized free space: inflation radius, opening
-// and median windows, plus slack for rounding.
-// Summed in double and capped far beyond any map's side (grown() clips to the map), so that lengths
-// up to the options' limit at the finest resolution cannot overflow an int.
+// and median windows, plus slack for rounding. Summed in double and capped far beyond any map's
+// side (grown() clips to the map): lengths at their limit and the finest resolution overflow an int.
 int binarization_reach(const BinarizeOptions& b, double resolution) {
   if (trivial_binarization(b)) return 0;
   double reach = 2;
@@ -366,6 +365,8 @@ void IncrementalSegmenter::State::process(const OccupancyGrid& grid, const cv::R
     return;
   }
   const ChangeMask mask = take_changes(grid, changed);
+  // Before "unchanged": a window whose cleaning judged nothing new can still hide what only the whole
+  // map's cleaning sees (its floor gone everywhere, a thin part judged by all its cells).
   if (options.segment.clean && cv::countNonZero(floor(mask.window)) == 0 && cv::countNonZero(floor) == 0) {
     segment_whole(grid, "the cleaning leaves the map no floor, so it is decomposed uncleaned and as a whole");
     return;

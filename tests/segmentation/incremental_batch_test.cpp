@@ -199,6 +199,14 @@ TEST(IncrementalBatch, AWallLessStripGrowingIsLabelledAsBatchLabelsIt) {
   EXPECT_EQ(cv::countNonZero(labelled_cells(s) != labelled_cells(segment(grown))), 0);
   EXPECT_EQ(cv::countNonZero(s.labels), 6 * 247);
   EXPECT_EQ(segmenter.last_update().kind, IncrementalUpdateReport::Kind::kBatch);
+  // Seen after nothing was: the window's cleaning finds no floor and nothing to label, which read
+  // as "unchanged" and no room, while segment() labels the strip.
+  IncrementalSegmenter after_nothing;
+  OccupancyGrid strip{cv::Mat(25, 265, CV_8UC1, cv::Scalar(kUnknown)), 0.05, {0.0, 0.0}};
+  after_nothing.update(strip);
+  strip.cells(cv::Rect(1, 0, 185, 9)).setTo(kFree);
+  EXPECT_EQ(cv::countNonZero(labelled_cells(after_nothing.update(strip)) != labelled_cells(segment(strip))), 0);
+  EXPECT_EQ(cv::countNonZero(after_nothing.result().labels), 185 * 9);
 }
 
 TEST(IncrementalBatch, AThinStripRunningOutOfTheWindowIsJudgedOnTheWholeMap) {
