@@ -76,13 +76,20 @@ std::string unknown_name(const std::string& name, bool ignored) {
   return "~" + name + " is not a parameter of topocut_node" + (ignored ? ", ignored" : "") + (best.empty() ? "" : " (did you mean ~" + best + "?)");
 }
 
-// The value of p for row: a number for a number, true/false for a switch; Error with the reason otherwise.
+// The value of p for row: a number for a number, true/false for a switch; Error with the reason
+// otherwise. A text (a service option's value, or a parameter set as a string, as roslaunch's
+// <param value="yes"/> is) is read by the readers of every front end, so that "2.5", "0x10" and "yes"
+// mean here what they mean on the command line and in --config.
 template <typename Target>
 double value_for(const OptionRow<Target>& row, const Parameter& p) {
   const std::string shown = "~" + p.name;
-  // As it was given: a service option's text, else the parameter server's value.
-  const std::string given = !p.text.empty()                     ? p.text
-                            : p.kind == Parameter::Kind::kFlag   ? (p.flag ? "true" : "false")
+  if (p.kind == Parameter::Kind::kText) {
+    if (!row.is_switch()) return topocut::parse_option_number(p.text, shown);
+    const std::optional<bool> on = topocut::parse_switch_value(p.text);
+    if (!on) throw Error(topocut::switch_value_error(shown, p.text));
+    return *on ? 1.0 : 0.0;
+  }
+  const std::string given = p.kind == Parameter::Kind::kFlag     ? (p.flag ? "true" : "false")
                             : p.kind == Parameter::Kind::kNumber ? topocut::shortest_number(p.number)
                                                                  : p.text;
   if (row.is_switch()) {
@@ -114,8 +121,9 @@ NodeSettings read_parameters(NodeSettings settings, const std::vector<Parameter>
   return settings;
 }
 
-// A service call's "name=value" / "name" options as the parameters they override; an option given
-// twice (robot_radius and robot-radius name one) is refused, as the command line refuses it.
+// A service call's "name=value" / "name" options as the parameters they override, each value a text
+// for its row to read (value_for()); an option given twice (robot_radius and robot-radius name one)
+// or without a name is refused, as the command line and --config refuse them.
 std::vector<Parameter> options_as_parameters(const std::vector<std::string>& options) {
   std::vector<Parameter> out;
   std::vector<std::string> names;
@@ -123,21 +131,16 @@ std::vector<Parameter> options_as_parameters(const std::vector<std::string>& opt
     const std::size_t equals = option.find('=');
     Parameter p;
     p.name = option.substr(0, equals);
+    if (p.name.empty()) throw Error("the option '" + option + "': an empty name is no option name");
     const std::string name = topocut::dashed_option_name(p.name);
     if (std::find(names.begin(), names.end(), name) != names.end()) throw Error(topocut::given_twice_error("~" + p.name));
     names.push_back(name);
-    p.text = equals == std::string::npos ? "" : option.substr(equals + 1);
-    const std::optional<bool> flag = equals == std::string::npos ? std::optional<bool>(true) : topocut::parse_switch_value(p.text);
-    if (flag) {  // "no_merge", "no_merge=true", "=yes", "=off": as --config reads a switch
+    if (equals == std::string::npos) {  // "no_merge": a switch turned on, as on the command line
       p.kind = Parameter::Kind::kFlag;
-      p.flag = *flag;
+      p.flag = true;
     } else {
-      try {
-        p.number = topocut::parse_option_number(p.text, p.name);
-        p.kind = Parameter::Kind::kNumber;
-      } catch (const topocut::Error&) {  // a text: its row, if it has one, says what it needs
-        p.kind = Parameter::Kind::kText;
-      }
+      p.kind = Parameter::Kind::kText;
+      p.text = option.substr(equals + 1);
     }
     out.push_back(p);
   }

@@ -118,6 +118,21 @@ TEST(RosAdapter, BadParameterValuesAreRefusedWithTheReason) {
   EXPECT_EQ(refusal({given("concavity", 3), given("no_merge", true), given("robot_radius", 0)}), "");
 }
 
+TEST(RosAdapter, TextParametersAreReadAsTheCommandLineReadsThem) {
+  // roslaunch keeps <param value="yes"/> as a string, and type="str" any value: "2.5" was refused as
+  // not a number and "yes" as not a switch, where the service's options and --config take both.
+  EXPECT_EQ(refusal({given("concavity", "2.5"), given("no_merge", "yes"), given("free_thresh", "0.2")}), "");
+  EXPECT_EQ(refusal({given("concavity", "0x10")}), "~concavity needs a number, not '0x10'");
+  EXPECT_EQ(refusal({given("concavity", " 2")}), "~concavity needs a number, not ' 2'");
+  EXPECT_EQ(refusal({given("no_merge", "1")}), "~no_merge is a switch: give true or false, not '1'");
+  EXPECT_EQ(refusal({given("concavity", "-1")}), "~concavity must lie in (0, 100000] metres, got -1");
+  // A text switch means what it says: "off" leaves the doors on, as the service's no_doors=off does.
+  const TwoRooms two;
+  EXPECT_EQ(adapter_with({given("no_doors", "off")}).segment(two.map(), {}).json, adapter_with().segment(two.map(), {}).json);
+  EXPECT_EQ(adapter_with({given("no_doors", "on")}).segment(two.map(), {}).json,
+            adapter_with().segment(two.map(), {"no_doors"}).json);
+}
+
 TEST(RosAdapter, UnknownParametersAreWarnedWithTheNearestName) {
   std::vector<std::string> unknown;
   topocut_ros::RoomsAdapter adapter({given("concavty", 3), given("door_width", 1.5), given("frame", "map")}, unknown);
@@ -222,6 +237,9 @@ TEST(RosAdapter, ServiceOptionsAreReadAsTheCommandLineReadsThem) {
   EXPECT_EQ(service_error(adapter, two.map(), {"robot_radius=0.1", "robot-radius=0.1"}), "~robot-radius is given twice");
   EXPECT_EQ(service_error(adapter, two.map(), {"no_merge", "no-merge=false"}), "~no-merge is given twice");
   EXPECT_EQ(service_error(adapter, two.map(), {"trivial=yes", "concavity=+2"}), "");  // YAML's booleans, a signed number
+  // A name left out is refused as --config refuses an empty key.
+  EXPECT_EQ(service_error(adapter, two.map(), {"=3"}), "the option '=3': an empty name is no option name");
+  EXPECT_EQ(service_error(adapter, two.map(), {""}), "the option '': an empty name is no option name");
   // A 1 MB name is not echoed whole: every message is one line of at most 200 characters.
   const std::string message = service_error(adapter, two.map(), {std::string(1 << 20, 'x') + "=1"});
   EXPECT_LE(message.size(), 200u);
@@ -248,6 +266,7 @@ TEST(RosAdapter, EveryBadNumberOfTheTableGivesTheLibrarysMessage) {
       }
       if (expected.empty()) continue;
       EXPECT_EQ(service_error(adapter, two.map(), {name + "=" + value}), expected) << name << " = " << value;
+      EXPECT_EQ(refusal({given(name, value)}), expected) << name << " = " << value << " (a text parameter)";
       ++walked;
     }
   }
