@@ -20,6 +20,7 @@ namespace {
 using topocut::testing::CliResult;
 using topocut::testing::expect_clean_error;
 using topocut::testing::file_text;
+using topocut::testing::memory_limit;
 using topocut::testing::run_cli;
 using topocut::testing::TempDir;
 
@@ -81,7 +82,7 @@ TEST(BoundedInputs, AnOpeningWiderThanTheMapIsOneClearErrorAtOnce) {
     const auto start = std::chrono::steady_clock::now();
     const CliResult r = topocut::testing::run_cli_line(
         dir.path(), "segment " + topocut::testing::shell_quoted(bundled("floorplan.yaml")) + " --opening " + metres, 10,
-        "ulimit -v 600000;");
+        memory_limit(600000));
     expect_clean_error(r, "segment", "opening it with a square of " + std::string(metres) + " m a side, more than the map's 15 m");
     EXPECT_EQ(r.err.find("robot radius"), std::string::npos) << r.err;
     EXPECT_LT(seconds_since(start), 5.0);

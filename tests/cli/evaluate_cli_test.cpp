@@ -22,6 +22,7 @@ namespace fs = std::filesystem;
 
 using topocut::testing::CliResult;
 using topocut::testing::file_text;
+using topocut::testing::memory_limit;
 using topocut::testing::run_cli_line;
 
 class EvaluateCli : public ::testing::Test {
@@ -455,14 +456,14 @@ TEST_F(EvaluateCli, ALabelImageOfTheWrongSizeIsRefusedByItsHeader) {
   const fs::path labels = make_labels(dir_);
   std::ofstream(labels / "open.png", std::ios::binary | std::ios::trunc) << png_declaring(labels / "closed.png", 10000, 10000);
   const CliResult run = run_cli_line(dir_, "evaluate --dataset '" + data.string() + "' --labels '" + labels.string() +
-                                               "' --variant plain", 5, "ulimit -v 1000000;");
+                                               "' --variant plain", 5, memory_limit(1000000));
   EXPECT_EQ(run.code, 1) << run.err;
   EXPECT_NE(run.out.find("is 10000 x 10000 pixels but the map is 120 x 60"), std::string::npos) << run.out;
   // So is a ground truth that does not fit its map.
   std::ofstream(data / "closed_gt_segmentation.png", std::ios::binary | std::ios::trunc)
       << png_declaring(data / "open_gt_segmentation.png", 10000, 10000);
   const CliResult truth = run_cli_line(dir_, "evaluate --dataset '" + data.string() + "' --trivial --variant plain", 5,
-                                       "ulimit -v 1000000;");
+                                       memory_limit(1000000));
   EXPECT_EQ(truth.code, 1) << truth.err;
   EXPECT_NE(truth.out.find("closed_gt_segmentation.png' is 10000 x 10000 pixels but the map is 120 x 60"), std::string::npos)
       << truth.out;

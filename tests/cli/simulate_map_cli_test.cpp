@@ -20,6 +20,7 @@ namespace fs = std::filesystem;
 using topocut::testing::CliResult;
 using topocut::testing::expect_clean_error;
 using topocut::testing::file_text;
+using topocut::testing::memory_limit;
 using topocut::testing::run_cli_line;
 
 class SimulateMapCli : public ::testing::Test {
@@ -135,7 +136,7 @@ TEST_F(SimulateMapCli, AGroundTruthOfAnotherSizeIsRefusedByItsHeader) {
   for (int i = 0; i < 4; ++i) bytes[16 + i] = bytes[20 + i] = static_cast<char>(10000u >> (24 - 8 * i));
   std::ofstream(out("big_gt.png"), std::ios::binary) << bytes;
   const CliResult r = run_cli_line(dir_, "simulate-map " + plan.string() + " --gt " + out("big_gt.png") + " --out-map " +
-                                             out("m.png") + " --out-gt " + out("g.png"), 10, "ulimit -v 600000;");
+                                             out("m.png") + " --out-gt " + out("g.png"), 10, memory_limit(600000));
   expect_clean_error(r, "simulate-map", "big_gt.png' is 10000 x 10000 pixels but the plan is 240 x 140");
   EXPECT_FALSE(fs::exists(out("m.png")));
 }
