@@ -15,6 +15,7 @@
 #include "topocut/evaluation/precision_recall.h"
 #include "topocut/exploration/simulated_map.h"
 #include "topocut/io/atomic_file.h"
+#include "topocut/io/image_input.h"
 #include "topocut/io/map_loader.h"
 #include "topocut/io/map_saver.h"
 #include "topocut/io/output_files.h"
@@ -117,13 +118,12 @@ Arguments parse(const std::vector<std::string>& args, bool& help) {
   return a;
 }
 
-// The plan and its people's rooms (room labels of the plan's size).
+// The plan and its people's rooms (room labels of the plan's size): the ground truth's header is
+// checked against the plan's size before it is decoded, as every ground truth read after its map.
 OccupancyGrid load_plan(const std::string& plan_path, const std::string& gt_path, const MapLoadOptions& load, cv::Mat& rooms) {
   OccupancyGrid plan = load_map(plan_path, load);
-  rooms = ground_truth_rooms(load_ground_truth(gt_path, load.limits));
-  if (rooms.size() != plan.cells.size())
-    throw Error("the ground truth " + gt_path + " (" + std::to_string(rooms.cols) + " x " + std::to_string(rooms.rows) +
-                ") differs in size from the plan (" + std::to_string(plan.width()) + " x " + std::to_string(plan.height()) + ")");
+  const ExpectedSize size{static_cast<std::uint64_t>(plan.width()), static_cast<std::uint64_t>(plan.height()), "the plan"};
+  rooms = ground_truth_rooms(load_ground_truth(gt_path, load.limits, &size));
   return plan;
 }
 
@@ -169,7 +169,7 @@ int run_one(const Arguments& a) {
   write_map(a.out_map, simulated);
   write_image_atomically(a.out_gt, rooms_image(simulated));
   if (!a.out_world.empty()) write_image_atomically(a.out_world, world_image(simulated));
-  std::cout << "simulated " << a.plan << " seed " << a.seed << ": " << summary(simulated) << "\n";
+  std::cout << "simulated " << terminal_text(a.plan) << " seed " << a.seed << ": " << summary(simulated) << "\n";
   return 0;
 }
 
@@ -206,11 +206,11 @@ int run_dataset(const Arguments& a) {
         ++written;
       }
     } catch (const Error& e) {
-      std::cerr << "topocut simulate-map: " << m.name << " FAILED: " << one_line_message(e.what()) << "\n";
+      std::cerr << "topocut simulate-map: " << terminal_text(m.name) << " FAILED: " << one_line_message(e.what()) << "\n";
       ++failed;
     }
   }
-  std::cout << "simulated " << written << " maps of " << maps.size() - failed << " plans into " << a.out;
+  std::cout << "simulated " << written << " maps of " << maps.size() - failed << " plans into " << terminal_text(a.out);
   if (failed > 0) std::cout << "; " << failed << " plans FAILED";
   std::cout << "\n";
   return failed > 0 ? 1 : 0;
