@@ -1,10 +1,13 @@
 #include "rooms_adapter.h"
 
+#include <algorithm>
 #include <charconv>
 #include <chrono>
+#include <cmath>
 #include <cstdlib>
 #include <optional>
 
+#include "topocut/core/error.h"
 #include "topocut/core/option_names.h"
 #include "topocut/core/option_table.h"
 #include "topocut/io/image_input.h"  // ImageLimits
@@ -73,16 +76,28 @@ std::string unknown_name(const std::string& name, bool ignored) {
   return "~" + name + " is not a parameter of topocut_node" + (ignored ? ", ignored" : "") + (best.empty() ? "" : " (did you mean ~" + best + "?)");
 }
 
-// The value of p for row: a number for a number, true/false for a switch; Error with the reason otherwise.
+// The value of p for row: a number for a number, true/false for a switch; Error with the reason
+// otherwise. A text (a service option's value, or a parameter set as a string, as roslaunch's
+// <param value="yes"/> is) is read by the readers of every front end, so that "2.5", "0x10" and "yes"
+// mean here what they mean on the command line and in --config.
 template <typename Target>
 double value_for(const OptionRow<Target>& row, const Parameter& p) {
   const std::string shown = "~" + p.name;
+  if (p.kind == Parameter::Kind::kText) {
+    if (!row.is_switch()) return topocut::parse_option_number(p.text, shown);
+    const std::optional<bool> on = topocut::parse_switch_value(p.text);
+    if (!on) throw Error(topocut::switch_value_error(shown, p.text));
+    return *on ? 1.0 : 0.0;
+  }
+  const std::string given = p.kind == Parameter::Kind::kFlag     ? (p.flag ? "true" : "false")
+                            : p.kind == Parameter::Kind::kNumber ? topocut::shortest_number(p.number)
+                                                                 : p.text;
   if (row.is_switch()) {
     if (p.kind == Parameter::Kind::kFlag) return p.flag ? 1.0 : 0.0;
-    throw Error(shown + " is a switch: true or false, not " + (p.kind == Parameter::Kind::kNumber ? topocut::shortest_number(p.number) : "'" + p.text + "'"));
+    throw Error(topocut::switch_value_error(shown, given));
   }
   if (p.kind == Parameter::Kind::kNumber) return p.number;
-  throw Error(shown + " needs a number, not " + (p.kind == Parameter::Kind::kFlag ? (p.flag ? "true" : "false") : "'" + p.text + "'"));
+  throw Error(shown + " needs a number, not '" + given + "'");
 }
 
 template <typename Target>
@@ -106,24 +121,26 @@ NodeSettings read_parameters(NodeSettings settings, const std::vector<Parameter>
   return settings;
 }
 
-// A service call's "name=value" / "name" options as the parameters they override.
+// A service call's "name=value" / "name" options as the parameters they override, each value a text
+// for its row to read (value_for()); an option given twice (robot_radius and robot-radius name one)
+// or without a name is refused, as the command line and --config refuse them.
 std::vector<Parameter> options_as_parameters(const std::vector<std::string>& options) {
   std::vector<Parameter> out;
+  std::vector<std::string> names;
   for (const std::string& option : options) {
     const std::size_t equals = option.find('=');
     Parameter p;
     p.name = option.substr(0, equals);
-    p.text = equals == std::string::npos ? "" : option.substr(equals + 1);
-    if (equals == std::string::npos || p.text == "true" || p.text == "false") {
+    if (p.name.empty()) throw Error("the option '" + option + "': an empty name is no option name");
+    const std::string name = topocut::dashed_option_name(p.name);
+    if (std::find(names.begin(), names.end(), name) != names.end()) throw Error(topocut::given_twice_error("~" + p.name));
+    names.push_back(name);
+    if (equals == std::string::npos) {  // "no_merge": a switch turned on, as on the command line
       p.kind = Parameter::Kind::kFlag;
-      p.flag = p.text != "false";
+      p.flag = true;
     } else {
-      try {
-        p.number = topocut::parse_option_number(p.text, p.name);
-        p.kind = Parameter::Kind::kNumber;
-      } catch (const topocut::Error&) {  // a text: its row, if it has one, says what it needs
-        p.kind = Parameter::Kind::kText;
-      }
+      p.kind = Parameter::Kind::kText;
+      p.text = option.substr(equals + 1);
     }
     out.push_back(p);
   }
@@ -209,6 +226,17 @@ double ms_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 
+// Runs work, its Error made one line fit for a log or a response (control characters out, a long
+// name cut to its ends), as the command line and Python show every message.
+template <typename Work>
+auto one_line(const Work& work) -> decltype(work()) {
+  try {
+    return work();
+  } catch (const Error& e) {
+    throw Error(topocut::one_line_message(e.what()));
+  }
+}
+
 }  // namespace
 
 std::string parameters_help() {
@@ -236,6 +264,10 @@ struct RoomsAdapter::State {
 };
 
 RoomsAdapter::RoomsAdapter(const std::vector<Parameter>& parameters, std::vector<std::string>& unknown) {
+  one_line([&] { start(parameters, unknown); });
+}
+
+void RoomsAdapter::start(const std::vector<Parameter>& parameters, std::vector<std::string>& unknown) {
   topocut::IncrementalOptions options;
   NodeSettings live = over(options.segment, parameters, &unknown);
   options.segment = topocut::to_segment_options(live.segment);
@@ -272,6 +304,10 @@ std::string RoomsAdapter::settings_summary() const {
 }
 
 RoomsOutput RoomsAdapter::update(const MapInput& map) {
+  return one_line([&] { return update_once(map); });
+}
+
+RoomsOutput RoomsAdapter::update_once(const MapInput& map) {
   const topocut::GridArray array = array_of(map, state_->live.map);
   const topocut::OccupancyGrid grid = topocut::grid_from_array(array);  // validates the array
   const auto start = std::chrono::steady_clock::now();
@@ -287,6 +323,10 @@ RoomsOutput RoomsAdapter::update(const MapInput& map) {
 }
 
 RoomsOutput RoomsAdapter::segment(const MapInput& map, const std::vector<std::string>& options) {
+  return one_line([&] { return segment_once(map, options); });
+}
+
+RoomsOutput RoomsAdapter::segment_once(const MapInput& map, const std::vector<std::string>& options) {
   std::vector<std::string> reported;  // the start-up parameters' unknown names, reported then
   NodeSettings settings = over(topocut::SegmentOptions{}, state_->parameters, &reported);
   settings = read_parameters(settings, options_as_parameters(options), nullptr);
@@ -304,6 +344,8 @@ RoomsOutput RoomsAdapter::segment(const MapInput& map, const std::vector<std::st
 }
 
 int RoomsAdapter::room_at(double x, double y, RoomShape* room) const {
+  // The point is checked before there are rooms too: a caller learns of a bad point at once.
+  if (!std::isfinite(x) || !std::isfinite(y)) throw Error("the point must have finite coordinates, not (" + std::to_string(x) + ", " + std::to_string(y) + ")");
   if (!state_->latest) return 0;
   const topocut::GridSegmentation& latest = *state_->latest;
   const int id = topocut::room_at(latest, {x, y});

@@ -64,9 +64,10 @@ std::string parameters_help();
 
 class RoomsAdapter {
  public:
-  // Options from the parameters. Throws std::runtime_error (topocut::Error) naming the parameter and
-  // the reason for a value of the wrong type or out of range; appends one line per unknown name
-  // (with the nearest known name when one is close) to unknown.
+  // Options from the parameters. A text value is read as the command line reads one ("2.5", "yes").
+  // Throws std::runtime_error (topocut::Error) naming the parameter and the reason for a value of the
+  // wrong type or out of range; appends one line per unknown name (with the nearest known name when
+  // one is close) to unknown.
   RoomsAdapter(const std::vector<Parameter>& parameters, std::vector<std::string>& unknown);
   ~RoomsAdapter();
 
@@ -79,15 +80,21 @@ class RoomsAdapter {
   RoomsOutput update(const MapInput& map);
 
   // Segments map at once with the options of `topocut segment`, the parameters and then options
-  // ("name=value", or "name" for a switch on) over them. Throws std::runtime_error on an unknown
-  // option, a bad value or a malformed map. Its rooms become the latest (room_at()).
+  // ("name=value", or "name" for a switch on) over them, each read as the command line reads it.
+  // Throws std::runtime_error on an unknown option, a bad value, an option given twice, an empty name
+  // or a malformed map. Its rooms become the latest (room_at()). Every message is one line.
   RoomsOutput segment(const MapInput& map, const std::vector<std::string>& options);
 
   // The id of the room holding (x, y) (map frame) in the latest rooms, update()'s or segment()'s,
   // and that room in *room; 0 (and *room untouched) when no room holds it or nothing was segmented.
+  // Throws std::runtime_error for a point that is not finite.
   int room_at(double x, double y, RoomShape* room) const;
 
  private:
+  void start(const std::vector<Parameter>& parameters, std::vector<std::string>& unknown);
+  RoomsOutput update_once(const MapInput& map);
+  RoomsOutput segment_once(const MapInput& map, const std::vector<std::string>& options);
+
   struct State;
   std::unique_ptr<State> state_;
 };

@@ -352,9 +352,10 @@ class RoomsNode {
       if (response.id != 0) response.room = room_message(room);
       response.header = latest_;
       return true;
-    } catch (const std::exception& e) {  // a non-finite point
+    } catch (const std::exception& e) {  // a non-finite point: the caller reads why in response.error
+      response.error = e.what();
       ROS_WARN("topocut_node: room_at: %s", e.what());
-      return false;
+      return true;
     }
   }
 

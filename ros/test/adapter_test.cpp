@@ -2,6 +2,8 @@
 // parameters checked against the option table, the segment service's batch rooms (those of the
 // library's segment_grid() with the CLI's defaults, at the resolution the map was written with)
 // and the room at a point (issue 26).
+#include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
@@ -10,6 +12,10 @@
 #include <gtest/gtest.h>
 
 #include "rooms_adapter.h"
+#include "topocut/core/error.h"
+#include "topocut/core/option_names.h"
+#include "topocut/core/option_table.h"
+#include "topocut/segmentation/segment_switches.h"
 #include "topocut/topocut.h"
 
 namespace {
@@ -105,11 +111,26 @@ TEST(RosAdapter, TheLimitIsAParameter) {
 TEST(RosAdapter, BadParameterValuesAreRefusedWithTheReason) {
   EXPECT_EQ(refusal({given("concavity", -1)}), "~concavity must lie in (0, 100000] metres, got -1");
   EXPECT_EQ(refusal({given("door_width", "wide")}), "~door_width needs a number, not 'wide'");
-  EXPECT_EQ(refusal({given("no_merge", 1)}), "~no_merge is a switch: true or false, not 1");
-  EXPECT_EQ(refusal({given("fold_area", true)}), "~fold_area needs a number, not true");
+  EXPECT_EQ(refusal({given("no_merge", 1)}), "~no_merge is a switch: give true or false, not '1'");
+  EXPECT_EQ(refusal({given("fold_area", true)}), "~fold_area needs a number, not 'true'");
   EXPECT_EQ(refusal({given("free_thresh", 2)}), "~free_thresh must be a probability in [0, 1]");
   EXPECT_NE(refusal({given("parity", true), given("no_merge", true)}), "");  // a combination the CLI refuses too
   EXPECT_EQ(refusal({given("concavity", 3), given("no_merge", true), given("robot_radius", 0)}), "");
+}
+
+TEST(RosAdapter, TextParametersAreReadAsTheCommandLineReadsThem) {
+  // roslaunch keeps <param value="yes"/> as a string, and type="str" any value: "2.5" was refused as
+  // not a number and "yes" as not a switch, where the service's options and --config take both.
+  EXPECT_EQ(refusal({given("concavity", "2.5"), given("no_merge", "yes"), given("free_thresh", "0.2")}), "");
+  EXPECT_EQ(refusal({given("concavity", "0x10")}), "~concavity needs a number, not '0x10'");
+  EXPECT_EQ(refusal({given("concavity", " 2")}), "~concavity needs a number, not ' 2'");
+  EXPECT_EQ(refusal({given("no_merge", "1")}), "~no_merge is a switch: give true or false, not '1'");
+  EXPECT_EQ(refusal({given("concavity", "-1")}), "~concavity must lie in (0, 100000] metres, got -1");
+  // A text switch means what it says: "off" leaves the doors on, as the service's no_doors=off does.
+  const TwoRooms two;
+  EXPECT_EQ(adapter_with({given("no_doors", "off")}).segment(two.map(), {}).json, adapter_with().segment(two.map(), {}).json);
+  EXPECT_EQ(adapter_with({given("no_doors", "on")}).segment(two.map(), {}).json,
+            adapter_with().segment(two.map(), {"no_doors"}).json);
 }
 
 TEST(RosAdapter, UnknownParametersAreWarnedWithTheNearestName) {
@@ -159,7 +180,7 @@ TEST(RosAdapter, SegmentOptionsGoOverTheParametersAndAreChecked) {
   EXPECT_EQ(error({"concavty=3"}), "~concavty is not a parameter of topocut_node (did you mean ~concavity?)");
   EXPECT_EQ(error({"concavity=abc"}), "~concavity needs a number, not 'abc'");
   EXPECT_EQ(error({"frame=map"}), "~frame is not a parameter of topocut_node");
-  EXPECT_EQ(error({"no_merge=1"}), "~no_merge is a switch: true or false, not 1");
+  EXPECT_EQ(error({"no_merge=1"}), "~no_merge is a switch: give true or false, not '1'");
   EXPECT_EQ(error({"door-width=-2"}), "~door-width must lie in (0, 100000] metres, got -2");
   // The parameter (no door cuts) holds unless a call turns it off again.
   const std::string doors_off = adapter.segment(two.map(), {}).json;
@@ -193,6 +214,81 @@ TEST(RosAdapter, RoomAtAnswersFromTheLatestRooms) {
   adapter.update(two.map(110.0, 20.0));
   EXPECT_EQ(adapter.room_at(out.rooms[0].inside_x, out.rooms[0].inside_y, &room), 0);
   EXPECT_NE(adapter.room_at(out.rooms[0].inside_x + 100.0, out.rooms[0].inside_y, &room), 0);
+}
+
+// The service's error for options over the start-up parameters, or "" when it segments.
+std::string service_error(topocut_ros::RoomsAdapter& adapter, const topocut_ros::MapInput& map,
+                          const std::vector<std::string>& options) {
+  try {
+    adapter.segment(map, options);
+  } catch (const std::runtime_error& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(RosAdapter, ServiceOptionsAreReadAsTheCommandLineReadsThem) {
+  // concavity=0x10 and options given twice were taken; the command line refuses both.
+  const TwoRooms two;
+  topocut_ros::RoomsAdapter adapter = adapter_with();
+  EXPECT_EQ(service_error(adapter, two.map(), {"concavity=0x10"}), "~concavity needs a number, not '0x10'");
+  EXPECT_EQ(service_error(adapter, two.map(), {"concavity= 2"}), "~concavity needs a number, not ' 2'");
+  EXPECT_EQ(service_error(adapter, two.map(), {"concavity=2", "concavity=3"}), "~concavity is given twice");
+  EXPECT_EQ(service_error(adapter, two.map(), {"robot_radius=0.1", "robot-radius=0.1"}), "~robot-radius is given twice");
+  EXPECT_EQ(service_error(adapter, two.map(), {"no_merge", "no-merge=false"}), "~no-merge is given twice");
+  EXPECT_EQ(service_error(adapter, two.map(), {"trivial=yes", "concavity=+2"}), "");  // YAML's booleans, a signed number
+  // A name left out is refused as --config refuses an empty key.
+  EXPECT_EQ(service_error(adapter, two.map(), {"=3"}), "the option '=3': an empty name is no option name");
+  EXPECT_EQ(service_error(adapter, two.map(), {""}), "the option '': an empty name is no option name");
+  // A 1 MB name is not echoed whole: every message is one line of at most 200 characters.
+  const std::string message = service_error(adapter, two.map(), {std::string(1 << 20, 'x') + "=1"});
+  EXPECT_LE(message.size(), 200u);
+  EXPECT_NE(message.find("is not a parameter of topocut_node"), std::string::npos) << message;
+  EXPECT_EQ(service_error(adapter, two.map(), {"concavity\x1b[2J=1"}).find('\x1b'), std::string::npos);
+}
+
+TEST(RosAdapter, EveryBadNumberOfTheTableGivesTheLibrarysMessage) {
+  // The walk of the command line's and Python's tests, through the service's options and the
+  // start-up parameters: the message is the library's, with the parameter's name.
+  const TwoRooms two;
+  topocut_ros::RoomsAdapter adapter = adapter_with();
+  int walked = 0;
+  for (const auto& row : topocut::segment_option_rows()) {
+    if (row.is_switch()) continue;
+    const std::string name = topocut::underscored_option_name(row.name);
+    for (const std::string value : {"-1", "nan", "inf", "0x10", "1e999", "abc", "2,5", "1e6"}) {
+      std::string expected;
+      try {
+        topocut::SegmentSettings settings;
+        topocut::set_option(row, settings, topocut::parse_option_number(value, "~" + name), "~" + name);
+      } catch (const topocut::Error& e) {
+        expected = e.what();
+      }
+      if (expected.empty()) continue;
+      EXPECT_EQ(service_error(adapter, two.map(), {name + "=" + value}), expected) << name << " = " << value;
+      EXPECT_EQ(refusal({given(name, value)}), expected) << name << " = " << value << " (a text parameter)";
+      ++walked;
+    }
+  }
+  EXPECT_GT(walked, 60);
+}
+
+TEST(RosAdapter, RoomAtRefusesAPointThatIsNotANumberWithTheReason) {
+  // The service answered false with an empty error; now the reason, before and after a map.
+  const TwoRooms two;
+  topocut_ros::RoomsAdapter adapter = adapter_with();
+  topocut_ros::RoomShape room;
+  for (int segmented = 0; segmented < 2; ++segmented) {
+    for (const double bad : {std::nan(""), std::numeric_limits<double>::infinity()}) {
+      try {
+        adapter.room_at(bad, 1.0, &room);
+        ADD_FAILURE() << "took " << bad;
+      } catch (const std::runtime_error& e) {
+        EXPECT_NE(std::string(e.what()).find("the point must have finite coordinates"), std::string::npos) << e.what();
+      }
+    }
+    adapter.segment(two.map(), {});
+  }
 }
 
 }  // namespace

@@ -15,12 +15,14 @@ this script publishing maps with rospy and checking what comes back.
 6. ~segment_map (/topocut/segment_map) on the bundled map and on every real map of ../shared/datasets/real_maps and
    real_maps_gt (skipped with a message when absent): labels equal `topocut segment --out-labels`
    cell for cell and the JSON equals `--out-json` byte for byte; a bad option and a malformed map
-   come back as an error; room_at then answers from that map.
+   come back as an error, as do options the command line refuses (hexadecimal, given twice) and
+   room_at at a point that is not a number; room_at then answers from that map.
 7. `topocut_node --help` prints the parameters and exits 0 while the node runs, which lives on; a bad
    parameter value stops a second node with the reason and exit 1; an unknown name is warned about; a
    second node under another name serves its own private services and leaves the first node's alone.
 8. The action ~map_segmentation answers a goal with ~segment_map's rooms, labels and JSON, and the
-   labels as a grid; its feedback names the stages in order; a bad option aborts the goal.
+   labels as a grid; its feedback names the stages in order; a bad option, and every option
+   ~segment_map refuses, aborts the goal with the reason.
 9. rooms/grid (nav_msgs/OccupancyGrid) holds the labels on the map's grid (-1 no room, else the id),
    and the node logs its topics, services, action and parameters at start and one line per map.
 Prints the node's latency (map received -> rooms published) beside the library's update time.
@@ -405,6 +407,13 @@ def shared_maps(source):
     return maps
 
 
+# Options read as the command line reads them (no hexadecimal, no option twice, no 1 MB name echoed)
+# and the reason each refusal must give, in one line: ~segment_map's and the action's goals alike.
+REFUSED_OPTIONS = [(["concavity=0x10"], "~concavity needs a number, not '0x10'"),
+                   (["concavity=2", "concavity=3"], "~concavity is given twice"),
+                   (["x" * 100000 + "=1"], "is not a parameter of topocut_node")]
+
+
 def segment_map(grid, options=(), stamp=0):
     import rospy
     from topocut_msgs.srv import SegmentMap
@@ -462,6 +471,11 @@ def check_segment_map(args, work):
     assert "did you mean ~concavity?" in answer.error and not answer.rooms.rooms, answer.error
     answer = segment_map(grid, ["door_width=-1"])
     assert "~door_width must lie in" in answer.error, answer.error
+    for options, reason in REFUSED_OPTIONS:
+        answer = segment_map(grid, options)
+        assert reason in answer.error and len(answer.error) <= 200 and not answer.rooms.rooms, answer.error[:300]
+    answer = room_at(float("nan"), 0.0)
+    assert answer.id == 0 and "finite coordinates" in answer.error, "room_at(nan): %r" % answer.error
     bad = dict(grid, values=grid["values"][:-1])
     answer = segment_map(bad)
     assert "values for" in answer.error, answer.error
@@ -473,7 +487,8 @@ def check_action(grid, expected):
     """~map_segmentation (/topocut/map_segmentation): a goal's result is ~segment_map's answer for the
     same map (labels, JSON, and the labels as a grid); its feedback, read on the action's feedback topic
     (a client may drop feedback that comes after the result, which travels on another topic), names the
-    three stages in order with growing progress; a bad option aborts the goal with the reason."""
+    three stages in order with growing progress; a bad option, and every option ~segment_map refuses,
+    aborts the goal with the reason."""
     import actionlib
     import rospy
     from actionlib_msgs.msg import GoalStatus
@@ -507,6 +522,10 @@ def check_action(grid, expected):
     bad = run(["concavty=3"])
     assert bad.get_goal_status() == GoalStatus.ABORTED and "did you mean ~concavity?" in bad.get_result().error, \
         bad.get_result()
+    for options, reason in REFUSED_OPTIONS:  # a goal's options pass the service's checks
+        refused = run(options)
+        error = refused.get_result().error
+        assert refused.get_goal_status() == GoalStatus.ABORTED and reason in error and len(error) <= 200, error[:300]
     subscriber.unregister()
     print("map_segmentation: the result is segment_map's (%d rooms), feedback %s; a bad option aborts: %s" %
           (len(result.rooms.rooms), ", ".join("%s %.2f" % sp for sp in stages), bad.get_result().error))

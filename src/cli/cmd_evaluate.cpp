@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "cli/command.h"
+#include "topocut/core/format.h"
 #include "cli/library_options.h"
 #include "topocut/core/error.h"
 #include "topocut/evaluation/dataset.h"
@@ -96,7 +97,7 @@ int run_incremental(const DatasetArguments& arguments, const std::vector<Dataset
   options.exploration.batch_every = batch_every;
   const std::vector<IncrementalImageResult> results = run_incremental_dataset(maps, options);
   const std::string method = method_name(arguments.run.segment) + ", incremental";
-  std::cout << "Dataset " << arguments.dataset << ", " << maps.size() << " maps, method: " << method << "\n\n"
+  std::cout << "Dataset " << terminal_text(arguments.dataset) << ", " << maps.size() << " maps, method: " << terminal_text(method) << "\n\n"
             << format_incremental_report(results, method) << std::flush;
   if (!arguments.csv.empty()) write_file_atomically(arguments.csv, incremental_results_csv(results));
   std::size_t failed = 0;
@@ -147,7 +148,7 @@ int run_defects(const DatasetArguments& arguments, const std::string& folder, in
     check_outputs({arguments.csv}, inputs);
   }
   const std::vector<MapDefectResult> results = run_map_files(files, options);
-  std::cout << "Maps " << folder << ", method: " << method_name(arguments.run.segment) << "\n\n"
+  std::cout << "Maps " << terminal_text(folder) << ", method: " << method_name(arguments.run.segment) << "\n\n"
             << format_defects_table(results) << std::flush;
   if (!arguments.csv.empty()) write_file_atomically(arguments.csv, defects_csv(results));
   std::size_t failed = 0;
@@ -211,8 +212,10 @@ int run(const std::vector<std::string>& args) {
   if (mode != "batch" && mode != "incremental") throw UsageError("--mode must be batch or incremental, not '" + mode + "'");
   const int batch_every = (*vm)["batch-every"].as<int>();
   if (batch_every < 1) throw UsageError("--batch-every must be at least 1");
-  if (!arguments.csv.empty()) check_outputs({arguments.csv}, {});
   const std::string report = vm->count("report") ? (*vm)["report"].as<std::string>() : "";
+  // Checked early, before the dataset is read; with --report the CSV may lie in the report's folder,
+  // which is made below and checked with it there.
+  if (!arguments.csv.empty() && report.empty()) check_outputs({arguments.csv}, {});
   if (vm->count("report") && report.empty()) throw UsageError("--report needs a folder");
   if (!report.empty() && (mode != "batch" || vm->count("maps")))
     throw UsageError("--report draws images scored against a ground truth in batch mode (not --mode incremental or --maps)");
@@ -258,13 +261,13 @@ int run(const std::vector<std::string>& args) {
       maps, arguments.run, labels.empty() ? batch_segmenter(arguments.run) : labels_segmenter(labels, arguments.run));
 
   const std::string method = labels.empty() ? method_name(arguments.run.segment) : "labels in " + labels;
-  std::cout << "Dataset " << arguments.dataset << ", " << maps.size() << " maps, method: " << method << "\n\n"
+  std::cout << "Dataset " << terminal_text(arguments.dataset) << ", " << maps.size() << " maps, method: " << terminal_text(method) << "\n\n"
             << format_results_table(results) << "\n"
             << format_summary(results, method) << std::flush;
   if (!arguments.csv.empty()) write_file_atomically(arguments.csv, results_csv(results));
   if (html) {
     html->finish(results, "topocut evaluate: " + arguments.dataset, method);
-    std::cout << "wrote report: " << (std::filesystem::path(report) / "index.html").string() << "\n";
+    std::cout << "wrote report: " << terminal_text((std::filesystem::path(report) / "index.html").string()) << "\n";
   }
 
   std::size_t failed = 0, missing = 0;

@@ -3,6 +3,8 @@
 #include <cstdio>
 #include <iostream>
 
+#include <cstdint>
+
 #include "cli/command.h"
 #include "cli/frames.h"
 #include "cli/library_options.h"
@@ -32,10 +34,9 @@ OccupancyGrid load_inputs(const std::string& map_path, const MapLoadOptions& loa
   OccupancyGrid world = load_map(map_path, load);
   if (gt_path.empty()) gt_path = find_ground_truth(map_path);
   if (gt_path.empty()) return world;
-  gt_rooms = ground_truth_rooms(load_ground_truth(gt_path, load.limits));
-  if (gt_rooms.size() != world.cells.size())
-    throw Error("the ground truth " + gt_path + " (" + std::to_string(gt_rooms.cols) + " x " +
-                std::to_string(gt_rooms.rows) + ") differs in size from the map");
+  // Its header is checked against the map's size before it is decoded.
+  const ExpectedSize size{static_cast<std::uint64_t>(world.width()), static_cast<std::uint64_t>(world.height()), "the map"};
+  gt_rooms = ground_truth_rooms(load_ground_truth(gt_path, load.limits, &size));
   return world;
 }
 
@@ -106,10 +107,10 @@ int run(const std::vector<std::string>& args) {
   const ExplorationRun run = run_exploration(world, options);
   // End the sequence on the finished map: the final map is the last update's grid.
   writer.finish(static_cast<int>(run.updates.size()), run.scans, run.final_map, run.incremental, run.path, run.final_pose);
-  std::cout << "map: " << map_path << " (" << world.width() << " x " << world.height() << " cells, "
+  std::cout << "map: " << terminal_text(map_path) << " (" << world.width() << " x " << world.height() << " cells, "
             << format("%g m/cell)\n", world.resolution);
   std::cout << format_exploration_summary(run, gt_rooms, gt_path);
-  if (!frames.empty()) std::cout << "frames: " << writer.written() << " written to " << frames << "\n";
+  if (!frames.empty()) std::cout << "frames: " << writer.written() << " written to " << terminal_text(frames) << "\n";
   return 0;
 }
 

@@ -12,6 +12,7 @@
 #include "cli/command.h"
 #include "cli/library_options.h"
 #include "topocut/core/error.h"
+#include "topocut/core/format.h"
 #include "topocut/io/atomic_file.h"
 #include "topocut/io/image_codec.h"
 #include "topocut/io/output_files.h"
@@ -24,6 +25,7 @@
 #include "topocut/segmentation/grid_segmentation.h"
 #include "topocut/segmentation/room_at.h"
 #include "topocut/segmentation/segment_switches.h"
+#include "topocut/segmentation/segmentation_rules.h"
 
 namespace topocut::cli {
 namespace {
@@ -164,14 +166,23 @@ bool any_output(const Outputs& out) {
            out.clean.empty());
 }
 
-// The method as the summary names it, e.g. "cleaning + doors + DuDe + merging, concavity 2.5 m".
+// The method as the summary names it, e.g. "cleaning + doors + DuDe + merging, concavity 2.5 m": the
+// stages that run, then the other rules switched off ("without wall-lines, open-rooms").
 std::string method_summary(const Request& request) {
   if (request.settings.switches.trivial) return "trivial: one room per component";
+  const SegmentOptions& o = request.options;
   std::ostringstream text;
-  text << (request.settings.switches.parity ? "DuDe pieces, parity"
-           : request.options.clean           ? "cleaning + doors + DuDe + merging"
-                                             : "doors + DuDe + merging")
-       << ", concavity " << request.options.concavity << " m";
+  if (request.settings.switches.parity) {
+    text << "DuDe pieces, parity";
+  } else {
+    std::string stages = std::string(o.clean ? "cleaning + " : "") + (o.doors.enabled ? "doors + " : "") + "DuDe";
+    if (o.merge.enabled) stages += o.merge.learned ? " + merging" : " + merging by hand rules";
+    std::string others;
+    for (const std::string& rule : rules_off(o))
+      if (rule != "clean" && rule != "doors" && rule != "merge" && rule != "learned-merge") others += (others.empty() ? "" : ", ") + rule;
+    text << stages << (others.empty() ? "" : ", without " + others);
+  }
+  text << ", concavity " << o.concavity << " m";
   return text.str();
 }
 
@@ -184,7 +195,9 @@ std::string summary(const Request& request, const OccupancyGrid& grid, const Seg
   const Outputs& out = request.out;
   const std::size_t rooms = segmentation.rooms.size(), passages = segmentation.passages.size();
   std::ostringstream text;
-  text << request.map_path << ": " << grid.width() << " x " << grid.height() << " cells at " << grid.resolution << " m; "
+  // File names are anyone's text: escaped, so that none moves the cursor or rewrites the terminal.
+  const auto name = [](const std::string& path) { return terminal_text(path); };
+  text << name(request.map_path) << ": " << grid.width() << " x " << grid.height() << " cells at " << grid.resolution << " m; "
        << rooms << (rooms == 1 ? " room, " : " rooms, ") << passages << (passages == 1 ? " passage" : " passages") << " ("
        << method_summary(request) << ") in " << std::fixed << std::setprecision(1) << timing.segmenting_ms << " ms (loading "
        << timing.loading_ms << " ms)\n" << std::defaultfloat;
@@ -197,12 +210,12 @@ std::string summary(const Request& request, const OccupancyGrid& grid, const Seg
   if (!any_output(out) && request.at.empty())
     text << "note: nothing written; ask for outputs: --out-json FILE (rooms, passages), --out-labels FILE.png, "
             "--out-color FILE.png, --out-geojson FILE, --out-svg FILE, or --at X,Y (topocut segment --help)\n";
-  if (!out.labels.empty()) text << "wrote labels:  " << out.labels << " (16-bit PNG, 0 = no room, rooms 1.." << rooms << ")\n";
-  if (!out.color.empty()) text << "wrote overlay: " << out.color << "\n";
-  if (!out.json.empty()) text << "wrote JSON:    " << out.json << "\n";
-  if (!out.svg.empty()) text << "wrote SVG:     " << out.svg << "\n";
-  if (!out.geojson.empty()) text << "wrote GeoJSON: " << out.geojson << "\n";
-  if (!out.clean.empty()) text << "wrote cleaned map: " << out.clean << "\n";
+  if (!out.labels.empty()) text << "wrote labels:  " << name(out.labels) << " (16-bit PNG, 0 = no room, rooms 1.." << rooms << ")\n";
+  if (!out.color.empty()) text << "wrote overlay: " << name(out.color) << "\n";
+  if (!out.json.empty()) text << "wrote JSON:    " << name(out.json) << "\n";
+  if (!out.svg.empty()) text << "wrote SVG:     " << name(out.svg) << "\n";
+  if (!out.geojson.empty()) text << "wrote GeoJSON: " << name(out.geojson) << "\n";
+  if (!out.clean.empty()) text << "wrote cleaned map: " << name(out.clean) << "\n";
   return text.str();
 }
 
@@ -211,7 +224,7 @@ std::string rooms_at(const std::vector<QueryPoint>& points, const GridSegmentati
   std::string text;
   for (const QueryPoint& q : points) {
     const int id = room_at(result, q.point);
-    text += "at " + q.text + ": " + (id > 0 ? "room " + std::to_string(id) : std::string("none")) + "\n";
+    text += "at " + terminal_text(q.text) + ": " + (id > 0 ? "room " + std::to_string(id) : std::string("none")) + "\n";
   }
   return text;
 }

@@ -15,6 +15,7 @@
 #include "topocut/evaluation/robot_made_dataset.h"
 #include "topocut/exploration/simulated_map.h"
 #include "topocut/io/atomic_file.h"
+#include "topocut/io/image_input.h"
 #include "topocut/io/map_loader.h"
 #include "topocut/io/map_saver.h"
 #include "topocut/io/output_files.h"
@@ -159,7 +160,7 @@ int run_one(const Arguments& a) {
   write_map(a.out_map, simulated);
   write_image_atomically(a.out_gt, rooms_image(simulated));
   if (!a.out_world.empty()) write_image_atomically(a.out_world, world_image(simulated));
-  std::cout << "simulated " << a.plan << " seed " << a.seed << ": " << summary(simulated) << "\n";
+  std::cout << "simulated " << terminal_text(a.plan) << " seed " << a.seed << ": " << summary(simulated) << "\n";
   return 0;
 }
 
@@ -188,9 +189,9 @@ int run_dataset(const Arguments& a) {
   options.progress = [](const std::string& line) { progress("simulate-map: " + line); };
   const RobotMadeDataset made = make_robot_made_dataset(maps, a.out, options);
   for (const std::string& failure : made.failed)
-    std::cerr << "topocut simulate-map: FAILED: " << one_line_message(failure) << "\n";
+    std::cerr << "topocut simulate-map: FAILED: " << terminal_text(one_line_message(failure)) << "\n";
   const std::size_t failed = made.failed.size();
-  std::cout << "simulated " << made.written << " maps of " << maps.size() - failed << " plans into " << a.out;
+  std::cout << "simulated " << made.written << " maps of " << maps.size() - failed << " plans into " << terminal_text(a.out);
   if (failed > 0) std::cout << "; " << failed << " plans FAILED";
   std::cout << "\n";
   return failed > 0 ? 1 : 0;

@@ -3,6 +3,7 @@
 #include <sstream>
 
 #include "cli/command.h"
+#include "topocut/core/format.h"
 #include "cli/frames.h"
 #include "cli/library_options.h"
 #include "topocut/core/error.h"
@@ -71,7 +72,7 @@ void replay(const std::vector<PosedScan>& scans, const WallsOptions& walls, cons
   std::cout << "stability: " << format_stability(run.stability) << "\n";
   std::cout << format_batch_stability(run);
   std::cout << final_rooms_line(run);
-  if (!arguments.frames.empty()) std::cout << "frames: " << frames.written() << " written to " << arguments.frames << "\n";
+  if (!arguments.frames.empty()) std::cout << "frames: " << frames.written() << " written to " << terminal_text(arguments.frames) << "\n";
   if (!out_map.empty()) save_map(out_map, grid);
   if (!out_color.empty()) write_overlay(out_color, grid, run.incremental);
   if (!out_rooms.empty()) write_rooms_json(out_rooms, run.incremental, in_frame(run.incremental, GridFrame{}).placements);
@@ -178,7 +179,7 @@ std::vector<PosedScan> read_scans(const std::string& log_path, const CarmenReadO
     throw Error("'" + log_path + "' contains no usable FLASER laser scans (" + std::to_string(log.lines) + " lines; found " +
                 skipped_summary(log) + ")");
   std::vector<PosedScan> scans = posed_scans(log);
-  std::cout << "log: " << log_path << ": " << scans.size() << " scans, no-return range " << log.max_range << " m"
+  std::cout << "log: " << terminal_text(log_path) << ": " << scans.size() << " scans, no-return range " << log.max_range << " m"
             << (log.max_range_detected ? " (detected)" : "") << "\n";
   return scans;
 }

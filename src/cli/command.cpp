@@ -3,7 +3,9 @@
 
 #include <iostream>
 
+#include "topocut/core/format.h"
 #include "topocut/core/option_names.h"
+#include "topocut/core/option_table.h"
 
 namespace topocut::cli {
 
@@ -99,6 +101,8 @@ std::optional<po::variables_map> parse_options(const std::string& usage, const s
     throw UsageError(std::string(e.what()) + (meant.empty() ? "" : " (did you mean '--" + meant + "'?)"));
   } catch (const po::required_option& e) {
     throw UsageError(missing_option_message(e.get_option_name(), positional, usage));
+  } catch (const po::multiple_occurrences& e) {  // the message every front end gives
+    throw UsageError(given_twice_error(e.get_option_name()));
   } catch (const po::error& e) {
     throw UsageError(e.what());
   }
@@ -106,6 +110,8 @@ std::optional<po::variables_map> parse_options(const std::string& usage, const s
   return vm;
 }
 
-void progress(const std::string& message) { std::cerr << message << std::endl; }
+// A progress line names maps by their file names: escaped, so that none can move the cursor or
+// rewrite the terminal.
+void progress(const std::string& message) { std::cerr << terminal_text(message) << std::endl; }
 
 }  // namespace topocut::cli

@@ -20,6 +20,7 @@ SegmentSettings read_segment_settings(const po::variables_map& vm, SegmentSettin
     const std::string text = read_input_file(path, "merge model", kMaxMergeModelBytes);
     try {
       defaults.options.merge.model = parse_merge_model(text);
+      defaults.switches.merge_model_given = true;
     } catch (const Error& e) {
       throw Error(path + ": " + e.what());
     }

@@ -17,8 +17,9 @@ inline po::typed_value<double>* number_value(double& field) {
   return po::value<double>(&field)->default_value(field, shortest_number(field));
 }
 
-// Adds rows to options: a switch as a bool_switch, a number as a double whose help shows its value
-// in defaults in its shortest form ("--resolution M (=0.05)").
+// Adds rows to options: a switch as a bool_switch, a number as text (read by parse_option_number(),
+// the parser of every front end) whose help shows its value in defaults in its shortest form
+// ("--resolution M (=0.05)").
 template <typename Target>
 void add_option_rows(po::options_description& options, const std::vector<OptionRow<Target>>& rows,
                      const Target& defaults) {
@@ -26,23 +27,25 @@ void add_option_rows(po::options_description& options, const std::vector<OptionR
     if (row.is_switch()) {
       options.add_options()(row.name.c_str(), po::bool_switch(), row.help.c_str());
     } else {
-      const double value = row.get(defaults);
       options.add_options()(row.name.c_str(),
-                            po::value<double>()->default_value(value, shortest_number(value))->value_name(row.value_name),
+                            po::value<std::string>()->default_value(shortest_number(row.get(defaults)))->value_name(row.value_name),
                             row.help.c_str());
     }
   }
 }
 
-// Sets in target every row that vm holds a given (not defaulted) value for, checked by the row; a
-// bad value is a UsageError.
+// Sets in target every row that vm holds a given (not defaulted) value for, read and checked as every
+// front end reads and checks it (option_table.h); a bad value is a UsageError.
 template <typename Target>
 void read_option_rows(const po::variables_map& vm, const std::vector<OptionRow<Target>>& rows, Target& target) {
   for (const OptionRow<Target>& row : rows) {
     if (!vm.count(row.name) || vm[row.name].defaulted()) continue;
     if (row.is_switch() && !vm[row.name].template as<bool>()) continue;
-    const double value = row.is_switch() ? 1.0 : vm[row.name].template as<double>();
-    check_usage([&] { set_option(row, target, value, "--" + row.name); });
+    const std::string shown = "--" + row.name;
+    check_usage([&] {
+      const double value = row.is_switch() ? 1.0 : parse_option_number(vm[row.name].template as<std::string>(), shown);
+      set_option(row, target, value, shown);
+    });
   }
 }
 

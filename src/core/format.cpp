@@ -2,6 +2,7 @@
 
 #include <cstdarg>
 #include <cstdio>
+#include <string>
 
 namespace topocut {
 
@@ -28,5 +29,35 @@ std::string format(const char* pattern, ...) {
 }
 
 std::string fixed(double value, int decimals) { return format("%.*f", decimals, value); }
+
+std::string terminal_text(const std::string& name) {
+  std::string out;
+  out.reserve(name.size());
+  for (std::size_t i = 0; i < name.size(); ++i) {
+    const auto u = static_cast<unsigned char>(name[i]);
+    // C1 controls are U+0080..U+009F, in UTF-8 0xC2 0x80..0x9F.
+    const bool c1 = u == 0xC2 && i + 1 < name.size() && static_cast<unsigned char>(name[i + 1]) <= 0x9F &&
+                    static_cast<unsigned char>(name[i + 1]) >= 0x80;
+    if (u < 0x20 || u == 0x7F) {
+      out += format("\\x%02X", u);
+    } else if (c1) {
+      out += format("\\xC2\\x%02X", static_cast<unsigned char>(name[++i]));
+    } else {
+      out += name[i];
+    }
+  }
+  return out;
+}
+
+std::string csv_cell(const std::string& text) {
+  const bool formula = !text.empty() && std::string("=+-@\t\r").find(text.front()) != std::string::npos;
+  if (!formula && text.find_first_of(",\"\n\r") == std::string::npos) return text;
+  std::string quoted = formula ? "\"'" : "\"";
+  for (const char c : text) {
+    if (c == '"') quoted += '"';
+    quoted += c;
+  }
+  return quoted + "\"";
+}
 
 }  // namespace topocut

@@ -39,6 +39,9 @@ std::string closest_option_name(const std::string& name, const std::vector<std::
   std::string best;
   std::size_t best_distance = 3;  // a typo: one or two letters wrong, missing or extra
   for (const std::string& candidate : known) {
+    // Lengths further apart than a typo cannot be one: a 1 MB name costs nothing.
+    const std::size_t a = dashed.size(), b = candidate.size();
+    if ((a > b ? a - b : b - a) >= best_distance) continue;
     const std::size_t d = edit_distance(dashed, dashed_option_name(candidate));
     if (d < best_distance) best = candidate, best_distance = d;
   }

@@ -2,7 +2,6 @@
 
 #include <charconv>
 #include <cmath>
-#include <stdexcept>
 
 #include "topocut/core/error.h"
 #include "topocut/core/value_ranges.h"
@@ -35,16 +34,30 @@ void check_option_value(OptionRange range, double value, const std::string& show
 }
 
 double parse_option_number(const std::string& text, const std::string& shown) {
-  std::size_t used = 0;
+  // Decimal only, as people write numbers: no hexadecimal ("0x10"), no blanks around it, one optional
+  // sign. from_chars reads "inf" and "nan" too; the row's range then refuses them, naming the value.
+  const char* first = text.data();
+  const char* last = text.data() + text.size();
+  if (first != last && *first == '+' && last - first > 1 && first[1] != '-') ++first;
   double value = 0.0;
-  try {
-    value = std::stod(text, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
-  if (used == 0 || used != text.size()) throw Error(shown + " needs a number, not '" + text + "'");
+  const auto [end, error] = std::from_chars(first, last, value, std::chars_format::general);
+  if (first == last || error != std::errc() || end != last) throw Error(shown + " needs a number, not '" + text + "'");
   return value;
 }
+
+std::optional<bool> parse_switch_value(const std::string& text) {
+  for (const char* on : {"y", "Y", "yes", "Yes", "YES", "true", "True", "TRUE", "on", "On", "ON"})
+    if (text == on) return true;
+  for (const char* off : {"n", "N", "no", "No", "NO", "false", "False", "FALSE", "off", "Off", "OFF"})
+    if (text == off) return false;
+  return std::nullopt;
+}
+
+std::string switch_value_error(const std::string& shown, const std::string& value) {
+  return shown + " is a switch: give true or false, not '" + value + "'";
+}
+
+std::string given_twice_error(const std::string& shown) { return shown + " is given twice"; }
 
 std::string shortest_number(double value) {
   char buffer[32];

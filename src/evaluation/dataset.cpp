@@ -9,6 +9,7 @@
 
 #include "topocut/core/error.h"
 #include "topocut/core/format.h"
+#include "topocut/io/image_input.h"
 
 namespace topocut {
 
@@ -28,6 +29,17 @@ std::string status_line(std::size_t index, std::size_t total, const ImageResult&
 }
 
 }  // namespace
+
+std::optional<ExpectedSize> map_image_size(const DatasetMap& map, const DatasetRunOptions& options) {
+  for (const Variant variant : options.variants) {
+    try {
+      const ImageHeader header = read_image_size(map.image(variant), "map image", options.load.limits);
+      return ExpectedSize{header.width, header.height, "the map"};
+    } catch (const Error&) {
+    }
+  }
+  return std::nullopt;
+}
 
 void apply_scores(const SegmentationScores& scores, ImageResult& result) {
   result.ok = true;
@@ -123,7 +135,9 @@ std::vector<ImageResult> run_dataset(const std::vector<DatasetMap>& maps, const 
     std::optional<cv::Mat> rooms;
     std::string ground_truth_error;
     try {
-      rooms = ground_truth_rooms(load_ground_truth(map.ground_truth, options.load.limits), options.evaluation);
+      const std::optional<ExpectedSize> size = map_image_size(map, options);
+      rooms = ground_truth_rooms(load_ground_truth(map.ground_truth, options.load.limits, size ? &*size : nullptr),
+                                 options.evaluation);
     } catch (const std::exception& e) {
       ground_truth_error = e.what();
     }

@@ -1,4 +1,5 @@
 // The dataset runner fed with label images that another tool made (the peers' published results).
+#include <cstdint>
 #include <filesystem>
 
 #include "topocut/core/error.h"
@@ -30,13 +31,11 @@ ImageSegmenter labels_segmenter(const std::string& labels_folder, const DatasetR
     std::error_code ec;
     if (!fs::exists(path, ec)) throw MissingSegmentation("no label image " + path.string());
     Segmentation segmentation;
-    segmentation.labels = read_region_labels(path.string(), load.limits);
+    // The map first: its size is the one the label image's header must declare, so that a label image
+    // of the wrong size is refused before a pixel of it is decoded.
     const OccupancyGrid grid = load_map(image_path, load);
-    if (segmentation.labels.size() != grid.cells.size()) {
-      throw Error("label image " + path.string() + " is " + std::to_string(segmentation.labels.cols) + "x" +
-                  std::to_string(segmentation.labels.rows) + " pixels but the map is " + std::to_string(grid.width()) +
-                  "x" + std::to_string(grid.height()));
-    }
+    const ExpectedSize map_size{static_cast<std::uint64_t>(grid.width()), static_cast<std::uint64_t>(grid.height()), "the map"};
+    segmentation.labels = read_region_labels(path.string(), load.limits, &map_size);
     // Tools draw their regions over walls and unknown space in their own ways; only the free cells
     // are compared, as for topocut's own labels.
     segmentation.labels.setTo(0, grid.cells != kFree);

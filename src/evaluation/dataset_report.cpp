@@ -29,7 +29,11 @@ MeanStd mean_std(const std::vector<double>& values) {
 
 }  // namespace
 
-std::string markdown_table(const std::vector<std::vector<std::string>>& rows) {
+std::string markdown_table(const std::vector<std::vector<std::string>>& given) {
+  // Names come from file names: a control character in one must not reach the terminal.
+  std::vector<std::vector<std::string>> rows = given;
+  for (auto& row : rows)
+    for (std::string& cell : row) cell = terminal_text(cell);
   std::vector<std::size_t> widths;
   const auto display_width = [](const std::string& s) {
     // Count UTF-8 code points, not bytes, so that "±" pads like one character.
@@ -58,19 +62,6 @@ std::string markdown_table(const std::vector<std::vector<std::string>>& rows) {
   return out.str();
 }
 
-namespace {
-
-std::string csv_field(const std::string& text) {
-  if (text.find_first_of(",\"\n\r") == std::string::npos) return text;
-  std::string quoted = "\"";
-  for (const char c : text) {
-    if (c == '"') quoted += '"';
-    quoted += c;
-  }
-  return quoted + "\"";
-}
-
-}  // namespace
 
 VariantSummary summarize(const std::vector<ImageResult>& results, Variant variant) {
   VariantSummary summary;
@@ -190,7 +181,7 @@ std::string results_csv(const std::vector<ImageResult>& results) {
       "map,variant,rooms,gt_rooms,recall,precision,time_ms,matches,free_segments,free_rooms,f1,pq,segments_per_room,"
       "precision_inside,far_share,status\n";
   for (const ImageResult& r : results) {
-    csv += csv_field(r.map) + "," + to_string(r.variant) + ",";
+    csv += csv_cell(r.map) + "," + to_string(r.variant) + ",";
     if (r.ok) {
       const MatchedRooms& m = r.matched;
       csv += std::to_string(r.rooms) + "," + std::to_string(r.gt_rooms) + "," +

@@ -1,5 +1,7 @@
 #include "topocut/evaluation/incremental_dataset.h"
 
+#include <optional>
+
 #include <exception>
 
 #include "topocut/core/error.h"
@@ -18,7 +20,9 @@ std::vector<IncrementalImageResult> run_incremental_dataset(const std::vector<Da
     cv::Mat gt_rooms;
     std::string gt_error;
     try {
-      gt_rooms = ground_truth_rooms(load_ground_truth(map.ground_truth, options.run.load.limits), options.run.evaluation);
+      const std::optional<ExpectedSize> size = map_image_size(map, options.run);
+      gt_rooms = ground_truth_rooms(load_ground_truth(map.ground_truth, options.run.load.limits, size ? &*size : nullptr),
+                                    options.run.evaluation);
     } catch (const std::exception& e) {
       gt_error = e.what();
     }

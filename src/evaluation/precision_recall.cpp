@@ -18,8 +18,8 @@ using detail::contingency;
 using detail::counted_labels;
 using detail::to_int_labels;
 
-cv::Mat load_ground_truth(const std::string& path, const ImageLimits& limits) {
-  cv::Mat image = read_image(path, "ground truth", limits);
+cv::Mat load_ground_truth(const std::string& path, const ImageLimits& limits, const ExpectedSize* expected) {
+  cv::Mat image = read_image(path, "ground truth", limits, expected);
   if (image.depth() == CV_16U) {
     image.convertTo(image, CV_8U, 1.0 / 257.0);
   } else if (image.depth() != CV_8U) {

@@ -79,8 +79,8 @@ cv::Mat region_labels(const cv::Mat& image) {
   }
 }
 
-cv::Mat read_region_labels(const std::string& path, const ImageLimits& limits) {
-  const cv::Mat image = read_image(path, "label image", limits);
+cv::Mat read_region_labels(const std::string& path, const ImageLimits& limits, const ExpectedSize* expected) {
+  const cv::Mat image = read_image(path, "label image", limits, expected);
   try {
     return region_labels(image);
   } catch (const Error& e) {

@@ -5,6 +5,7 @@
 #include "topocut/core/error.h"
 #include "topocut/evaluation/precision_recall.h"
 #include "topocut/io/atomic_file.h"
+#include "topocut/io/image_input.h"
 
 namespace topocut {
 
@@ -12,11 +13,9 @@ std::string robot_made_name(const std::string& plan, std::uint32_t seed) { retur
 
 OccupancyGrid load_plan(const DatasetMap& plan, const MapLoadOptions& load, cv::Mat& rooms) {
   OccupancyGrid grid = load_map(plan.plain, load);
-  rooms = ground_truth_rooms(load_ground_truth(plan.ground_truth, load.limits));
-  if (rooms.size() != grid.cells.size())
-    throw Error("the ground truth " + plan.ground_truth + " (" + std::to_string(rooms.cols) + " x " +
-                std::to_string(rooms.rows) + ") differs in size from the plan (" + std::to_string(grid.width()) + " x " +
-                std::to_string(grid.height()) + ")");
+  // The ground truth's header is checked against the plan's size before it is decoded.
+  const ExpectedSize size{static_cast<std::uint64_t>(grid.width()), static_cast<std::uint64_t>(grid.height()), "the plan"};
+  rooms = ground_truth_rooms(load_ground_truth(plan.ground_truth, load.limits, &size));
   return grid;
 }
 

@@ -76,7 +76,8 @@ RoomDefects count_room_defects(const cv::Mat& labels, const OccupancyGrid& grid,
   cv::Mat ids;
   labels.convertTo(ids, CV_32S);
   const double cell_area = resolution * resolution;
-  const int radius = static_cast<int>(std::lround(options.thin_disc / 2.0 / resolution));
+  // A disc wider than the map fits in no room: clamped there, the same answer without its square.
+  const int radius = static_cast<int>(std::min(std::round(options.thin_disc / 2.0 / resolution), double(std::max(labels.cols, labels.rows))));
   const cv::Mat disc = cv::getStructuringElement(cv::MORPH_ELLIPSE, {2 * radius + 1, 2 * radius + 1});
   RoomDefects defects;
   // Without a single occupied cell (walls drawn in the unknown grey) walls and never-seen space
@@ -259,7 +260,7 @@ std::string format_defects_table(const std::vector<MapDefectResult>& results) {
 std::string defects_csv(const std::vector<MapDefectResult>& results) {
   std::string csv = "map,width,height,rooms,thin,specks,open,time_ms,floor_ms\n";
   for (const MapDefectResult& r : results) {
-    csv += r.map;
+    csv += csv_cell(r.map);
     if (r.ok) {
       csv += ',';
       csv += std::to_string(r.width) + "," + std::to_string(r.height) + "," + std::to_string(r.defects.rooms) + "," +

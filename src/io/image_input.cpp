@@ -212,8 +212,15 @@ ImageHeader read_image_header(std::string_view bytes, const std::string& source)
   return {*format, size->first, size->second};
 }
 
-void check_image_size(const ImageHeader& header, const ImageLimits& limits, const std::string& source) {
+void check_image_size(const ImageHeader& header, const ImageLimits& limits, const std::string& source,
+                      const ExpectedSize* expected) {
   validate(limits);
+  if (expected != nullptr && (header.width != expected->width || header.height != expected->height)) {
+    std::ostringstream text;
+    text << "image " << quoted(source) << " is " << header.width << " x " << header.height << " pixels but " << expected->of
+         << " is " << expected->width << " x " << expected->height;
+    throw Error(text.str());
+  }
   const double megapixels = static_cast<double>(header.width) * static_cast<double>(header.height) / 1e6;
   if (megapixels > limits.max_megapixels) {
     std::ostringstream text;
@@ -224,9 +231,10 @@ void check_image_size(const ImageHeader& header, const ImageLimits& limits, cons
   }
 }
 
-cv::Mat decode_image(std::string_view bytes, const std::string& source, const ImageLimits& limits) {
+cv::Mat decode_image(std::string_view bytes, const std::string& source, const ImageLimits& limits,
+                     const ExpectedSize* expected) {
   const ImageHeader header = read_image_header(bytes, source);
-  check_image_size(header, limits, source);
+  check_image_size(header, limits, source, expected);
   const codecs::DecodeBounds bounds{header.width, header.height};
   cv::Mat image;
   try {
@@ -258,8 +266,15 @@ std::uint64_t max_image_file_bytes(const ImageLimits& limits) {
   return static_cast<std::uint64_t>(std::min(bytes, 2147483647.0));
 }
 
-cv::Mat read_image(const std::string& path, const std::string& what, const ImageLimits& limits) {
-  return decode_image(read_input_file(path, what, max_image_file_bytes(limits)), path, limits);
+cv::Mat read_image(const std::string& path, const std::string& what, const ImageLimits& limits,
+                   const ExpectedSize* expected) {
+  return decode_image(read_input_file(path, what, max_image_file_bytes(limits)), path, limits, expected);
+}
+
+ImageHeader read_image_size(const std::string& path, const std::string& what, const ImageLimits& limits) {
+  const ImageHeader header = read_image_header(read_input_file(path, what, max_image_file_bytes(limits)), path);
+  check_image_size(header, limits, path);
+  return header;
 }
 
 }  // namespace topocut

@@ -1,5 +1,6 @@
 #include "topocut/map/binarize.h"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -36,7 +37,11 @@ cv::Mat free_space_mask(const OccupancyGrid& grid, const BinarizeOptions& option
     }
   }
   if (options.opening_size > 0.0) {
-    const int side = std::max(1, static_cast<int>(std::lround(options.opening_size / grid.resolution)));
+    const double side_cells = std::max(1.0, std::round(options.opening_size / grid.resolution));
+    // A square taller or wider than the map fits nowhere in it (beyond the edge is not free), so the
+    // opening leaves nothing: said without building a square of that side (100 km at 5 mm a cell).
+    if (side_cells > std::min(free.cols, free.rows)) return cv::Mat::zeros(free.size(), CV_8UC1);
+    const int side = static_cast<int>(side_cells);
     if (side > 1) {
       cv::Mat opened;
       cv::morphologyEx(free, opened, cv::MORPH_OPEN, cv::getStructuringElement(cv::MORPH_RECT, {side, side}),
@@ -45,7 +50,10 @@ cv::Mat free_space_mask(const OccupancyGrid& grid, const BinarizeOptions& option
     }
   }
   if (options.median_size > 0.0) {
-    int side = std::max(3, static_cast<int>(std::lround(options.median_size / grid.resolution)));
+    // A window more than twice the map's size sees nothing more of it: clamped there, so that its
+    // padded copy of the map stays the map's size.
+    const double widest = 2.0 * std::max(free.cols, free.rows) + 1.0;
+    int side = static_cast<int>(std::max(3.0, std::min(std::round(options.median_size / grid.resolution), widest)));
     if (side % 2 == 0) ++side;
     cv::Mat filtered;
     // medianBlur needs 8-bit input for windows above 5, which a 0/255 mask is.

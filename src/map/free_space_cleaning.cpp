@@ -125,9 +125,25 @@ RowRuns inside_building(const RowRuns& lost, const RowRuns& floor, const cv::Mat
   return subtract(lost, select_runs(open, outside));
 }
 
+// The bounding box of each 8-connected part of runs (the parts rays_of() judges one by one).
+std::vector<cv::Rect> part_boxes(const RowRuns& runs) {
+  int n = 0;
+  const std::vector<int> component = run_components(runs, true, n);
+  std::vector<cv::Rect> boxes(static_cast<std::size_t>(n));
+  std::size_t i = 0;
+  for (int y = 0; y < runs.height(); ++y) {
+    for (const CellRun& run : runs.row(y)) {
+      cv::Rect& box = boxes[static_cast<std::size_t>(component[i++])];
+      box = box.empty() ? cv::Rect(run.begin, y, run.end - run.begin, 1) : box | cv::Rect(run.begin, y, run.end - run.begin, 1);
+    }
+  }
+  return boxes;
+}
+
 // What the cleaning decides in its window, as runs.
 struct WindowCleaning {
   RowRuns floor, specks, lost, inside;  // specks: those that stay floor; inside: lost cells inside
+  std::vector<cv::Rect> thin_parts;     // boxes of the thin parts judged as rays or not
 };
 
 WindowCleaning clean_window(const RowRuns& free, const cv::Mat& grid_cells, double resolution,
@@ -139,7 +155,7 @@ WindowCleaning clean_window(const RowRuns& free, const cv::Mat& grid_cells, doub
   const RowRuns thin = radius > 0.5 ? subtract(solid, thick_part(solid, radius, static_cast<int>(std::ceil(radius / 2.0))))
                                     : no_runs(free);
   const RowRuns rays = thin.empty() ? thin : rays_of(thin, grid_cells);
-  WindowCleaning c{subtract(solid, rays), subtract(specks, rays), intersect(free, rays), no_runs(free)};
+  WindowCleaning c{subtract(solid, rays), subtract(specks, rays), intersect(free, rays), no_runs(free), part_boxes(thin)};
   if (options.inside_closing > 0.0 && !c.lost.empty())
     c.inside = inside_building(c.lost, c.floor, grid_cells, options.inside_closing / resolution);
   return c;
@@ -221,6 +237,7 @@ CleanedFreeSpace clean_free_space(const cv::Mat& free, const cv::Mat& grid_cells
   result.outside_cells = static_cast<int>(cell_count(c.lost) - cell_count(c.inside));
   result.speck_cells = static_cast<int>(cell_count(c.specks));
   result.window = window;
+  for (const cv::Rect& part : c.thin_parts) result.thin_parts.push_back(part + window.tl());
   return result;
 }
 

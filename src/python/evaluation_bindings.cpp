@@ -1,4 +1,5 @@
 // evaluate(): every score of a segmentation against a ground truth, as `topocut evaluate` reports it.
+#include <cmath>
 #include <cstdint>
 #include <limits>
 #include <optional>
@@ -8,6 +9,7 @@
 #include <pybind11/stl.h>
 
 #include "python/bindings.h"
+#include "python/state.h"
 #include "topocut/core/error.h"
 #include "topocut/evaluation/region_labels.h"
 #include "topocut/evaluation/segmentation_scores.h"
@@ -41,20 +43,42 @@ cv::Mat int_image(const py::array& a, const std::string& name) {
   return image;
 }
 
-cv::Mat labels_from(const py::object& labels) {
-  if (py::isinstance<py::str>(labels)) return read_region_labels(labels.cast<std::string>());
+// A label image given as an array: segment()'s own (a Segmentation or its labels as returned) in its
+// known row order, anything else as it is.
+cv::Mat labels_array(const py::object& labels) {
   if (std::optional<cv::Mat> own = segment_labels_top_down(labels)) return *own;  // segment()'s: its row order known
   return int_image(py::array::ensure(labels), "labels");
 }
 
-cv::Mat ground_truth_from(const py::object& ground_truth) {
-  if (py::isinstance<py::str>(ground_truth)) return load_ground_truth(ground_truth.cast<std::string>());
+ExpectedSize size_of(const cv::Mat& image, const char* of) {
+  return {static_cast<std::uint64_t>(image.cols), static_cast<std::uint64_t>(image.rows), of};
+}
+
+cv::Mat ground_truth_array(const py::object& ground_truth) {
   const py::array a = py::array::ensure(ground_truth);
   if (!a || a.dtype().kind() != 'u' || a.dtype().itemsize() != 1)
     throw Error("ground_truth must be a path or a uint8 grey image (pixels above 250 are free)");
   cv::Mat grey;
   int_image(a, "ground_truth").convertTo(grey, CV_8U);
   return grey;
+}
+
+// The label image and the ground truth, each an array or an image file: a file is read after the
+// other input fixed its size, so that a header declaring another size is refused before decoding.
+std::pair<cv::Mat, cv::Mat> labels_and_ground_truth(const py::object& labels, const py::object& ground_truth) {
+  const bool labels_file = py::isinstance<py::str>(labels), truth_file = py::isinstance<py::str>(ground_truth);
+  cv::Mat segments, truth;
+  if (!labels_file) segments = labels_array(labels);
+  if (!truth_file) truth = ground_truth_array(ground_truth);
+  if (truth_file) {
+    const std::optional<ExpectedSize> size = segments.empty() ? std::nullopt : std::optional(size_of(segments, "the labels array"));
+    truth = load_ground_truth(ground_truth.cast<std::string>(), {}, size ? &*size : nullptr);
+  }
+  if (labels_file) {
+    const ExpectedSize size = size_of(truth, "the ground truth");
+    segments = read_region_labels(labels.cast<std::string>(), {}, &size);
+  }
+  return {segments, truth};
 }
 
 // The free-pixel mask (empty: every pixel) and the resolution to score at.
@@ -71,8 +95,8 @@ std::pair<cv::Mat, double> free_from(const py::object& free, double resolution) 
 
 SegmentationScores evaluate_py(const py::object& labels, const py::object& ground_truth, const py::object& free,
                                double resolution, bool clip_to_free) {
-  cv::Mat segments = labels_from(labels);
-  const cv::Mat rooms = ground_truth_rooms(ground_truth_from(ground_truth));
+  auto [segments, truth] = labels_and_ground_truth(labels, ground_truth);
+  const cv::Mat rooms = ground_truth_rooms(truth);
   const auto [mask, scale] = free_from(free, resolution);
   py::gil_scoped_release release;
   if (clip_to_free && !mask.empty()) {
@@ -92,17 +116,65 @@ py::tuple scores_state(const SegmentationScores& s) {
                         s.precision_inside, s.far_share);
 }
 
-SegmentationScores scores_from(const py::tuple& t) {
-  if (t.size() != 4) throw std::runtime_error("not a topocut.Scores state");
-  const auto o = t[0].cast<py::tuple>();
-  const auto m = t[1].cast<py::tuple>();
+// A fraction of a state: a finite number in [0, 1] (a share or a mean of shares).
+double fraction(const py::handle& value, const char* field) {
+  double v = 0.0;
+  try {
+    v = value.cast<double>();
+  } catch (const py::cast_error&) {
+    throw pickle_error("Scores", std::string(field) + " must be a number");
+  }
+  if (!(v >= 0.0 && v <= 1.0)) throw pickle_error("Scores", std::string(field) + " must lie in [0, 1]");
+  return v;
+}
+
+// A count of a state: a whole number, not negative.
+int count(const py::handle& value, const char* field) {
+  long long v = -1;
+  try {
+    v = value.cast<long long>();
+  } catch (const py::cast_error&) {
+  }
+  if (v < 0 || v > std::numeric_limits<int>::max()) throw pickle_error("Scores", std::string(field) + " must be a count");
+  return static_cast<int>(v);
+}
+
+std::vector<double> fractions(const py::handle& values, const char* field) {
+  std::vector<double> out;
+  try {
+    for (const py::handle& v : values.cast<py::list>()) out.push_back(fraction(v, field));
+  } catch (const py::cast_error&) {
+    throw pickle_error("Scores", std::string(field) + " must be a list of numbers");
+  }
+  return out;
+}
+
+py::tuple tuple_of(const py::handle& value, std::size_t size, const char* field) {
+  if (!py::isinstance<py::tuple>(value) || py::len(value) != size)
+    throw pickle_error("Scores", std::string(field) + " must be a tuple of " + std::to_string(size));
+  return py::reinterpret_borrow<py::tuple>(value);
+}
+
+SegmentationScores scores_from(const py::handle& state) {
+  const py::tuple t = tuple_of(state, 4, "the state");
+  const py::tuple o = tuple_of(t[0], 6, "the overlap scores");
+  const py::tuple m = tuple_of(t[1], 9, "the matched rooms");
   SegmentationScores s;
-  s.overlap = {o[0].cast<double>(), o[1].cast<double>(), o[2].cast<int>(), o[3].cast<int>(),
-               o[4].cast<std::vector<double>>(), o[5].cast<std::vector<double>>()};
-  s.matched = {m[0].cast<int>(), m[1].cast<int>(), m[2].cast<int>(), m[3].cast<int>(), m[4].cast<int>(),
-               m[5].cast<double>(), m[6].cast<double>(), m[7].cast<double>(), m[8].cast<double>()};
-  s.precision_inside = t[2].cast<double>();
-  s.far_share = t[3].cast<double>();
+  s.overlap = {fraction(o[0], "precision"), fraction(o[1], "recall"), count(o[2], "segments"), count(o[3], "rooms"),
+               fractions(o[4], "a segment's precision"), fractions(o[5], "a room's recall")};
+  double iou_sum = 0.0, ratio = 0.0;
+  try {
+    iou_sum = m[5].cast<double>();
+    ratio = m[8].cast<double>();
+  } catch (const py::cast_error&) {
+    throw pickle_error("Scores", "the matched rooms' IoU sum and ratio must be numbers");
+  }
+  if (!(iou_sum >= 0.0 && std::isfinite(iou_sum)) || !(ratio >= 0.0 && std::isfinite(ratio)))
+    throw pickle_error("Scores", "the matched rooms' IoU sum and ratio must be finite and not negative");
+  s.matched = {count(m[0], "free segments"), count(m[1], "free rooms"), count(m[2], "matches"), count(m[3], "false positives"),
+               count(m[4], "false negatives"), iou_sum, fraction(m[6], "f1"), fraction(m[7], "pq"), ratio};
+  s.precision_inside = fraction(t[2], "the precision inside");
+  s.far_share = fraction(t[3], "the far share");
   return s;
 }
 
@@ -110,38 +182,40 @@ SegmentationScores scores_from(const py::tuple& t) {
 
 void bind_evaluation(py::module_& m) {
   py::class_<SegmentationScores>(m, "Scores", "A segmentation scored against a ground truth (fractions in [0, 1]).")
-      .def_property_readonly("recall", [](const SegmentationScores& s) { return s.overlap.recall; },
+      .def_property_readonly("recall", getter<SegmentationScores>([](const SegmentationScores& s) { return s.overlap.recall; }),
                              "Bormann's recall: mean over rooms R of max_S |S ∩ R| / |R|")
-      .def_property_readonly("precision", [](const SegmentationScores& s) { return s.overlap.precision; },
+      .def_property_readonly("precision", getter<SegmentationScores>([](const SegmentationScores& s) { return s.overlap.precision; }),
                              "Bormann's precision: mean over segments S of max_R |S ∩ R| / |S|")
-      .def_property_readonly("segments", [](const SegmentationScores& s) { return s.overlap.segments; },
+      .def_property_readonly("segments", getter<SegmentationScores>([](const SegmentationScores& s) { return s.overlap.segments; }),
                              "segments of more than 100 px (precision's)")
-      .def_property_readonly("rooms", [](const SegmentationScores& s) { return s.overlap.rooms; },
+      .def_property_readonly("rooms", getter<SegmentationScores>([](const SegmentationScores& s) { return s.overlap.rooms; }),
                              "ground-truth rooms of more than 100 px (recall's)")
-      .def_property_readonly("f1", [](const SegmentationScores& s) { return s.matched.f1; },
+      .def_property_readonly("f1", getter<SegmentationScores>([](const SegmentationScores& s) { return s.matched.f1; }),
                              "matched rooms: TP / (TP + (FP + FN) / 2)")
-      .def_property_readonly("pq", [](const SegmentationScores& s) { return s.matched.pq; },
+      .def_property_readonly("pq", getter<SegmentationScores>([](const SegmentationScores& s) { return s.matched.pq; }),
                              "panoptic quality: sum of the matches' IoU / (TP + (FP + FN) / 2)")
-      .def_property_readonly("matches", [](const SegmentationScores& s) { return s.matched.matches; },
+      .def_property_readonly("matches", getter<SegmentationScores>([](const SegmentationScores& s) { return s.matched.matches; }),
                              "TP: segment-room pairs with IoU above 0.5 over the free pixels")
-      .def_property_readonly("false_positives", [](const SegmentationScores& s) { return s.matched.false_positives; })
-      .def_property_readonly("false_negatives", [](const SegmentationScores& s) { return s.matched.false_negatives; })
-      .def_property_readonly("free_segments", [](const SegmentationScores& s) { return s.matched.segments; },
+      .def_property_readonly("false_positives", getter<SegmentationScores>([](const SegmentationScores& s) { return s.matched.false_positives; }))
+      .def_property_readonly("false_negatives", getter<SegmentationScores>([](const SegmentationScores& s) { return s.matched.false_negatives; }))
+      .def_property_readonly("free_segments", getter<SegmentationScores>([](const SegmentationScores& s) { return s.matched.segments; }),
                              "segments of more than 100 free pixels")
-      .def_property_readonly("free_rooms", [](const SegmentationScores& s) { return s.matched.rooms; },
+      .def_property_readonly("free_rooms", getter<SegmentationScores>([](const SegmentationScores& s) { return s.matched.rooms; }),
                              "ground-truth rooms of more than 100 free pixels")
-      .def_property_readonly("segments_per_room", [](const SegmentationScores& s) { return s.matched.segments_per_room; },
+      .def_property_readonly("segments_per_room", getter<SegmentationScores>([](const SegmentationScores& s) { return s.matched.segments_per_room; }),
                              "free_segments / free_rooms")
-      .def_property_readonly("precision_inside", [](const SegmentationScores& s) { return s.precision_inside; },
+      .def_property_readonly("precision_inside", getter<SegmentationScores>([](const SegmentationScores& s) { return s.precision_inside; }),
                              "precision with every segment clipped to the ground truth's rooms")
-      .def_property_readonly("far_share", [](const SegmentationScores& s) { return s.far_share; },
+      .def_property_readonly("far_share", getter<SegmentationScores>([](const SegmentationScores& s) { return s.far_share; }),
                              "share of labelled pixels more than 0.5 m from every ground-truth room")
-      .def("__repr__", [](const SegmentationScores& s) {
+      .def("__repr__", [](const py::object& self) {
+        const SegmentationScores& s = state_of<SegmentationScores>(self);
         return "<topocut.Scores recall " + std::to_string(s.overlap.recall) + ", precision " +
                std::to_string(s.overlap.precision) + ", f1 " + std::to_string(s.matched.f1) + ", pq " +
                std::to_string(s.matched.pq) + ">";
       })
-      .def(py::pickle(&scores_state, &scores_from));
+      .def(py::pickle([](const py::object& self) { return scores_state(state_of<SegmentationScores>(self)); },
+                      [](const py::tuple& t) { return scores_from(t); }));
   m.def("evaluate", &evaluate_py, py::arg("labels"), py::arg("ground_truth"), py::arg("free") = py::none(),
         py::arg("resolution") = 0.05, py::arg("clip_to_free") = true,
         "Scores a segmentation against a ground truth as `topocut evaluate` does; returns Scores.\n\n"

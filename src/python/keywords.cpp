@@ -90,12 +90,15 @@ py::list keywords(const std::string& kind) {
   py::list out;
   if (kind == "options" || kind == "segment") {
     add_segment_rows(out, SegmentSettings{});
-    out.append(keyword("merge_model", "str", py::str(""), "the text of a merge model to merge rooms with (empty: no learned model)"));
+    out.append(keyword("merge_model", "str | None", py::none(),
+                       "the text of a merge model to merge rooms with (None: the shipped one; no_learned_merge=True: none)"));
   }
   if (kind == "segment" || kind == "grid") add_grid_reading(out);
   if (kind == "incremental") {
     add_incremental(out);
     add_segment_rows(out, SegmentSettings{IncrementalOptions{}.segment, {}});
+    out.append(keyword("merge_model", "str | None", py::none(),
+                       "the text of a merge model to merge rooms with (None: the shipped one; no_learned_merge=True: none)"));
   }
   return out;
 }

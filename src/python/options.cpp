@@ -1,9 +1,14 @@
 #include "python/options.h"
 
+#include <algorithm>
+#include <cstdint>
+
 #include <pybind11/stl.h>
 
 #include "topocut/core/error.h"
+#include "topocut/core/input_file.h"
 #include "topocut/core/option_names.h"
+#include "topocut/core/option_table.h"
 #include "topocut/io/map_load_flags.h"
 #include "topocut/segmentation/merge_model.h"
 #include "topocut/segmentation/segment_switches.h"
@@ -42,12 +47,28 @@ std::vector<std::string> segment_keywords() {
   return names;
 }
 
+// Whether value is True or False (Python's or numpy's).
+bool is_bool(const py::handle& value) {
+  return py::isinstance<py::bool_>(value) || py::str(py::type::handle_of(value).attr("__name__")).cast<std::string>() == "bool_";
+}
+
+// A number keyword's value: a number (Python's or numpy's; not a bool, not a text), as the command
+// line reads only numbers; the row's range then checks it, with the command's message.
 double number(const py::handle& value, const std::string& name) {
+  const std::string refused = name + " needs a number, not '" + py::str(value).cast<std::string>() + "'";
+  if (is_bool(value) || py::isinstance<py::str>(value) || py::isinstance<py::bytes>(value)) throw Error(refused);
   try {
     return value.cast<double>();
   } catch (const py::cast_error&) {
-    throw Error(name + " must be a number");
+    throw Error(refused);
   }
+}
+
+// A switch keyword's value: True or False (numpy's bool too), as the command line's switches and
+// --config's true and false.
+bool switch_value(const py::handle& value, const std::string& name) {
+  if (!is_bool(value)) throw Error(switch_value_error(name, py::str(value).cast<std::string>()));
+  return py::bool_(py::reinterpret_borrow<py::object>(value));
 }
 
 template <typename T>
@@ -67,6 +88,7 @@ T pop(py::dict& kwargs, const char* name, T fallback) {
 template <typename Target>
 void set_keywords(const std::vector<OptionRow<Target>>& rows, const py::dict& kwargs, Target& target,
                   const std::vector<std::string>& known) {
+  std::vector<const OptionRow<Target>*> given;  // robot_radius and **{"robot-radius": ...} name one option
   for (const auto& [key, value] : kwargs) {
     const std::string name = py::str(key);
     const OptionRow<Target>* row = find_keyword(rows, name);
@@ -75,8 +97,10 @@ void set_keywords(const std::vector<OptionRow<Target>>& rows, const py::dict& kw
       throw py::type_error("unexpected keyword argument '" + name + "'" + (meant.empty() ? "" : " (did you mean " + meant + "?)") +
                            "; options are: " + comma_separated(known));
     }
+    if (std::find(given.begin(), given.end(), row) != given.end()) throw Error(given_twice_error(name));
+    given.push_back(row);
     if (row->is_switch()) {
-      row->set(target, py::bool_(py::reinterpret_borrow<py::object>(value)) ? 1.0 : 0.0);
+      row->set(target, switch_value(value, name) ? 1.0 : 0.0);
     } else {
       set_option(*row, target, number(value, name), name);
     }
@@ -135,15 +159,33 @@ void apply(const GridReading& reading, double resolution, const py::handle& orig
   array.occupied_max = reading.occupied_threshold;
 }
 
+namespace {
+
+// merge_model= of kwargs (popped) in settings: None or absent keeps the shipped model; a text is
+// parsed (within the limits of every front end) and must not meet learned merging switched off.
+void take_merge_model(py::dict& kwargs, SegmentSettings& settings) {
+  if (!kwargs.contains("merge_model")) return;
+  const py::object value = kwargs["merge_model"];
+  PyDict_DelItemString(kwargs.ptr(), "merge_model");
+  if (value.is_none()) return;
+  if (!py::isinstance<py::str>(value)) throw Error("merge_model must be a model's text (a str) or None");
+  // Measured before it is copied: a 190 MiB text cost 1.5 GB on its way to the parser's limit.
+  if (static_cast<std::uint64_t>(PyUnicode_GetLength(value.ptr())) > kMaxMergeModelBytes)
+    throw Error("merge model: " + std::to_string(PyUnicode_GetLength(value.ptr())) + " characters, more than the limit of " +
+                byte_size_text(kMaxMergeModelBytes));
+  const std::string text = value.cast<std::string>();
+  if (text.empty()) throw Error("merge_model is empty: give a model's text, or None for the shipped model");
+  settings.options.merge.model = parse_merge_model(text);
+  settings.switches.merge_model_given = true;
+}
+
+}  // namespace
+
 SegmentOptions segment_options(const py::dict& kwargs) {
   py::dict rest(kwargs);
-  const std::string model = pop<std::string>(rest, "merge_model", "");
-  SegmentOptions options = settings_from(rest, SegmentSettings{});
-  if (!model.empty()) {
-    options.merge.model = parse_merge_model(model);
-    options.merge.learned = true;
-  }
-  return options;
+  SegmentSettings settings;
+  take_merge_model(rest, settings);
+  return settings_from(rest, settings);
 }
 
 IncrementalOptions incremental_options(py::dict kwargs) {
@@ -156,7 +198,9 @@ IncrementalOptions incremental_options(py::dict kwargs) {
   o.speck_size = pop<double>(kwargs, "speck_size", o.speck_size);
   o.split_after = pop<int>(kwargs, "split_after", o.split_after);
   o.merge_after = pop<int>(kwargs, "merge_after", o.merge_after);
-  o.segment = settings_from(kwargs, SegmentSettings{o.segment, {}});
+  SegmentSettings settings{o.segment, {}};
+  take_merge_model(kwargs, settings);
+  o.segment = settings_from(kwargs, settings);
   return o;
 }
 

@@ -1,6 +1,9 @@
 // segment(), load_map(), IncrementalSegmenter and their result types (picklable: a state tuple each).
+#include <cmath>
+#include <limits>
 #include <memory>
 #include <mutex>
+#include <type_traits>
 #include <vector>
 
 #include <pybind11/numpy.h>
@@ -9,6 +12,8 @@
 #include "python/arrays.h"
 #include "python/bindings.h"
 #include "python/options.h"
+#include "python/state.h"
+#include "topocut/core/value_ranges.h"
 #include "topocut/io/map_loader.h"
 #include "topocut/io/rooms_geojson.h"
 #include "topocut/io/rooms_json.h"
@@ -38,10 +43,64 @@ struct Map {
 
 py::tuple xy(const Point2& p) { return py::make_tuple(p.x, p.y); }
 
-Point2 point_of(const py::handle& pair) {
-  const auto v = pair.cast<std::pair<double, double>>();
-  return {v.first, v.second};
-}
+// The checks of a pickle state, field by field: a wrong type, a number that is not finite or out of
+// range, an array of the wrong shape is a ValueError naming the type and the field, never an object
+// whose methods read outside its arrays.
+class StateReader {
+ public:
+  StateReader(const py::handle& state, const char* type, std::size_t fields) : type_(type) {
+    if (!py::isinstance<py::tuple>(state)) throw pickle_error(type_, "a tuple expected");
+    tuple_ = py::reinterpret_borrow<py::tuple>(state);
+    if (tuple_.size() != fields) throw pickle_error(type_, std::to_string(fields) + " fields expected, got " + std::to_string(tuple_.size()));
+  }
+  py::handle operator[](std::size_t i) const { return tuple_[i]; }
+  template <typename T>
+  T get(std::size_t i, const char* field) const {
+    if constexpr (std::is_base_of_v<py::object, T>) {  // a list, tuple or array: that type itself, not converted
+      if (!py::isinstance<T>(tuple_[i])) throw pickle_error(type_, std::string(field) + " has the wrong type");
+      return py::reinterpret_borrow<T>(tuple_[i]);
+    }
+    try {
+      return tuple_[i].cast<T>();
+    } catch (const py::cast_error&) {
+      throw pickle_error(type_, std::string(field) + " has the wrong type");
+    }
+  }
+  double finite(std::size_t i, const char* field) const { return finite_value(tuple_[i], field); }
+  double finite_value(const py::handle& value, const char* field) const {
+    if (!py::isinstance<py::int_>(value) && !py::isinstance<py::float_>(value)) throw pickle_error(type_, std::string(field) + " must be a number");
+    const double v = value.cast<double>();
+    if (!std::isfinite(v)) throw pickle_error(type_, std::string(field) + " must be finite");
+    return v;
+  }
+  double non_negative(std::size_t i, const char* field) const {
+    const double v = finite(i, field);
+    if (v < 0.0) throw pickle_error(type_, std::string(field) + " must not be negative");
+    return v;
+  }
+  int id(std::size_t i, const char* field) const {
+    const long long v = get<long long>(i, field);
+    if (v < 1 || v > std::numeric_limits<int>::max()) throw pickle_error(type_, std::string(field) + " must be a room id (1 or more)");
+    return static_cast<int>(v);
+  }
+  Point2 point(std::size_t i, const char* field) const {
+    const py::tuple pair = get<py::tuple>(i, field);
+    if (pair.size() != 2) throw pickle_error(type_, std::string(field) + " must be (x, y)");
+    return {finite_value(pair[0], field), finite_value(pair[1], field)};
+  }
+  std::vector<Point2> points(const py::handle& array, const char* field) const {
+    try {
+      return points_from(array, field);
+    } catch (const Error& e) {
+      throw pickle_error(type_, e.what());
+    }
+  }
+  const char* type() const { return type_; }
+
+ private:
+  const char* type_;
+  py::tuple tuple_;
+};
 
 // Pickle states: plain tuples of numbers, arrays and strings, read back field by field.
 py::tuple room_state(const RoomView& r) {
@@ -51,16 +110,16 @@ py::tuple room_state(const RoomView& r) {
                         xy(r.room.centroid), xy(r.placement.inside), xy(r.placement.min), xy(r.placement.max));
 }
 
-RoomView room_from(const py::tuple& t) {
-  if (t.size() != 9) throw std::runtime_error("not a topocut.Room state");
+RoomView room_from(const py::handle& state) {
+  const StateReader t(state, "Room", 9);
   RoomView r;
-  r.room.id = t[0].cast<int>();
-  r.room.polygon.outer = points_from(t[1], "outer");
-  for (const py::handle& h : t[2].cast<py::list>()) r.room.polygon.holes.push_back(points_from(h, "hole"));
-  r.room.area = t[3].cast<double>();
-  r.room.labelled_area = t[4].cast<double>();
-  r.room.centroid = point_of(t[5]);
-  r.placement = {point_of(t[6]), point_of(t[7]), point_of(t[8])};
+  r.room.id = t.id(0, "the id");
+  r.room.polygon.outer = t.points(t[1], "the outer ring");
+  for (const py::handle& h : t.get<py::list>(2, "the holes")) r.room.polygon.holes.push_back(t.points(h, "a hole"));
+  r.room.area = t.non_negative(3, "the area");
+  r.room.labelled_area = t.non_negative(4, "the labelled area");
+  r.room.centroid = t.point(5, "the centroid");
+  r.placement = {t.point(6, "the inside point"), t.point(7, "the bounding box"), t.point(8, "the bounding box")};
   return r;
 }
 
@@ -68,16 +127,17 @@ py::tuple passage_state(const Passage& p) {
   return py::make_tuple(p.room_a, p.room_b, xy(p.cut.a), xy(p.cut.b), p.width, p.door, static_cast<int>(p.rule));
 }
 
-Passage passage_from(const py::tuple& t) {
-  if (t.size() != 7) throw std::runtime_error("not a topocut.Passage state");
+Passage passage_from(const py::handle& state) {
+  const StateReader t(state, "Passage", 7);
   Passage p;
-  p.room_a = t[0].cast<int>();
-  p.room_b = t[1].cast<int>();
-  p.cut = {point_of(t[2]), point_of(t[3])};
-  p.width = t[4].cast<double>();
-  p.door = t[5].cast<bool>();
-  const int rule = t[6].cast<int>();
-  if (rule < 0 || rule > static_cast<int>(CutRule::kDecomposition)) throw std::runtime_error("not a topocut.Passage state");
+  p.room_a = t.id(0, "room a");
+  p.room_b = t.id(1, "room b");
+  p.cut = {t.point(2, "the cut"), t.point(3, "the cut")};
+  p.width = t.non_negative(4, "the width");
+  if (!py::isinstance<py::bool_>(t[5])) throw pickle_error("Passage", "the door flag must be True or False");
+  p.door = t.get<bool>(5, "the door flag");
+  const long long rule = t.get<long long>(6, "the rule");
+  if (rule < 0 || rule > static_cast<int>(CutRule::kDecomposition)) throw pickle_error("Passage", "no such rule");
   p.rule = static_cast<CutRule>(rule);
   return p;
 }
@@ -96,23 +156,73 @@ py::tuple result_state(const Result& r) {
                         g.frame.row_order == RowOrder::kBottomUp ? "bottom-up" : "top-down", g.frame.yaw, rooms, passages);
 }
 
-Result result_from(const py::tuple& t) {
-  if (t.size() != 7) throw std::runtime_error("not a topocut.Segmentation state");
+// The label image of a state: a 2-D array of 32-bit integers, none negative.
+cv::Mat labels_from(const StateReader& t) {
+  const py::array given = t.get<py::array>(0, "the labels");
+  const char kind = given.dtype().kind();
+  if ((kind != 'i' && kind != 'u') || given.ndim() != 2 || given.shape(0) < 1 || given.shape(1) < 1 ||
+      given.shape(0) > (1 << 30) || given.shape(1) > (1 << 30) || given.shape(0) * given.shape(1) >= (1ll << 31))
+    throw pickle_error(t.type(), "the labels must be a non-empty 2-D array of integers");
+  using Labels = py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>;
+  const Labels labels = Labels::ensure(given);
+  if (!labels) throw pickle_error(t.type(), "the labels must be integers");
+  cv::Mat out(static_cast<int>(labels.shape(0)), static_cast<int>(labels.shape(1)), CV_32SC1);
+  const std::int64_t* in = labels.data();
+  std::int32_t* cell = out.ptr<std::int32_t>();
+  for (py::ssize_t i = 0; i < labels.size(); ++i) {
+    if (in[i] < 0 || in[i] > std::numeric_limits<std::int32_t>::max()) throw pickle_error(t.type(), "a label is negative or too large");
+    cell[i] = static_cast<std::int32_t>(in[i]);
+  }
+  return out;
+}
+
+Result result_from(const py::handle& state) {
+  const StateReader t(state, "Segmentation", 7);
   auto out = std::make_shared<GridSegmentation>();
-  const auto labels = t[0].cast<py::array_t<std::int32_t, py::array::c_style | py::array::forcecast>>();
-  if (labels.ndim() != 2) throw std::runtime_error("not a topocut.Segmentation state");
-  out->segmentation.labels = cv::Mat(static_cast<int>(labels.shape(0)), static_cast<int>(labels.shape(1)), CV_32SC1);
-  std::copy(labels.data(), labels.data() + labels.size(), out->segmentation.labels.ptr<std::int32_t>());
-  out->segmentation.resolution = t[1].cast<double>();
-  out->segmentation.origin = point_of(t[2]);
-  out->frame = {t[3].cast<std::string>() == "bottom-up" ? RowOrder::kBottomUp : RowOrder::kTopDown, t[4].cast<double>()};
-  for (const py::handle& room : t[5].cast<py::list>()) {
-    const RoomView view = room_from(room.cast<py::tuple>());
-    out->segmentation.rooms.push_back(view.room);
+  Segmentation& s = out->segmentation;
+  s.labels = labels_from(t);
+  s.resolution = t.finite(1, "the resolution");
+  s.origin = t.point(2, "the origin");
+  try {
+    check_resolution(s.resolution, "the resolution");
+    check_world_coordinate(s.origin.x, "the origin's x");
+    check_world_coordinate(s.origin.y, "the origin's y");
+  } catch (const Error& e) {
+    throw pickle_error(t.type(), e.what());
+  }
+  const std::string order = t.get<std::string>(3, "the row order");
+  if (order != "bottom-up" && order != "top-down") throw pickle_error(t.type(), "the row order must be 'bottom-up' or 'top-down'");
+  out->frame = {order == "bottom-up" ? RowOrder::kBottomUp : RowOrder::kTopDown, t.finite(4, "the yaw")};
+  for (const py::handle& room : t.get<py::list>(5, "the rooms")) {
+    const RoomView view = room_from(room);
+    if (!s.rooms.empty() && view.room.id <= s.rooms.back().id) throw pickle_error(t.type(), "the rooms must be sorted by id, each once");
+    s.rooms.push_back(view.room);
     out->placements.push_back(view.placement);
   }
-  for (const py::handle& p : t[6].cast<py::list>()) out->segmentation.passages.push_back(passage_from(p.cast<py::tuple>()));
+  for (const py::handle& p : t.get<py::list>(6, "the passages")) s.passages.push_back(passage_from(p));
   return {out};
+}
+
+py::tuple map_state(const Map& map) { return py::make_tuple(map.grid, map.resolution, map.origin, map.cells); }
+
+Map map_from(const py::handle& state) {
+  const StateReader t(state, "Map", 4);
+  const py::array given = t.get<py::array>(0, "the grid");
+  if (!(given.dtype().kind() == 'i' && given.dtype().itemsize() == 1) || given.ndim() != 2 || given.shape(0) < 1 || given.shape(1) < 1)
+    throw pickle_error(t.type(), "the grid must be a non-empty 2-D int8 array");
+  const auto grid = py::array_t<std::int8_t, py::array::c_style>::ensure(given);
+  for (py::ssize_t i = 0; i < grid.size(); ++i)
+    if (grid.data()[i] < -1 || grid.data()[i] > 100) throw pickle_error(t.type(), "a cell is not -1 or 0..100");
+  const double resolution = t.finite(1, "the resolution");
+  const py::tuple origin = t.get<py::tuple>(2, "the origin");
+  if (origin.size() != 3) throw pickle_error(t.type(), "the origin must be (x, y, yaw)");
+  for (const py::handle& v : origin) t.finite_value(v, "the origin");
+  try {
+    check_resolution(resolution, "the resolution");
+  } catch (const Error& e) {
+    throw pickle_error(t.type(), e.what());
+  }
+  return Map{grid, resolution, origin, t.get<std::string>(3, "the cells")};
 }
 
 // The room holding (x, y) of the map frame, or None: the library's room_at().
@@ -278,71 +388,83 @@ class PyIncremental {
 
 void bind_results(py::module_& m) {
   py::class_<RoomView>(m, "Room", "A room: id (its label), polygon in the map frame (metres), area, centroid, a point inside, bounding box.")
-      .def_property_readonly("id", [](const RoomView& r) { return r.room.id; },
+      .def_property_readonly("id", getter<RoomView>([](const RoomView& r) { return r.room.id; }),
                              "the room's id: its value in the Segmentation's labels (1..N; 0 there is no room)")
-      .def_property_readonly("area", [](const RoomView& r) { return r.room.area; }, "m², of the polygon (outer minus holes), as every output's area")
-      .def_property_readonly("labelled_area", [](const RoomView& r) { return r.room.labelled_area; },
+      .def_property_readonly("area", getter<RoomView>([](const RoomView& r) { return r.room.area; }),
+                             "m², of the polygon (outer minus holes), as every output's area")
+      .def_property_readonly("labelled_area", getter<RoomView>([](const RoomView& r) { return r.room.labelled_area; }),
                              "m², of the room's labelled cells (count of labels == id times the cell area)")
-      .def_property_readonly("centroid", [](const RoomView& r) { return xy(r.room.centroid); }, "(x, y) of the labelled cells")
-      .def_property_readonly("inside", [](const RoomView& r) { return xy(r.placement.inside); },
+      .def_property_readonly("centroid", getter<RoomView>([](const RoomView& r) { return xy(r.room.centroid); }),
+                             "(x, y) of the labelled cells")
+      .def_property_readonly("inside", getter<RoomView>([](const RoomView& r) { return xy(r.placement.inside); }),
                              "(x, y) of the room's cell farthest from its edge: always in the room, a place for its name")
-      .def_property_readonly("bbox", [](const RoomView& r) {
+      .def_property_readonly("bbox", getter<RoomView>([](const RoomView& r) {
         return py::make_tuple(r.placement.min.x, r.placement.min.y, r.placement.max.x, r.placement.max.y);
-      }, "(xmin, ymin, xmax, ymax) of the polygon")
-      .def_property_readonly("outer", [](const RoomView& r) { return points_array(r.room.polygon.outer); },
+      }), "(xmin, ymin, xmax, ymax) of the polygon")
+      .def_property_readonly("outer", getter<RoomView>([](const RoomView& r) { return points_array(r.room.polygon.outer); }),
                              "outer ring, (n, 2) array, counter-clockwise, not closed")
-      .def_property_readonly("holes", [](const RoomView& r) {
+      .def_property_readonly("holes", getter<RoomView>([](const RoomView& r) {
         py::list holes;
         for (const Ring& h : r.room.polygon.holes) holes.append(points_array(h));
         return holes;
-      }, "list of (n, 2) arrays, clockwise")
-      .def("__repr__", [](const RoomView& r) {
+      }), "list of (n, 2) arrays, clockwise")
+      .def("__repr__", [](const py::object& self) {
+        const RoomView& r = state_of<RoomView>(self);
         return "<topocut.Room " + std::to_string(r.room.id) + ", " + std::to_string(r.room.area) + " m²>";
       })
-      .def(py::pickle(&room_state, [](const py::tuple& t) { return room_from(t); }));
+      .def(py::pickle([](const py::object& self) { return room_state(state_of<RoomView>(self)); },
+                      [](const py::tuple& t) { return room_from(t); }));
   py::class_<Passage>(m, "Passage", "A passage between two rooms: the cut that separates them.")
-      .def_property_readonly("rooms", [](const Passage& p) { return py::make_tuple(p.room_a, p.room_b); }, "(room a, room b), a < b")
-      .def_property_readonly("cut", [](const Passage& p) { return points_array({p.cut.a, p.cut.b}); }, "(2, 2) array: the cut's end points")
-      .def_property_readonly("width", [](const Passage& p) { return p.width; }, "metres")
-      .def_property_readonly("kind", [](const Passage& p) { return passage_kind(p); },
+      .def_property_readonly("rooms", getter<Passage>([](const Passage& p) { return py::make_tuple(p.room_a, p.room_b); }),
+                             "(room a, room b), a < b")
+      .def_property_readonly("cut", getter<Passage>([](const Passage& p) { return points_array({p.cut.a, p.cut.b}); }),
+                             "(2, 2) array: the cut's end points")
+      .def_property_readonly("width", getter<Passage>([](const Passage& p) { return p.width; }), "metres")
+      .def_property_readonly("kind", getter<Passage>([](const Passage& p) { return std::string(passage_kind(p)); }),
                              "'door' (a narrow gap in a wall) or 'opening' (a wider one)")
-      .def_property_readonly("rule", [](const Passage& p) { return to_string(p.rule); },
+      .def_property_readonly("rule", getter<Passage>([](const Passage& p) { return to_string(p.rule); }),
                              "the pipeline rule that made the cut: 'door', 'wall-opening', 'island-cut', 'wall-line' or 'decomposition'")
-      .def("__repr__", [](const Passage& p) {
+      .def("__repr__", [](const py::object& self) {
+        const Passage& p = state_of<Passage>(self);
         return "<topocut.Passage " + std::to_string(p.room_a) + "-" + std::to_string(p.room_b) + ", " + passage_kind(p) + ">";
       })
-      .def(py::pickle(&passage_state, [](const py::tuple& t) { return passage_from(t); }));
+      .def(py::pickle([](const py::object& self) { return passage_state(state_of<Passage>(self)); },
+                      [](const py::tuple& t) { return passage_from(t); }));
   py::class_<Result>(m, "Segmentation", "The rooms of a grid: labels, rooms, passages.")
-      .def_property_readonly("labels", [](const Result& r) { return labels_view(r.result); },
+      .def_property_readonly("labels", getter<Result>([](const Result& r) { return labels_view(r.result); }),
                              "int32 array, the grid's shape and row order: 0 no room, else the room id (read-only view, no copy);\n"
                              "evaluate() takes it as it is (it knows this row order)")
-      .def_property_readonly("rooms", [](const Result& r) { return rooms_of(r.result); }, "list of Room, by id")
-      .def_property_readonly("passages", [](const Result& r) { return r.result->segmentation.passages; }, "list of Passage")
-      .def_property_readonly("resolution", [](const Result& r) { return r.result->segmentation.resolution; })
-      .def_property_readonly("origin", [](const Result& r) { return xy(r.result->segmentation.origin); },
+      .def_property_readonly("rooms", getter<Result>([](const Result& r) { return rooms_of(r.result); }), "list of Room, by id")
+      .def_property_readonly("passages", getter<Result>([](const Result& r) { return r.result->segmentation.passages; }),
+                             "list of Passage")
+      .def_property_readonly("resolution", getter<Result>([](const Result& r) { return r.result->segmentation.resolution; }))
+      .def_property_readonly("origin", getter<Result>([](const Result& r) { return xy(r.result->segmentation.origin); }),
                              "(x, y) of the grid's lower-left corner, map frame")
-      .def("room_at", &room_at_py, py::arg("x"), py::arg("y"),
+      .def("room_at", [](const py::object& self, double x, double y) { return room_at_py(state_of<Result>(self), x, y); },
+           py::arg("x"), py::arg("y"),
            "The Room whose labelled cell holds the point (x, y) of the map frame (metres), or None when the\n"
            "point is on no room's cell (an obstacle, unknown space, off the grid): `topocut segment --at X,Y`.")
-      .def("to_json", [](const Result& r) { return rooms_to_json(r.result->segmentation, r.result->placements); },
-           "The rooms JSON the topocut command writes with --out-json (metres, map frame).")
-      .def("to_geojson", [](const Result& r) { return rooms_to_geojson(r.result->segmentation, r.result->placements); },
-           "The GeoJSON FeatureCollection the topocut command writes with --out-geojson (map frame, metres):\n"
-           "rooms as Polygons (RFC 7946 ring order, closed rings), passages as LineStrings.")
-      .def(py::pickle(&result_state, [](const py::tuple& t) { return result_from(t); }));
+      .def("to_json", [](const py::object& self) {
+        const Result& r = state_of<Result>(self);
+        return rooms_to_json(r.result->segmentation, r.result->placements);
+      }, "The rooms JSON the topocut command writes with --out-json (metres, map frame).")
+      .def("to_geojson", [](const py::object& self) {
+        const Result& r = state_of<Result>(self);
+        return rooms_to_geojson(r.result->segmentation, r.result->placements);
+      }, "The GeoJSON FeatureCollection the topocut command writes with --out-geojson (map frame, metres):\n"
+         "rooms as Polygons (RFC 7946 ring order, closed rings), passages as LineStrings.")
+      .def(py::pickle([](const py::object& self) { return result_state(state_of<Result>(self)); },
+                      [](const py::tuple& t) { return result_from(t); }));
   py::class_<Map>(m, "Map", "A loaded map: grid (int8, -1 unknown / 0 free / 100 occupied, row 0 at the origin as in ROS), resolution, origin.")
-      .def_readonly("grid", &Map::grid,
-                    "int8 array (height, width): -1 unknown, 0 free, 100 occupied; row 0 is the row at the origin\n"
-                    "(the bottom of the image, as nav_msgs/OccupancyGrid): segment() takes it as it is")
-      .def_readonly("resolution", &Map::resolution, "metres per cell")
-      .def_readonly("origin", &Map::origin, "(x, y, yaw) of the lower-left corner")
-      .def_readonly("cells", &Map::cells, "how the file's values were read (palette or thresholds)")
-      .def(py::pickle([](const Map& map) { return py::make_tuple(map.grid, map.resolution, map.origin, map.cells); },
-                      [](const py::tuple& t) {
-                        if (t.size() != 4) throw std::runtime_error("not a topocut.Map state");
-                        return Map{t[0].cast<py::array_t<std::int8_t>>(), t[1].cast<double>(), t[2].cast<py::tuple>(),
-                                   t[3].cast<std::string>()};
-                      }));
+      .def_property_readonly("grid", getter<Map>([](const Map& map) { return map.grid; }),
+                             "int8 array (height, width): -1 unknown, 0 free, 100 occupied; row 0 is the row at the origin\n"
+                             "(the bottom of the image, as nav_msgs/OccupancyGrid): segment() takes it as it is")
+      .def_property_readonly("resolution", getter<Map>([](const Map& map) { return map.resolution; }), "metres per cell")
+      .def_property_readonly("origin", getter<Map>([](const Map& map) { return map.origin; }), "(x, y, yaw) of the lower-left corner")
+      .def_property_readonly("cells", getter<Map>([](const Map& map) { return map.cells; }),
+                             "how the file's values were read (palette or thresholds)")
+      .def(py::pickle([](const py::object& self) { return map_state(state_of<Map>(self)); },
+                      [](const py::tuple& t) { return map_from(t); }));
 }
 
 }  // namespace
@@ -386,7 +508,7 @@ void bind_segmentation(py::module_& m) {
         "(the same keys, '_' or '-', the same checks and messages): a dict of segment()'s keywords, so\n"
         "topocut.segment(grid, resolution, origin, **topocut.load_options('robot.yaml')). Raises\n"
         "FileNotFoundError for a missing file, ValueError naming the file and key on bad YAML, a key that is no\n"
-        "segmentation option (with the name meant) or a bad value.");
+        "segmentation option (with the name meant), a key given twice or empty, or a bad value.");
   m.def("load_map", &load_map_py, py::arg("path"), py::arg("resolution") = py::none(),
         ("Loads a ROS map_server YAML or an image as the topocut command does; returns a Map whose int8 grid\n"
          "(ROS encoding and row order) segment() takes as it is. Keywords: the command's map-loading options\n"
@@ -398,15 +520,18 @@ void bind_segmentation(py::module_& m) {
                             "Keywords: segment()'s options and absorb_area, absorb_fraction, batch_fraction, neighbours_across_doors,\n"
                             "neighbours_across_cuts, speck_size, split_after, merge_after.")
       .def(py::init<py::kwargs>())
-      .def("update", &PyIncremental::update, py::arg("grid"), py::arg("resolution") = 0.05,
-           py::arg("origin") = py::make_tuple(0.0, 0.0, 0.0),
+      .def("update", [](const py::object& self, const py::array& grid, double resolution, const py::object& origin,
+                        py::kwargs kwargs) { return state_of<PyIncremental>(self).update(grid, resolution, origin, std::move(kwargs)); },
+           py::arg("grid"), py::arg("resolution") = 0.05, py::arg("origin") = py::make_tuple(0.0, 0.0, 0.0),
            "Segments the new grid (as segment() takes it; row_order and thresholds as keywords); returns a Segmentation\n"
            "whose room ids are stable across updates. The GIL is released while segmenting.")
-      .def("resegment", &PyIncremental::resegment,
+      .def("resegment", [](const py::object& self) { return state_of<PyIncremental>(self).resegment(); },
            "Segments the latest grid again as a whole (a map at rest): segment()'s rooms, ids carried by overlap.\n"
            "Raises ValueError before the first update. The GIL is released while segmenting.")
-      .def_property_readonly("last_update", &PyIncremental::last_update, "'unchanged', 'incremental' or 'batch'")
-      .def("reset", &PyIncremental::reset, "Forgets everything; the next update starts afresh.");
+      .def_property_readonly("last_update", getter<PyIncremental>([](PyIncremental& s) { return s.last_update(); }),
+                             "'unchanged', 'incremental' or 'batch'")
+      .def("reset", [](const py::object& self) { state_of<PyIncremental>(self).reset(); },
+           "Forgets everything; the next update starts afresh.");
 }
 
 }  // namespace topocut::python

@@ -10,6 +10,7 @@
 #include "topocut/evaluation/precision_recall.h"
 #include "topocut/exploration/simulated_map.h"
 #include "topocut/io/grid_from_array.h"
+#include "topocut/io/image_input.h"
 #include "topocut/io/map_loader.h"
 
 namespace topocut::python {
@@ -48,9 +49,16 @@ OccupancyGrid plan_from(const py::object& plan, double resolution) {
   return grid_from_array(array);
 }
 
-cv::Mat rooms_from(const py::object& ground_truth) {
-  if (py::isinstance<py::str>(ground_truth)) return ground_truth_rooms(load_ground_truth(ground_truth.cast<std::string>()));
-  return ground_truth_rooms(grey_image(ground_truth, "ground_truth"));
+// People's rooms, of the plan's size: a file's header is checked against it before it is decoded, as
+// the command checks it.
+cv::Mat rooms_from(const py::object& ground_truth, const OccupancyGrid& plan) {
+  if (py::isinstance<py::str>(ground_truth)) {
+    const ExpectedSize size{static_cast<std::uint64_t>(plan.width()), static_cast<std::uint64_t>(plan.height()), "the plan"};
+    return ground_truth_rooms(load_ground_truth(ground_truth.cast<std::string>(), {}, &size));
+  }
+  cv::Mat rooms = ground_truth_rooms(grey_image(ground_truth, "ground_truth"));
+  if (rooms.size() != plan.cells.size()) throw Error("the ground truth and the plan differ in size");
+  return rooms;
 }
 
 std::uint32_t seed_from(const py::object& seed) {
@@ -71,8 +79,7 @@ py::tuple simulate_map_py(const py::object& plan, const py::object& ground_truth
   const SimulatedMapOptions options = simulated_map_options(kwargs);
   const std::uint32_t s = seed_from(seed);
   const OccupancyGrid grid = plan_from(plan, resolution);
-  const cv::Mat rooms = rooms_from(ground_truth);
-  if (rooms.size() != grid.cells.size()) throw Error("the ground truth and the plan differ in size");
+  const cv::Mat rooms = rooms_from(ground_truth, grid);
   cv::Mat map, truth;
   {
     py::gil_scoped_release release;

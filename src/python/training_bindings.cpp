@@ -20,8 +20,9 @@ py::tuple training_rows_py(const std::string& image, const std::string& ground_t
     MapLoadOptions load;
     load.resolution = resolution;
     const OccupancyGrid grid = load_map(image, load);
-    const cv::Mat rooms = ground_truth_rooms(load_ground_truth(ground_truth));
-    if (rooms.size() != grid.cells.size()) throw Error(ground_truth + ": the ground truth and the map differ in size");
+    // Its header is checked against the map's size before it is decoded.
+    const ExpectedSize size{static_cast<std::uint64_t>(grid.width()), static_cast<std::uint64_t>(grid.height()), "the map"};
+    const cv::Mat rooms = ground_truth_rooms(load_ground_truth(ground_truth, {}, &size));
     rows = merge_training_rows(grid, rooms, options);
   }
   const std::size_t n = rows.size(), f = merge_feature_names().size();

@@ -24,19 +24,22 @@ using namespace incremental;
 
 namespace {
 
+constexpr double kMaxReach = 1 << 28;  // cells: beyond every map's side, and a few of them add up within an int
+
 bool trivial_binarization(const BinarizeOptions& b) {
   return b.robot_radius == 0.0 && b.opening_size == 0.0 && b.median_size == 0.0;
 }
 
 // How far (cells) a changed cell can change the binarized free space: inflation radius, opening
-// and median windows, plus slack for rounding.
+// and median windows, plus slack for rounding. Summed in double and capped far beyond any map's
+// side (grown() clips to the map): lengths at their limit and the finest resolution overflow an int.
 int binarization_reach(const BinarizeOptions& b, double resolution) {
   if (trivial_binarization(b)) return 0;
-  int reach = 2;
-  if (b.robot_radius > 0.0) reach += static_cast<int>(std::ceil(b.robot_radius / resolution)) + 1;
-  if (b.opening_size > 0.0) reach += static_cast<int>(std::lround(b.opening_size / resolution)) + 1;
-  if (b.median_size > 0.0) reach += static_cast<int>(std::lround(b.median_size / resolution)) / 2 + 2;
-  return reach;
+  double reach = 2;
+  if (b.robot_radius > 0.0) reach += std::ceil(b.robot_radius / resolution) + 1;
+  if (b.opening_size > 0.0) reach += std::round(b.opening_size / resolution) + 1;
+  if (b.median_size > 0.0) reach += std::floor(std::round(b.median_size / resolution) / 2) + 2;
+  return static_cast<int>(std::min(reach, kMaxReach));
 }
 
 // How far (cells) a changed cell can change what the cleaning keeps: the thickness test (a disc of
@@ -44,13 +47,13 @@ int binarization_reach(const BinarizeOptions& b, double resolution) {
 // removed cell is inside the building (labelled) or outside (not) depends on the structure within
 // inside_closing of it, so a wall seen there can bring it in or leave it out.
 int cleaning_reach(const FreeSpaceCleaningOptions& o, double resolution) {
-  return static_cast<int>(std::ceil((1.25 * o.min_width + o.max_obstacle_speck + o.inside_closing) / resolution)) + 2;
+  return static_cast<int>(std::min(std::ceil((1.25 * o.min_width + o.max_obstacle_speck + o.inside_closing) / resolution) + 2, kMaxReach));
 }
 
 // The surroundings the cleaning of a window is given beyond it: the building's inside is judged by
 // closing gaps up to inside_closing, and a ray ends on what lies around it.
 int cleaning_context(const FreeSpaceCleaningOptions& o, double resolution) {
-  return cleaning_reach(o, resolution) + static_cast<int>(std::ceil(o.inside_closing / resolution));
+  return static_cast<int>(std::min(cleaning_reach(o, resolution) + std::ceil(o.inside_closing / resolution), kMaxReach));
 }
 
 // Bounding box of the cells that differ between a and b inside window: a row-wise memcmp first,
@@ -98,6 +101,21 @@ cv::Mat binarized_window(const OccupancyGrid& grid, const cv::Rect& window, cons
   sub.resolution = grid.resolution;
   new_bin = free_space_mask(sub, binarize)(window - context.tl()).clone();
   return new_bin;
+}
+
+// Whether every thin part the cleaning of context judged (ray or not, by all its cells) and that
+// reaches into inner lies within context but for the map's own edges: a part running out of the
+// context across the map would be judged on more cells by the whole map's cleaning.
+bool thin_parts_judged_whole(const CleanedFreeSpace& cleaned, const cv::Rect& context, const cv::Rect& inner,
+                             const cv::Size& map) {
+  for (const cv::Rect& part : cleaned.thin_parts) {
+    if ((part & inner).empty()) continue;
+    const bool cut = (part.x == 0 && context.x > 0) || (part.y == 0 && context.y > 0) ||
+                     (part.br().x == context.width && context.br().x < map.width) ||
+                     (part.br().y == context.height && context.br().y < map.height);
+    if (cut) return false;
+  }
+  return true;
 }
 
 }  // namespace
@@ -295,10 +313,12 @@ void IncrementalSegmenter::State::segment_whole(const OccupancyGrid& grid, const
     SegmentationInput input;
     batch = segment(grid, options.segment, &input);
     floor = input.floor;
+    uncleaned = options.segment.clean && input.cleaned.floor.empty();
     labelled = input.labelled.cells.data == grid.cells.data ? cells.clone() : input.labelled.cells;
   } else {  // nothing free yet (a map before the first scan): no room, as before any update
     floor = cv::Mat::zeros(grid.cells.size(), CV_8UC1);
     labelled = cells.clone();
+    uncleaned = false;
     batch.labels = cv::Mat::zeros(grid.cells.size(), CV_32SC1);
     batch.resolution = grid.resolution;
     batch.origin = grid.origin;
@@ -340,7 +360,21 @@ void IncrementalSegmenter::State::remember_retired(const std::vector<int>& ids) 
 }
 
 void IncrementalSegmenter::State::process(const OccupancyGrid& grid, const cv::Rect& changed) {
+  if (uncleaned) {
+    segment_whole(grid, "the cleaning leaves the map no floor, so it is decomposed uncleaned and as a whole");
+    return;
+  }
   const ChangeMask mask = take_changes(grid, changed);
+  // Before "unchanged": a window whose cleaning judged nothing new can still hide what only the whole
+  // map's cleaning sees (its floor gone everywhere, a thin part judged by all its cells).
+  if (options.segment.clean && cv::countNonZero(floor(mask.window)) == 0 && cv::countNonZero(floor) == 0) {
+    segment_whole(grid, "the cleaning leaves the map no floor, so it is decomposed uncleaned and as a whole");
+    return;
+  }
+  if (mask.judged_beyond) {
+    segment_whole(grid, "a thin part of the free space runs beyond the cleaning's window (a ray or not, by all of it)");
+    return;
+  }
   report.changed_cells = mask.changed_cells;
   if (mask.changed_cells == 0) {
     report.kind = IncrementalUpdateReport::Kind::kUnchanged;
@@ -373,7 +407,7 @@ ChangeMask IncrementalSegmenter::State::take_changes(const OccupancyGrid& grid, 
   mask.window = grown(changed, reach, grid.cells.size());
   const cv::Rect& window = mask.window;
   cv::Mat new_floor, new_labelled;
-  front_end_window(grid, window, new_floor, new_labelled);
+  mask.judged_beyond = !front_end_window(grid, window, new_floor, new_labelled);
 
   mask.change = cv::Mat::zeros(window.size(), CV_8UC1);
   for (int r = 0; r < window.height; ++r) {
@@ -399,15 +433,15 @@ ChangeMask IncrementalSegmenter::State::take_changes(const OccupancyGrid& grid, 
 
 // segment()'s front end over window: the binarized free space, cleaned (options.segment.clean) with
 // the cleaning's context around the window, as the floor to decompose and the cells to label.
-void IncrementalSegmenter::State::front_end_window(const OccupancyGrid& grid, const cv::Rect& window, cv::Mat& new_floor,
+bool IncrementalSegmenter::State::front_end_window(const OccupancyGrid& grid, const cv::Rect& window, cv::Mat& new_floor,
                                                    cv::Mat& new_labelled) const {
   const SegmentOptions& o = options.segment;
   const int reach = binarization_reach(o.binarize, resolution);
-  if (window.empty()) return;
+  if (window.empty()) return true;
   if (!o.clean) {
     new_floor = binarized_window(grid, window, o.binarize, reach);
     new_labelled = grid.cells(window).clone();
-    return;
+    return true;
   }
   const cv::Rect context = grown(window, cleaning_context(o.cleaning, resolution), grid.cells.size());
   const cv::Mat free = binarized_window(grid, context, o.binarize, reach);
@@ -415,11 +449,12 @@ void IncrementalSegmenter::State::front_end_window(const OccupancyGrid& grid, co
   if (cv::countNonZero(free) == 0) {
     new_floor = cv::Mat::zeros(window.size(), CV_8UC1);
     new_labelled = grid.cells(window).clone();
-    return;
+    return true;
   }
   const CleanedFreeSpace cleaned = clean_free_space(free, grid.cells(context), resolution, o.cleaning);
   new_floor = cleaned.floor(inner).clone();
   new_labelled = cells_after_cleaning(grid.cells(context), cleaned)(inner).clone();
+  return thin_parts_judged_whole(cleaned, context, inner, grid.cells.size());
 }
 
 // Blobs of changed cells (8-connected), each with the rooms it touches in raster order of first

@@ -60,6 +60,9 @@ struct ChangeMask {
   cv::Rect window;  // the changed box grown by the binarization's and the cleaning's reach
   cv::Mat change;   // per window cell: the bits above, 0 unchanged
   int changed_cells = 0;
+  // A thin part of the free space in the window reaches beyond the cleaning's context: whether it is
+  // a ray depends on all of it, which only the whole map's cleaning sees.
+  bool judged_beyond = false;
 };
 
 // A connected blob of changed cells and the rooms it touches (old labels of its cells and of the
@@ -166,6 +169,9 @@ struct IncrementalSegmenter::State {
   Point2 origin;
   cv::Mat cells;     // copy of the previous grid (CV_8UC1)
   cv::Mat floor;     // its free space as decomposed: binarized and cleaned (CV_8UC1, 255)
+  // segment() decomposes a map its cleaning would leave without any floor uncleaned (whole-map
+  // rule); a window's cleaning cannot see that, so such a map is segmented as a whole while it lasts.
+  bool uncleaned = false;
   cv::Mat labelled;  // its cells as labelled (cells_after_cleaning(): kFree cells get a room)
   cv::Mat retired;   // where each room that disappeared last lay (its id; CV_32SC1), to give it back its id
   Segmentation result;               // result.labels is the state's label image
@@ -188,7 +194,8 @@ struct IncrementalSegmenter::State {
   void segment_whole(const OccupancyGrid& grid, const std::string& reason);
   void remember_retired(const std::vector<int>& ids);
   ChangeMask take_changes(const OccupancyGrid& grid, const cv::Rect& changed);
-  void front_end_window(const OccupancyGrid& grid, const cv::Rect& window, cv::Mat& new_floor, cv::Mat& new_labelled) const;
+  // Returns false when a thin part the window's cleaning judged reaches beyond its context.
+  bool front_end_window(const OccupancyGrid& grid, const cv::Rect& window, cv::Mat& new_floor, cv::Mat& new_labelled) const;
   std::vector<Blob> find_blobs(const ChangeMask& mask, cv::Mat& blob_of) const;
   Region choose_region(std::vector<Blob>& blobs);
   bool is_speck(const Blob& blob) const;

@@ -1,9 +1,11 @@
 #include "topocut/segmentation/merge_model.h"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
 #include "topocut/core/error.h"
+#include "topocut/core/input_file.h"
 #include "topocut/segmentation/merge_features.h"
 
 namespace topocut {
@@ -51,21 +53,46 @@ MergeTreeNode tree_node(const std::string& key, std::istringstream& in, int line
   return node;
 }
 
-// Every split points forwards to a node of its own tree, so evaluation ends at a leaf.
-void check_tree(const std::vector<MergeTreeNode>& tree, int line) {
-  if (tree.empty()) throw line_error(line, "a tree without nodes");
+// Why tree is no tree of a model, or "" when it is one: every split points forwards to a node of its
+// own tree (so evaluation ends at a leaf), on a known feature, and no path is deeper than the limit.
+std::string tree_fault(const std::vector<MergeTreeNode>& tree) {
+  if (tree.empty()) return "a tree without nodes";
   const int size = static_cast<int>(tree.size());
-  for (int i = 0; i < size; ++i) {
+  const int features = static_cast<int>(merge_feature_names().size());
+  std::vector<int> depth(tree.size(), 0);  // splits below each node; children come later, so back to front
+  for (int i = size - 1; i >= 0; --i) {
     const MergeTreeNode& n = tree[static_cast<std::size_t>(i)];
-    if (n.feature >= 0 && (n.yes <= i || n.no <= i || n.yes >= size || n.no >= size))
-      throw line_error(line, "node " + std::to_string(i) + " of the tree points outside it or backwards");
+    if (n.feature < 0) {
+      if (!std::isfinite(n.value)) return "a leaf's value must be a finite number";
+      continue;
+    }
+    if (n.feature >= features) return "node " + std::to_string(i) + " splits on no known feature";
+    if (!std::isfinite(n.threshold)) return "a split's threshold must be a finite number";
+    if (n.yes <= i || n.no <= i || n.yes >= size || n.no >= size)
+      return "node " + std::to_string(i) + " of the tree points outside it or backwards";
+    depth[static_cast<std::size_t>(i)] = 1 + std::max(depth[static_cast<std::size_t>(n.yes)], depth[static_cast<std::size_t>(n.no)]);
+    if (depth[static_cast<std::size_t>(i)] > kMaxMergeTreeDepth)
+      return "a tree deeper than " + std::to_string(kMaxMergeTreeDepth) + " splits (the limit)";
   }
+  return "";
+}
+
+void check_tree(const std::vector<MergeTreeNode>& tree, int line) {
+  const std::string fault = tree_fault(tree);
+  if (!fault.empty()) throw line_error(line, fault);
+}
+
+Error too_many(const std::string& what, std::size_t limit) {
+  return Error("merge model: more than " + std::to_string(limit) + " " + what + " (the limit)");
 }
 
 }  // namespace
 
 MergeModel parse_merge_model(const std::string& text) {
+  if (text.size() > kMaxMergeModelBytes)
+    throw Error("merge model: " + std::to_string(text.size()) + " bytes, more than the limit of " + byte_size_text(kMaxMergeModelBytes));
   MergeModel model;
+  std::size_t nodes = 0;
   model.text = text;
   std::istringstream lines(text);
   std::string raw;
@@ -82,6 +109,7 @@ MergeModel parse_merge_model(const std::string& text) {
         check_tree(model.trees.back(), number);
         in_tree = false;
       } else {
+        if (++nodes > kMaxMergeModelNodes) throw too_many("tree nodes", kMaxMergeModelNodes);
         model.trees.back().push_back(tree_node(key, in, number));
       }
     } else if (!header) {
@@ -98,6 +126,7 @@ MergeModel parse_merge_model(const std::string& text) {
       expect_end(in, number);
     } else if (key == "tree") {
       expect_end(in, number);
+      if (model.trees.size() == kMaxMergeTrees) throw too_many("trees", kMaxMergeTrees);
       model.trees.emplace_back();
       in_tree = true;
     } else {
@@ -116,6 +145,29 @@ MergeModel parse_merge_model(const std::string& text) {
   if (!header) throw Error("merge model: no 'topocut-merge-model 1' line");
   if (in_tree) throw Error("merge model: the last tree has no 'end'");
   return model;
+}
+
+void validate(const MergeModel& model) {
+  const std::size_t n = model.features.size();
+  if (model.mean.size() != n || model.scale.size() != n || model.weight.size() != n)
+    throw Error("merge model: every linear feature needs a mean, a scale and a weight");
+  const int features = static_cast<int>(merge_feature_names().size());
+  for (std::size_t i = 0; i < n; ++i) {
+    if (model.features[i] < 0 || model.features[i] >= features) throw Error("merge model: a linear term on no known feature");
+    for (std::size_t j = 0; j < i; ++j)
+      if (model.features[j] == model.features[i]) throw Error("merge model: a feature given twice");
+    if (!std::isfinite(model.mean[i]) || !std::isfinite(model.weight[i]) || !(model.scale[i] > 0.0) || !std::isfinite(model.scale[i]))
+      throw Error("merge model: a linear term's mean and weight must be finite and its scale positive");
+  }
+  if (!std::isfinite(model.bias) || !std::isfinite(model.threshold)) throw Error("merge model: the bias and threshold must be finite");
+  if (model.trees.size() > kMaxMergeTrees) throw too_many("trees", kMaxMergeTrees);
+  std::size_t nodes = 0;
+  for (const std::vector<MergeTreeNode>& tree : model.trees) {
+    nodes += tree.size();
+    if (nodes > kMaxMergeModelNodes) throw too_many("tree nodes", kMaxMergeModelNodes);
+    const std::string fault = tree_fault(tree);
+    if (!fault.empty()) throw Error("merge model: " + fault);
+  }
 }
 
 const MergeModel& default_merge_model() {

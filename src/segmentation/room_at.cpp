@@ -14,7 +14,9 @@ int room_at(const Segmentation& segmentation, const GridFrame& frame, const Poin
   const double c = std::cos(frame.yaw), s = std::sin(frame.yaw);
   const double column = std::floor((c * dx + s * dy) / segmentation.resolution);
   const double row_up = std::floor((-s * dx + c * dy) / segmentation.resolution);
-  if (column < 0 || row_up < 0 || column >= labels.cols || row_up >= labels.rows) return 0;
+  // Written so that NaN (a resolution or yaw that is not a number) fails too: off the grid, never a
+  // read outside the labels.
+  if (!(column >= 0 && row_up >= 0 && column < labels.cols && row_up < labels.rows) || labels.type() != CV_32SC1) return 0;
   const int row = frame.row_order == RowOrder::kBottomUp ? static_cast<int>(row_up) : labels.rows - 1 - static_cast<int>(row_up);
   return labels.at<int>(row, static_cast<int>(column));
 }

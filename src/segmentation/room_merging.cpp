@@ -190,6 +190,7 @@ void validate(const RoomMergeOptions& options) {
   if (!finite_non_negative(options.step_ratio) || options.step_ratio >= 1.0 || !finite_non_negative(options.step_min_area) ||
       !finite_non_negative(options.step_min_wide_depth) || !finite_non_negative(options.step_wall_line_depth))
     throw Error("the width-step ratio must lie in [0, 1) and its area and depth must be non-negative numbers");
+  if (options.learned) validate(options.model);
 }
 
 PolygonWithHoles union_of_pieces(const std::vector<PolygonWithHoles>& pieces) {

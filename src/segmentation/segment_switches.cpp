@@ -22,6 +22,9 @@ void apply(const SegmentSwitches& s, SegmentOptions& options) {
     rule->turn_off(options);
   }
   options.decompose = !s.trivial;
+  if (s.merge_model_given && (s.trivial || !options.merge.enabled || !options.merge.learned))
+    throw Error("a merge model is given, but learned merging is off (--no-learned-merge, --no-merge, --parity or "
+                "--trivial): give one or the other");
 }
 
 namespace {

@@ -11,6 +11,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "topocut/core/error.h"
+#include "topocut/core/format.h"
 #include "topocut/core/value_ranges.h"
 #include "topocut/decomposition/ring_intersections.h"
 #include "topocut/map/simplify.h"
@@ -40,6 +41,21 @@ void validate(const SegmentOptions& options) {
 
 namespace {
 
+// The binarization's steps that can take free space away, as a sentence's end naming their sizes.
+std::string binarization_steps(const OccupancyGrid& grid, const BinarizeOptions& b) {
+  const auto metres = [](double v) { return format("%g m", v); };
+  std::string steps;
+  const auto add = [&steps](const std::string& step) { steps += (steps.empty() ? "" : " and ") + step; };
+  if (b.robot_radius > 0.0) add("inflating obstacles by the robot radius (" + metres(b.robot_radius) + ")");
+  if (b.opening_size > 0.0) {
+    const bool larger = b.opening_size / grid.resolution > std::min(grid.width(), grid.height());
+    add("opening it with a square of " + metres(b.opening_size) +
+        (larger ? " a side, more than the map's " + metres(std::min(grid.width(), grid.height()) * grid.resolution) : " a side"));
+  }
+  if (b.median_size > 0.0) add("filtering it with a median window of " + metres(b.median_size));
+  return steps.empty() ? "binarizing the map" : steps;
+}
+
 // Whether any cell of the grid is free; stops at the first one instead of comparing the whole map.
 bool has_free_cell(const cv::Mat& cells) {
   for (int r = 0; r < cells.rows; ++r) {
@@ -55,8 +71,7 @@ cv::Mat segmentation_free_space(const OccupancyGrid& grid, const SegmentOptions&
   validate(grid);
   if (!has_free_cell(grid.cells)) throw Error("the map has no free space (no cell is free)");
   cv::Mat free = free_space_mask(grid, options.binarize);
-  if (cv::countNonZero(free) == 0)
-    throw Error("no free space is left after inflating obstacles by the robot radius and filtering");
+  if (cv::countNonZero(free) == 0) throw Error("no free space is left after " + binarization_steps(grid, options.binarize));
   return free;
 }
 
@@ -184,7 +199,9 @@ cv::Rect segmentation_box(const OccupancyGrid& grid, const SegmentOptions& optio
   const BinarizeOptions& b = options.binarize;
   const double reach = options.cleaning.inside_closing + options.cleaning.min_width + options.cleaning.max_obstacle_speck +
                        b.robot_radius + b.opening_size + b.median_size;
-  const int margin = static_cast<int>(std::ceil(reach / grid.resolution)) + 4;
+  // Capped at the map's size (the box is clipped to it anyway): lengths up to their limit at the
+  // finest resolution would overflow an int.
+  const int margin = static_cast<int>(std::min(std::ceil(reach / grid.resolution), double(std::max(grid.width(), grid.height())))) + 4;
   return cv::Rect(box.x - margin, box.y - margin, box.width + 2 * margin, box.height + 2 * margin) &
          cv::Rect(0, 0, grid.width(), grid.height());
 }

@@ -22,6 +22,7 @@ namespace fs = std::filesystem;
 
 using topocut::testing::CliResult;
 using topocut::testing::file_text;
+using topocut::testing::memory_limit;
 using topocut::testing::run_cli_line;
 
 class EvaluateCli : public ::testing::Test {
@@ -431,6 +432,72 @@ TEST_F(EvaluateCli, ReportPageLoadsEveryImageInChromium) {
   // The check sees a broken picture.
   fs::remove(report / "open_furnished_rooms.png");
   EXPECT_EQ(images_loaded_in_chromium(browser, report / "index.html", dir_), "loaded 7 of 8");
+}
+
+}  // namespace
+
+namespace {
+
+// The bytes of a PNG whose header now declares width x height (the CRC no longer matches, which does
+// not matter: the size must be refused before any decoder reads on).
+std::string png_declaring(const fs::path& path, std::uint32_t width, std::uint32_t height) {
+  std::string bytes = file_text(path.string());
+  for (int i = 0; i < 4; ++i) {
+    bytes[16 + i] = static_cast<char>(width >> (24 - 8 * i));
+    bytes[20 + i] = static_cast<char>(height >> (24 - 8 * i));
+  }
+  return bytes;
+}
+
+TEST_F(EvaluateCli, ALabelImageOfTheWrongSizeIsRefusedByItsHeader) {
+  // 10000 x 10000 declared (100 megapixels, within the pixel limit) for a 120 x 60 map: it took 7.5 s
+  // and 2.3 GB to decode before "wrong size"; its header is enough.
+  const fs::path data = make_dataset();
+  const fs::path labels = make_labels(dir_);
+  std::ofstream(labels / "open.png", std::ios::binary | std::ios::trunc) << png_declaring(labels / "closed.png", 10000, 10000);
+  const CliResult run = run_cli_line(dir_, "evaluate --dataset '" + data.string() + "' --labels '" + labels.string() +
+                                               "' --variant plain", 5, memory_limit(1000000));
+  EXPECT_EQ(run.code, 1) << run.err;
+  EXPECT_NE(run.out.find("is 10000 x 10000 pixels but the map is 120 x 60"), std::string::npos) << run.out;
+  // So is a ground truth that does not fit its map.
+  std::ofstream(data / "closed_gt_segmentation.png", std::ios::binary | std::ios::trunc)
+      << png_declaring(data / "open_gt_segmentation.png", 10000, 10000);
+  const CliResult truth = run_cli_line(dir_, "evaluate --dataset '" + data.string() + "' --trivial --variant plain", 5,
+                                       memory_limit(1000000));
+  EXPECT_EQ(truth.code, 1) << truth.err;
+  EXPECT_NE(truth.out.find("closed_gt_segmentation.png' is 10000 x 10000 pixels but the map is 120 x 60"), std::string::npos)
+      << truth.out;
+}
+
+TEST_F(EvaluateCli, TheCsvMayLieInTheReportFolderTheRunMakes) {
+  const fs::path data = make_dataset();
+  const fs::path report = dir_ / "new_report";
+  const CliResult run = evaluate("--dataset '" + data.string() + "' --trivial --variant plain --report '" + report.string() +
+                                 "' --csv '" + (report / "results.csv").string() + "'");
+  ASSERT_EQ(run.code, 0) << run.err;
+  EXPECT_TRUE(fs::is_regular_file(report / "index.html"));
+  EXPECT_EQ(count_lines(file_text((report / "results.csv").string())), 3u);  // header and two maps
+}
+
+TEST_F(EvaluateCli, MapNamesAreEscapedOnTheTerminalAndQuotedInTheCsv) {
+  // A map's name is its file's: an escape sequence or a line break in it reaches no terminal, and a
+  // name a spreadsheet would run as a formula is quoted as text.
+  const fs::path data = make_dataset();
+  for (const std::string name : {"=cmd|' -C calc'!A0", "red\x1b[31mroom\rX"}) {
+    fs::copy_file(data / "closed.png", data / (name + ".png"));
+    fs::copy_file(data / "closed_gt_segmentation.png", data / (name + "_gt_segmentation.png"));
+  }
+  const fs::path csv = dir_ / "r.csv";
+  const CliResult run = evaluate("--dataset '" + data.string() + "' --trivial --variant plain --csv '" + csv.string() + "'");
+  ASSERT_EQ(run.code, 0) << run.err;
+  for (const std::string& text : {run.out, run.err}) {
+    EXPECT_EQ(text.find('\x1b'), std::string::npos) << text;
+    EXPECT_EQ(text.find('\r'), std::string::npos) << text;
+  }
+  EXPECT_NE(run.out.find("red\\x1B[31mroom\\x0DX"), std::string::npos) << run.out;
+  const std::string rows = file_text(csv.string());
+  EXPECT_NE(rows.find("\n\"'=cmd|' -C calc'!A0\",plain,"), std::string::npos) << rows;
+  EXPECT_EQ(rows.find("\n=cmd"), std::string::npos) << rows;
 }
 
 }  // namespace

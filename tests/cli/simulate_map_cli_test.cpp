@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <fstream>
 #include <string>
 
 #include <opencv2/core.hpp>
@@ -19,6 +20,7 @@ namespace fs = std::filesystem;
 using topocut::testing::CliResult;
 using topocut::testing::expect_clean_error;
 using topocut::testing::file_text;
+using topocut::testing::memory_limit;
 using topocut::testing::run_cli_line;
 
 class SimulateMapCli : public ::testing::Test {
@@ -126,13 +128,41 @@ TEST_F(SimulateMapCli, DatasetModeWritesTheBormannLayoutThatEvaluateScores) {
   EXPECT_EQ(csv.find("FAILED"), std::string::npos) << csv;
 }
 
+TEST_F(SimulateMapCli, AGroundTruthOfAnotherSizeIsRefusedByItsHeader) {
+  // Its header declares 10000 x 10000 (100 megapixels, within the pixel limit): refused before a
+  // decoder allocates for it, within a memory limit a decode would break.
+  const fs::path plan = write_plan(dir_ / "plans", "lab");
+  std::string bytes = file_text((dir_ / "plans" / "lab_gt_segmentation.png").string());
+  for (int i = 0; i < 4; ++i) bytes[16 + i] = bytes[20 + i] = static_cast<char>(10000u >> (24 - 8 * i));
+  std::ofstream(out("big_gt.png"), std::ios::binary) << bytes;
+  const CliResult r = run_cli_line(dir_, "simulate-map " + plan.string() + " --gt " + out("big_gt.png") + " --out-map " +
+                                             out("m.png") + " --out-gt " + out("g.png"), 10, memory_limit(600000));
+  expect_clean_error(r, "simulate-map", "big_gt.png' is 10000 x 10000 pixels but the plan is 240 x 140");
+  EXPECT_FALSE(fs::exists(out("m.png")));
+}
+
+TEST_F(SimulateMapCli, NamesAreEscapedOnTheTerminal) {
+  const fs::path plan = write_plan(dir_ / "plans", "red\x1b[31mlab\rX");
+  const CliResult one = simulate(topocut::testing::shell_quoted(plan.string()) + " --out-map " + out("m.png") + " --out-gt " + out("g.png"));
+  ASSERT_EQ(one.code, 0) << one.err;
+  const CliResult all = simulate("--dataset " + (dir_ / "plans").string() + " --out " + out("sims"));
+  ASSERT_EQ(all.code, 0) << all.err;
+  for (const std::string& text : {one.out, one.err, all.out, all.err}) {
+    EXPECT_EQ(text.find('\x1b'), std::string::npos) << text;
+    EXPECT_EQ(text.find('\r'), std::string::npos) << text;
+  }
+  EXPECT_NE(one.out.find("simulated " + (dir_ / "plans").string() + "/red\\x1B[31mlab\\x0DX.png seed"), std::string::npos) << one.out;
+  EXPECT_NE(all.err.find("red\\x1B[31mlab\\x0DX"), std::string::npos) << all.err;
+}
+
 TEST_F(SimulateMapCli, BadInputIsOneClearErrorAndWritesNothing) {
   const fs::path plan = write_plan(dir_ / "plans", "lab");
   const std::string outputs = " --out-map " + out("m.png") + " --out-gt " + out("g.png");
   expect_clean_error(simulate((dir_ / "nope.png").string() + outputs), "simulate-map", "nope.png");
   // A ground truth of another size.
   topocut::testing::write_test_image(out("small_gt.png"), cv::Mat(50, 60, CV_8UC1, cv::Scalar(255)));
-  expect_clean_error(simulate(plan.string() + " --gt " + out("small_gt.png") + outputs), "simulate-map", "differs in size");
+  expect_clean_error(simulate(plan.string() + " --gt " + out("small_gt.png") + outputs), "simulate-map",
+                     "small_gt.png' is 60 x 50 pixels but the plan is 240 x 140");
   // A plan without a ground truth beside it.
   topocut::testing::write_test_image(out("alone.png"), cv::Mat(50, 60, CV_8UC1, cv::Scalar(255)));
   expect_clean_error(simulate(out("alone.png") + outputs), "simulate-map", "--gt");

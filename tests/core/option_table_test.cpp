@@ -70,5 +70,31 @@ TEST(OptionTable, ANumberIsTheWholeText) {
   EXPECT_THROW(parse_option_number("metres", "x"), Error);
 }
 
+
+TEST(OptionTable, NumbersAreReadAsDecimalsOnly) {
+  EXPECT_EQ(parse_option_number("2.5", "--x"), 2.5);
+  EXPECT_EQ(parse_option_number("+2.5", "--x"), 2.5);
+  EXPECT_EQ(parse_option_number("-1e-3", "--x"), -1e-3);
+  EXPECT_EQ(parse_option_number(".5", "--x"), 0.5);
+  EXPECT_TRUE(std::isnan(parse_option_number("nan", "--x")));  // read, for the range to refuse by name
+  EXPECT_TRUE(std::isinf(parse_option_number("inf", "--x")));
+  for (const std::string bad : {"0x10", "0X1p3", " 1", "1 ", "1,5", "", "+", "-", "+-1", "1e999", "abc", "1.5m", "--1"}) {
+    try {
+      parse_option_number(bad, "--concavity");
+      ADD_FAILURE() << "accepted '" << bad << "'";
+    } catch (const Error& e) {
+      EXPECT_EQ(std::string(e.what()), "--concavity needs a number, not '" + bad + "'");
+    }
+  }
+}
+
+TEST(OptionTable, SwitchValuesAreYamlsBooleans) {
+  for (const std::string on : {"true", "True", "TRUE", "yes", "y", "on", "ON"}) EXPECT_EQ(parse_switch_value(on), true) << on;
+  for (const std::string off : {"false", "no", "N", "off", "Off"}) EXPECT_EQ(parse_switch_value(off), false) << off;
+  for (const std::string neither : {"1", "0", "", "tRUE", "yes!", "0x1"}) EXPECT_FALSE(parse_switch_value(neither)) << neither;
+  EXPECT_EQ(switch_value_error("--trivial", "1"), "--trivial is a switch: give true or false, not '1'");
+  EXPECT_EQ(given_twice_error("~concavity"), "~concavity is given twice");
+}
+
 }  // namespace
 }  // namespace topocut

@@ -246,7 +246,7 @@ TEST_F(SyntheticDataset, BadLabelImagesFailTheirMapAndBadFoldersAreAnError) {
   ASSERT_EQ(results.size(), 2u);
   EXPECT_FALSE(results[0].ok);
   EXPECT_FALSE(results[0].missing);
-  EXPECT_NE(results[0].error.find("10x10"), std::string::npos) << results[0].error;
+  EXPECT_NE(results[0].error.find("is 10 x 10 pixels but the map is 60 x 40"), std::string::npos) << results[0].error;
   EXPECT_FALSE(results[1].ok);
   EXPECT_FALSE(results[1].missing);
   EXPECT_NE(results[1].error.find("beta.png"), std::string::npos) << results[1].error;

@@ -100,6 +100,25 @@ TEST(ImageInput, PixelLimitIsCheckedOnTheHeader) {
   EXPECT_NE(error_of([] { validate(ImageLimits{1e9}); }).find("(0, 1000]"), std::string::npos);
 }
 
+TEST(ImageInput, AnExpectedSizeIsCheckedOnTheHeaderBeforeDecoding) {
+  // A label image for a 40 x 30 map whose header declares 10000 x 10000 (100 megapixels, within the
+  // pixel limit): refused by its header at once, not after 2 GB and seconds of decoding.
+  const TempDir dir;
+  std::string png = encoded(cv::Mat(30, 40, CV_16UC1, cv::Scalar(1)), ".png");
+  for (int i = 0; i < 4; ++i) png[16 + i] = png[20 + i] = static_cast<char>(i == 2 ? 0x27 : i == 3 ? 0x10 : 0);  // 10000
+  const std::string path = dir.write("labels.png", png);
+  const ExpectedSize map{40, 30, "the map"};
+  const auto start = std::chrono::steady_clock::now();
+  const std::string message = error_of([&] { read_image(path, "label image", {}, &map); });
+  EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(2));
+  EXPECT_NE(message.find("is 10000 x 10000 pixels but the map is 40 x 30"), std::string::npos) << message;
+  EXPECT_NE(message.find("labels.png"), std::string::npos) << message;
+  // The size it must have passes; the header alone can be read without decoding.
+  const std::string fine = dir.write("fine.png", encoded(cv::Mat(30, 40, CV_16UC1, cv::Scalar(1)), ".png"));
+  EXPECT_EQ(read_image(fine, "label image", {}, &map).size(), cv::Size(40, 30));
+  EXPECT_EQ(read_image_size(path, "label image", {}).width, 10000u);
+}
+
 TEST(MapLoaderLimits, DevicesAndRangesAreRefusedBeforeDecoding) {
   const TempDir dir;
   cv::imwrite(dir.file("m.png"), cv::Mat(20, 20, CV_8UC1, cv::Scalar(255)));

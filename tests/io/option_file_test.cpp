@@ -67,8 +67,43 @@ TEST(OptionFile, AppliesThroughTheRowsChecks) {
             "'door_witdh' in config file '" + path + "' is not an option here (did you mean 'door-width'?)");
   EXPECT_EQ(refusal(dir, "door-width: wide\n"), "'door-width' in config file '" + path + "' needs a number, not 'wide'");
   EXPECT_NE(refusal(dir, "door-width: -2\n").find("'door-width' in config file '" + path + "' must"), std::string::npos);
-  EXPECT_EQ(refusal(dir, "quiet: 3\n"), "'quiet' in config file '" + path + "' is a switch: give true or false");
+  EXPECT_EQ(refusal(dir, "quiet: 3\n"), "'quiet' in config file '" + path + "' is a switch: give true or false, not '3'");
+  EXPECT_EQ(refusal(dir, "quiet: [true]\n"), "'quiet' in config file '" + path + "' is a switch: give true or false, not a list");
+  EXPECT_EQ(refusal(dir, "door-width: 0x10\n"), "'door-width' in config file '" + path + "' needs a number, not '0x10'");
   EXPECT_EQ(refusal(dir, "door-width: [1, 2]\n"), "'door-width' in config file '" + path + "' takes one number, not a list");
+}
+
+// The message read_option_file throws as an OptionFileError for text, or "" when it reads it.
+std::string reading_refusal(const TempDir& dir, const std::string& text) {
+  try {
+    topocut::read_option_file(dir.write("options.yaml", text));
+  } catch (const OptionFileError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(OptionFile, TheReaderRefusesKeysTwiceEmptyKeysAndAliasFloods) {
+  // In the reader, so that --config, load_segment_options() and Python's load_options() all refuse them.
+  TempDir dir;
+  const std::string path = dir.file("options.yaml");
+  for (const char* twice : {"quiet: false\nquiet: false\n", "quiet: true\nquiet: false\n", "door-width: 1\ndoor-width: 2\n"}) {
+    const std::string key = twice[0] == 'q' ? "quiet" : "door-width";
+    EXPECT_EQ(reading_refusal(dir, twice), "'" + key + "' in config file '" + path + "' is given twice (line 2)") << twice;
+  }
+  EXPECT_EQ(reading_refusal(dir, "door_width: 1\nquiet: true\ndoor-width: 2\n"),
+            "'door-width' in config file '" + path + "' is given twice (line 3)");
+  EXPECT_EQ(reading_refusal(dir, "\"\": 1\n"), "config file '" + path + "', line 1: an empty key is no option name");
+  EXPECT_EQ(reading_refusal(dir, "quiet: true\n'': x\n"), "config file '" + path + "', line 2: an empty key is no option name");
+  // One 100 KiB anchor aliased 20 times: 2 MiB once expanded, from a file of 100 KiB; 5 times stays under 1 MiB.
+  const auto aliased = [](int times) {
+    std::string text = "door-width: &big " + std::string(100 << 10, '1') + "\nlist: [";
+    for (int i = 0; i < times; ++i) text += std::string(i ? ", " : "") + "*big";
+    return text + "]\n";
+  };
+  EXPECT_EQ(reading_refusal(dir, aliased(20)),
+            "config file '" + path + "': its values add up to more than 1 MiB (an anchor repeated by aliases?); give each value once");
+  EXPECT_EQ(reading_refusal(dir, aliased(5)), "");
 }
 
 TEST(OptionFile, ShapesAreOptionFileErrorsAndBadYamlIsNot) {

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include <gtest/gtest.h>
+#include <opencv2/imgproc.hpp>
 
 #include "topocut/core/error.h"
 
@@ -87,6 +88,32 @@ TEST(Binarize, RejectsBadOptionsAndGrids) {
   EXPECT_THROW(free_space_mask(empty), Error);
   OccupancyGrid bad_resolution = free_grid(5, 0.0);
   EXPECT_THROW(free_space_mask(bad_resolution), Error);
+}
+
+
+TEST(Binarize, AnOpeningLargerThanTheMapLeavesNothingWithoutBuildingItsSquare) {
+  // 1000 m at 0.05 m a cell is a 20000-cell square (400 MB as OpenCV's element): refused by size,
+  // at once. Up to the map's size, OpenCV's opening as before; one cell more leaves nothing.
+  OccupancyGrid grid = free_grid(40);
+  grid.cells = cv::Mat(30, 40, CV_8UC1, cv::Scalar(kFree));
+  BinarizeOptions options;
+  for (const double metres : {1000.0, 5000.0, 1e5}) {
+    options.opening_size = metres;
+    EXPECT_EQ(cv::countNonZero(free_space_mask(grid, options)), 0) << metres;
+  }
+  // As OpenCV opens (border not free), on both sides of the map's height and width.
+  for (const int side : {29, 30, 31, 40, 45}) {
+    options.opening_size = side * 0.05;
+    cv::Mat opened;
+    cv::morphologyEx(grid.cells == kFree, opened, cv::MORPH_OPEN, cv::getStructuringElement(cv::MORPH_RECT, {side, side}),
+                     cv::Point(-1, -1), 1, cv::BORDER_CONSTANT, cv::Scalar(0));
+    EXPECT_EQ(cv::countNonZero(free_space_mask(grid, options) != opened), 0) << side;
+    EXPECT_EQ(cv::countNonZero(opened) > 0, side <= 30) << side;
+  }
+  // The median window is clamped to twice the map: a huge one costs what the map costs.
+  options = {};
+  options.median_size = 1e5;
+  EXPECT_EQ(cv::countNonZero(free_space_mask(grid, options)), 30 * 40);
 }
 
 }  // namespace

@@ -1,4 +1,8 @@
 // topocut::load_segment_options (topocut.h): a robot's YAML as `topocut segment --config` reads it.
+#include <string>
+#include <utility>
+#include <vector>
+
 #include <gtest/gtest.h>
 
 #include "io/temp_dir.h"
@@ -43,6 +47,20 @@ TEST(SegmentOptionsFile, RefusesWhatIsNoSegmentationOption) {
   }
   // A combination the command refuses: --parity with a rule switched off.
   EXPECT_THROW(topocut::load_segment_options(dir.write("p.yaml", "parity: true\nno-merge: true\n")), topocut::Error);
+  // The reader's checks, as --config makes them: a key twice, an empty key, a hexadecimal number, a
+  // switch given a number.
+  for (const auto& [text, message] : std::vector<std::pair<std::string, std::string>>{
+           {"robot_radius: 0.1\nrobot-radius: 0.2\n", "'robot-radius' in config file '" + dir.file("r.yaml") + "' is given twice (line 2)"},
+           {"no_merge: false\n'': 1\n", "config file '" + dir.file("r.yaml") + "', line 2: an empty key is no option name"},
+           {"concavity: 0x10\n", "'concavity' in config file '" + dir.file("r.yaml") + "' needs a number, not '0x10'"},
+           {"no_merge: 1\n", "'no_merge' in config file '" + dir.file("r.yaml") + "' is a switch: give true or false, not '1'"}}) {
+    try {
+      topocut::load_segment_options(dir.write("r.yaml", text));
+      ADD_FAILURE() << text << " was taken";
+    } catch (const topocut::OptionFileError& e) {
+      EXPECT_EQ(std::string(e.what()), message);
+    }
+  }
   const topocut::SegmentOptions defaults = topocut::load_segment_options(dir.write("e.yaml", ""));
   EXPECT_DOUBLE_EQ(defaults.concavity, topocut::SegmentOptions{}.concavity);
 }

@@ -54,9 +54,18 @@ def test_load_options_refuses_as_config_does(cli, bundled_map, tmp_path, monkeyp
     cases = {
         "concavty: 3\n": "'concavty' in config file '{}' is not a segmentation option (did you mean 'concavity'?)",
         "concavity: -1\n": "'concavity' in config file '{}' must",
-        "no_merge: maybe\n": "'no_merge' in config file '{}' is a switch: give true or false",
+        "no_merge: maybe\n": "'no_merge' in config file '{}' is a switch: give true or false, not 'maybe'",
         "- concavity\n": "config file '{}' must be a mapping of option names to values",
         "concavity: [1, 2]\n": "'concavity' in config file '{}' takes one number, not a list",
+        # The reader's checks, shared with --config and load_segment_options():
+        "concavity: 2\nconcavity: 3\n": "'concavity' in config file '{}' is given twice (line 2)",
+        "robot_radius: 0.1\nrobot-radius: 0.2\n": "'robot-radius' in config file '{}' is given twice (line 2)",
+        "no_merge: false\nno_merge: false\n": "'no_merge' in config file '{}' is given twice (line 2)",
+        "concavity: 3\n'': 1\n": "config file '{}', line 2: an empty key is no option name",
+        "no_merge: 1\n": "'no_merge' in config file '{}' is a switch: give true or false, not '1'",
+        "concavity: 0x10\n": "'concavity' in config file '{}' needs a number, not '0x10'",
+        "concavity: &big " + "1" * (100 << 10) + "\nmin_room_area: [" + ", ".join(["*big"] * 20) + "]\n":
+            "config file '{}': its values add up to more than 1 MiB",
     }
     for k, (text, message) in enumerate(cases.items()):
         path = f"bad{k}.yaml"

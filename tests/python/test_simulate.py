@@ -39,6 +39,16 @@ def test_deterministic_per_seed_and_rooms_on_free_cells():
     assert not ((ga == 255) & (a != 255)).any()
 
 
+def test_a_ground_truth_file_of_another_size_is_refused_by_its_header(tmp_path):
+    # 10000 x 10000 declared for the plan's ground truth: refused before a pixel is decoded.
+    data = bytearray(open(TRUTH, "rb").read())
+    data[16:24] = (10000).to_bytes(4, "big") * 2
+    (tmp_path / "big_gt.png").write_bytes(bytes(data))
+    width, height = Image.open(PLAN).size
+    with pytest.raises(ValueError, match=f"is 10000 x 10000 pixels but the plan is {width} x {height}"):
+        topocut.simulate_map(PLAN, str(tmp_path / "big_gt.png"))
+
+
 def test_bad_input_raises_with_the_commands_message():
     with pytest.raises(ValueError, match="seed"):
         topocut.simulate_map(PLAN, TRUTH, seed=-1)

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "topocut/core/error.h"
+#include "topocut/core/input_file.h"
 #include "topocut/segmentation/merge_features.h"
 
 namespace topocut {
@@ -67,6 +68,63 @@ TEST(MergeModel, TheShippedModelParsesAndUsesKnownFeatures) {
   const double p = merge_probability(model, std::vector<double>(merge_feature_names().size(), 0.0));
   EXPECT_GT(p, 0.0);
   EXPECT_LT(p, 1.0);
+}
+
+
+// A model text of `trees` trees, each a chain of `depth` splits ending in leaves.
+std::string chain_model(std::size_t trees, int depth) {
+  std::string text = "topocut-merge-model 1\n";
+  for (std::size_t t = 0; t < trees; ++t) {
+    text += "tree\n";
+    for (int d = 0; d < depth; ++d)  // node 2d splits to leaf 2d+1 or on to node 2d+2
+      text += "split rule_door 0.5 " + std::to_string(2 * d + 1) + " " + std::to_string(2 * d + 2) + "\nleaf 0\n";
+    text += "leaf 0.1\nend\n";
+  }
+  return text;
+}
+
+std::string error_of(const std::string& text) {
+  try {
+    parse_merge_model(text);
+  } catch (const Error& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(MergeModel, AModelAtTheLimitsParsesAndOneBeyondAnyIsRefused) {
+  // Each limit bounds what one candidate costs: trees x (depth + 1) nodes visited.
+  const MergeModel at = parse_merge_model(chain_model(kMaxMergeTrees, 0));
+  EXPECT_EQ(at.trees.size(), kMaxMergeTrees);
+  EXPECT_NO_THROW(parse_merge_model(chain_model(1, kMaxMergeTreeDepth)));
+  EXPECT_NE(error_of(chain_model(kMaxMergeTrees + 1, 0)).find("more than 1000 trees"), std::string::npos);
+  EXPECT_NE(error_of(chain_model(1, kMaxMergeTreeDepth + 1)).find("deeper than 12 splits"), std::string::npos);
+  // A chain deeper than the limit hidden in one tree of many still fails, naming its line.
+  EXPECT_NE(error_of(chain_model(3, 2) + chain_model(1, 40).substr(22)).find("line "), std::string::npos);
+  // Nodes: 5000 trees' worth would pass trees x depth in count, not in nodes.
+  std::string wide = "topocut-merge-model 1\ntree\n";
+  for (std::size_t i = 0; i <= kMaxMergeModelNodes; ++i) wide += "leaf 0\n";
+  EXPECT_NE(error_of(wide + "end\n").find("tree nodes"), std::string::npos);
+  // The text itself: more than the file limit of every front end.
+  EXPECT_NE(error_of(std::string(kMaxMergeModelBytes + 1, '#')).find("bytes, more than the limit of 4 MiB"), std::string::npos);
+}
+
+TEST(MergeModel, ValidateRefusesWhatTheParserWouldRefuse) {
+  EXPECT_NO_THROW(validate(default_merge_model()));
+  MergeModel model = parse_merge_model(chain_model(2, 3));
+  EXPECT_NO_THROW(validate(model));
+  MergeModel backwards = model;
+  backwards.trees[1][2].yes = 0;
+  EXPECT_THROW(validate(backwards), Error);
+  MergeModel unknown = model;
+  unknown.trees[0][0].feature = 100000;
+  EXPECT_THROW(validate(unknown), Error);
+  MergeModel too_many = model;
+  too_many.trees.assign(kMaxMergeTrees + 1, model.trees[0]);
+  EXPECT_THROW(validate(too_many), Error);
+  MergeModel lopsided = model;
+  lopsided.scale.push_back(1.0);
+  EXPECT_THROW(validate(lopsided), Error);
 }
 
 }  // namespace

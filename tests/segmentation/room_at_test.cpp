@@ -1,6 +1,7 @@
 #include "topocut/segmentation/room_at.h"
 
 #include <cmath>
+#include <limits>
 
 #include <gtest/gtest.h>
 
@@ -82,6 +83,27 @@ TEST(RoomAt, RefusesANonFinitePoint) {
   const Segmentation s = small_grid();
   EXPECT_THROW(room_at(s, GridFrame{}, {NAN, 20.0}), Error);
   EXPECT_THROW(room_at(s, GridFrame{}, {10.0, INFINITY}), Error);
+}
+
+
+TEST(RoomAt, AFrameThatIsNotANumberFindsNoRoomAndReadsNothingOutside) {
+  // Resolutions and yaws an unpickled or hand-made result may hold: the cell index is NaN or
+  // infinite, which must read as off the grid, never as a cell (a read outside the labels).
+  for (const double resolution : {0.0, -0.5, std::nan(""), 1e-300}) {
+    Segmentation s = small_grid();
+    s.resolution = resolution;
+    EXPECT_EQ(room_at(s, GridFrame{}, {10.2, 20.2}), 0) << resolution;
+  }
+  for (const double yaw : {std::nan(""), std::numeric_limits<double>::infinity()}) {
+    const GridFrame frame{RowOrder::kTopDown, yaw};
+    EXPECT_EQ(room_at(small_grid(), frame, {10.2, 20.2}), 0) << yaw;
+  }
+  Segmentation nan_origin = small_grid();
+  nan_origin.origin = {std::nan(""), 20.0};
+  EXPECT_EQ(room_at(nan_origin, GridFrame{}, {10.2, 20.2}), 0);
+  Segmentation other_type = small_grid();
+  other_type.labels.convertTo(other_type.labels, CV_8U);  // not the CV_32S labels every result holds
+  EXPECT_EQ(room_at(other_type, GridFrame{}, {10.2, 20.2}), 0);
 }
 
 }  // namespace

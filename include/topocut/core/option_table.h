@@ -4,6 +4,7 @@
 // its table once, next to its options struct; every front end builds its parser from that table, so
 // the same name means the same thing, with the same default and the same check, everywhere.
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -39,8 +40,21 @@ struct OptionRow {
 // Throws Error "<shown> must be ..." unless value lies in range (kAny: the set function checks).
 void check_option_value(OptionRange range, double value, const std::string& shown);
 
-// The whole of text as a number; Error "<shown> needs a number, not '<text>'" otherwise.
+// The whole of text as a decimal number (a sign, digits, a point, an exponent; "inf" and "nan" are
+// read, for the range to refuse by name): the one reader of numbers given as text, for the command
+// line, --config, the ROS node and the benchmarks. Error "<shown> needs a number, not '<text>'"
+// otherwise (hexadecimal, blanks, trailing characters, out of double's range).
 double parse_option_number(const std::string& text, const std::string& shown);
+
+// A switch's value given as text, as YAML 1.1 reads a boolean (true/false, yes/no, on/off, y/n in
+// lower, Capitalised or UPPER case): what --config and the ROS node's service take; nullopt for any
+// other text.
+std::optional<bool> parse_switch_value(const std::string& text);
+
+// The messages every front end gives for an option: a switch given a value that is not true or
+// false, and an option given twice.
+std::string switch_value_error(const std::string& shown, const std::string& value);
+std::string given_twice_error(const std::string& shown);
 
 // The shortest text that reads back as value ("0.05", not "0.050000000000000003"), for help lines.
 std::string shortest_number(double value);

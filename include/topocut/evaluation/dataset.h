@@ -3,11 +3,13 @@
 // ground truth. For each map X the folder holds X.png (plain), X_furnitures.png (furnished) and
 // X_gt_segmentation.png; Bormann et al. (ICRA 2016) publish 20 such maps at 0.05 m/px.
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "topocut/core/error.h"
 #include "topocut/core/segmentation.h"
+#include "topocut/io/image_input.h"
 #include "topocut/evaluation/precision_recall.h"
 #include "topocut/evaluation/segmentation_scores.h"
 #include "topocut/io/map_loader.h"
@@ -98,6 +100,10 @@ struct DatasetRunOptions {
   std::function<void(const ImageResult&, const cv::Mat& segment_labels, const cv::Mat& room_labels, const OccupancyGrid& grid)>
       scored;
 };
+
+// The size map's ground truth must have: that of its first variant image whose header reads (nothing
+// is decoded), or none when none reads (the variants then fail with their own error).
+std::optional<ExpectedSize> map_image_size(const DatasetMap& map, const DatasetRunOptions& options);
 
 // Runs segmenter on every selected image (map by map, variants in options' order), loads each
 // ground truth once per map and each image's free cells (load_map with options.load), both outside

@@ -34,7 +34,8 @@ struct PrecisionRecall {
 // Loads a ground-truth image as one grey channel (CV_8UC1): colour is converted to grey, 16-bit
 // is scaled to 8 bits, and transparent pixels (alpha < 128) become 0 (never free). Throws Error naming the
 // file if it is missing, not a regular file, not an image of an accepted format or beyond limits.
-cv::Mat load_ground_truth(const std::string& path, const ImageLimits& limits = {});
+// With expected, the image must have that size (checked before it is decoded).
+cv::Mat load_ground_truth(const std::string& path, const ImageLimits& limits = {}, const ExpectedSize* expected = nullptr);
 
 // Splits the free pixels (> options.free_above) of a grey ground-truth image (CV_8UC1) into rooms by
 // 8-connected flood fill (cv::connectedComponents): returns CV_32SC1 labels, 0 = not a room, rooms

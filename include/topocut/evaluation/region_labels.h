@@ -15,6 +15,7 @@ namespace topocut {
 cv::Mat region_labels(const cv::Mat& image);
 
 // read_image() then region_labels(); errors name the file.
-cv::Mat read_region_labels(const std::string& path, const ImageLimits& limits = {});
+// With expected, the image must have that size (checked before it is decoded).
+cv::Mat read_region_labels(const std::string& path, const ImageLimits& limits = {}, const ExpectedSize* expected = nullptr);
 
 }  // namespace topocut

@@ -31,7 +31,7 @@ struct RobotMadeDataset {
 std::string robot_made_name(const std::string& plan, std::uint32_t seed);
 
 // The plan's image (its plain variant) and people's rooms of the map's size; throws Error naming the
-// ground truth when the two differ in size.
+// ground truth when its header's size differs from the plan's (before decoding it).
 OccupancyGrid load_plan(const DatasetMap& plan, const MapLoadOptions& load, cv::Mat& rooms);
 
 // Writes the robot-made maps of plans into the folder out (created if missing; files replaced

@@ -30,6 +30,14 @@ struct ImageHeader {
   std::uint64_t height = 0;
 };
 
+// The size an input image must have where another input fixes it (a label image or a ground truth
+// of a known map): checked against the header, before anything is decoded. of names what fixes it,
+// e.g. "the map".
+struct ExpectedSize {
+  std::uint64_t width = 0, height = 0;
+  std::string of;
+};
+
 // Throws Error naming the allowed range unless 0 < max_megapixels <= kMaxMegapixelsCeiling.
 void validate(const ImageLimits& limits);
 
@@ -37,19 +45,26 @@ void validate(const ImageLimits& limits);
 // one of the accepted formats or the header is truncated or declares an empty image.
 ImageHeader read_image_header(std::string_view bytes, const std::string& source);
 
-// Throws Error naming source, the limit and how to change it if header exceeds limits.
-void check_image_size(const ImageHeader& header, const ImageLimits& limits, const std::string& source);
+// Throws Error naming source, the limit and how to change it if header exceeds limits, and naming
+// both sizes if expected is given and header's differs.
+void check_image_size(const ImageHeader& header, const ImageLimits& limits, const std::string& source,
+                      const ExpectedSize* expected = nullptr);
 
 // The pixels after read_image_header() and check_image_size(), as cv::imdecode(IMREAD_UNCHANGED)
 // gave them (grey, BGR or BGRA; 8 or 16 bits; see image_codec.h); nothing is printed. Throws Error
 // naming source if it is refused or does not decode.
-cv::Mat decode_image(std::string_view bytes, const std::string& source, const ImageLimits& limits);
+cv::Mat decode_image(std::string_view bytes, const std::string& source, const ImageLimits& limits,
+                     const ExpectedSize* expected = nullptr);
 
 // The byte limit of an image file under limits: 8 bytes a pixel (16-bit RGBA, uncompressed) plus 1 MiB.
 std::uint64_t max_image_file_bytes(const ImageLimits& limits);
 
 // read_input_file() within max_image_file_bytes(), then decode_image(); `what` names the input
 // ("map image", "ground truth", ...) in errors.
-cv::Mat read_image(const std::string& path, const std::string& what, const ImageLimits& limits);
+cv::Mat read_image(const std::string& path, const std::string& what, const ImageLimits& limits,
+                   const ExpectedSize* expected = nullptr);
+
+// The size path's header declares (nothing is decoded), within limits; `what` names it in errors.
+ImageHeader read_image_size(const std::string& path, const std::string& what, const ImageLimits& limits);
 
 }  // namespace topocut

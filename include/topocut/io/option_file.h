@@ -28,8 +28,8 @@ struct OptionFileEntry {
   bool is_list = false;
   std::string where;                // "'key' in config file 'path'", how messages name it
 
-  // The value of a switch: YAML's true or false (yes/no, on/off too). Throws OptionFileError naming
-  // the key otherwise.
+  // The value of a switch: YAML's true or false (yes/no, on/off, y/n too: parse_switch_value()).
+  // Throws OptionFileError naming the key and the value otherwise (switch_value_error()).
   bool switch_value() const;
   // The value of a number option, the whole scalar as a number. Throws OptionFileError naming the
   // key for a list or anything but a number.
@@ -38,7 +38,9 @@ struct OptionFileEntry {
 
 // The entries of the YAML mapping at path, in the file's order; an empty file has none. Throws
 // FileError if the file cannot be opened, Error if it is too large (kMaxConfigYamlBytes) or not YAML,
-// OptionFileError for a key or value of the wrong shape.
+// OptionFileError for a key or value of the wrong shape, an empty key (with its line), an option
+// given twice under either spelling (with the second one's line), or keys and values that add up to
+// more than kMaxConfigYamlBytes once aliases are expanded.
 std::vector<OptionFileEntry> read_option_file(const std::string& path);
 
 // The message for an entry whose name no table of the caller knows, with the closest known name.

@@ -4,6 +4,8 @@
 // and multiply every outline's vertices. This stage keeps the floor (free space a person fits into,
 // walled-in narrow space, obstacle specks inside it); removed cells inside the building join the room
 // next to them, those outside belong to no room. Free specks are left to the contour stage.
+#include <vector>
+
 #include <opencv2/core.hpp>
 
 namespace topocut {
@@ -35,6 +37,9 @@ struct CleanedFreeSpace {
   int outside_cells = 0;  // of those, outside the building
   int speck_cells = 0;    // obstacle specks that count as floor (kCellObstacleSpeck)
   cv::Rect window;        // the cells the cleaning looked at: beyond it floor and removed are 0
+  // The bounding box of every thin part (8-connected) the cleaning judged as a whole, ray or not: a
+  // caller cleaning a window of a larger map knows its verdicts hold only for parts inside it.
+  std::vector<cv::Rect> thin_parts;
 };
 
 // Cleans a free-space mask (CV_8UC1, nonzero = free) of a map whose cells (CV_8UC1, kFree /

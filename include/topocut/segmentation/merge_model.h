@@ -3,10 +3,19 @@
 // people's, as a logistic regression over the named features of merge_features.h. The shipped model
 // (src/segmentation/merge_model.txt, built into the library) is fitted by
 // scripts/train_merge_model.py on people's rooms; another can be loaded from its text.
+#include <cstddef>
 #include <string>
 #include <vector>
 
 namespace topocut {
+
+// The size of a model any front end accepts (a file, Python's text, a MergeModel built in code):
+// weighing one candidate visits at most one path per tree, so these bound merging's cost per
+// candidate at kMaxMergeTrees x (kMaxMergeTreeDepth + 1) nodes (the shipped model: 200 trees of
+// depth 3, 2966 nodes), and the nodes bound its memory.
+inline constexpr std::size_t kMaxMergeTrees = 1000;
+inline constexpr int kMaxMergeTreeDepth = 12;               // splits on a tree's longest path
+inline constexpr std::size_t kMaxMergeModelNodes = 100000;  // of all trees together
 
 // A node of a regression tree: a split (feature >= 0: go to yes when the feature is at most threshold,
 // else to no) or a leaf (feature < 0: value).
@@ -33,8 +42,13 @@ struct MergeModel {
 // "NAME MEAN SCALE WEIGHT" per linear feature (NAME one of merge_feature_names()), and trees: "tree",
 // its nodes in order ("split NAME THRESHOLD YES NO", YES and NO node numbers later in the tree, or
 // "leaf VALUE"), "end". Throws Error naming the line on anything else (unknown or repeated feature,
-// scale <= 0, a value that is not finite, a node pointing backwards or outside its tree).
+// scale <= 0, a value that is not finite, a node pointing backwards or outside its tree), and on a
+// model beyond the limits above or a text longer than kMaxMergeModelBytes (core/input_file.h).
 MergeModel parse_merge_model(const std::string& text);
+
+// Throws Error unless model is one parse_merge_model() could give: features named once, positive
+// scales, finite numbers, trees whose splits point forwards inside them, within the limits above.
+void validate(const MergeModel& model);
 
 // The model shipped with the library.
 const MergeModel& default_merge_model();

@@ -16,13 +16,16 @@ struct SegmentSwitches {
   std::vector<std::string> rules_off;   // --no-NAME: rules of segmentation_rules() switched off
   // parity resets min-room-area to the reference's unless the caller gave it.
   bool min_room_area_given = false;
+  // A merge model was given (--merge-model, merge_model=): learned merging must be on to use it.
+  bool merge_model_given = false;
 };
 
 // Applies the switches to options (whose numbers the caller has set). The --parity rule: parity
 // sets the reference behaviour (parity_segment_options at options' concavity: every rule of
 // segmentation_rules() off, absorbed obstacles not covered, the reference's smallest room area unless
 // min_room_area_given); combined with a rule switched off or with labels.cover_absorbed_obstacles it
-// throws Error. Numbers it does not set (robot radius, hole area, ...) and trivial still apply.
+// throws Error. Numbers it does not set (robot radius, hole area, ...) and trivial still apply. A
+// merge model given while the switches leave no learned merging to use it is an Error too.
 void apply(const SegmentSwitches& switches, SegmentOptions& options);
 
 // What a front end collects before apply(): the numbers in options, the switches beside them.

@@ -16,6 +16,7 @@ cannot be opened raises FileNotFoundError, PermissionError or IsADirectoryError;
 TypeError. Results (Segmentation, Room, Passage, Map, Scores) can be pickled.
 """
 import inspect as _inspect
+import typing as _typing
 
 from . import _topocut
 from ._topocut import (
@@ -44,7 +45,7 @@ __all__ = [
     "sef", "simulate_map", "smf",
 ]
 
-_TYPES = {"bool": bool, "int": int, "float": float, "str": str}
+_TYPES = {"bool": bool, "int": int, "float": float, "str": str, "str | None": _typing.Optional[str]}
 
 
 def _with_keywords(function, kind, positional):
