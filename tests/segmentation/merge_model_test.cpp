@@ -77,7 +77,7 @@ std::string chain_model(std::size_t trees, int depth) {
   for (std::size_t t = 0; t < trees; ++t) {
     text += "tree\n";
     for (int d = 0; d < depth; ++d)  // node 2d splits to leaf 2d+1 or on to node 2d+2
-      text += "split rule_door 0.5 " + std::to_string(2 * d + 1) + " " + std::to_string(2 * d + 2) + "\nleaf 0\n";
+      text += "split furniture_end 0.5 " + std::to_string(2 * d + 1) + " " + std::to_string(2 * d + 2) + "\nleaf 0\n";
     text += "leaf 0.1\nend\n";
   }
   return text;
