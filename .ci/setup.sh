@@ -42,7 +42,7 @@ packages+=(libroscpp-dev libactionlib-dev libactionlib-msgs-dev python3-actionli
 # networkx take the Python results' to_shapely() / to_networkx(), PIL reads the CLI's label images
 # in the ROS node's test.
 case "$mode" in
-  test|sanitize) packages+=(chromium python3-shapely python3-networkx python3-sklearn python3-pil) ;;
+  test|sanitize) packages+=(chromium python3-shapely python3-networkx python3-sklearn python3-xgboost python3-pil) ;;
 esac
 # libFuzzer comes with clang only; the other modes build with GCC.
 [ "$mode" = fuzz ] && packages+=(clang libclang-rt-14-dev)

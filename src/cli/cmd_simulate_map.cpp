@@ -12,7 +12,7 @@
 #include "topocut/core/error.h"
 #include "topocut/core/format.h"
 #include "topocut/evaluation/dataset.h"
-#include "topocut/evaluation/precision_recall.h"
+#include "topocut/evaluation/robot_made_dataset.h"
 #include "topocut/exploration/simulated_map.h"
 #include "topocut/io/atomic_file.h"
 #include "topocut/io/image_input.h"
@@ -118,15 +118,6 @@ Arguments parse(const std::vector<std::string>& args, bool& help) {
   return a;
 }
 
-// The plan and its people's rooms (room labels of the plan's size): the ground truth's header is
-// checked against the plan's size before it is decoded, as every ground truth read after its map.
-OccupancyGrid load_plan(const std::string& plan_path, const std::string& gt_path, const MapLoadOptions& load, cv::Mat& rooms) {
-  OccupancyGrid plan = load_map(plan_path, load);
-  const ExpectedSize size{static_cast<std::uint64_t>(plan.width()), static_cast<std::uint64_t>(plan.height()), "the plan"};
-  rooms = ground_truth_rooms(load_ground_truth(gt_path, load.limits, &size));
-  return plan;
-}
-
 bool is_yaml(const std::string& path) {
   std::string e = fs::path(path).extension().string();
   for (char& c : e) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
@@ -164,7 +155,7 @@ int run_one(const Arguments& a) {
   inputs.push_back(gt);
   check_outputs(outputs, inputs);
   cv::Mat rooms;
-  const OccupancyGrid plan = load_plan(a.plan, gt, a.load, rooms);
+  const OccupancyGrid plan = load_plan(DatasetMap{a.plan, a.plan, "", gt}, a.load, rooms);
   const SimulatedMap simulated = simulate_map(plan, rooms, a.options, a.seed);
   write_map(a.out_map, simulated);
   write_image_atomically(a.out_gt, rooms_image(simulated));
@@ -176,41 +167,31 @@ int run_one(const Arguments& a) {
 int run_dataset(const Arguments& a) {
   std::vector<DatasetMap> maps = select_maps(discover_dataset(a.dataset), a.maps);
   if (a.limit > 0 && static_cast<std::size_t>(a.limit) < maps.size()) maps.resize(static_cast<std::size_t>(a.limit));
-  std::error_code error;
+  std::error_code error;  // the folder first: the outputs' check wants their folder to exist
   fs::create_directories(a.out, error);
   if (error || !fs::is_directory(a.out)) throw Error("cannot create the output folder " + a.out);
-  auto output = [&](const DatasetMap& m, std::uint32_t seed, const char* suffix) {
-    return (fs::path(a.out) / (m.name + "_s" + std::to_string(seed) + suffix)).string();
-  };
   std::vector<std::string> outputs, inputs;
   for (const DatasetMap& m : maps) {
     inputs.push_back(m.plain);
     inputs.push_back(m.ground_truth);
     for (int k = 0; k < a.seeds; ++k) {
-      outputs.push_back(output(m, a.seed + k, ".png"));
-      outputs.push_back(output(m, a.seed + k, "_gt_segmentation.png"));
+      const std::string stem = (fs::path(a.out) / robot_made_name(m.name, a.seed + static_cast<std::uint32_t>(k))).string();
+      outputs.push_back(stem + ".png");
+      outputs.push_back(stem + "_gt_segmentation.png");
     }
   }
   check_outputs(outputs, inputs);
-  int failed = 0, written = 0;
-  for (std::size_t i = 0; i < maps.size(); ++i) {
-    const DatasetMap& m = maps[i];
-    progress("simulate-map: " + std::to_string(i + 1) + "/" + std::to_string(maps.size()) + " " + m.name);
-    try {
-      cv::Mat rooms;
-      const OccupancyGrid plan = load_plan(m.plain, m.ground_truth, a.load, rooms);
-      for (int k = 0; k < a.seeds; ++k) {
-        const SimulatedMap simulated = simulate_map(plan, rooms, a.options, a.seed + k);
-        write_image_atomically(output(m, a.seed + k, ".png"), map_image(simulated));
-        write_image_atomically(output(m, a.seed + k, "_gt_segmentation.png"), rooms_image(simulated));
-        ++written;
-      }
-    } catch (const Error& e) {
-      std::cerr << "topocut simulate-map: " << terminal_text(m.name) << " FAILED: " << one_line_message(e.what()) << "\n";
-      ++failed;
-    }
-  }
-  std::cout << "simulated " << written << " maps of " << maps.size() - failed << " plans into " << terminal_text(a.out);
+  RobotMadeDatasetOptions options;
+  options.simulate = a.options;
+  options.load = a.load;
+  options.first_seed = a.seed;
+  options.seeds = a.seeds;
+  options.progress = [](const std::string& line) { progress("simulate-map: " + line); };
+  const RobotMadeDataset made = make_robot_made_dataset(maps, a.out, options);
+  for (const std::string& failure : made.failed)
+    std::cerr << "topocut simulate-map: FAILED: " << terminal_text(one_line_message(failure)) << "\n";
+  const std::size_t failed = made.failed.size();
+  std::cout << "simulated " << made.written << " maps of " << maps.size() - failed << " plans into " << terminal_text(a.out);
   if (failed > 0) std::cout << "; " << failed << " plans FAILED";
   std::cout << "\n";
   return failed > 0 ? 1 : 0;

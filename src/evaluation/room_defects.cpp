@@ -104,7 +104,9 @@ RoomDefects count_room_defects(const cv::Mat& labels, const OccupancyGrid& grid,
                                                            options.thin_share * static_cast<double>(room.cells);
     bool open = false;
     if (defects.open_judged && area >= options.open.min_area) {
-      open = room_outline(outlines, id, room.box, grid.cells, walls, band).open(options.open.share, options.open.ragged_share);
+      const RoomOutline outline = room_outline(outlines, id, room.box, grid.cells, walls, band);
+      open = outline.open(options.open.share, options.open.ragged_share);
+      defects.unseen += outline.open(options.open.share, 0.0);
     }
     defects.specks += speck;
     defects.thin += thin;
@@ -206,6 +208,7 @@ RoomDefects total_defects(const std::vector<MapDefectResult>& results) {
     total.thin += r.defects.thin;
     total.specks += r.defects.specks;
     total.open += r.defects.open;
+    total.unseen += r.defects.unseen;
     total.flagged += r.defects.flagged;
     total.open_judged = total.open_judged && r.defects.open_judged;
   }
@@ -218,20 +221,20 @@ double flagged_share(const RoomDefects& defects) {
 
 std::string format_defects_table(const std::vector<MapDefectResult>& results) {
   std::vector<std::vector<std::string>> rows{
-      {"map", "cells", "rooms", "thin", "specks", "open", "ms", "floor ms", "ms / floor"}};
+      {"map", "cells", "rooms", "thin", "specks", "open", "mostly unseen", "ms", "floor ms", "ms / floor"}};
   std::vector<double> ratios;
   int failed = 0;
   for (const MapDefectResult& r : results) {
     if (!r.ok) {
       ++failed;
-      rows.push_back({r.map, "-", "-", "-", "-", "-", "FAILED: " + r.error, "-", "-"});
+      rows.push_back({r.map, "-", "-", "-", "-", "-", "-", "FAILED: " + r.error, "-", "-"});
       continue;
     }
     const bool floor = r.floor_ms > 0.0;
     if (floor) ratios.push_back(r.time_ms / r.floor_ms);
     rows.push_back({r.map, std::to_string(r.width) + " x " + std::to_string(r.height), std::to_string(r.defects.rooms),
                     std::to_string(r.defects.thin), std::to_string(r.defects.specks), open_text(r.defects),
-                    fixed(r.time_ms, 1), floor ? fixed(r.floor_ms, 2) : "-",
+                    r.defects.open_judged ? std::to_string(r.defects.unseen) : "-", fixed(r.time_ms, 1), floor ? fixed(r.floor_ms, 2) : "-",
                     floor ? fixed(r.time_ms / r.floor_ms, 1) : "-"});
   }
   const RoomDefects total = total_defects(results);
@@ -239,7 +242,7 @@ std::string format_defects_table(const std::vector<MapDefectResult>& results) {
                      std::to_string(total.rooms) + " rooms: " + std::to_string(total.thin) + " thin, " +
                      std::to_string(total.specks) + " specks, " + std::to_string(total.open) + " open (" +
                      std::to_string(total.flagged) + " rooms with a defect, " + fixed(100.0 * flagged_share(total), 1) +
-                     " % of the rooms)";
+                     " % of the rooms); " + std::to_string(total.unseen) + " bounded mostly by never-seen cells";
   int unjudged = 0;
   for (const MapDefectResult& r : results) unjudged += r.ok && !r.defects.open_judged;
   if (unjudged > 0) text += "; open rooms not judged on " + std::to_string(unjudged) + " map(s) without occupied cells";

@@ -271,10 +271,10 @@ RegionPieces IncrementalSegmenter::State::decompose_region(const Region& region)
   }
   if (floor_cells == 0) return found;
   const FreeSpacePolygons polygons = free_space_polygons(region_floor, resolution, options.segment.contours);
+  const OccupancyGrid surroundings{labelled(window), resolution, {}};
   for (const FreeSpaceComponent& component : polygons.components)
-    found.set.append(decompose_component(component, resolution, options.segment));
-  if (!found.set.pieces.empty())
-    found.set = join_open_rooms(found.set, OccupancyGrid{labelled(window), resolution, {}}, options.segment.open_rooms);
+    found.set.append(decompose_component(component, surroundings, options.segment));
+  if (!found.set.pieces.empty()) found.set = join_open_rooms(found.set, surroundings, options.segment.open_rooms);
   return found;
 }
 

@@ -22,11 +22,7 @@ const std::vector<std::string>& merge_feature_names() {
       "union_solidity",               // area of the two rooms / area of their convex hull
       "solidity_loss",                // the less convex side's solidity minus the union's
       "shared_over_perimeter",        // cut length between the two rooms / the shorter room perimeter
-      "rule_door",                    // the cut is a door (narrow passage)
-      "rule_wall_opening",            // ... a thin wall continued to the next obstacle
-      "rule_island_cut",              // ... a cut onto a wall island
-      "rule_wall_line",               // ... a straight wall continued across an opening
-      "furniture_end",                // an end of the cut lies on furniture
+      "furniture_end",                // an end of the cut lies on a furniture-sized obstacle
       "min_end_angle",                // the free space's angle at the cut's ends / pi: 1 in a straight wall,
       "max_end_angle",                //   1.5 at a door jamb, 2 at a wall's end, 0.5 in a corner
       "log_wall_continued",           // log(1 + the wall the cut continues straight on, m)
@@ -38,7 +34,12 @@ const std::vector<std::string>& merge_feature_names() {
       "log_union_elongation",         // log of the union's elongation
       "ends_on_holes",                // ends of the cut on an obstacle inside the free space (0, 1 or 2)
       "log_hole_extent",              // log(1 + the largest such obstacle's bounding-box side, m)
-      "hand_rule_merge",              // the hand rules would merge across the cut (door ratio, width step, furniture)
+      "narrow_wall_share",            // the narrow room's outline along occupied cells / its perimeter
+      "wide_wall_share",              // the same of the wide room
+      "narrow_unknown_share",         // the narrow room's outline along never-seen cells / its perimeter
+      "wide_unknown_share",           // the same of the wide room
+      "cut_skew",                     // the cut's angle to the walls at its ends / (pi / 4): 0 along or
+                                      //   across them, 1 a diagonal
   };
   return names;
 }
@@ -91,10 +92,6 @@ std::vector<double> merge_features(RoomGraph& graph, std::size_t k, const RoomMe
       s_union,
       std::min(s_narrow, s_wide) - s_union,
       std::min(graph.shared_cut_length(narrow, wide) / perimeter, 1.0),
-      side.rule == CutRule::kDoor ? 1.0 : 0.0,
-      side.rule == CutRule::kWallOpening ? 1.0 : 0.0,
-      side.rule == CutRule::kIslandCut ? 1.0 : 0.0,
-      side.rule == CutRule::kWallLine ? 1.0 : 0.0,
       side.furniture ? 1.0 : 0.0,
       side.end_angle[0] / M_PI,
       side.end_angle[1] / M_PI,
@@ -107,7 +104,11 @@ std::vector<double> merge_features(RoomGraph& graph, std::size_t k, const RoomMe
       std::log(std::min(graph.elongation({narrow, wide}), 100.0)),
       static_cast<double>(std::min(side.ends_on_holes, 2)),
       std::log1p(side.hole_extent),
-      !is_door_rule(side.rule) && hand_rule_score(graph, k, options) >= options.door_ratio ? 1.0 : 0.0,
+      graph.wall_share(narrow),
+      graph.wall_share(wide),
+      graph.unknown_share(narrow),
+      graph.unknown_share(wide),
+      side.skew / (M_PI / 4.0),
   };
 }
 

@@ -92,7 +92,8 @@ std::vector<Point2> hull_of(const std::vector<Point2>& points) {
 
 }  // namespace
 
-RoomGraph::RoomGraph(const PolygonWithHoles& polygon, const PieceSet& set, double resolution, double furniture_size)
+RoomGraph::RoomGraph(const PolygonWithHoles& polygon, const PieceSet& set, const cv::Mat& cells, double resolution,
+                     double furniture_size)
     : set_(set), resolution_(resolution), parent_(set.pieces.size()) {
   std::iota(parent_.begin(), parent_.end(), 0);
   members_.resize(set.pieces.size());
@@ -110,6 +111,80 @@ RoomGraph::RoomGraph(const PolygonWithHoles& polygon, const PieceSet& set, doubl
   find_sides();
   measure_cut_ends();
   mark_furniture(polygon, furniture_size);
+  measure_outlines(cells);
+}
+
+namespace {
+
+// What lies just outside a piece's wall edge a -> b (grid coordinates): the occupied and never-seen
+// lengths (cells) of the edge, sampled a cell apart. Outside is the side whose cell is not free (the
+// piece's own side is floor); an edge with floor on both sides (a cleaned-away strip) counts as neither.
+void classify_edge(const cv::Mat& cells, const Point2& a, const Point2& b, double& occupied, double& unknown) {
+  const double length = distance(a, b);
+  if (length <= 0.0) return;
+  const Point2 n{-(b.y - a.y) / length, (b.x - a.x) / length};
+  const int samples = std::max(1, static_cast<int>(std::lround(length)));
+  const double step = length / samples;
+  auto cell = [&cells](double x, double y) -> int {
+    const int c = static_cast<int>(std::floor(x)), r = static_cast<int>(std::floor(y));
+    if (c < 0 || r < 0 || c >= cells.cols || r >= cells.rows) return kUnknown;
+    return cells.at<unsigned char>(r, c);
+  };
+  for (int i = 0; i < samples; ++i) {
+    const double t = (i + 0.5) / samples;
+    const Point2 p{a.x + (b.x - a.x) * t, a.y + (b.y - a.y) * t};
+    for (const double d : {0.75, 1.5}) {
+      const int left = cell(p.x + d * n.x, p.y + d * n.y), right = cell(p.x - d * n.x, p.y - d * n.y);
+      if (left == kFree && right == kFree) continue;
+      const int outside = left == kFree ? right : right == kFree ? left : std::min(left, right);
+      if (outside == kOccupied) occupied += step;
+      else if (outside == kUnknown) unknown += step;
+      break;
+    }
+  }
+}
+
+}  // namespace
+
+// Each piece's outline edges that no other piece shares (walls in the making), split by what lies
+// beyond them in the grid.
+void RoomGraph::measure_outlines(const cv::Mat& cells) {
+  wall_lengths_.assign(set_.pieces.size(), 0.0);
+  unknown_lengths_.assign(set_.pieces.size(), 0.0);
+  std::set<Key> edges;
+  auto for_each_edge = [](const PolygonWithHoles& piece, const auto& visit) {
+    auto ring_edges = [&visit](const Ring& ring) {
+      for (std::size_t k = 0; k < ring.size(); ++k) visit(ring[k], ring[(k + 1) % ring.size()]);
+    };
+    ring_edges(piece.outer);
+    for (const Ring& hole : piece.holes) ring_edges(hole);
+  };
+  for (const PolygonWithHoles& piece : set_.pieces)
+    for_each_edge(piece, [&](const Point2& a, const Point2& b) { edges.insert(edge_key(a, b)); });
+  for (std::size_t i = 0; i < set_.pieces.size(); ++i) {
+    double occupied = 0.0, unknown = 0.0;
+    for_each_edge(set_.pieces[i], [&](const Point2& a, const Point2& b) {
+      if (edges.count(edge_key(b, a))) return;  // shared with another piece: a cut
+      if (cells.empty()) occupied += distance(a, b);
+      else classify_edge(cells, a, b, occupied, unknown);
+    });
+    wall_lengths_[i] = occupied * resolution_;
+    unknown_lengths_[i] = unknown * resolution_;
+  }
+}
+
+double RoomGraph::wall_share(int r) {
+  double length = 0.0;
+  for (const int member : members(r)) length += wall_lengths_[static_cast<std::size_t>(member)];
+  const double perimeter = room_perimeter(r);
+  return perimeter > 0.0 ? std::min(length / perimeter, 1.0) : 0.0;
+}
+
+double RoomGraph::unknown_share(int r) {
+  double length = 0.0;
+  for (const int member : members(r)) length += unknown_lengths_[static_cast<std::size_t>(member)];
+  const double perimeter = room_perimeter(r);
+  return perimeter > 0.0 ? std::min(length / perimeter, 1.0) : 0.0;
 }
 
 // The free-space angle at each cut end, and the wall edges there that the cut continues: pieces meet
@@ -140,6 +215,8 @@ void RoomGraph::measure_cut_ends() {
     const Segment2& c = set_.cuts[k];
     const double length = distance(c.a, c.b);
     double angles[2] = {0.0, 0.0};
+    double skew[2] = {M_PI / 2.0, M_PI / 2.0};  // above any folded angle: no wall met yet
+    double continued[2] = {0.0, 0.0};
     for (int e = 0; e < 2; ++e) {
       const Point2& v = e == 0 ? c.a : c.b;
       const Point2& other = e == 0 ? c.b : c.a;
@@ -158,10 +235,17 @@ void RoomGraph::measure_cut_ends() {
           const double wl = distance(v, w);
           if (!wall || wl <= 0.0) continue;
           const double along = ((w.x - v.x) * out.x + (w.y - v.y) * out.y) / wl;
-          if (along > 0.98) side.wall_continued = std::max(side.wall_continued, wl * resolution_);
+          if (along > 0.98) continued[e] = std::max(continued[e], wl * resolution_);
+          // The angle between the cut's line and the wall's, folded into [0, pi / 4].
+          double angle = std::fmod(std::acos(std::clamp(std::abs(along), 0.0, 1.0)), M_PI / 2.0);
+          if (angle > M_PI / 4.0) angle = M_PI / 2.0 - angle;
+          skew[e] = std::min(skew[e], angle);
         }
       }
     }
+    side.wall_continued = std::max(continued[0], continued[1]);
+    for (const double end_skew : skew)
+      if (end_skew <= M_PI / 4.0) side.skew = std::max(side.skew, end_skew);
     side.end_angle[0] = std::min(angles[0], angles[1]);
     side.end_angle[1] = std::max(angles[0], angles[1]);
   }

@@ -6,6 +6,8 @@
 #include <map>
 #include <vector>
 
+#include <opencv2/core.hpp>
+
 #include "topocut/core/cut_rule.h"
 #include "topocut/core/geometry.h"
 #include "topocut/segmentation/room_merging.h"
@@ -27,10 +29,17 @@ class RoomGraph {
     double wall_continued = 0.0;  // m: the longest wall edge at an end that the cut continues straight on
     int ends_on_holes = 0;        // ends that lie on an obstacle inside the component (a hole)
     double hole_extent = 0.0;     // m: the largest bounding-box side of those obstacles
+    // The larger over both ends of the angle between the cut and the nearest wall direction there,
+    // folded into [0, pi / 4]: 0 when the cut runs along or across the walls it ends on (a door, a
+    // wall continued), pi / 4 for a diagonal across a corner.
+    double skew = 0.0;
   };
 
   // polygon is the component (its small holes are furniture); furniture_size in metres, 0: none.
-  RoomGraph(const PolygonWithHoles& polygon, const PieceSet& set, double resolution, double furniture_size);
+  // cells are the grid the component was traced from (OccupancyGrid::cells, the pieces' frame), to
+  // tell walls from never-seen space along the outlines; empty: every outline counts as wall.
+  RoomGraph(const PolygonWithHoles& polygon, const PieceSet& set, const cv::Mat& cells, double resolution,
+            double furniture_size);
 
   const PieceSet& set() const { return set_; }
   double resolution() const { return resolution_; }
@@ -53,6 +62,10 @@ class RoomGraph {
   // The rooms' elongation together: the square root of the ratio of the principal second moments
   // of their area (1 for a square or a disc, about L / W for an L x W strip).
   double elongation(const std::vector<int>& rooms);
+  // Share of room r's perimeter (room_perimeter()) that runs along occupied cells (walls, furniture),
+  // and along never-seen cells (the sensor saw no wall there: a ray fan's rim, an opening to the dark).
+  double wall_share(int r);
+  double unknown_share(int r);
   // Length of the cuts between rooms r and s (m); s < 0: between r and every other room.
   double shared_cut_length(int r, int s);
   // The cuts with a piece of room r on a side, ascending, each once: what a measure of r reads
@@ -73,6 +86,7 @@ class RoomGraph {
   void find_sides();
   void measure_cut_ends();
   void mark_furniture(const PolygonWithHoles& polygon, double furniture_size);
+  void measure_outlines(const cv::Mat& cells);
   double chord(int r, const Point2& p, const Point2& u);
 
   const PieceSet& set_;
@@ -82,6 +96,7 @@ class RoomGraph {
   std::vector<Box> boxes_;
   std::vector<double> areas_;       // m² per piece
   std::vector<double> perimeters_;  // m per piece
+  std::vector<double> wall_lengths_, unknown_lengths_;  // m per piece: outline along walls, along never-seen cells
   struct Moments {
     double a = 0.0, x = 0.0, y = 0.0, xx = 0.0, xy = 0.0, yy = 0.0;  // integrals of 1, x, y, x², xy, y² (cells)
   };

@@ -64,7 +64,7 @@ std::vector<SegmentationRule> make_rules() {
                  "merge by the hand rules (a cut spanning the narrower room, width steps) instead of the learned model",
                  [](const SegmentOptions& o) { return o.merge.learned; }, [](SegmentOptions& o) { o.merge.learned = false; }),
       stage_rule("furniture-rule", RuleStage::kMerge,
-                 "cuts that end on furniture-sized obstacles (at most 2.5 m a side) may separate rooms",
+                 "(hand rules) cuts that end on furniture-sized obstacles (at most 2.5 m a side) may separate rooms",
                  [](const SegmentOptions& o) { return o.merge.furniture_size > 0.0; },
                  [](SegmentOptions& o) { o.merge.furniture_size = 0.0; }),
       stage_rule("width-steps", RuleStage::kMerge,

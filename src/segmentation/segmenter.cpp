@@ -174,11 +174,11 @@ PieceSet decompose_pieces(const FreeSpaceComponent& component, double resolution
   }
 }
 
-PieceSet decompose_component(const FreeSpaceComponent& component, double resolution, const SegmentOptions& options,
+PieceSet decompose_component(const FreeSpaceComponent& component, const OccupancyGrid& grid, const SegmentOptions& options,
                              SegmentTimes* times) {
-  const PieceSet pieces = decompose_pieces(component, resolution, options, times);
+  const PieceSet pieces = decompose_pieces(component, grid.resolution, options, times);
   const StageTimer timer(times, SegmentStage::kMerging);
-  return merge_rooms(component, pieces, resolution, options.merge);
+  return merge_rooms(component, pieces, grid.cells, grid.resolution, options.merge);
 }
 
 SegmentOptions parity_segment_options(double concavity) {
@@ -218,7 +218,7 @@ Segmentation segment_whole(const OccupancyGrid& grid, const SegmentOptions& opti
   }
   PieceSet pieces;
   for (const FreeSpaceComponent& component : polygons.components)
-    pieces.append(decompose_component(component, grid.resolution, options, times));
+    pieces.append(decompose_component(component, input.labelled, options, times));
   StageTimer timer(times, SegmentStage::kOpenRooms);
   pieces = join_open_rooms(pieces, input.labelled, options.open_rooms);
   timer.next(SegmentStage::kLabelling);

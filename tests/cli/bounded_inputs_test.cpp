@@ -44,7 +44,7 @@ TEST(BoundedInputs, MergeModelsBeyondTheLimitsAreRefusedBeforeAnyMerging) {
   std::string many = "topocut-merge-model 1\n";
   for (int i = 0; i < 200000; ++i) many += "tree\nleaf 0.001\nend\n";
   std::string deep = "topocut-merge-model 1\ntree\n";
-  for (int d = 0; d < 5000; ++d) deep += "split rule_door 0.5 " + std::to_string(2 * d + 1) + " " + std::to_string(2 * d + 2) + "\nleaf 0\n";
+  for (int d = 0; d < 5000; ++d) deep += "split furniture_end 0.5 " + std::to_string(2 * d + 1) + " " + std::to_string(2 * d + 2) + "\nleaf 0\n";
   deep += "leaf 1\nend\n";
   const auto start = std::chrono::steady_clock::now();
   expect_clean_error(run_cli(dir, "segment", {bundled("floorplan.yaml"), "--merge-model", dir.write("many.txt", many)}),

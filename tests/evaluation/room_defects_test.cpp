@@ -99,11 +99,13 @@ TEST(RoomDefects, ARoomBoundedByRaggedUnknownOnThreeSidesIsOpen) {
   OpenRoomCase c;
   c.wall_left();  // 40 wall edges, 120 straight unknown ones: a wall drawn in the unknown grey
   EXPECT_EQ(c.count().open, 0);
+  EXPECT_EQ(c.count().unseen, 1);  // not a defect (straight), but bounded mostly by never-seen cells
   EXPECT_EQ(c.count_any_outline().open, 1);
   c.ragged(true, true, true);  // 160 unknown edges, of which all but the straight ones turn
   const RoomDefects d = c.count();
   EXPECT_EQ(d.rooms, 1);
   EXPECT_EQ(d.open, 1);
+  EXPECT_EQ(d.unseen, 1);
   EXPECT_EQ(d.thin, 0);
   EXPECT_EQ(d.flagged, 1);
 }
@@ -140,6 +142,7 @@ TEST(RoomDefects, AWalledRoomWithOneDoorIsNotOpen) {
   RoomDefects d = c.count();
   EXPECT_EQ(d.rooms, 2);
   EXPECT_EQ(d.open, 0);  // room 2 has 60 x 0.05² = 0.15 m²: a speck, too small to be called open
+  EXPECT_EQ(d.unseen, 0);  // nor counted as bounded by never-seen cells; the walled room is not
   EXPECT_EQ(d.specks, 1);
   EXPECT_EQ(d.flagged, 1);
 }

@@ -126,7 +126,7 @@ def test_the_pickle_round_trip_survives_mutated_states():
 def chain_model(trees, depth):
     text = "topocut-merge-model 1\n"
     for _ in range(trees):
-        text += "tree\n" + "".join(f"split rule_door 0.5 {2 * d + 1} {2 * d + 2}\nleaf 0\n" for d in range(depth)) + "leaf 0.1\nend\n"
+        text += "tree\n" + "".join(f"split furniture_end 0.5 {2 * d + 1} {2 * d + 2}\nleaf 0\n" for d in range(depth)) + "leaf 0.1\nend\n"
     return text
 
 

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "segmentation/room_graph.h"
+#include "topocut/core/occupancy_grid.h"
 
 namespace topocut {
 namespace {
@@ -26,7 +27,7 @@ PieceSet corridor_cut_across(CutRule rule) {
 
 TEST(MergeFeatures, ACorridorCutAcrossMeasuresAsWorkedOutByHand) {
   const PieceSet set = corridor_cut_across(CutRule::kDecomposition);
-  RoomGraph graph(PolygonWithHoles{}, set, kRes, 2.5);
+  RoomGraph graph(PolygonWithHoles{}, set, cv::Mat(), kRes, 2.5);
   const std::vector<double> f = merge_features(graph, 0, RoomMergeOptions{});
   ASSERT_EQ(f.size(), merge_feature_names().size());
   EXPECT_NEAR(feature(f, "log_cut_length"), std::log(2.0), 1e-9);
@@ -43,9 +44,6 @@ TEST(MergeFeatures, ACorridorCutAcrossMeasuresAsWorkedOutByHand) {
   EXPECT_NEAR(feature(f, "union_solidity"), 1.0, 1e-6);
   EXPECT_NEAR(feature(f, "solidity_loss"), 0.0, 1e-6);
   EXPECT_NEAR(feature(f, "shared_over_perimeter"), 0.25, 1e-9);  // 2 m of B's 8 m
-  EXPECT_EQ(feature(f, "rule_door") + feature(f, "rule_wall_opening") + feature(f, "rule_island_cut") +
-                feature(f, "rule_wall_line"),
-            0.0);
   EXPECT_NEAR(feature(f, "min_end_angle"), 1.0, 1e-9);  // both ends in a straight wall: pi
   EXPECT_NEAR(feature(f, "max_end_angle"), 1.0, 1e-9);
   EXPECT_NEAR(feature(f, "log_wall_continued"), 0.0, 1e-9);
@@ -55,15 +53,45 @@ TEST(MergeFeatures, ACorridorCutAcrossMeasuresAsWorkedOutByHand) {
   EXPECT_NEAR(feature(f, "log_narrow_elongation"), std::log(1.5), 1e-9);  // 3 m x 2 m
   EXPECT_NEAR(feature(f, "log_union_elongation"), std::log(2.5), 1e-9);   // 5 m x 2 m
   EXPECT_EQ(feature(f, "ends_on_holes"), 0.0);
-  EXPECT_EQ(feature(f, "hand_rule_merge"), 1.0);  // the hand rules merge a corridor cut across
+  // Without the grid every outline counts as wall: A's 10 m less the 2 m cut, B's 8 m less the cut.
+  EXPECT_NEAR(feature(f, "narrow_wall_share"), 0.8, 1e-9);
+  EXPECT_NEAR(feature(f, "wide_wall_share"), 0.75, 1e-9);
+  EXPECT_EQ(feature(f, "narrow_unknown_share"), 0.0);
+  EXPECT_EQ(feature(f, "wide_unknown_share"), 0.0);
+  EXPECT_NEAR(feature(f, "cut_skew"), 0.0, 1e-9);  // across the corridor, square to its walls
 }
 
-TEST(MergeFeatures, TheCutsRuleIsAFeatureAndADoorIsNeverAHandRuleMerge) {
-  const PieceSet set = corridor_cut_across(CutRule::kDoor);
-  RoomGraph graph(PolygonWithHoles{}, set, kRes, 2.5);
+TEST(MergeFeatures, NoFeatureDependsOnTheRuleThatMadeTheCut) {
+  const PieceSet decomposition = corridor_cut_across(CutRule::kDecomposition), door = corridor_cut_across(CutRule::kDoor);
+  RoomGraph a(PolygonWithHoles{}, decomposition, cv::Mat(), kRes, 2.5), b(PolygonWithHoles{}, door, cv::Mat(), kRes, 2.5);
+  EXPECT_EQ(merge_features(a, 0, RoomMergeOptions{}), merge_features(b, 0, RoomMergeOptions{}));
+}
+
+TEST(MergeFeatures, OutlinesAgainstNeverSeenCellsAreMeasuredFromTheGrid) {
+  // The same corridor placed at cell (10, 10) of a 120 x 60 grid of walls, its floor free, and the
+  // 10 columns beyond its right end (x = 110) never seen: B's outline is 2 m against never-seen cells
+  // (its 2 m end), 4 m against walls (top and bottom), 2 m the cut.
+  cv::Mat cells(60, 120, CV_8UC1, cv::Scalar(kOccupied));
+  cells(cv::Rect(10, 10, 100, 40)).setTo(kFree);
+  cells(cv::Rect(110, 0, 10, 60)).setTo(kUnknown);
+  PieceSet set;
+  set.pieces = {{{{10, 10}, {70, 10}, {70, 50}, {10, 50}}, {}}, {{{70, 10}, {110, 10}, {110, 50}, {70, 50}}, {}}};
+  set.add_cut({{70, 10}, {70, 50}}, CutRule::kDecomposition);
+  RoomGraph graph(PolygonWithHoles{}, set, cells, kRes, 2.5);
   const std::vector<double> f = merge_features(graph, 0, RoomMergeOptions{});
-  EXPECT_EQ(feature(f, "rule_door"), 1.0);
-  EXPECT_EQ(feature(f, "hand_rule_merge"), 0.0);
+  EXPECT_NEAR(feature(f, "wide_unknown_share"), 0.25, 1e-9);
+  EXPECT_NEAR(feature(f, "wide_wall_share"), 0.5, 1e-9);
+  EXPECT_NEAR(feature(f, "narrow_unknown_share"), 0.0, 1e-9);
+  EXPECT_NEAR(feature(f, "narrow_wall_share"), 0.8, 1e-9);
+}
+
+TEST(MergeFeatures, ADiagonalAcrossARoomIsSkewedToItsWalls) {
+  // A 2 m square cut corner to corner: at both ends the walls run at 45 degrees to the cut.
+  PieceSet set;
+  set.pieces = {{{{0, 0}, {40, 0}, {40, 40}}, {}}, {{{0, 0}, {40, 40}, {0, 40}}, {}}};
+  set.add_cut({{0, 0}, {40, 40}}, CutRule::kDecomposition);
+  RoomGraph graph(PolygonWithHoles{}, set, cv::Mat(), kRes, 2.5);
+  EXPECT_NEAR(feature(merge_features(graph, 0, RoomMergeOptions{}), "cut_skew"), 1.0, 1e-9);
 }
 
 }  // namespace

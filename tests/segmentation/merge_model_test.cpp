@@ -25,17 +25,17 @@ TEST(MergeModel, ALinearTermAndATreeAddUpInTheLogit) {
       "bias -1\n"
       "cut_over_narrow_width 0.5 0.25 2   # (x - 0.5) / 0.25 * 2\n"
       "tree\n"
-      "split rule_door 0.5 1 2\n"
+      "split furniture_end 0.5 1 2\n"
       "leaf 0.5\n"
       "leaf -3\n"
       "end\n");
   EXPECT_DOUBLE_EQ(model.threshold, 0.4);
-  // x = 1: -1 + 4 + 0.5 (not a door: the first leaf) = 3.5.
+  // x = 1: -1 + 4 + 0.5 (no furniture: the first leaf) = 3.5.
   EXPECT_NEAR(merge_probability(model, features_with("cut_over_narrow_width", 1.0)), 1.0 / (1.0 + std::exp(-3.5)), 1e-12);
-  // A door and x = 0.5: -1 + 0 - 3 = -4.
-  std::vector<double> door = features_with("rule_door", 1.0);
-  door[static_cast<std::size_t>(merge_feature_index("cut_over_narrow_width"))] = 0.5;
-  EXPECT_NEAR(merge_probability(model, door), 1.0 / (1.0 + std::exp(4.0)), 1e-12);
+  // Furniture and x = 0.5: -1 + 0 - 3 = -4.
+  std::vector<double> table = features_with("furniture_end", 1.0);
+  table[static_cast<std::size_t>(merge_feature_index("cut_over_narrow_width"))] = 0.5;
+  EXPECT_NEAR(merge_probability(model, table), 1.0 / (1.0 + std::exp(4.0)), 1e-12);
 }
 
 TEST(MergeModel, BadTextIsAnErrorNamingTheLine) {
@@ -43,7 +43,7 @@ TEST(MergeModel, BadTextIsAnErrorNamingTheLine) {
   for (const std::string& text :
        {std::string("bias 0\n"), head + "no_such_feature 0 1 1\n", head + "log_cut_length 0 0 1\n",
         head + "log_cut_length 0 1 1\nlog_cut_length 0 1 1\n", head + "bias nan\n", head + "tree\nleaf 1\n",
-        head + "tree\nsplit rule_door 0.5 0 1\nleaf 1\nend\n", head + "tree\nsplit rule_door 0.5 1 5\nleaf 1\nleaf 2\nend\n",
+        head + "tree\nsplit furniture_end 0.5 0 1\nleaf 1\nend\n", head + "tree\nsplit furniture_end 0.5 1 5\nleaf 1\nleaf 2\nend\n",
         head + "tree\nend\n", head + "bias 1 2\n"}) {
     EXPECT_THROW(parse_merge_model(text), Error) << text;
   }
@@ -77,7 +77,7 @@ std::string chain_model(std::size_t trees, int depth) {
   for (std::size_t t = 0; t < trees; ++t) {
     text += "tree\n";
     for (int d = 0; d < depth; ++d)  // node 2d splits to leaf 2d+1 or on to node 2d+2
-      text += "split rule_door 0.5 " + std::to_string(2 * d + 1) + " " + std::to_string(2 * d + 2) + "\nleaf 0\n";
+      text += "split furniture_end 0.5 " + std::to_string(2 * d + 1) + " " + std::to_string(2 * d + 2) + "\nleaf 0\n";
     text += "leaf 0.1\nend\n";
   }
   return text;

@@ -49,7 +49,7 @@ double shared_by_definition(RoomGraph& g, int r, int s) {
 
 TEST(RoomGraph, ARoomsCutsAndMeasuresAreThoseOfEveryCutBesideIt) {
   const PieceSet set = comb(8);
-  RoomGraph g(PolygonWithHoles{}, set, kRes, 0.0);
+  RoomGraph g(PolygonWithHoles{}, set, cv::Mat(), kRes, 0.0);
   ASSERT_EQ(g.sides().size(), 14u);
   // Rooms of several pieces, as merging makes them (not all of them touching: the measures must not care).
   g.unite(0, 1);

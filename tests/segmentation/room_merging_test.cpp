@@ -73,7 +73,7 @@ TEST(MergeRooms, AnOpeningAsWideAsTheRoomIsNoDoor) {
   PieceSet set;
   set.pieces = {box(0, 0, 60, 40), box(60, 0, 100, 40), box(60, 40, 100, 100)};
   set.cuts = {{{60, 0}, {60, 40}}, {{60, 40}, {100, 40}}};
-  const PieceSet rooms = merge_rooms(no_component(), set, kRes, hand_rules());
+  const PieceSet rooms = merge_rooms(no_component(), set, cv::Mat(), kRes, hand_rules());
   ASSERT_EQ(rooms.pieces.size(), 1u);
   EXPECT_TRUE(rooms.cuts.empty());
   EXPECT_DOUBLE_EQ(area(rooms.pieces[0]), 60 * 40 + 40 * 40 + 40 * 60);
@@ -91,7 +91,7 @@ TEST(MergeRooms, ADoorBetweenTwoRoomsKeepsThemApart) {
                 box(60, 20, 64, 38),
                 {{{64, 0}, {124, 0}, {124, 60}, {64, 60}, {64, 38}, {64, 20}}, {}}};
   set.cuts = {{{60, 20}, {60, 38}}, {{64, 38}, {64, 20}}};
-  const PieceSet rooms = merge_rooms(no_component(), set, kRes, hand_rules());
+  const PieceSet rooms = merge_rooms(no_component(), set, cv::Mat(), kRes, hand_rules());
   ASSERT_EQ(rooms.pieces.size(), 2u);
   ASSERT_EQ(rooms.cuts.size(), 1u);
   EXPECT_NEAR(distance(rooms.cuts[0].a, rooms.cuts[0].b) * kRes, 0.9, 1e-12);
@@ -107,9 +107,9 @@ TEST(MergeRooms, AKnownDoorIsNeverMergedAsAWideOpening) {
   PieceSet set;
   set.pieces = {box(0, 0, 60, 40), box(60, 0, 100, 40)};
   set.cuts = {{{60, 0}, {60, 40}}};
-  EXPECT_EQ(merge_rooms(no_component(), set, kRes, hand_rules()).pieces.size(), 1u);
+  EXPECT_EQ(merge_rooms(no_component(), set, cv::Mat(), kRes, hand_rules()).pieces.size(), 1u);
   set.rules = {CutRule::kDoor};
-  EXPECT_EQ(merge_rooms(no_component(), set, kRes, hand_rules()).pieces.size(), 2u);
+  EXPECT_EQ(merge_rooms(no_component(), set, cv::Mat(), kRes, hand_rules()).pieces.size(), 2u);
 }
 
 TEST(MergeRooms, ASliverIsFoldedIntoTheNeighbourWithTheLongestCut) {
@@ -124,7 +124,7 @@ TEST(MergeRooms, ASliverIsFoldedIntoTheNeighbourWithTheLongestCut) {
   RoomMergeOptions options = hand_rules();
   options.door_ratio = 10.0;      // no cut is wide enough to merge as "not a door"
   options.min_room_area = 3.0;    // m²: the strip is too small to be a room
-  const PieceSet rooms = merge_rooms(no_component(), set, kRes, options);
+  const PieceSet rooms = merge_rooms(no_component(), set, cv::Mat(), kRes, options);
   ASSERT_EQ(rooms.pieces.size(), 2u);
   EXPECT_DOUBLE_EQ(area(rooms.pieces[0]), 80 * 100 + area(set.pieces[1]));
   ASSERT_EQ(rooms.cuts.size(), 1u);
@@ -141,9 +141,9 @@ TEST(MergeRooms, AThinStripIsFoldedWhenAMinimumWidthIsSet) {
   RoomMergeOptions options = hand_rules();
   options.door_ratio = 10.0;
   options.min_room_thickness = 0.0;
-  EXPECT_EQ(merge_rooms(no_component(), set, kRes, options).pieces.size(), 2u);
+  EXPECT_EQ(merge_rooms(no_component(), set, cv::Mat(), kRes, options).pieces.size(), 2u);
   options.min_room_width = 0.5;  // the strip's widest chord parallel to its cut is 0.3 m
-  const PieceSet rooms = merge_rooms(no_component(), set, kRes, options);
+  const PieceSet rooms = merge_rooms(no_component(), set, cv::Mat(), kRes, options);
   ASSERT_EQ(rooms.pieces.size(), 1u);
   EXPECT_DOUBLE_EQ(area(rooms.pieces[0]), 120 * 80 + 6 * 120);
   EXPECT_TRUE(rooms.cuts.empty());
@@ -155,16 +155,16 @@ TEST(MergeRooms, DisabledReturnsThePiecesAndBadOptionsAreErrors) {
   set.cuts = {{{60, 0}, {60, 40}}};
   RoomMergeOptions off;
   off.enabled = false;
-  const PieceSet same = merge_rooms(no_component(), set, kRes, off);
+  const PieceSet same = merge_rooms(no_component(), set, cv::Mat(), kRes, off);
   EXPECT_EQ(same.pieces, set.pieces);
   EXPECT_EQ(same.cuts, set.cuts);
   RoomMergeOptions bad;
   bad.door_ratio = 0.0;
-  EXPECT_THROW(merge_rooms(no_component(), set, kRes, bad), Error);
+  EXPECT_THROW(merge_rooms(no_component(), set, cv::Mat(), kRes, bad), Error);
   bad = {};
   bad.min_room_area = -1.0;
-  EXPECT_THROW(merge_rooms(no_component(), set, kRes, bad), Error);
-  EXPECT_THROW(merge_rooms(no_component(), set, 0.0), Error);
+  EXPECT_THROW(merge_rooms(no_component(), set, cv::Mat(), kRes, bad), Error);
+  EXPECT_THROW(merge_rooms(no_component(), set, cv::Mat(), 0.0), Error);
 }
 
 }  // namespace
@@ -182,11 +182,11 @@ TEST(MergeRooms, ASliverThinnerThanAPersonIsFolded) {
   RoomMergeOptions options = hand_rules();
   options.door_ratio = 10.0;
   options.min_room_thickness = 0.0;
-  EXPECT_EQ(merge_rooms(no_component(), set, kRes, options).pieces.size(), 2u);
+  EXPECT_EQ(merge_rooms(no_component(), set, cv::Mat(), kRes, options).pieces.size(), 2u);
   options.min_room_thickness = 0.35;  // just below the strip's 0.36 m
-  EXPECT_EQ(merge_rooms(no_component(), set, kRes, options).pieces.size(), 2u);
+  EXPECT_EQ(merge_rooms(no_component(), set, cv::Mat(), kRes, options).pieces.size(), 2u);
   options.min_room_thickness = 0.6;  // the default
-  const PieceSet rooms = merge_rooms(no_component(), set, kRes, options);
+  const PieceSet rooms = merge_rooms(no_component(), set, cv::Mat(), kRes, options);
   ASSERT_EQ(rooms.pieces.size(), 1u);
   EXPECT_DOUBLE_EQ(area(rooms.pieces[0]), 128 * 80);
 }
@@ -211,13 +211,13 @@ TEST(MergeRooms, CutsEndingOnFurnitureSeparateNoRooms) {
   options.door_ratio = 10.0;  // no cut merges as "not a door": only the furniture rule can merge
   FreeSpaceComponent table;
   const PieceSet set = around_obstacle(20, table);  // a 1 m table
-  EXPECT_EQ(merge_rooms(table, set, kRes, options).pieces.size(), 1u);
+  EXPECT_EQ(merge_rooms(table, set, cv::Mat(), kRes, options).pieces.size(), 1u);
   options.furniture_size = 0.0;
-  EXPECT_EQ(merge_rooms(table, set, kRes, options).pieces.size(), 4u);
+  EXPECT_EQ(merge_rooms(table, set, cv::Mat(), kRes, options).pieces.size(), 4u);
   options.furniture_size = 2.5;
   FreeSpaceComponent core;
   const PieceSet big = around_obstacle(60, core);  // a 3 m block is no furniture
-  EXPECT_EQ(merge_rooms(core, big, kRes, options).pieces.size(), 4u);
+  EXPECT_EQ(merge_rooms(core, big, cv::Mat(), kRes, options).pieces.size(), 4u);
 }
 
 TEST(MergeRooms, ARoomOpeningOntoAMuchWiderDeepSpaceStaysApart) {
@@ -227,40 +227,55 @@ TEST(MergeRooms, ARoomOpeningOntoAMuchWiderDeepSpaceStaysApart) {
   set.pieces = {{{{0, 0}, {240, 0}, {240, 160}, {160, 160}, {80, 160}, {0, 160}}, {}}, box(80, 160, 160, 240)};
   set.cuts = {{{80, 160}, {160, 160}}};
   RoomMergeOptions options = hand_rules();
-  EXPECT_EQ(merge_rooms(no_component(), set, kRes, options).pieces.size(), 2u);
+  EXPECT_EQ(merge_rooms(no_component(), set, cv::Mat(), kRes, options).pieces.size(), 2u);
   options.step_ratio = 0.0;  // the cut spans the narrow room: not door-like, merged
-  EXPECT_EQ(merge_rooms(no_component(), set, kRes, options).pieces.size(), 1u);
+  EXPECT_EQ(merge_rooms(no_component(), set, cv::Mat(), kRes, options).pieces.size(), 1u);
   // Onto a 3 m deep corridor instead: the corridor takes the room in.
   PieceSet corridor;
   corridor.pieces = {{{{0, 100}, {240, 100}, {240, 160}, {160, 160}, {80, 160}, {0, 160}}, {}}, box(80, 160, 160, 240)};
   corridor.cuts = set.cuts;
-  EXPECT_EQ(merge_rooms(no_component(), corridor, kRes, hand_rules()).pieces.size(), 1u);
+  EXPECT_EQ(merge_rooms(no_component(), corridor, cv::Mat(), kRes, hand_rules()).pieces.size(), 1u);
   // A 2 m x 4 m room onto a 12 m wide hall only 3 m deep: merged across a DuDe cut (3 < 5 m), kept
   // apart across a wall line (the hall reaches 3 m behind it, more than 1.25 x 2 m), and the line
   // stays listed as one.
   PieceSet hall;
   hall.pieces = {{{{0, 100}, {240, 100}, {240, 160}, {120, 160}, {80, 160}, {0, 160}}, {}}, box(80, 160, 120, 240)};
   hall.cuts = {{{80, 160}, {120, 160}}};
-  EXPECT_EQ(merge_rooms(no_component(), hall, kRes, hand_rules()).pieces.size(), 1u);
+  EXPECT_EQ(merge_rooms(no_component(), hall, cv::Mat(), kRes, hand_rules()).pieces.size(), 1u);
   hall.rules = {CutRule::kWallLine};
-  const PieceSet kept = merge_rooms(no_component(), hall, kRes, hand_rules());
+  const PieceSet kept = merge_rooms(no_component(), hall, cv::Mat(), kRes, hand_rules());
   EXPECT_EQ(kept.pieces.size(), 2u);
   EXPECT_EQ(kept.cuts, hall.cuts);
   EXPECT_EQ(kept.rules, std::vector<CutRule>{CutRule::kWallLine});
   // The 4 m room onto the 3 m corridor still merges across a wall line: 3 < 1.25 x 4 m.
   corridor.rules = {CutRule::kWallLine};
-  EXPECT_EQ(merge_rooms(no_component(), corridor, kRes, hand_rules()).pieces.size(), 1u);
+  EXPECT_EQ(merge_rooms(no_component(), corridor, cv::Mat(), kRes, hand_rules()).pieces.size(), 1u);
 }
 
 TEST(MergeRooms, TheLearnedCriterionMergesWhereTheModelSaysOneRoom) {
   PieceSet set;
   set.pieces = {box(0, 0, 60, 40), box(60, 0, 100, 40)};
   set.cuts = {{{60, 0}, {60, 40}}};
-  EXPECT_EQ(merge_rooms(no_component(), set, kRes, constant_model(5.0)).pieces.size(), 1u);
-  EXPECT_EQ(merge_rooms(no_component(), set, kRes, constant_model(-5.0)).pieces.size(), 2u);
-  // A table's cuts are no room boundary whatever the model says.
+  EXPECT_EQ(merge_rooms(no_component(), set, cv::Mat(), kRes, constant_model(5.0)).pieces.size(), 1u);
+  EXPECT_EQ(merge_rooms(no_component(), set, cv::Mat(), kRes, constant_model(-5.0)).pieces.size(), 2u);
+  // The model alone decides: no hand rule merges a table's cuts behind its back.
   FreeSpaceComponent table;
-  EXPECT_EQ(merge_rooms(table, around_obstacle(20, table), kRes, constant_model(-10.0)).pieces.size(), 1u);
+  EXPECT_EQ(merge_rooms(table, around_obstacle(20, table), cv::Mat(), kRes, constant_model(-10.0)).pieces.size(), 4u);
+  EXPECT_EQ(merge_rooms(table, around_obstacle(20, table), cv::Mat(), kRes, constant_model(10.0)).pieces.size(), 1u);
+}
+
+TEST(MergeRooms, AThinClosetIsTheModelsToKeepAndSliversBelowTheFoldAreaFold) {
+  // A 0.5 m x 2 m closet (1 m², 0.4 m thick) beside a 4 m x 2 m room: the hand rules fold it as thinner
+  // than a person, the learned criterion keeps what its model keeps; a 0.4 m² sliver folds either way.
+  PieceSet set;
+  set.pieces = {box(0, 0, 80, 40), box(80, 0, 90, 40)};
+  set.cuts = {{{80, 0}, {80, 40}}};
+  EXPECT_EQ(merge_rooms(no_component(), set, cv::Mat(), kRes, constant_model(-10.0)).pieces.size(), 2u);
+  RoomMergeOptions hand = hand_rules();
+  hand.door_ratio = 10.0;  // nothing merges as "not a door": only the fold can join them
+  EXPECT_EQ(merge_rooms(no_component(), set, cv::Mat(), kRes, hand).pieces.size(), 1u);
+  set.pieces[1] = box(80, 0, 84, 40);  // 0.2 m x 2 m = 0.4 m²
+  EXPECT_EQ(merge_rooms(no_component(), set, cv::Mat(), kRes, constant_model(-10.0)).pieces.size(), 1u);
 }
 
 TEST(MergeRooms, ACorridorContinuedIsOneRoomWhateverTheModel) {
@@ -270,16 +285,16 @@ TEST(MergeRooms, ACorridorContinuedIsOneRoomWhateverTheModel) {
   bent.pieces = {{{{0, 0}, {200, 0}, {200, 40}, {40, 40}, {0, 40}}, {}}, box(0, 40, 40, 200)};
   bent.cuts = {{{0, 40}, {40, 40}}};
   bent.rules = {CutRule::kWallLine};
-  EXPECT_EQ(merge_rooms(no_component(), bent, kRes, constant_model(-10.0)).pieces.size(), 1u);
+  EXPECT_EQ(merge_rooms(no_component(), bent, cv::Mat(), kRes, constant_model(-10.0)).pieces.size(), 1u);
   // Through a door it stays two (a door is a boundary people draw), and a 4 m x 4 m room at the
   // corridor's end is no strip: the model decides.
   bent.rules = {CutRule::kDoor};
-  EXPECT_EQ(merge_rooms(no_component(), bent, kRes, constant_model(-10.0)).pieces.size(), 2u);
+  EXPECT_EQ(merge_rooms(no_component(), bent, cv::Mat(), kRes, constant_model(-10.0)).pieces.size(), 2u);
   PieceSet room;
   room.pieces = {box(0, 0, 200, 40), {{{200, -20}, {280, -20}, {280, 60}, {200, 60}, {200, 40}, {200, 0}}, {}}};
   room.cuts = {{{200, 0}, {200, 40}}};
-  EXPECT_EQ(merge_rooms(no_component(), room, kRes, constant_model(-10.0)).pieces.size(), 2u);
-  EXPECT_EQ(merge_rooms(no_component(), room, kRes, constant_model(10.0)).pieces.size(), 1u);
+  EXPECT_EQ(merge_rooms(no_component(), room, cv::Mat(), kRes, constant_model(-10.0)).pieces.size(), 2u);
+  EXPECT_EQ(merge_rooms(no_component(), room, cv::Mat(), kRes, constant_model(10.0)).pieces.size(), 1u);
 }
 
 }  // namespace

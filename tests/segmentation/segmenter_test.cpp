@@ -260,13 +260,13 @@ TEST(Segment, StagesComposeToSegment) {
   const cv::Mat free = segmentation_free_space(grid, options);
   const FreeSpacePolygons polygons = free_space_polygons(free, grid.resolution, options.contours);
   PieceSet pieces;
-  for (const FreeSpaceComponent& c : polygons.components) pieces.append(decompose_component(c, grid.resolution, options));
+  for (const FreeSpaceComponent& c : polygons.components) pieces.append(decompose_component(c, grid, options));
   const Segmentation staged = rooms_from_pieces(grid, pieces);
   EXPECT_EQ(cv::countNonZero(staged.labels != segment(grid, options).labels), 0);
   // Trivial mode hands back the component itself.
   SegmentOptions plain = options;
   plain.decompose = false;
-  const PieceSet one = decompose_component(polygons.components[0], grid.resolution, plain);
+  const PieceSet one = decompose_component(polygons.components[0], grid, plain);
   ASSERT_EQ(one.pieces.size(), 1u);
   EXPECT_EQ(one.pieces[0], polygons.components[0].polygon);
   EXPECT_TRUE(one.cuts.empty());
@@ -358,8 +358,14 @@ TEST(Segment, TwoRoomsBehindAFreeStandingWallAreRoomsOfTheirOwn) {
   EXPECT_NE(corridor, right);
   EXPECT_NE(left, right);
   EXPECT_EQ(s.passages.size(), 3u);
+  // The doors round the island are island cuts; without them the learned merging still finds the three
+  // rooms here from the pieces' shapes, the hand rules do not.
+  EXPECT_TRUE(std::any_of(s.passages.begin(), s.passages.end(), [](const Passage& p) { return p.rule == CutRule::kIslandCut; }));
   SegmentOptions off;
   off.doors.island_cuts = false;
+  const Segmentation without = segment(grid, off);
+  EXPECT_TRUE(std::none_of(without.passages.begin(), without.passages.end(), [](const Passage& p) { return p.rule == CutRule::kIslandCut; }));
+  off.merge.learned = false;
   EXPECT_LT(segment(grid, off).rooms.size(), 3u);
 }
 

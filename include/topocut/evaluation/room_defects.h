@@ -33,6 +33,10 @@ struct RoomDefects {
   int thin = 0;
   int specks = 0;
   int open = 0;
+  // Rooms bounded mostly by never-seen cells: more than open.share of the outline against walls and
+  // never-seen space runs into never-seen space, ragged or not (a room seen only through an opening);
+  // counted beside the defects, not among them.
+  int unseen = 0;
   int flagged = 0;           // rooms with at least one defect (a ray fan is often thin and open)
   bool open_judged = true;   // false when the grid has no occupied cell: open rooms are not counted
 };

@@ -1,7 +1,9 @@
 #pragma once
 // What merging knows of a candidate merge: two adjacent rooms in the making and one cut between them,
-// described in metres and ratios (cut length, widths and depths of both sides, areas, thickness,
-// convexity of the union, the rule that made the cut), the same on every kind of map.
+// described by measurements in metres and ratios (cut length, widths and depths of both sides, areas,
+// thickness, convexity of the union, what the rooms' outlines run along, the cut's angles to the
+// walls), the same on every kind of map. No feature is a rule's decision, so rules and the model can
+// change apart.
 #include <string>
 #include <vector>
 

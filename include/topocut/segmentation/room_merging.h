@@ -27,16 +27,18 @@ struct RoomMergeOptions {
   // a wall, so a door's frame is not the room behind it.
   double width_depth = 1.0;
   // m²: smaller rooms (slivers between cuts, leaks through doors) fold into the neighbour sharing
-  // the longest cut.
-  double min_room_area = 1.0;
+  // the longest cut. Half a square metre: the smallest closets people draw are larger.
+  double min_room_area = 0.5;
   // Metres: rooms whose widest chord along any cut stays below this fold the same way (a strip of
   // rays through a gap). 0 (default) disables: leaks are mostly components of their own.
   double min_room_width = 0.0;
-  // Metres of thickness (2 area / perimeter): thinner rooms (slivers, roots of ray fans) fold the
-  // same way. 0.6 m is a person's width, the disc the defect count uses.
+  // (Hand rules) metres of thickness (2 area / perimeter): thinner rooms (slivers, roots of ray fans)
+  // fold the same way. 0.6 m is a person's width, the disc the defect count uses. The learned
+  // criterion weighs thin rooms itself (closets behind a door are thin and are rooms).
   double min_room_thickness = 0.6;
-  // Metres: an obstacle whose box is at most this long both ways is furniture, and a cut ending on
-  // it separates no rooms (a room does not end at a table). 0 disables.
+  // Metres: an obstacle whose box is at most this long both ways is furniture: a feature of the
+  // learned criterion, and for the hand rules a cut ending on it separates no rooms (a room does not
+  // end at a table). 0: no obstacle is furniture.
   double furniture_size = 2.5;
   // Width steps (hand rules): a room narrower than step_ratio ([0, 1); 0 off) times the space it
   // opens onto stays apart when that space is step_min_wide_depth metres deep and both are
@@ -55,8 +57,10 @@ void validate(const RoomMergeOptions& options);
 // Merges the pieces of one free-space component (grid coordinates; resolution converts the options'
 // metres) into rooms: each the exact union of its pieces, in order of their first piece, with the cuts
 // between two rooms in input order (keyhole cuts dropped); unchanged unless options.enabled.
-// component.polygon's small holes are the furniture. trace, if given, receives every merge weighed.
-PieceSet merge_rooms(const FreeSpaceComponent& component, const PieceSet& pieces, double resolution,
+// component.polygon's small holes are the furniture; cells, the grid it was traced from
+// (OccupancyGrid::cells; empty: not known), tell walls from never-seen space along the rooms' outlines.
+// trace, if given, receives every merge weighed.
+PieceSet merge_rooms(const FreeSpaceComponent& component, const PieceSet& pieces, const cv::Mat& cells, double resolution,
                      const RoomMergeOptions& options = {}, std::vector<MergeStep>* trace = nullptr);
 
 // The union of pieces that tile a region without overlapping and meet only along whole shared

@@ -15,7 +15,7 @@
 //   merge           segmentation/room_merging.h   pieces joined into rooms, then rooms too small or thin
 //                                                 to be rooms folded
 //   learned-merge   segmentation/merge_model.h    by the learned model (off: by the hand rules below)
-//   furniture-rule  segmentation/room_merging.h   cuts ending on furniture separate no rooms
+//   furniture-rule  segmentation/room_merging.h   (hand rules) cuts ending on furniture separate no rooms
 //   width-steps     segmentation/room_merging.h   (hand rules) a room opening onto a much wider space
 //   open-rooms      segmentation/open_rooms.h     rooms bounded mostly by never-seen space join their neighbour
 //                                                 (with none beside them, outside the building: left out)

@@ -88,10 +88,10 @@ PolygonWithHoles simplified_where_valid(const PolygonWithHoles& exact, double to
 PieceSet decompose_pieces(const FreeSpaceComponent& component, double resolution, const SegmentOptions& options,
                           SegmentTimes* times = nullptr);
 
-// Stage 3: the rooms of one free-space component (grid coordinates) and the cuts between them:
-// decompose_pieces() followed by merge_rooms() with options.merge. Errors name the component's
-// first cell. Stage times are added to times, if given.
-PieceSet decompose_component(const FreeSpaceComponent& component, double resolution, const SegmentOptions& options,
+// Stage 3: the rooms of one free-space component (grid coordinates of grid, the labelled grid it was
+// traced from) and the cuts between them: decompose_pieces() followed by merge_rooms() with
+// options.merge. Errors name the component's first cell. Stage times are added to times, if given.
+PieceSet decompose_component(const FreeSpaceComponent& component, const OccupancyGrid& grid, const SegmentOptions& options,
                              SegmentTimes* times = nullptr);
 
 // Throws Error unless the options are usable (finite, positive concavity and so on).
