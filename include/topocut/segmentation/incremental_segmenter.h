@@ -7,6 +7,7 @@
 // the changed free space, every other room kept as it is, with its id, polygon and passages. Work stays
 // near the change, so an update costs what the change costs, not what the map does.
 #include <cstddef>
+#include <iosfwd>
 #include <memory>
 #include <string>
 
@@ -161,6 +162,16 @@ class IncrementalSegmenter {
 
   // Bytes held between updates: grid copy, cleaned free space, labelled cells, labels, rooms and passages.
   std::size_t state_bytes() const;
+
+  // Writes the id ledger (id_ledger.h) with the latest rooms, so that a segmenter started later (a
+  // restarted node) can give the same rooms the same ids. Throws Error before the first update.
+  void save_ledger(std::ostream& out) const;
+
+  // Forgets everything, then reads what save_ledger() wrote: the next update segments the whole map
+  // and carries the saved rooms' ids by overlap (where the saved map lies on whole cells of the new
+  // one), never reusing an id handed out before the save. Throws Error on a damaged ledger, leaving
+  // the segmenter unchanged.
+  void load_ledger(std::istream& in);
 
   // Forgets everything; the next update is a batch one with fresh ids.
   void reset();
