@@ -3,10 +3,13 @@
 #include <charconv>
 #include <chrono>
 #include <cstdlib>
+#include <fstream>
 #include <optional>
+#include <sstream>
 
 #include "topocut/core/option_names.h"
 #include "topocut/core/option_table.h"
+#include "topocut/io/atomic_file.h"
 #include "topocut/io/image_input.h"  // ImageLimits
 #include "topocut/segmentation/room_at.h"
 #include "topocut/segmentation/segment_switches.h"
@@ -25,8 +28,12 @@ struct MapSettings {
   double free_thresh = topocut::GridArray{}.free_thresh;
   double occupied_thresh = topocut::GridArray{}.occupied_thresh;
   double batch_fraction = topocut::IncrementalOptions{}.batch_fraction;
+  double settle_after = 2.0;  // seconds without a changed map before the rooms become segment()'s
+  std::string id_ledger;      // file the room ids are kept in across restarts ("" = none)
   topocut::ImageLimits limits;
 };
+
+constexpr const char* kLedgerParameter = "id_ledger";
 
 struct NodeSettings {
   SegmentSettings segment;
@@ -50,6 +57,9 @@ const std::vector<OptionRow<MapSettings>>& map_option_rows() {
       {"batch_fraction", "F", "share of changed free cells that makes a live update a batch one",
        topocut::OptionRange::kPositive, [](const MapSettings& s) { return s.batch_fraction; },
        [](MapSettings& s, double v) { s.batch_fraction = v; }},
+      {"settle_after", "S", "seconds without a changed map after which the rooms are segment()'s (0: never)",
+       topocut::OptionRange::kNonNegative, [](const MapSettings& s) { return s.settle_after; },
+       [](MapSettings& s, double v) { s.settle_after = v; }},
       {"max_megapixels", "N", "maps of more megapixels are logged and skipped before a cell is read (at most 1000)",
        topocut::OptionRange::kPositive,
        [](const MapSettings& s) { return s.limits.max_megapixels; },
@@ -64,6 +74,7 @@ std::vector<std::string> known_names() {
   std::vector<std::string> names;
   for (const auto& row : topocut::segment_option_rows()) names.push_back(topocut::underscored_option_name(row.name));
   for (const auto& row : map_option_rows()) names.push_back(row.name);
+  names.push_back(kLedgerParameter);
   return names;
 }
 
@@ -96,6 +107,11 @@ bool set_row(const std::vector<OptionRow<Target>>& rows, const std::string& name
 // name is appended to unknown, or an Error when unknown is null (a service call's options).
 NodeSettings read_parameters(NodeSettings settings, const std::vector<Parameter>& given, std::vector<std::string>* unknown) {
   for (const Parameter& p : given) {
+    if (p.name == kLedgerParameter) {
+      if (p.kind != Parameter::Kind::kText || p.text.empty()) throw Error("~id_ledger needs the path of a file");
+      settings.map.id_ledger = p.text;
+      continue;
+    }
     if (set_row(topocut::segment_option_rows(), topocut::dashed_option_name(p.name), settings.segment, p) ||
         set_row(map_option_rows(), topocut::underscored_option_name(p.name), settings.map, p))
       continue;
@@ -223,6 +239,8 @@ std::string parameters_help() {
     line(topocut::underscored_option_name(row.name), row.value_name, row.help, row.is_switch() ? "" : topocut::shortest_number(row.get(defaults.segment)));
   for (const auto& row : map_option_rows())
     line(row.name, row.value_name, row.help, topocut::shortest_number(row.get(defaults.map)));
+  line(kLedgerParameter, "PATH", "file the room ids are kept in: read at start, written when the rooms settle "
+       "and at shutdown, so that ids survive a restart", "none");
   return out;
 }
 
@@ -230,7 +248,8 @@ struct RoomsAdapter::State {
   std::vector<Parameter> parameters;  // as given at start-up, for segment()'s options to go over
   NodeSettings live;                  // over the incremental segmenter's defaults
   topocut::IncrementalSegmenter segmenter;
-  std::optional<topocut::GridSegmentation> latest;  // for room_at()
+  std::optional<topocut::GridSegmentation> latest;  // the rooms last published, for room_at()
+  topocut::GridFrame frame;                         // of the map they are of
   State(std::vector<Parameter> given, NodeSettings settings, const topocut::IncrementalOptions& options)
       : parameters(std::move(given)), live(std::move(settings)), segmenter(options) {}
 };
@@ -243,6 +262,15 @@ RoomsAdapter::RoomsAdapter(const std::vector<Parameter>& parameters, std::vector
   std::vector<std::string> reported;  // the same names again
   over(topocut::SegmentOptions{}, parameters, &reported);  // segment()'s combination is checked at start-up too
   state_ = std::make_unique<State>(parameters, live, options);
+  const std::string& path = live.map.id_ledger;
+  std::ifstream in(path);
+  if (!path.empty() && in) {
+    try {
+      state_->segmenter.load_ledger(in);
+    } catch (const Error& e) {
+      throw Error("~id_ledger " + path + ": " + e.what());
+    }
+  }
 }
 
 RoomsAdapter::~RoomsAdapter() = default;
@@ -253,7 +281,8 @@ RoomsOutput RoomsAdapter::update(const MapInput& map) {
   const auto start = std::chrono::steady_clock::now();
   const topocut::Segmentation& result = state_->segmenter.update(grid);
   const double update_ms = ms_since(start);
-  topocut::GridSegmentation rooms = topocut::in_frame(result, topocut::frame_of(array));
+  state_->frame = topocut::frame_of(array);
+  topocut::GridSegmentation rooms = topocut::in_frame(result, state_->frame);
   RoomsOutput out = output_of(rooms);
   state_->latest = std::move(rooms);
   out.update_ms = update_ms;
@@ -272,11 +301,33 @@ RoomsOutput RoomsAdapter::segment(const MapInput& map, const std::vector<std::st
   topocut::GridSegmentation rooms =
       topocut::segment_grid(grid, topocut::frame_of(array), topocut::to_segment_options(settings.segment));
   const double segment_ms = ms_since(start);
-  RoomsOutput out = output_of(rooms);
-  state_->latest = std::move(rooms);
+  RoomsOutput out = output_of(rooms);  // a what-if: the published rooms and their ids stay
   out.update_ms = segment_ms;
   out.kind = "segment";
   return out;
+}
+
+RoomsOutput RoomsAdapter::settle() {
+  if (!state_->latest) return {};
+  const auto start = std::chrono::steady_clock::now();
+  const topocut::Segmentation& result = state_->segmenter.resegment();
+  const double settle_ms = ms_since(start);
+  topocut::GridSegmentation rooms = topocut::in_frame(result, state_->frame);
+  RoomsOutput out = output_of(rooms);
+  state_->latest = std::move(rooms);
+  out.update_ms = settle_ms;
+  out.kind = "settled";
+  return out;
+}
+
+double RoomsAdapter::settle_after() const { return state_->live.map.settle_after; }
+
+bool RoomsAdapter::save_ledger() const {
+  if (state_->live.map.id_ledger.empty() || !state_->latest) return false;
+  std::ostringstream text;
+  state_->segmenter.save_ledger(text);
+  topocut::write_file_atomically(state_->live.map.id_ledger, text.str());
+  return true;
 }
 
 int RoomsAdapter::room_at(double x, double y, RoomShape* room) const {

@@ -76,11 +76,21 @@ class RoomsAdapter {
 
   // Segments map at once with the options of `topocut segment`, the parameters and then options
   // ("name=value", or "name" for a switch on) over them. Throws std::runtime_error on an unknown
-  // option, a bad value or a malformed map. Its rooms become the latest (room_at()).
+  // option, a bad value or a malformed map. A what-if: the published rooms (room_at()) stay.
   RoomsOutput segment(const MapInput& map, const std::vector<std::string>& options);
 
-  // The id of the room holding (x, y) (map frame) in the latest rooms, update()'s or segment()'s,
-  // and that room in *room; 0 (and *room untouched) when no room holds it or nothing was segmented.
+  // The latest map segmented as a whole (the map stopped changing): the rooms of `topocut segment`
+  // with the live ids carried by overlap (kind "settled"); empty before the first update.
+  RoomsOutput settle();
+  // Seconds without a changed map after which the node settles (~settle_after; 0: never).
+  double settle_after() const;
+  // Writes the id ledger to ~id_ledger (atomically); false when there is none or nothing to save.
+  // Throws std::runtime_error when the file cannot be written.
+  bool save_ledger() const;
+
+  // The id of the room holding (x, y) (map frame) in the rooms last published (update()'s or
+  // settle()'s), and that room in *room; 0 (and *room untouched) when no room holds it or nothing
+  // was published.
   int room_at(double x, double y, RoomShape* room) const;
 
  private:

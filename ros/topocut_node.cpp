@@ -1,7 +1,9 @@
 // topocut_node: rooms of a ROS map, live and on request. Subscribes `map` (nav_msgs/OccupancyGrid,
 // latched or streamed; size and origin may change between messages) and, for every map, runs the
 // library's incremental segmenter (a wholesale change such as a loop closure becomes a batch update
-// with ids kept where rooms overlap), then publishes
+// with ids kept where rooms overlap); when no map has changed for ~settle_after seconds it segments
+// the latest map as a whole (the rooms of `topocut segment`, ids carried: timing kind "settled"). It
+// publishes
 //   rooms/labels   sensor_msgs/Image 16UC1: the room id of every cell, in the map's row order and
 //                  header (0 = no room)
 //   rooms/rooms    topocut_msgs/Rooms: the rooms (outline, centre, inside point, bounding box, area)
@@ -11,7 +13,10 @@
 //   rooms/timing   std_msgs/String: {"update_ms", "callback_ms", "kind", "rooms"} of that map
 // and answers
 //   rooms/segment_map  topocut_msgs/SegmentMap: one map segmented at once, as `topocut segment` does
-//   rooms/room_at      topocut_msgs/RoomAt: the room holding a point, in the latest rooms
+//   rooms/room_at      topocut_msgs/RoomAt: the room holding a point, in the rooms last published
+//                      (segment_map is a what-if: it changes neither them nor their ids)
+// With ~id_ledger the room ids are kept in that file (written when the rooms settle and at
+// shutdown, read at start), so that a restarted node gives the same rooms the same ids.
 // A thin adapter: the conversion, segmentation and JSON are the library's, behind rooms_adapter.h
 // (this file is C++17 because ROS 1's message headers are); it only moves values between messages
 // and the adapter. Parameters (private, `~name`) carry the CLI's option names with '_' for '-', and
@@ -45,7 +50,9 @@ const char* const kUsage =
     "Rooms of the nav_msgs/OccupancyGrid on `map`, segmented incrementally for every map and published on\n"
     "rooms/labels (sensor_msgs/Image 16UC1), rooms/rooms (topocut_msgs/Rooms), rooms/markers (RViz),\n"
     "rooms/graph (the rooms JSON) and rooms/timing; services rooms/segment_map (topocut_msgs/SegmentMap:\n"
-    "one map segmented at once, as `topocut segment` does) and rooms/room_at (topocut_msgs/RoomAt).\n"
+    "one map segmented at once, as `topocut segment` does) and rooms/room_at (topocut_msgs/RoomAt, in the\n"
+    "published rooms). A map unchanged for ~settle_after seconds is segmented as a whole (`topocut segment`'s\n"
+    "rooms, the live ids carried); ~id_ledger keeps the ids in a file across restarts.\n"
     "Parameters (private; an unknown name is warned about, a bad value stops the node with the reason):\n";
 
 double ms_between(Clock::time_point a, Clock::time_point b) {
@@ -230,6 +237,18 @@ class RoomsNode {
     segment_ = nh.advertiseService("rooms/segment_map", &RoomsNode::on_segment, this);
     room_at_ = nh.advertiseService("rooms/room_at", &RoomsNode::on_room_at, this);
     map_ = nh.subscribe("map", 1, &RoomsNode::on_map, this);
+    if (adapter_.settle_after() > 0.0)
+      settle_timer_ = nh.createSteadyTimer(ros::WallDuration(std::min(0.25, adapter_.settle_after() / 4.0)),
+                                           &RoomsNode::on_settle_timer, this);
+  }
+
+  // At shutdown: the ids of the rooms last published, for the next start.
+  void save_ledger() {
+    try {
+      adapter_.save_ledger();
+    } catch (const std::exception& e) {
+      ROS_ERROR("topocut_node: ~id_ledger not written: %s", e.what());
+    }
   }
 
  private:
@@ -237,23 +256,45 @@ class RoomsNode {
     const Clock::time_point received = Clock::now();
     try {
       const topocut_ros::RoomsOutput rooms = adapter_.update(map_input(*msg));
+      if (rooms.kind != "unchanged" || !have_map_) {
+        last_change_ = Clock::now();
+        settled_ = false;
+      }
+      have_map_ = true;
       latest_ = msg->header;
-      labels_.publish(labels_image(msg->header, msg->info.width, msg->info.height, rooms.labels));
-      rooms_.publish(rooms_message(msg->header, rooms));
-      markers_.publish(room_markers(msg->header, rooms, msg->info.resolution));
-      std_msgs::String graph;
-      graph.data = rooms.json;
-      graph_.publish(graph);
-      publish_timing(rooms, ms_between(received, Clock::now()));
+      latest_info_ = msg->info;
+      publish(rooms, received);
     } catch (const std::exception& e) {  // a malformed map or bad values: logged, skipped, never fatal
       ROS_ERROR("topocut_node: skipped a map: %s", e.what());
     }
   }
 
+  // The map has not changed for ~settle_after seconds: its rooms become segment()'s, ids carried.
+  void on_settle_timer(const ros::SteadyTimerEvent&) {
+    if (!have_map_ || settled_ || ms_between(last_change_, Clock::now()) < 1000.0 * adapter_.settle_after()) return;
+    const Clock::time_point start = Clock::now();
+    settled_ = true;
+    try {
+      publish(adapter_.settle(), start);
+      adapter_.save_ledger();
+    } catch (const std::exception& e) {  // an id beyond 16 bits, an unwritable ledger
+      ROS_ERROR("topocut_node: settling: %s", e.what());
+    }
+  }
+
+  void publish(const topocut_ros::RoomsOutput& rooms, Clock::time_point received) {
+    labels_.publish(labels_image(latest_, latest_info_.width, latest_info_.height, rooms.labels));
+    rooms_.publish(rooms_message(latest_, rooms));
+    markers_.publish(room_markers(latest_, rooms, latest_info_.resolution));
+    std_msgs::String graph;
+    graph.data = rooms.json;
+    graph_.publish(graph);
+    publish_timing(rooms, ms_between(received, Clock::now()));
+  }
+
   bool on_segment(topocut_msgs::SegmentMap::Request& request, topocut_msgs::SegmentMap::Response& response) {
     try {
       const topocut_ros::RoomsOutput rooms = adapter_.segment(map_input(request.map), request.options);
-      latest_ = request.map.header;
       response.rooms = rooms_message(request.map.header, rooms);
       response.labels = labels_image(request.map.header, request.map.info.width, request.map.info.height, rooms.labels);
       response.json = rooms.json;
@@ -287,10 +328,14 @@ class RoomsNode {
   }
 
   topocut_ros::RoomsAdapter adapter_;
-  std_msgs::Header latest_;  // of the map the latest rooms are of
+  std_msgs::Header latest_;  // of the map the published rooms are of
+  nav_msgs::MapMetaData latest_info_;
+  bool have_map_ = false, settled_ = false;
+  Clock::time_point last_change_;
   ros::Publisher labels_, rooms_, markers_, graph_, timing_;
   ros::ServiceServer segment_, room_at_;
   ros::Subscriber map_;
+  ros::SteadyTimer settle_timer_;
 };
 
 }  // namespace
@@ -314,6 +359,7 @@ int main(int argc, char** argv) {
     RoomsNode node(nh, private_parameters(private_nh), unknown);
     for (const std::string& line : unknown) ROS_WARN("topocut_node: %s", line.c_str());
     ros::spin();
+    node.save_ledger();
   } catch (const std::exception& e) {  // bad parameters: one clear line, non-zero exit
     ROS_FATAL("topocut_node: %s", e.what());
     return 1;
