@@ -1,6 +1,8 @@
 // segment(), load_map(), IncrementalSegmenter and their result types (picklable: a state tuple each).
+#include <fstream>
 #include <memory>
 #include <mutex>
+#include <sstream>
 #include <vector>
 
 #include <pybind11/numpy.h>
@@ -9,6 +11,7 @@
 #include "python/arrays.h"
 #include "python/bindings.h"
 #include "python/options.h"
+#include "topocut/io/atomic_file.h"
 #include "topocut/io/map_loader.h"
 #include "topocut/io/rooms_geojson.h"
 #include "topocut/io/rooms_json.h"
@@ -238,6 +241,22 @@ class PyIncremental {
     const std::lock_guard<std::mutex> lock(mutex_);
     segmenter_.reset();
   }
+  void save_ledger(const std::string& path) {
+    std::ostringstream text;
+    {
+      py::gil_scoped_release release;
+      const std::lock_guard<std::mutex> lock(mutex_);
+      segmenter_.save_ledger(text);
+    }
+    write_file_atomically(path, text.str());
+  }
+  void load_ledger(const std::string& path) {
+    std::ifstream in(path);
+    if (!in) throw Error("cannot read the id ledger " + path);
+    py::gil_scoped_release release;
+    const std::lock_guard<std::mutex> lock(mutex_);
+    segmenter_.load_ledger(in);
+  }
 
  private:
   std::mutex mutex_;
@@ -343,7 +362,13 @@ void bind_segmentation(py::module_& m) {
            "Segments the latest grid again as a whole (a map at rest): segment()'s rooms, ids carried by overlap.\n"
            "Raises ValueError before the first update. The GIL is released while segmenting.")
       .def_property_readonly("last_update", &PyIncremental::last_update, "'unchanged', 'incremental' or 'batch'")
-      .def("reset", &PyIncremental::reset, "Forgets everything; the next update starts afresh.");
+      .def("reset", &PyIncremental::reset, "Forgets everything; the next update starts afresh.")
+      .def("save_ledger", &PyIncremental::save_ledger, py::arg("path"),
+           "Writes the room ids with the latest rooms to path (atomically), for load_ledger() after a restart.\n"
+           "Raises ValueError before the first update or when the file cannot be written.")
+      .def("load_ledger", &PyIncremental::load_ledger, py::arg("path"),
+           "Forgets everything, then reads a ledger save_ledger() wrote: the next update gives the saved rooms\n"
+           "their ids back where they overlap. Raises ValueError on a missing or damaged file.");
 }
 
 }  // namespace topocut::python
