@@ -360,17 +360,22 @@ std::vector<Blob> IncrementalSegmenter::State::find_blobs(const ChangeMask& mask
   const cv::Rect& window = mask.window;
   const cv::Mat& labels = result.labels;
   const int h = labels.rows, w = labels.cols;
-  cv::Mat stats, centroids;
-  const int n = cv::connectedComponentsWithStats(mask.change != 0, blob_of, stats, centroids, 8, CV_32S);
+  // The changed cells lie mostly well inside the window (grown by the front end's reach): the
+  // components are found within their bounding box.
+  const cv::Rect active = cv::boundingRect(mask.change);
+  blob_of = cv::Mat::zeros(window.size(), CV_32SC1);
+  cv::Mat active_blobs = blob_of(active), stats, centroids;
+  const int n = cv::connectedComponentsWithStats(mask.change(active) != 0, active_blobs, stats, centroids, 8, CV_32S);
+  CV_Assert(active_blobs.data == blob_of(active).data);  // written in place
   std::vector<Blob> blobs(static_cast<std::size_t>(n));
   for (int b = 1; b < n; ++b)
     blobs[static_cast<std::size_t>(b)].box =
-        cv::Rect(stats.at<int>(b, cv::CC_STAT_LEFT) + window.x, stats.at<int>(b, cv::CC_STAT_TOP) + window.y,
+        cv::Rect(stats.at<int>(b, cv::CC_STAT_LEFT) + window.x + active.x, stats.at<int>(b, cv::CC_STAT_TOP) + window.y + active.y,
                  stats.at<int>(b, cv::CC_STAT_WIDTH), stats.at<int>(b, cv::CC_STAT_HEIGHT));
-  for (int r = 0; r < window.height; ++r) {
+  for (int r = active.y; r < active.y + active.height; ++r) {
     const unsigned char* d = mask.change.ptr<unsigned char>(r);
     const int* b = blob_of.ptr<int>(r);
-    for (int c = 0; c < window.width; ++c) {
+    for (int c = active.x; c < active.x + active.width; ++c) {
       if (d[c] == 0) continue;
       Blob& blob = blobs[static_cast<std::size_t>(b[c])];
       const int gr = window.y + r, gc = window.x + c;
@@ -513,7 +518,7 @@ void IncrementalSegmenter::State::label_from_nearest_rooms(const std::vector<int
                                                            std::vector<int>& touched_rooms) {
   if (cells_to_label.empty()) return;
   cv::Mat& labels = result.labels;
-  complete_unlabelled_cells(labels, labelled == kFree, cells_to_label);
+  label_near_cells(cells_to_label);
   const int* data = labels.ptr<int>(0);
   for (const int index : cells_to_label) {
     const int id = data[index];
@@ -526,6 +531,39 @@ void IncrementalSegmenter::State::label_from_nearest_rooms(const std::vector<int
     room.box = unite(room.box, cv::Rect(c, r, 1, 1));
     add_unique(touched_rooms, id);
   }
+}
+
+// The listed cells labelled from the rooms within a margin around them first (a few scans' cells on a
+// map of millions: the whole map's free mask and label index would cost more than the labelling);
+// the whole map only for cells that finds no room for.
+void IncrementalSegmenter::State::label_near_cells(const std::vector<int>& cells_to_label) {
+  cv::Mat& labels = result.labels;
+  const int cols = labels.cols;
+  int c0 = INT_MAX, c1 = -1, r0 = INT_MAX, r1 = -1;
+  for (const int index : cells_to_label) {
+    c0 = std::min(c0, index % cols), c1 = std::max(c1, index % cols);
+    r0 = std::min(r0, index / cols), r1 = std::max(r1, index / cols);
+  }
+  constexpr int kMargin = 64;  // cells: beyond a room's reach of a speck on any map seen so far
+  const cv::Rect box = grown(cv::Rect(c0, r0, c1 - c0 + 1, r1 - r0 + 1), kMargin, labels.size());
+  if (box.area() * 4 >= labels.size().area()) {
+    complete_unlabelled_cells(labels, labelled == kFree, cells_to_label);
+    return;
+  }
+  cv::Mat local = labels(box).clone();
+  std::vector<int> local_cells;
+  local_cells.reserve(cells_to_label.size());
+  for (const int index : cells_to_label) local_cells.push_back((index / cols - box.y) * box.width + index % cols - box.x);
+  complete_unlabelled_cells(local, labelled(box) == kFree, local_cells);
+  std::vector<int> rest;  // no room within the box
+  int* data = labels.ptr<int>(0);
+  const int* found = local.ptr<int>(0);
+  for (std::size_t k = 0; k < cells_to_label.size(); ++k) {
+    const int id = found[local_cells[k]];
+    if (id > 0) data[cells_to_label[k]] = id;
+    else rest.push_back(cells_to_label[k]);
+  }
+  if (!rest.empty()) complete_unlabelled_cells(labels, labelled == kFree, rest);
 }
 
 IncrementalSegmenter::IncrementalSegmenter(const IncrementalOptions& options) : state_(std::make_unique<State>()) {

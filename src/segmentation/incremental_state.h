@@ -196,6 +196,7 @@ struct IncrementalSegmenter::State {
   std::vector<int> apply_changes(const ChangeMask& mask, const cv::Mat& blob_of, const std::vector<Blob>& blobs,
                                  std::vector<int>& nearest);
   void label_from_nearest_rooms(const std::vector<int>& cells_to_label, std::vector<int>& touched_rooms);
+  void label_near_cells(const std::vector<int>& cells_to_label);
   bool redecompose(Region region, std::vector<int>& touched_rooms);
   void add_neighbour_rooms(Region& region) const;
   void frame_region(Region& region) const;
