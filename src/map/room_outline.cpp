@@ -28,6 +28,14 @@ std::map<int, RoomExtent> room_extents(const cv::Mat& labels) {
 // take, and a rectangle's dilation is separable: a few passes of a few operations per cell, where
 // the exact distance transform of the whole window took tens (a fifth of a windowed update's work).
 cv::Mat wall_cells(const cv::Mat& cells, double reach) {
+  // A disc of many rows (a reach of thousands of cells at the finest resolutions) has as many
+  // rectangles: the transform's cost does not grow with the reach.
+  constexpr double kLargestDilation = 12.0;
+  if (reach > kLargestDilation) {
+    cv::Mat distance;  // to the nearest occupied cell
+    cv::distanceTransform(cells != kOccupied, distance, cv::DIST_L2, cv::DIST_MASK_PRECISE);
+    return distance <= reach;
+  }
   const cv::Mat occupied = cells == kOccupied;
   cv::Mat walls = cv::Mat::zeros(cells.size(), CV_8UC1);
   if (!(reach >= 0.0)) return walls;

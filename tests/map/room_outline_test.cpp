@@ -29,7 +29,7 @@ TEST(WallCells, AreTheCellsWithinReachOfAnOccupiedCell) {
         const double x = u(random);
         cells.at<unsigned char>(r, c) = x < density ? kOccupied : x < 0.6 ? kFree : kUnknown;
       }
-    for (const double reach : {0.0, 1.0, 1.5, 2.0 + 1e-9, 3.0 + 1e-9, std::sqrt(13.0) + 1e-9, 4.2, 7.5, 12.0}) {
+    for (const double reach : {0.0, 1.0, 1.5, 2.0 + 1e-9, 3.0 + 1e-9, std::sqrt(13.0) + 1e-9, 4.2, 7.5, 12.0, 12.5, 40.0}) {
       SCOPED_TRACE(testing::Message() << "density " << density << ", reach " << reach);
       const cv::Mat expected = by_distance(cells, reach);
       EXPECT_EQ(cv::countNonZero(wall_cells(cells, reach) != expected), 0);

@@ -2,10 +2,12 @@
 // Incremental room segmentation for a growing map (pipeline B; Fermin-Leon et al., Algorithms 3-4):
 // the batch segmenter's stages (segment(): the real-map cleaning, the cut rules, DuDe, merging, open
 // rooms, labelling) on two schedules. A whole-map update runs segment() itself and carries the room
-// ids over by overlap; a windowed update compares the new grid with the previous one, cleans the free
-// space again around the change, and decomposes again only the rooms the change touches together with
-// the changed free space, every other room kept as it is, with its id, polygon and passages. Work stays
-// near the change, so an update costs what the change costs, not what the map does.
+// ids over by overlap; a windowed update compares the new grid with the previous one, runs segment()'s
+// front end again around the change (segmentation_input() over a window), and runs segment()'s other
+// stages (segment_input()) on the rooms the change touches together with the changed free space,
+// every other room kept as it is, with its id, polygon and passages. Both schedules name rooms with
+// one IdLedger (id_ledger.h). Work stays near the change, so an update costs what the change costs,
+// not what the map does.
 #include <cstddef>
 #include <iosfwd>
 #include <memory>
