@@ -1,8 +1,5 @@
 #include "topocut/map/room_outline.h"
 
-#include <algorithm>
-#include <cmath>
-
 #include <opencv2/imgproc.hpp>
 
 #include "topocut/core/occupancy_grid.h"
@@ -23,40 +20,10 @@ std::map<int, RoomExtent> room_extents(const cv::Mat& labels) {
   return rooms;
 }
 
-// The cells within Euclidean distance reach of an occupied cell are the occupied cells dilated by
-// the digital disc of radius reach. The disc is the union of one rectangle per half-width its rows
-// take, and a rectangle's dilation is separable: a few passes of a few operations per cell, where
-// the exact distance transform of the whole window took tens (a fifth of a windowed update's work).
 cv::Mat wall_cells(const cv::Mat& cells, double reach) {
-  // A disc of many rows (a reach of thousands of cells at the finest resolutions) has as many
-  // rectangles: the transform's cost does not grow with the reach.
-  constexpr double kLargestDilation = 12.0;
-  if (reach > kLargestDilation) {
-    cv::Mat distance;  // to the nearest occupied cell
-    cv::distanceTransform(cells != kOccupied, distance, cv::DIST_L2, cv::DIST_MASK_PRECISE);
-    return distance <= reach;
-  }
-  const cv::Mat occupied = cells == kOccupied;
-  cv::Mat walls = cv::Mat::zeros(cells.size(), CV_8UC1);
-  if (!(reach >= 0.0)) return walls;
-  const double r2 = reach * reach;
-  const int radius = static_cast<int>(std::floor(reach));
-  // Half-width of the disc's row dy: the largest dx with dx² + dy² <= reach².
-  auto half_width = [&](int dy) {
-    int dx = static_cast<int>(std::floor(std::sqrt(std::max(0.0, r2 - static_cast<double>(dy) * dy))));
-    while (static_cast<double>(dx + 1) * (dx + 1) + static_cast<double>(dy) * dy <= r2) ++dx;
-    while (dx > 0 && static_cast<double>(dx) * dx + static_cast<double>(dy) * dy > r2) --dx;
-    return dx;
-  };
-  cv::Mat part;
-  for (int dy = 0; dy <= radius; ++dy) {
-    const int w = half_width(dy);
-    if (dy < radius && half_width(dy + 1) == w) continue;  // the rows up to the last of this width
-    const cv::Mat kernel = cv::getStructuringElement(cv::MORPH_RECT, cv::Size(2 * w + 1, 2 * dy + 1));
-    cv::dilate(occupied, part, kernel);
-    walls |= part;
-  }
-  return walls;
+  cv::Mat distance;  // to the nearest occupied cell
+  cv::distanceTransform(cells != kOccupied, distance, cv::DIST_L2, cv::DIST_MASK_PRECISE);
+  return distance <= reach;
 }
 
 RoomOutline room_outline(const cv::Mat& labels, int id, const cv::Rect& box, const cv::Mat& cells, const cv::Mat& walls,
