@@ -28,9 +28,12 @@ packages=(build-essential cmake pkg-config libcgal-dev libopencv-dev libboost-de
           pybind11-dev python3-dev python3-numpy python3-pytest python3-matplotlib python3-venv python3-pip)
 # ROS 1 from Debian: the node (ros/) and its loopback test (rosmaster, rospy publishing the maps);
 # genmsg's generators and the definitions of the messages topocut_msgs uses (ros-*-msgs), from which
-# the build generates topocut_msgs; the commands of the README's ROS session (roscore and roslaunch,
-# rostopic, rosservice, rosnode, rosmsg/rossrv, rosrun).
-packages+=(libroscpp-dev libnav-msgs-dev libsensor-msgs-dev libvisualization-msgs-dev libstd-msgs-dev
+# the build generates topocut_msgs; actionlib for the node's action (libactionlib-dev; genaction and
+# the actionlib_msgs definitions; python3-actionlib for the example's client); the commands of the
+# README's ROS session (roscore and roslaunch, rostopic, rosservice, rosnode, rosmsg/rossrv, rosrun).
+packages+=(libroscpp-dev libactionlib-dev libactionlib-msgs-dev python3-actionlib python3-actionlib-msgs
+           ros-actionlib-msgs python3-yaml
+           libnav-msgs-dev libsensor-msgs-dev libvisualization-msgs-dev libstd-msgs-dev
            libgeometry-msgs-dev python3-rosmaster python3-rospy python3-rosgraph python3-nav-msgs
            python3-sensor-msgs python3-visualization-msgs python3-std-msgs python3-geometry-msgs
            python3-genmsg python3-gencpp python3-genpy ros-std-msgs ros-geometry-msgs ros-nav-msgs ros-sensor-msgs

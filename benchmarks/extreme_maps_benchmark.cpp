@@ -4,9 +4,9 @@
 // that the peak memory (maximum resident set) is that size's alone:
 // - one writes the map, loads it, segments it with segment() and writes the labels (wall-clock
 //   seconds and the peak RSS: what `topocut segment` costs);
-// - one times the stages of segment() one by one (segment_stages.h: process CPU time, least of
-//   --repeat runs) beside the contour floor (decode, threshold, cv::findContours), and prints each
-//   stage's time over the floor.
+// - one times the stages of segment() (its own stage times, segment_stages.h: process CPU time,
+//   least of --repeat runs) beside the contour floor (decode, threshold, cv::findContours), and prints
+//   each stage's time over the floor.
 // Then the growth of every stage from one size to the next, beside the growth of the cells.
 // With --unexplored CANVAS each floor lies in the middle of a CANVAS x CANVAS map of unknown cells
 // (grey 205, as map_server writes it; gmapping's default map is 4000 x 4000), as a SLAM map is.
@@ -93,7 +93,7 @@ void run_segment(int side, int canvas, const std::string& folder) {
 void run_stages(int side, const std::string& folder, int repeat) {
   topocut::benchmarks::StageTimes t;
   for (int k = 0; k < repeat; ++k)
-    topocut::benchmarks::time_stages(map_path(folder, side), topocut::MapLoadOptions{}, topocut::SegmentOptions{}, false, t);
+    topocut::benchmarks::time_stages(map_path(folder, side), topocut::MapLoadOptions{}, topocut::SegmentOptions{}, t);
   for (const auto& [name, ms] : topocut::benchmarks::least_stage_ms(t)) std::printf("%.1f ", ms);
   std::printf("\n");
 }
@@ -140,12 +140,12 @@ std::vector<double> numbers_of(const std::string& line) {
   return values;
 }
 
-const char* const kStages[] = {"floor", "load", "free", "clean", "polygons", "decompose", "merge", "labels", "total"};
-constexpr std::size_t kStageCount = std::size(kStages);
+const std::vector<std::string> kStages = topocut::benchmarks::stage_names();
+const std::size_t kStageCount = kStages.size();
 
 void print_header(const char* first, bool with_floor) {
   std::printf("| %s |", first);
-  for (std::size_t k = with_floor ? 0 : 1; k < kStageCount; ++k) std::printf(" %s |", kStages[k]);
+  for (std::size_t k = with_floor ? 0 : 1; k < kStageCount; ++k) std::printf(" %s |", kStages[k].c_str());
   std::printf("\n|---|");
   for (std::size_t k = with_floor ? 0 : 1; k < kStageCount; ++k) std::printf("---|");
   std::printf("\n");

@@ -6,6 +6,10 @@
 // below topocut's row of a set, the peers' published results on it (MAORIS, DuDe, Voronoi) and, on the
 // sketches, the other annotator's rooms, all scored by the same code. With --ablation, the table of the
 // rule list instead: every rule switched off in turn. Options: --help.
+//
+// Times are CPU time of the thread that segments (thread_cpu_ms(), OpenCV on one thread), so that a
+// busy machine and --threads 2 leave them alone; the table "Where the time goes" splits each image's
+// time into loading and segment()'s stages (segment_times.h), over the image's contour floor.
 #include <algorithm>
 #include <cstdio>
 #include <exception>
@@ -23,6 +27,7 @@
 
 #include "benchmark_machine.h"
 #include "support/benchmark_main.h"
+#include "topocut/core/clock.h"
 #include "topocut/core/error.h"
 #include "topocut/core/format.h"
 #include "topocut/evaluation/dataset.h"
@@ -43,6 +48,15 @@ struct Peer {
   std::vector<ImageResult> results;
 };
 
+// What one image cost (ms): loading the map, segment()'s stages, and its contour floor.
+struct ImageTimes {
+  std::string name;
+  Variant variant = Variant::kPlain;
+  double load = 0.0, floor = 0.0;
+  SegmentTimes stages;
+  double total() const { return load + stages.total(); }
+};
+
 // A set scored against ground truth.
 struct ScoredSet {
   std::string name, folder;
@@ -50,7 +64,7 @@ struct ScoredSet {
   std::vector<std::string> targets;  // one per variant, as issue 25 states them
   std::vector<Peer> peers;           // scored on the plain variant
   std::vector<ImageResult> results;
-  std::vector<double> ratios;  // time / contour floor per image
+  std::map<std::string, ImageTimes> times;  // by image path, the images that succeeded
 };
 
 // The published results of MAORIS, DuDe and Voronoi in peers_folder (label images named after the maps).
@@ -129,20 +143,48 @@ ImageSegmenter oracle_merged(ImageSegmenter segmenter) {
   };
 }
 
+// The library's pipeline (load_map, then segment()) with each image's load and stage times kept in times.
+ImageSegmenter timed_segmenter(const DatasetRunOptions& options, std::map<std::string, ImageTimes>& times) {
+  return [load = options.load, segment_options = options.segment, &times](const std::string& image_path) {
+    ImageTimes t;
+    t.name = std::filesystem::path(image_path).stem().string();
+    const double start = thread_cpu_ms();
+    const OccupancyGrid grid = load_map(image_path, load);
+    t.load = thread_cpu_ms() - start;
+    Segmentation s = segment(grid, segment_options, nullptr, &t.stages);
+    times[image_path] = t;
+    return s;
+  };
+}
+
 void score_set(ScoredSet& set, const DatasetRunOptions& base, int floor_repetitions, bool oracle_merge) {
   DatasetRunOptions run = base;
   run.variants = set.variants;
   run.progress = {};
   const std::vector<DatasetMap> maps = discover_dataset(set.folder);
-  set.results = run_dataset(maps, run, oracle_merge ? oracle_merged(batch_segmenter(run)) : batch_segmenter(run));
+  const ImageSegmenter segmenter = timed_segmenter(run, set.times);
+  set.results = run_dataset(maps, run, oracle_merge ? oracle_merged(segmenter) : segmenter);
   run.variants = {Variant::kPlain};
   for (Peer& peer : set.peers) peer.results = run_dataset(maps, run, peer.segmenter);
-  if (floor_repetitions <= 0) return;
   for (const ImageResult& r : set.results) {
-    if (!r.ok) continue;
     const DatasetMap& map = *std::find_if(maps.begin(), maps.end(), [&](const DatasetMap& m) { return m.name == r.map; });
-    set.ratios.push_back(r.time_ms / contour_floor_ms(map.image(r.variant), run.load.free_min, floor_repetitions));
+    const auto times = set.times.find(map.image(r.variant));
+    if (times == set.times.end()) continue;
+    if (!r.ok || floor_repetitions <= 0) {
+      set.times.erase(times);
+      continue;
+    }
+    times->second.variant = r.variant;
+    times->second.floor = contour_floor_ms(map.image(r.variant), run.load.free_min, floor_repetitions, thread_cpu_ms);
   }
+}
+
+// The images of a set's variant that have times.
+std::vector<ImageTimes> times_of(const ScoredSet& set, Variant variant) {
+  std::vector<ImageTimes> times;
+  for (const auto& [path, t] : set.times)
+    if (t.variant == variant) times.push_back(t);
+  return times;
 }
 
 // Lowest recall and precision over the images of a set.
@@ -167,12 +209,12 @@ std::vector<std::string> summary_cells(const std::string& set, const std::string
           fixed(100 * s.precision_inside_mean, 1) + " / " + fixed(100 * s.far_share_mean, 1)};
 }
 
-// "office_g furnished 175 ms": the image that took longest.
-std::string slowest(const std::vector<ImageResult>& results) {
-  const ImageResult* worst = nullptr;
-  for (const ImageResult& r : results)
-    if (r.ok && (worst == nullptr || r.time_ms > worst->time_ms)) worst = &r;
-  return worst == nullptr ? "-" : worst->map + " " + to_string(worst->variant) + " " + fixed(worst->time_ms, 0) + " ms";
+// "office_g furnished 175 ms": the image that took longest (CPU time, load + segment).
+std::string slowest(const ScoredSet& set) {
+  const ImageTimes* worst = nullptr;
+  for (const auto& [path, t] : set.times)
+    if (worst == nullptr || t.total() > worst->total()) worst = &t;
+  return worst == nullptr ? "-" : worst->name + " " + fixed(worst->total(), 0) + " ms";
 }
 
 int count_missing(const std::vector<ScoredSet>& sets) {
@@ -183,10 +225,86 @@ int count_missing(const std::vector<ScoredSet>& sets) {
   return missing;
 }
 
-std::string ratio_text(const std::vector<double>& ratios) {
+// Each image's total (load + segment) over its floor.
+std::vector<double> total_ratios(const std::vector<ImageTimes>& times) {
+  std::vector<double> ratios;
+  for (const ImageTimes& t : times)
+    if (t.floor > 0.0) ratios.push_back(t.total() / t.floor);
+  return ratios;
+}
+
+std::string ratio_text(const std::vector<ImageTimes>& times) {
+  const std::vector<double> ratios = total_ratios(times);
   if (ratios.empty()) return "-";
   const TimeStatistics s = time_statistics(ratios);
   return fixed(s.median, 1) + " / " + fixed(s.max, 1);
+}
+
+// The header of the table "Where the time goes".
+std::vector<std::string> stage_header() {
+  std::vector<std::string> header{"set", "images", "floor ms", "load"};
+  for (std::size_t k = 0; k < kSegmentStages; ++k) header.push_back(stage_name(static_cast<SegmentStage>(k)));
+  for (const char* column : {"segment", "total", "total max", "slowest ms"}) header.push_back(column);
+  return header;
+}
+
+// One row of "Where the time goes": the median over the images of each stage's time over the image's
+// floor, of segment() and of the total (load + segment); the largest total over the floor and the
+// slowest image's total in ms.
+std::vector<std::string> stage_row(const std::string& set, const std::vector<ImageTimes>& times) {
+  std::vector<std::string> row{set, std::to_string(times.size())};
+  if (times.empty()) {
+    row.resize(stage_header().size(), "-");
+    return row;
+  }
+  auto median_over = [&](const std::function<double(const ImageTimes&)>& part) {
+    std::vector<double> values;
+    for (const ImageTimes& t : times) values.push_back(part(t));
+    return time_statistics(values).median;
+  };
+  row.push_back(fixed(median_over([](const ImageTimes& t) { return t.floor; }), 1));
+  row.push_back(fixed(median_over([](const ImageTimes& t) { return t.load / t.floor; }), 2));
+  for (std::size_t k = 0; k < kSegmentStages; ++k)
+    row.push_back(fixed(median_over([k](const ImageTimes& t) { return t.stages.ms[k] / t.floor; }), 2));
+  row.push_back(fixed(median_over([](const ImageTimes& t) { return t.stages.total() / t.floor; }), 2));
+  const TimeStatistics total = time_statistics(total_ratios(times));
+  row.push_back(fixed(total.median, 2));
+  row.push_back(fixed(total.max, 2));
+  double slowest = 0.0;
+  for (const ImageTimes& t : times) slowest = std::max(slowest, t.total());
+  row.push_back(fixed(slowest, 1));
+  return row;
+}
+
+// Per image: the floor, loading and every stage in ms (--details).
+std::string stage_details(const std::vector<ImageTimes>& times) {
+  std::vector<std::vector<std::string>> rows{{"image", "variant", "floor ms", "load ms"}};
+  for (std::size_t k = 0; k < kSegmentStages; ++k) rows.front().push_back(stage_name(static_cast<SegmentStage>(k)) + " ms");
+  rows.front().push_back("total ms");
+  rows.front().push_back("total / floor");
+  for (const ImageTimes& t : times) {
+    std::vector<std::string> row{t.name, to_string(t.variant), fixed(t.floor, 1), fixed(t.load, 1)};
+    for (const double ms : t.stages.ms) row.push_back(fixed(ms, 1));
+    row.push_back(fixed(t.total(), 1));
+    row.push_back(t.floor > 0.0 ? fixed(t.total() / t.floor, 2) : "-");
+    rows.push_back(row);
+  }
+  return markdown_table(rows);
+}
+
+// The real maps' times as those of the scored images.
+std::vector<ImageTimes> times_of(const std::vector<MapDefectResult>& real) {
+  std::vector<ImageTimes> times;
+  for (const MapDefectResult& r : real) {
+    if (!r.ok || r.floor_ms <= 0.0) continue;
+    ImageTimes t;
+    t.name = r.map;
+    t.load = r.load_ms;
+    t.floor = r.floor_ms;
+    t.stages = r.stages;
+    times.push_back(t);
+  }
+  return times;
 }
 
 // The sets scored against ground truth, with their targets and (with_peers) the rows to compare with.
@@ -215,6 +333,7 @@ std::function<void()> real_maps_job(const std::string& datasets, const DatasetRu
   options.segment = run.segment;
   options.load = run.load;
   options.floor_repetitions = floor_repetitions;
+  options.clock = thread_cpu_ms;
   return [datasets, options, &real] { real = run_map_files(discover_map_files(datasets + "/real_maps"), options); };
 }
 
@@ -261,6 +380,8 @@ int run(const SuiteOptions& suite, const DatasetArguments& arguments) {
 
   std::vector<ScoredSet> scored = scored_sets(datasets, true);
   std::vector<MapDefectResult> real;
+  // Times are the segmenting thread's CPU time: OpenCV's own workers would escape it.
+  cv::setNumThreads(1);
 
   std::vector<std::function<void()>> jobs;
   for (ScoredSet& set : scored) jobs.push_back([&, floor_repetitions] { score_set(set, arguments.run, floor_repetitions, oracle_merge); });
@@ -274,6 +395,12 @@ int run(const SuiteOptions& suite, const DatasetArguments& arguments) {
       std::cout << "## " << set.name << "\n\n" << format_results_table(set.results) << "\n";
       for (const Peer& peer : set.peers)
         std::cout << "### " << set.name << ": " << peer.name << "\n\n" << format_results_table(peer.results) << "\n";
+      if (floor_repetitions > 0) {
+        std::vector<ImageTimes> times;
+        for (const Variant variant : set.variants)
+          for (const ImageTimes& t : times_of(set, variant)) times.push_back(t);
+        std::cout << "### " << set.name << ": times (CPU ms)\n\n" << stage_details(times) << "\n";
+      }
     }
     std::cout << "## real maps (no ground truth)\n\n";
   }
@@ -293,7 +420,7 @@ int run(const SuiteOptions& suite, const DatasetArguments& arguments) {
       std::vector<std::string> row = summary_cells(name, "topocut", s);
       row.push_back(fixed(100 * low_r, 1) + " / " + fixed(100 * low_p, 1));
       row.push_back(set.targets[v]);
-      row.push_back(v == 0 ? ratio_text(set.ratios) : "");
+      row.push_back(ratio_text(times_of(set, variant)));
       rows.push_back(row);
       if (variant != Variant::kPlain) continue;
       for (const Peer& peer : set.peers) {
@@ -304,18 +431,31 @@ int run(const SuiteOptions& suite, const DatasetArguments& arguments) {
     }
   }
   const RoomDefects total = total_defects(real);
-  std::vector<double> ratios;
-  for (const MapDefectResult& r : real) {
-    if (!r.ok) ++failed;
-    if (r.ok && r.floor_ms > 0.0) ratios.push_back(r.time_ms / r.floor_ms);
-  }
+  for (const MapDefectResult& r : real) failed += r.ok ? 0 : 1;
   rows.push_back({"real maps: thin + speck + open rooms", "topocut", std::to_string(real.size()),
                   std::to_string(total.thin) + " + " + std::to_string(total.specks) + " + " + std::to_string(total.open) +
                       " of " + std::to_string(total.rooms) + " (" + fixed(100.0 * flagged_share(total), 1) + " %)",
-                  "", "", "", "", "≤ 2 % of rooms", ratio_text(ratios)});
+                  "", "", "", "", "≤ 2 % of rooms", ratio_text(times_of(real))});
   std::cout << markdown_table(rows) << "\nfailures: " << failed << "; peak RSS " << fixed(peak_rss_mb(), 0) << " MB\n";
   if (!total.open_judged) std::cout << "open rooms are not judged on maps without occupied cells (see the table above)\n";
-  std::cout << "slowest Bormann image: " << slowest(scored.front().results) << " (target ≤ 150 ms; times need --threads 1)\n";
+  if (floor_repetitions > 0) {
+    std::vector<std::vector<std::string>> stages{stage_header()};
+    for (const ScoredSet& set : scored) {
+      std::vector<ImageTimes> all;
+      for (const Variant variant : set.variants) {
+        const std::vector<ImageTimes> times = times_of(set, variant);
+        stages.push_back(stage_row(set.variants.size() > 1 ? set.name + " " + to_string(variant) : set.name, times));
+        all.insert(all.end(), times.begin(), times.end());
+      }
+      if (set.variants.size() > 1) stages.push_back(stage_row(set.name + ", all images", all));
+    }
+    stages.push_back(stage_row("real maps", times_of(real)));
+    std::cout << "\nWhere the time goes: CPU time of the segmenting thread over the image's contour floor (decode,\n"
+                 "threshold, findContours), median over the images (the stages' medians need not add up); segment =\n"
+                 "segment(), total = load + segment; total max over the floor; the slowest image's total in ms.\n\n"
+              << markdown_table(stages) << "\n";
+    std::cout << "slowest Bormann image: " << slowest(scored.front()) << " (target ≤ 150 ms)\n";
+  }
   const int missing_peers = count_missing(scored);
   if (missing_peers > 0)
     std::cout << missing_peers << " peer images are missing (published for fewer maps); their means say over how many maps they run\n";
@@ -389,7 +529,7 @@ int main(int argc, char** argv) {
                    [&suite](const std::string& value) {
                      suite.floor_repetitions = whole_number("--floor-repetitions", value, 0, 1000);
                    }},
-                  count("threads", suite.threads, 1, "sets on N threads (default 1; times need 1)"),
+                  count("threads", suite.threads, 1, "sets on N threads (default 1; times are each thread's CPU time)"),
                   text("shared", "DIR", suite.shared, "folder holding datasets/ (default " TOPOCUT_SHARED_DIR ")")},
       .dataset = &arguments,
       .tune_allocator = true};

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""topocut_node's rooms/segment_map against `topocut segment` on every shared map (issue 26: a static
+"""topocut_node's ~segment_map (/topocut/segment_map) against `topocut segment` on every shared map (issue 26: a static
 map sent to the node gets the command's rooms, identical labels).
 
 A node on a private rosmaster (127.0.0.1, free port); each map is read by the library

@@ -1,19 +1,18 @@
 // Segmentation stage times: where the milliseconds of `topocut segment` go on the Bormann images,
 // or with --maps DIR on a folder of maps without ground truth (the real maps: YAMLs and images).
-// For every image it runs the batch pipeline stage by stage (the same calls segment() makes,
-// segment_stages.h) and prints the least CPU time of each stage over --repeat runs (process CPU
-// time: on a shared, busy machine the least of a few runs is the steadiest estimate), next to the
-// contour floor measured the same way (decode the PNG, threshold, cv::findContours), then each
-// stage's time over the floor. Used to decide what to optimise; the dataset benchmark gives the
-// end-to-end wall-clock figures.
+// For every image it loads the map and runs segment() with its stage times (segment_stages.h), and
+// prints the least CPU time of each stage over --repeat runs (process CPU time: on a shared, busy
+// machine the least of a few runs is the steadiest estimate), next to the contour floor measured
+// the same way (decode the PNG, threshold, cv::findContours), then each stage's time over the
+// floor; the front end's parts (free space, cleaning, polygons) are timed again on their own. Used
+// to decide what to optimise; the map suite gives every set's figures.
 //
 // With --quality it also scores every image against its ground truth (recall / precision, as
 // `topocut evaluate`), so that option variants can be compared stage by stage.
 //
 // --unexplored N centres every image map (not YAMLs) in an N x N image of its corner's grey (a SLAM
 // map's unexplored surroundings; gmapping's default map is 4000 x 4000 cells), written to a
-// temporary folder; --no-crop runs the stages on the whole grid instead of segmentation_box(), as
-// segment() did before it cropped.
+// temporary folder.
 //
 // Options: --help. The segmenter's are `topocut evaluate`'s (the library's table); the numbers of
 // DoorOptions and MergeOptions that table does not have yet are this program's own, applied after it.
@@ -111,7 +110,7 @@ benchmarks::Option extra(const char* name, const char* help, Edits& edits, Field
 // What to time and how, besides the segmenter's options.
 struct StagesOptions {
   int repeat = 3;
-  bool quality = false, no_crop = false;
+  bool quality = false;
   std::string maps_folder;
   int unexplored = 0;
   Edits edits;
@@ -119,7 +118,7 @@ struct StagesOptions {
 
 int run(const StagesOptions& stages_options, const DatasetArguments& arguments) {
   const int repeat = stages_options.repeat;
-  const bool quality = stages_options.quality, no_crop = stages_options.no_crop;
+  const bool quality = stages_options.quality;
   const std::string& maps_folder = stages_options.maps_folder;
   const int unexplored = stages_options.unexplored;
   if (!arguments.csv.empty()) throw Error("--csv is not written here");
@@ -134,36 +133,33 @@ int run(const StagesOptions& stages_options, const DatasetArguments& arguments) 
   if (unexplored > 0) pad_images(jobs, unexplored, padded_folder);
   if (quality && !maps_folder.empty()) throw Error("--quality needs the Bormann dataset (no --maps)");
 
-  std::vector<std::vector<std::string>> rows{{"image", "floor", "load", "free", "clean", "polygons", "vertices",
-                                              "decompose", "pieces", "merge", "labels", "rooms", "total",
-                                              "total / floor", "recall", "precision"}};
+  const std::vector<std::string> columns = benchmarks::stage_names();
+  std::vector<std::vector<std::string>> rows{{"image"}};
+  for (const std::string& name : columns) rows.front().push_back(name);
+  for (const char* column : {"vertices", "rooms", "total / floor", "recall", "precision"}) rows.front().push_back(column);
   std::vector<std::vector<std::string>> over{{"image"}};
-  std::vector<std::vector<double>> ratios;  // per stage after the floor, per image
+  for (std::size_t k = 1; k < columns.size(); ++k) over.front().push_back(columns[k]);
+  std::vector<std::vector<double>> ratios(columns.size() - 1);  // per column after the floor, per image
   std::vector<double> recall[2], precision[2];
   std::vector<double> all_total, all_floor;
   for (const Job& job : jobs) {
     StageTimes t;
     Segmentation last;
     for (int k = 0; k < repeat; ++k) {
-      const Segmentation s = benchmarks::time_stages(job.path, load, options, no_crop, t);
+      const Segmentation s = benchmarks::time_stages(job.path, load, options, t);
       if (k == 0) last = s;
     }
     const std::vector<std::pair<std::string, double>> stages = benchmarks::least_stage_ms(t);
     const double floor = stages.front().second, total = stages.back().second;
     all_total.push_back(total);
     all_floor.push_back(floor);
-    auto ms = [&](const char* name) {
-      for (const auto& [stage, value] : stages)
-        if (stage == name) return fixed(value, 1);
-      return std::string("-");
-    };
-    rows.push_back({job.name, ms("floor"), ms("load"), ms("free"), ms("clean"), ms("polygons"), std::to_string(t.vertices),
-                    ms("decompose"), std::to_string(t.pieces), ms("merge"), ms("labels"), std::to_string(t.rooms_found),
-                    ms("total"), fixed(total / floor, 2), "-", "-"});
-    ratios.resize(stages.size() - 1);
+    rows.push_back({job.name});
+    for (const auto& [stage, ms] : stages) rows.back().push_back(fixed(ms, 1));
+    for (const std::string& cell : {std::to_string(t.vertices), std::to_string(t.rooms_found), fixed(total / floor, 2),
+                                    std::string("-"), std::string("-")})
+      rows.back().push_back(cell);
     over.push_back({job.name});
     for (std::size_t k = 1; k < stages.size(); ++k) {
-      if (over.size() == 2) over.front().push_back(stages[k].first);
       over.back().push_back(fixed(stages[k].second / floor, 2));
       ratios[k - 1].push_back(stages[k].second / floor);
     }
@@ -172,10 +168,10 @@ int run(const StagesOptions& stages_options, const DatasetArguments& arguments) 
       const int v = job.variant == Variant::kPlain ? 0 : 1;
       recall[v].push_back(pr.recall);
       precision[v].push_back(pr.precision);
-      rows.back()[14] = fixed(100.0 * pr.recall, 1);
-      rows.back()[15] = fixed(100.0 * pr.precision, 1);
+      rows.back()[rows.back().size() - 2] = fixed(100.0 * pr.recall, 1);
+      rows.back().back() = fixed(100.0 * pr.precision, 1);
     }
-    std::cerr << rows.back()[0] << " " << rows.back()[12] << " ms\n";
+    std::cerr << job.name << " " << fixed(total, 1) << " ms\n";
   }
   std::cout << "method: " << method_name(options) << "; peak RSS " << fixed(benchmarks::peak_rss_mb(), 0) << " MB\n";
   std::cout << "process CPU times in ms, least of " << repeat << " runs per image\n\n" << markdown_table(rows) << "\n";
@@ -218,7 +214,6 @@ int main(int argc, char** argv) {
       .options = {count("repeat", o.repeat, 1, "runs per image, least time taken (default 3)"),
                   text("maps", "DIR", o.maps_folder, "time the maps of DIR (images and YAMLs) instead of the dataset"),
                   count("unexplored", o.unexplored, 1, "centre every image map in an N x N image of its corner's grey"),
-                  flag("no-crop", o.no_crop, "run the stages on the whole grid, not segmentation_box()"),
                   flag("quality", o.quality, "also score each image against its ground truth (not with --maps)"),
                   extra("door-ratio", "merging: largest cut over the narrower side's width kept as a door", e,
                         [](SegmentOptions& s) -> double& { return s.merge.door_ratio; }),

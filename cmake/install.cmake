@@ -15,7 +15,8 @@ foreach(module IN LISTS TOPOCUT_MODULES)
     set(scope PUBLIC)
   endif()
   set_property(TARGET topocut_${module} PROPERTY INTERFACE_INCLUDE_DIRECTORIES
-               $<BUILD_INTERFACE:${CMAKE_CURRENT_SOURCE_DIR}/include> $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}>)
+               $<BUILD_INTERFACE:${CMAKE_CURRENT_SOURCE_DIR}/include> $<BUILD_INTERFACE:${CMAKE_CURRENT_BINARY_DIR}/generated/include>
+               $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}>)
 endforeach()
 set_target_properties(topocut_lib PROPERTIES EXPORT_NAME topocut)
 add_library(topocut::topocut ALIAS topocut_lib)
@@ -28,7 +29,10 @@ install(TARGETS ${topocut_module_targets} topocut_lib EXPORT topocutTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR} LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
         INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 install(TARGETS topocut RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+install(FILES LICENSE DESTINATION ${CMAKE_INSTALL_DOCDIR})
 install(DIRECTORY include/topocut DESTINATION ${CMAKE_INSTALL_INCLUDEDIR} FILES_MATCHING PATTERN "*.h")
+install(FILES ${CMAKE_CURRENT_BINARY_DIR}/generated/include/topocut/core/version.h
+        DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/topocut/core)
 install(EXPORT topocutTargets NAMESPACE topocut:: DESTINATION ${TOPOCUT_INSTALL_CMAKEDIR})
 
 configure_package_config_file(${CMAKE_CURRENT_SOURCE_DIR}/cmake/topocutConfig.cmake.in

@@ -1,7 +1,9 @@
 // Segments a map through the installed topocut package: a map file (ROS YAML or image) when one is
-// given, else an int8 occupancy grid held in memory as a ROS node holds a nav_msgs/OccupancyGrid.
+// given, with the segmentation options of a robot's YAML file when that is given too (the keys of
+// `topocut segment --config`), else an int8 occupancy grid held in memory as a ROS node holds a
+// nav_msgs/OccupancyGrid.
 //   cmake -S examples -B build-example -DCMAKE_PREFIX_PATH=<topocut prefix> && cmake --build build-example
-//   build-example/segment_map maps/floorplan.yaml
+//   build-example/segment_map maps/floorplan.yaml [examples/robot.yaml]
 #include <cstdint>
 #include <iostream>
 #include <vector>
@@ -37,7 +39,8 @@ void print(const topocut::GridSegmentation& result) {
 int main(int argc, char** argv) {
   try {
     if (argc > 1) {
-      print(topocut::segment_grid(topocut::load_map(argv[1]), topocut::GridFrame{}));
+      const topocut::SegmentOptions options = argc > 2 ? topocut::load_segment_options(argv[2]) : topocut::SegmentOptions{};
+      print(topocut::segment_grid(topocut::load_map(argv[1]), topocut::GridFrame{}, options));
       return 0;
     }
     std::cout << "topocut " << TOPOCUT_VERSION << ", two rooms held in memory:\n";

@@ -275,6 +275,31 @@ RoomsAdapter::RoomsAdapter(const std::vector<Parameter>& parameters, std::vector
 
 RoomsAdapter::~RoomsAdapter() = default;
 
+std::string RoomsAdapter::settings_summary() const {
+  const NodeSettings& live = state_->live;
+  std::string given, defaulted;
+  auto add = [&](const std::string& name, const std::string& value, bool was_given) {
+    std::string& list = was_given ? given : defaulted;
+    list += (list.empty() ? "" : ", ") + name + " " + value;
+  };
+  auto was_given = [&](const std::string& name) {
+    for (const Parameter& p : state_->parameters)
+      if (topocut::underscored_option_name(p.name) == name) return true;
+    return false;
+  };
+  for (const auto& row : topocut::segment_option_rows()) {
+    const std::string name = topocut::underscored_option_name(row.name);
+    const bool set = was_given(name);
+    if (!set && name != "concavity" && name != "robot_radius") continue;  // the rest: their defaults, --help
+    add(name, row.is_switch() ? (row.get(live.segment) != 0.0 ? "true" : "false") : topocut::shortest_number(row.get(live.segment)), set);
+  }
+  for (const auto& row : map_option_rows())
+    if (was_given(row.name)) add(row.name, topocut::shortest_number(row.get(live.map)), true);
+  if (!live.map.id_ledger.empty()) add(kLedgerParameter, live.map.id_ledger, true);
+  return (given.empty() ? "" : "given: " + given + "; ") + "defaults: " + (defaulted.empty() ? "" : defaulted + " and ") +
+         "the rest (topocut_node --help lists them)";
+}
+
 RoomsOutput RoomsAdapter::update(const MapInput& map) {
   const topocut::GridArray array = array_of(map, state_->live.map);
   const topocut::OccupancyGrid grid = topocut::grid_from_array(array);  // validates the array

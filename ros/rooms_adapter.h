@@ -44,7 +44,7 @@ struct RoomsOutput {
   std::vector<PassageShape> passages;
   std::string json;                   // the rooms JSON (rooms_json.h)
   double update_ms = 0.0;             // the library's segmentation call alone
-  std::string kind;                   // "unchanged", "incremental", "batch" (live) or "segment" (a service call)
+  std::string kind;                   // "unchanged", "incremental", "batch" (live), "settled" or "segment" (a service call)
 };
 
 // One private parameter as the parameter server holds it (its name without the node's namespace).
@@ -69,6 +69,10 @@ class RoomsAdapter {
   // (with the nearest known name when one is close) to unknown.
   RoomsAdapter(const std::vector<Parameter>& parameters, std::vector<std::string>& unknown);
   ~RoomsAdapter();
+
+  // One line for the start-up log: the parameters given with the values they set, then concavity and
+  // robot_radius when they were not given ("given: ...; defaults: ...").
+  std::string settings_summary() const;
 
   // Segments the next map incrementally. Throws std::runtime_error with one clear sentence on a
   // malformed map (size, resolution, values: the state is unchanged then) or a room id above 65535.

@@ -6,21 +6,25 @@
 // publishes
 //   rooms/labels   sensor_msgs/Image 16UC1: the room id of every cell, in the map's row order and
 //                  header (0 = no room)
+//   rooms/grid     nav_msgs/OccupancyGrid: the same labels on the map's grid (-1 = no room, else the
+//                  id; ids above 100 wrap to 1 + (id - 1) mod 100), for RViz's Map display and costmaps
 //   rooms/rooms    topocut_msgs/Rooms: the rooms (outline, centre, inside point, bounding box, area)
 //                  and passages (rooms, doorway ends, width, door or opening, rule), typed
 //   rooms/markers  visualization_msgs/MarkerArray: room outlines, ids and passages, for RViz
 //   rooms/graph    std_msgs/String: the rooms JSON (rooms_json.h)
 //   rooms/timing   std_msgs/String: {"update_ms", "callback_ms", "kind", "rooms"} of that map
-// and answers
-//   rooms/segment_map  topocut_msgs/SegmentMap: one map segmented at once, as `topocut segment` does
-//   rooms/room_at      topocut_msgs/RoomAt: the room holding a point, in the rooms last published
-//                      (segment_map is a what-if: it changes neither them nor their ids)
+// and answers, under its own name (private, so that two nodes never take each other's over)
+//   ~segment_map       topocut_msgs/SegmentMap: one map segmented at once, as `topocut segment` does
+//   ~room_at           topocut_msgs/RoomAt: the room holding a point, in the rooms last published
+//   ~map_segmentation  actionlib action topocut_msgs/MapSegmentation: segment_map with feedback
+// (segment_map and the action are what-ifs: they change neither the published rooms nor their ids).
 // With ~id_ledger the room ids are kept in that file (written when the rooms settle and at
 // shutdown, read at start), so that a restarted node gives the same rooms the same ids.
-// A thin adapter: the conversion, segmentation and JSON are the library's, behind rooms_adapter.h
-// (this file is C++17 because ROS 1's message headers are); it only moves values between messages
-// and the adapter. Parameters (private, `~name`) carry the CLI's option names with '_' for '-', and
-// the library's defaults; `topocut_node --help` lists them.
+// It logs its parameters and names at start and one line per map. A thin adapter: the conversion,
+// segmentation and JSON are the library's, behind rooms_adapter.h (this file is C++17 because ROS
+// 1's message headers are); it only moves values between messages and the adapter. Parameters
+// (private, `~name`) carry the CLI's option names with '_' for '-', and the library's defaults;
+// `topocut_node --help` lists them.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -30,10 +34,12 @@
 #include <string>
 #include <vector>
 
+#include <actionlib/server/simple_action_server.h>
 #include <nav_msgs/OccupancyGrid.h>
 #include <ros/ros.h>
 #include <sensor_msgs/Image.h>
 #include <std_msgs/String.h>
+#include <topocut_msgs/MapSegmentationAction.h>
 #include <topocut_msgs/RoomAt.h>
 #include <topocut_msgs/Rooms.h>
 #include <topocut_msgs/SegmentMap.h>
@@ -48,11 +54,14 @@ using Clock = std::chrono::steady_clock;
 const char* const kUsage =
     "usage: topocut_node [map:=TOPIC] [__name:=NAME] [_PARAMETER:=VALUE ...]   (or: rosrun, roslaunch)\n"
     "Rooms of the nav_msgs/OccupancyGrid on `map`, segmented incrementally for every map and published on\n"
-    "rooms/labels (sensor_msgs/Image 16UC1), rooms/rooms (topocut_msgs/Rooms), rooms/markers (RViz),\n"
-    "rooms/graph (the rooms JSON) and rooms/timing; services rooms/segment_map (topocut_msgs/SegmentMap:\n"
-    "one map segmented at once, as `topocut segment` does) and rooms/room_at (topocut_msgs/RoomAt, in the\n"
-    "published rooms). A map unchanged for ~settle_after seconds is segmented as a whole (`topocut segment`'s\n"
-    "rooms, the live ids carried); ~id_ledger keeps the ids in a file across restarts.\n"
+    "rooms/labels (sensor_msgs/Image 16UC1), rooms/grid (nav_msgs/OccupancyGrid: -1 no room, else the id,\n"
+    "ids above 100 wrapping), rooms/rooms (topocut_msgs/Rooms), rooms/markers (RViz), rooms/graph (the rooms\n"
+    "JSON) and rooms/timing. Under the node's name (private): the services ~segment_map\n"
+    "(topocut_msgs/SegmentMap: one map segmented at once, as `topocut segment` does) and ~room_at\n"
+    "(topocut_msgs/RoomAt, in the published rooms), and the action ~map_segmentation\n"
+    "(topocut_msgs/MapSegmentation: segment_map with feedback). A map unchanged for ~settle_after seconds is\n"
+    "segmented as a whole (`topocut segment`'s rooms, the live ids carried); ~id_ledger keeps the ids in a\n"
+    "file across restarts. Logs its parameters and names at start and one line per map.\n"
     "Parameters (private; an unknown name is warned about, a bad value stops the node with the reason):\n";
 
 double ms_between(Clock::time_point a, Clock::time_point b) {
@@ -92,6 +101,19 @@ sensor_msgs::Image labels_image(const std_msgs::Header& header, std::uint32_t wi
     image.data[2 * k + 1] = static_cast<std::uint8_t>(labels[k] >> 8);
   }
   return image;
+}
+
+// The labels as an occupancy grid on the map's own grid: -1 where no room, else the id, which an
+// int8 holds up to 100 (the occupancy range RViz draws); larger ids wrap.
+nav_msgs::OccupancyGrid labels_grid(const std_msgs::Header& header, const nav_msgs::MapMetaData& info,
+                                    const std::vector<std::uint16_t>& labels) {
+  nav_msgs::OccupancyGrid grid;
+  grid.header = header;
+  grid.info = info;
+  grid.data.resize(labels.size());
+  for (std::size_t k = 0; k < labels.size(); ++k)
+    grid.data[k] = labels[k] == 0 ? std::int8_t{-1} : static_cast<std::int8_t>(1 + (labels[k] - 1) % 100);
+  return grid;
 }
 
 std_msgs::ColorRGBA colour_of(int id) {
@@ -227,15 +249,20 @@ std::vector<topocut_ros::Parameter> private_parameters(const ros::NodeHandle& pr
 
 class RoomsNode {
  public:
-  RoomsNode(ros::NodeHandle& nh, const std::vector<topocut_ros::Parameter>& parameters, std::vector<std::string>& unknown)
-      : adapter_(parameters, unknown) {
+  RoomsNode(ros::NodeHandle& nh, ros::NodeHandle& private_nh, const std::vector<topocut_ros::Parameter>& parameters,
+            std::vector<std::string>& unknown)
+      : adapter_(parameters, unknown), action_(private_nh, "map_segmentation", false) {
     labels_ = nh.advertise<sensor_msgs::Image>("rooms/labels", 1, true);
+    grid_ = nh.advertise<nav_msgs::OccupancyGrid>("rooms/grid", 1, true);
     rooms_ = nh.advertise<topocut_msgs::Rooms>("rooms/rooms", 1, true);
     markers_ = nh.advertise<visualization_msgs::MarkerArray>("rooms/markers", 1, true);
     graph_ = nh.advertise<std_msgs::String>("rooms/graph", 1, true);
     timing_ = nh.advertise<std_msgs::String>("rooms/timing", 10);
-    segment_ = nh.advertiseService("rooms/segment_map", &RoomsNode::on_segment, this);
-    room_at_ = nh.advertiseService("rooms/room_at", &RoomsNode::on_room_at, this);
+    segment_ = private_nh.advertiseService("segment_map", &RoomsNode::on_segment, this);
+    room_at_ = private_nh.advertiseService("room_at", &RoomsNode::on_room_at, this);
+    // Goals are served in the spin thread, like maps and service calls: the adapter needs no lock.
+    action_.registerGoalCallback(boost::bind(&RoomsNode::on_goal, this));
+    action_.start();
     map_ = nh.subscribe("map", 1, &RoomsNode::on_map, this);
     if (adapter_.settle_after() > 0.0)
       settle_timer_ = nh.createSteadyTimer(ros::WallDuration(std::min(0.25, adapter_.settle_after() / 4.0)),
@@ -249,6 +276,16 @@ class RoomsNode {
     } catch (const std::exception& e) {
       ROS_ERROR("topocut_node: ~id_ledger not written: %s", e.what());
     }
+  }
+
+  // The start-up lines: what it listens to and answers under which names, and with which options.
+  void log_start() const {
+    ROS_INFO("topocut_node: maps from %s; rooms on %s, %s, %s, %s, %s, %s", map_.getTopic().c_str(),
+             labels_.getTopic().c_str(), grid_.getTopic().c_str(), rooms_.getTopic().c_str(), markers_.getTopic().c_str(),
+             graph_.getTopic().c_str(), timing_.getTopic().c_str());
+    ROS_INFO("topocut_node: services %s, %s; action %s", segment_.getService().c_str(), room_at_.getService().c_str(),
+             ros::names::resolve("~map_segmentation").c_str());
+    ROS_INFO("topocut_node: parameters %s", adapter_.settings_summary().c_str());
   }
 
  private:
@@ -282,14 +319,20 @@ class RoomsNode {
     }
   }
 
+  // The rooms of the latest map on every topic, its timing and one log line.
   void publish(const topocut_ros::RoomsOutput& rooms, Clock::time_point received) {
     labels_.publish(labels_image(latest_, latest_info_.width, latest_info_.height, rooms.labels));
+    grid_.publish(labels_grid(latest_, latest_info_, rooms.labels));
     rooms_.publish(rooms_message(latest_, rooms));
     markers_.publish(room_markers(latest_, rooms, latest_info_.resolution));
     std_msgs::String graph;
     graph.data = rooms.json;
     graph_.publish(graph);
-    publish_timing(rooms, ms_between(received, Clock::now()));
+    const double callback_ms = ms_between(received, Clock::now());
+    publish_timing(rooms, callback_ms);
+    ROS_INFO("topocut_node: map %u x %u at %g m: %zu rooms, %zu passages (%s, %.1f ms)", latest_info_.width,
+             latest_info_.height, static_cast<double>(latest_info_.resolution), rooms.rooms.size(), rooms.passages.size(),
+             rooms.kind.c_str(), callback_ms);
   }
 
   bool on_segment(topocut_msgs::SegmentMap::Request& request, topocut_msgs::SegmentMap::Response& response) {
@@ -298,11 +341,49 @@ class RoomsNode {
       response.rooms = rooms_message(request.map.header, rooms);
       response.labels = labels_image(request.map.header, request.map.info.width, request.map.info.height, rooms.labels);
       response.json = rooms.json;
+      log_segmented("segment_map", request.map, rooms);
     } catch (const std::exception& e) {  // the caller reads why in response.error
       response.error = e.what();
       ROS_WARN("topocut_node: segment_map: %s", e.what());
     }
     return true;
+  }
+
+  // One goal, start to end, with a feedback message as each stage begins; a bad map or option aborts
+  // the goal with the reason in result.error.
+  void on_goal() {
+    const topocut_msgs::MapSegmentationGoalConstPtr goal = action_.acceptNewGoal();
+    if (!goal) return;  // preempted before it was taken up
+    topocut_msgs::MapSegmentationResult result;
+    try {
+      feedback("accepted", 0.0f);
+      feedback("segmenting", 0.05f);
+      const topocut_ros::RoomsOutput rooms = adapter_.segment(map_input(goal->map), goal->options);
+      feedback("writing the result", 0.95f);
+      result.rooms = rooms_message(goal->map.header, rooms);
+      result.labels = labels_image(goal->map.header, goal->map.info.width, goal->map.info.height, rooms.labels);
+      result.grid = labels_grid(goal->map.header, goal->map.info, rooms.labels);
+      result.json = rooms.json;
+      log_segmented("map_segmentation", goal->map, rooms);
+      action_.setSucceeded(result);
+    } catch (const std::exception& e) {
+      result.error = e.what();
+      ROS_WARN("topocut_node: map_segmentation: %s", e.what());
+      action_.setAborted(result, result.error);
+    }
+  }
+
+  void feedback(const char* stage, float progress) {
+    topocut_msgs::MapSegmentationFeedback message;
+    message.stage = stage;
+    message.progress = progress;
+    action_.publishFeedback(message);
+  }
+
+  static void log_segmented(const char* how, const nav_msgs::OccupancyGrid& map, const topocut_ros::RoomsOutput& rooms) {
+    ROS_INFO("topocut_node: %s: map %u x %u at %g m: %zu rooms, %zu passages (%.1f ms)", how, map.info.width,
+             map.info.height, static_cast<double>(map.info.resolution), rooms.rooms.size(), rooms.passages.size(),
+             rooms.update_ms);
   }
 
   bool on_room_at(topocut_msgs::RoomAt::Request& request, topocut_msgs::RoomAt::Response& response) {
@@ -332,8 +413,9 @@ class RoomsNode {
   nav_msgs::MapMetaData latest_info_;
   bool have_map_ = false, settled_ = false;
   Clock::time_point last_change_;
-  ros::Publisher labels_, rooms_, markers_, graph_, timing_;
+  ros::Publisher labels_, grid_, rooms_, markers_, graph_, timing_;
   ros::ServiceServer segment_, room_at_;
+  actionlib::SimpleActionServer<topocut_msgs::MapSegmentationAction> action_;
   ros::Subscriber map_;
   ros::SteadyTimer settle_timer_;
 };
@@ -341,6 +423,9 @@ class RoomsNode {
 }  // namespace
 
 int main(int argc, char** argv) {
+  // rosconsole writes INFO to stdout: one line at a time, so that a log file, roslaunch's pipe or the
+  // journal sees each line when it happens, not when a buffer fills or the node ends.
+  std::setvbuf(stdout, nullptr, _IOLBF, 0);
   // Before ros::init, which would register with the master (and replace a running node of this name).
   std::vector<std::string> args;
   ros::removeROSArgs(argc, argv, args);
@@ -356,8 +441,9 @@ int main(int argc, char** argv) {
   ros::NodeHandle nh, private_nh("~");
   try {
     std::vector<std::string> unknown;
-    RoomsNode node(nh, private_parameters(private_nh), unknown);
+    RoomsNode node(nh, private_nh, private_parameters(private_nh), unknown);
     for (const std::string& line : unknown) ROS_WARN("topocut_node: %s", line.c_str());
+    node.log_start();
     ros::spin();
     node.save_ledger();
   } catch (const std::exception& e) {  // bad parameters: one clear line, non-zero exit

@@ -1,8 +1,9 @@
 #!/usr/bin/python3
 """The README's ROS 1 start on the loopback only: a private rosmaster on a free port of 127.0.0.1,
-topocut_node, and examples/ros_rooms.py feeding it the bundled floor plan, on /map and through the
-service rooms/segment_map, then asking rooms/room_at; the rooms it prints must be the library's (the
-rooms JSON of `topocut segment --out-json`) and the room at the point `topocut segment --at`'s. Every
+topocut_node, and examples/ros_rooms.py feeding it the bundled floor plan, on /map, through the
+service /topocut/segment_map and through the action /topocut/map_segmentation, then asking
+/topocut/room_at; the rooms it prints must be the library's (the rooms JSON of `topocut segment
+--out-json`) and the room at the point `topocut segment --at`'s. Every
 wait is bounded; the master and the node are stopped whatever happens. Exit 77: skipped.
 
     example_test.py --node NODE --rosmaster ROSMASTER --cli TOPOCUT --source SOURCE_DIR --python-path DIR --msgs DIR
@@ -46,7 +47,7 @@ def main():
         expected += [f"passage {p['rooms'][0]} - {p['rooms'][1]}: {p['kind']}, {p['width']:.2f} m" for p in rooms["passages"]]
         expected += [line for line in cli.stdout.splitlines() if line.startswith("at ")]
         assert expected[-1].startswith("at " + point + ": room "), cli.stdout
-        for mode in ([], ["--service"]):
+        for mode in ([], ["--service"], ["--action"]):
             out = subprocess.run([sys.executable, os.path.join(args.source, "examples", "ros_rooms.py"), floorplan, "--at", point]
                                  + mode, env=env, capture_output=True, text=True, timeout=45)
             printed = out.stdout.strip().splitlines()
@@ -55,7 +56,7 @@ def main():
                       (" ".join(mode), out.stdout, out.stderr, "\n".join(expected)))
                 return 1
         print("\n".join(printed))
-        print("ros_rooms.py printed the command's %d rooms, %d passages and room at %s, on /map and from rooms/segment_map" %
+        print("ros_rooms.py printed the command's %d rooms, %d passages and room at %s, on /map, from ~segment_map and from ~map_segmentation" %
               (len(rooms["rooms"]), len(rooms["passages"]), point))
         return 0
     finally:

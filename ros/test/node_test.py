@@ -11,14 +11,20 @@ this script publishing maps with rospy and checking what comes back.
 3. Malformed maps (data size not width x height, zero resolution) are logged and skipped; the node
    lives on and answers the next good map.
 4. The typed rooms (rooms/rooms, topocut_msgs/Rooms) say what the rooms JSON says, for every map.
-5. rooms/room_at finds each room at its inside point, and nothing off the map or in a wall.
-6. rooms/segment_map on the bundled map and on every real map of ../shared/datasets/real_maps and
+5. ~room_at (/topocut/room_at) finds each room at its inside point, and nothing off the map or in a wall.
+6. ~segment_map (/topocut/segment_map) on the bundled map and on every real map of ../shared/datasets/real_maps and
    real_maps_gt (skipped with a message when absent): labels equal `topocut segment --out-labels`
    cell for cell and the JSON equals `--out-json` byte for byte; a bad option and a malformed map
    come back as an error; room_at still answers from the published rooms (segment_map is a what-if).
 7. `topocut_node --help` prints the parameters and exits 0 while the node runs, which lives on; a bad
-   parameter value stops a second node with the reason and exit 1; an unknown name is warned about.
-8. Settling: a node left without a new map for ~settle_after publishes the rooms of segment_map
+   parameter value stops a second node with the reason and exit 1; an unknown name is warned about; a
+   second node under another name serves its own private services and leaves the first node's alone.
+8. The action ~map_segmentation answers a goal with ~segment_map's rooms, labels and JSON, and the
+   labels as a grid; its feedback names the stages in order; a bad option aborts the goal; like
+   segment_map it is a what-if (room_at still answers from the published rooms).
+9. rooms/grid (nav_msgs/OccupancyGrid) holds the labels on the map's grid (-1 no room, else the id),
+   and the node logs its topics, services, action and parameters at start and one line per map.
+10. Settling: a node left without a new map for ~settle_after publishes the rooms of segment_map
    (`topocut segment`) on the latest map, ids carried (timing kind "settled"); with ~id_ledger, a
    restarted node gives the same map the same ids.
 The first runs use ~settle_after 0, so that their rooms are the library's incremental result.
@@ -36,6 +42,7 @@ import struct
 import subprocess
 import sys
 import tempfile
+import threading
 import time
 
 TIMEOUT = 20.0  # seconds for any one answer
@@ -223,12 +230,13 @@ def run_checks(args, env, work, node_log, full, grids):
     node_holder.append(node)
     rospy.init_node("topocut_node_test", anonymous=True, disable_signals=True)
     from topocut_msgs.msg import Rooms
-    received = {"labels": [], "markers": [], "graph": [], "timing": [], "rooms": []}
+    received = {"labels": [], "markers": [], "graph": [], "timing": [], "rooms": [], "grid": []}
     rospy.Subscriber("/rooms/labels", Image, lambda m: received["labels"].append(m))
     rospy.Subscriber("/rooms/rooms", Rooms, lambda m: received["rooms"].append(m))
     rospy.Subscriber("/rooms/markers", MarkerArray, lambda m: received["markers"].append(m))
     rospy.Subscriber("/rooms/graph", String, lambda m: received["graph"].append(m))
     rospy.Subscriber("/rooms/timing", String, lambda m: received["timing"].append(m))
+    rospy.Subscriber("/rooms/grid", OccupancyGrid, lambda m: received["grid"].append(m))
     publisher = rospy.Publisher("/map", OccupancyGrid, queue_size=10, latch=True)
     wait_for(lambda: publisher.get_num_connections() > 0, "the node to subscribe to /map")
     # The node's publishers must have connected to our subscribers before we publish.
@@ -242,8 +250,10 @@ def run_checks(args, env, work, node_log, full, grids):
         wait_for(lambda: any(x.header.stamp == stamp for x in received["labels"][counts["labels"]:]) and
                  any(x.header.stamp == stamp for x in received["rooms"][counts["rooms"]:]) and
                  len(received["graph"]) > counts["graph"] and len(received["markers"]) > counts["markers"] and
-                 len(received["timing"]) > counts["timing"], "rooms for map stamp %s" % stamp.secs)
+                 len(received["timing"]) > counts["timing"] and
+                 any(x.header.stamp == stamp for x in received["grid"][counts["grid"]:]), "rooms for map stamp %s" % stamp.secs)
         labels = [x for x in received["labels"][counts["labels"]:] if x.header.stamp == stamp][-1]
+        check_grid([x for x in received["grid"][counts["grid"]:] if x.header.stamp == stamp][-1], m, labels)
         typed = [x for x in received["rooms"][counts["rooms"]:] if x.header.stamp == stamp][-1]
         check_typed(typed, json.loads(received["graph"][-1].data), "map stamp %s" % stamp.secs)
         return labels, received["markers"][-1], received["graph"][-1], json.loads(received["timing"][-1].data)
@@ -284,6 +294,7 @@ def run_checks(args, env, work, node_log, full, grids):
     print("full map %d x %d: %d rooms, node callback %.2f ms, library update %.2f ms" %
           (full["width"], full["height"], len(ids), timing["callback_ms"], timing["update_ms"]))
     check_room_at(json.loads(graph.data), labels.header, full)
+    check_node_log(node_log, full, len(ids))
     check_node_arguments(args, env, work, node)
 
     # 3a. Malformed maps between the two runs: logged, skipped, the node lives on.
@@ -319,7 +330,8 @@ def run_checks(args, env, work, node_log, full, grids):
         previous = current
     assert node.poll() is None
     last = json.loads(graph.data)["rooms"][0]
-    check_segment_map(args, work, (last["inside"], last["id"], labels.header.stamp))
+    published = (last["inside"], last["id"], labels.header.stamp)
+    check_action(*check_segment_map(args, work, published), published)
     assert node.poll() is None
     # Ids are carried across updates: the node's labels are the library's byte for byte (check_rooms),
     # whose updates of this sequence are batch runs (each growth changes the frame) with ids kept by
@@ -369,8 +381,8 @@ def room_at(x, y):
     import rospy
     from topocut_msgs.srv import RoomAt
     from geometry_msgs.msg import Point
-    rospy.wait_for_service("/rooms/room_at", TIMEOUT)
-    return rospy.ServiceProxy("/rooms/room_at", RoomAt)(Point(x, y, 0.0))
+    rospy.wait_for_service("/topocut/room_at", TIMEOUT)
+    return rospy.ServiceProxy("/topocut/room_at", RoomAt)(Point(x, y, 0.0))
 
 
 def check_room_at(rooms, header, grid):
@@ -405,12 +417,12 @@ def shared_maps(source):
 def segment_map(grid, options=(), stamp=0):
     import rospy
     from topocut_msgs.srv import SegmentMap
-    rospy.wait_for_service("/rooms/segment_map", TIMEOUT)
-    return rospy.ServiceProxy("/rooms/segment_map", SegmentMap)(occupancy_grid_message(grid, stamp), list(options))
+    rospy.wait_for_service("/topocut/segment_map", TIMEOUT)
+    return rospy.ServiceProxy("/topocut/segment_map", SegmentMap)(occupancy_grid_message(grid, stamp), list(options))
 
 
 def segment_map_against_cli(cli, reference, path, work, stamp):
-    """path sent to rooms/segment_map and segmented by `topocut segment`: the answer, the number of cells
+    """path sent to ~segment_map (/topocut/segment_map) and segmented by `topocut segment`: the answer, the number of cells
     whose labels differ, whether the JSON is the same byte for byte, the call's round trip and the
     command's segmenting time (ms)."""
     import numpy
@@ -438,8 +450,9 @@ def segment_map_against_cli(cli, reference, path, work, stamp):
 
 def check_segment_map(args, work, published):
     """The service's rooms are `topocut segment`'s: labels cell for cell, JSON byte for byte; the published
-    rooms (published: a room's inside point, id and map stamp) stay what room_at answers from."""
-    counts = []
+    rooms (published: a room's inside point, id and map stamp) stay what room_at answers from. Returns the
+    first map's grid and answer."""
+    counts, first_answer = [], None
     for k, path in enumerate(shared_maps(args.source)):
         name = os.path.basename(path)
         result = segment_map_against_cli(args.cli, args.reference, path, work, 500 + k)
@@ -453,6 +466,7 @@ def check_segment_map(args, work, published):
         at = room_at(*published[0])
         assert at.id == published[1] and at.header.stamp == published[2], name + ": room_at after segment_map"
         counts.append("%s %d" % (name, len(rooms["rooms"])))
+        first_answer = first_answer or (grid, answer)
     print("segment_map = topocut segment (labels, JSON) on %d maps; rooms: %s" % (len(counts), ", ".join(counts)))
     answer = segment_map(grid, ["concavty=3"])
     assert "did you mean ~concavity?" in answer.error and not answer.rooms.rooms, answer.error
@@ -462,6 +476,54 @@ def check_segment_map(args, work, published):
     answer = segment_map(bad)
     assert "values for" in answer.error, answer.error
     print("segment_map refuses: %s" % answer.error)
+    return first_answer
+
+
+def check_action(grid, expected, published):
+    """~map_segmentation (/topocut/map_segmentation): a goal's result is ~segment_map's answer for the
+    same map (labels, JSON, and the labels as a grid); its feedback, read on the action's feedback topic
+    (a client may drop feedback that comes after the result, which travels on another topic), names the
+    three stages in order with growing progress; a bad option aborts the goal with the reason. A what-if
+    like segment_map: the published rooms (published: a room's inside point, id and map stamp) stay
+    what room_at answers from."""
+    import actionlib
+    import rospy
+    from actionlib_msgs.msg import GoalStatus
+    from topocut_msgs.msg import MapSegmentationAction, MapSegmentationActionFeedback, MapSegmentationGoal
+    feedback = []
+    subscriber = rospy.Subscriber("/topocut/map_segmentation/feedback", MapSegmentationActionFeedback, feedback.append)
+    client = actionlib.ActionClient("/topocut/map_segmentation", MapSegmentationAction)
+    assert client.wait_for_server(rospy.Duration(TIMEOUT)), "no action server /topocut/map_segmentation"
+    wait_for(lambda: subscriber.get_num_connections() > 0, "the action's feedback topic")
+    sent = occupancy_grid_message(grid, 700)
+
+    def run(options):
+        done = threading.Event()
+        handle = client.send_goal(MapSegmentationGoal(map=sent, options=options),
+                                  lambda h: h.get_comm_state() == actionlib.CommState.DONE and done.set())
+        assert done.wait(TIMEOUT), "no result for the goal %s" % options
+        return handle
+
+    handle = run([])
+    result = handle.get_result()
+    assert handle.get_goal_status() == GoalStatus.SUCCEEDED and result.error == "", handle.get_goal_status_text()
+    assert result.json == expected.json, "the action's JSON differs from segment_map's"
+    assert bytes(result.labels.data) == bytes(expected.labels.data), "the action's labels differ from segment_map's"
+    check_grid(result.grid, sent, result.labels)
+    at = room_at(*published[0])
+    assert at.id == published[1] and at.header.stamp == published[2], "room_at after map_segmentation"
+    goal_id = handle.comm_state_machine.action_goal.goal_id.id
+    mine = lambda: [f.feedback for f in feedback if f.status.goal_id.id == goal_id]  # noqa: E731
+    wait_for(lambda: len(mine()) == 3, "the goal's three feedback messages")
+    stages = [(f.stage, f.progress) for f in mine()]
+    assert [stage for stage, _ in stages] == ["accepted", "segmenting", "writing the result"], stages
+    assert [p for _, p in stages] == sorted(p for _, p in stages) and 0 <= stages[0][1] and stages[-1][1] < 1, stages
+    bad = run(["concavty=3"])
+    assert bad.get_goal_status() == GoalStatus.ABORTED and "did you mean ~concavity?" in bad.get_result().error, \
+        bad.get_result()
+    subscriber.unregister()
+    print("map_segmentation: the result is segment_map's (%d rooms), feedback %s; a bad option aborts: %s" %
+          (len(result.rooms.rooms), ", ".join("%s %.2f" % sp for sp in stages), bad.get_result().error))
 
 
 def labels_of(message):
@@ -530,14 +592,52 @@ def check_node_arguments(args, env, work, node):
     assert bad.returncode == 1 and "~concavity must lie in (0, 100000] metres, got -1" in bad.stdout + bad.stderr, bad
     typo_log = os.path.join(work, "typo.log")
     with open(typo_log, "wb") as log:
-        typo = subprocess.Popen([args.node, "__ns:=/other", "__name:=topocut_typo", "_concavty:=3"], env=env, start_new_session=True,
+        # Beside the first node, in its namespace (no map reaches it): the case where shared service
+        # names would be taken over.
+        typo = subprocess.Popen([args.node, "__name:=topocut_typo", "map:=/topocut_test_no_map", "_concavty:=3"], env=env,
+                                start_new_session=True,
                                 stdout=log, stderr=subprocess.STDOUT)
     node_holder.append(typo)
     wait_for(lambda: log_has(typo_log, b"~concavty is not a parameter of topocut_node, ignored (did you mean ~concavity?)"),
              "the warning about ~concavty")
+    # The services are the node's own: a second node answers under its name and takes nothing over.
+    first_uri = service_uri("/topocut/segment_map")
+    wait_for(lambda: service_uri("/topocut_typo/segment_map") is not None, "the second node's ~segment_map")
+    assert service_uri("/topocut/segment_map") == first_uri != service_uri("/topocut_typo/segment_map"), \
+        "a second node took over /topocut/segment_map"
     stop(typo)
     assert node.poll() is None and "/topocut" in rosnode_names()
-    print("--help exits 0 and leaves the running node; ~concavity:=-1 is refused (exit 1); ~concavty is warned about")
+    print("--help exits 0 and leaves the running node; ~concavity:=-1 is refused (exit 1); ~concavty is warned about; "
+          "a second node's services are its own (/topocut_typo/segment_map)")
+
+
+def service_uri(name):
+    """The address of the node serving name, or None."""
+    import rosgraph
+    try:
+        return rosgraph.Master("/topocut_node_test").lookupService(name)
+    except rosgraph.MasterError:
+        return None
+
+
+def check_grid(grid, sent, labels):
+    """rooms/grid: the map's header and metadata, -1 where the labels say no room, else the id."""
+    assert grid.header.frame_id == sent.header.frame_id and (grid.info.width, grid.info.height) == (sent.info.width, sent.info.height) \
+        and grid.info.origin == sent.info.origin, "rooms/grid's header or metadata"
+    close(grid.info.resolution, sent.info.resolution, "rooms/grid's resolution (float32)", 1e-7)
+    ids = struct.unpack("<%dH" % (len(labels.data) // 2), bytes(labels.data))
+    expected = [-1 if i == 0 else 1 + (i - 1) % 100 for i in ids]
+    assert list(grid.data) == expected, "rooms/grid differs from the labels"
+
+
+def check_node_log(node_log, grid, rooms):
+    """The start-up lines (topics, services, action, parameters) and the line of the map just segmented."""
+    for needle in (b"maps from /map; rooms on /rooms/labels, /rooms/grid, /rooms/rooms",
+                   b"services /topocut/segment_map, /topocut/room_at; action /topocut/map_segmentation",
+                   b"parameters given: settle_after 0; defaults: concavity 2.5, robot_radius 0",
+                   b"topocut_node: map %d x %d at %g m: %d rooms" % (grid["width"], grid["height"], grid["resolution"], rooms)):
+        wait_for(lambda: log_has(node_log, needle), "the node to log %r" % needle)
+    print("the node logs its names and parameters at start and one line per map")
 
 
 def log_has(path, needle):

@@ -22,12 +22,23 @@
 namespace topocut::cli {
 namespace {
 
+const char* const kDatasetHelp =
+    "Bormann-format dataset folder (required unless --maps): for each map X, X.png (plain), X_furnitures.png "
+    "(furnished) and X_gt_segmentation.png (ground truth); the bundled maps: --dataset maps";
+
+// What a bare `topocut evaluate` needs to be told.
+const char* const kNoDataset =
+    "no dataset given: --dataset DIR (X.png, X_gt_segmentation.png per map X; the bundled maps: --dataset "
+    "maps), or --maps DIR for maps without ground truth";
+
 // The dataset's own options (evaluation's table, which the dataset benchmarks parse too), then
 // the segmentation and map-loading flags every command shares.
 po::options_description described_options() {
   po::options_description described("Evaluation");
   for (const DatasetOption& option : dataset_options()) {
-    if (option.value_name.empty()) {
+    if (option.name == "dataset") {  // the library's default folder is the benchmarks' (a checkout's ../shared)
+      described.add_options()("dataset", po::value<std::string>()->value_name("DIR"), kDatasetHelp);
+    } else if (option.value_name.empty()) {
       described.add_options()(option.name.c_str(), po::bool_switch(), option.help.c_str());
     } else if (option.repeatable) {
       described.add_options()(option.name.c_str(),
@@ -159,9 +170,9 @@ int run(const std::vector<std::string>& args) {
       ("report", po::value<std::string>()->value_name("DIR"),
        "write DIR/index.html (created if missing): the summary and per-image tables and, per image, the ground truth's rooms beside the segmentation (DIR/MAP_VARIANT_truth.png, _rooms.png), matched pairs in one colour, missed rooms hatched red, segments that merged rooms orange");
   const auto vm = parse_options(
-      "topocut evaluate [--dataset DIR] [--variant plain|furnished|all] [--csv FILE] [--concavity M]\n"
+      "topocut evaluate --dataset DIR [--variant plain|furnished|all] [--csv FILE] [--concavity M]\n"
       "                        [--trivial] [--map NAME ...] [--mode batch|incremental [--compare-batch]]\n"
-      "       topocut evaluate [--dataset DIR] --labels DIR [--variant V] [--map NAME ...] [--csv FILE]\n"
+      "       topocut evaluate --dataset DIR --labels DIR [--variant V] [--map NAME ...] [--csv FILE]\n"
       "       topocut evaluate --maps DIR [--resolution M] [--csv FILE] [segmenter options]",
       "Segments every map of a Bormann-format dataset folder (for each map X: X.png plain,\n"
       "X_furnitures.png furnished, X_gt_segmentation.png ground truth; 0.05 m/px) and scores it\n"
@@ -213,6 +224,7 @@ int run(const std::vector<std::string>& args) {
     return run_defects(arguments, (*vm)["maps"].as<std::string>(), floor_repetitions);
   }
 
+  if (!vm->count("dataset")) throw UsageError(kNoDataset);
   const std::string labels = vm->count("labels") ? (*vm)["labels"].as<std::string>() : "";
   if (vm->count("labels") && labels.empty()) throw UsageError("--labels needs a folder");
   if (!labels.empty() && mode != "batch") throw UsageError("--labels takes no --mode (the label images are read, not computed)");

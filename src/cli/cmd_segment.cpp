@@ -72,7 +72,8 @@ const char* const kDescription =
     "A ROS map_server YAML supplies its own resolution, origin and thresholds; for a plain image\n"
     "the palette is read from the image (free: the brightest grey; unknown: the grey covering the\n"
     "border; occupied: the darkest other grey; transparency is unknown) unless --fixed-thresholds.\n"
-    "Prints a summary (rooms, passages, time) and writes each requested output atomically.\n"
+    "Prints a summary (rooms, passages, time) and writes each requested output atomically; a note\n"
+    "says when an image's resolution was assumed (an image holds no scale) or nothing was asked for.\n"
     "--at X,Y (map frame, metres; repeatable) then prints 'at X,Y: room ID' for the room whose cell\n"
     "holds the point, or 'at X,Y: none' (an obstacle, unknown space, off the map).\n\n"
     "Example:\n  topocut segment maps/floorplan.yaml --out-color rooms.png --out-json rooms.json --at 2.0,1.5";
@@ -158,6 +159,11 @@ void write_outputs(const Outputs& out, const OccupancyGrid& grid, const GridSegm
   if (!out.geojson.empty()) write_rooms_geojson(out.geojson, segmentation, result.placements);
 }
 
+bool any_output(const Outputs& out) {
+  return !(out.labels.empty() && out.color.empty() && out.json.empty() && out.svg.empty() && out.geojson.empty() &&
+           out.clean.empty());
+}
+
 // The method as the summary names it, e.g. "cleaning + doors + DuDe + merging, concavity 2.5 m".
 std::string method_summary(const Request& request) {
   if (request.settings.switches.trivial) return "trivial: one room per component";
@@ -185,6 +191,12 @@ std::string summary(const Request& request, const OccupancyGrid& grid, const Seg
   text << "map cells: " << palette << "\n";
   if (is_yaml_path(request.map_path) && request.resolution_given)
     text << "note: --resolution is ignored, the YAML gives " << grid.resolution << " m\n";
+  if (!is_yaml_path(request.map_path) && !request.resolution_given)
+    text << "note: an image holds no scale: its cells were taken as " << grid.resolution
+         << " m (the default); give --resolution M, or segment the map_server YAML beside it\n";
+  if (!any_output(out) && request.at.empty())
+    text << "note: nothing written; ask for outputs: --out-json FILE (rooms, passages), --out-labels FILE.png, "
+            "--out-color FILE.png, --out-geojson FILE, --out-svg FILE, or --at X,Y (topocut segment --help)\n";
   if (!out.labels.empty()) text << "wrote labels:  " << out.labels << " (16-bit PNG, 0 = no room, rooms 1.." << rooms << ")\n";
   if (!out.color.empty()) text << "wrote overlay: " << out.color << "\n";
   if (!out.json.empty()) text << "wrote JSON:    " << out.json << "\n";

@@ -52,6 +52,20 @@ std::vector<std::string> dashed_names(std::vector<std::string> args) {
   return args;
 }
 
+// "the option '--map' is required" says nothing of how to give it: an operand is named as the usage
+// line names it (MAP), with that line.
+std::string missing_option_message(const std::string& option, const po::positional_options_description& positional,
+                                   const std::string& usage) {
+  const std::string name = option.compare(0, 2, "--") == 0 ? option.substr(2) : option;
+  for (unsigned position = 0; position < positional.max_total_count() && position < 16; ++position) {
+    if (positional.name_for_position(position) != name) continue;
+    std::string operand = name;
+    for (char& c : operand) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    return "no " + operand + " given: " + usage;
+  }
+  return "the option '--" + name + "' is required: " + usage;
+}
+
 }  // namespace
 
 std::vector<std::string> option_names(const po::options_description& options) {
@@ -83,6 +97,8 @@ std::optional<po::variables_map> parse_options(const std::string& usage, const s
     const std::string name = e.get_option_name();
     const std::string meant = name.compare(0, 2, "--") == 0 ? closest_option_name(name.substr(2), option_names(all)) : "";
     throw UsageError(std::string(e.what()) + (meant.empty() ? "" : " (did you mean '--" + meant + "'?)"));
+  } catch (const po::required_option& e) {
+    throw UsageError(missing_option_message(e.get_option_name(), positional, usage));
   } catch (const po::error& e) {
     throw UsageError(e.what());
   }

@@ -14,6 +14,8 @@
 #include "cli/allocator.h"
 #include "cli/command.h"
 #include "topocut/core/error.h"
+#include "topocut/core/option_names.h"
+#include "topocut/core/version.h"
 #include "topocut/io/output_files.h"
 
 namespace {
@@ -49,7 +51,11 @@ int dispatch(const std::vector<std::string>& args) {
   const auto& table = topocut::cli::commands();
   const auto found = table.find(args[0]);
   if (found == table.end()) {
-    std::cerr << "topocut: error: unknown command '" << args[0] << "' (see 'topocut --help')\n";
+    std::vector<std::string> names;
+    for (const auto& entry : table) names.push_back(entry.first);
+    const std::string meant = topocut::closest_option_name(args[0], names);
+    std::cerr << "topocut: error: unknown command '" << args[0] << "'"
+              << (meant.empty() ? "" : " (did you mean '" + meant + "'?)") << " (see 'topocut --help')\n";
     return 2;
   }
   try {

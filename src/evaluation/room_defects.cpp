@@ -1,7 +1,6 @@
 #include "topocut/evaluation/room_defects.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -42,24 +41,22 @@ bool is_image_name(const std::string& name) {
   return extensions.count(lower(fs::path(name).extension().string())) > 0;
 }
 
-double elapsed_ms(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-}
-
 MapDefectResult run_one(const MapFile& map, const MapFolderOptions& options) {
   MapDefectResult result;
   result.map = map.name;
   try {
-    const auto start = std::chrono::steady_clock::now();
+    const double start = options.clock();
     const OccupancyGrid grid = load_map(map.path, options.load);
-    const Segmentation segmentation = segment(grid, options.segment);
-    result.time_ms = elapsed_ms(start);
+    result.load_ms = options.clock() - start;
+    result.stages.clock = options.clock;
+    const Segmentation segmentation = segment(grid, options.segment, nullptr, &result.stages);
+    result.time_ms = options.clock() - start;
     result.width = grid.width();
     result.height = grid.height();
     // The free space the rooms were made of, outside the timing.
     result.defects = count_room_defects(segmentation.labels, grid, options.defects, segmentation_input(grid, options.segment).floor);
     if (options.floor_repetitions > 0)
-      result.floor_ms = contour_floor_ms(map.path, options.load.free_min, options.floor_repetitions);
+      result.floor_ms = contour_floor_ms(map.path, options.load.free_min, options.floor_repetitions, options.clock);
     result.ok = true;
   } catch (const std::exception& e) {
     result.error = e.what();
@@ -97,7 +94,8 @@ RoomDefects count_room_defects(const cv::Mat& labels, const OccupancyGrid& grid,
     ids.copyTo(on_floor, floor);
   }
   const int band = static_cast<int>(std::lround(options.open.wall_band / resolution));
-  for (const auto& [id, room] : room_extents(ids)) {
+  const LabelRuns outlines = defects.open_judged ? label_runs(on_floor) : LabelRuns();
+  for (const auto& [id, room] : room_extents(label_runs(ids))) {
     ++defects.rooms;
     const double area = static_cast<double>(room.cells) * cell_area;
     const bool speck = area >= options.speck_min_area && area < options.speck_max_area;
@@ -105,7 +103,7 @@ RoomDefects count_room_defects(const cv::Mat& labels, const OccupancyGrid& grid,
                                                            options.thin_share * static_cast<double>(room.cells);
     bool open = false;
     if (defects.open_judged && area >= options.open.min_area) {
-      open = room_outline(on_floor, id, room.box, grid.cells, walls, band).open(options.open.share, options.open.ragged_share);
+      open = room_outline(outlines, id, room.box, grid.cells, walls, band).open(options.open.share, options.open.ragged_share);
     }
     defects.specks += speck;
     defects.thin += thin;
@@ -175,18 +173,18 @@ cv::Mat grey_8bit(const cv::Mat& image) {
 
 }  // namespace
 
-double contour_floor_ms(const std::string& path, int free_min, int repetitions) {
+double contour_floor_ms(const std::string& path, int free_min, int repetitions, ClockMs clock) {
   const std::string image_path = is_yaml_path(path) ? ros_map_image_path(path) : path;
   std::vector<double> times;
   for (int i = 0; i < std::max(1, repetitions); ++i) {
-    const auto start = std::chrono::steady_clock::now();
+    const double start = clock();
     const cv::Mat image = grey_8bit(read_image(image_path, "map image", ImageLimits{}));
     cv::Mat free;
     cv::threshold(image, free, free_min, 255, cv::THRESH_BINARY);
     std::vector<std::vector<cv::Point>> contours;
     std::vector<cv::Vec4i> hierarchy;
     cv::findContours(free, contours, hierarchy, cv::RETR_CCOMP, cv::CHAIN_APPROX_SIMPLE);
-    times.push_back(elapsed_ms(start));
+    times.push_back(clock() - start);
   }
   return time_statistics(times).median;
 }

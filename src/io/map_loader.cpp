@@ -4,6 +4,8 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
+#include <cstdint>
+#include <cstring>
 #include <filesystem>
 #include <limits>
 #include <sstream>
@@ -139,10 +141,12 @@ RosMapMetadata parse_ros_map_yaml(const std::string& yaml_text, const std::strin
 
 namespace {
 
-template <typename T>
+// The levels of an image with N channels of type T (colour_channels of them colour, then alpha): a
+// pixel equal to the one before it (most of a map: long runs of one colour) takes its level and
+// transparency, the others their rounded channel mean.
+template <typename T, int N>
 void image_levels(const cv::Mat& image, int colour_channels, bool has_alpha, double scale, double half, cv::Mat& levels,
                   cv::Mat& transparent) {
-  const int n = image.channels();
   // The level of every possible channel sum (the rounded mean on the 0..255 scale, computed in
   // doubles, in which an integer sum is exact), so that each pixel costs a sum and a lookup.
   const int max_sum = static_cast<int>(std::numeric_limits<T>::max()) * colour_channels;
@@ -152,18 +156,36 @@ void image_levels(const cv::Mat& image, int colour_channels, bool has_alpha, dou
         cv::saturate_cast<unsigned char>(static_cast<double>(sum) * scale / colour_channels);
   }
   levels.create(image.size(), CV_8UC1);
-  transparent = cv::Mat::zeros(image.size(), CV_8UC1);
+  transparent.create(image.size(), CV_8UC1);
   for (int r = 0; r < image.rows; ++r) {
     const T* in = image.ptr<T>(r);
     unsigned char* level = levels.ptr<unsigned char>(r);
     unsigned char* clear = transparent.ptr<unsigned char>(r);
+    T last[N] = {};  // the pixel before, and its level and transparency
+    unsigned char last_level = 0, last_clear = 0;
     for (int c = 0; c < image.cols; ++c) {
-      const T* px = in + static_cast<std::size_t>(c) * n;
-      int sum = 0;
-      for (int k = 0; k < colour_channels; ++k) sum += px[k];
-      level[c] = level_of_sum[static_cast<std::size_t>(sum)];
-      if (has_alpha && px[n - 1] < half) clear[c] = 255;
+      const T* px = in + static_cast<std::size_t>(c) * N;
+      if (c == 0 || std::memcmp(px, last, sizeof last) != 0) {
+        std::memcpy(last, px, sizeof last);
+        int sum = 0;
+        for (int k = 0; k < colour_channels; ++k) sum += px[k];
+        last_level = level_of_sum[static_cast<std::size_t>(sum)];
+        last_clear = has_alpha && px[N - 1] < half ? 255 : 0;
+      }
+      level[c] = last_level;
+      clear[c] = last_clear;
     }
+  }
+}
+
+template <typename T>
+void image_levels(const cv::Mat& image, int colour_channels, bool has_alpha, double scale, double half, cv::Mat& levels,
+                  cv::Mat& transparent) {
+  switch (image.channels()) {
+    case 1: return image_levels<T, 1>(image, colour_channels, has_alpha, scale, half, levels, transparent);
+    case 2: return image_levels<T, 2>(image, colour_channels, has_alpha, scale, half, levels, transparent);
+    case 3: return image_levels<T, 3>(image, colour_channels, has_alpha, scale, half, levels, transparent);
+    default: return image_levels<T, 4>(image, colour_channels, has_alpha, scale, half, levels, transparent);
   }
 }
 
@@ -177,10 +199,17 @@ void levels_of(const cv::Mat& image, const std::string& source, cv::Mat& levels,
     levels = image;
     transparent = cv::Mat::zeros(image.size(), CV_8UC1);
   } else if (image.depth() == CV_8U && n == 2) {  // grey + alpha: the grey channel is the level
-    cv::extractChannel(image, levels, 0);
-    cv::Mat alpha;
-    cv::extractChannel(image, alpha, 1);
-    transparent = alpha < 128;
+    levels.create(image.size(), CV_8UC1);
+    transparent.create(image.size(), CV_8UC1);
+    for (int r = 0; r < image.rows; ++r) {
+      const unsigned char* px = image.ptr<unsigned char>(r);
+      unsigned char* level = levels.ptr<unsigned char>(r);
+      unsigned char* clear = transparent.ptr<unsigned char>(r);
+      for (int c = 0; c < image.cols; ++c) {
+        level[c] = px[2 * c];
+        clear[c] = px[2 * c + 1] < 128 ? 255 : 0;
+      }
+    }
   } else if (image.depth() == CV_8U) {
     image_levels<unsigned char>(image, colour_channels, has_alpha, 1.0, 128.0, levels, transparent);
   } else if (image.depth() == CV_16U) {
@@ -265,9 +294,28 @@ MapPalette plain_image_palette(const cv::Mat& levels, const cv::Mat& transparent
 
 cv::Mat plain_image_cells(const cv::Mat& levels, const cv::Mat& transparent, const MapPalette& palette) {
   CV_Assert(levels.type() == CV_8UC1 && transparent.type() == CV_8UC1 && levels.size() == transparent.size());
-  cv::Mat cells;
-  cv::LUT(levels, cv::Mat(1, 256, CV_8UC1, const_cast<unsigned char*>(palette.state.data())), cells);
-  cells.setTo(kUnknown, transparent);
+  cv::Mat cells(levels.size(), CV_8UC1);
+  const unsigned char* state = palette.state.data();
+  for (int r = 0; r < levels.rows; ++r) {
+    const unsigned char* level = levels.ptr<unsigned char>(r);
+    const unsigned char* clear = transparent.ptr<unsigned char>(r);
+    unsigned char* out = cells.ptr<unsigned char>(r);
+    const int n = levels.cols;
+    int c = 0;
+    // Most of a map is long runs of one level: 16 opaque cells of one level are written at once.
+    for (; c + 16 <= n; c += 16) {
+      std::uint64_t words[4];  // the levels and transparency flags of the 16 cells
+      std::memcpy(words, level + c, 16);
+      std::memcpy(words + 2, clear + c, 16);
+      const std::uint64_t all = 0x0101010101010101ULL * level[c];
+      if (((words[0] ^ all) | (words[1] ^ all) | words[2] | words[3]) == 0) {
+        std::memset(out + c, state[level[c]], 16);
+        continue;
+      }
+      for (int k = c; k < c + 16; ++k) out[k] = clear[k] ? kUnknown : state[level[k]];
+    }
+    for (; c < n; ++c) out[c] = clear[c] ? kUnknown : state[level[c]];
+  }
   return cells;
 }
 

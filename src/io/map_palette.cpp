@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <cstdlib>
+#include <cstring>
 #include <vector>
 
 #include "topocut/core/occupancy_grid.h"
@@ -19,16 +20,27 @@ void count_levels(const unsigned char* level, const unsigned char* transparent, 
   }
 }
 
+// Whether the 16 bytes from p all equal v, compared as two 8-byte words.
+bool uniform16(const unsigned char* p, unsigned char v) {
+  std::uint64_t a = 0, b = 0;
+  std::memcpy(&a, p, 8);
+  std::memcpy(&b, p + 8, 8);
+  const std::uint64_t all = 0x0101010101010101ULL * v;
+  return ((a ^ all) | (b ^ all)) == 0;
+}
+
 // Integer counts in four interleaved tables, so that runs of one level (most of a map) do not
-// wait on each other's increments; the sums are exact in doubles.
+// wait on each other's increments; a block of 16 opaque pixels of one level (most of a map, again)
+// is counted at once. The sums are exact in doubles.
 Histogram level_histogram(const cv::Mat& levels, const cv::Mat& transparent) {
   std::vector<std::array<std::uint32_t, 256>> counts(4, std::array<std::uint32_t, 256>{});
+  const bool opaque = cv::countNonZero(transparent) == 0;
   for (int r = 0; r < levels.rows; ++r) {
     const unsigned char* level = levels.ptr<unsigned char>(r);
     const unsigned char* clear = transparent.ptr<unsigned char>(r);
     const int n = levels.cols;
     int i = 0;
-    if (std::find_if(clear, clear + n, [](unsigned char t) { return t != 0; }) != clear + n) {
+    if (!opaque && std::find_if(clear, clear + n, [](unsigned char t) { return t != 0; }) != clear + n) {
       for (; i + 4 <= n; i += 4) {
         counts[0][level[i]] += clear[i] == 0;
         counts[1][level[i + 1]] += clear[i + 1] == 0;
@@ -38,11 +50,17 @@ Histogram level_histogram(const cv::Mat& levels, const cv::Mat& transparent) {
       for (; i < n; ++i) counts[0][level[i]] += clear[i] == 0;
       continue;
     }
-    for (; i + 4 <= n; i += 4) {
-      ++counts[0][level[i]];
-      ++counts[1][level[i + 1]];
-      ++counts[2][level[i + 2]];
-      ++counts[3][level[i + 3]];
+    for (; i + 16 <= n; i += 16) {
+      if (uniform16(level + i, level[i])) {
+        counts[0][level[i]] += 16;
+        continue;
+      }
+      for (int k = 0; k < 16; k += 4) {
+        ++counts[0][level[i + k]];
+        ++counts[1][level[i + k + 1]];
+        ++counts[2][level[i + k + 2]];
+        ++counts[3][level[i + k + 3]];
+      }
     }
     for (; i < n; ++i) ++counts[0][level[i]];
   }

@@ -1,6 +1,7 @@
 // evaluate(): every score of a segmentation against a ground truth, as `topocut evaluate` reports it.
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <string>
 
 #include <pybind11/numpy.h>
@@ -42,6 +43,7 @@ cv::Mat int_image(const py::array& a, const std::string& name) {
 
 cv::Mat labels_from(const py::object& labels) {
   if (py::isinstance<py::str>(labels)) return read_region_labels(labels.cast<std::string>());
+  if (std::optional<cv::Mat> own = segment_labels_top_down(labels)) return *own;  // segment()'s: its row order known
   return int_image(py::array::ensure(labels), "labels");
 }
 
@@ -152,9 +154,11 @@ void bind_evaluation(py::module_& m) {
         "clear the labels off the non-free pixels first, for every score, as `topocut evaluate --labels`\n"
         "does with another tool's images; False scores them as given, as `topocut evaluate` scores its\n"
         "own segmentation (whose rooms also cover the small obstacles they absorb) for recall and\n"
-        "precision. resolution: metres per pixel, for the far share. All images share one shape\n"
-        "and row order (image files: row 0 on top; segment() returns a ROS grid's rows bottom-up, so\n"
-        "flip those with numpy.flipud). Raises ValueError on bad input. The GIL is released while scoring.");
+        "precision. resolution: metres per pixel, for the far share. All images share one shape and\n"
+        "are read with row 0 on top, as image files hold them, except a Segmentation or its labels array\n"
+        "exactly as segment() returned it: that knows its row order (a ROS grid's is bottom-up) and is\n"
+        "turned top-down here (a copy, slice or flip of it is an ordinary array). Raises ValueError on bad\n"
+        "input. The GIL is released while scoring.");
 }
 
 }  // namespace topocut::python

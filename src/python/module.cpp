@@ -4,6 +4,7 @@
 
 #include "python/bindings.h"
 #include "topocut/core/error.h"
+#include "topocut/core/version.h"
 
 namespace {
 

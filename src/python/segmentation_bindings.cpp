@@ -130,10 +130,15 @@ py::object room_at_py(const Result& r, double x, double y) {
 
 // The label image as a read-only numpy view of the result's own buffer (no copy); the array keeps
 // the result alive.
+// The capsule's name marks the views segment_labels_top_down() recognises.
+const char* const kLabelsCapsule = "topocut.labels";
+
 py::array labels_view(const Shared& result) {
   const cv::Mat& labels = result->segmentation.labels;
   auto* owner = new Shared(result);
-  py::capsule base(owner, [](void* p) { delete static_cast<Shared*>(p); });
+  py::capsule base(owner, kLabelsCapsule, [](PyObject* capsule) {
+    delete static_cast<Shared*>(PyCapsule_GetPointer(capsule, kLabelsCapsule));
+  });
   py::array_t<std::int32_t> view({static_cast<py::ssize_t>(labels.rows), static_cast<py::ssize_t>(labels.cols)},
                                  {static_cast<py::ssize_t>(labels.step[0]), static_cast<py::ssize_t>(sizeof(std::int32_t))},
                                  labels.ptr<std::int32_t>(), base);
@@ -169,6 +174,26 @@ Result segment_py(const py::array& grid, double resolution, const py::object& or
   return {out};
 }
 
+// The entries of the file as segment() keywords, each checked by its row (and the whole by
+// to_segment_options, as segment() will), in the file's order.
+py::dict load_options_py(const std::string& path) {
+  const std::vector<OptionFileEntry> entries = read_option_file(path);
+  SegmentSettings settings;
+  apply_option_file(entries, segment_option_rows(), settings, "a segmentation option");
+  to_segment_options(settings);
+  py::dict out;
+  for (const OptionFileEntry& entry : entries) {
+    const OptionRow<SegmentSettings>& row = *find_option(segment_option_rows(), entry.name);
+    const std::string keyword = underscored_option_name(entry.name);
+    if (row.is_switch()) {
+      out[keyword.c_str()] = entry.switch_value();
+    } else {
+      out[keyword.c_str()] = entry.number_value();
+    }
+  }
+  return out;
+}
+
 Map load_map_py(const std::string& path, const py::object& resolution, py::kwargs kwargs) {
   if (!resolution.is_none()) kwargs["resolution"] = resolution;  // positional, as before keywords
   const MapLoadOptions load = map_load_options(kwargs);
@@ -189,6 +214,12 @@ Map load_map_py(const std::string& path, const py::object& resolution, py::kwarg
   map.resolution = grid.resolution;
   map.origin = py::make_tuple(grid.origin.x, grid.origin.y, 0.0);
   map.cells = cells;
+  // An image holds no scale: say so, as the segment command's summary does.
+  if (!is_yaml_path(path) && !kwargs.contains("resolution")) {
+    const std::string note = path + ": an image holds no scale: its cells were taken as " + shortest_number(grid.resolution) +
+                             " m (the default); pass resolution=M, or load the map_server YAML beside it";
+    if (PyErr_WarnEx(PyExc_UserWarning, note.c_str(), 1) != 0) throw py::error_already_set();
+  }
   return map;
 }
 
@@ -266,7 +297,8 @@ class PyIncremental {
 
 void bind_results(py::module_& m) {
   py::class_<RoomView>(m, "Room", "A room: id (its label), polygon in the map frame (metres), area, centroid, a point inside, bounding box.")
-      .def_property_readonly("id", [](const RoomView& r) { return r.room.id; })
+      .def_property_readonly("id", [](const RoomView& r) { return r.room.id; },
+                             "the room's id: its value in the Segmentation's labels (1..N; 0 there is no room)")
       .def_property_readonly("area", [](const RoomView& r) { return r.room.area; }, "m², of the polygon (outer minus holes), as every output's area")
       .def_property_readonly("labelled_area", [](const RoomView& r) { return r.room.labelled_area; },
                              "m², of the room's labelled cells (count of labels == id times the cell area)")
@@ -301,7 +333,8 @@ void bind_results(py::module_& m) {
       .def(py::pickle(&passage_state, [](const py::tuple& t) { return passage_from(t); }));
   py::class_<Result>(m, "Segmentation", "The rooms of a grid: labels, rooms, passages.")
       .def_property_readonly("labels", [](const Result& r) { return labels_view(r.result); },
-                             "int32 array, the grid's shape and row order: 0 no room, else the room id (read-only view, no copy)")
+                             "int32 array, the grid's shape and row order: 0 no room, else the room id (read-only view, no copy);\n"
+                             "evaluate() takes it as it is (it knows this row order)")
       .def_property_readonly("rooms", [](const Result& r) { return rooms_of(r.result); }, "list of Room, by id")
       .def_property_readonly("passages", [](const Result& r) { return r.result->segmentation.passages; }, "list of Passage")
       .def_property_readonly("resolution", [](const Result& r) { return r.result->segmentation.resolution; })
@@ -317,8 +350,10 @@ void bind_results(py::module_& m) {
            "rooms as Polygons (RFC 7946 ring order, closed rings), passages as LineStrings.")
       .def(py::pickle(&result_state, [](const py::tuple& t) { return result_from(t); }));
   py::class_<Map>(m, "Map", "A loaded map: grid (int8, -1 unknown / 0 free / 100 occupied, row 0 at the origin as in ROS), resolution, origin.")
-      .def_readonly("grid", &Map::grid)
-      .def_readonly("resolution", &Map::resolution)
+      .def_readonly("grid", &Map::grid,
+                    "int8 array (height, width): -1 unknown, 0 free, 100 occupied; row 0 is the row at the origin\n"
+                    "(the bottom of the image, as nav_msgs/OccupancyGrid): segment() takes it as it is")
+      .def_readonly("resolution", &Map::resolution, "metres per cell")
       .def_readonly("origin", &Map::origin, "(x, y, yaw) of the lower-left corner")
       .def_readonly("cells", &Map::cells, "how the file's values were read (palette or thresholds)")
       .def(py::pickle([](const Map& map) { return py::make_tuple(map.grid, map.resolution, map.origin, map.cells); },
@@ -330,6 +365,27 @@ void bind_results(py::module_& m) {
 }
 
 }  // namespace
+
+std::optional<cv::Mat> segment_labels_top_down(const py::handle& labels) {
+  if (py::isinstance<Result>(labels)) return segment_labels_top_down(labels.attr("labels"));
+  if (!py::isinstance<py::array>(labels)) return std::nullopt;
+  const auto array = py::reinterpret_borrow<py::array>(labels);
+  const py::object base = array.base();
+  if (base.is_none() || !PyCapsule_IsValid(base.ptr(), kLabelsCapsule)) return std::nullopt;
+  const Shared& result = *static_cast<Shared*>(PyCapsule_GetPointer(base.ptr(), kLabelsCapsule));
+  const cv::Mat& own = result->segmentation.labels;
+  // A view of the view (a flip, a slice) has the same base: only the array as returned qualifies.
+  if (array.data() != own.data || array.ndim() != 2 || array.shape(0) != own.rows || array.shape(1) != own.cols ||
+      array.strides(0) != static_cast<py::ssize_t>(own.step[0]) || array.strides(1) != static_cast<py::ssize_t>(sizeof(std::int32_t)))
+    return std::nullopt;
+  cv::Mat top_down;
+  if (result->frame.row_order == RowOrder::kBottomUp) {
+    cv::flip(own, top_down, 0);
+  } else {
+    top_down = own.clone();
+  }
+  return top_down;
+}
 
 void bind_segmentation(py::module_& m) {
   bind_results(m);
@@ -344,11 +400,18 @@ void bind_segmentation(py::module_& m) {
          segment_option_names() +
          ".\nReturns a Segmentation (labels in the grid's row order, rooms and passages in the map frame).\n"
          "Raises ValueError on bad input. The GIL is released while segmenting.").c_str());
+  m.def("load_options", &load_options_py, py::arg("path"),
+        "The segmentation options of a robot's YAML file, read as `topocut segment --config FILE` reads them\n"
+        "(the same keys, '_' or '-', the same checks and messages): a dict of segment()'s keywords, so\n"
+        "topocut.segment(grid, resolution, origin, **topocut.load_options('robot.yaml')). Raises\n"
+        "FileNotFoundError for a missing file, ValueError naming the file and key on bad YAML, a key that is no\n"
+        "segmentation option (with the name meant) or a bad value.");
   m.def("load_map", &load_map_py, py::arg("path"), py::arg("resolution") = py::none(),
         ("Loads a ROS map_server YAML or an image as the topocut command does; returns a Map whose int8 grid\n"
          "(ROS encoding and row order) segment() takes as it is. Keywords: the command's map-loading options\n"
          "with '_' for '-' (" + map_load_option_names() + "), checked as there; giving a threshold means\n"
-         "fixed thresholds. Raises ValueError on a bad file or option.").c_str());
+         "fixed thresholds. An image without resolution= warns (UserWarning) that 0.05 m was assumed.\n"
+         "Raises ValueError on a bad file or option.").c_str());
   py::class_<PyIncremental>(m, "IncrementalSegmenter",
                             "Segments a growing map update by update, reusing the rooms a change did not reach (ids stay).\n"
                             "Keywords: segment()'s options and absorb_area, absorb_fraction, batch_fraction, neighbours_across_doors,\n"

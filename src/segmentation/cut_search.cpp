@@ -77,7 +77,8 @@ namespace {
 // across, on another ring, both joinable: such a cut separates nothing alone, only with the cuts
 // on the island's other sides).
 std::optional<Candidate> nearest_across_corner(const DoorSearch& search, const EdgeGrid& grid, int r, int i,
-                                               const Point2& p, const Point2& v, const Point2& q, bool across) {
+                                               const Point2& p, const Point2& v, const Point2& q, bool across,
+                                               std::vector<unsigned>& seen, unsigned stamp) {
   // Directions that resolve the corner: between the continuations of its two edges.
   const Point2 e1 = minus(v, p), e2 = minus(v, q);
   const double l1 = length(e1), l2 = length(e2);
@@ -87,18 +88,36 @@ std::optional<Candidate> nearest_across_corner(const DoorSearch& search, const E
     const double tolerance = 1e-9 * (std::abs(d.x) + std::abs(d.y));
     return cross(u1, d) >= -tolerance && cross(d, u2) >= -tolerance;
   };
+  // Whether no point of the box [x0, x1] x [y0, y1] passes in_cone(): all four corners beyond one side
+  // of the cone by more than the tolerance any point of the box is given (it is linear over the box).
+  auto box_outside_cone = [&](double x0, double y0, double x1, double y1) {
+    double side1 = -kInfinity, side2 = -kInfinity, reach = 0.0;
+    for (const Point2& c : {Point2{x0, y0}, Point2{x1, y0}, Point2{x0, y1}, Point2{x1, y1}}) {
+      const Point2 d = minus(c, v);
+      side1 = std::max(side1, cross(u1, d));
+      side2 = std::max(side2, cross(d, u2));
+      reach = std::max(reach, std::abs(d.x) + std::abs(d.y));
+    }
+    const double margin = 2e-9 * reach + 1e-12;
+    return side1 < -margin || side2 < -margin;
+  };
   const int n = static_cast<int>(search.rings[static_cast<std::size_t>(r)]->size());
   const int before = (i + n - 1) % n;
   double best2 = search.reach * search.reach;  // squared distance of the nearest point so far
   Point2 best_point;
   int best_ring = -1;
   grid.visit_nearest(v, search.reach, [&](int id) {
+    // An edge in several cells is met again: its points cannot beat the best so far a second time.
+    if (seen[static_cast<std::size_t>(id)] == stamp) return;
+    seen[static_cast<std::size_t>(id)] = stamp;
     const Edge& e = search.edges[static_cast<std::size_t>(id)];
     if (e.ring == r && (e.index == i || e.index == before)) return;
-    // No point of the edge can beat the best so far if its bounding box is farther.
+    // No point of the edge can beat the best so far if its bounding box is farther, or lie in the
+    // cone if its box lies outside.
     const double gx = std::max({std::min(e.a.x, e.b.x) - v.x, 0.0, v.x - std::max(e.a.x, e.b.x)});
     const double gy = std::max({std::min(e.a.y, e.b.y) - v.y, 0.0, v.y - std::max(e.a.y, e.b.y)});
     if (gx * gx + gy * gy >= best2) return;
+    if (box_outside_cone(std::min(e.a.x, e.b.x), std::min(e.a.y, e.b.y), std::max(e.a.x, e.b.x), std::max(e.a.y, e.b.y))) return;
     auto consider = [&](const Point2& x) {
       const Point2 d = minus(x, v);
       const double d2 = dot(d, d);
@@ -136,13 +155,15 @@ std::optional<Candidate> nearest_across_corner(const DoorSearch& search, const E
 // to another joinable one.
 std::vector<Candidate> corner_cuts(const DoorSearch& search, const EdgeGrid& grid, bool across) {
   std::vector<Candidate> candidates;
+  std::vector<unsigned> seen(search.edges.size(), 0);  // per edge: the last corner that looked at it
+  unsigned stamp = 0;
   for_each_reflex_corner(
       search,
       [&](std::size_t r, const Ring& hole) {
         return too_small_for_a_room(hole, search.resolution) || (across && !search.joinable[r]);
       },
       [&](int r, int i, const Point2& p, const Point2& v, const Point2& q) {
-        if (auto c = nearest_across_corner(search, grid, r, i, p, v, q, across)) candidates.push_back(*c);
+        if (auto c = nearest_across_corner(search, grid, r, i, p, v, q, across, seen, ++stamp)) candidates.push_back(*c);
       });
   return candidates;
 }
@@ -158,7 +179,8 @@ bool has_wide_sides(const DoorSearch& search, const EdgeGrid& grid, const Candid
 }
 
 // Narrowest first; a door found from both of its jambs (or from two corners of one wall end) is
-// kept once; crossing cuts are not allowed.
+// kept once; crossing cuts are not allowed. Each candidate is tested against the accepted cuts near
+// it only (a grid of their boxes), not against all of them.
 std::vector<Candidate> narrowest_compatible(std::vector<Candidate> doors, double resolution) {
   std::sort(doors.begin(), doors.end(), [](const Candidate& x, const Candidate& y) {
     return std::tie(x.width, x.segment.a.x, x.segment.a.y, x.segment.b.x, x.segment.b.y) <
@@ -166,18 +188,17 @@ std::vector<Candidate> narrowest_compatible(std::vector<Candidate> doors, double
   });
   const double duplicate = 0.3 / resolution;
   std::vector<Candidate> accepted;
+  CutGrid near(duplicate);
   for (const Candidate& c : doors) {
-    bool ok = true;
-    for (const Candidate& taken : accepted) {
-      const Segment2& s = taken.segment;
-      if (segments_conflict(c.segment, s) ||
-          (distance_to_segment(c.segment.a, s) < duplicate && distance_to_segment(c.segment.b, s) < duplicate) ||
-          (distance_to_segment(s.a, c.segment) < duplicate && distance_to_segment(s.b, c.segment) < duplicate)) {
-        ok = false;
-        break;
-      }
-    }
-    if (ok) accepted.push_back(c);
+    const bool conflict = near.any_near(c.segment, [&](int i) {
+      const Segment2& s = accepted[static_cast<std::size_t>(i)].segment;
+      return segments_conflict(c.segment, s) ||
+             (distance_to_segment(c.segment.a, s) < duplicate && distance_to_segment(c.segment.b, s) < duplicate) ||
+             (distance_to_segment(s.a, c.segment) < duplicate && distance_to_segment(s.b, c.segment) < duplicate);
+    });
+    if (conflict) continue;
+    accepted.push_back(c);
+    near.add(c.segment);
   }
   return accepted;
 }

@@ -5,8 +5,10 @@
 // wall_lines.cpp each build one rule's candidates on it.
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <optional>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -218,8 +220,62 @@ std::vector<Candidate> corner_cuts(const DoorSearch& search, const EdgeGrid& gri
 // Door test: both sides much wider than the passage.
 bool has_wide_sides(const DoorSearch& search, const EdgeGrid& grid, const Candidate& c);
 
+// Cuts in a uniform grid, each in the cells its box grown by margin covers: a cut that crosses a
+// segment, or lies within margin of it at an end (or has an end within margin of it), is registered in
+// a cell that the segment's own box covers. Lets a choice of cuts test a candidate against the cuts
+// near it only, not against all of them.
+class CutGrid {
+ public:
+  explicit CutGrid(double margin) : margin_(margin), cell_(std::max(8.0, 4.0 * margin)) {}
+
+  // Registers s under the next index (0, 1, ...).
+  void add(const Segment2& s) {
+    const int index = static_cast<int>(seen_.size());
+    seen_.push_back(0);
+    // A margin beyond margin keeps rounding at a cell's edge on the safe side.
+    for_cells(s, margin_ * 1.001 + 1e-9, [&](std::int64_t key) { cells_[key].push_back(index); });
+  }
+
+  // Calls f(index) once for every registered cut in a cell that s's box covers, until f returns
+  // true; whether it did.
+  template <typename F>
+  bool any_near(const Segment2& s, F&& f) {
+    ++stamp_;
+    bool found = false;
+    for_cells(s, 0.0, [&](std::int64_t key) {
+      const auto cell = cells_.find(key);
+      if (found || cell == cells_.end()) return;
+      for (const int i : cell->second) {
+        if (seen_[static_cast<std::size_t>(i)] == stamp_) continue;
+        seen_[static_cast<std::size_t>(i)] = stamp_;
+        if (f(i)) {
+          found = true;
+          return;
+        }
+      }
+    });
+    return found;
+  }
+
+ private:
+  template <typename F>
+  void for_cells(const Segment2& s, double grow, F&& f) const {
+    const long long x0 = cell_of(std::min(s.a.x, s.b.x) - grow), x1 = cell_of(std::max(s.a.x, s.b.x) + grow);
+    const long long y0 = cell_of(std::min(s.a.y, s.b.y) - grow), y1 = cell_of(std::max(s.a.y, s.b.y) + grow);
+    for (long long y = y0; y <= y1; ++y)
+      for (long long x = x0; x <= x1; ++x) f(static_cast<std::int64_t>((x << 32) ^ (y & 0xffffffffLL)));
+  }
+  long long cell_of(double v) const { return static_cast<long long>(std::floor(v / cell_)); }
+
+  double margin_, cell_;
+  std::unordered_map<std::int64_t, std::vector<int>> cells_;
+  std::vector<unsigned> seen_;  // per cut: the last query that met it
+  unsigned stamp_ = 0;
+};
+
 // Narrowest first; a door found from both of its jambs (or from two corners of one wall end) is
-// kept once; crossing cuts are not allowed.
+// kept once; crossing cuts are not allowed. Each candidate is tested against the accepted cuts near
+// it (CutGrid), not against all of them.
 std::vector<Candidate> narrowest_compatible(std::vector<Candidate> doors, double resolution);
 
 // The segments of candidates, in order.

@@ -22,27 +22,30 @@ std::vector<cv::Point> deepest_cells(const cv::Mat& labels, int max_id) {
   const cv::Rect box = cv::Rect(labelled.x - 1, labelled.y - 1, labelled.width + 2, labelled.height + 2) &
                        cv::Rect(0, 0, labels.cols, labels.rows);
   cv::Mat interior(box.size(), CV_8UC1, cv::Scalar(0));
-  for (int r = box.y; r < box.y + box.height; ++r)
-    for (int c = box.x; c < box.x + box.width; ++c) {
-      const int id = labels.at<int>(r, c);
-      const bool same = id > 0 && r > 0 && c > 0 && r + 1 < labels.rows && c + 1 < labels.cols &&
-                        labels.at<int>(r - 1, c) == id && labels.at<int>(r + 1, c) == id && labels.at<int>(r, c - 1) == id &&
-                        labels.at<int>(r, c + 1) == id;
-      interior.at<unsigned char>(r - box.y, c - box.x) = same ? 255 : 0;
+  // Cells on the map's edge are never interior; the others compare with their four neighbours.
+  for (int r = std::max(box.y, 1); r < std::min(box.y + box.height, labels.rows - 1); ++r) {
+    const int* up = labels.ptr<int>(r - 1);
+    const int* row = labels.ptr<int>(r);
+    const int* down = labels.ptr<int>(r + 1);
+    unsigned char* out = interior.ptr<unsigned char>(r - box.y) - box.x;
+    for (int c = std::max(box.x, 1); c < std::min(box.x + box.width, labels.cols - 1); ++c) {
+      const int id = row[c];
+      out[c] = id > 0 && up[c] == id && down[c] == id && row[c - 1] == id && row[c + 1] == id ? 255 : 0;
     }
+  }
   cv::Mat depth;
   cv::distanceTransform(interior, depth, cv::DIST_L2, cv::DIST_MASK_PRECISE);
   std::vector<float> best_depth(best.size(), -1.0f);
-  for (int r = box.y; r < box.y + box.height; ++r)
+  for (int r = box.y; r < box.y + box.height; ++r) {
+    const int* row = labels.ptr<int>(r);
+    const float* d = depth.ptr<float>(r - box.y) - box.x;
     for (int c = box.x; c < box.x + box.width; ++c) {
-      const int id = labels.at<int>(r, c);
-      if (id <= 0 || id > max_id) continue;
-      const float d = depth.at<float>(r - box.y, c - box.x);
-      if (d > best_depth[static_cast<std::size_t>(id)]) {
-        best_depth[static_cast<std::size_t>(id)] = d;
-        best[static_cast<std::size_t>(id)] = {c, r};
-      }
+      const int id = row[c];
+      if (id <= 0 || id > max_id || !(d[c] > best_depth[static_cast<std::size_t>(id)])) continue;
+      best_depth[static_cast<std::size_t>(id)] = d[c];
+      best[static_cast<std::size_t>(id)] = {c, r};
     }
+  }
   return best;
 }
 

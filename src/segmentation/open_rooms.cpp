@@ -2,10 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <numeric>
 
 #include "topocut/core/error.h"
-#include "topocut/map/rasterize.h"
+#include "topocut/map/label_runs.h"
 #include "topocut/map/room_outline.h"
 #include "topocut/segmentation/room_merging.h"
 
@@ -19,6 +20,15 @@ void validate(const OpenRoomOptions& options) {
 }
 
 namespace {
+
+// Whether any cell is occupied; stops at the first one.
+bool has_occupied_cell(const cv::Mat& cells) {
+  for (int r = 0; r < cells.rows; ++r) {
+    const unsigned char* row = cells.ptr<unsigned char>(r);
+    if (std::memchr(row, kOccupied, static_cast<std::size_t>(cells.cols)) != nullptr) return true;
+  }
+  return false;
+}
 
 int root(std::vector<int>& parent, int i) {
   while (parent[static_cast<std::size_t>(i)] != i) i = parent[static_cast<std::size_t>(i)] = parent[static_cast<std::size_t>(parent[static_cast<std::size_t>(i)])];
@@ -54,8 +64,8 @@ PieceSet joined(const PieceSet& rooms, std::vector<int>& parent, const std::vect
 
 PieceSet join_open_rooms(const PieceSet& rooms, const OccupancyGrid& grid, const OpenRoomOptions& options) {
   validate(options);
-  if (!options.enabled || rooms.pieces.empty() || cv::countNonZero(grid.cells == kOccupied) == 0) return rooms;
-  const cv::Mat ids = rasterize_polygons(rooms.pieces, grid.cells.size());
+  if (!options.enabled || rooms.pieces.empty() || !has_occupied_cell(grid.cells)) return rooms;
+  const LabelRuns ids = polygon_label_runs(rooms.pieces, grid.cells.size());
   const cv::Mat walls = wall_cells(grid.cells, options.wall_reach / grid.resolution + 1e-9);
   const double cell_area = grid.resolution * grid.resolution;
   std::vector<int> parent(rooms.pieces.size());

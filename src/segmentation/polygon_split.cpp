@@ -188,11 +188,54 @@ void trace_faces(const HalfEdgeGraph& g, const std::vector<std::vector<int>>& cy
   }
 }
 
+// The parts' outer rings by their boxes in a uniform grid (about one cell a part): the parts whose
+// box holds a point, in the order of the parts, without looking at every part.
+class PartBoxes {
+ public:
+  explicit PartBoxes(const std::vector<PolygonWithHoles>& parts) {
+    for (const PolygonWithHoles& part : parts) boxes_.push_back(bounding_box(part.outer));
+    if (boxes_.empty()) return;
+    all_ = boxes_.front();
+    for (const Box& b : boxes_) all_ = {std::min(all_.x0, b.x0), std::min(all_.y0, b.y0), std::max(all_.x1, b.x1), std::max(all_.y1, b.y1)};
+    side_ = std::max(1, static_cast<int>(std::ceil(std::sqrt(static_cast<double>(boxes_.size())))));
+    cell_w_ = std::max((all_.x1 - all_.x0) / side_, 1e-9);
+    cell_h_ = std::max((all_.y1 - all_.y0) / side_, 1e-9);
+    cells_.resize(static_cast<std::size_t>(side_) * side_);
+    for (std::size_t i = 0; i < boxes_.size(); ++i)
+      for (int y = row(boxes_[i].y0); y <= row(boxes_[i].y1); ++y)
+        for (int x = column(boxes_[i].x0); x <= column(boxes_[i].x1); ++x)
+          cells_[static_cast<std::size_t>(y) * side_ + x].push_back(static_cast<int>(i));
+  }
+
+  // The parts whose box holds p, in ascending order.
+  std::vector<int> holding(const Point2& p) const {
+    std::vector<int> out;
+    if (boxes_.empty() || p.x < all_.x0 || p.x > all_.x1 || p.y < all_.y0 || p.y > all_.y1) return out;
+    for (const int i : cells_[static_cast<std::size_t>(row(p.y)) * side_ + column(p.x)]) {
+      const Box& b = boxes_[static_cast<std::size_t>(i)];
+      if (p.x >= b.x0 && p.x <= b.x1 && p.y >= b.y0 && p.y <= b.y1) out.push_back(i);
+    }
+    return out;
+  }
+
+ private:
+  int column(double x) const { return std::clamp(static_cast<int>(std::floor((x - all_.x0) / cell_w_)), 0, side_ - 1); }
+  int row(double y) const { return std::clamp(static_cast<int>(std::floor((y - all_.y0) / cell_h_)), 0, side_ - 1); }
+
+  std::vector<Box> boxes_;
+  Box all_{};
+  int side_ = 1;
+  double cell_w_ = 1.0, cell_h_ = 1.0;
+  std::vector<std::vector<int>> cells_;
+};
+
 // Every hole goes to the smallest part whose outer ring contains a point just left of the hole's
-// first edge: the part that owns it, even when parts nest.
+// first edge: the part that owns it, even when parts nest. Only the parts whose box holds the point
+// can contain it.
 std::vector<PolygonWithHoles> parts_with_holes(std::vector<Ring>& outers, std::vector<Ring>& holes) {
   std::vector<PolygonWithHoles> parts;
   for (Ring& outer : outers) parts.push_back({std::move(outer), {}});
+  const PartBoxes boxes(parts);
   for (Ring& hole : holes) {
     const Point2 d = minus(hole[1], hole[0]);
     const double l = length(d);
@@ -200,7 +243,8 @@ std::vector<PolygonWithHoles> parts_with_holes(std::vector<Ring>& outers, std::v
     const Point2 p{(hole[0].x + hole[1].x) / 2.0 - d.y / l * e, (hole[0].y + hole[1].y) / 2.0 + d.x / l * e};
     int owner = -1;
     double owner_area = kInfinity;
-    for (std::size_t i = 0; i < parts.size(); ++i) {
+    for (const int k : boxes.holding(p)) {
+      const std::size_t i = static_cast<std::size_t>(k);
       if (!in_ring(parts[i].outer, p)) continue;
       const double a = signed_area(parts[i].outer);
       if (a < owner_area) {

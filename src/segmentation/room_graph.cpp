@@ -177,6 +177,7 @@ void RoomGraph::find_sides() {
     for (const Ring& hole : set_.pieces[i].holes) add_ring(hole);
   }
   sides_.resize(set_.cuts.size());
+  piece_sides_.resize(set_.pieces.size());
   for (std::size_t k = 0; k < set_.cuts.size(); ++k) {
     const Segment2& c = set_.cuts[k];
     const auto left = owner.find(edge_key(c.a, c.b));
@@ -184,6 +185,8 @@ void RoomGraph::find_sides() {
     if (left == owner.end() || right == owner.end() || left->second == right->second) continue;
     const CutRule rule = k < set_.rules.size() ? set_.rules[k] : CutRule::kDecomposition;
     sides_[k] = {left->second, right->second, distance(c.a, c.b) * resolution_, rule};
+    piece_sides_[static_cast<std::size_t>(left->second)].push_back(k);
+    piece_sides_[static_cast<std::size_t>(right->second)].push_back(k);
   }
 }
 
@@ -252,11 +255,24 @@ double RoomGraph::room_area(int r) {
   return it != area_sum_.end() ? it->second : areas_[static_cast<std::size_t>(r)];
 }
 
+std::vector<std::size_t> RoomGraph::room_sides(int r) const {
+  std::vector<std::size_t> sides;
+  for (const int member : members(r)) {
+    const std::vector<std::size_t>& own = piece_sides_[static_cast<std::size_t>(member)];
+    sides.insert(sides.end(), own.begin(), own.end());
+  }
+  // Ascending, so that sums over them add in the order of the cuts, as they always did.
+  std::sort(sides.begin(), sides.end());
+  sides.erase(std::unique(sides.begin(), sides.end()), sides.end());
+  return sides;
+}
+
 double RoomGraph::room_perimeter(int r) {
   double length = 0.0;
   for (const int member : members(r)) length += perimeters_[static_cast<std::size_t>(member)];
-  for (const Side& s : sides_) {
-    if (s.left >= 0 && root(s.left) == r && root(s.right) == r) length -= 2.0 * s.length;
+  for (const std::size_t k : room_sides(r)) {
+    const Side& s = sides_[k];
+    if (root(s.left) == r && root(s.right) == r) length -= 2.0 * s.length;
   }
   return length;
 }
@@ -305,8 +321,8 @@ double RoomGraph::elongation(const std::vector<int>& rooms) {
 
 double RoomGraph::shared_cut_length(int r, int s) {
   double length = 0.0;
-  for (const Side& side : sides_) {
-    if (side.left < 0) continue;
+  for (const std::size_t k : room_sides(r)) {
+    const Side& side = sides_[k];
     const int a = root(side.left), b = root(side.right);
     if (a == b) continue;
     if ((a == r && (s < 0 || b == s)) || (b == r && (s < 0 || a == s))) length += side.length;

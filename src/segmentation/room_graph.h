@@ -55,6 +55,9 @@ class RoomGraph {
   double elongation(const std::vector<int>& rooms);
   // Length of the cuts between rooms r and s (m); s < 0: between r and every other room.
   double shared_cut_length(int r, int s);
+  // The cuts with a piece of room r on a side, ascending, each once: what a measure of r reads
+  // instead of every cut of the component (which made merging quadratic in the cuts).
+  std::vector<std::size_t> room_sides(int r) const;
 
   // Width of room r beside cut k (m): the longest chord parallel to the cut within depth metres on
   // r's side (left: the cut's left).
@@ -84,6 +87,7 @@ class RoomGraph {
   };
   std::vector<Moments> moments_;    // per piece
   std::vector<Side> sides_;
+  std::vector<std::vector<std::size_t>> piece_sides_;  // piece -> the cuts it lies beside, ascending
   std::map<int, double> area_sum_;  // room root -> area (m², rooms of 2+ pieces)
   // Room root -> the convex hull of its pieces (cells), kept through merges: a room's hull is the hull
   // of its parts' hulls, so growing a long corridor does not take the hull of all its vertices again.

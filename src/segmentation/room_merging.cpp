@@ -25,10 +25,7 @@ Key edge_key(const Point2& a, const Point2& b) { return {a.x, a.y, b.x, b.y}; }
 
 // Marks every cut next to room r as to be measured again (r grew).
 void invalidate_around(RoomGraph& g, int r, std::vector<bool>& fresh) {
-  for (std::size_t k = 0; k < g.sides().size(); ++k) {
-    const RoomGraph::Side& s = g.sides()[k];
-    if (s.left >= 0 && (g.root(s.left) == r || g.root(s.right) == r)) fresh[k] = false;
-  }
+  for (const std::size_t k : g.room_sides(r)) fresh[k] = false;
 }
 
 // The hand rules (RoomMergeOptions::learned false): a cut that spans the narrower side is no door.

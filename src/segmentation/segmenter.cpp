@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <optional>
 #include <string>
 
@@ -14,6 +15,7 @@
 #include "topocut/decomposition/ring_intersections.h"
 #include "topocut/map/simplify.h"
 #include "topocut/segmentation/polygon_split.h"
+#include "topocut/segmentation/segment_times.h"
 #include "topocut/segmentation/segmentation_rules.h"
 
 namespace topocut {
@@ -42,7 +44,7 @@ namespace {
 bool has_free_cell(const cv::Mat& cells) {
   for (int r = 0; r < cells.rows; ++r) {
     const unsigned char* row = cells.ptr<unsigned char>(r);
-    if (std::find(row, row + cells.cols, kFree) != row + cells.cols) return true;
+    if (std::memchr(row, kFree, static_cast<std::size_t>(cells.cols)) != nullptr) return true;
   }
   return false;
 }
@@ -145,12 +147,15 @@ namespace {
 
 // The cut rules (segmentation_rules()) in order, each clear of the earlier ones' cuts, then each part
 // of the polygon decomposed on its own. With fallible false, the rules that may fail are left out.
-PieceSet decompose_polygon(const PolygonWithHoles& polygon, double resolution, const SegmentOptions& options, bool fallible) {
+PieceSet decompose_polygon(const PolygonWithHoles& polygon, double resolution, const SegmentOptions& options, bool fallible,
+                           SegmentTimes* times) {
+  StageTimer timer(times, SegmentStage::kCuts);
   PieceSet set;
   for (const SegmentationRule& rule : segmentation_rules()) {
     if (!rule.find_cuts || !rule.is_on(options) || (rule.may_fail && !fallible)) continue;
     for (const Segment2& cut : rule.find_cuts(polygon, resolution, options.doors, set.cuts)) set.add_cut(cut, rule.cut_rule);
   }
+  timer.next(SegmentStage::kDecomposition);
   const std::vector<PolygonWithHoles> parts = split_polygon(polygon, set.cuts);
   DecompositionOptions decomposition = options.decomposition;
   decomposition.tau = options.concavity * (options.merge.enabled ? options.oversegment : 1.0) / resolution;
@@ -179,7 +184,8 @@ PolygonWithHoles simplified_where_valid(const PolygonWithHoles& exact, double to
   return exact;
 }
 
-PieceSet decompose_pieces(const FreeSpaceComponent& component, double resolution, const SegmentOptions& options) {
+PieceSet decompose_pieces(const FreeSpaceComponent& component, double resolution, const SegmentOptions& options,
+                          SegmentTimes* times) {
   if (!options.decompose) {
     PieceSet set;
     set.pieces.push_back(component.polygon);
@@ -193,20 +199,25 @@ PieceSet decompose_pieces(const FreeSpaceComponent& component, double resolution
   auto attempt = [&](const PolygonWithHoles& polygon, bool last) -> std::optional<PieceSet> {
     if (fallible_on) {
       try {
-        return decompose_polygon(polygon, resolution, options, true);
+        return decompose_polygon(polygon, resolution, options, true, times);
       } catch (const Error&) {
       }
     }
-    if (last) return decompose_polygon(polygon, resolution, options, false);
+    if (last) return decompose_polygon(polygon, resolution, options, false, times);
     try {
-      return decompose_polygon(polygon, resolution, options, false);
+      return decompose_polygon(polygon, resolution, options, false, times);
     } catch (const Error&) {
       return std::nullopt;
     }
   };
   try {
     if (options.simplify > 0.0) {
-      if (std::optional<PieceSet> set = attempt(simplified_where_valid(component.polygon, options.simplify), false)) return *set;
+      std::optional<PolygonWithHoles> simplified;
+      {
+        const StageTimer timer(times, SegmentStage::kFrontEnd);
+        simplified = simplified_where_valid(component.polygon, options.simplify);
+      }
+      if (std::optional<PieceSet> set = attempt(*simplified, false)) return *set;
     }
     return *attempt(component.polygon, true);
   } catch (const Error& e) {
@@ -215,8 +226,11 @@ PieceSet decompose_pieces(const FreeSpaceComponent& component, double resolution
   }
 }
 
-PieceSet decompose_component(const FreeSpaceComponent& component, double resolution, const SegmentOptions& options) {
-  return merge_rooms(component, decompose_pieces(component, resolution, options), resolution, options.merge);
+PieceSet decompose_component(const FreeSpaceComponent& component, double resolution, const SegmentOptions& options,
+                             SegmentTimes* times) {
+  const PieceSet pieces = decompose_pieces(component, resolution, options, times);
+  const StageTimer timer(times, SegmentStage::kMerging);
+  return merge_rooms(component, pieces, resolution, options.merge);
 }
 
 SegmentOptions parity_segment_options(double concavity) {
@@ -254,12 +268,17 @@ OccupancyGrid labelled_only(const OccupancyGrid& grid, const cv::Mat& to_label) 
 
 }  // namespace
 
-Segmentation segment_input(const SegmentationInput& input, const SegmentOptions& options, const cv::Mat& to_label) {
+Segmentation segment_input(const SegmentationInput& input, const SegmentOptions& options, const cv::Mat& to_label,
+                           SegmentTimes* times) {
   const OccupancyGrid& grid = input.labelled;
-  const FreeSpacePolygons polygons = free_space_polygons(input.floor, grid.resolution, options.contours);
+  FreeSpacePolygons polygons;
+  {
+    const StageTimer timer(times, SegmentStage::kFrontEnd);
+    polygons = free_space_polygons(input.floor, grid.resolution, options.contours);
+  }
   PieceSet pieces;
   for (const FreeSpaceComponent& component : polygons.components)
-    pieces.append(decompose_component(component, grid.resolution, options));
+    pieces.append(decompose_component(component, grid.resolution, options, times));
   if (pieces.pieces.empty()) {  // a window whose floor holds no component: no room
     Segmentation none;
     none.labels = cv::Mat::zeros(grid.cells.size(), CV_32SC1);
@@ -267,19 +286,25 @@ Segmentation segment_input(const SegmentationInput& input, const SegmentOptions&
     none.origin = grid.origin;
     return none;
   }
+  StageTimer timer(times, SegmentStage::kOpenRooms);
   pieces = join_open_rooms(pieces, grid, options.open_rooms);
+  timer.next(SegmentStage::kLabelling);
   Segmentation segmentation = rooms_from_pieces(to_label.empty() ? grid : labelled_only(grid, to_label), pieces, options.labels);
+  timer.next(SegmentStage::kOutputs);
   for (Passage& passage : segmentation.passages) passage.door = is_door(passage, options.doors);
   return segmentation;
 }
 
 Segmentation segment_window(const OccupancyGrid& grid, const cv::Rect& window, const SegmentOptions& options,
-                            SegmentationInput* used) {
+                            SegmentationInput* used, SegmentTimes* times) {
   SegmentationInput local;
   SegmentationInput& input = used ? *used : local;
-  // The whole grid is not copied.
-  input = window.size() == grid.cells.size() ? segmentation_input(grid, options) : segmentation_input(crop(grid, window), options);
-  return segment_input(input, options);
+  {
+    const StageTimer timer(times, SegmentStage::kFrontEnd);
+    // The whole grid is not copied.
+    input = window.size() == grid.cells.size() ? segmentation_input(grid, options) : segmentation_input(crop(grid, window), options);
+  }
+  return segment_input(input, options, cv::Mat(), times);
 }
 
 namespace {
@@ -302,15 +327,21 @@ void place_input(SegmentationInput& input, const OccupancyGrid& grid, const cv::
 
 }  // namespace
 
-Segmentation segment(const OccupancyGrid& grid, const SegmentOptions& options, SegmentationInput* used) {
-  validate(options);
+Segmentation segment(const OccupancyGrid& grid, const SegmentOptions& options, SegmentationInput* used,
+                     SegmentTimes* times) {
   SegmentationInput local;
   SegmentationInput& input = used ? *used : local;
-  // SLAM maps are mostly unknown around the building (gmapping's default is 4000 x 4000 cells):
-  // the stages run on the known cells' box only (segmentation_box validates the grid).
-  const cv::Rect box = segmentation_box(grid, options);
-  Segmentation segmentation = segment_window(grid, box, options, &input);
+  cv::Rect box;
+  {
+    const StageTimer timer(times, SegmentStage::kFrontEnd);
+    validate(options);
+    // SLAM maps are mostly unknown around the building (gmapping's default is 4000 x 4000 cells):
+    // the stages run on the known cells' box only (segmentation_box validates the grid).
+    box = segmentation_box(grid, options);
+  }
+  Segmentation segmentation = segment_window(grid, box, options, &input, times);
   if (box.size() == grid.cells.size()) return segmentation;
+  const StageTimer timer(times, SegmentStage::kOutputs);
   segmentation.labels = placed(segmentation.labels, grid.cells.size(), box, 0);
   segmentation.origin = grid.origin;
   if (used) place_input(input, grid, box);

@@ -100,12 +100,16 @@ std::vector<Segment2> find_wall_line_cuts(const PolygonWithHoles& polygon, doubl
     // partition continued across a corridor) would enclose a strip no room is: the shorter stays.
     const double near = options.wall_line_spacing / resolution;
     std::vector<Segment2> out;
+    CutGrid taken(near);
     for (const Segment2& s : kept) {
-      const bool sliver = std::any_of(out.begin(), out.end(), [&](const Segment2& o) {
+      const bool sliver = taken.any_near(s, [&](int i) {
+        const Segment2& o = out[static_cast<std::size_t>(i)];
         return (distance_to_segment(s.a, o) < near && distance_to_segment(s.b, o) < near) ||
                (distance_to_segment(o.a, s) < near && distance_to_segment(o.b, s) < near);
       });
-      if (!sliver) out.push_back(s);
+      if (sliver) continue;
+      out.push_back(s);
+      taken.add(s);
     }
     return without_doors(std::move(out), doors);
   });

@@ -132,7 +132,7 @@ TEST(SegmentCli, BadMapFiles) {
   expect_error(run(dir, {dir.file("empty.png")}), "empty");
   ASSERT_TRUE(topocut::testing::write_test_image(dir.file("walls.png"), cv::Mat(20, 20, CV_8UC1, cv::Scalar(0))));
   expect_error(run(dir, {dir.file("walls.png")}), "no free space");
-  expect_error(run(dir, {}), "map", 2);
+  expect_error(run(dir, {}), "no MAP given: topocut segment MAP [options]", 2);
 }
 
 TEST(SegmentCli, BadYamlFiles) {

@@ -99,5 +99,47 @@ TEST(LoadMap, PaletteFromTheImageFindsFreeSpaceTheThresholdsMiss) {
   EXPECT_EQ(cv::countNonZero(load_map(dir.file("m.png"), fixed).cells == kFree), 0);
 }
 
+// A map of long runs (what the blocks of 16 equal cells are counted and written at once for), some
+// rows broken up and a few transparent patches.
+cv::Mat runs_map(cv::RNG& rng, int rows, int cols) {
+  cv::Mat map = slam_map(205, 0, 254);
+  cv::resize(map, map, cv::Size(cols, rows), 0, 0, cv::INTER_NEAREST);
+  for (int k = 0; k < rows; ++k) map.at<unsigned char>(rng.uniform(0, rows), rng.uniform(0, cols)) = static_cast<unsigned char>(rng.uniform(0, 256));
+  return map;
+}
+
+TEST(MapPalette, CountingBlocksOfEqualLevelsChangesNoPalette) {
+  cv::RNG rng(8);
+  for (const cv::Size size : {cv::Size(100, 80), cv::Size(117, 33), cv::Size(15, 9), cv::Size(1, 40)}) {
+    const cv::Mat levels = runs_map(rng, size.height, size.width);
+    // The same levels with the inner cells shuffled: the same histogram and border, no runs left.
+    cv::Mat shuffled = levels.clone();
+    if (levels.rows > 2 && levels.cols > 2) {
+      cv::Mat inner = shuffled(cv::Rect(1, 1, levels.cols - 2, levels.rows - 2)).clone().reshape(1, 1);
+      cv::randShuffle(inner, 1.0, &rng);
+      inner.reshape(1, levels.rows - 2).copyTo(shuffled(cv::Rect(1, 1, levels.cols - 2, levels.rows - 2)));
+    }
+    EXPECT_EQ(detect(levels).state, detect(shuffled).state) << size;
+    cv::Mat transparent = cv::Mat::zeros(levels.size(), CV_8UC1);
+    cv::rectangle(transparent, cv::Rect(0, 0, levels.cols / 3 + 1, levels.rows / 2 + 1), cv::Scalar(255), cv::FILLED);
+    EXPECT_EQ(detect_palette(levels, transparent, 250, 50).state, detect_palette(shuffled, transparent, 250, 50).state);
+  }
+}
+
+TEST(MapPalette, CellsAreTheirLevelsLookedUpAndTransparentCellsUnknown) {
+  cv::RNG rng(9);
+  for (const cv::Size size : {cv::Size(100, 80), cv::Size(117, 33), cv::Size(15, 9), cv::Size(1, 40)}) {
+    const cv::Mat levels = runs_map(rng, size.height, size.width);
+    cv::Mat transparent = cv::Mat::zeros(levels.size(), CV_8UC1);
+    for (int k = 0; k < 30; ++k)
+      cv::rectangle(transparent, cv::Rect(rng.uniform(0, size.width), rng.uniform(0, size.height), rng.uniform(1, 20), 1), cv::Scalar(1), cv::FILLED);
+    const MapPalette palette = detect(levels);
+    cv::Mat expected;
+    cv::LUT(levels, cv::Mat(1, 256, CV_8UC1, const_cast<unsigned char*>(palette.state.data())), expected);
+    expected.setTo(kUnknown, transparent);
+    EXPECT_EQ(cv::countNonZero(plain_image_cells(levels, transparent, palette) != expected), 0) << size;
+  }
+}
+
 }  // namespace
 }  // namespace topocut

@@ -23,7 +23,7 @@ function(expect text pattern)
 endfunction()
 
 run(${CMAKE_COMMAND} --install ${BUILD_DIR} --prefix ${prefix})
-foreach(installed include/topocut/topocut.h bin/topocut)
+foreach(installed include/topocut/topocut.h bin/topocut share/doc/topocut/LICENSE)
   if(NOT EXISTS ${prefix}/${installed})
     message(FATAL_ERROR "cmake --install did not install ${installed}")
   endif()

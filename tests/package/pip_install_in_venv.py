@@ -45,6 +45,11 @@ def main():
     if not list(installed.glob("_topocut*.so")):
         sys.exit("the installed package lacks its extension")
 
+    # The licence travels with the package: pip show and the wheel's metadata say it.
+    shown = run([python, "-m", "pip", "show", "topocut"], env=env, cwd=work)
+    if "License: GPL-3.0-or-later" not in shown:
+        sys.exit(f"pip show topocut does not give the project's licence:\n{shown}")
+
     picture = work / "rooms.png"
     out = run([python, source / "examples" / "segment_map.py", source / "maps" / "floorplan.yaml", picture], env=env, cwd=work)
     if "room 1:" not in out or f"wrote {picture}" not in out or picture.stat().st_size < 1000:

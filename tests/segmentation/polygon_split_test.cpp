@@ -1,5 +1,6 @@
 #include "topocut/segmentation/polygon_split.h"
 
+#include <algorithm>
 #include <numeric>
 
 #include <gtest/gtest.h>
@@ -56,6 +57,33 @@ TEST(SplitPolygon, EndPointsOnEdgesBecomeVerticesAndHolesGoToTheirPart) {
   }
   EXPECT_EQ(with_hole, 1);
   EXPECT_THROW(split_polygon(polygon, {{{5, 0.5}, {5, 4}}}), Error);
+}
+
+TEST(SplitPolygon, ManyPartsEachGetTheHolesInsideThem) {
+  // A 400 x 30 floor cut into 40 strips 10 wide; a 2 x 2 hole in most strips, at a random height.
+  PolygonWithHoles floor{{{0, 0}, {400, 0}, {400, 30}, {0, 30}}, {}};
+  std::vector<Segment2> cuts;
+  for (int x = 10; x < 400; x += 10) cuts.push_back({{static_cast<double>(x), 0.0}, {static_cast<double>(x), 30.0}});
+  std::vector<double> hole_x;
+  for (int strip = 0; strip < 40; ++strip) {
+    if (strip % 7 == 3) continue;
+    const double x = strip * 10 + 1 + strip % 6, y = 2 + (strip * 5) % 25;
+    floor.holes.push_back({{x, y}, {x, y + 2}, {x + 2, y + 2}, {x + 2, y}});  // clockwise
+    hole_x.push_back(x);
+  }
+  const std::vector<PolygonWithHoles> parts = split_polygon(floor, cuts);
+  ASSERT_EQ(parts.size(), 40u);
+  EXPECT_DOUBLE_EQ(area_of(parts), 400.0 * 30.0 - 4.0 * static_cast<double>(hole_x.size()));
+  std::size_t holes = 0;
+  for (const PolygonWithHoles& part : parts) {
+    const Box box = bounding_box(part.outer);
+    EXPECT_DOUBLE_EQ(box.x1 - box.x0, 10.0);
+    const int expected = std::count_if(hole_x.begin(), hole_x.end(), [&](double x) { return x > box.x0 && x < box.x1; });
+    ASSERT_EQ(static_cast<int>(part.holes.size()), expected);
+    for (const Ring& hole : part.holes) EXPECT_TRUE(hole[0].x > box.x0 && hole[0].x < box.x1);
+    holes += part.holes.size();
+  }
+  EXPECT_EQ(holes, hole_x.size());
 }
 
 TEST(SplitPolygon, AChordBetweenTwoRingsSeparatesOnlyWithAnother) {

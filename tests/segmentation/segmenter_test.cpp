@@ -272,6 +272,28 @@ TEST(Segment, StagesComposeToSegment) {
   EXPECT_TRUE(one.cuts.empty());
 }
 
+// A clock that advances by one at every reading: stage times count readings, so that overlapping
+// stages (a stage timed inside another) would add up to more than the call took.
+double ticks_read = 0.0;
+double tick() { return ticks_read += 1.0; }
+
+TEST(Segment, StageTimesCoverEveryStageOnceAndChangeNothing) {
+  OccupancyGrid grid = read_map(bundled("furnished"));
+  cv::copyMakeBorder(grid.cells, grid.cells, 30, 30, 30, 30, cv::BORDER_CONSTANT, cv::Scalar(kUnknown));  // the box path too
+  SegmentTimes times;
+  times.clock = tick;
+  const double before = tick();
+  const Segmentation timed = segment(grid, SegmentOptions{}, nullptr, &times);
+  const double after = tick();
+  EXPECT_EQ(cv::countNonZero(timed.labels != segment(grid).labels), 0);
+  for (std::size_t k = 0; k < kSegmentStages; ++k) EXPECT_GT(times.ms[k], 0.0) << stage_name(static_cast<SegmentStage>(k));
+  EXPECT_LE(times.total(), after - before);
+  // Times add up over calls.
+  const double once = times.total();
+  segment(grid, SegmentOptions{}, nullptr, &times);
+  EXPECT_GT(times.total(), once);
+}
+
 // A 10 m x 10 m L of 2 m wide corridor, walls one cell thick around it.
 OccupancyGrid l_corridor() {
   OccupancyGrid grid{cv::Mat(202, 202, CV_8UC1, cv::Scalar(kOccupied)), 0.05, {}};

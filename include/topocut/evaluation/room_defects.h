@@ -62,6 +62,8 @@ struct MapDefectResult {
   RoomDefects defects;
   double time_ms = 0.0;   // load + segment, the whole job
   double floor_ms = 0.0;  // the contour floor of the same image (0 when not measured)
+  double load_ms = 0.0;   // of time_ms, loading the map
+  SegmentTimes stages;    // of time_ms, segment()'s stages
 };
 
 struct MapFolderOptions {
@@ -69,17 +71,18 @@ struct MapFolderOptions {
   MapLoadOptions load;    // plain images use load.resolution
   DefectOptions defects;
   int floor_repetitions = 0;  // 0: do not measure the contour floor
+  ClockMs clock = wall_clock_ms;  // what the times are read from (the floor's too)
   std::function<void(const std::string&)> progress;  // one line per map; may be empty
 };
 
-// Segments every map (load + segment timed together), counts its defects and, if asked, measures its
-// contour floor. A map that fails becomes a failed result; never throws for a single map.
+// Segments every map (load + segment timed together, and each stage), counts its defects and, if asked,
+// measures its contour floor. A map that fails becomes a failed result; never throws for a single map.
 std::vector<MapDefectResult> run_map_files(const std::vector<MapFile>& maps, const MapFolderOptions& options);
 
 // The least work any contour-based segmenter must do on an image file, in milliseconds (median of
-// repetitions): decode it as grey, threshold at free_min, cv::findContours. A YAML's image is used
-// for a YAML. Throws Error if the image cannot be read.
-double contour_floor_ms(const std::string& path, int free_min, int repetitions);
+// repetitions, read from clock): decode it as grey, threshold at free_min, cv::findContours. A YAML's
+// image is used for a YAML. Throws Error if the image cannot be read.
+double contour_floor_ms(const std::string& path, int free_min, int repetitions, ClockMs clock = wall_clock_ms);
 
 // The defects of every map that succeeded, added up (open_judged: on every one of them).
 RoomDefects total_defects(const std::vector<MapDefectResult>& results);

@@ -7,14 +7,16 @@
 
 #include <opencv2/core.hpp>
 
+#include "topocut/map/label_runs.h"
+
 namespace topocut {
 
-// The extent of each room of a label image (CV_32SC1, 0 = no room): its bounding box and cell count.
+// The extent of each room of a label image (label_runs.h): its bounding box and cell count.
 struct RoomExtent {
   cv::Rect box;
   long long cells = 0;
 };
-std::map<int, RoomExtent> room_extents(const cv::Mat& labels);
+std::map<int, RoomExtent> room_extents(const LabelRuns& labels);
 
 // Cells that count as wall for an outline (CV_8UC1, 255): occupied, or unknown within reach cells of an
 // occupied cell (SLAM maps leave a rim of never-seen cells along their walls). cells: kFree / kOccupied /
@@ -39,7 +41,7 @@ struct RoomOutline {
 // within band cells counts as wall (walls drawn in the unknown grey). floor, if given (CV_8UC1, nonzero:
 // the free space the rooms were made of), limits other rooms' cells to it, so that rays given to a room
 // make no walls.
-RoomOutline room_outline(const cv::Mat& labels, int id, const cv::Rect& box, const cv::Mat& cells, const cv::Mat& walls,
+RoomOutline room_outline(const LabelRuns& labels, int id, const cv::Rect& box, const cv::Mat& cells, const cv::Mat& walls,
                          int band, const cv::Mat& floor = cv::Mat());
 
 }  // namespace topocut

@@ -12,6 +12,7 @@
 #include "topocut/segmentation/open_rooms.h"
 #include "topocut/segmentation/room_merging.h"
 #include "topocut/segmentation/rooms_from_pieces.h"
+#include "topocut/segmentation/segment_times.h"
 
 namespace topocut {
 
@@ -49,9 +50,11 @@ SegmentOptions parity_segment_options(double concavity = 2.5);
 // Segments the free space of grid into rooms; every free cell gets a room label. Rooms are
 // numbered by their first cell in raster order. Throws Error on an invalid grid or options, or a
 // map without free space. If input is given, it receives what was decomposed and labelled
-// (segmentation_input()), for pictures of the cleaning.
+// (segmentation_input()), for pictures of the cleaning; if times is given, each stage's time is
+// added to it (segment_times.h).
 struct SegmentationInput;
-Segmentation segment(const OccupancyGrid& grid, const SegmentOptions& options = {}, SegmentationInput* input = nullptr);
+Segmentation segment(const OccupancyGrid& grid, const SegmentOptions& options = {}, SegmentationInput* input = nullptr,
+                     SegmentTimes* times = nullptr);
 
 // Stage 0: the part of grid that segment() works on (crop()): the box of its known cells with a margin
 // wider than any stage looks, clipped to the grid (all of it without known cells). The same rooms as
@@ -87,13 +90,16 @@ int front_end_context(const SegmentOptions& options, double resolution);
 // input.floor, decompose_component() on each, the open-room rule, the rooms and their labels, the
 // passages with their doors, in input.labelled's frame (its size and origin). Only free cells of
 // input.labelled where to_label is non-zero get a room (empty: every free cell), so that a window may
-// hold cells of rooms it leaves alone. segment() is this function over the known cells' box.
-Segmentation segment_input(const SegmentationInput& input, const SegmentOptions& options, const cv::Mat& to_label = cv::Mat());
+// hold cells of rooms it leaves alone. segment() is this function over the known cells' box. Stage
+// times are added to times, if given.
+Segmentation segment_input(const SegmentationInput& input, const SegmentOptions& options, const cv::Mat& to_label = cv::Mat(),
+                           SegmentTimes* times = nullptr);
 
 // segment()'s stages over window of grid (its front end on the window alone): the segmentation of the
 // crop, in its frame. segment() is this over segmentation_box(), placed back into the whole grid.
+// Stage times are added to times, if given.
 Segmentation segment_window(const OccupancyGrid& grid, const cv::Rect& window, const SegmentOptions& options,
-                            SegmentationInput* input = nullptr);
+                            SegmentationInput* input = nullptr, SegmentTimes* times = nullptr);
 
 // Stage 3a, first step: the polygon simplified ring by ring (simplify_polygon(), tolerance in
 // cells), except that every ring whose simplification crosses or touches itself or another ring (a
@@ -105,12 +111,15 @@ PolygonWithHoles simplified_where_valid(const PolygonWithHoles& exact, double to
 // polygon simplified, split along its door cuts (listed in the result's doors) and each part decomposed
 // at tau = concavity / resolution (times oversegment with merging), the exact polygon if the simplified
 // one fails; the component itself unless options.decompose. Errors name the component's first cell.
-PieceSet decompose_pieces(const FreeSpaceComponent& component, double resolution, const SegmentOptions& options);
+// The simplification, cut search and decomposition times are added to times, if given.
+PieceSet decompose_pieces(const FreeSpaceComponent& component, double resolution, const SegmentOptions& options,
+                          SegmentTimes* times = nullptr);
 
 // Stage 3: the rooms of one free-space component (grid coordinates) and the cuts between them:
 // decompose_pieces() followed by merge_rooms() with options.merge. Errors name the component's
-// first cell.
-PieceSet decompose_component(const FreeSpaceComponent& component, double resolution, const SegmentOptions& options);
+// first cell. Stage times are added to times, if given.
+PieceSet decompose_component(const FreeSpaceComponent& component, double resolution, const SegmentOptions& options,
+                             SegmentTimes* times = nullptr);
 
 // Throws Error unless the options are usable (finite, positive concavity and so on).
 void validate(const SegmentOptions& options);

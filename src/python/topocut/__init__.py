@@ -31,6 +31,7 @@ from ._topocut import (
     extract_lines,
     iepf,
     load_map,
+    load_options,
     lt,
     merge_feature_names,
     sef,
@@ -39,8 +40,8 @@ from ._topocut import (
 
 __all__ = [
     "IncrementalSegmenter", "Map", "Passage", "Room", "Scores", "Segmentation", "ale", "decompose", "evaluate",
-    "extract_lines", "iepf", "load_map", "lt", "merge_feature_names", "merge_training_rows", "segment", "sef",
-    "simulate_map", "smf",
+    "extract_lines", "iepf", "load_map", "load_options", "lt", "merge_feature_names", "merge_training_rows", "segment",
+    "sef", "simulate_map", "smf",
 ]
 
 _TYPES = {"bool": bool, "int": int, "float": float, "str": str}

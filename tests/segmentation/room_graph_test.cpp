@@ -1,0 +1,75 @@
+#include "segmentation/room_graph.h"
+
+#include <algorithm>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+namespace topocut {
+namespace {
+
+constexpr double kRes = 0.05;
+
+// A corridor of n square pieces of 20 x 20 cells (1 m) side by side, each cut from the next, and a
+// tooth beside each piece but the last (pieces n, n + 1, ...), cut from it: cuts in two directions.
+PieceSet comb(int n) {
+  PieceSet set;
+  for (int i = 0; i < n; ++i) {
+    const double x0 = 20.0 * i, x1 = x0 + 20.0;
+    set.pieces.push_back({{{x0, 0}, {x1, 0}, {x1, 20}, {x0, 20}}, {}});
+  }
+  for (int i = 0; i + 1 < n; ++i) {
+    const double x0 = 20.0 * i, x1 = x0 + 20.0;
+    set.pieces.push_back({{{x0, 20}, {x1, 20}, {x1, 40}, {x0, 40}}, {}});
+  }
+  for (int i = 0; i + 1 < n; ++i) set.add_cut({{20.0 * (i + 1), 0}, {20.0 * (i + 1), 20}}, CutRule::kDecomposition);
+  for (int i = 0; i + 1 < n; ++i) set.add_cut({{20.0 * i, 20}, {20.0 * (i + 1), 20}}, CutRule::kDecomposition);
+  return set;
+}
+
+// What room_sides() stands for: every cut with a piece of room r on a side, in cut order.
+std::vector<std::size_t> sides_by_definition(RoomGraph& g, int r) {
+  std::vector<std::size_t> out;
+  for (std::size_t k = 0; k < g.sides().size(); ++k) {
+    const RoomGraph::Side& s = g.sides()[k];
+    if (s.left >= 0 && (g.root(s.left) == r || g.root(s.right) == r)) out.push_back(k);
+  }
+  return out;
+}
+
+double shared_by_definition(RoomGraph& g, int r, int s) {
+  double length = 0.0;
+  for (const RoomGraph::Side& side : g.sides()) {
+    if (side.left < 0) continue;
+    const int a = g.root(side.left), b = g.root(side.right);
+    if (a != b && ((a == r && (s < 0 || b == s)) || (b == r && (s < 0 || a == s)))) length += side.length;
+  }
+  return length;
+}
+
+TEST(RoomGraph, ARoomsCutsAndMeasuresAreThoseOfEveryCutBesideIt) {
+  const PieceSet set = comb(8);
+  RoomGraph g(PolygonWithHoles{}, set, kRes, 0.0);
+  ASSERT_EQ(g.sides().size(), 14u);
+  // Rooms of several pieces, as merging makes them (not all of them touching: the measures must not care).
+  g.unite(0, 1);
+  g.unite(1, 8);
+  g.unite(2, 9);
+  g.unite(5, 12);
+  g.unite(6, 5);
+  for (std::size_t p = 0; p < g.piece_count(); ++p) {
+    const int r = g.root(static_cast<int>(p));
+    if (r != static_cast<int>(p)) continue;
+    EXPECT_EQ(g.room_sides(r), sides_by_definition(g, r)) << "room " << r;
+    EXPECT_EQ(g.shared_cut_length(r, -1), shared_by_definition(g, r, -1)) << "room " << r;
+    for (std::size_t q = 0; q < g.piece_count(); ++q)
+      EXPECT_EQ(g.shared_cut_length(r, static_cast<int>(q)), shared_by_definition(g, r, static_cast<int>(q)));
+  }
+  // Pieces 0, 1, 8 (three squares of 1 m) and the two cuts inside: 12 m - 2 x 2 m.
+  EXPECT_NEAR(g.room_perimeter(g.root(0)), 8.0, 1e-12);
+  // Between that room and the room of pieces 2 and 9: the cut from 1 to 2 and the one from 1 to 9.
+  EXPECT_NEAR(g.shared_cut_length(g.root(0), g.root(2)), 2.0, 1e-12);
+}
+
+}  // namespace
+}  // namespace topocut
