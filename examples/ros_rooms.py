@@ -5,7 +5,9 @@ rooms come back on /rooms/rooms (topocut_msgs/Rooms: the rooms and passages of `
 --out-json`, map frame, metres); with --service the map is sent to the node's service
 /topocut/segment_map instead (the whole map at once, with --option overrides), and with --action to
 its action /topocut/map_segmentation (the same, with progress printed on stderr as it comes), each
-answering with the same rooms. --at X,Y then asks /topocut/room_at which room holds that point.
+answering with the same rooms. --at X,Y then asks /topocut/room_at which room holds that point in the
+rooms the node published (the service and the action are what-ifs: they publish nothing, so --at
+answers from the latest map on /map).
 --node names the node (default topocut, the launch file's name).
 
     export ROS_MASTER_URI=http://127.0.0.1:11311 PYTHONPATH=build/ros/python:build/python
@@ -112,7 +114,7 @@ def main():
     parser.add_argument("--option", action="append", default=[], metavar="NAME=VALUE",
                         help="with --service or --action: an option over the node's parameters (repeatable), e.g. concavity=3")
     parser.add_argument("--node", default="topocut", help="the node's name (default topocut)")
-    parser.add_argument("--at", metavar="X,Y", help="then print the room at this point (map frame, metres)")
+    parser.add_argument("--at", metavar="X,Y", help="then print the room at this point (map frame, metres) in the node's published rooms")
     parser.add_argument("--timeout", type=float, default=30.0, help="seconds to wait for the rooms")
     args = parser.parse_args()
     rospy.init_node("topocut_example", anonymous=True)

@@ -5,11 +5,14 @@
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
+#include <fstream>
 #include <optional>
+#include <sstream>
 
 #include "topocut/core/error.h"
 #include "topocut/core/option_names.h"
 #include "topocut/core/option_table.h"
+#include "topocut/io/atomic_file.h"
 #include "topocut/io/image_input.h"  // ImageLimits
 #include "topocut/segmentation/room_at.h"
 #include "topocut/segmentation/segment_switches.h"
@@ -28,8 +31,12 @@ struct MapSettings {
   double free_thresh = topocut::GridArray{}.free_thresh;
   double occupied_thresh = topocut::GridArray{}.occupied_thresh;
   double batch_fraction = topocut::IncrementalOptions{}.batch_fraction;
+  double settle_after = 2.0;  // seconds without a changed map before the rooms become segment()'s
+  std::string id_ledger;      // file the room ids are kept in across restarts ("" = none)
   topocut::ImageLimits limits;
 };
+
+constexpr const char* kLedgerParameter = "id_ledger";
 
 struct NodeSettings {
   SegmentSettings segment;
@@ -53,6 +60,9 @@ const std::vector<OptionRow<MapSettings>>& map_option_rows() {
       {"batch_fraction", "F", "share of changed free cells that makes a live update a batch one",
        topocut::OptionRange::kPositive, [](const MapSettings& s) { return s.batch_fraction; },
        [](MapSettings& s, double v) { s.batch_fraction = v; }},
+      {"settle_after", "S", "seconds without a changed map after which the rooms are segment()'s (0: never)",
+       topocut::OptionRange::kNonNegative, [](const MapSettings& s) { return s.settle_after; },
+       [](MapSettings& s, double v) { s.settle_after = v; }},
       {"max_megapixels", "N", "maps of more megapixels are logged and skipped before a cell is read (at most 1000)",
        topocut::OptionRange::kPositive,
        [](const MapSettings& s) { return s.limits.max_megapixels; },
@@ -67,6 +77,7 @@ std::vector<std::string> known_names() {
   std::vector<std::string> names;
   for (const auto& row : topocut::segment_option_rows()) names.push_back(topocut::underscored_option_name(row.name));
   for (const auto& row : map_option_rows()) names.push_back(row.name);
+  names.push_back(kLedgerParameter);
   return names;
 }
 
@@ -111,6 +122,11 @@ bool set_row(const std::vector<OptionRow<Target>>& rows, const std::string& name
 // name is appended to unknown, or an Error when unknown is null (a service call's options).
 NodeSettings read_parameters(NodeSettings settings, const std::vector<Parameter>& given, std::vector<std::string>* unknown) {
   for (const Parameter& p : given) {
+    if (p.name == kLedgerParameter) {
+      if (p.kind != Parameter::Kind::kText || p.text.empty()) throw Error("~id_ledger needs the path of a file");
+      settings.map.id_ledger = p.text;
+      continue;
+    }
     if (set_row(topocut::segment_option_rows(), topocut::dashed_option_name(p.name), settings.segment, p) ||
         set_row(map_option_rows(), topocut::underscored_option_name(p.name), settings.map, p))
       continue;
@@ -251,6 +267,8 @@ std::string parameters_help() {
     line(topocut::underscored_option_name(row.name), row.value_name, row.help, row.is_switch() ? "" : topocut::shortest_number(row.get(defaults.segment)));
   for (const auto& row : map_option_rows())
     line(row.name, row.value_name, row.help, topocut::shortest_number(row.get(defaults.map)));
+  line(kLedgerParameter, "PATH", "file the room ids are kept in: read at start, written when the rooms settle "
+       "and at shutdown, so that ids survive a restart", "none");
   return out;
 }
 
@@ -258,7 +276,8 @@ struct RoomsAdapter::State {
   std::vector<Parameter> parameters;  // as given at start-up, for segment()'s options to go over
   NodeSettings live;                  // over the incremental segmenter's defaults
   topocut::IncrementalSegmenter segmenter;
-  std::optional<topocut::GridSegmentation> latest;  // for room_at()
+  std::optional<topocut::GridSegmentation> latest;  // the rooms last published, for room_at()
+  topocut::GridFrame frame;                         // of the map they are of
   State(std::vector<Parameter> given, NodeSettings settings, const topocut::IncrementalOptions& options)
       : parameters(std::move(given)), live(std::move(settings)), segmenter(options) {}
 };
@@ -275,6 +294,15 @@ void RoomsAdapter::start(const std::vector<Parameter>& parameters, std::vector<s
   std::vector<std::string> reported;  // the same names again
   over(topocut::SegmentOptions{}, parameters, &reported);  // segment()'s combination is checked at start-up too
   state_ = std::make_unique<State>(parameters, live, options);
+  const std::string& path = live.map.id_ledger;
+  std::ifstream in(path);
+  if (!path.empty() && in) {
+    try {
+      state_->segmenter.load_ledger(in);
+    } catch (const Error& e) {
+      throw Error("~id_ledger " + path + ": " + e.what());
+    }
+  }
 }
 
 RoomsAdapter::~RoomsAdapter() = default;
@@ -299,6 +327,7 @@ std::string RoomsAdapter::settings_summary() const {
   }
   for (const auto& row : map_option_rows())
     if (was_given(row.name)) add(row.name, topocut::shortest_number(row.get(live.map)), true);
+  if (!live.map.id_ledger.empty()) add(kLedgerParameter, live.map.id_ledger, true);
   return (given.empty() ? "" : "given: " + given + "; ") + "defaults: " + (defaulted.empty() ? "" : defaulted + " and ") +
          "the rest (topocut_node --help lists them)";
 }
@@ -313,7 +342,8 @@ RoomsOutput RoomsAdapter::update_once(const MapInput& map) {
   const auto start = std::chrono::steady_clock::now();
   const topocut::Segmentation& result = state_->segmenter.update(grid);
   const double update_ms = ms_since(start);
-  topocut::GridSegmentation rooms = topocut::in_frame(result, topocut::frame_of(array));
+  state_->frame = topocut::frame_of(array);
+  topocut::GridSegmentation rooms = topocut::in_frame(result, state_->frame);
   RoomsOutput out = output_of(rooms);
   state_->latest = std::move(rooms);
   out.update_ms = update_ms;
@@ -336,11 +366,35 @@ RoomsOutput RoomsAdapter::segment_once(const MapInput& map, const std::vector<st
   topocut::GridSegmentation rooms =
       topocut::segment_grid(grid, topocut::frame_of(array), topocut::to_segment_options(settings.segment));
   const double segment_ms = ms_since(start);
-  RoomsOutput out = output_of(rooms);
-  state_->latest = std::move(rooms);
+  RoomsOutput out = output_of(rooms);  // a what-if: the published rooms and their ids stay
   out.update_ms = segment_ms;
   out.kind = "segment";
   return out;
+}
+
+RoomsOutput RoomsAdapter::settle() {
+  if (!state_->latest) return {};
+  const auto start = std::chrono::steady_clock::now();
+  const topocut::Segmentation& result = state_->segmenter.resegment();
+  const double settle_ms = ms_since(start);
+  topocut::GridSegmentation rooms = topocut::in_frame(result, state_->frame);
+  RoomsOutput out = output_of(rooms);
+  state_->latest = std::move(rooms);
+  out.update_ms = settle_ms;
+  out.kind = "settled";
+  return out;
+}
+
+double RoomsAdapter::settle_after() const { return state_->live.map.settle_after; }
+
+bool RoomsAdapter::save_ledger() const {
+  if (state_->live.map.id_ledger.empty() || !state_->latest) return false;
+  return one_line([&] {  // the file's name may hold anything: the message stays one line
+    std::ostringstream text;
+    state_->segmenter.save_ledger(text);
+    topocut::write_file_atomically(state_->live.map.id_ledger, text.str());
+    return true;
+  });
 }
 
 int RoomsAdapter::room_at(double x, double y, RoomShape* room) const {

@@ -44,7 +44,7 @@ struct RoomsOutput {
   std::vector<PassageShape> passages;
   std::string json;                   // the rooms JSON (rooms_json.h)
   double update_ms = 0.0;             // the library's segmentation call alone
-  std::string kind;                   // "unchanged", "incremental", "batch" (live) or "segment" (a service call)
+  std::string kind;                   // "unchanged", "incremental", "batch" (live), "settled" or "segment" (a service call)
 };
 
 // One private parameter as the parameter server holds it (its name without the node's namespace).
@@ -82,12 +82,21 @@ class RoomsAdapter {
   // Segments map at once with the options of `topocut segment`, the parameters and then options
   // ("name=value", or "name" for a switch on) over them, each read as the command line reads it.
   // Throws std::runtime_error on an unknown option, a bad value, an option given twice, an empty name
-  // or a malformed map. Its rooms become the latest (room_at()). Every message is one line.
+  // or a malformed map. Every message is one line. A what-if: the published rooms (room_at()) stay.
   RoomsOutput segment(const MapInput& map, const std::vector<std::string>& options);
 
-  // The id of the room holding (x, y) (map frame) in the latest rooms, update()'s or segment()'s,
-  // and that room in *room; 0 (and *room untouched) when no room holds it or nothing was segmented.
-  // Throws std::runtime_error for a point that is not finite.
+  // The latest map segmented as a whole (the map stopped changing): the rooms of `topocut segment`
+  // with the live ids carried by overlap (kind "settled"); empty before the first update.
+  RoomsOutput settle();
+  // Seconds without a changed map after which the node settles (~settle_after; 0: never).
+  double settle_after() const;
+  // Writes the id ledger to ~id_ledger (atomically); false when there is none or nothing to save.
+  // Throws std::runtime_error when the file cannot be written.
+  bool save_ledger() const;
+
+  // The id of the room holding (x, y) (map frame) in the rooms last published (update()'s or
+  // settle()'s), and that room in *room; 0 (and *room untouched) when no room holds it or nothing
+  // was published. Throws std::runtime_error for a point that is not finite.
   int room_at(double x, double y, RoomShape* room) const;
 
  private:

@@ -1,7 +1,9 @@
 // topocut_node: rooms of a ROS map, live and on request. Subscribes `map` (nav_msgs/OccupancyGrid,
 // latched or streamed; size and origin may change between messages) and, for every map, runs the
 // library's incremental segmenter (a wholesale change such as a loop closure becomes a batch update
-// with ids kept where rooms overlap), then publishes
+// with ids kept where rooms overlap); when no map has changed for ~settle_after seconds it segments
+// the latest map as a whole (the rooms of `topocut segment`, ids carried: timing kind "settled"). It
+// publishes
 //   rooms/labels   sensor_msgs/Image 16UC1: the room id of every cell, in the map's row order and
 //                  header (0 = no room)
 //   rooms/grid     nav_msgs/OccupancyGrid: the same labels on the map's grid (-1 = no room, else the
@@ -13,8 +15,11 @@
 //   rooms/timing   std_msgs/String: {"update_ms", "callback_ms", "kind", "rooms"} of that map
 // and answers, under its own name (private, so that two nodes never take each other's over)
 //   ~segment_map       topocut_msgs/SegmentMap: one map segmented at once, as `topocut segment` does
-//   ~room_at           topocut_msgs/RoomAt: the room holding a point, in the latest rooms
+//   ~room_at           topocut_msgs/RoomAt: the room holding a point, in the rooms last published
 //   ~map_segmentation  actionlib action topocut_msgs/MapSegmentation: segment_map with feedback
+// (segment_map and the action are what-ifs: they change neither the published rooms nor their ids).
+// With ~id_ledger the room ids are kept in that file (written when the rooms settle and at
+// shutdown, read at start), so that a restarted node gives the same rooms the same ids.
 // It logs its parameters and names at start and one line per map. A thin adapter: the conversion,
 // segmentation and JSON are the library's, behind rooms_adapter.h (this file is C++17 because ROS
 // 1's message headers are); it only moves values between messages and the adapter. Parameters
@@ -53,8 +58,10 @@ const char* const kUsage =
     "ids above 100 wrapping), rooms/rooms (topocut_msgs/Rooms), rooms/markers (RViz), rooms/graph (the rooms\n"
     "JSON) and rooms/timing. Under the node's name (private): the services ~segment_map\n"
     "(topocut_msgs/SegmentMap: one map segmented at once, as `topocut segment` does) and ~room_at\n"
-    "(topocut_msgs/RoomAt), and the action ~map_segmentation (topocut_msgs/MapSegmentation: segment_map\n"
-    "with feedback). Logs its parameters and names at start and one line per map.\n"
+    "(topocut_msgs/RoomAt, in the published rooms), and the action ~map_segmentation\n"
+    "(topocut_msgs/MapSegmentation: segment_map with feedback). A map unchanged for ~settle_after seconds is\n"
+    "segmented as a whole (`topocut segment`'s rooms, the live ids carried); ~id_ledger keeps the ids in a\n"
+    "file across restarts. Logs its parameters and names at start and one line per map.\n"
     "Parameters (private; an unknown name is warned about, a bad value stops the node with the reason):\n";
 
 double ms_between(Clock::time_point a, Clock::time_point b) {
@@ -257,6 +264,18 @@ class RoomsNode {
     action_.registerGoalCallback(boost::bind(&RoomsNode::on_goal, this));
     action_.start();
     map_ = nh.subscribe("map", 1, &RoomsNode::on_map, this);
+    if (adapter_.settle_after() > 0.0)
+      settle_timer_ = nh.createSteadyTimer(ros::WallDuration(std::min(0.25, adapter_.settle_after() / 4.0)),
+                                           &RoomsNode::on_settle_timer, this);
+  }
+
+  // At shutdown: the ids of the rooms last published, for the next start.
+  void save_ledger() {
+    try {
+      adapter_.save_ledger();
+    } catch (const std::exception& e) {
+      ROS_ERROR("topocut_node: ~id_ledger not written: %s", e.what());
+    }
   }
 
   // The start-up lines: what it listens to and answers under which names, and with which options.
@@ -274,28 +293,51 @@ class RoomsNode {
     const Clock::time_point received = Clock::now();
     try {
       const topocut_ros::RoomsOutput rooms = adapter_.update(map_input(*msg));
+      if (rooms.kind != "unchanged" || !have_map_) {
+        last_change_ = Clock::now();
+        settled_ = false;
+      }
+      have_map_ = true;
       latest_ = msg->header;
-      labels_.publish(labels_image(msg->header, msg->info.width, msg->info.height, rooms.labels));
-      grid_.publish(labels_grid(msg->header, msg->info, rooms.labels));
-      rooms_.publish(rooms_message(msg->header, rooms));
-      markers_.publish(room_markers(msg->header, rooms, msg->info.resolution));
-      std_msgs::String graph;
-      graph.data = rooms.json;
-      graph_.publish(graph);
-      const double callback_ms = ms_between(received, Clock::now());
-      publish_timing(rooms, callback_ms);
-      ROS_INFO("topocut_node: map %u x %u at %g m: %zu rooms, %zu passages (%s, %.1f ms)", msg->info.width,
-               msg->info.height, static_cast<double>(msg->info.resolution), rooms.rooms.size(), rooms.passages.size(),
-               rooms.kind.c_str(), callback_ms);
+      latest_info_ = msg->info;
+      publish(rooms, received);
     } catch (const std::exception& e) {  // a malformed map or bad values: logged, skipped, never fatal
       ROS_ERROR("topocut_node: skipped a map: %s", e.what());
     }
   }
 
+  // The map has not changed for ~settle_after seconds: its rooms become segment()'s, ids carried.
+  void on_settle_timer(const ros::SteadyTimerEvent&) {
+    if (!have_map_ || settled_ || ms_between(last_change_, Clock::now()) < 1000.0 * adapter_.settle_after()) return;
+    const Clock::time_point start = Clock::now();
+    settled_ = true;
+    try {
+      publish(adapter_.settle(), start);
+      adapter_.save_ledger();
+    } catch (const std::exception& e) {  // an id beyond 16 bits, an unwritable ledger
+      ROS_ERROR("topocut_node: settling: %s", e.what());
+    }
+  }
+
+  // The rooms of the latest map on every topic, its timing and one log line.
+  void publish(const topocut_ros::RoomsOutput& rooms, Clock::time_point received) {
+    labels_.publish(labels_image(latest_, latest_info_.width, latest_info_.height, rooms.labels));
+    grid_.publish(labels_grid(latest_, latest_info_, rooms.labels));
+    rooms_.publish(rooms_message(latest_, rooms));
+    markers_.publish(room_markers(latest_, rooms, latest_info_.resolution));
+    std_msgs::String graph;
+    graph.data = rooms.json;
+    graph_.publish(graph);
+    const double callback_ms = ms_between(received, Clock::now());
+    publish_timing(rooms, callback_ms);
+    ROS_INFO("topocut_node: map %u x %u at %g m: %zu rooms, %zu passages (%s, %.1f ms)", latest_info_.width,
+             latest_info_.height, static_cast<double>(latest_info_.resolution), rooms.rooms.size(), rooms.passages.size(),
+             rooms.kind.c_str(), callback_ms);
+  }
+
   bool on_segment(topocut_msgs::SegmentMap::Request& request, topocut_msgs::SegmentMap::Response& response) {
     try {
       const topocut_ros::RoomsOutput rooms = adapter_.segment(map_input(request.map), request.options);
-      latest_ = request.map.header;
       response.rooms = rooms_message(request.map.header, rooms);
       response.labels = labels_image(request.map.header, request.map.info.width, request.map.info.height, rooms.labels);
       response.json = rooms.json;
@@ -318,7 +360,6 @@ class RoomsNode {
       feedback("segmenting", 0.05f);
       const topocut_ros::RoomsOutput rooms = adapter_.segment(map_input(goal->map), goal->options);
       feedback("writing the result", 0.95f);
-      latest_ = goal->map.header;
       result.rooms = rooms_message(goal->map.header, rooms);
       result.labels = labels_image(goal->map.header, goal->map.info.width, goal->map.info.height, rooms.labels);
       result.grid = labels_grid(goal->map.header, goal->map.info, rooms.labels);
@@ -369,11 +410,15 @@ class RoomsNode {
   }
 
   topocut_ros::RoomsAdapter adapter_;
-  std_msgs::Header latest_;  // of the map the latest rooms are of
+  std_msgs::Header latest_;  // of the map the published rooms are of
+  nav_msgs::MapMetaData latest_info_;
+  bool have_map_ = false, settled_ = false;
+  Clock::time_point last_change_;
   ros::Publisher labels_, grid_, rooms_, markers_, graph_, timing_;
   ros::ServiceServer segment_, room_at_;
   actionlib::SimpleActionServer<topocut_msgs::MapSegmentationAction> action_;
   ros::Subscriber map_;
+  ros::SteadyTimer settle_timer_;
 };
 
 }  // namespace
@@ -401,6 +446,7 @@ int main(int argc, char** argv) {
     for (const std::string& line : unknown) ROS_WARN("topocut_node: %s", line.c_str());
     node.log_start();
     ros::spin();
+    node.save_ledger();
   } catch (const std::exception& e) {  // bad parameters: one clear line, non-zero exit
     ROS_FATAL("topocut_node: %s", e.what());
     return 1;

@@ -3,6 +3,7 @@
 // library's segment_grid() with the CLI's defaults, at the resolution the map was written with)
 // and the room at a point (issue 26).
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -191,12 +192,12 @@ TEST(RosAdapter, SegmentOptionsGoOverTheParametersAndAreChecked) {
   EXPECT_EQ(adapter.segment(two.map(), {"trivial", "concavity=1"}).rooms.size(), 1u);
 }
 
-TEST(RosAdapter, RoomAtAnswersFromTheLatestRooms) {
+TEST(RosAdapter, RoomAtAnswersFromThePublishedRoomsOnly) {
   const TwoRooms two;
   topocut_ros::RoomsAdapter adapter = adapter_with();
   topocut_ros::RoomShape room;
-  EXPECT_EQ(adapter.room_at(1.0, 1.0, &room), 0);  // nothing segmented yet
-  const topocut_ros::RoomsOutput out = adapter.segment(two.map(10.0, 20.0), {});
+  EXPECT_EQ(adapter.room_at(1.0, 1.0, &room), 0);  // nothing published yet
+  const topocut_ros::RoomsOutput out = adapter.update(two.map(10.0, 20.0));
   ASSERT_EQ(out.rooms.size(), 2u);
   for (const topocut_ros::RoomShape& expected : out.rooms) {
     EXPECT_EQ(adapter.room_at(expected.inside_x, expected.inside_y, &room), expected.id);
@@ -210,7 +211,12 @@ TEST(RosAdapter, RoomAtAnswersFromTheLatestRooms) {
   EXPECT_EQ(adapter.room_at(10.0 + 64 * 0.05, 20.0 + 5 * 0.05, &room), 0);  // in the dividing wall
   EXPECT_EQ(room.id, 0);
   EXPECT_EQ(adapter.room_at(0.0, 0.0, &room), 0);                          // off the map
-  // A live update becomes the latest: a map moved by 100 m has its rooms there.
+  // segment_map is a what-if: a map segmented 100 m away changes neither the answers nor the ids.
+  const topocut_ros::RoomsOutput elsewhere = adapter.segment(two.map(110.0, 20.0), {});
+  ASSERT_EQ(elsewhere.rooms.size(), 2u);
+  EXPECT_EQ(adapter.room_at(elsewhere.rooms[0].inside_x, elsewhere.rooms[0].inside_y, &room), 0);
+  EXPECT_EQ(adapter.room_at(out.rooms[1].inside_x, out.rooms[1].inside_y, &room), out.rooms[1].id);
+  // A live update is published: the map moved by 100 m has its rooms there.
   adapter.update(two.map(110.0, 20.0));
   EXPECT_EQ(adapter.room_at(out.rooms[0].inside_x, out.rooms[0].inside_y, &room), 0);
   EXPECT_NE(adapter.room_at(out.rooms[0].inside_x + 100.0, out.rooms[0].inside_y, &room), 0);
@@ -289,6 +295,60 @@ TEST(RosAdapter, RoomAtRefusesAPointThatIsNotANumberWithTheReason) {
     }
     adapter.segment(two.map(), {});
   }
+}
+
+TEST(RosAdapter, SettlingGivesSegmentsRoomsWithTheLiveIds) {
+  // A map seen in two steps (the right room first), then at rest: the settled rooms are the service's
+  // (`topocut segment`'s) cell for cell under the live ids, which the right room keeps.
+  TwoRooms half;
+  for (int r = 0; r < TwoRooms::kHeight; ++r)
+    for (int c = 0; c < 62; ++c) half.cells[r * TwoRooms::kWidth + c] = -1;
+  const TwoRooms two;
+  topocut_ros::RoomsAdapter adapter = adapter_with({given("settle_after", 0.5)});
+  EXPECT_EQ(adapter.settle_after(), 0.5);
+  EXPECT_TRUE(adapter.settle().rooms.empty());  // nothing to settle yet
+  const topocut_ros::RoomsOutput first = adapter.update(half.map());
+  ASSERT_EQ(first.rooms.size(), 1u);
+  adapter.update(two.map());
+  const topocut_ros::RoomsOutput settled = adapter.settle();
+  const topocut_ros::RoomsOutput batch = adapter.segment(two.map(), {});
+  EXPECT_EQ(settled.kind, "settled");
+  ASSERT_EQ(settled.rooms.size(), batch.rooms.size());
+  const int right = settled.labels[32 * TwoRooms::kWidth + 100];
+  EXPECT_EQ(right, first.rooms[0].id);
+  for (std::size_t k = 0; k < settled.labels.size(); ++k)
+    ASSERT_EQ(settled.labels[k] == right, batch.labels[k] == batch.labels[32 * TwoRooms::kWidth + 100]) << k;
+  topocut_ros::RoomShape room;
+  EXPECT_EQ(adapter.room_at(settled.rooms[0].inside_x, settled.rooms[0].inside_y, &room), settled.rooms[0].id);
+}
+
+TEST(RosAdapter, TheIdLedgerKeepsIdsAcrossARestart) {
+  const std::string path = testing::TempDir() + "topocut_adapter_ledger.txt";
+  std::remove(path.c_str());
+  TwoRooms half;
+  for (int r = 0; r < TwoRooms::kHeight; ++r)
+    for (int c = 0; c < 62; ++c) half.cells[r * TwoRooms::kWidth + c] = -1;
+  const TwoRooms two;
+  std::vector<std::uint16_t> before;
+  {
+    topocut_ros::RoomsAdapter adapter = adapter_with({given("id_ledger", path)});
+    EXPECT_FALSE(adapter.save_ledger());  // nothing published yet
+    adapter.update(half.map());
+    before = adapter.update(two.map()).labels;
+    EXPECT_TRUE(adapter.save_ledger());
+  }
+  // The right room was seen first: a fresh start numbers the rooms otherwise.
+  ASSERT_NE(adapter_with().update(two.map()).labels, before);
+  topocut_ros::RoomsAdapter restarted = adapter_with({given("id_ledger", path)});
+  EXPECT_EQ(restarted.update(two.map()).labels, before);
+  // A damaged ledger stops the node with the reason.
+  std::FILE* f = std::fopen(path.c_str(), "w");
+  ASSERT_NE(f, nullptr);
+  std::fputs("topocut-id-ledger 1\nnext_id 0\n", f);
+  std::fclose(f);
+  EXPECT_NE(refusal({given("id_ledger", path)}).find("~id_ledger " + path + ": the id ledger's next_id"), std::string::npos);
+  EXPECT_EQ(refusal({given("id_ledger", 3.0)}), "~id_ledger needs the path of a file");
+  std::remove(path.c_str());
 }
 
 }  // namespace

@@ -16,15 +16,21 @@ this script publishing maps with rospy and checking what comes back.
    real_maps_gt (skipped with a message when absent): labels equal `topocut segment --out-labels`
    cell for cell and the JSON equals `--out-json` byte for byte; a bad option and a malformed map
    come back as an error, as do options the command line refuses (hexadecimal, given twice) and
-   room_at at a point that is not a number; room_at then answers from that map.
+   room_at at a point that is not a number; room_at still answers from the published rooms
+   (segment_map is a what-if).
 7. `topocut_node --help` prints the parameters and exits 0 while the node runs, which lives on; a bad
    parameter value stops a second node with the reason and exit 1; an unknown name is warned about; a
    second node under another name serves its own private services and leaves the first node's alone.
 8. The action ~map_segmentation answers a goal with ~segment_map's rooms, labels and JSON, and the
    labels as a grid; its feedback names the stages in order; a bad option, and every option
-   ~segment_map refuses, aborts the goal with the reason.
+   ~segment_map refuses, aborts the goal with the reason; like segment_map it is a what-if (room_at
+   still answers from the published rooms).
 9. rooms/grid (nav_msgs/OccupancyGrid) holds the labels on the map's grid (-1 no room, else the id),
    and the node logs its topics, services, action and parameters at start and one line per map.
+10. Settling: a node left without a new map for ~settle_after publishes the rooms of segment_map
+   (`topocut segment`) on the latest map, ids carried (timing kind "settled"); with ~id_ledger, a
+   restarted node gives the same map the same ids.
+The first runs use ~settle_after 0, so that their rooms are the library's incremental result.
 Prints the node's latency (map received -> rooms published) beside the library's update time.
 Every wait is bounded; the master and the node are stopped whatever happens. Exit 77: skipped.
 """
@@ -222,7 +228,7 @@ def run_checks(args, env, work, node_log, full, grids):
     from visualization_msgs.msg import MarkerArray
 
     log = open(node_log, "wb")
-    node = subprocess.Popen([args.node, "__name:=topocut"], env=env, start_new_session=True, stdout=log,
+    node = subprocess.Popen([args.node, "__name:=topocut", "_settle_after:=0"], env=env, start_new_session=True, stdout=log,
                             stderr=subprocess.STDOUT)
     node_holder.append(node)
     rospy.init_node("topocut_node_test", anonymous=True, disable_signals=True)
@@ -308,7 +314,7 @@ def run_checks(args, env, work, node_log, full, grids):
     # 2. A fresh node state is needed for the sequence to match the reference's fresh segmenter:
     # restart the node (as a robot starting a new map would).
     stop(node)
-    node = subprocess.Popen([args.node, "__name:=topocut"], env=env, start_new_session=True, stdout=log,
+    node = subprocess.Popen([args.node, "__name:=topocut", "_settle_after:=0"], env=env, start_new_session=True, stdout=log,
                             stderr=subprocess.STDOUT)
     node_holder.append(node)
     wait_for(lambda: publisher.get_num_connections() > 0, "the restarted node to subscribe to /map")
@@ -326,7 +332,9 @@ def run_checks(args, env, work, node_log, full, grids):
             churns.append(churn(previous, current))
         previous = current
     assert node.poll() is None
-    check_action(*check_segment_map(args, work))
+    last = json.loads(graph.data)["rooms"][0]
+    published = (last["inside"], last["id"], labels.header.stamp)
+    check_action(*check_segment_map(args, work, published), published)
     assert node.poll() is None
     # Ids are carried across updates: the node's labels are the library's byte for byte (check_rooms),
     # whose updates of this sequence are batch runs (each growth changes the frame) with ids kept by
@@ -339,6 +347,8 @@ def run_checks(args, env, work, node_log, full, grids):
     print("node latency (map received -> rooms published): median %.2f ms, p95 %.2f ms; library update median %.2f ms, "
           "p95 %.2f ms; ratio of p95s %.1f" % (statistics.median(latencies), p95, statistics.median(updates), up95,
                                                p95 / up95 if up95 > 0 else float("inf")))
+    stop(node)
+    check_settling(args, env, work, log, grids, publisher, received)
     print("ros_node_test: all checks passed")
     return 0
 
@@ -448,8 +458,9 @@ def segment_map_against_cli(cli, reference, path, work, stamp):
             "call_ms": call_ms, "cli_ms": cli_ms}
 
 
-def check_segment_map(args, work):
-    """The service's rooms are `topocut segment`'s: labels cell for cell, JSON byte for byte. Returns the
+def check_segment_map(args, work, published):
+    """The service's rooms are `topocut segment`'s: labels cell for cell, JSON byte for byte; the published
+    rooms (published: a room's inside point, id and map stamp) stay what room_at answers from. Returns the
     first map's grid and answer."""
     counts, first_answer = [], None
     for k, path in enumerate(shared_maps(args.source)):
@@ -462,8 +473,8 @@ def check_segment_map(args, work):
         rooms = json.loads(answer.json)
         check_typed(answer.rooms, rooms, name)
         first = rooms["rooms"][0]
-        at = room_at(*first["inside"])
-        assert at.id == first["id"] and at.header.stamp.secs == 1500 + k, name + ": room_at after segment_map"
+        at = room_at(*published[0])
+        assert at.id == published[1] and at.header.stamp == published[2], name + ": room_at after segment_map"
         counts.append("%s %d" % (name, len(rooms["rooms"])))
         first_answer = first_answer or (grid, answer)
     print("segment_map = topocut segment (labels, JSON) on %d maps; rooms: %s" % (len(counts), ", ".join(counts)))
@@ -483,12 +494,13 @@ def check_segment_map(args, work):
     return first_answer
 
 
-def check_action(grid, expected):
+def check_action(grid, expected, published):
     """~map_segmentation (/topocut/map_segmentation): a goal's result is ~segment_map's answer for the
     same map (labels, JSON, and the labels as a grid); its feedback, read on the action's feedback topic
     (a client may drop feedback that comes after the result, which travels on another topic), names the
     three stages in order with growing progress; a bad option, and every option ~segment_map refuses,
-    aborts the goal with the reason."""
+    aborts the goal with the reason. A what-if like segment_map: the published rooms (published: a room's
+    inside point, id and map stamp) stay what room_at answers from."""
     import actionlib
     import rospy
     from actionlib_msgs.msg import GoalStatus
@@ -513,6 +525,8 @@ def check_action(grid, expected):
     assert result.json == expected.json, "the action's JSON differs from segment_map's"
     assert bytes(result.labels.data) == bytes(expected.labels.data), "the action's labels differ from segment_map's"
     check_grid(result.grid, sent, result.labels)
+    at = room_at(*published[0])
+    assert at.id == published[1] and at.header.stamp == published[2], "room_at after map_segmentation"
     goal_id = handle.comm_state_machine.action_goal.goal_id.id
     mine = lambda: [f.feedback for f in feedback if f.status.goal_id.id == goal_id]  # noqa: E731
     wait_for(lambda: len(mine()) == 3, "the goal's three feedback messages")
@@ -529,6 +543,60 @@ def check_action(grid, expected):
     subscriber.unregister()
     print("map_segmentation: the result is segment_map's (%d rooms), feedback %s; a bad option aborts: %s" %
           (len(result.rooms.rooms), ", ".join("%s %.2f" % sp for sp in stages), bad.get_result().error))
+
+
+def labels_of(message):
+    return struct.unpack("<%dH" % (len(message.data) // 2), bytes(message.data))
+
+
+def same_partition(a, b):
+    forward, backward = {}, {}
+    for x, y in zip(a, b):
+        if (x == 0) != (y == 0) or forward.setdefault(x, y) != y or backward.setdefault(y, x) != x:
+            return False
+    return True
+
+
+def check_settling(args, env, work, log, grids, publisher, received):
+    """The growing sequence again to a node that settles after 0.5 s and keeps a ledger: at rest it publishes
+    segment_map's rooms under the live ids; restarted, it gives the final map the same ids."""
+    ledger = os.path.join(work, "ledger.txt")
+    command = [args.node, "__name:=topocut", "_settle_after:=0.5", "_id_ledger:=" + ledger]
+
+    def start():
+        node = subprocess.Popen(command, env=env, start_new_session=True, stdout=log, stderr=subprocess.STDOUT)
+        node_holder.append(node)
+        wait_for(lambda: publisher.get_num_connections() > 0, "the settling node to subscribe to /map")
+        time.sleep(0.5)
+        return node
+
+    def settled_after(count):
+        return [json.loads(t.data)["kind"] for t in received["timing"][count:]].count("settled")
+
+    node = start()
+    for k, g in enumerate(grids[1:]):
+        count = len(received["labels"])
+        publisher.publish(occupancy_grid_message(g, 100 + k))
+        wait_for(lambda: len(received["labels"]) > count, "rooms for map %d" % k)
+    live = labels_of(received["labels"][-1])
+    count = len(received["timing"])
+    wait_for(lambda: settled_after(count) == 1, "the node to settle")
+    settled = labels_of(received["labels"][-1])
+    batch = labels_of(segment_map(grids[-1]).labels)
+    assert same_partition(settled, batch), "the settled rooms are not segment_map's"
+    kept = sum(1 for x, y in zip(live, settled) if x and x == y) / max(1, sum(1 for x in live if x))
+    time.sleep(1.0)
+    assert settled_after(count) == 1, "the node settled twice without a new map"
+    stop(node)
+    assert os.path.exists(ledger), "no ledger written"
+    node = start()
+    count = len(received["labels"])
+    publisher.publish(occupancy_grid_message(grids[-1], 200))
+    wait_for(lambda: len(received["labels"]) > count, "rooms after the restart")
+    assert labels_of(received["labels"][-1]) == settled, "a restarted node with the ledger gave other ids"
+    stop(node)
+    print("settling: segment_map's rooms after 0.5 s at rest (%.1f %% of the live labels kept their id); the same "
+          "ids after a restart with ~id_ledger" % (100.0 * kept))
 
 
 def check_node_arguments(args, env, work, node):
@@ -585,7 +653,7 @@ def check_node_log(node_log, grid, rooms):
     """The start-up lines (topics, services, action, parameters) and the line of the map just segmented."""
     for needle in (b"maps from /map; rooms on /rooms/labels, /rooms/grid, /rooms/rooms",
                    b"services /topocut/segment_map, /topocut/room_at; action /topocut/map_segmentation",
-                   b"parameters defaults: concavity 2.5, robot_radius 0",
+                   b"parameters given: settle_after 0; defaults: concavity 2.5, robot_radius 0",
                    b"topocut_node: map %d x %d at %g m: %d rooms" % (grid["width"], grid["height"], grid["resolution"], rooms)):
         wait_for(lambda: log_has(node_log, needle), "the node to log %r" % needle)
     print("the node logs its names and parameters at start and one line per map")

@@ -1,8 +1,10 @@
 // segment(), load_map(), IncrementalSegmenter and their result types (picklable: a state tuple each).
 #include <cmath>
+#include <fstream>
 #include <limits>
 #include <memory>
 #include <mutex>
+#include <sstream>
 #include <type_traits>
 #include <vector>
 
@@ -14,6 +16,7 @@
 #include "python/options.h"
 #include "python/state.h"
 #include "topocut/core/value_ranges.h"
+#include "topocut/io/atomic_file.h"
 #include "topocut/io/map_loader.h"
 #include "topocut/io/rooms_geojson.h"
 #include "topocut/io/rooms_json.h"
@@ -379,6 +382,22 @@ class PyIncremental {
     const std::lock_guard<std::mutex> lock(mutex_);
     segmenter_.reset();
   }
+  void save_ledger(const std::string& path) {
+    std::ostringstream text;
+    {
+      py::gil_scoped_release release;
+      const std::lock_guard<std::mutex> lock(mutex_);
+      segmenter_.save_ledger(text);
+    }
+    write_file_atomically(path, text.str());
+  }
+  void load_ledger(const std::string& path) {
+    std::ifstream in(path);
+    if (!in) throw Error("cannot read the id ledger " + path);
+    py::gil_scoped_release release;
+    const std::lock_guard<std::mutex> lock(mutex_);
+    segmenter_.load_ledger(in);
+  }
 
  private:
   std::mutex mutex_;
@@ -531,7 +550,15 @@ void bind_segmentation(py::module_& m) {
       .def_property_readonly("last_update", getter<PyIncremental>([](PyIncremental& s) { return s.last_update(); }),
                              "'unchanged', 'incremental' or 'batch'")
       .def("reset", [](const py::object& self) { state_of<PyIncremental>(self).reset(); },
-           "Forgets everything; the next update starts afresh.");
+           "Forgets everything; the next update starts afresh.")
+      .def("save_ledger", [](const py::object& self, const std::string& path) { state_of<PyIncremental>(self).save_ledger(path); },
+           py::arg("path"),
+           "Writes the room ids with the latest rooms to path (atomically), for load_ledger() after a restart.\n"
+           "Raises ValueError before the first update or when the file cannot be written.")
+      .def("load_ledger", [](const py::object& self, const std::string& path) { state_of<PyIncremental>(self).load_ledger(path); },
+           py::arg("path"),
+           "Forgets everything, then reads a ledger save_ledger() wrote: the next update gives the saved rooms\n"
+           "their ids back where they overlap. Raises ValueError on a missing or damaged file.");
 }
 
 }  // namespace topocut::python

@@ -96,28 +96,18 @@ void IncrementalSegmenter::State::match_ids(const Region& region, RegionPieces& 
   }
   hold_back_splits(region, found);
   hold_back_merges(region, found);
-  std::vector<int> fresh;
+  // The other pieces (numbered in raster order of their first cells, as batch numbers rooms) are named
+  // by the ledger: back the id of a room that disappeared where the piece lies, else a new one; ids
+  // of rooms still alive (those retiring now included) are not given twice.
+  std::vector<int> named(id_of_piece.size(), -1);  // -1: has its id, left alone
   for (int p = 1; p <= pieces; ++p)
-    if (id_of_piece[static_cast<std::size_t>(p)] == 0 && t.cells[static_cast<std::size_t>(p)] > 0) fresh.push_back(p);
-  std::sort(fresh.begin(), fresh.end(), [&](int a, int b) {
-    return t.first_cell[static_cast<std::size_t>(a)] < t.first_cell[static_cast<std::size_t>(b)];
+    if (id_of_piece[static_cast<std::size_t>(p)] == 0 && t.cells[static_cast<std::size_t>(p)] > 0) named[static_cast<std::size_t>(p)] = 0;
+  report.new_rooms = ledger.name(region.window, found.local, found.raw, named, [&](int id) {
+    return !rooms[static_cast<std::size_t>(id)].alive && !reused[static_cast<std::size_t>(id)];
   });
-  // A piece where a room that disappeared earlier lay takes its id back (revived_ids()); ids of rooms
-  // still alive (those retiring now included) are not given twice.
-  const cv::Rect& window = region.window;
-  std::vector<int> revived(id_of_piece.size(), -1);  // -1: not fresh, left alone
-  for (const int p : fresh) revived[static_cast<std::size_t>(p)] = 0;
-  revived_ids(retired(window), found.local, found.raw, revived, [&](int id) {
-    return id < next_id && !rooms[static_cast<std::size_t>(id)].alive && !reused[static_cast<std::size_t>(id)];
-  });
-  int new_rooms = 0;
-  for (const int p : fresh) {
-    const int back = revived[static_cast<std::size_t>(p)];
-    id_of_piece[static_cast<std::size_t>(p)] = back > 0 ? back : next_id++;
-    new_rooms += back <= 0;
-  }
-  report.new_rooms = new_rooms;
-  rooms.resize(static_cast<std::size_t>(next_id));
+  for (int p = 1; p <= pieces; ++p)
+    if (named[static_cast<std::size_t>(p)] > 0) id_of_piece[static_cast<std::size_t>(p)] = named[static_cast<std::size_t>(p)];
+  rooms.resize(static_cast<std::size_t>(ledger.next_id()));
 }
 
 // Hysteresis on splits: a piece without an old id that is mostly cut from one old room whose id went
@@ -128,12 +118,8 @@ void IncrementalSegmenter::State::match_ids(const Region& region, RegionPieces& 
 void IncrementalSegmenter::State::hold_back_splits(const Region& region, RegionPieces& found) {
   const PieceTally& t = found.tally;
   const std::size_t columns = static_cast<std::size_t>(t.n_old) + 1;
-  std::vector<std::pair<int, int>> across;  // pieces (index + 1) on the two sides of a cut
-  for (const Segment2& c : found.set.cuts) {
-    Point2 left, right;
-    if (!cut_sides(c.a, c.b, left, right)) continue;
-    across.emplace_back(piece_containing(found.set.pieces, left) + 1, piece_containing(found.set.pieces, right) + 1);
-  }
+  std::vector<std::pair<int, int>> across;  // pieces on the two sides of a passage
+  for (const Passage& p : found.rooms.passages) across.emplace_back(p.room_a, p.room_b);
   auto next_to_room = [&](int piece, int id) {
     return std::any_of(across.begin(), across.end(), [&](const std::pair<int, int>& a) {
       return (a.first == piece && a.second > 0 && found.id_of_piece[static_cast<std::size_t>(a.second)] == id) ||
@@ -225,7 +211,7 @@ std::vector<int> IncrementalSegmenter::State::retire_old_rooms(const Region& reg
     for (int c = 0; c < window.width; ++c) {
       if (!in[c]) continue;
       const int old = l[c];
-      if (old > 0 && !found.reused[static_cast<std::size_t>(old)]) retired.at<int>(window.y + r, window.x + c) = old;
+      if (old > 0 && !found.reused[static_cast<std::size_t>(old)]) ledger.retire(window.y + r, window.x + c, old);
       if (old > 0 && found.held_piece[static_cast<std::size_t>(old)] == k[c]) {
         RegionPieces::HeldCells& h = found.held[static_cast<std::size_t>(held_index[static_cast<std::size_t>(old)])];
         const int gc = window.x + c, gr = window.y + r;
@@ -247,7 +233,7 @@ std::vector<int> IncrementalSegmenter::State::retire_old_rooms(const Region& reg
 // Every piece that labels a cell belongs to a live room, its state rebuilt from its pieces' cells
 // alone (nothing absorbed since) and its polygon, in world metres, that of its largest piece (a
 // room holding back a split has two).
-void IncrementalSegmenter::State::adopt_pieces(const RegionPieces& found, const WindowFrame& frame) {
+void IncrementalSegmenter::State::adopt_pieces(const RegionPieces& found) {
   const PieceTally& t = found.tally;
   std::vector<int> largest(rooms.size(), 0);  // by id: its piece with the most cells
   for (int p = 1; p <= found.pieces; ++p) {
@@ -274,8 +260,7 @@ void IncrementalSegmenter::State::adopt_pieces(const RegionPieces& found, const 
   }
   for (std::size_t id = 1; id < rooms.size(); ++id) {
     if (largest[id] == 0 || found.remainder(static_cast<int>(id)) != nullptr) continue;  // traced later
-    const PolygonWithHoles world = to_world_polygon(found.set.pieces[static_cast<std::size_t>(largest[id]) - 1], frame);
-    refresh_room(static_cast<int>(id), &world);
+    refresh_room(static_cast<int>(id), &found.rooms.rooms[static_cast<std::size_t>(largest[id]) - 1].polygon);
   }
 }
 
@@ -338,7 +323,7 @@ void IncrementalSegmenter::State::trace_partial_rooms(const RegionPieces& found,
       return a.pixel_count < b.pixel_count;
     });
     if (largest == parts.end()) continue;
-    const WindowFrame frame{origin, resolution, box, static_cast<double>(result.labels.rows - box.height - box.y)};
+    const WindowFrame frame = window_frame(box);
     const PolygonWithHoles world = to_world_polygon(largest->polygon, frame);
     refresh_room(id, &world);
   }
@@ -401,31 +386,22 @@ void IncrementalSegmenter::State::keep_border_passages(const Region& region, con
   }
 }
 
-// Every cut of the new decomposition between two different rooms is a passage, a door if the
-// decomposition found it as one.
-void IncrementalSegmenter::State::add_new_passages(const RegionPieces& found, const WindowFrame& frame,
-                                                   PassageList& out) const {
-  auto room_of = [&](const Point2& window_point) {
-    const int piece = piece_containing(found.set.pieces, window_point);
-    if (piece < 0) return 0;
-    const std::size_t p = static_cast<std::size_t>(piece) + 1;
-    return found.tally.cells[p] > 0 ? found.id_of_piece[p] : 0;
-  };
-  for (std::size_t k = 0; k < found.set.cuts.size(); ++k) {
-    const Segment2& cut = found.set.cuts[k];
-    Point2 left, right;
-    if (!cut_sides(cut.a, cut.b, left, right)) continue;
-    const int a = room_of(left), b = room_of(right);
+// Every passage of the new decomposition between two different rooms (a held split's pieces share
+// one) stays, with the rooms' ids.
+void IncrementalSegmenter::State::add_new_passages(const RegionPieces& found, PassageList& out) const {
+  for (Passage passage : found.rooms.passages) {
+    const int a = found.id_of_piece[static_cast<std::size_t>(passage.room_a)];
+    const int b = found.id_of_piece[static_cast<std::size_t>(passage.room_b)];
     if (a == 0 || b == 0 || a == b) continue;
-    Passage passage;
     passage.room_a = std::min(a, b);
     passage.room_b = std::max(a, b);
-    passage.cut = {frame.to_world(cut.a), frame.to_world(cut.b)};
-    passage.width = std::hypot(cut.b.x - cut.a.x, cut.b.y - cut.a.y) * resolution;
-    passage.door = is_door(passage, options.segment.doors);
-    passage.rule = k < found.set.rules.size() ? found.set.rules[k] : CutRule::kDecomposition;
     out.passages.push_back(passage);
   }
+}
+
+// Window grid coordinates of window against the map's world frame.
+WindowFrame IncrementalSegmenter::State::window_frame(const cv::Rect& window) const {
+  return WindowFrame{origin, resolution, window, static_cast<double>(result.labels.rows - window.height - window.y)};
 }
 
 // result.passages in one order whatever the update history: by rooms, then cut, then as found.

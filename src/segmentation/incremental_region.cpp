@@ -116,10 +116,9 @@ bool IncrementalSegmenter::State::redecompose(Region region, std::vector<int>& t
   std::vector<cv::Rect> outline_boxes;  // taken before refresh_room replaces the polygons
   for (const RegionPieces::Remainder& rest : found.remainders) outline_boxes.push_back(outline_box(rest.id));
   const std::vector<int> removed = retire_old_rooms(region, found);
-  const double y_offset = result.labels.rows - window.height - window.y;
-  const WindowFrame frame{origin, resolution, window, y_offset};
+  const WindowFrame frame = window_frame(window);
   for (const int id : removed) refresh_room(id, nullptr);
-  adopt_pieces(found, frame);
+  adopt_pieces(found);
   adopt_held_rooms(found, frame);
   trace_partial_rooms(found, window, outline_boxes);
   // Rooms absorbed into this decomposition are refreshed here; the caller must not revive them.
@@ -130,9 +129,9 @@ bool IncrementalSegmenter::State::redecompose(Region region, std::vector<int>& t
   // Passages: cuts on the region's border keep their outside room and find their inside one again;
   // cuts inside the region are replaced by the new decomposition's cuts.
   PassageList list;
-  list.passages.reserve(result.passages.size() + found.set.cuts.size());
+  list.passages.reserve(result.passages.size() + found.rooms.passages.size());
   keep_border_passages(region, found, frame, list);
-  add_new_passages(found, frame, list);
+  add_new_passages(found, list);
   store_sorted(list);
   return true;
 }
@@ -201,7 +200,6 @@ void IncrementalSegmenter::State::frame_region(Region& region) const {
 // when a partial room could not keep its id on its rest: it must then be decomposed whole.
 bool IncrementalSegmenter::State::decompose_partially(Region& region, RegionPieces& found) {
   found = decompose_region(region);
-  label_pieces(region, found);
   if (found.pieces == 0) return true;  // nothing to decompose: redecompose() decides
   if (!find_kept_pieces(region, found)) return false;
   found.tally = tally_pieces(result.labels, found, region);
@@ -213,12 +211,12 @@ bool IncrementalSegmenter::State::decompose_partially(Region& region, RegionPiec
   }
   // match_ids votes on held splits and merges and hands out ids: undone if the trial fails.
   const std::vector<RoomState> saved_rooms = rooms;
-  const int saved_next_id = next_id;
+  const IdLedger saved_ledger = ledger;  // only its next id changes here
   const IncrementalUpdateReport saved_report = report;
   match_ids(region, found);
   if (partial_rooms_hold_together(region, found)) return true;
   rooms = saved_rooms;
-  next_id = saved_next_id;
+  ledger = saved_ledger;
   report = saved_report;
   return false;
 }
@@ -269,24 +267,20 @@ RegionPieces IncrementalSegmenter::State::decompose_region(const Region& region)
       floor_cells += out_floor[c] & 1;
     }
   }
-  if (floor_cells == 0) return found;
-  const FreeSpacePolygons polygons = free_space_polygons(region_floor, resolution, options.segment.contours);
-  const OccupancyGrid surroundings{labelled(window), resolution, {}};
-  for (const FreeSpaceComponent& component : polygons.components)
-    found.set.append(decompose_component(component, surroundings, options.segment));
-  if (!found.set.pieces.empty()) found.set = join_open_rooms(found.set, surroundings, options.segment.open_rooms);
-  return found;
-}
-
-// Every free cell of the region gets its piece (index + 1 in found.local).
-void IncrementalSegmenter::State::label_pieces(const Region& region, RegionPieces& found) const {
-  found.pieces = static_cast<int>(found.set.pieces.size());
-  if (found.pieces > 0) {
-    found.local = rasterize_polygons(found.set.pieces, region.window.size());
-    fill_free_space_labels(found.local, found.raw);
-  } else {
-    found.local = cv::Mat::zeros(region.window.size(), CV_32SC1);
+  if (floor_cells == 0) {
+    found.local = cv::Mat::zeros(window.size(), CV_32SC1);
+    return found;
   }
+  // segment()'s stages over the window (segment_input), labelling the region's cells only.
+  SegmentationInput input;
+  input.floor = region_floor;
+  input.labelled = OccupancyGrid{labelled(window), resolution, {}};
+  const WindowFrame frame = window_frame(window);
+  input.labelled.origin = frame.to_world(Point2{-0.5, -0.5});
+  found.rooms = segment_input(input, options.segment, raw);
+  found.local = found.rooms.labels;
+  found.pieces = static_cast<int>(found.rooms.rooms.size());
+  return found;
 }
 
 // A partial room keeps its id on every piece touching its cells outside near_change across the

@@ -24,38 +24,6 @@ using namespace incremental;
 
 namespace {
 
-constexpr double kMaxReach = 1 << 28;  // cells: beyond every map's side, and a few of them add up within an int
-
-bool trivial_binarization(const BinarizeOptions& b) {
-  return b.robot_radius == 0.0 && b.opening_size == 0.0 && b.median_size == 0.0;
-}
-
-// How far (cells) a changed cell can change the binarized free space: inflation radius, opening
-// and median windows, plus slack for rounding. Summed in double and capped far beyond any map's
-// side (grown() clips to the map): lengths at their limit and the finest resolution overflow an int.
-int binarization_reach(const BinarizeOptions& b, double resolution) {
-  if (trivial_binarization(b)) return 0;
-  double reach = 2;
-  if (b.robot_radius > 0.0) reach += std::ceil(b.robot_radius / resolution) + 1;
-  if (b.opening_size > 0.0) reach += std::round(b.opening_size / resolution) + 1;
-  if (b.median_size > 0.0) reach += std::floor(std::round(b.median_size / resolution) / 2) + 2;
-  return static_cast<int>(std::min(reach, kMaxReach));
-}
-
-// How far (cells) a changed cell can change what the cleaning keeps: the thickness test (a disc of
-// min_width, grown by a quarter of it) and the obstacle specks change the floor nearby; whether a
-// removed cell is inside the building (labelled) or outside (not) depends on the structure within
-// inside_closing of it, so a wall seen there can bring it in or leave it out.
-int cleaning_reach(const FreeSpaceCleaningOptions& o, double resolution) {
-  return static_cast<int>(std::min(std::ceil((1.25 * o.min_width + o.max_obstacle_speck + o.inside_closing) / resolution) + 2, kMaxReach));
-}
-
-// The surroundings the cleaning of a window is given beyond it: the building's inside is judged by
-// closing gaps up to inside_closing, and a ray ends on what lies around it.
-int cleaning_context(const FreeSpaceCleaningOptions& o, double resolution) {
-  return static_cast<int>(std::min(cleaning_reach(o, resolution) + std::ceil(o.inside_closing / resolution), kMaxReach));
-}
-
 // Bounding box of the cells that differ between a and b inside window: a row-wise memcmp first,
 // so unchanged rows cost a fraction of a full comparison.
 cv::Rect changed_box(const cv::Mat& a, const cv::Mat& b, const cv::Rect& window) {
@@ -85,39 +53,6 @@ std::size_t polygon_bytes(const PolygonWithHoles& p) {
   return n * sizeof(Point2) + p.holes.capacity() * sizeof(Ring);
 }
 
-// The binarized free space over window (255 free), computed with `reach` cells of context around
-// it, so that it equals the whole map's binarization there.
-cv::Mat binarized_window(const OccupancyGrid& grid, const cv::Rect& window, const BinarizeOptions& binarize,
-                         int reach) {
-  cv::Mat new_bin;
-  if (window.empty()) return new_bin;
-  if (trivial_binarization(binarize)) {
-    new_bin = grid.cells(window) == kFree;
-    return new_bin;
-  }
-  const cv::Rect context = grown(window, reach, grid.cells.size());
-  OccupancyGrid sub;
-  sub.cells = grid.cells(context);
-  sub.resolution = grid.resolution;
-  new_bin = free_space_mask(sub, binarize)(window - context.tl()).clone();
-  return new_bin;
-}
-
-// Whether every thin part the cleaning of context judged (ray or not, by all its cells) and that
-// reaches into inner lies within context but for the map's own edges: a part running out of the
-// context across the map would be judged on more cells by the whole map's cleaning.
-bool thin_parts_judged_whole(const CleanedFreeSpace& cleaned, const cv::Rect& context, const cv::Rect& inner,
-                             const cv::Size& map) {
-  for (const cv::Rect& part : cleaned.thin_parts) {
-    if ((part & inner).empty()) continue;
-    const bool cut = (part.x == 0 && context.x > 0) || (part.y == 0 && context.y > 0) ||
-                     (part.br().x == context.width && context.br().x < map.width) ||
-                     (part.br().y == context.height && context.br().y < map.height);
-    if (cut) return false;
-  }
-  return true;
-}
-
 }  // namespace
 
 void IncrementalSegmenter::State::start_frame(const OccupancyGrid& grid) {
@@ -127,14 +62,33 @@ void IncrementalSegmenter::State::start_frame(const OccupancyGrid& grid) {
   floor = cv::Mat::zeros(grid.cells.size(), CV_8UC1);
   labelled = cells.clone();
   result.labels = cv::Mat::zeros(grid.cells.size(), CV_32SC1);
-  retired = cv::Mat::zeros(grid.cells.size(), CV_32SC1);
   result.resolution = grid.resolution;
   result.origin = grid.origin;
   result.rooms.clear();
   result.passages.clear();
-  rooms.assign(static_cast<std::size_t>(next_id), RoomState{});
+  ledger.clear(grid.cells.size());
+  rooms.assign(static_cast<std::size_t>(ledger.next_id()), RoomState{});
   free_cells = 0;
   initialised = true;
+  take_loaded_ledger();
+}
+
+// A loaded ledger (load_ledger()) in the new frame: its rooms become the previous ones, so that the
+// first update carries their ids. Ignored when the saved map does not lie on whole cells of this one.
+void IncrementalSegmenter::State::take_loaded_ledger() {
+  if (!loaded) return;
+  SavedLedger saved = std::move(*loaded);
+  loaded.reset();
+  const Segmentation& old = saved.published;
+  cv::Point shift;
+  if (std::abs(old.resolution - resolution) > 1e-9 * resolution ||
+      !frame_shift(old.origin, old.labels.rows, origin, cells.rows, resolution, shift))
+    return;
+  const cv::Rect kept = cv::Rect(shift, old.labels.size()) & cv::Rect(cv::Point(), cells.size());
+  if (!kept.empty()) old.labels(kept - shift).copyTo(result.labels(kept));
+  ledger = std::move(saved.ledger);
+  ledger.move(shift, cells.size());
+  rooms.assign(static_cast<std::size_t>(ledger.next_id()), RoomState{});
 }
 
 // Re-embeds the state into grid's frame (same resolution). Returns false when the new frame does
@@ -159,7 +113,7 @@ bool IncrementalSegmenter::State::move_frame(const OccupancyGrid& grid, bool& re
   floor = moved(floor, CV_8UC1, 0);
   labelled = moved(labelled, CV_8UC1, kUnknown);
   result.labels = moved(result.labels, CV_32SC1, 0);
-  retired = moved(retired, CV_32SC1, 0);
+  ledger.move(shift, grid.cells.size());
   result.origin = grid.origin;
   origin = grid.origin;
   for (RoomState& room : rooms) {
@@ -239,11 +193,11 @@ void IncrementalSegmenter::State::guarded(const Work& work) {
     work();
   } catch (...) {
     IncrementalOptions keep_options = options;
-    const int keep_next = next_id;
+    const int keep_next = ledger.next_id();
     *this = State{};
     options = keep_options;
-    next_id = keep_next;
-    rooms.assign(static_cast<std::size_t>(next_id), RoomState{});
+    ledger = IdLedger(keep_next, cv::Mat());
+    rooms.assign(static_cast<std::size_t>(keep_next), RoomState{});
     throw;
   }
 }
@@ -323,10 +277,9 @@ void IncrementalSegmenter::State::segment_whole(const OccupancyGrid& grid, const
     batch.resolution = grid.resolution;
     batch.origin = grid.origin;
   }
-  const int first_new = next_id;
+  const int first_new = ledger.next_id();
   const int count = static_cast<int>(batch.rooms.size());
-  const std::vector<int> ids = carried_ids(result.labels, batch.labels, count, next_id, retired);
-  remember_retired(ids);
+  const std::vector<int> ids = ledger.carry(result.labels, batch.labels, count);
   int kept = 0;
   for (std::size_t id = 1; id < rooms.size(); ++id) kept += rooms[id].alive;
   report.redecomposed_rooms = kept;
@@ -338,25 +291,11 @@ void IncrementalSegmenter::State::segment_whole(const OccupancyGrid& grid, const
   result.passages = std::move(carried.passages);
   result.resolution = grid.resolution;
   result.origin = grid.origin;
-  rooms.assign(static_cast<std::size_t>(next_id), RoomState{});
+  rooms.assign(static_cast<std::size_t>(ledger.next_id()), RoomState{});
   for (const Room& room : result.rooms) rooms[static_cast<std::size_t>(room.id)].alive = true;
   recount_rooms();
   report.region = cv::Rect(0, 0, grid.width(), grid.height());
   report.region_cells = static_cast<int>(free_cells);
-}
-
-// Before result.labels take the ids of a whole-map update: the cells of every room whose id goes to
-// no new room are where it last lay.
-void IncrementalSegmenter::State::remember_retired(const std::vector<int>& ids) {
-  std::vector<char> kept(static_cast<std::size_t>(next_id), 0);
-  for (const int id : ids)
-    if (id > 0) kept[static_cast<std::size_t>(id)] = 1;
-  for (int r = 0; r < retired.rows; ++r) {
-    const int* l = result.labels.ptr<int>(r);
-    int* out = retired.ptr<int>(r);
-    for (int c = 0; c < retired.cols; ++c)
-      if (l[c] > 0 && !kept[static_cast<std::size_t>(l[c])]) out[c] = l[c];
-  }
 }
 
 void IncrementalSegmenter::State::process(const OccupancyGrid& grid, const cv::Rect& changed) {
@@ -401,13 +340,15 @@ void IncrementalSegmenter::State::process(const OccupancyGrid& grid, const cv::R
 // The state's cells, floor and labelled cells are the grid's from here on; the returned mask is all
 // that remains of how they were.
 ChangeMask IncrementalSegmenter::State::take_changes(const OccupancyGrid& grid, const cv::Rect& changed) {
-  const SegmentOptions& o = options.segment;
-  const int reach = binarization_reach(o.binarize, resolution) + (o.clean ? cleaning_reach(o.cleaning, resolution) : 0);
   ChangeMask mask;
-  mask.window = grown(changed, reach, grid.cells.size());
+  mask.window = grown(changed, front_end_reach(options.segment, resolution), grid.cells.size());
   const cv::Rect& window = mask.window;
-  cv::Mat new_floor, new_labelled;
-  mask.judged_beyond = !front_end_window(grid, window, new_floor, new_labelled);
+  if (window.empty()) return mask;
+  // segment()'s front end over the window (segmentation_input): what lies farther keeps its last cleaning.
+  const SegmentationInput input = segmentation_input(grid, window, options.segment);
+  const cv::Mat& new_floor = input.floor;
+  const cv::Mat& new_labelled = input.labelled.cells;
+  mask.judged_beyond = !input.thin_parts_within;
 
   mask.change = cv::Mat::zeros(window.size(), CV_8UC1);
   for (int r = 0; r < window.height; ++r) {
@@ -423,38 +364,10 @@ ChangeMask IncrementalSegmenter::State::take_changes(const OccupancyGrid& grid, 
       mask.changed_cells += d[c] != 0;
     }
   }
-  if (!changed.empty()) grid.cells(changed).copyTo(cells(changed));
-  if (!window.empty()) {
-    new_floor.copyTo(floor(window));
-    new_labelled.copyTo(labelled(window));
-  }
+  grid.cells(changed).copyTo(cells(changed));
+  new_floor.copyTo(floor(window));
+  new_labelled.copyTo(labelled(window));
   return mask;
-}
-
-// segment()'s front end over window: the binarized free space, cleaned (options.segment.clean) with
-// the cleaning's context around the window, as the floor to decompose and the cells to label.
-bool IncrementalSegmenter::State::front_end_window(const OccupancyGrid& grid, const cv::Rect& window, cv::Mat& new_floor,
-                                                   cv::Mat& new_labelled) const {
-  const SegmentOptions& o = options.segment;
-  const int reach = binarization_reach(o.binarize, resolution);
-  if (window.empty()) return true;
-  if (!o.clean) {
-    new_floor = binarized_window(grid, window, o.binarize, reach);
-    new_labelled = grid.cells(window).clone();
-    return true;
-  }
-  const cv::Rect context = grown(window, cleaning_context(o.cleaning, resolution), grid.cells.size());
-  const cv::Mat free = binarized_window(grid, context, o.binarize, reach);
-  const cv::Rect inner = window - context.tl();
-  if (cv::countNonZero(free) == 0) {
-    new_floor = cv::Mat::zeros(window.size(), CV_8UC1);
-    new_labelled = grid.cells(window).clone();
-    return true;
-  }
-  const CleanedFreeSpace cleaned = clean_free_space(free, grid.cells(context), resolution, o.cleaning);
-  new_floor = cleaned.floor(inner).clone();
-  new_labelled = cells_after_cleaning(grid.cells(context), cleaned)(inner).clone();
-  return thin_parts_judged_whole(cleaned, context, inner, grid.cells.size());
 }
 
 // Blobs of changed cells (8-connected), each with the rooms it touches in raster order of first
@@ -464,17 +377,22 @@ std::vector<Blob> IncrementalSegmenter::State::find_blobs(const ChangeMask& mask
   const cv::Rect& window = mask.window;
   const cv::Mat& labels = result.labels;
   const int h = labels.rows, w = labels.cols;
-  cv::Mat stats, centroids;
-  const int n = cv::connectedComponentsWithStats(mask.change != 0, blob_of, stats, centroids, 8, CV_32S);
+  // The changed cells lie mostly well inside the window (grown by the front end's reach): the
+  // components are found within their bounding box.
+  const cv::Rect active = cv::boundingRect(mask.change);
+  blob_of = cv::Mat::zeros(window.size(), CV_32SC1);
+  cv::Mat active_blobs = blob_of(active), stats, centroids;
+  const int n = cv::connectedComponentsWithStats(mask.change(active) != 0, active_blobs, stats, centroids, 8, CV_32S);
+  CV_Assert(active_blobs.data == blob_of(active).data);  // written in place
   std::vector<Blob> blobs(static_cast<std::size_t>(n));
   for (int b = 1; b < n; ++b)
     blobs[static_cast<std::size_t>(b)].box =
-        cv::Rect(stats.at<int>(b, cv::CC_STAT_LEFT) + window.x, stats.at<int>(b, cv::CC_STAT_TOP) + window.y,
+        cv::Rect(stats.at<int>(b, cv::CC_STAT_LEFT) + window.x + active.x, stats.at<int>(b, cv::CC_STAT_TOP) + window.y + active.y,
                  stats.at<int>(b, cv::CC_STAT_WIDTH), stats.at<int>(b, cv::CC_STAT_HEIGHT));
-  for (int r = 0; r < window.height; ++r) {
+  for (int r = active.y; r < active.y + active.height; ++r) {
     const unsigned char* d = mask.change.ptr<unsigned char>(r);
     const int* b = blob_of.ptr<int>(r);
-    for (int c = 0; c < window.width; ++c) {
+    for (int c = active.x; c < active.x + active.width; ++c) {
       if (d[c] == 0) continue;
       Blob& blob = blobs[static_cast<std::size_t>(b[c])];
       const int gr = window.y + r, gc = window.x + c;
@@ -617,7 +535,7 @@ void IncrementalSegmenter::State::label_from_nearest_rooms(const std::vector<int
                                                            std::vector<int>& touched_rooms) {
   if (cells_to_label.empty()) return;
   cv::Mat& labels = result.labels;
-  complete_unlabelled_cells(labels, labelled == kFree, cells_to_label);
+  label_near_cells(cells_to_label);
   const int* data = labels.ptr<int>(0);
   for (const int index : cells_to_label) {
     const int id = data[index];
@@ -630,6 +548,39 @@ void IncrementalSegmenter::State::label_from_nearest_rooms(const std::vector<int
     room.box = unite(room.box, cv::Rect(c, r, 1, 1));
     add_unique(touched_rooms, id);
   }
+}
+
+// The listed cells labelled from the rooms within a margin around them first (a few scans' cells on a
+// map of millions: the whole map's free mask and label index would cost more than the labelling);
+// the whole map only for cells that finds no room for.
+void IncrementalSegmenter::State::label_near_cells(const std::vector<int>& cells_to_label) {
+  cv::Mat& labels = result.labels;
+  const int cols = labels.cols;
+  int c0 = INT_MAX, c1 = -1, r0 = INT_MAX, r1 = -1;
+  for (const int index : cells_to_label) {
+    c0 = std::min(c0, index % cols), c1 = std::max(c1, index % cols);
+    r0 = std::min(r0, index / cols), r1 = std::max(r1, index / cols);
+  }
+  constexpr int kMargin = 64;  // cells: beyond a room's reach of a speck on any map seen so far
+  const cv::Rect box = grown(cv::Rect(c0, r0, c1 - c0 + 1, r1 - r0 + 1), kMargin, labels.size());
+  if (box.area() * 4 >= labels.size().area()) {
+    complete_unlabelled_cells(labels, labelled == kFree, cells_to_label);
+    return;
+  }
+  cv::Mat local = labels(box).clone();
+  std::vector<int> local_cells;
+  local_cells.reserve(cells_to_label.size());
+  for (const int index : cells_to_label) local_cells.push_back((index / cols - box.y) * box.width + index % cols - box.x);
+  complete_unlabelled_cells(local, labelled(box) == kFree, local_cells);
+  std::vector<int> rest;  // no room within the box
+  int* data = labels.ptr<int>(0);
+  const int* found = local.ptr<int>(0);
+  for (std::size_t k = 0; k < cells_to_label.size(); ++k) {
+    const int id = found[local_cells[k]];
+    if (id > 0) data[cells_to_label[k]] = id;
+    else rest.push_back(cells_to_label[k]);
+  }
+  if (!rest.empty()) complete_unlabelled_cells(labels, labelled == kFree, rest);
 }
 
 IncrementalSegmenter::IncrementalSegmenter(const IncrementalOptions& options) : state_(std::make_unique<State>()) {
@@ -674,13 +625,26 @@ const IncrementalOptions& IncrementalSegmenter::options() const { return state_-
 std::size_t IncrementalSegmenter::state_bytes() const {
   const State& s = *state_;
   std::size_t bytes = s.cells.total() * s.cells.elemSize() + s.floor.total() * s.floor.elemSize() +
-                      s.retired.total() * s.retired.elemSize() +
+                      s.ledger.bytes() +
                       s.labelled.total() * s.labelled.elemSize() + s.result.labels.total() * s.result.labels.elemSize();
   bytes += s.rooms.capacity() * sizeof(RoomState);
   bytes += s.result.rooms.capacity() * sizeof(Room);
   for (const Room& room : s.result.rooms) bytes += polygon_bytes(room.polygon);
   bytes += s.result.passages.capacity() * sizeof(Passage);
   return bytes;
+}
+
+void IncrementalSegmenter::save_ledger(std::ostream& out) const {
+  const State& s = *state_;
+  if (!s.initialised) throw Error("there are no rooms to save ids of yet (no update so far)");
+  write_ledger(out, s.ledger, s.result);
+}
+
+void IncrementalSegmenter::load_ledger(std::istream& in) {
+  SavedLedger saved = read_ledger(in);  // throws before anything is forgotten
+  reset();
+  state_->ledger = IdLedger(saved.ledger.next_id(), cv::Mat());
+  state_->loaded = std::move(saved);
 }
 
 void IncrementalSegmenter::reset() {

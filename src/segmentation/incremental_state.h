@@ -5,6 +5,7 @@
 // becomes: ids, held splits and merges, polygons, passages).
 #include <algorithm>
 #include <climits>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -13,6 +14,7 @@
 #include "topocut/core/geometry.h"
 #include "topocut/core/occupancy_grid.h"
 #include "topocut/core/segmentation.h"
+#include "topocut/segmentation/id_ledger.h"
 #include "topocut/segmentation/incremental_segmenter.h"
 #include "topocut/segmentation/rooms_from_pieces.h"
 
@@ -101,9 +103,9 @@ struct PieceTally {
 struct RegionPieces {
   cv::Mat raw;               // 255 where a cell of the region is free (to be labelled)
   int region_cells = 0;
-  PieceSet set;              // pieces and cuts in window grid coordinates
-  int pieces = 0;
-  cv::Mat local;             // piece index + 1 of each cell of the window (0 outside the region)
+  Segmentation rooms;        // segment_input() over the window: its rooms ("pieces"), labels and passages
+  int pieces = 0;            // rooms.rooms.size()
+  cv::Mat local;             // piece (rooms' label) of each cell of the window (0 outside the region)
   PieceTally tally;
   std::vector<int> id_of_piece;  // by piece index + 1: its room id
   std::vector<char> reused;      // by old room id: its id went to a piece
@@ -173,10 +175,10 @@ struct IncrementalSegmenter::State {
   // rule); a window's cleaning cannot see that, so such a map is segmented as a whole while it lasts.
   bool uncleaned = false;
   cv::Mat labelled;  // its cells as labelled (cells_after_cleaning(): kFree cells get a room)
-  cv::Mat retired;   // where each room that disappeared last lay (its id; CV_32SC1), to give it back its id
   Segmentation result;               // result.labels is the state's label image
   std::vector<RoomState> rooms{1};   // by id; index 0 unused
-  int next_id = 1;
+  IdLedger ledger;   // the ids handed out and where rooms that disappeared lay (id_ledger.h)
+  std::optional<SavedLedger> loaded;  // a saved ledger, taken by the next whole-map update's frame
   long long free_cells = 0;
   IncrementalUpdateReport report;
 
@@ -192,22 +194,20 @@ struct IncrementalSegmenter::State {
   void detach_labels();
   void process(const OccupancyGrid& grid, const cv::Rect& changed);
   void segment_whole(const OccupancyGrid& grid, const std::string& reason);
-  void remember_retired(const std::vector<int>& ids);
+  void take_loaded_ledger();
   ChangeMask take_changes(const OccupancyGrid& grid, const cv::Rect& changed);
-  // Returns false when a thin part the window's cleaning judged reaches beyond its context.
-  bool front_end_window(const OccupancyGrid& grid, const cv::Rect& window, cv::Mat& new_floor, cv::Mat& new_labelled) const;
   std::vector<Blob> find_blobs(const ChangeMask& mask, cv::Mat& blob_of) const;
   Region choose_region(std::vector<Blob>& blobs);
   bool is_speck(const Blob& blob) const;
   std::vector<int> apply_changes(const ChangeMask& mask, const cv::Mat& blob_of, const std::vector<Blob>& blobs,
                                  std::vector<int>& nearest);
   void label_from_nearest_rooms(const std::vector<int>& cells_to_label, std::vector<int>& touched_rooms);
+  void label_near_cells(const std::vector<int>& cells_to_label);
   bool redecompose(Region region, std::vector<int>& touched_rooms);
   void add_neighbour_rooms(Region& region) const;
   void frame_region(Region& region) const;
   void decompose_whole(Region& region) const;
   RegionPieces decompose_region(const Region& region) const;
-  void label_pieces(const Region& region, RegionPieces& found) const;
   bool find_kept_pieces(const Region& region, RegionPieces& found) const;
   bool kept_pieces_are_mostly_theirs(const Region& region, const RegionPieces& found) const;
   bool partial_rooms_hold_together(const Region& region, RegionPieces& found) const;
@@ -220,10 +220,11 @@ struct IncrementalSegmenter::State {
   void hold_back_merges(const Region& region, RegionPieces& found);
   void adopt_held_rooms(const RegionPieces& found, const WindowFrame& frame);
   std::vector<int> retire_old_rooms(const Region& region, RegionPieces& found);
-  void adopt_pieces(const RegionPieces& found, const WindowFrame& frame);
+  void adopt_pieces(const RegionPieces& found);
   void keep_border_passages(const Region& region, const RegionPieces& found, const WindowFrame& frame,
                             PassageList& out) const;
-  void add_new_passages(const RegionPieces& found, const WindowFrame& frame, PassageList& out) const;
+  void add_new_passages(const RegionPieces& found, PassageList& out) const;
+  WindowFrame window_frame(const cv::Rect& window) const;
   void store_sorted(const PassageList& list);
   void refresh_room(int id, const PolygonWithHoles* polygon);
   Point2 room_centroid(const RoomState& room, int height) const;

@@ -75,19 +75,105 @@ cv::Mat segmentation_free_space(const OccupancyGrid& grid, const SegmentOptions&
   return free;
 }
 
-SegmentationInput segmentation_input(const OccupancyGrid& grid, const SegmentOptions& options) {
+namespace {
+
+// The front end's second half: the free space cleaned (options.clean) as the floor to decompose, and
+// the cells to label. always_clean: the cleaning applies even where it leaves no floor (a window).
+SegmentationInput cleaned_input(const OccupancyGrid& grid, cv::Mat free, const SegmentOptions& options, bool always_clean) {
   SegmentationInput input;
-  input.floor = segmentation_free_space(grid, options);
+  input.floor = std::move(free);
   input.labelled = grid;
   if (!options.clean) return input;
   CleanedFreeSpace cleaned = clean_free_space(input.floor, grid.cells, grid.resolution, options.cleaning);
-  if (cv::countNonZero(cleaned.floor) == 0) return input;
+  if (!always_clean && cv::countNonZero(cleaned.floor) == 0) return input;
   input.floor = cleaned.floor;
   // An unknown speck enclosed by floor is floor the sensor never reported (a cell between two
   // readings, a grey pixel of a half-seen spot), so it gets the room like the floor around it;
   // occupied specks (chair legs) stay obstacles.
   input.labelled.cells = cells_after_cleaning(grid.cells, cleaned);
   input.cleaned = std::move(cleaned);
+  return input;
+}
+
+bool trivial_binarization(const BinarizeOptions& b) {
+  return b.robot_radius == 0.0 && b.opening_size == 0.0 && b.median_size == 0.0;
+}
+
+constexpr double kMaxReach = 1 << 28;  // cells: beyond every map's side, and a few of them add up within an int
+
+// How far (cells) a changed cell can change the binarized free space: inflation radius, opening
+// and median windows, plus slack for rounding. Summed in double and capped far beyond any map's
+// side (windows are clipped to the map): lengths at their limit and the finest resolution overflow an int.
+int binarization_reach(const BinarizeOptions& b, double resolution) {
+  if (trivial_binarization(b)) return 0;
+  double reach = 2;
+  if (b.robot_radius > 0.0) reach += std::ceil(b.robot_radius / resolution) + 1;
+  if (b.opening_size > 0.0) reach += std::round(b.opening_size / resolution) + 1;
+  if (b.median_size > 0.0) reach += std::floor(std::round(b.median_size / resolution) / 2) + 2;
+  return static_cast<int>(std::min(reach, kMaxReach));
+}
+
+// How far (cells) a changed cell can change what the cleaning keeps: the thickness test (a disc of
+// min_width, grown by a quarter of it) and the obstacle specks change the floor nearby; whether a
+// removed cell is inside the building (labelled) or outside (not) depends on the structure within
+// inside_closing of it, so a wall seen there can bring it in or leave it out.
+int cleaning_reach(const FreeSpaceCleaningOptions& o, double resolution) {
+  return static_cast<int>(std::min(std::ceil((1.25 * o.min_width + o.max_obstacle_speck + o.inside_closing) / resolution) + 2, kMaxReach));
+}
+
+// Whether every thin part the cleaning of context judged (ray or not, by all its cells) and that
+// reaches into inner lies within context but for the map's own edges: a part running out of the
+// context across the map would be judged on more cells by the whole map's cleaning.
+bool thin_parts_judged_whole(const CleanedFreeSpace& cleaned, const cv::Rect& context, const cv::Rect& inner,
+                             const cv::Size& map) {
+  for (const cv::Rect& part : cleaned.thin_parts) {
+    if ((part & inner).empty()) continue;
+    const bool cut = (part.x == 0 && context.x > 0) || (part.y == 0 && context.y > 0) ||
+                     (part.br().x == context.width && context.br().x < map.width) ||
+                     (part.br().y == context.height && context.br().y < map.height);
+    if (cut) return false;
+  }
+  return true;
+}
+
+cv::Rect grown_within(const cv::Rect& r, int margin, const cv::Size& size) {
+  return cv::Rect(r.x - margin, r.y - margin, r.width + 2 * margin, r.height + 2 * margin) & cv::Rect(cv::Point(), size);
+}
+
+}  // namespace
+
+int front_end_reach(const SegmentOptions& options, double resolution) {
+  return binarization_reach(options.binarize, resolution) + (options.clean ? cleaning_reach(options.cleaning, resolution) : 0);
+}
+
+// The cleaning of a window is given its reach beyond it, and the inside_closing again: the
+// building's inside is judged by closing gaps up to inside_closing, and a ray ends on what lies
+// around it.
+int front_end_context(const SegmentOptions& options, double resolution) {
+  const FreeSpaceCleaningOptions& o = options.cleaning;
+  const int cleaning = static_cast<int>(std::min(cleaning_reach(o, resolution) + std::ceil(o.inside_closing / resolution), kMaxReach));
+  return binarization_reach(options.binarize, resolution) + (options.clean ? cleaning : 0);
+}
+
+SegmentationInput segmentation_input(const OccupancyGrid& grid, const SegmentOptions& options) {
+  return cleaned_input(grid, segmentation_free_space(grid, options), options, false);
+}
+
+SegmentationInput segmentation_input(const OccupancyGrid& grid, const cv::Rect& window, const SegmentOptions& options) {
+  const cv::Rect context = grown_within(window, front_end_context(options, grid.resolution), grid.cells.size());
+  const OccupancyGrid part = crop(grid, context);
+  const cv::Rect inner = window - context.tl();
+  cv::Mat free = has_free_cell(part.cells) ? free_space_mask(part, options.binarize) : cv::Mat();
+  SegmentationInput input;
+  if (free.empty() || cv::countNonZero(free) == 0) {
+    input.floor = cv::Mat::zeros(window.size(), CV_8UC1);
+    input.labelled = crop(grid, window);
+    return input;
+  }
+  const SegmentationInput whole = cleaned_input(part, std::move(free), options, true);
+  input.floor = whole.floor(inner).clone();
+  input.labelled = crop(whole.labelled, inner);
+  input.thin_parts_within = !options.clean || thin_parts_judged_whole(whole.cleaned, context, inner, grid.cells.size());
   return input;
 }
 
@@ -208,25 +294,56 @@ cv::Rect segmentation_box(const OccupancyGrid& grid, const SegmentOptions& optio
 
 namespace {
 
-Segmentation segment_whole(const OccupancyGrid& grid, const SegmentOptions& options, SegmentationInput& input,
+// The cells of grid that segment_input() labels: its free cells where to_label is set.
+OccupancyGrid labelled_only(const OccupancyGrid& grid, const cv::Mat& to_label) {
+  OccupancyGrid out = grid;
+  out.cells = grid.cells.clone();
+  out.cells.setTo(kOccupied, (to_label == 0) & (grid.cells == kFree));
+  return out;
+}
+
+}  // namespace
+
+Segmentation segment_input(const SegmentationInput& input, const SegmentOptions& options, const cv::Mat& to_label,
                            SegmentTimes* times) {
+  const OccupancyGrid& grid = input.labelled;
   FreeSpacePolygons polygons;
   {
     const StageTimer timer(times, SegmentStage::kFrontEnd);
-    input = segmentation_input(grid, options);
     polygons = free_space_polygons(input.floor, grid.resolution, options.contours);
   }
   PieceSet pieces;
   for (const FreeSpaceComponent& component : polygons.components)
-    pieces.append(decompose_component(component, input.labelled, options, times));
+    pieces.append(decompose_component(component, grid, options, times));
+  if (pieces.pieces.empty()) {  // a window whose floor holds no component: no room
+    Segmentation none;
+    none.labels = cv::Mat::zeros(grid.cells.size(), CV_32SC1);
+    none.resolution = grid.resolution;
+    none.origin = grid.origin;
+    return none;
+  }
   StageTimer timer(times, SegmentStage::kOpenRooms);
-  pieces = join_open_rooms(pieces, input.labelled, options.open_rooms);
+  pieces = join_open_rooms(pieces, grid, options.open_rooms);
   timer.next(SegmentStage::kLabelling);
-  Segmentation segmentation = rooms_from_pieces(input.labelled, pieces, options.labels);
+  Segmentation segmentation = rooms_from_pieces(to_label.empty() ? grid : labelled_only(grid, to_label), pieces, options.labels);
   timer.next(SegmentStage::kOutputs);
   for (Passage& passage : segmentation.passages) passage.door = is_door(passage, options.doors);
   return segmentation;
 }
+
+Segmentation segment_window(const OccupancyGrid& grid, const cv::Rect& window, const SegmentOptions& options,
+                            SegmentationInput* used, SegmentTimes* times) {
+  SegmentationInput local;
+  SegmentationInput& input = used ? *used : local;
+  {
+    const StageTimer timer(times, SegmentStage::kFrontEnd);
+    // The whole grid is not copied.
+    input = window.size() == grid.cells.size() ? segmentation_input(grid, options) : segmentation_input(crop(grid, window), options);
+  }
+  return segment_input(input, options, cv::Mat(), times);
+}
+
+namespace {
 
 // An image of the given size holding image at box and value everywhere else (uncrop()).
 cv::Mat placed(const cv::Mat& image, const cv::Size& size, const cv::Rect& box, double value) {
@@ -251,17 +368,15 @@ Segmentation segment(const OccupancyGrid& grid, const SegmentOptions& options, S
   SegmentationInput local;
   SegmentationInput& input = used ? *used : local;
   cv::Rect box;
-  OccupancyGrid part;
   {
     const StageTimer timer(times, SegmentStage::kFrontEnd);
     validate(options);
     // SLAM maps are mostly unknown around the building (gmapping's default is 4000 x 4000 cells):
     // the stages run on the known cells' box only (segmentation_box validates the grid).
     box = segmentation_box(grid, options);
-    if (box.size() != grid.cells.size()) part = crop(grid, box);
   }
-  if (box.size() == grid.cells.size()) return segment_whole(grid, options, input, times);
-  Segmentation segmentation = segment_whole(part, options, input, times);
+  Segmentation segmentation = segment_window(grid, box, options, &input, times);
+  if (box.size() == grid.cells.size()) return segmentation;
   const StageTimer timer(times, SegmentStage::kOutputs);
   segmentation.labels = placed(segmentation.labels, grid.cells.size(), box, 0);
   segmentation.origin = grid.origin;

@@ -11,9 +11,10 @@ cpp_install: the example built from pkg-config's flags and with CMake prints, on
   the rooms `topocut segment --out-json` finds (ids and areas), both builds the same, and nothing warns.
 ros_install: the installed packages are laid out for ROS (node, launch file, RViz configuration
   naming the node's topics, messages); `roslaunch topocut topocut.launch` from the install prefix
-  answers the action with `topocut segment`'s rooms, ~room_at
-  answers as `topocut segment --at` does, and the node logs the goal. On a master of its own on a
-  free port of 127.0.0.1 (ROS_MASTER_URI points there; roslaunch starts it). Exit 77: skipped.
+  answers the action with `topocut segment`'s rooms and publishes them for the map sent on /map, its
+  ~room_at then answers as `topocut segment --at` does, and the node logs the goal. On a master of
+  its own on a free port of 127.0.0.1 (ROS_MASTER_URI points there; roslaunch starts it). Exit 77:
+  skipped.
   (The feedback printed is checked for order only: ros_node_test checks all of it.)
 """
 import argparse
@@ -103,12 +104,14 @@ def check_installed_ros(prefix):
 
 
 def check_ros_install(out, err, rooms, at_lines):
-    expected = [f"room {r['id']}: {r['area']:.1f} m², inside ({r['inside'][0]:.3f}, {r['inside'][1]:.3f})" for r in rooms["rooms"]]
-    expected += [f"passage {p['rooms'][0]} - {p['rooms'][1]}: {p['kind']}, {p['width']:.2f} m" for p in rooms["passages"]]
-    expected += at_lines
+    # The example's two runs: the action's answer, then the rooms published for the map on /map and
+    # ~room_at in them (the action is a what-if: room_at answers in the published rooms only).
+    listed = [f"room {r['id']}: {r['area']:.1f} m², inside ({r['inside'][0]:.3f}, {r['inside'][1]:.3f})" for r in rooms["rooms"]]
+    listed += [f"passage {p['rooms'][0]} - {p['rooms'][1]}: {p['kind']}, {p['width']:.2f} m" for p in rooms["passages"]]
+    expected = listed + listed + at_lines
     printed = [line for line in out.splitlines() if line.startswith(("room ", "passage ", "at "))]
     if printed != expected:
-        sys.exit("the action's rooms are not topocut segment's:\n%s\nexpected:\n%s\nstderr:\n%s" %
+        sys.exit("the action's and the published rooms are not topocut segment's:\n%s\nexpected:\n%s\nstderr:\n%s" %
                  ("\n".join(printed), "\n".join(expected), err))
     # Feedback and result travel on two topics: a client drops the feedback that comes after the result,
     # so what it printed is the stages' beginning, in order (ros_node_test reads all of it on the topic).
@@ -121,8 +124,8 @@ def check_ros_install(out, err, rooms, at_lines):
     if "topocut_node: map_segmentation: map 400 x 300 at 0.05 m: %d rooms" % len(rooms["rooms"]) not in out + err:
         sys.exit("the node did not log the goal:\n" + out + err)
     print("\n".join(printed))
-    print("roslaunch topocut topocut.launch from the install prefix: the action gave topocut segment's %d rooms and "
-          "%d passages, feedback %s" % (len(rooms["rooms"]), len(rooms["passages"]), ", ".join(s for s, _ in stages)))
+    print("roslaunch topocut topocut.launch from the install prefix: the action and the map on /map gave topocut segment's "
+          "%d rooms and %d passages, feedback %s" % (len(rooms["rooms"]), len(rooms["passages"]), ", ".join(s for s, _ in stages)))
 
 
 def free_port():

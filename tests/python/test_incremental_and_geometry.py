@@ -80,6 +80,29 @@ def test_incremental_is_batch_on_a_map_given_at_once_and_at_rest():
     assert rest.labels[78, 30] == windowed.labels[78, 30]
 
 
+def test_saved_ledger_keeps_ids_across_a_restart(tmp_path):
+    world, rooms = floor_plan()
+    corridor = (slice(4, 36), slice(4, 196))
+    seg = topocut.IncrementalSegmenter()
+    with pytest.raises(ValueError):
+        seg.save_ledger(str(tmp_path / "none.txt"))  # nothing segmented yet
+    for parts in ([corridor, rooms[2]], [corridor] + rooms):  # the right room seen first
+        live = seg.update(reveal(world, parts), 0.05)
+    path = str(tmp_path / "ids.txt")
+    seg.save_ledger(path)
+    fresh = topocut.IncrementalSegmenter().update(world, 0.05)
+    assert not np.array_equal(fresh.labels, live.labels)  # a fresh start numbers the rooms otherwise
+    restarted = topocut.IncrementalSegmenter()
+    restarted.load_ledger(path)
+    assert np.array_equal(restarted.update(world, 0.05).labels, live.labels)
+    with open(path, "w") as f:
+        f.write("topocut-id-ledger 1\nnext_id -3\n")
+    with pytest.raises(ValueError, match="next_id"):
+        restarted.load_ledger(path)
+    with pytest.raises(ValueError):
+        restarted.load_ledger(str(tmp_path / "missing.txt"))
+
+
 def test_incremental_speck_and_split_options():
     world, rooms = floor_plan()
     seg = topocut.IncrementalSegmenter(speck_size=0.5, split_after=2, merge_after=2, neighbours_across_cuts=False)

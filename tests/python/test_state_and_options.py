@@ -46,6 +46,9 @@ def test_objects_made_by_new_alone_hold_nothing():
             repr(cls.__new__(cls))
     with pytest.raises(TypeError, match="holds nothing"):
         topocut.IncrementalSegmenter.__new__(topocut.IncrementalSegmenter).last_update
+    for ledger_call in ("save_ledger", "load_ledger"):  # a file name given, the missing state found first
+        with pytest.raises(TypeError, match="holds nothing"):
+            getattr(topocut.IncrementalSegmenter.__new__(topocut.IncrementalSegmenter), ledger_call)("ledger.txt")
     with pytest.raises(TypeError, match="holds nothing"):
         topocut.Segmentation.__new__(topocut.Segmentation).room_at(0.0, 0.0)
     with pytest.raises(TypeError, match="holds nothing"):

@@ -3,9 +3,11 @@
 // list, and a growing map segmented again as a whole ends on segment()'s rooms of the final map.
 #include "topocut/segmentation/incremental_segmenter.h"
 
+#include <algorithm>
 #include <array>
 #include <map>
 #include <random>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -281,6 +283,102 @@ TEST(IncrementalBatch, EveryUpdateOfRandomGrowingShrinkingShiftingGridsLabelsWha
   }
   EXPECT_EQ(updates, 1200);
   EXPECT_GT(compared, 1000);  // most grids hold free space: the property is checked, not skipped
+}
+
+// Two buildings far apart: A (three rooms off a corridor) and, up and to the right, B (two rooms and a
+// door), of which only the part left of column b_seen is known yet.
+OccupancyGrid two_buildings(int b_seen) {
+  OccupancyGrid grid{cv::Mat(200, 420, CV_8UC1, cv::Scalar(kUnknown)), 0.05, {-3.0, 7.5}};
+  cv::Mat& c = grid.cells;
+  c(cv::Rect(10, 60, 180, 130)).setTo(kOccupied);  // A
+  c(cv::Rect(14, 64, 172, 30)).setTo(kFree);         // corridor
+  for (int k = 0; k < 3; ++k) {
+    c(cv::Rect(14 + 58 * k, 98, 54, 88)).setTo(kFree);
+    c(cv::Rect(30 + 58 * k, 94, 16, 4)).setTo(kFree);  // doors to the corridor
+  }
+  cv::Mat b(grid.cells.size(), CV_8UC1, cv::Scalar(kUnknown));
+  b(cv::Rect(290, 10, 124, 80)).setTo(kOccupied);
+  b(cv::Rect(294, 14, 56, 72)).setTo(kFree);
+  b(cv::Rect(354, 14, 56, 72)).setTo(kFree);
+  b(cv::Rect(350, 40, 4, 16)).setTo(kFree);  // the door
+  if (b_seen == 0) return grid;
+  const cv::Rect seen(0, 0, b_seen, grid.height());
+  b(seen).copyTo(c(seen), b(seen) != kUnknown);
+  return grid;
+}
+
+TEST(IncrementalBatch, WindowedUpdatesThatReDoABuildingGiveItsBatchRooms) {
+  // The first update segments the whole map; the next ones reveal building B column by column, so
+  // each is a windowed update re-doing B's rooms (the touched one and its neighbour across the
+  // door) with segment()'s stages, A's rooms kept as they were: the partition is segment()'s.
+  IncrementalSegmenter segmenter;
+  int windowed = 0;
+  cv::Mat previous;
+  for (const int seen : {330, 372, 392, 420}) {
+    SCOPED_TRACE(seen);
+    const OccupancyGrid grid = two_buildings(seen);
+    const Segmentation& s = segmenter.update(grid);
+    const Segmentation batch = segment(grid);
+    windowed += segmenter.last_update().kind == IncrementalUpdateReport::Kind::kIncremental;
+    EXPECT_TRUE(same_partition(s.labels, batch.labels));
+    EXPECT_EQ(s.rooms.size(), batch.rooms.size());
+    ASSERT_EQ(s.passages.size(), batch.passages.size());
+    for (std::size_t i = 0; i < s.passages.size(); ++i) EXPECT_EQ(s.passages[i].door, batch.passages[i].door);
+    if (!previous.empty()) expect_ids_carried(previous, s.labels);
+    previous = s.labels.clone();
+  }
+  EXPECT_EQ(windowed, 3);  // the checks above saw the windowed path
+  EXPECT_EQ(segmenter.result().rooms.size(), 6u);  // A's corridor and three rooms, B's two
+  // At rest: segment()'s rooms cell for cell, the ids those of the windowed rooms.
+  const cv::Mat live = segmenter.result().labels.clone();
+  const Segmentation& settled = segmenter.resegment();
+  EXPECT_EQ(cv::countNonZero(settled.labels != live), 0);
+}
+
+TEST(IncrementalBatch, ASavedLedgerGivesARestartedSegmenterTheSameIds) {
+  // B's rooms are seen last, so they carry the highest ids although they come first in raster order:
+  // a fresh segmenter would number them first; one that loads the saved ledger gives them theirs.
+  IncrementalSegmenter first;
+  for (const int seen : {0, 372, 420}) first.update(two_buildings(seen));
+  std::stringstream ledger;
+  first.save_ledger(ledger);
+  const OccupancyGrid final_map = two_buildings(420);
+  IncrementalSegmenter fresh;
+  ASSERT_NE(cv::countNonZero(fresh.update(final_map).labels != first.result().labels), 0);  // the check checks something
+
+  IncrementalSegmenter restarted;
+  restarted.load_ledger(ledger);
+  // The map as the restarted node first sees it: grown by 30 cells on the left and 20 at the top.
+  OccupancyGrid grown{cv::Mat(220, 450, CV_8UC1, cv::Scalar(kUnknown)), 0.05, {-3.0 - 30 * 0.05, 7.5}};
+  final_map.cells.copyTo(grown.cells(cv::Rect(30, 20, 420, 200)));
+  const Segmentation& s = restarted.update(grown);
+  EXPECT_EQ(cv::countNonZero(s.labels(cv::Rect(30, 20, 420, 200)) != first.result().labels), 0);
+  ASSERT_EQ(s.rooms.size(), first.result().rooms.size());
+  for (std::size_t i = 0; i < s.rooms.size(); ++i) EXPECT_EQ(s.rooms[i].id, first.result().rooms[i].id);
+  // A room seen after the restart takes an id never handed out before it.
+  int highest = 0;
+  for (const Room& room : first.result().rooms) highest = std::max(highest, room.id);
+  grown.cells(cv::Rect(2, 2, 64, 64)).setTo(kOccupied);
+  grown.cells(cv::Rect(4, 4, 60, 60)).setTo(kFree);
+  const std::size_t rooms_before = s.rooms.size();  // s is the segmenter's result, about to change
+  ASSERT_EQ(segment(grown).rooms.size(), rooms_before + 1);
+  const Segmentation& more = restarted.update(grown);
+  ASSERT_EQ(more.rooms.size(), rooms_before + 1);
+  EXPECT_GT(more.rooms.back().id, highest);
+}
+
+TEST(IncrementalBatch, ALedgerCannotBeSavedBeforeTheFirstUpdateNorReadDamaged) {
+  IncrementalSegmenter segmenter;
+  std::stringstream out;
+  EXPECT_THROW(segmenter.save_ledger(out), Error);
+  segmenter.update(two_buildings(420));
+  const cv::Mat before = segmenter.result().labels.clone();
+  std::istringstream damaged("topocut-id-ledger 1\nnext_id x\n");
+  EXPECT_THROW(segmenter.load_ledger(damaged), Error);
+  // Refused before anything was forgotten: the next update of the same map changes nothing.
+  segmenter.update(two_buildings(420));
+  EXPECT_EQ(segmenter.last_update().kind, IncrementalUpdateReport::Kind::kUnchanged);
+  EXPECT_EQ(cv::countNonZero(segmenter.result().labels != before), 0);
 }
 
 }  // namespace

@@ -2,11 +2,14 @@
 // Incremental room segmentation for a growing map (pipeline B; Fermin-Leon et al., Algorithms 3-4):
 // the batch segmenter's stages (segment(): the real-map cleaning, the cut rules, DuDe, merging, open
 // rooms, labelling) on two schedules. A whole-map update runs segment() itself and carries the room
-// ids over by overlap; a windowed update compares the new grid with the previous one, cleans the free
-// space again around the change, and decomposes again only the rooms the change touches together with
-// the changed free space, every other room kept as it is, with its id, polygon and passages. Work stays
-// near the change, so an update costs what the change costs, not what the map does.
+// ids over by overlap; a windowed update compares the new grid with the previous one, runs segment()'s
+// front end again around the change (segmentation_input() over a window), and runs segment()'s other
+// stages (segment_input()) on the rooms the change touches together with the changed free space,
+// every other room kept as it is, with its id, polygon and passages. Both schedules name rooms with
+// one IdLedger (id_ledger.h). Work stays near the change, so an update costs what the change costs,
+// not what the map does.
 #include <cstddef>
+#include <iosfwd>
 #include <memory>
 #include <string>
 
@@ -161,6 +164,16 @@ class IncrementalSegmenter {
 
   // Bytes held between updates: grid copy, cleaned free space, labelled cells, labels, rooms and passages.
   std::size_t state_bytes() const;
+
+  // Writes the id ledger (id_ledger.h) with the latest rooms, so that a segmenter started later (a
+  // restarted node) can give the same rooms the same ids. Throws Error before the first update.
+  void save_ledger(std::ostream& out) const;
+
+  // Forgets everything, then reads what save_ledger() wrote: the next update segments the whole map
+  // and carries the saved rooms' ids by overlap (where the saved map lies on whole cells of the new
+  // one), never reusing an id handed out before the save. Throws Error on a damaged ledger, leaving
+  // the segmenter unchanged.
+  void load_ledger(std::istream& in);
 
   // Forgets everything; the next update is a batch one with fresh ids.
   void reset();

@@ -71,8 +71,39 @@ struct SegmentationInput {
   cv::Mat floor;
   OccupancyGrid labelled;
   CleanedFreeSpace cleaned;
+  // Windowed front end only: false when a thin part the cleaning judged as a whole (ray or not)
+  // reaches into the window but runs out of the context it was given, so that only the whole map's
+  // cleaning, seeing all of it, judges it as segment() does.
+  bool thin_parts_within = true;
 };
 SegmentationInput segmentation_input(const OccupancyGrid& grid, const SegmentOptions& options);
+
+// Stage 2 over a window of grid (a crop of it, its cells in the window's own frame): what
+// segmentation_input() gives the whole grid there, computed from the window grown by
+// front_end_context() cells (the reach of the binarization and the cleaning; what lies farther keeps
+// no influence). No error for a window without free space: its floor is then empty of free cells.
+// The windowed incremental update's front end.
+SegmentationInput segmentation_input(const OccupancyGrid& grid, const cv::Rect& window, const SegmentOptions& options);
+
+// How far (cells) a changed cell can change the front end's output (the binarization's and the
+// cleaning's reach), and how much around a window the front end reads to compute it there.
+int front_end_reach(const SegmentOptions& options, double resolution);
+int front_end_context(const SegmentOptions& options, double resolution);
+
+// Stages 3 to 5 over what the front end left, on any window of a map: the free-space polygons of
+// input.floor, decompose_component() on each, the open-room rule, the rooms and their labels, the
+// passages with their doors, in input.labelled's frame (its size and origin). Only free cells of
+// input.labelled where to_label is non-zero get a room (empty: every free cell), so that a window may
+// hold cells of rooms it leaves alone. segment() is this function over the known cells' box. Stage
+// times are added to times, if given.
+Segmentation segment_input(const SegmentationInput& input, const SegmentOptions& options, const cv::Mat& to_label = cv::Mat(),
+                           SegmentTimes* times = nullptr);
+
+// segment()'s stages over window of grid (its front end on the window alone): the segmentation of the
+// crop, in its frame. segment() is this over segmentation_box(), placed back into the whole grid.
+// Stage times are added to times, if given.
+Segmentation segment_window(const OccupancyGrid& grid, const cv::Rect& window, const SegmentOptions& options,
+                            SegmentationInput* input = nullptr, SegmentTimes* times = nullptr);
 
 // Stage 3a, first step: the polygon simplified ring by ring (simplify_polygon(), tolerance in
 // cells), except that every ring whose simplification crosses or touches itself or another ring (a
