@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include "cli/cli_maps.h"
 #include "cli/cli_runner.h"
 #include "io/test_images.h"
 #include "topocut/core/error.h"
@@ -17,21 +18,14 @@
 
 namespace {
 
+using topocut::testing::bundled;
+using topocut::testing::small_map;
 using topocut::testing::CliResult;
 using topocut::testing::expect_clean_error;
 using topocut::testing::file_text;
 using topocut::testing::memory_limit;
 using topocut::testing::run_cli;
 using topocut::testing::TempDir;
-
-std::string bundled(const std::string& name) { return std::string(TOPOCUT_SOURCE_DIR) + "/maps/" + name; }
-
-std::string small_map(const TempDir& dir) {
-  cv::Mat map(40, 60, CV_8UC1, cv::Scalar(0));
-  map(cv::Rect(2, 2, 56, 36)).setTo(255);
-  topocut::testing::write_test_image(dir.file("map.png"), map);
-  return dir.file("map.png");
-}
 
 double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -6,17 +6,17 @@
 
 #include <gtest/gtest.h>
 
+#include "cli/cli_maps.h"
 #include "cli/cli_runner.h"
 #include "io/temp_dir.h"
 #include "io/test_images.h"
 
 namespace {
 
+using topocut::testing::bundled;
 using topocut::testing::CliResult;
 using topocut::testing::run_cli;
 using topocut::testing::TempDir;
-
-std::string bundled(const std::string& name) { return std::string(TOPOCUT_SOURCE_DIR) + "/maps/" + name; }
 
 bool has(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
 

@@ -12,14 +12,13 @@
 
 #include <gtest/gtest.h>
 
+#include "cli/cli_maps.h"
 #include "cli/cli_runner.h"
 
 namespace topocut::testing {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::string bundled(const std::string& name) { return std::string(TOPOCUT_SOURCE_DIR) + "/maps/" + name; }
 
 int count(const std::string& text, const std::string& what) {
   int n = 0;

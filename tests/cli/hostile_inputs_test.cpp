@@ -11,25 +11,18 @@
 #include <nlohmann/json.hpp>
 #include <zlib.h>
 
+#include "cli/cli_maps.h"
 #include "cli/cli_runner.h"
 #include "io/test_images.h"
 
 namespace {
 
+using topocut::testing::bundled;
+using topocut::testing::small_map;
 using topocut::testing::CliResult;
 using topocut::testing::expect_clean_error;
 using topocut::testing::run_cli;
 using topocut::testing::TempDir;
-
-std::string bundled(const std::string& name) { return std::string(TOPOCUT_SOURCE_DIR) + "/maps/" + name; }
-
-// A small map: a free room in an occupied frame, as PNG.
-std::string small_map(const TempDir& dir) {
-  cv::Mat map(40, 60, CV_8UC1, cv::Scalar(0));
-  map(cv::Rect(2, 2, 56, 36)).setTo(255);
-  topocut::testing::write_test_image(dir.file("map.png"), map);
-  return dir.file("map.png");
-}
 
 // The bytes of a real PNG whose IHDR now declares width x height (the CRC no longer matches, which
 // does not matter: the size must be refused before any decoder reads on).

@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 #include <opencv2/core.hpp>
 
+#include "cli/cli_maps.h"
 #include "cli/cli_runner.h"
 #include "io/test_images.h"
 
@@ -16,8 +17,6 @@ namespace topocut::testing {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::string bundled(const std::string& name) { return std::string(TOPOCUT_SOURCE_DIR) + "/maps/" + name; }
 
 std::vector<std::string> names_in(const TempDir& dir) {
   std::vector<std::string> names;

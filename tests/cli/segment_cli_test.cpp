@@ -14,12 +14,14 @@
 #include <nlohmann/json.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include "cli/cli_maps.h"
 #include "cli/cli_runner.h"
 #include "io/temp_dir.h"
 #include "io/test_images.h"
 
 namespace {
 
+using topocut::testing::bundled;
 using topocut::testing::TempDir;
 
 using Result = topocut::testing::CliResult;
@@ -27,8 +29,6 @@ using topocut::testing::file_text;
 
 // `topocut segment ARGS...` (the shared runner, with the suite's time limit).
 Result run(const TempDir& dir, const std::vector<std::string>& args) { return topocut::testing::run_cli(dir, "segment", args, 600); }
-
-std::string bundled(const std::string& name) { return std::string(TOPOCUT_SOURCE_DIR) + "/maps/" + name; }
 
 // A failed run: non-zero exit, one line on stderr that says error and names the problem.
 void expect_error(const Result& r, const std::string& fragment, int code = 1) {
