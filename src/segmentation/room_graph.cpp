@@ -109,6 +109,7 @@ RoomGraph::RoomGraph(const PolygonWithHoles& polygon, const PieceSet& set, const
     moments_.push_back({m[0], m[1], m[2], m[3], m[4], m[5]});
   }
   find_sides();
+  side_widths_.assign(2 * sides_.size(), SideWidth{});
   measure_cut_ends();
   mark_furniture(polygon, furniture_size);
   measure_outlines(cells);
@@ -459,6 +460,14 @@ double RoomGraph::chord(int r, const Point2& p, const Point2& u) {
 }
 
 double RoomGraph::side_width(std::size_t k, int r, bool left, double depth_m) {
+  SideWidth& known = side_widths_[2 * k + (left ? 0 : 1)];
+  const std::size_t pieces = members(r).size();
+  if (known.room == r && known.pieces == pieces && known.depth == depth_m) return known.width;
+  known = {r, pieces, depth_m, measure_side_width(k, r, left, depth_m)};
+  return known.width;
+}
+
+double RoomGraph::measure_side_width(std::size_t k, int r, bool left, double depth_m) {
   const auto [u, n, mid] = cut_frame(set_.cuts[k], left);
   const double depth = std::max(depth_m / resolution_, 1.0);
   const int samples = 8;
