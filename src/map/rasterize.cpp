@@ -281,6 +281,33 @@ int nearest_in_band(const cv::Mat& labels, RowNeighbours& rows, int r, int c, in
   return label;
 }
 
+// Most specks lie a cell or two from a label: a search in the first square rings around the cell
+// (each row by row and column by column, a label taking the place of the best only when strictly
+// nearer) settles them when no farther ring can hold a nearer label; std::nullopt otherwise.
+std::optional<int> nearest_in_small_rings(const cv::Mat& labels, int r, int c) {
+  constexpr int kRings = 8;
+  long best = std::numeric_limits<long>::max();
+  int label = 0;
+  for (int k = 1; k <= kRings; ++k) {
+    for (int y = r - k; y <= r + k; ++y) {
+      if (y < 0 || y >= labels.rows) continue;
+      const int* row = labels.ptr<int>(y);
+      const bool edge_row = y == r - k || y == r + k;
+      for (int x = c - k; x <= c + k; x += edge_row ? 1 : 2 * k) {
+        if (x < 0 || x >= labels.cols || row[x] <= 0) continue;
+        const long d = static_cast<long>(y - r) * (y - r) + static_cast<long>(x - c) * (x - c);
+        if (d < best) {
+          best = d;
+          label = row[x];
+        }
+      }
+    }
+    // Ring k + 1 and beyond lie at least (k + 1)² away: none of them can be strictly nearer.
+    if (static_cast<long>(k + 1) * (k + 1) >= best) return label;
+  }
+  return std::nullopt;
+}
+
 // Most specks lie next to a room: the nearest label within kRingCap cells (nearest_in_band) settles
 // them without a window. The cells are searched in raster order, so that the rows' nearest labels
 // are found once each, and the results kept in the cells' own order. Nothing is written here, so
@@ -303,7 +330,8 @@ SpeckLabels nearest_in_rings(const cv::Mat& labels, const LabelPresence& presenc
   RowNeighbours rows(labels, 2 * kRingCap + 1);
   for (const std::size_t k : search) {
     const int i = unlabelled[k];
-    found[k] = nearest_in_band(labels, rows, i / w, i % w, kRingCap);
+    const std::optional<int> near = nearest_in_small_rings(labels, i / w, i % w);
+    found[k] = near ? *near : nearest_in_band(labels, rows, i / w, i % w, kRingCap);
   }
   SpeckLabels specks;
   for (std::size_t k = 0; k < unlabelled.size(); ++k) {
