@@ -16,6 +16,7 @@
 #include "topocut/map/free_space_polygons.h"
 #include "topocut/map/rasterize.h"
 #include "topocut/segmentation/carried_ids.h"
+#include "topocut/segmentation/room_kinds.h"
 #include "topocut/segmentation/rooms_from_pieces.h"
 
 namespace topocut {
@@ -335,6 +336,9 @@ void IncrementalSegmenter::State::process(const OccupancyGrid& grid, const cv::R
   }
   label_from_nearest_rooms(nearest, touched_rooms);
   for (const int id : touched_rooms) refresh_room(id, nullptr);
+  // A room's kind depends on its neighbours too (how many it opens onto), which the region's own
+  // rooms cannot tell: one linear pass over the final labels, as segment() makes.
+  assign_room_kinds(result, options.segment.kinds);
 }
 
 // The state's cells, floor and labelled cells are the grid's from here on; the returned mask is all
