@@ -80,7 +80,7 @@ const char* const kDescription =
     "--at X,Y (map frame, metres; repeatable) then prints 'at X,Y: room ID' for the room whose cell\n"
     "holds the point, or 'at X,Y: none' (an obstacle, unknown space, off the map).\n"
     "Every room has a kind, measured once the rooms are final: 'corridor' (long for its width,\n"
-    "at most 1.2 m wide or an office hallway, and opening onto three or more rooms) or 'room'; the\n"
+    "at most 1.1 m wide or an office hallway, and opening onto three or more rooms) or 'room'; the\n"
     "JSON and GeoJSON say it as \"kind\", --color-by-kind draws it.\n\n"
     "Example:\n  topocut segment maps/floorplan.yaml --out-color rooms.png --out-json rooms.json --at 2.0,1.5";
 
