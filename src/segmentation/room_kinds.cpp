@@ -71,10 +71,14 @@ cv::Mat sampled(const cv::Mat& labels, int step) {
 
 }  // namespace
 
+int room_kind_sample_step(const RoomKindOptions& options, double resolution) {
+  return static_cast<int>(std::clamp(std::floor(options.sample / resolution + 1e-9), 1.0, 1e6));
+}
+
 std::vector<RoomShape> room_shapes(const cv::Mat& all_labels, double cell_size, const RoomKindOptions& options) {
   if (all_labels.type() != CV_32SC1) throw Error("room kinds need CV_32SC1 labels");
   if (!(cell_size > 0.0) || !std::isfinite(cell_size)) throw Error("room kinds need a positive resolution");
-  const int step = static_cast<int>(std::clamp(std::floor(options.sample / cell_size + 1e-9), 1.0, 1e6));
+  const int step = room_kind_sample_step(options, cell_size);
   const cv::Mat labels = sampled(all_labels, step);
   const double resolution = cell_size * step;
   double largest = 0.0;  // of the samples: a pass over every cell would cost a third of the rest at 0.05 m

@@ -1,5 +1,6 @@
 #include "topocut/segmentation/room_kinds.h"
 
+#include <algorithm>
 #include <limits>
 #include <string>
 
@@ -167,6 +168,28 @@ TEST(RoomKinds, TheLiveSegmenterUpdatesKindsInPlace) {
   for (const Room& room : live.result().rooms) EXPECT_EQ(room.kind, RoomKind::kRoom) << "room " << room.id;
   live.update(grid);
   EXPECT_EQ(live.last_update().kind, IncrementalUpdateReport::Kind::kIncremental);
+  expect_only_the_corridor(live.result());
+}
+
+// Kinds measured on the changed rooms' box only are those of a pass over all the labels, update by
+// update, while the floor plan is revealed from west to east.
+TEST(RoomKinds, TheLiveSegmentersKindsAreThoseOfTheWholeLabels) {
+  const OccupancyGrid plan = floorplan();
+  IncrementalSegmenter live;
+  int in_place = 0;
+  for (double seen = 4.0; seen <= 20.0; seen += 0.5) {
+    OccupancyGrid grid = plan;
+    grid.cells = plan.cells.clone();
+    const int known = std::min(grid.cells.cols, cells(seen));
+    if (known < grid.cells.cols) grid.cells.colRange(known, grid.cells.cols).setTo(kUnknown);
+    live.update(grid);
+    in_place += live.last_update().kind == IncrementalUpdateReport::Kind::kIncremental;
+    Segmentation whole = live.result();
+    assign_room_kinds(whole);
+    for (std::size_t k = 0; k < whole.rooms.size(); ++k)
+      EXPECT_EQ(live.result().rooms[k].kind, whole.rooms[k].kind) << "room " << whole.rooms[k].id << " seen to x " << seen;
+  }
+  EXPECT_GT(in_place, 5) << "the reveal should be mostly updates in place";
   expect_only_the_corridor(live.result());
 }
 

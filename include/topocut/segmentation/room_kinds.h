@@ -44,6 +44,9 @@ struct RoomShape {
 // falls in has an empty shape (a room). Throws Error on a wrong type or a resolution that is not positive.
 std::vector<RoomShape> room_shapes(const cv::Mat& labels, double resolution, const RoomKindOptions& options = {});
 
+// The cells between two samples room_shapes() takes at resolution (metres per cell): at least 1.
+int room_kind_sample_step(const RoomKindOptions& options, double resolution);
+
 // The kind options give a room of this shape.
 RoomKind room_kind(const RoomShape& shape, const RoomKindOptions& options = {});
 
