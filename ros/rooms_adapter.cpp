@@ -216,6 +216,7 @@ RoomShape shape_of(const topocut::Room& room, const topocut::RoomPlacement& plac
   shape.min_x = placement.min.x, shape.min_y = placement.min.y;
   shape.max_x = placement.max.x, shape.max_y = placement.max.y;
   shape.area = room.area;
+  shape.corridor = room.kind == topocut::RoomKind::kCorridor;
   return shape;
 }
 

@@ -28,6 +28,7 @@ struct RoomShape {
   double inside_x = 0.0, inside_y = 0.0;   // a point inside the room
   double min_x = 0.0, min_y = 0.0, max_x = 0.0, max_y = 0.0;  // bounding box of the outline
   double area = 0.0;                       // m²
+  bool corridor = false;                   // its kind (room_kinds.h): a corridor, not another room
 };
 
 struct PassageShape {

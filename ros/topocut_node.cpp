@@ -158,6 +158,7 @@ topocut_msgs::Room room_message(const topocut_ros::RoomShape& room) {
   out.min = point_of(room.min_x, room.min_y);
   out.max = point_of(room.max_x, room.max_y);
   out.area = room.area;
+  out.kind = room.corridor ? topocut_msgs::Room::CORRIDOR : topocut_msgs::Room::ROOM;
   return out;
 }
 

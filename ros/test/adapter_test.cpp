@@ -204,6 +204,7 @@ TEST(RosAdapter, RoomAtAnswersFromThePublishedRoomsOnly) {
     EXPECT_EQ(room.id, expected.id);
     EXPECT_EQ(room.outer, expected.outer);
     EXPECT_EQ(room.area, expected.area);
+    EXPECT_EQ(room.corridor, expected.corridor);
     EXPECT_TRUE(room.min_x <= room.inside_x && room.inside_x <= room.max_x && room.min_y <= room.inside_y &&
                 room.inside_y <= room.max_y);
   }

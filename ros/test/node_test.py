@@ -364,6 +364,7 @@ def check_typed(typed, rooms, what):
     for r, j in zip(typed.rooms, rooms["rooms"]):
         name = "%s, room %d" % (what, j["id"])
         close(r.area, j["area"], name + " area", 1e-6)
+        assert r.kind == (r.CORRIDOR if j["kind"] == "corridor" else r.ROOM), name + ": kind"
         for point, expected in ((r.centre, j["centroid"]), (r.inside, j["inside"])):
             close(point.x, expected[0], name), close(point.y, expected[1], name)
         assert len(r.outline.points) == len(j["outer"]) and len(r.holes) == len(j["holes"]), name + ": outline"

@@ -39,6 +39,7 @@ std::string lower_extension(const std::string& path) {
 // The files the command writes; empty: not requested.
 struct Outputs {
   std::string labels, color, json, svg, geojson, clean;
+  bool color_by_kind = false;  // the overlay tints rooms by kind
 };
 
 // A point given with --at: its text as given, and where it is (map frame, metres).
@@ -77,14 +78,19 @@ const char* const kDescription =
     "Prints a summary (rooms, passages, time) and writes each requested output atomically; a note\n"
     "says when an image's resolution was assumed (an image holds no scale) or nothing was asked for.\n"
     "--at X,Y (map frame, metres; repeatable) then prints 'at X,Y: room ID' for the room whose cell\n"
-    "holds the point, or 'at X,Y: none' (an obstacle, unknown space, off the map).\n\n"
+    "holds the point, or 'at X,Y: none' (an obstacle, unknown space, off the map).\n"
+    "Every room has a kind, measured once the rooms are final: 'corridor' (long for its width,\n"
+    "at most 1.1 m wide or an office hallway, and opening onto three or more rooms) or 'room'; the\n"
+    "JSON and GeoJSON say it as \"kind\", --color-by-kind draws it.\n\n"
     "Example:\n  topocut segment maps/floorplan.yaml --out-color rooms.png --out-json rooms.json --at 2.0,1.5";
 
 void add_output_options(po::options_description& described, Outputs& out) {
   described.add_options()
       ("out-labels", po::value<std::string>(&out.labels), "write the room labels as a 16-bit PNG (0 = no room, rooms 1..N)")
       ("out-color", po::value<std::string>(&out.color), "write a colour overlay of the rooms over the map (PNG, JPEG, ...)")
-      ("out-json", po::value<std::string>(&out.json), "write rooms and passages as JSON (metres)")
+      ("color-by-kind", po::bool_switch(&out.color_by_kind),
+       "with --out-color: tint corridors orange and other rooms blue instead of a colour per room")
+      ("out-json", po::value<std::string>(&out.json), "write rooms (with their kind) and passages as JSON (metres)")
       ("out-svg", po::value<std::string>(&out.svg), "write rooms and passages as SVG (metres)")
       ("out-geojson", po::value<std::string>(&out.geojson),
        "write rooms (Polygons with holes) and passages (LineStrings) as a GeoJSON FeatureCollection (map frame, metres)")
@@ -147,6 +153,7 @@ std::optional<Request> parse_request(const std::vector<std::string>& args) {
   request.resolution_given = !vm->at("resolution").defaulted();
   for (const std::string& text : at) request.at.push_back(query_point(text));
   check_output_files(request, *vm);
+  if (request.out.color_by_kind && request.out.color.empty()) throw UsageError("--color-by-kind needs --out-color FILE");
   return request;
 }
 
@@ -155,7 +162,11 @@ void write_outputs(const Outputs& out, const OccupancyGrid& grid, const GridSegm
   const Segmentation& segmentation = result.segmentation;
   if (!out.clean.empty()) write_image_atomically(out.clean, render_cleaned_map(grid.cells, input.cleaned));
   if (!out.labels.empty()) write_label_image(out.labels, segmentation.labels);
-  if (!out.color.empty()) write_overlay(out.color, grid, segmentation);
+  if (!out.color.empty()) {
+    OverlayOptions overlay;
+    overlay.colour_by_kind = out.color_by_kind;
+    write_overlay(out.color, grid, segmentation, overlay);
+  }
   if (!out.json.empty()) write_rooms_json(out.json, segmentation, result.placements);
   if (!out.svg.empty()) write_rooms_svg(out.svg, grid, segmentation);
   if (!out.geojson.empty()) write_rooms_geojson(out.geojson, segmentation, result.placements);

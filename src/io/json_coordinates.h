@@ -24,12 +24,13 @@ inline nlohmann::json ring(const Ring& r) {
 }
 
 // What the rooms JSON and GeoJSON say of a room besides its rings: id, area (the polygon's, m²),
-// labelled_area (its cells', m²), centroid and, with a placement, inside.
+// labelled_area (its cells', m²), kind ("room" or "corridor"), centroid and, with a placement, inside.
 inline nlohmann::json room_properties(const Room& room, const RoomPlacement* placement) {
   nlohmann::json out = nlohmann::json::object();
   out["id"] = room.id;
   out["area"] = rounded(room.area);
   out["labelled_area"] = rounded(room.labelled_area);
+  out["kind"] = room_kind_name(room.kind);
   out["centroid"] = point(room.centroid);
   if (placement) out["inside"] = point(placement->inside);
   return out;

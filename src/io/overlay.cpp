@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <string>
 
 #include <opencv2/imgproc.hpp>
@@ -143,6 +144,10 @@ std::vector<Point2> room_anchor_points(const Segmentation& s) {
   return anchors;
 }
 
+cv::Vec3b room_kind_colour(RoomKind kind) {
+  return kind == RoomKind::kCorridor ? cv::Vec3b(0, 140, 255) : cv::Vec3b(215, 150, 60);
+}
+
 cv::Mat render_overlay(const OccupancyGrid& grid, const Segmentation& s, const OverlayOptions& options) {
   check_sizes(grid, s);
   if (options.scale < 0 || options.scale > 16) throw Error("the overlay scale must lie in 0..16");
@@ -150,6 +155,13 @@ cv::Mat render_overlay(const OccupancyGrid& grid, const Segmentation& s, const O
   int scale = options.scale;
   if (scale == 0) scale = std::clamp((800 + std::max(w, h) - 1) / std::max(w, h), 1, 4);
 
+  std::map<int, RoomKind> kind_of;
+  for (const Room& room : s.rooms) kind_of[room.id] = room.kind;
+  auto tint = [&](int l) {
+    if (!options.colour_by_kind) return room_colour(l);
+    const auto it = kind_of.find(l);
+    return room_kind_colour(it == kind_of.end() ? RoomKind::kRoom : it->second);
+  };
   cv::Mat base(grid.cells.size(), CV_8UC3);
   for (int r = 0; r < h; ++r) {
     for (int c = 0; c < w; ++c) {
@@ -158,7 +170,7 @@ cv::Mat render_overlay(const OccupancyGrid& grid, const Segmentation& s, const O
       cv::Vec3b colour = cell == kFree ? cv::Vec3b(255, 255, 255)
                                        : (cell == kOccupied ? cv::Vec3b(45, 45, 45) : cv::Vec3b(200, 200, 200));
       if (l > 0) {
-        const cv::Vec3b room = room_colour(l);
+        const cv::Vec3b room = tint(l);
         // Cells on a border between two rooms are drawn darker, so the partition reads at a glance.
         bool border = false;
         const int dr[4] = {-1, 1, 0, 0}, dc[4] = {0, 0, -1, 1};

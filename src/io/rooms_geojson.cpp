@@ -24,7 +24,6 @@ json room_feature(const Room& room, const RoomPlacement* placement) {
   json rings = json::array({closed_ring(room.polygon.outer, true)});
   for (const Ring& hole : room.polygon.holes) rings.push_back(closed_ring(hole, false));
   json properties = json_coordinates::room_properties(room, placement);
-  properties["kind"] = "room";
   return {{"type", "Feature"}, {"id", room.id}, {"geometry", {{"type", "Polygon"}, {"coordinates", rings}}}, {"properties", properties}};
 }
 

@@ -110,11 +110,12 @@ py::tuple room_state(const RoomView& r) {
   py::list holes;
   for (const Ring& h : r.room.polygon.holes) holes.append(points_array(h));
   return py::make_tuple(r.room.id, points_array(r.room.polygon.outer), holes, r.room.area, r.room.labelled_area,
-                        xy(r.room.centroid), xy(r.placement.inside), xy(r.placement.min), xy(r.placement.max));
+                        xy(r.room.centroid), xy(r.placement.inside), xy(r.placement.min), xy(r.placement.max),
+                        room_kind_name(r.room.kind));
 }
 
 RoomView room_from(const py::handle& state) {
-  const StateReader t(state, "Room", 9);
+  const StateReader t(state, "Room", 10);
   RoomView r;
   r.room.id = t.id(0, "the id");
   r.room.polygon.outer = t.points(t[1], "the outer ring");
@@ -123,6 +124,10 @@ RoomView room_from(const py::handle& state) {
   r.room.labelled_area = t.non_negative(4, "the labelled area");
   r.room.centroid = t.point(5, "the centroid");
   r.placement = {t.point(6, "the inside point"), t.point(7, "the bounding box"), t.point(8, "the bounding box")};
+  const auto kind = t.get<std::string>(9, "the kind");
+  if (kind != room_kind_name(RoomKind::kRoom) && kind != room_kind_name(RoomKind::kCorridor))
+    throw pickle_error("Room", "the kind must be 'room' or 'corridor'");
+  r.room.kind = kind == room_kind_name(RoomKind::kCorridor) ? RoomKind::kCorridor : RoomKind::kRoom;
   return r;
 }
 
@@ -406,13 +411,17 @@ class PyIncremental {
 };
 
 void bind_results(py::module_& m) {
-  py::class_<RoomView>(m, "Room", "A room: id (its label), polygon in the map frame (metres), area, centroid, a point inside, bounding box.")
+  py::class_<RoomView>(m, "Room",
+                       "A room: id (its label), kind, polygon in the map frame (metres), area, centroid, a point inside, bounding box.")
       .def_property_readonly("id", getter<RoomView>([](const RoomView& r) { return r.room.id; }),
                              "the room's id: its value in the Segmentation's labels (1..N; 0 there is no room)")
       .def_property_readonly("area", getter<RoomView>([](const RoomView& r) { return r.room.area; }),
                              "m², of the polygon (outer minus holes), as every output's area")
       .def_property_readonly("labelled_area", getter<RoomView>([](const RoomView& r) { return r.room.labelled_area; }),
                              "m², of the room's labelled cells (count of labels == id times the cell area)")
+      .def_property_readonly("kind", getter<RoomView>([](const RoomView& r) { return std::string(room_kind_name(r.room.kind)); }),
+                             "'corridor' (long for its width, narrow, opening onto several rooms) or 'room'; measured on the "
+                             "final rooms (thresholds: RoomKindOptions in room_kinds.h)")
       .def_property_readonly("centroid", getter<RoomView>([](const RoomView& r) { return xy(r.room.centroid); }),
                              "(x, y) of the labelled cells")
       .def_property_readonly("inside", getter<RoomView>([](const RoomView& r) { return xy(r.placement.inside); }),
@@ -429,7 +438,7 @@ void bind_results(py::module_& m) {
       }), "list of (n, 2) arrays, clockwise")
       .def("__repr__", [](const py::object& self) {
         const RoomView& r = state_of<RoomView>(self);
-        return "<topocut.Room " + std::to_string(r.room.id) + ", " + std::to_string(r.room.area) + " m²>";
+        return "<topocut.Room " + std::to_string(r.room.id) + ", " + room_kind_name(r.room.kind) + ", " + std::to_string(r.room.area) + " m²>";
       })
       .def(py::pickle([](const py::object& self) { return room_state(state_of<RoomView>(self)); },
                       [](const py::tuple& t) { return room_from(t); }));

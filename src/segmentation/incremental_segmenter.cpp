@@ -6,6 +6,7 @@
 #include <climits>
 #include <cmath>
 #include <cstring>
+#include <set>
 #include <vector>
 
 #include <opencv2/imgproc.hpp>
@@ -16,6 +17,7 @@
 #include "topocut/map/free_space_polygons.h"
 #include "topocut/map/rasterize.h"
 #include "topocut/segmentation/carried_ids.h"
+#include "topocut/segmentation/room_kinds.h"
 #include "topocut/segmentation/rooms_from_pieces.h"
 
 namespace topocut {
@@ -68,6 +70,7 @@ void IncrementalSegmenter::State::start_frame(const OccupancyGrid& grid) {
   result.passages.clear();
   ledger.clear(grid.cells.size());
   rooms.assign(static_cast<std::size_t>(ledger.next_id()), RoomState{});
+  refreshed.clear();  // segment() measured every room's kind
   free_cells = 0;
   initialised = true;
   take_loaded_ledger();
@@ -171,6 +174,7 @@ void IncrementalSegmenter::State::refresh_room(int id, const PolygonWithHoles* p
                              [](const Room& room, int value) { return room.id < value; });
   const bool present = it != result.rooms.end() && it->id == id;
   const RoomState& state = rooms[static_cast<std::size_t>(id)];
+  refreshed.push_back(id);
   if (!state.alive) {
     if (present) result.rooms.erase(it);
     return;
@@ -335,6 +339,38 @@ void IncrementalSegmenter::State::process(const OccupancyGrid& grid, const cv::R
   }
   label_from_nearest_rooms(nearest, touched_rooms);
   for (const int id : touched_rooms) refresh_room(id, nullptr);
+  update_kinds();
+}
+
+// The kinds of the rooms this update changed and of their neighbours (how many rooms a room opens
+// onto changes with theirs): room_shapes() on the box holding them, grown by a sample and with its
+// corner on the sampling grid of the whole labels, so that a room's kind depends on the labels alone,
+// not on which update measured it. A pass over the whole labels cost half of a median update.
+void IncrementalSegmenter::State::update_kinds() {
+  std::set<int> ids(refreshed.begin(), refreshed.end());
+  refreshed.clear();
+  std::vector<int> neighbours;
+  for (const Passage& p : result.passages) {
+    if (ids.count(p.room_a)) neighbours.push_back(p.room_b);
+    if (ids.count(p.room_b)) neighbours.push_back(p.room_a);
+  }
+  ids.insert(neighbours.begin(), neighbours.end());
+  cv::Rect box;
+  for (const int id : ids)
+    if (id > 0 && static_cast<std::size_t>(id) < rooms.size() && rooms[static_cast<std::size_t>(id)].alive)
+      box |= rooms[static_cast<std::size_t>(id)].box;
+  if (box.empty()) return;
+  const RoomKindOptions& options_kinds = options.segment.kinds;
+  const int step = room_kind_sample_step(options_kinds, resolution);
+  const cv::Rect grown_box = grown(box, step, result.labels.size());
+  const cv::Point corner(grown_box.x / step * step, grown_box.y / step * step);
+  const cv::Rect crop = cv::Rect(corner, grown_box.br()) & cv::Rect(cv::Point(), result.labels.size());
+  const std::vector<RoomShape> shapes = room_shapes(result.labels(crop), resolution, options_kinds);
+  for (Room& room : result.rooms) {
+    if (!ids.count(room.id)) continue;
+    const auto i = static_cast<std::size_t>(room.id - 1);
+    room.kind = i < shapes.size() ? room_kind(shapes[i], options_kinds) : RoomKind::kRoom;
+  }
 }
 
 // The state's cells, floor and labelled cells are the grid's from here on; the returned mask is all

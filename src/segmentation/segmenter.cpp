@@ -16,6 +16,7 @@
 #include "topocut/decomposition/ring_intersections.h"
 #include "topocut/map/simplify.h"
 #include "topocut/segmentation/polygon_split.h"
+#include "topocut/segmentation/room_kinds.h"
 #include "topocut/segmentation/segment_times.h"
 #include "topocut/segmentation/segmentation_rules.h"
 
@@ -28,6 +29,7 @@ void validate(const SegmentOptions& options) {
   check_area(options.contours.min_hole_area, "the smallest hole area");
   check_area(options.merge.min_room_area, "the fold area");
   check_length(options.doors.max_width, "the door width");
+  validate(options.kinds);
   if (options.decomposition.max_rounds < 1) throw Error("the decomposition needs at least one round");
   validate(options.merge);
   validate(options.doors);
@@ -328,6 +330,7 @@ Segmentation segment_input(const SegmentationInput& input, const SegmentOptions&
   Segmentation segmentation = rooms_from_pieces(to_label.empty() ? grid : labelled_only(grid, to_label), pieces, options.labels);
   timer.next(SegmentStage::kOutputs);
   for (Passage& passage : segmentation.passages) passage.door = is_door(passage, options.doors);
+  assign_room_kinds(segmentation, options.kinds);  // once the rooms are final: whatever decided them
   return segmentation;
 }
 

@@ -90,6 +90,43 @@ TEST(SegmentCli, MergedCorridorIsOneRoomAndParityKeepsDuDesPieces) {
   expect_error(run(dir, {bundled("corridor_l.yaml"), "--door-width", "0"}), "--door-width", 2);
 }
 
+// The floor plan's corridor (2 m wide across the building at y 6..8 m) is the one corridor; the
+// rooms north and south of it are rooms. The overlay coloured by kind tints it orange.
+TEST(SegmentCli, TheFloorplansCorridorIsTheOneCorridor) {
+  TempDir dir;
+  const Result r = run(dir, {bundled("floorplan.yaml"), "--out-json", dir.file("r.json"), "--out-geojson", dir.file("r.geojson"),
+                             "--out-color", dir.file("kinds.png"), "--color-by-kind", "--at", "10,7"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  const std::string at = "at 10,7: room ";
+  const std::size_t found = r.out.find(at);
+  ASSERT_NE(found, std::string::npos) << r.out;
+  const int corridor = std::stoi(r.out.substr(found + at.size()));
+  const nlohmann::json json = nlohmann::json::parse(file_text(dir.file("r.json")));
+  ASSERT_GE(json["rooms"].size(), 5u);
+  for (const nlohmann::json& room : json["rooms"])
+    EXPECT_EQ(room["kind"], room["id"] == corridor ? "corridor" : "room") << room["id"];
+  const nlohmann::json geo = nlohmann::json::parse(file_text(dir.file("r.geojson")));
+  for (std::size_t i = 0; i < json["rooms"].size(); ++i) EXPECT_EQ(geo["features"][i]["properties"]["kind"], json["rooms"][i]["kind"]);
+  const cv::Mat overlay = topocut::testing::read_test_image(dir.file("kinds.png"), topocut::testing::Pixels::kColour);
+  // Most pixels of the corridor's middle (x 1..19 m, y 6.5..7.5 m) are orange, of a room north of it
+  // (x 1..4 m, y 9..13 m) blue; ids and the room graph are drawn over both.
+  const double scale = overlay.cols / 400.0;  // the overlay of the 400 x 300-cell map, scaled up
+  auto tinted = [&](double x0, double x1, double y0, double y1, bool orange) {
+    const cv::Rect box(static_cast<int>(x0 / 0.05 * scale), static_cast<int>((15.0 - y1) / 0.05 * scale),
+                       static_cast<int>((x1 - x0) / 0.05 * scale), static_cast<int>((y1 - y0) / 0.05 * scale));
+    int count = 0;
+    for (int row = box.y; row < box.y + box.height; ++row)
+      for (int column = box.x; column < box.x + box.width; ++column) {
+        const cv::Vec3b p = overlay.at<cv::Vec3b>(row, column);  // BGR
+        count += orange ? p[2] > p[0] + 50 : p[0] > p[2] + 50;
+      }
+    return static_cast<double>(count) / box.area();
+  };
+  EXPECT_GT(tinted(1.0, 19.0, 6.5, 7.5, true), 0.8) << "the corridor should be tinted orange";
+  EXPECT_GT(tinted(1.0, 4.0, 9.0, 13.0, false), 0.8) << "a room should be tinted blue";
+  expect_error(run(dir, {bundled("floorplan.yaml"), "--color-by-kind"}), "--out-color", 2);
+}
+
 TEST(SegmentCli, TrivialModeGivesOneRoomPerComponent) {
   TempDir dir;
   const Result r = run(dir, {bundled("floorplan.yaml"), "--trivial", "--out-json", dir.file("r.json")});
@@ -369,8 +406,7 @@ TEST(SegmentCli, JsonGeoJsonAndLabelsAgree) {
     const int id = room["id"].get<int>();
     EXPECT_NEAR(room["labelled_area"].get<double>(), cv::countNonZero(labels == id) * cell, 1e-6) << "room " << id;
     largest_difference = std::max(largest_difference, std::abs(room["area"].get<double>() - room["labelled_area"].get<double>()));
-    nlohmann::json properties = geo["features"][i]["properties"];
-    properties.erase("kind");
+    const nlohmann::json& properties = geo["features"][i]["properties"];
     nlohmann::json expected = room;
     expected.erase("outer");
     expected.erase("holes");

@@ -159,8 +159,10 @@ def test_results_pickle(floorplan):
     assert again.resolution == r.resolution and again.origin == r.origin
     assert again.room_at(2.0, 1.5).id == r.room_at(2.0, 1.5).id
     room = pickle.loads(pickle.dumps(r.rooms[2]))
-    assert (room.id, room.area, room.labelled_area, room.inside, room.bbox) == (
-        r.rooms[2].id, r.rooms[2].area, r.rooms[2].labelled_area, r.rooms[2].inside, r.rooms[2].bbox)
+    assert (room.id, room.kind, room.area, room.labelled_area, room.inside, room.bbox) == (
+        r.rooms[2].id, r.rooms[2].kind, r.rooms[2].area, r.rooms[2].labelled_area, r.rooms[2].inside, r.rooms[2].bbox)
+    corridor = next(room for room in r.rooms if room.kind == "corridor")
+    assert pickle.loads(pickle.dumps(corridor)).kind == "corridor"
     assert np.array_equal(room.outer, r.rooms[2].outer)
     passage = pickle.loads(pickle.dumps(r.passages[0]))
     assert (passage.rooms, passage.kind, passage.width, passage.rule) == (

@@ -126,3 +126,26 @@ def test_example_script_draws_the_rooms(bundled_map, tmp_path):
     assert "room 1:" in run.stdout
     picture = np.array(Image.open(out))
     assert picture.shape[0] > 200 and picture.shape[1] > 200
+
+
+def test_room_kinds_are_the_commands_on_the_floorplan(cli, bundled_map, tmp_path):
+    # The bundled floor plan: a corridor 2 m wide across the building at y 6..8 m, rooms north and south.
+    import json
+
+    out, labels_png = tmp_path / "rooms.json", tmp_path / "labels.png"
+    subprocess.run([cli, "segment", bundled_map, "--out-json", str(out), "--out-labels", str(labels_png)], check=True,
+                   capture_output=True)
+    m = topocut.load_map(bundled_map)
+    r = topocut.segment(m.grid, m.resolution, m.origin)
+    assert np.array_equal(np.flipud(r.labels), np.array(Image.open(labels_png)).astype(np.int32))
+    command = {room["id"]: room["kind"] for room in json.loads(out.read_text())["rooms"]}
+    assert command == {room.id: room.kind for room in r.rooms}
+    corridor = r.room_at(10.0, 7.0)
+    assert corridor is not None and corridor.kind == "corridor"
+    assert [room.id for room in r.rooms if room.kind == "corridor"] == [corridor.id]
+    assert len(r.rooms) >= 5 and "corridor" in repr(corridor)
+    try:
+        import networkx  # noqa: F401
+    except ImportError:
+        return
+    assert r.to_networkx().nodes[corridor.id]["kind"] == "corridor"

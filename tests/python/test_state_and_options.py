@@ -77,7 +77,8 @@ def test_a_segmentation_state_is_checked_field_by_field(result, field, value, me
 
 def test_rooms_passages_maps_and_scores_states_are_checked(result):
     room = list(result.rooms[0].__getstate__())
-    for field, value in [(0, 0), (1, np.array([[math.nan, 0.0]])), (3, -1.0), (5, (math.inf, 0.0)), (1, np.zeros((3, 3)))]:
+    for field, value in [(0, 0), (1, np.array([[math.nan, 0.0]])), (3, -1.0), (5, (math.inf, 0.0)), (1, np.zeros((3, 3))),
+                         (9, "hall"), (9, 1)]:
         bad = list(room)
         bad[field] = value
         with pytest.raises(ValueError, match="^not a topocut.Room state"):

@@ -9,6 +9,13 @@
 
 namespace topocut {
 
+// What a room is for, as far as its shape tells (segmentation/room_kinds.h measures it once the rooms
+// are final): a corridor is long, narrow and opens onto several rooms; every other room is a room.
+enum class RoomKind { kRoom, kCorridor };
+
+// "room" or "corridor": a room's kind as every output names it.
+inline const char* room_kind_name(RoomKind kind) { return kind == RoomKind::kCorridor ? "corridor" : "room"; }
+
 struct Room {
   int id = 0;                // label value in Segmentation::labels, 1..N
   PolygonWithHoles polygon;  // world metres, outer CCW, holes CW
@@ -17,6 +24,7 @@ struct Room {
   // m², of the room's labelled cells: differs from area where the polygon covers cells that are no
   // room's (absorbed obstacles) or cells outside the polygon joined the room (cleaning, specks).
   double labelled_area = 0.0;
+  RoomKind kind = RoomKind::kRoom;  // from the room's labelled cells (room_kinds.h)
 };
 
 // Where a room is, beyond its polygon (map frame, metres).

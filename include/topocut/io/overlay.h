@@ -17,10 +17,15 @@ struct OverlayOptions {
   int scale = 0;
   bool draw_ids = true;
   bool draw_passages = true;
+  bool colour_by_kind = false;  // rooms tinted by kind (room_kind_colour()) instead of each its own colour
 };
 
 // A distinct, deterministic colour for room id (BGR); neighbouring ids get far-apart hues.
 cv::Vec3b room_colour(int id);
+
+// The colour (BGR) rooms of a kind are tinted in with OverlayOptions::colour_by_kind: corridors
+// orange, rooms blue.
+cv::Vec3b room_kind_colour(RoomKind kind);
 
 // The colour (BGR) a passage's cut is drawn in, by the rule that made it: doors red, wall openings
 // orange, island cuts magenta, wall lines blue, decomposition cuts green.

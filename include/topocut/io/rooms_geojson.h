@@ -9,7 +9,7 @@
 namespace topocut {
 
 // Serialises a segmentation: one Polygon Feature per room (exterior ring counter-clockwise, holes
-// clockwise, every ring closed; properties "kind": "room", "id", "area" (the polygon's, m²),
+// clockwise, every ring closed; properties "kind": "room" or "corridor" (room_kinds.h), "id", "area" (the polygon's, m²),
 // "labelled_area" (its cells', m²), "centroid", "inside"),
 // then one LineString Feature per passage (its cut; properties "kind": "door" or "opening",
 // "rooms": [a, b], "width" (m)). placements holds one entry per room (same order) for "inside"; when

@@ -11,7 +11,7 @@ namespace topocut {
 
 // Serialises a segmentation:
 // {"units": "metres", "frame": "map", "resolution", "origin": [x, y], "size": [columns, rows],
-//  "rooms": [{"id", "area", "labelled_area", "centroid": [x, y], "inside": [x, y],
+//  "rooms": [{"id", "area", "labelled_area", "kind": "room" | "corridor", "centroid": [x, y], "inside": [x, y],
 //             "outer": [[x, y], ...], "holes": [[[x, y], ...], ...]}],
 //  "passages": [{"rooms": [a, b], "width", "kind": "door" | "opening", "cut": [[x, y], [x, y]]}]}.
 // "area" is the polygon's (outer minus holes), "labelled_area" that of the room's cells; placements

@@ -10,6 +10,7 @@
 #include "topocut/map/free_space_polygons.h"
 #include "topocut/segmentation/door_cuts.h"
 #include "topocut/segmentation/open_rooms.h"
+#include "topocut/segmentation/room_kinds.h"
 #include "topocut/segmentation/room_merging.h"
 #include "topocut/segmentation/rooms_from_pieces.h"
 #include "topocut/segmentation/segment_times.h"
@@ -41,6 +42,7 @@ struct SegmentOptions {
   RoomMergeOptions merge;  // pieces -> rooms (room_merging.h)
   OpenRoomOptions open_rooms;  // rooms bounded mostly by never-seen space join their neighbour (open_rooms.h)
   RoomLabelOptions labels; // rooms -> label image (rooms_from_pieces.h)
+  RoomKindOptions kinds;   // corridor or room, measured on the final rooms (room_kinds.h)
 };
 
 // The reference behaviour (dude-algorithm.md): the options under which topocut does what the

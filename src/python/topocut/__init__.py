@@ -136,13 +136,13 @@ def _segmentation_to_shapely(self):
 
 
 def _segmentation_to_networkx(self):
-    """The room graph as a networkx MultiGraph: a node per room id (attributes area, labelled_area,
+    """The room graph as a networkx MultiGraph: a node per room id (attributes kind, area, labelled_area,
     centroid, inside, bbox, room) and an edge per passage (attributes kind, width, cut, passage);
     two rooms joined by two doors have two edges. Needs networkx."""
     networkx = _needs("networkx", "python3-networkx")
     graph = networkx.MultiGraph()
     for room in self.rooms:
-        graph.add_node(room.id, area=room.area, labelled_area=room.labelled_area, centroid=room.centroid,
+        graph.add_node(room.id, kind=room.kind, area=room.area, labelled_area=room.labelled_area, centroid=room.centroid,
                        inside=room.inside, bbox=room.bbox, room=room)
     for passage in self.passages:
         graph.add_edge(*passage.rooms, kind=passage.kind, width=passage.width, cut=passage.cut, passage=passage)
