@@ -35,7 +35,7 @@ std::vector<SegmentationRule> make_rules() {
       stage_rule("simplify", RuleStage::kCut, "decompose the exact pixel-edge polygons (slower)",
                  [](const SegmentOptions& o) { return o.simplify > 0.0; }, [](SegmentOptions& o) { o.simplify = 0.0; }),
       cut_rule(stage_rule("doors", RuleStage::kCut, "no cuts across narrow passages (doors) before the decomposition",
-                          [](const SegmentOptions& o) { return o.doors.enabled; }, [](SegmentOptions& o) { o.doors.enabled = false; }),
+                          [](const SegmentOptions& o) { return o.doors.passages; }, [](SegmentOptions& o) { o.doors.passages = false; }),
                CutRule::kDoor,
                [](const PolygonWithHoles& p, double res, const DoorOptions& d, const std::vector<Segment2>&) {
                  return find_passage_cuts(p, res, d);

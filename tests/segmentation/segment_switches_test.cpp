@@ -56,7 +56,7 @@ TEST(SegmentOptionRows, ParityIsTheReferenceAndRefusesTheSwitchesItSets) {
   const SegmentOptions parity = given({{"parity", 1}, {"concavity", 3.0}});
   const SegmentOptions reference = parity_segment_options(3.0);
   EXPECT_EQ(parity.concavity, 3.0);
-  EXPECT_EQ(parity.doors.enabled, reference.doors.enabled);
+  EXPECT_EQ(parity.doors.passages, reference.doors.passages);
   EXPECT_EQ(parity.merge.enabled, reference.merge.enabled);
   EXPECT_EQ(parity.clean, reference.clean);
   EXPECT_EQ(parity.simplify, reference.simplify);
