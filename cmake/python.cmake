@@ -81,6 +81,12 @@ if(TOPOCUT_BUILD_TESTS)
   add_test(NAME python_package COMMAND ${Python_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/tests/package/pip_install_in_venv.py
            ${CMAKE_CURRENT_SOURCE_DIR} ${CMAKE_BINARY_DIR} ${CMAKE_BINARY_DIR}/python_package)
   set_tests_properties(python_package PROPERTIES TIMEOUT 600 SKIP_RETURN_CODE 77)
+  # The README's Python starts as written (the example, and the block run with build/python on the path).
+  foreach(block python_example python)
+    add_test(NAME readme_${block} COMMAND ${Python_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/tests/package/readme_commands.py
+             --source ${CMAKE_CURRENT_SOURCE_DIR} --build ${CMAKE_BINARY_DIR} --block ${block} --cli $<TARGET_FILE:topocut>)
+    set_tests_properties(readme_${block} PROPERTIES TIMEOUT 120 SKIP_RETURN_CODE 77)
+  endforeach()
   # The shipped merge model is what the training script produces from the shared data sets.
   add_test(NAME merge_model_trained COMMAND ${Python_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/scripts/train_merge_model.py
            --check --build ${CMAKE_BINARY_DIR} --shared ${CMAKE_CURRENT_SOURCE_DIR}/../shared)

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""The README's ROS 1 start on the loopback only: a private rosmaster on a free port of 127.0.0.1,
+"""The ROS 1 session of docs/ros.md on the loopback only: a private rosmaster on a free port of 127.0.0.1,
 topocut_node, and examples/ros_rooms.py feeding it the bundled floor plan, on /map, through the
 service /topocut/segment_map and through the action /topocut/map_segmentation, then asking
 /topocut/room_at; the rooms it prints must be the library's (the rooms JSON of `topocut segment

@@ -62,7 +62,7 @@ TEST(HostileFolders, EvaluateDatasetGivesEachUnreadableFileItsRow) {
   EXPECT_NE(r.err.find("topocut evaluate: error: 3 of 3 images failed"), std::string::npos) << r.err;
 }
 
-// README "Limits": a million empty files would be a million FAILED rows; 20,000 take under a
+// docs/limits.md: a million empty files would be a million FAILED rows; 20,000 take under a
 // second in Release.
 TEST(HostileFolders, TwentyThousandEmptyFilesAreTwentyThousandRows) {
   const TempDir dir;

@@ -265,7 +265,7 @@ TEST(SegmentCli, ConfigFileGivesTheSameRoomsAsTheCommandLine) {
   expect_error(run(dir, {bundled("floorplan.yaml"), "--config", dir.file("missing.yaml")}), "missing.yaml");
 }
 
-// One vocabulary (README, "Segmentation options"): robot_radius and robot-radius are one option on the
+// One vocabulary (docs/options.md, "Segmentation options"): robot_radius and robot-radius are one option on the
 // command line and in --config, and a typo is answered with the name meant.
 TEST(SegmentCli, UnderscoresAndDashesNameTheSameOptionAndTyposGetTheNameMeant) {
   TempDir dir;

@@ -1,4 +1,4 @@
-// The decomposition's JSON on the README's worked example: a 10 x 10 room around a 4 x 4 pillar,
+// The decomposition's JSON on the worked example of docs/decompose.md: a 10 x 10 room around a 4 x 4 pillar,
 // tau 4, is cut at the two diagonals from the pillar's corners to the room's, giving two pieces
 // of area 42 (100 - 16 split in half).
 #include <gtest/gtest.h>

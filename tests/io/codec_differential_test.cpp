@@ -28,7 +28,7 @@ cv::Mat opencv_decoded(const std::string& bytes) {
   return cv::imdecode(cv::Mat(1, static_cast<int>(bytes.size()), CV_8UC1, const_cast<char*>(bytes.data())), cv::IMREAD_UNCHANGED);
 }
 
-// The refusals README "Limits" documents for valid files: layouts topocut does not read.
+// The refusals docs/limits.md documents for valid files: layouts topocut does not read.
 bool documented_refusal(const std::string& message) { return message.find("are not read") != std::string::npos || message.find("is not read") != std::string::npos; }
 
 bool same_pixels(const cv::Mat& a, const cv::Mat& b) {

@@ -7,7 +7,7 @@
 
 namespace topocut {
 
-// Byte limits of the text inputs (README "Limits"): far above any real file of the kind, far below
+// Byte limits of the text inputs (docs/limits.md): far above any real file of the kind, far below
 // what would exhaust memory once parsed.
 inline constexpr std::uint64_t kMaxMapYamlBytes = 1ull << 20;       // ROS map_server YAML: 1 MiB
 inline constexpr std::uint64_t kMaxPolygonJsonBytes = 4ull << 20;   // decompose's polygon JSON: 4 MiB

@@ -1,6 +1,6 @@
 #pragma once
 // The ranges of numbers the library accepts, chosen so that the geometry stays exact enough in
-// doubles and every output finite (README "Limits"). Values outside are refused with the range in
+// doubles and every output finite (docs/limits.md). Values outside are refused with the range in
 // the message, never carried on into a JSON null, an infinite SVG or an empty decomposition.
 #include <string>
 

@@ -1,5 +1,5 @@
 #pragma once
-// The JSON of a decomposition, as `topocut decompose` prints it (README, "Decomposing a polygon").
+// The JSON of a decomposition, as `topocut decompose` prints it (docs/decompose.md).
 #include <string>
 
 #include "topocut/decomposition/decompose.h"

@@ -53,7 +53,7 @@ struct CarmenReadOptions {
   std::size_t saturation_count = 3;
   double hard_max_range = 80.0;       // metres: the SICK LMS 2xx's longest measurable range
   double field_of_view = 3.14159265358979323846;  // radians covered from the first to the last beam
-  // Bounds on what a log may hold (README "Limits"): the inflated text, and the laser readings kept
+  // Bounds on what a log may hold (docs/limits.md): the inflated text, and the laser readings kept
   // (the walls pipeline holds every one; the largest shared log has 164 k).
   std::uint64_t max_text_bytes = 1ull << 30;     // 1 GiB
   std::size_t max_total_beams = 5'000'000;

@@ -13,7 +13,7 @@ namespace topocut {
 
 // The pixel limit of every input image (map, a YAML's image, ground truth, label image).
 struct ImageLimits {
-  double max_megapixels = 100.0;  // default: the largest map measured (README "Limits"); range below
+  double max_megapixels = 100.0;  // default: the largest map measured (docs/limits.md); range below
 };
 inline constexpr double kMaxMegapixelsCeiling = 1000.0;  // OpenCV refuses images above 2^30 pixels
 

@@ -1,5 +1,5 @@
 #pragma once
-// A labelled scan as JSON, as `topocut label` prints it (README, "Laser scans and logs").
+// A labelled scan as JSON, as `topocut label` prints it (docs/scans.md).
 #include <string>
 #include <vector>
 
