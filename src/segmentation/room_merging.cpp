@@ -103,7 +103,7 @@ void merge_learned(RoomGraph& g, const RoomMergeOptions& options, std::vector<Me
       if (!g.separates(k)) continue;
       if (!fresh[k]) {
         const std::vector<double> features = merge_features(g, k, options);
-        probability[k] = corridor_continues(g, k, features) ? 1.0 : merge_probability(options.model, features);
+        probability[k] = options.corridor_rule && corridor_continues(g, k, features) ? 1.0 : merge_probability(options.model, features);
         fresh[k] = true;
         if (trace) {
           const RoomGraph::Side& s = g.sides()[k];

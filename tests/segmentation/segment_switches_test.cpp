@@ -68,8 +68,10 @@ TEST(SegmentOptionRows, ParityIsTheReferenceAndRefusesTheSwitchesItSets) {
   EXPECT_TRUE(given({}).doors.wall_lines);
   EXPECT_FALSE(given({{"no-island-cuts", 1}}).doors.island_cuts);
   EXPECT_TRUE(given({}).doors.island_cuts);
+  EXPECT_FALSE(given({{"no-corridor-rule", 1}}).merge.corridor_rule);
+  EXPECT_TRUE(given({}).merge.corridor_rule);
   for (const char* sw : {"no-doors", "no-wall-openings", "no-merge", "no-simplify", "no-clean", "no-width-steps",
-                         "no-furniture-rule", "cover-obstacles", "no-wall-lines", "no-island-cuts"}) {
+                         "no-furniture-rule", "cover-obstacles", "no-wall-lines", "no-island-cuts", "no-corridor-rule"}) {
     EXPECT_THROW(given({{"parity", 1}, {sw, 1}}), Error) << sw;
   }
 }
