@@ -2,12 +2,17 @@
 # Runs two topocut binaries on the same inputs and compares every output file: images by their
 # decoded pixels (PNG/PGM encoders may differ byte for byte), text files (JSON, SVG, YAML) byte
 # for byte. Used to show that a refactoring changes no output.
-#   scripts/compare_outputs.sh BASE_TOPOCUT NEW_TOPOCUT [WORK_DIR] [--quick]
+#   scripts/compare_outputs.sh BASE_TOPOCUT NEW_TOPOCUT [WORK_DIR] [--quick] [-- SEGMENT_OPTIONS...]
 # --quick: Bormann plain maps and the bundled maps only (no furnished maps, real maps, logs).
+# SEGMENT_OPTIONS go to every `segment` run (e.g. -- --no-learned-merge for the hand rules' rooms).
 # Exits 0 when every output is equal, 1 otherwise (listing the differing files).
 set -uo pipefail
 here="$(cd "$(dirname "$0")/.." && pwd)"
 data="$here/../shared/datasets"
+segment_options=()
+for ((i = 1; i <= $#; ++i)); do
+  if [[ "${!i}" == -- ]]; then segment_options=("${@:i+1}"); set -- "${@:1:i-1}"; break; fi
+done
 base="$(realpath "$1")"; new="$(realpath "$2")"; work="${3:-/tmp/topocut_compare}"; quick="${4:-}"
 [[ "${3:-}" == --quick ]] && { work=/tmp/topocut_compare; quick=--quick; }
 rm -rf "$work"; mkdir -p "$work/base" "$work/new"
@@ -31,7 +36,7 @@ run_all() {  # $1 = binary, $2 = output dir
   local bin="$1" out="$2" m name
   for m in "${maps[@]}"; do
     name="$(basename "${m%.*}")_$(basename "$(dirname "$m")")"
-    "$bin" segment "$m" --out-labels "$out/$name.labels.png" --out-json "$out/$name.json" \
+    "$bin" segment "$m" "${segment_options[@]}" --out-labels "$out/$name.labels.png" --out-json "$out/$name.json" \
       --out-svg "$out/$name.svg" --out-geojson "$out/$name.geojson" \
       >"$out/$name.stdout" 2>&1 || echo "exit $?" >>"$out/$name.stdout"
   done

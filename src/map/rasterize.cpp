@@ -217,46 +217,131 @@ struct SpeckLabels {
   std::vector<int> orphans, settled_index, settled_label;
 };
 
-// Most specks lie next to a room: a search in square rings around the cell, stopped once the
-// rings are farther than the nearest label found (or at a cap), settles them without a window.
-// Nothing is written here, so the labelled cells taken are those present before this step, as in
-// settle_orphans' windows.
+// For the rows of a band of the label image, the nearest labelled column at or left of each
+// column and at or right of it: a row's nearest label to a cell in one lookup, instead of reading
+// every cell around it. The rows are kept in a ring of `rows` slots, filled as the band moves down.
+class RowNeighbours {
+ public:
+  static constexpr int kNone = std::numeric_limits<int>::min() / 4;  // no label on that side
+
+  RowNeighbours(const cv::Mat& labels, int rows) : labels_(labels), rows_(rows),
+      row_of_(static_cast<std::size_t>(rows), -1), left_(static_cast<std::size_t>(rows) * labels.cols),
+      right_(left_.size()) {}
+
+  // Columns of the nearest labels at or left of column c and at or right of it in row y (kNone and
+  // -kNone where there is none); y must not lie `rows` rows or more above a row asked before.
+  std::pair<int, int> at(int y, int c) {
+    const std::size_t slot = static_cast<std::size_t>(y % rows_), w = static_cast<std::size_t>(labels_.cols);
+    if (row_of_[slot] != y) fill(y, slot);
+    return {left_[slot * w + static_cast<std::size_t>(c)], right_[slot * w + static_cast<std::size_t>(c)]};
+  }
+
+ private:
+  void fill(int y, std::size_t slot) {
+    const int w = labels_.cols;
+    const int* row = labels_.ptr<int>(y);
+    int* left = left_.data() + slot * static_cast<std::size_t>(w);
+    int* right = right_.data() + slot * static_cast<std::size_t>(w);
+    int last = kNone;
+    for (int c = 0; c < w; ++c) left[c] = last = row[c] > 0 ? c : last;
+    last = -kNone;
+    for (int c = w - 1; c >= 0; --c) right[c] = last = row[c] > 0 ? c : last;
+    row_of_[slot] = y;
+  }
+
+  const cv::Mat& labels_;
+  int rows_;
+  std::vector<int> row_of_, left_, right_;
+};
+
+// The label of the nearest labelled cell to the cell (r, c) within cap cells in x and y, by
+// squared distance; among equally near ones the first in the order of a search in square rings
+// around the cell (ring, then row, then column): the lowest ring, row and column. 0 when none.
+int nearest_in_band(const cv::Mat& labels, RowNeighbours& rows, int r, int c, int cap) {
+  const int h = labels.rows;
+  long best = std::numeric_limits<long>::max();
+  int best_ring = 0, best_y = 0, label = 0;
+  for (int y = std::max(0, r - cap); y <= std::min(h - 1, r + cap); ++y) {
+    const long dy = y - r;
+    if (dy * dy > best) continue;
+    const auto [left, right] = rows.at(y, c);
+    // In one row the nearer column wins; at equal distance the left one (a lower column).
+    const int x = c - left <= right - c ? left : right;
+    const long dx = x - c;
+    if (dx < -cap || dx > cap) continue;
+    const long d = dy * dy + dx * dx;
+    const int ring = static_cast<int>(std::max(std::abs(dy), std::abs(dx)));
+    if (d < best || (d == best && (ring < best_ring || (ring == best_ring && y < best_y)))) {
+      best = d;
+      best_ring = ring;
+      best_y = y;
+      label = labels.ptr<int>(y)[x];
+    }
+  }
+  return label;
+}
+
+// Most specks lie a cell or two from a label: a search in the first square rings around the cell
+// (each row by row and column by column, a label taking the place of the best only when strictly
+// nearer) settles them when no farther ring can hold a nearer label; std::nullopt otherwise.
+std::optional<int> nearest_in_small_rings(const cv::Mat& labels, int r, int c) {
+  constexpr int kRings = 8;
+  long best = std::numeric_limits<long>::max();
+  int label = 0;
+  for (int k = 1; k <= kRings; ++k) {
+    for (int y = r - k; y <= r + k; ++y) {
+      if (y < 0 || y >= labels.rows) continue;
+      const int* row = labels.ptr<int>(y);
+      const bool edge_row = y == r - k || y == r + k;
+      for (int x = c - k; x <= c + k; x += edge_row ? 1 : 2 * k) {
+        if (x < 0 || x >= labels.cols || row[x] <= 0) continue;
+        const long d = static_cast<long>(y - r) * (y - r) + static_cast<long>(x - c) * (x - c);
+        if (d < best) {
+          best = d;
+          label = row[x];
+        }
+      }
+    }
+    // Ring k + 1 and beyond lie at least (k + 1)² away: none of them can be strictly nearer.
+    if (static_cast<long>(k + 1) * (k + 1) >= best) return label;
+  }
+  return std::nullopt;
+}
+
+// Most specks lie next to a room: the nearest label within kRingCap cells (nearest_in_band) settles
+// them without a window. The cells are searched in raster order, so that the rows' nearest labels
+// are found once each, and the results kept in the cells' own order. Nothing is written here, so
+// the labelled cells taken are those present before this step, as in settle_orphans' windows.
 SpeckLabels nearest_in_rings(const cv::Mat& labels, const LabelPresence& presence, const std::vector<int>& unlabelled) {
   constexpr int kRingCap = 24;
   const int h = labels.rows, w = labels.cols;
   const int* data = labels.ptr<int>(0);
   const cv::Rect all(0, 0, w, h);
-  SpeckLabels specks;
-  for (const int i : unlabelled) {
+  std::vector<std::size_t> search;  // positions in unlabelled of the cells to search around
+  for (std::size_t k = 0; k < unlabelled.size(); ++k) {
+    const int i = unlabelled[k];
     if (data[i] != 0) continue;
-    const int r = i / w, c = i % w;
-    if (!presence.maybe(cv::Rect(c - kRingCap, r - kRingCap, 2 * kRingCap + 1, 2 * kRingCap + 1) & all)) {
-      specks.orphans.push_back(i);  // no label within the rings' reach
-      continue;
-    }
-    long best = std::numeric_limits<long>::max();
-    int label = 0;
-    for (int k = 1; k <= kRingCap && static_cast<long>(k - 1) * (k - 1) < best; ++k) {
-      for (int y = r - k; y <= r + k; ++y) {
-        if (y < 0 || y >= h) continue;
-        const bool edge_row = y == r - k || y == r + k;
-        for (int x = c - k; x <= c + k; x += edge_row ? 1 : 2 * k) {
-          if (x < 0 || x >= w) continue;
-          const int l = data[y * w + x];
-          if (l <= 0) continue;
-          const long d = static_cast<long>(y - r) * (y - r) + static_cast<long>(x - c) * (x - c);
-          if (d < best) {
-            best = d;
-            label = l;
-          }
-        }
-      }
-    }
-    if (label > 0) {
+    if (presence.maybe(cv::Rect(i % w - kRingCap, i / w - kRingCap, 2 * kRingCap + 1, 2 * kRingCap + 1) & all))
+      search.push_back(k);
+  }
+  if (!std::is_sorted(search.begin(), search.end(), [&](std::size_t a, std::size_t b) { return unlabelled[a] < unlabelled[b]; }))
+    std::stable_sort(search.begin(), search.end(), [&](std::size_t a, std::size_t b) { return unlabelled[a] < unlabelled[b]; });
+  std::vector<int> found(unlabelled.size(), 0);
+  RowNeighbours rows(labels, 2 * kRingCap + 1);
+  for (const std::size_t k : search) {
+    const int i = unlabelled[k];
+    const std::optional<int> near = nearest_in_small_rings(labels, i / w, i % w);
+    found[k] = near ? *near : nearest_in_band(labels, rows, i / w, i % w, kRingCap);
+  }
+  SpeckLabels specks;
+  for (std::size_t k = 0; k < unlabelled.size(); ++k) {
+    const int i = unlabelled[k];
+    if (data[i] != 0) continue;
+    if (found[k] > 0) {
       specks.settled_index.push_back(i);
-      specks.settled_label.push_back(label);
+      specks.settled_label.push_back(found[k]);
     } else {
-      specks.orphans.push_back(i);
+      specks.orphans.push_back(i);  // no label within the rings' reach
     }
   }
   return specks;

@@ -109,6 +109,7 @@ RoomGraph::RoomGraph(const PolygonWithHoles& polygon, const PieceSet& set, const
     moments_.push_back({m[0], m[1], m[2], m[3], m[4], m[5]});
   }
   find_sides();
+  side_widths_.assign(2 * sides_.size(), SideWidth{});
   measure_cut_ends();
   mark_furniture(polygon, furniture_size);
   measure_outlines(cells);
@@ -276,25 +277,34 @@ void RoomGraph::find_sides() {
 
 // Which cut ends lie on an obstacle inside the component (a hole), how large the largest of those is,
 // and whether it is furniture (at most furniture_size a side, 0: none): a room does not end at a table.
+// The cut ends are sorted by x, so that each hole looks only at the ends beside its box.
 void RoomGraph::mark_furniture(const PolygonWithHoles& polygon, double furniture_size) {
   const double limit = furniture_size / resolution_;
   const double near = 1.5;  // cells: the pieces come from the polygon simplified by about a cell
+  struct End {
+    Point2 at;
+    std::size_t k;
+  };
+  std::vector<End> ends;
+  for (std::size_t k = 0; k < sides_.size(); ++k)
+    if (sides_[k].left >= 0)
+      for (const Point2& end : {set_.cuts[k].a, set_.cuts[k].b}) ends.push_back({end, k});
+  std::sort(ends.begin(), ends.end(), [](const End& p, const End& q) { return p.at.x < q.at.x; });
   for (const Ring& hole : polygon.holes) {
     const Box box = bounding_box(hole);
     const double extent = std::max(box.x1 - box.x0, box.y1 - box.y0);
     const bool furniture = furniture_size > 0.0 && box.x1 - box.x0 <= limit && box.y1 - box.y0 <= limit;
-    for (std::size_t k = 0; k < sides_.size(); ++k) {
-      Side& side = sides_[k];
-      if (side.left < 0) continue;
-      for (const Point2& end : {set_.cuts[k].a, set_.cuts[k].b}) {
-        if (end.x < box.x0 - near || end.x > box.x1 + near || end.y < box.y0 - near || end.y > box.y1 + near) continue;
-        bool on = false;
-        for (std::size_t i = 0; i < hole.size() && !on; ++i) on = distance_to_segment(end, {hole[i], hole[(i + 1) % hole.size()]}) <= near;
-        if (!on) continue;
-        ++side.ends_on_holes;
-        side.hole_extent = std::max(side.hole_extent, extent * resolution_);
-        side.furniture = side.furniture || furniture;
-      }
+    auto first = std::lower_bound(ends.begin(), ends.end(), box.x0 - near, [](const End& e, double x) { return e.at.x < x; });
+    for (auto it = first; it != ends.end() && !(it->at.x > box.x1 + near); ++it) {
+      const Point2& end = it->at;
+      if (end.y < box.y0 - near || end.y > box.y1 + near) continue;
+      bool on = false;
+      for (std::size_t i = 0; i < hole.size() && !on; ++i) on = distance_to_segment(end, {hole[i], hole[(i + 1) % hole.size()]}) <= near;
+      if (!on) continue;
+      Side& side = sides_[it->k];
+      ++side.ends_on_holes;
+      side.hole_extent = std::max(side.hole_extent, extent * resolution_);
+      side.furniture = side.furniture || furniture;
     }
   }
 }
@@ -450,6 +460,14 @@ double RoomGraph::chord(int r, const Point2& p, const Point2& u) {
 }
 
 double RoomGraph::side_width(std::size_t k, int r, bool left, double depth_m) {
+  SideWidth& known = side_widths_[2 * k + (left ? 0 : 1)];
+  const std::size_t pieces = members(r).size();
+  if (known.room == r && known.pieces == pieces && known.depth == depth_m) return known.width;
+  known = {r, pieces, depth_m, measure_side_width(k, r, left, depth_m)};
+  return known.width;
+}
+
+double RoomGraph::measure_side_width(std::size_t k, int r, bool left, double depth_m) {
   const auto [u, n, mid] = cut_frame(set_.cuts[k], left);
   const double depth = std::max(depth_m / resolution_, 1.0);
   const int samples = 8;

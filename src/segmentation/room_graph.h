@@ -88,6 +88,7 @@ class RoomGraph {
   void mark_furniture(const PolygonWithHoles& polygon, double furniture_size);
   void measure_outlines(const cv::Mat& cells);
   double chord(int r, const Point2& p, const Point2& u);
+  double measure_side_width(std::size_t k, int r, bool left, double depth);
 
   const PieceSet& set_;
   double resolution_;
@@ -108,6 +109,15 @@ class RoomGraph {
   // of its parts' hulls, so growing a long corridor does not take the hull of all its vertices again.
   std::map<int, std::vector<Point2>> hulls_;
   const std::vector<Point2>& room_hull(int r);
+  // side_width's last answer per cut and side, with the room it was measured in: a room only grows,
+  // so the same root with as many pieces is the same room, and a cut measured again after the room
+  // across it grew reads the unchanged side here.
+  struct SideWidth {
+    int room = -1;
+    std::size_t pieces = 0;
+    double depth = 0.0, width = 0.0;
+  };
+  std::vector<SideWidth> side_widths_;  // 2 k: left of cut k, 2 k + 1: right
 };
 
 }  // namespace topocut

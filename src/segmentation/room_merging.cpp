@@ -5,6 +5,8 @@
 #include <limits>
 #include <map>
 #include <numeric>
+#include <optional>
+#include <queue>
 #include <set>
 #include <string>
 #include <tuple>
@@ -22,11 +24,6 @@ namespace {
 using Key = std::tuple<double, double, double, double>;  // directed edge (a.x, a.y, b.x, b.y)
 
 Key edge_key(const Point2& a, const Point2& b) { return {a.x, a.y, b.x, b.y}; }
-
-// Marks every cut next to room r as to be measured again (r grew).
-void invalidate_around(RoomGraph& g, int r, std::vector<bool>& fresh) {
-  for (const std::size_t k : g.room_sides(r)) fresh[k] = false;
-}
 
 // The hand rules (RoomMergeOptions::learned false): a cut that spans the narrower side is no door.
 }  // namespace
@@ -53,28 +50,57 @@ double hand_rule_score(RoomGraph& g, std::size_t k, const RoomMergeOptions& opti
 
 namespace {
 
+// A cut's priority as the merging takes them: the highest first, the lowest cut among equal ones;
+// stamp tells a priority measured again from the one queued before.
+struct QueuedCut {
+  double priority;
+  std::size_t k;
+  unsigned stamp;
+};
+
+struct TakenLater {
+  bool operator()(const QueuedCut& a, const QueuedCut& b) const {
+    return a.priority < b.priority || (a.priority == b.priority && a.k > b.k);
+  }
+};
+
+// Merges across the cut of highest priority(k) (std::nullopt: cut k is not to be taken) while there
+// is one; the priorities of the grown room's cuts are measured again, in cut order. The cuts wait in a
+// queue (priorities measured before the room beside them grew, and cuts inside one room, are dropped
+// as they come up), so that a merge costs the grown room's cuts, not a look at every cut of the
+// component; the merges are those of taking the best of all cuts each time, ties to the lowest cut.
+template <class Priority>
+void merge_best_first(RoomGraph& g, const Priority& priority) {
+  const std::size_t n = g.sides().size();
+  std::vector<unsigned> stamp(n, 0);
+  std::priority_queue<QueuedCut, std::vector<QueuedCut>, TakenLater> queue;
+  auto measure = [&](std::size_t k) {
+    ++stamp[k];
+    if (const std::optional<double> p = priority(k)) queue.push({*p, k, stamp[k]});
+  };
+  for (std::size_t k = 0; k < n; ++k)
+    if (g.separates(k)) measure(k);
+  while (!queue.empty()) {
+    const QueuedCut best = queue.top();
+    queue.pop();
+    if (best.stamp != stamp[best.k] || !g.separates(best.k)) continue;
+    const RoomGraph::Side& chosen = g.sides()[best.k];
+    g.unite(chosen.left, chosen.right);
+    for (const std::size_t k : g.room_sides(g.root(chosen.left)))
+      if (g.separates(k)) measure(k);
+  }
+}
+
 // The hand rules (RoomMergeOptions::learned false): the most clearly non-door-like cut first, then the
 // scores next to the merged room change (the merged room is wider or longer than its parts), so they
 // are measured again.
 void merge_by_hand_rules(RoomGraph& g, const RoomMergeOptions& options) {
-  const std::size_t n = g.sides().size();
-  std::vector<double> score(n, 0.0);
-  std::vector<bool> fresh(n, false);
-  while (true) {
-    int best = -1;
-    for (std::size_t k = 0; k < n; ++k) {
-      if (!g.separates(k) || is_door_rule(g.sides()[k].rule)) continue;
-      if (!fresh[k]) {
-        score[k] = hand_rule_score(g, k, options);
-        fresh[k] = true;
-      }
-      if (score[k] >= options.door_ratio && (best < 0 || score[k] > score[static_cast<std::size_t>(best)])) best = static_cast<int>(k);
-    }
-    if (best < 0) return;
-    const RoomGraph::Side& chosen = g.sides()[static_cast<std::size_t>(best)];
-    g.unite(chosen.left, chosen.right);
-    invalidate_around(g, g.root(chosen.left), fresh);
-  }
+  merge_best_first(g, [&](std::size_t k) -> std::optional<double> {
+    if (is_door_rule(g.sides()[k].rule)) return std::nullopt;
+    const double score = hand_rule_score(g, k, options);
+    if (score >= options.door_ratio) return score;
+    return std::nullopt;
+  });
 }
 
 // A corridor continued across a cut is one room whatever the model says: both sides strips of about the
@@ -94,35 +120,22 @@ bool corridor_continues(RoomGraph& g, std::size_t k, const std::vector<double>& 
 // The learned criterion: the most probable merge first while its probability is above the model's
 // threshold; the probabilities next to a grown room are computed again.
 void merge_learned(RoomGraph& g, const RoomMergeOptions& options, std::vector<MergeStep>* trace) {
-  const std::size_t n = g.sides().size();
-  std::vector<double> probability(n, 0.0);
-  std::vector<bool> fresh(n, false);
-  while (true) {
-    int best = -1;
-    for (std::size_t k = 0; k < n; ++k) {
-      if (!g.separates(k)) continue;
-      if (!fresh[k]) {
-        const std::vector<double> features = merge_features(g, k, options);
-        probability[k] = options.corridor_rule && corridor_continues(g, k, features) ? 1.0 : merge_probability(options.model, features);
-        fresh[k] = true;
-        if (trace) {
-          const RoomGraph::Side& s = g.sides()[k];
-          trace->push_back({features, g.members(g.root(s.left)), g.members(g.root(s.right)), probability[k]});
-        }
-      }
-      if (probability[k] > options.model.threshold && (best < 0 || probability[k] > probability[static_cast<std::size_t>(best)])) best = static_cast<int>(k);
+  merge_best_first(g, [&](std::size_t k) -> std::optional<double> {
+    const std::vector<double> features = merge_features(g, k, options);
+    const double probability = options.corridor_rule && corridor_continues(g, k, features) ? 1.0 : merge_probability(options.model, features);
+    if (trace) {
+      const RoomGraph::Side& s = g.sides()[k];
+      trace->push_back({features, g.members(g.root(s.left)), g.members(g.root(s.right)), probability});
     }
-    if (best < 0) return;
-    const RoomGraph::Side& chosen = g.sides()[static_cast<std::size_t>(best)];
-    g.unite(chosen.left, chosen.right);
-    invalidate_around(g, g.root(chosen.left), fresh);
-  }
+    if (probability > options.model.threshold) return probability;
+    return std::nullopt;
+  });
 }
 
 // Widest chord of room r along any of its cuts (metres).
 double room_width(RoomGraph& g, int r, double depth) {
   double widest = 0.0;
-  for (std::size_t k = 0; k < g.sides().size(); ++k) {
+  for (const std::size_t k : g.room_sides(r)) {
     if (!g.separates(k)) continue;
     const RoomGraph::Side& s = g.sides()[k];
     if (g.root(s.left) == r) widest = std::max(widest, g.side_width(k, r, true, depth));
@@ -131,10 +144,39 @@ double room_width(RoomGraph& g, int r, double depth) {
   return widest;
 }
 
+// The room that room r shares the longest cuts with (-1: none), lengths summed in cut order.
+int longest_shared_neighbour(RoomGraph& g, int r) {
+  std::map<int, double> shared;
+  for (const std::size_t k : g.room_sides(r)) {
+    const RoomGraph::Side& s = g.sides()[k];
+    if (!g.separates(k)) continue;
+    const int a = g.root(s.left), b = g.root(s.right);
+    shared[a == r ? b : a] += s.length;
+  }
+  int into = -1;
+  double longest = 0.0;
+  for (const auto& [room, length] : shared) {
+    if (length > longest) {
+      into = room;
+      longest = length;
+    }
+  }
+  return into;
+}
+
 // Rooms too small or too thin to be rooms join the neighbour they share the longest cut with,
-// smallest first (the least likely to be a room of its own).
+// smallest first (the least likely to be a room of its own). A room's width and thickness change
+// only when it grows, so they are measured once per room and again after it grows.
 void fold_small_rooms(RoomGraph& g, const RoomMergeOptions& options) {
   std::vector<bool> stuck(g.piece_count(), false);
+  std::vector<std::optional<bool>> thin_room(g.piece_count());  // by room root; empty: to measure
+  auto is_thin = [&](int r) {
+    std::optional<bool>& thin = thin_room[static_cast<std::size_t>(r)];
+    if (!thin)
+      thin = (options.min_room_width > 0.0 && room_width(g, r, options.width_depth) < options.min_room_width) ||
+             (!options.learned && options.min_room_thickness > 0.0 && g.room_thickness(r) < options.min_room_thickness);
+    return *thin;
+  };
   while (true) {
     int victim = -1;
     double victim_area = 0.0;
@@ -142,33 +184,19 @@ void fold_small_rooms(RoomGraph& g, const RoomMergeOptions& options) {
       const int r = static_cast<int>(i);
       if (g.root(r) != r || stuck[i]) continue;
       const double a = g.room_area(r);
-      const bool small = a < options.min_room_area;
-      const bool thin = (options.min_room_width > 0.0 && room_width(g, r, options.width_depth) < options.min_room_width) ||
-                        (!options.learned && options.min_room_thickness > 0.0 && g.room_thickness(r) < options.min_room_thickness);
-      if ((small || thin) && (victim < 0 || a < victim_area)) {
+      if ((a < options.min_room_area || is_thin(r)) && (victim < 0 || a < victim_area)) {
         victim = r;
         victim_area = a;
       }
     }
     if (victim < 0) return;
-    std::map<int, double> shared;
-    for (std::size_t k = 0; k < g.sides().size(); ++k) {
-      const RoomGraph::Side& s = g.sides()[k];
-      if (!g.separates(k)) continue;
-      const int a = g.root(s.left), b = g.root(s.right);
-      if (a != victim && b != victim) continue;
-      shared[a == victim ? b : a] += s.length;
+    const int into = longest_shared_neighbour(g, victim);
+    if (into < 0) {
+      stuck[static_cast<std::size_t>(victim)] = true;
+      continue;
     }
-    int into = -1;
-    double longest = 0.0;
-    for (const auto& [room, length] : shared) {
-      if (length > longest) {
-        into = room;
-        longest = length;
-      }
-    }
-    if (into < 0) stuck[static_cast<std::size_t>(victim)] = true;
-    else g.unite(victim, into);
+    g.unite(victim, into);
+    thin_room[static_cast<std::size_t>(g.root(victim))].reset();
   }
 }
 
