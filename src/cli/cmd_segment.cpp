@@ -186,7 +186,7 @@ std::string method_summary(const Request& request) {
   if (request.settings.switches.parity) {
     text << "DuDe pieces, parity";
   } else {
-    std::string stages = std::string(o.clean ? "cleaning + " : "") + (o.doors.enabled ? "doors + " : "") + "DuDe";
+    std::string stages = std::string(o.clean ? "cleaning + " : "") + (o.doors.passages ? "doors + " : "") + "DuDe";
     if (o.merge.enabled) stages += o.merge.learned ? " + merging" : " + merging by hand rules";
     std::string others;
     for (const std::string& rule : rules_off(o))

@@ -25,7 +25,7 @@ void validate(const DoorOptions& options) {
 }
 
 std::vector<Segment2> find_passage_cuts(const PolygonWithHoles& polygon, double resolution, const DoorOptions& options) {
-  return search_cuts(polygon, resolution, options, options.enabled, {}, [&](const DoorSearch& search, const EdgeGrid& grid) {
+  return search_cuts(polygon, resolution, options, options.passages, {}, [&](const DoorSearch& search, const EdgeGrid& grid) {
     std::vector<Candidate> doors;
     for (const Candidate& c : corner_cuts(search, grid, false)) {
       if (has_wide_sides(search, grid, c)) doors.push_back(c);
@@ -36,7 +36,6 @@ std::vector<Segment2> find_passage_cuts(const PolygonWithHoles& polygon, double 
 
 std::vector<Segment2> find_door_cuts(const PolygonWithHoles& polygon, double resolution, const DoorOptions& options) {
   validate(options);
-  if (!options.enabled) return {};
   std::vector<Segment2> cuts = find_passage_cuts(polygon, resolution, options);
   const std::vector<Segment2> openings = find_wall_openings(polygon, resolution, options, cuts);
   cuts.insert(cuts.end(), openings.begin(), openings.end());

@@ -122,7 +122,7 @@ bool corridor_continues(RoomGraph& g, std::size_t k, const std::vector<double>& 
 void merge_learned(RoomGraph& g, const RoomMergeOptions& options, std::vector<MergeStep>* trace) {
   merge_best_first(g, [&](std::size_t k) -> std::optional<double> {
     const std::vector<double> features = merge_features(g, k, options);
-    const double probability = corridor_continues(g, k, features) ? 1.0 : merge_probability(options.model, features);
+    const double probability = options.corridor_rule && corridor_continues(g, k, features) ? 1.0 : merge_probability(options.model, features);
     if (trace) {
       const RoomGraph::Side& s = g.sides()[k];
       trace->push_back({features, g.members(g.root(s.left)), g.members(g.root(s.right)), probability});

@@ -35,7 +35,7 @@ std::vector<SegmentationRule> make_rules() {
       stage_rule("simplify", RuleStage::kCut, "decompose the exact pixel-edge polygons (slower)",
                  [](const SegmentOptions& o) { return o.simplify > 0.0; }, [](SegmentOptions& o) { o.simplify = 0.0; }),
       cut_rule(stage_rule("doors", RuleStage::kCut, "no cuts across narrow passages (doors) before the decomposition",
-                          [](const SegmentOptions& o) { return o.doors.enabled; }, [](SegmentOptions& o) { o.doors.enabled = false; }),
+                          [](const SegmentOptions& o) { return o.doors.passages; }, [](SegmentOptions& o) { o.doors.passages = false; }),
                CutRule::kDoor,
                [](const PolygonWithHoles& p, double res, const DoorOptions& d, const std::vector<Segment2>&) {
                  return find_passage_cuts(p, res, d);
@@ -63,6 +63,11 @@ std::vector<SegmentationRule> make_rules() {
       stage_rule("learned-merge", RuleStage::kMerge,
                  "merge by the hand rules (a cut spanning the narrower room, width steps) instead of the learned model",
                  [](const SegmentOptions& o) { return o.merge.learned; }, [](SegmentOptions& o) { o.merge.learned = false; }),
+      stage_rule("corridor-rule", RuleStage::kMerge,
+                 "(learned merging) no forced merge where a corridor continues across a cut (both sides strips of one "
+                 "thickness, at most 2.5 m, each 3 times as long as thick): the model decides alone",
+                 [](const SegmentOptions& o) { return o.merge.corridor_rule; },
+                 [](SegmentOptions& o) { o.merge.corridor_rule = false; }),
       stage_rule("furniture-rule", RuleStage::kMerge,
                  "(hand rules) cuts that end on furniture-sized obstacles (at most 2.5 m a side) may separate rooms",
                  [](const SegmentOptions& o) { return o.merge.furniture_size > 0.0; },

@@ -90,14 +90,14 @@ TEST(DatasetOptions, SegmenterSwitchesReachTheOptionsAndTheMethodName) {
   apply_dataset_option(arguments, "concavity", "3");
   apply_dataset_option(arguments, "parity", "");
   EXPECT_EQ(arguments.run.segment.concavity, 3.0);
-  EXPECT_FALSE(arguments.run.segment.doors.enabled);
+  EXPECT_FALSE(arguments.run.segment.doors.passages);
   EXPECT_FALSE(arguments.run.segment.merge.enabled);
   EXPECT_NE(method_name(arguments.run.segment).find("parity"), std::string::npos);
   DatasetArguments other;
   apply_dataset_option(other, "no-merge", "");
   apply_dataset_option(other, "cover-obstacles", "");
   EXPECT_FALSE(other.run.segment.merge.enabled);
-  EXPECT_TRUE(other.run.segment.doors.enabled);
+  EXPECT_TRUE(other.run.segment.doors.passages);
   EXPECT_TRUE(other.run.segment.labels.cover_absorbed_obstacles);
   const std::string name = method_name(other.run.segment);
   EXPECT_NE(name.find("no merge"), std::string::npos);

@@ -41,7 +41,10 @@ TEST(ExplorationRun, EveryUpdateIsSegmentedAndTheEndMatchesBatch) {
   EXPECT_LE(static_cast<int>(run.updates.size()), run.scans);
   // Stability is measured on every update after the first; the incremental segmenter hands out
   // fresh ids only, so the ids ever used are at least the final rooms.
-  EXPECT_EQ(run.stability.churn.size(), run.updates.size() - 1);
+  // The map at rest is segmented whole at the end, which counts as one more step when it changes a
+  // label (a split or merge still held back: IncrementalOptions::split_after, merge_after).
+  EXPECT_GE(run.stability.churn.size(), run.updates.size() - 1);
+  EXPECT_LE(run.stability.churn.size(), run.updates.size());
   EXPECT_EQ(run.stability.final_rooms, static_cast<int>(run.incremental.rooms.size()));
   EXPECT_GE(run.stability.distinct_ids, run.stability.final_rooms);
   EXPECT_EQ(run.stop_reason, "no reachable frontier left");

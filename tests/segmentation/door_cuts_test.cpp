@@ -129,8 +129,12 @@ TEST(DoorCuts, AWallThickerThanAPartitionIsNotExtended) {
 }
 
 TEST(DoorCuts, DisabledAndBadOptions) {
+  // Each rule has its own switch: the passages off leaves the wall openings, both off leave nothing.
   DoorOptions off;
-  off.enabled = false;
+  off.passages = false;
+  EXPECT_TRUE(find_passage_cuts(two_rooms(), kRes, off).empty());
+  EXPECT_FALSE(find_passage_cuts(two_rooms(), kRes).empty());
+  off.extend_walls = false;
   EXPECT_TRUE(find_door_cuts(two_rooms(), kRes, off).empty());
   DoorOptions bad;
   bad.door_ratio = 0.0;

@@ -200,6 +200,7 @@ std::set<std::pair<int, int>> passage_pairs(const Segmentation& s) {
 IncrementalOptions trivial_options() {
   IncrementalOptions options;
   options.segment.decompose = false;  // one room per free-space component: answers by hand
+  options.split_after = options.merge_after = 1;  // nothing held back: each update as batch would
   return options;
 }
 

@@ -56,7 +56,7 @@ TEST(SegmentOptionRows, ParityIsTheReferenceAndRefusesTheSwitchesItSets) {
   const SegmentOptions parity = given({{"parity", 1}, {"concavity", 3.0}});
   const SegmentOptions reference = parity_segment_options(3.0);
   EXPECT_EQ(parity.concavity, 3.0);
-  EXPECT_EQ(parity.doors.enabled, reference.doors.enabled);
+  EXPECT_EQ(parity.doors.passages, reference.doors.passages);
   EXPECT_EQ(parity.merge.enabled, reference.merge.enabled);
   EXPECT_EQ(parity.clean, reference.clean);
   EXPECT_EQ(parity.simplify, reference.simplify);
@@ -68,8 +68,10 @@ TEST(SegmentOptionRows, ParityIsTheReferenceAndRefusesTheSwitchesItSets) {
   EXPECT_TRUE(given({}).doors.wall_lines);
   EXPECT_FALSE(given({{"no-island-cuts", 1}}).doors.island_cuts);
   EXPECT_TRUE(given({}).doors.island_cuts);
+  EXPECT_FALSE(given({{"no-corridor-rule", 1}}).merge.corridor_rule);
+  EXPECT_TRUE(given({}).merge.corridor_rule);
   for (const char* sw : {"no-doors", "no-wall-openings", "no-merge", "no-simplify", "no-clean", "no-width-steps",
-                         "no-furniture-rule", "cover-obstacles", "no-wall-lines", "no-island-cuts"}) {
+                         "no-furniture-rule", "cover-obstacles", "no-wall-lines", "no-island-cuts", "no-corridor-rule"}) {
     EXPECT_THROW(given({{"parity", 1}, {sw, 1}}), Error) << sw;
   }
 }

@@ -373,7 +373,9 @@ TEST(Segment, ParityOptionsSwitchEveryImprovementOff) {
   const SegmentOptions parity = parity_segment_options(3.0);
   EXPECT_EQ(parity.concavity, 3.0);
   EXPECT_FALSE(parity.merge.enabled);
-  EXPECT_FALSE(parity.doors.enabled);
+  EXPECT_FALSE(parity.doors.passages);
+  EXPECT_FALSE(parity.doors.extend_walls);
+  EXPECT_FALSE(parity.doors.wall_lines);
   EXPECT_FALSE(parity.doors.island_cuts);
   EXPECT_EQ(parity.simplify, 0.0);
   EXPECT_FALSE(parity.labels.cover_absorbed_obstacles);

@@ -12,9 +12,12 @@
 
 namespace topocut {
 
+// The options of every cut rule (docs/glossary.md: a cut rule finds cuts before the decomposition);
+// the struct keeps its historical name. Each rule has its own switch: passages (the door rule),
+// extend_walls, island_cuts, wall_lines; with all four off DuDe runs alone (--parity).
 struct DoorOptions {
-  // false: no cut rule at all (the reference behaviour: DuDe alone).
-  bool enabled = true;
+  // The door rule: cuts across narrow passages (--no-doors turns it off, and only it).
+  bool passages = true;
   // Widest passage taken for a door, metres: doors are 0.8-1.2 m, double doors and openings 2 m.
   double max_width = 2.0;
   // A door is narrower than door_ratio (> 0) times the space on each side: the rooms it joins.
@@ -55,11 +58,11 @@ void validate(const DoorOptions& options);
 // Narrow passages (the door rule): from every reflex corner of a free-space polygon (grid coordinates,
 // one unit per cell; resolution converts the options' metres), the shortest cut across it to the same
 // ring, kept where both sides are much wider (door_ratio); pairwise disjoint (they may share an end
-// point), each splitting the polygon in two, narrowest first. Empty unless options.enabled. Deterministic.
+// point), each splitting the polygon in two, narrowest first. Empty unless options.passages. Deterministic.
 std::vector<Segment2> find_passage_cuts(const PolygonWithHoles& polygon, double resolution, const DoorOptions& options = {});
 
-// Every door cut: the narrow passages, then the wall openings (wall_openings.h) clear of them; empty
-// unless options.enabled.
+// The narrow passages (empty unless options.passages), then the wall openings (wall_openings.h, unless
+// options.extend_walls is off) clear of them.
 std::vector<Segment2> find_door_cuts(const PolygonWithHoles& polygon, double resolution, const DoorOptions& options = {});
 
 }  // namespace topocut

@@ -20,6 +20,10 @@ struct RoomMergeOptions {
   // hand rules below (door_ratio, width steps, furniture). Folding applies either way.
   bool learned = true;
   MergeModel model = default_merge_model();
+  // (Learned merging) a corridor continued across a cut is one room whatever the model says: both
+  // sides strips of about one thickness (at most 2.5 m), the cut across the narrower, each side at
+  // least 3 times as long as thick (--no-corridor-rule: the model decides alone).
+  bool corridor_rule = true;
   // A cut narrower than door_ratio (> 0) times the room on each side is door-like and stays; one
   // closer to the narrower side's width (a corridor cut across) merges its rooms, clearest first.
   double door_ratio = 0.7;
