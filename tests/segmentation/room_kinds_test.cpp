@@ -163,7 +163,9 @@ TEST(RoomKinds, TheLiveSegmenterUpdatesKindsInPlace) {
   blocked.cells = grid.cells.clone();
   const int corridor_row = grid.cells.rows - 1 - cells(7.0);
   blocked.cells(cv::Rect(cells(9.5), corridor_row - cells(1.2), cells(1.0), cells(2.4))).setTo(kOccupied);
-  IncrementalSegmenter live;
+  IncrementalOptions options;
+  options.split_after = options.merge_after = 1;  // the halves join in this update, as batch joins them
+  IncrementalSegmenter live(options);
   live.update(blocked);
   for (const Room& room : live.result().rooms) EXPECT_EQ(room.kind, RoomKind::kRoom) << "room " << room.id;
   live.update(grid);
