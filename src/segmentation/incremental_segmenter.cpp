@@ -213,8 +213,7 @@ void IncrementalSegmenter::State::detach_labels() {
 }
 
 const Segmentation& IncrementalSegmenter::State::update(const OccupancyGrid& grid, const cv::Rect* hint) {
-  validate(grid);
-  validate(options.segment);
+  validate(grid);  // the options were checked once, by the constructor (they cannot change after)
   report = {};
   detach_labels();
 
