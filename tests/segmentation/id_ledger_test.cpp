@@ -9,18 +9,14 @@
 
 #include <gtest/gtest.h>
 
+#include "segmentation/label_rows.h"
+
 #include "topocut/core/error.h"
 
 namespace topocut {
 namespace {
 
-// A label image of one row per string, one cell per character ('0' = no room).
-cv::Mat labels_of(const std::vector<std::string>& rows) {
-  cv::Mat out(static_cast<int>(rows.size()), static_cast<int>(rows[0].size()), CV_32SC1);
-  for (int r = 0; r < out.rows; ++r)
-    for (int c = 0; c < out.cols; ++c) out.at<int>(r, c) = rows[static_cast<std::size_t>(r)][static_cast<std::size_t>(c)] - '0';
-  return out;
-}
+using testing::labels_of;
 
 // next with each label l renamed ids[l].
 cv::Mat named(const cv::Mat& next, const std::vector<int>& ids) {
