@@ -53,10 +53,6 @@ std::map<std::pair<int, int>, int> contacts(const cv::Mat& labels) {
   return cells;
 }
 
-}  // namespace
-
-namespace {
-
 // Every step-th cell of every step-th row of labels.
 cv::Mat sampled(const cv::Mat& labels, int step) {
   if (step <= 1) return labels;
