@@ -6,6 +6,7 @@
 #include <limits>
 #include <ostream>
 #include <string>
+#include <vector>
 
 #include "topocut/core/error.h"
 #include "topocut/core/value_ranges.h"
@@ -58,19 +59,34 @@ void write_runs(std::ostream& out, const cv::Mat& image) {
   }
 }
 
-cv::Mat read_runs(std::istream& in, const cv::Size& size, int max_id, const char* what) {
-  cv::Mat image(size, CV_32SC1);
+// One label image's runs as read, each checked against the declared size, before any image is made:
+// a damaged or truncated file that declares a huge map fails without allocating it (the runs held
+// are never more than the file's own length).
+struct Run {
+  int value = 0;
+  int count = 0;
+};
+
+std::vector<Run> read_runs(std::istream& in, const cv::Size& size, int max_id, const char* what) {
+  std::vector<Run> runs;
   for (int r = 0; r < size.height; ++r) {
-    int* row = image.ptr<int>(r);
     int c = 0;
     while (c < size.width) {
       long long value = 0, count = 0;
       if (!(in >> value >> count) || value < 0 || value >= max_id || count <= 0 || count > size.width - c)
         throw Error(std::string("the id ledger's ") + what + " are damaged (row " + std::to_string(r) + ")");
-      std::fill(row + c, row + c + count, static_cast<int>(value));
+      runs.push_back({static_cast<int>(value), static_cast<int>(count)});
       c += static_cast<int>(count);
     }
   }
+  return runs;
+}
+
+// The image the runs of read_runs() describe, row after row.
+cv::Mat image_of_runs(const std::vector<Run>& runs, const cv::Size& size) {
+  cv::Mat image(size, CV_32SC1);
+  int* cell = image.ptr<int>(0);  // a new Mat is continuous: the rows follow each other
+  for (const Run& run : runs) cell = std::fill_n(cell, run.count, run.value);
   return image;
 }
 
@@ -122,9 +138,11 @@ SavedLedger read_ledger(std::istream& in) {
   const cv::Size size(static_cast<int>(width), static_cast<int>(height));
   SavedLedger saved;
   expect("labels");
-  saved.published.labels = read_runs(in, size, static_cast<int>(next_id), "labels");
+  const std::vector<Run> label_runs = read_runs(in, size, static_cast<int>(next_id), "labels");
   expect("retired");
-  const cv::Mat retired = read_runs(in, size, static_cast<int>(next_id), "retired ids");
+  const std::vector<Run> retired_runs = read_runs(in, size, static_cast<int>(next_id), "retired ids");
+  saved.published.labels = image_of_runs(label_runs, size);
+  const cv::Mat retired = image_of_runs(retired_runs, size);
   saved.published.resolution = resolution;
   saved.published.origin = {x, y};
   saved.ledger = IdLedger(static_cast<int>(next_id), retired);
