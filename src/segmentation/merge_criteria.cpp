@@ -49,7 +49,7 @@ MergeVerdict by_probability(double probability, const RoomMergeOptions& options)
 MergeVerdict corridor_continues(MergeCandidate& c) {
   static const int cut = merge_feature_index("cut_over_narrow_width"), narrow = merge_feature_index("narrow_thickness"),
                    wide = merge_feature_index("wide_thickness"), grown = merge_feature_index("union_thickness_over_narrow");
-  if (!c.options().learned || c.rule() == CutRule::kDoor || c.rule() == CutRule::kWallOpening) return MergeVerdict::abstain();
+  if (!c.options().learned || is_door_rule(c.rule())) return MergeVerdict::abstain();
   const std::vector<double>& f = c.features();
   const auto at = [&f](int i) { return f[static_cast<std::size_t>(i)]; };
   if (at(cut) < 0.9 || at(grown) > 1.25) return MergeVerdict::abstain();
