@@ -90,7 +90,7 @@ MergeVerdict width_step(MergeCandidate& c) {
 
 // A cut narrower than door_ratio times the narrower room is door-like and stays; a cut closer to the
 // narrower room's width (a corridor cut across) merges, the clearest first.
-MergeVerdict door_ratio(MergeCandidate& c) {
+MergeVerdict door_ratio_rule(MergeCandidate& c) {
   const double narrow = c.narrow_width();
   if (narrow <= 0.0) return MergeVerdict::merge(kInfinity);
   const double score = c.cut_length() / narrow;

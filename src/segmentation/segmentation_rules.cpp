@@ -109,7 +109,7 @@ std::vector<SegmentationRule> make_rules() {
                 width_step),
       criterion(unswitched_rule("door-ratio", RuleStage::kMerge,
                                 "(hand rules) a cut at least door_ratio times the narrower room's width merges", merging),
-                door_ratio),
+                door_ratio_rule),
       component_step(unswitched_rule("fold", RuleStage::kMerge, "rooms too small or too thin to be rooms join a neighbour", merging),
                      fold_small_rooms),
       rooms_step(stage_rule("open-rooms", RuleStage::kRooms,

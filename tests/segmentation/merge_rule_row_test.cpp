@@ -1,10 +1,16 @@
 // A merge rule added as a row of the rule list, to show what adding one takes. In the library a new
-// merge criterion is three files: its function (src/segmentation/NAME.cpp, declared beside the others
-// in merge_criteria.h, or a header of its own), its test (tests/segmentation/NAME_test.cpp) and its row
-// in make_rules() (src/segmentation/segmentation_rules.cpp), placed where it is to be asked: before
-// learned-merge to overrule the model, after it to decide with the hand rules only. The row's switch
-// (--no-NAME in every front end, the ablation) comes from the row. Here the criterion, its row and the
-// list it joins live in this test alone, passed to merge_rooms() as the list to run.
+// merge criterion touches three files:
+//   1. its file, src/segmentation/NAME.cpp: the function MergeVerdict NAME(MergeCandidate&) with its
+//      contract comment (merge_criteria.h says what a verdict is and what a candidate measures);
+//   2. its test, tests/segmentation/NAME_test.cpp, reaching it through its row
+//      (find_segmentation_rule("NAME")->judge, or merge_rooms() and segment() as shipped);
+//   3. its row in make_rules() (src/segmentation/segmentation_rules.cpp), beside a declaration of the
+//      function, placed where it is to be asked: before learned-merge to overrule the model, after it
+//      to decide with the hand rules only. A row with a turn_off gets its switch (--no-NAME in every
+//      front end, --parity, the ablation) from the list; a switch of its own needs a field in
+//      RoomMergeOptions to read and clear (a fourth file), a rule on with the merging (is_on: merge) none.
+// Here the criterion, its row and the list it joins live in this test alone, and merge_rooms() runs
+// that list.
 #include <algorithm>
 
 #include <gtest/gtest.h>

@@ -65,6 +65,6 @@ MergeVerdict learned_merge(MergeCandidate& c);       // (learned-merge) the mode
 MergeVerdict door_cuts_stay(MergeCandidate& c);      // (door-cuts) hand rules: a door rule's cut stays
 MergeVerdict furniture_rule(MergeCandidate& c);      // (furniture-rule) hand rules: a cut ending on furniture
 MergeVerdict width_step(MergeCandidate& c);          // (width-steps) hand rules: a room opening onto a wider one
-MergeVerdict door_ratio(MergeCandidate& c);          // (door-ratio) hand rules: a cut spanning the narrower room
+MergeVerdict door_ratio_rule(MergeCandidate& c);     // (door-ratio) hand rules: a cut spanning the narrower room
 
 }  // namespace topocut
