@@ -555,7 +555,7 @@ int run_ablation(const SuiteOptions& suite, const DatasetArguments& arguments) {
   benchmarks::require_folder(datasets);
   std::vector<std::pair<std::string, SegmentOptions>> runs{{"(every rule on)", arguments.run.segment}};
   for (const SegmentationRule& rule : segmentation_rules()) {
-    if (!rule.is_on(arguments.run.segment)) continue;
+    if (!rule.turn_off || !rule.is_on(arguments.run.segment)) continue;
     SegmentOptions off = arguments.run.segment;
     rule.turn_off(off);
     runs.emplace_back("--no-" + rule.name, off);

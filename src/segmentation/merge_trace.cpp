@@ -2,6 +2,7 @@
 
 #include "topocut/core/error.h"
 #include "topocut/segmentation/room_merging.h"
+#include "topocut/segmentation/segmentation_rules.h"
 
 namespace topocut {
 
@@ -16,7 +17,7 @@ MergeTrace trace_merges(const OccupancyGrid& grid, const SegmentOptions& options
     const int offset = static_cast<int>(trace.pieces.size());
     trace.pieces.insert(trace.pieces.end(), pieces.pieces.begin(), pieces.pieces.end());
     std::vector<MergeStep> steps;
-    merge_rooms(component, pieces, input.labelled.cells, grid.resolution, options.merge, &steps);
+    merge_rooms(component, pieces, input.labelled.cells, grid.resolution, options, segmentation_rules(), &steps);
     for (MergeStep& step : steps) {
       for (int& piece : step.side_a) piece += offset;
       for (int& piece : step.side_b) piece += offset;

@@ -10,6 +10,7 @@
 
 #include "topocut/core/cut_rule.h"
 #include "topocut/core/geometry.h"
+#include "topocut/segmentation/merge_criteria.h"
 #include "topocut/segmentation/room_merging.h"
 #include "topocut/segmentation/rooms_from_pieces.h"
 
@@ -124,9 +125,20 @@ class RoomGraph {
 
 namespace topocut {
 
-// The hand rules' score of cut k (RoomMergeOptions::learned false): its length over the narrower
-// side's width (door_ratio or more: no door), 0 for a width step, infinite for a cut ending on furniture.
-double hand_rule_score(RoomGraph& graph, std::size_t k, const RoomMergeOptions& options);
+// One component's rooms while the rows after the decomposition (segmentation_rules.h) act on them.
+struct ComponentMerge {
+  RoomGraph& graph;
+  const RoomMergeOptions& options;
+  std::vector<const MergeCriterion*> criteria;  // the list's criteria that are on, in its order
+  std::vector<MergeStep>* trace = nullptr;       // learned merging: receives every merge weighed
+};
+
+// Merges across the cuts the criteria decide to merge (merge_criteria.h), the highest priority first;
+// the grown room's cuts are judged again.
+void merge_by_criteria(ComponentMerge& merge);
+
+// Rooms too small or too thin to be rooms join the neighbour they share the longest cut with.
+void fold_small_rooms(ComponentMerge& merge);
 
 // The features (merge_features.h) of merging the two rooms on the sides of cut k of graph.
 std::vector<double> merge_features(RoomGraph& graph, std::size_t k, const RoomMergeOptions& options);

@@ -16,6 +16,7 @@
 #include "topocut/core/error.h"
 #include "topocut/map/free_space_polygons.h"
 #include "topocut/segmentation/merge_model.h"
+#include "topocut/segmentation/segmentation_rules.h"
 
 namespace topocut {
 
@@ -24,31 +25,6 @@ namespace {
 using Key = std::tuple<double, double, double, double>;  // directed edge (a.x, a.y, b.x, b.y)
 
 Key edge_key(const Point2& a, const Point2& b) { return {a.x, a.y, b.x, b.y}; }
-
-// The hand rules (RoomMergeOptions::learned false): a cut that spans the narrower side is no door.
-}  // namespace
-
-double hand_rule_score(RoomGraph& g, std::size_t k, const RoomMergeOptions& options) {
-  const RoomGraph::Side& s = g.sides()[k];
-  if (s.furniture) return std::numeric_limits<double>::infinity();
-  const int left = g.root(s.left), right = g.root(s.right);
-  const double wl = g.side_width(k, left, true, options.width_depth), wr = g.side_width(k, right, false, options.width_depth);
-  const double narrow = std::min(wl, wr);
-  if (narrow <= 0.0) return std::numeric_limits<double>::infinity();
-  // A room that opens onto a much wider, deep space (step_ratio) stays a room of its own. Across a
-  // wall line (the narrow room's wall drawn on) the wider side need only reach deeper than the narrow
-  // room is wide (step_wall_line_depth times): an L-shaped corridor's corner is as deep as the
-  // corridor is wide, so it still merges.
-  if (options.step_ratio > 0.0 && narrow < options.step_ratio * std::max(wl, wr) &&
-      std::min(g.room_area(left), g.room_area(right)) >= options.step_min_area) {
-    const bool left_narrow = wl <= wr;
-    const double depth = g.side_depth(k, left_narrow ? right : left, !left_narrow);
-    if (depth >= (s.rule == CutRule::kWallLine ? options.step_wall_line_depth * narrow : options.step_min_wide_depth)) return 0.0;
-  }
-  return s.length / narrow;
-}
-
-namespace {
 
 // A cut's priority as the merging takes them: the highest first, the lowest cut among equal ones;
 // stamp tells a priority measured again from the one queued before.
@@ -91,47 +67,6 @@ void merge_best_first(RoomGraph& g, const Priority& priority) {
   }
 }
 
-// The hand rules (RoomMergeOptions::learned false): the most clearly non-door-like cut first, then the
-// scores next to the merged room change (the merged room is wider or longer than its parts), so they
-// are measured again.
-void merge_by_hand_rules(RoomGraph& g, const RoomMergeOptions& options) {
-  merge_best_first(g, [&](std::size_t k) -> std::optional<double> {
-    if (is_door_rule(g.sides()[k].rule)) return std::nullopt;
-    const double score = hand_rule_score(g, k, options);
-    if (score >= options.door_ratio) return score;
-    return std::nullopt;
-  });
-}
-
-// A corridor continued across a cut is one room whatever the model says: both sides strips of about the
-// same thickness (at most 2.5 m), the cut across the narrower one, the union no thicker, and each side at
-// least 3 times as long as it is thick. Doors and wall openings are left to the model. Measured neutral on
-// every set (the model merges nearly all of them itself); it keeps the bends of long corridors.
-bool corridor_continues(RoomGraph& g, std::size_t k, const std::vector<double>& f) {
-  static const int cut = merge_feature_index("cut_over_narrow_width"), narrow = merge_feature_index("narrow_thickness"),
-                   wide = merge_feature_index("wide_thickness"), grown = merge_feature_index("union_thickness_over_narrow");
-  const auto at = [&f](int i) { return f[static_cast<std::size_t>(i)]; };
-  const RoomGraph::Side& s = g.sides()[k];
-  if (s.rule == CutRule::kDoor || s.rule == CutRule::kWallOpening || at(cut) < 0.9 || at(grown) > 1.25) return false;
-  if (std::max(at(narrow), at(wide)) > 2.5 || std::max(at(narrow), at(wide)) > 1.25 * std::min(at(narrow), at(wide))) return false;
-  return std::min(g.elongation({g.root(s.left)}), g.elongation({g.root(s.right)})) >= 3.0;
-}
-
-// The learned criterion: the most probable merge first while its probability is above the model's
-// threshold; the probabilities next to a grown room are computed again.
-void merge_learned(RoomGraph& g, const RoomMergeOptions& options, std::vector<MergeStep>* trace) {
-  merge_best_first(g, [&](std::size_t k) -> std::optional<double> {
-    const std::vector<double> features = merge_features(g, k, options);
-    const double probability = options.corridor_rule && corridor_continues(g, k, features) ? 1.0 : merge_probability(options.model, features);
-    if (trace) {
-      const RoomGraph::Side& s = g.sides()[k];
-      trace->push_back({features, g.members(g.root(s.left)), g.members(g.root(s.right)), probability});
-    }
-    if (probability > options.model.threshold) return probability;
-    return std::nullopt;
-  });
-}
-
 // Widest chord of room r along any of its cuts (metres).
 double room_width(RoomGraph& g, int r, double depth) {
   double widest = 0.0;
@@ -164,10 +99,36 @@ int longest_shared_neighbour(RoomGraph& g, int r) {
   return into;
 }
 
-// Rooms too small or too thin to be rooms join the neighbour they share the longest cut with,
-// smallest first (the least likely to be a room of its own). A room's width and thickness change
-// only when it grows, so they are measured once per room and again after it grows.
-void fold_small_rooms(RoomGraph& g, const RoomMergeOptions& options) {
+// The verdict of the first criterion that does not abstain; none: the rooms stay apart.
+MergeVerdict first_verdict(MergeCandidate& candidate, const std::vector<const MergeCriterion*>& criteria) {
+  for (const MergeCriterion* criterion : criteria) {
+    const MergeVerdict verdict = (*criterion)(candidate);
+    if (verdict.kind != MergeVerdict::kAbstain) return verdict;
+  }
+  return MergeVerdict::keep();
+}
+
+}  // namespace
+
+void merge_by_criteria(ComponentMerge& merge) {
+  RoomGraph& g = merge.graph;
+  merge_best_first(g, [&](std::size_t k) -> std::optional<double> {
+    MergeCandidate candidate(g, k, merge.options);
+    const MergeVerdict verdict = first_verdict(candidate, merge.criteria);
+    if (merge.trace && merge.options.learned) {
+      const RoomGraph::Side& s = g.sides()[k];
+      merge.trace->push_back({candidate.features(), g.members(g.root(s.left)), g.members(g.root(s.right)), verdict.score});
+    }
+    if (verdict.kind == MergeVerdict::kMerge) return verdict.score;
+    return std::nullopt;
+  });
+}
+
+// Smallest first (the least likely to be a room of its own). A room's width and thickness change only
+// when it grows, so they are measured once per room and again after it grows.
+void fold_small_rooms(ComponentMerge& merge) {
+  RoomGraph& g = merge.graph;
+  const RoomMergeOptions& options = merge.options;
   std::vector<bool> stuck(g.piece_count(), false);
   std::vector<std::optional<bool>> thin_room(g.piece_count());  // by room root; empty: to measure
   auto is_thin = [&](int r) {
@@ -199,6 +160,8 @@ void fold_small_rooms(RoomGraph& g, const RoomMergeOptions& options) {
     thin_room[static_cast<std::size_t>(g.root(victim))].reset();
   }
 }
+
+namespace {
 
 double turn(const Point2& a, const Point2& b, const Point2& c) {
   const double dx = b.x - a.x, dy = b.y - a.y, ex = c.x - b.x, ey = c.y - b.y;
@@ -299,18 +262,28 @@ PolygonWithHoles union_of_pieces(const std::vector<PolygonWithHoles>& pieces) {
 }
 
 PieceSet merge_rooms(const FreeSpaceComponent& component, const PieceSet& pieces, const cv::Mat& cells, double resolution,
-                     const RoomMergeOptions& options, std::vector<MergeStep>* trace) {
-  validate(options);
+                     const SegmentOptions& options, const std::vector<SegmentationRule>& rules, std::vector<MergeStep>* trace) {
+  validate(options.merge);
   if (!std::isfinite(resolution) || resolution <= 0.0) throw Error("the map resolution must be a positive number");
-  if (!options.enabled || pieces.pieces.size() < 2) return pieces;
-  RoomGraph graph(component.polygon, pieces, cells, resolution, options.furniture_size);
-  if (options.learned) {
-    merge_learned(graph, options, trace);
-  } else {
-    merge_by_hand_rules(graph, options);
+  std::vector<const SegmentationRule*> steps;
+  std::vector<const MergeCriterion*> criteria;
+  for (const SegmentationRule& rule : rules) {
+    if (rule.stage != RuleStage::kMerge || !rule.is_on(options)) continue;
+    if (rule.on_component) steps.push_back(&rule);
+    if (rule.judge) criteria.push_back(&rule.judge);
   }
-  fold_small_rooms(graph, options);
+  if (steps.empty() || pieces.pieces.size() < 2) return pieces;
+  RoomGraph graph(component.polygon, pieces, cells, resolution, options.merge.furniture_size);
+  ComponentMerge merge{graph, options.merge, std::move(criteria), trace};
+  for (const SegmentationRule* step : steps) step->on_component(merge);
   return graph.result();
+}
+
+PieceSet merge_rooms(const FreeSpaceComponent& component, const PieceSet& pieces, const cv::Mat& cells, double resolution,
+                     const RoomMergeOptions& options, std::vector<MergeStep>* trace) {
+  SegmentOptions all;
+  all.merge = options;
+  return merge_rooms(component, pieces, cells, resolution, all, segmentation_rules(), trace);
 }
 
 }  // namespace topocut

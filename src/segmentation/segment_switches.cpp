@@ -12,13 +12,14 @@ void apply(const SegmentSwitches& s, SegmentOptions& options) {
     throw Error("--parity already switches every improvement off; give it alone");
   if (s.parity) {
     const SegmentOptions reference = parity_segment_options(options.concavity);
-    for (const SegmentationRule& rule : segmentation_rules()) rule.turn_off(options);
+    for (const SegmentationRule& rule : segmentation_rules())
+      if (rule.turn_off) rule.turn_off(options);
     options.labels = reference.labels;
     if (!s.min_room_area_given) options.contours.min_component_area = reference.contours.min_component_area;
   }
   for (const std::string& name : s.rules_off) {
     const SegmentationRule* rule = find_segmentation_rule(name);
-    if (rule == nullptr) throw Error("no segmentation rule is called '" + name + "'");
+    if (rule == nullptr || !rule->turn_off) throw Error("no segmentation rule with a switch is called '" + name + "'");
     rule->turn_off(options);
   }
   options.decompose = !s.trivial;
@@ -60,6 +61,7 @@ Row given(Row row) {
 std::vector<Row> with_rule_switches(std::vector<Row> rows) {
   std::vector<Row> switches;
   for (const SegmentationRule& rule : segmentation_rules()) {
+    if (!rule.turn_off) continue;
     const std::string name = rule.name;
     switches.push_back({"no-" + name, "", rule.help, OptionRange::kSwitch,
                         [name](const SegmentSettings& s) {

@@ -1,7 +1,9 @@
 #include "topocut/segmentation/segmentation_rules.h"
 
+#include "segmentation/room_graph.h"
 #include "topocut/segmentation/door_cuts.h"
 #include "topocut/segmentation/island_cuts.h"
+#include "topocut/segmentation/open_rooms.h"
 #include "topocut/segmentation/wall_lines.h"
 #include "topocut/segmentation/wall_openings.h"
 
@@ -19,6 +21,28 @@ SegmentationRule stage_rule(std::string name, RuleStage stage, std::string help,
   rule.turn_off = std::move(turn_off);
   return rule;
 }
+
+// A rule without a switch, on whenever is_on says (its stage's switch).
+SegmentationRule unswitched_rule(std::string name, RuleStage stage, std::string help, std::function<bool(const SegmentOptions&)> is_on) {
+  return stage_rule(std::move(name), stage, std::move(help), std::move(is_on), nullptr);
+}
+
+SegmentationRule criterion(SegmentationRule rule, MergeCriterion judge) {
+  rule.judge = std::move(judge);
+  return rule;
+}
+
+SegmentationRule component_step(SegmentationRule rule, std::function<void(ComponentMerge&)> step) {
+  rule.on_component = std::move(step);
+  return rule;
+}
+
+SegmentationRule rooms_step(SegmentationRule rule, decltype(SegmentationRule::on_rooms) step) {
+  rule.on_rooms = std::move(step);
+  return rule;
+}
+
+bool merging(const SegmentOptions& o) { return o.merge.enabled; }
 
 SegmentationRule cut_rule(SegmentationRule rule, CutRule kind, decltype(SegmentationRule::find_cuts) find, bool may_fail) {
   rule.cut_rule = kind;
@@ -58,28 +82,43 @@ std::vector<SegmentationRule> make_rules() {
                           [](const SegmentOptions& o) { return o.doors.wall_lines; },
                           [](SegmentOptions& o) { o.doors.wall_lines = false; }),
                CutRule::kWallLine, find_wall_line_cuts, true),
-      stage_rule("merge", RuleStage::kMerge, "keep DuDe's pieces as rooms instead of merging them",
-                 [](const SegmentOptions& o) { return o.merge.enabled; }, [](SegmentOptions& o) { o.merge.enabled = false; }),
-      stage_rule("learned-merge", RuleStage::kMerge,
-                 "merge by the hand rules (a cut spanning the narrower room, width steps) instead of the learned model",
-                 [](const SegmentOptions& o) { return o.merge.learned; }, [](SegmentOptions& o) { o.merge.learned = false; }),
-      stage_rule("corridor-rule", RuleStage::kMerge,
-                 "(learned merging) no forced merge where a corridor continues across a cut (both sides strips of one "
-                 "thickness, at most 2.5 m, each 3 times as long as thick): the model decides alone",
-                 [](const SegmentOptions& o) { return o.merge.corridor_rule; },
-                 [](SegmentOptions& o) { o.merge.corridor_rule = false; }),
-      stage_rule("furniture-rule", RuleStage::kMerge,
-                 "(hand rules) cuts that end on furniture-sized obstacles (at most 2.5 m a side) may separate rooms",
-                 [](const SegmentOptions& o) { return o.merge.furniture_size > 0.0; },
-                 [](SegmentOptions& o) { o.merge.furniture_size = 0.0; }),
-      stage_rule("width-steps", RuleStage::kMerge,
-                 "(hand rules) merge a room into a much wider space it opens onto across its whole width",
-                 [](const SegmentOptions& o) { return o.merge.step_ratio > 0.0; },
-                 [](SegmentOptions& o) { o.merge.step_ratio = 0.0; }),
-      stage_rule("open-rooms", RuleStage::kMerge,
-                 "keep rooms whose outline runs mostly into never-seen space (ray fans, scraps beyond the walls) as rooms",
-                 [](const SegmentOptions& o) { return o.open_rooms.enabled; },
-                 [](SegmentOptions& o) { o.open_rooms.enabled = false; }),
+      component_step(stage_rule("merge", RuleStage::kMerge, "keep DuDe's pieces as rooms instead of merging them", merging,
+                                [](SegmentOptions& o) { o.merge.enabled = false; }),
+                     merge_by_criteria),
+      criterion(stage_rule("corridor-rule", RuleStage::kMerge,
+                           "(learned merging) no forced merge where a corridor continues across a cut (both sides strips of one "
+                           "thickness, at most 2.5 m, each 3 times as long as thick): the model decides alone",
+                           [](const SegmentOptions& o) { return o.merge.corridor_rule; },
+                           [](SegmentOptions& o) { o.merge.corridor_rule = false; }),
+                corridor_continues),
+      criterion(stage_rule("learned-merge", RuleStage::kMerge,
+                           "merge by the hand rules (a cut spanning the narrower room, width steps) instead of the learned model",
+                           [](const SegmentOptions& o) { return o.merge.learned; }, [](SegmentOptions& o) { o.merge.learned = false; }),
+                learned_merge),
+      criterion(unswitched_rule("door-cuts", RuleStage::kMerge, "(hand rules) a door rule's cut separates rooms", merging),
+                door_cuts_stay),
+      criterion(stage_rule("furniture-rule", RuleStage::kMerge,
+                           "(hand rules) cuts that end on furniture-sized obstacles (at most 2.5 m a side) may separate rooms",
+                           [](const SegmentOptions& o) { return o.merge.furniture_size > 0.0; },
+                           [](SegmentOptions& o) { o.merge.furniture_size = 0.0; }),
+                furniture_rule),
+      criterion(stage_rule("width-steps", RuleStage::kMerge,
+                           "(hand rules) merge a room into a much wider space it opens onto across its whole width",
+                           [](const SegmentOptions& o) { return o.merge.step_ratio > 0.0; },
+                           [](SegmentOptions& o) { o.merge.step_ratio = 0.0; }),
+                width_step),
+      criterion(unswitched_rule("door-ratio", RuleStage::kMerge,
+                                "(hand rules) a cut at least door_ratio times the narrower room's width merges", merging),
+                door_ratio_rule),
+      component_step(unswitched_rule("fold", RuleStage::kMerge, "rooms too small or too thin to be rooms join a neighbour", merging),
+                     fold_small_rooms),
+      rooms_step(stage_rule("open-rooms", RuleStage::kRooms,
+                            "keep rooms whose outline runs mostly into never-seen space (ray fans, scraps beyond the walls) as rooms",
+                            [](const SegmentOptions& o) { return o.open_rooms.enabled; },
+                            [](SegmentOptions& o) { o.open_rooms.enabled = false; }),
+                 [](const PieceSet& rooms, const OccupancyGrid& grid, const SegmentOptions& o) {
+                   return join_open_rooms(rooms, grid, o.open_rooms);
+                 }),
   };
 }
 
@@ -100,7 +139,7 @@ std::vector<std::string> rules_off(const SegmentOptions& options) {
   const SegmentOptions defaults;
   std::vector<std::string> off;
   for (const SegmentationRule& rule : segmentation_rules())
-    if (rule.is_on(defaults) && !rule.is_on(options)) off.push_back(rule.name);
+    if (rule.turn_off && rule.is_on(defaults) && !rule.is_on(options)) off.push_back(rule.name);
   return off;
 }
 

@@ -266,13 +266,14 @@ PieceSet decompose_component(const FreeSpaceComponent& component, const Occupanc
                              SegmentTimes* times) {
   const PieceSet pieces = decompose_pieces(component, grid.resolution, options, times);
   const StageTimer timer(times, SegmentStage::kMerging);
-  return merge_rooms(component, pieces, grid.cells, grid.resolution, options.merge);
+  return merge_rooms(component, pieces, grid.cells, grid.resolution, options, segmentation_rules());
 }
 
 SegmentOptions parity_segment_options(double concavity) {
   SegmentOptions options;
   options.concavity = concavity;
-  for (const SegmentationRule& rule : segmentation_rules()) rule.turn_off(options);
+  for (const SegmentationRule& rule : segmentation_rules())
+    if (rule.turn_off) rule.turn_off(options);
   options.labels.cover_absorbed_obstacles = false;
   options.contours.min_component_area = ContourOptions{}.min_component_area;
   return options;
@@ -325,7 +326,8 @@ Segmentation segment_input(const SegmentationInput& input, const SegmentOptions&
     return none;
   }
   StageTimer timer(times, SegmentStage::kOpenRooms);
-  pieces = join_open_rooms(pieces, grid, options.open_rooms);
+  for (const SegmentationRule& rule : segmentation_rules())
+    if (rule.on_rooms && rule.is_on(options)) pieces = rule.on_rooms(pieces, grid, options);
   timer.next(SegmentStage::kLabelling);
   Segmentation segmentation = rooms_from_pieces(to_label.empty() ? grid : labelled_only(grid, to_label), pieces, options.labels);
   timer.next(SegmentStage::kOutputs);

@@ -58,12 +58,22 @@ struct RoomMergeOptions {
 // Throws Error unless the options are usable (finite, non-negative, door_ratio > 0).
 void validate(const RoomMergeOptions& options);
 
+struct SegmentOptions;
+struct SegmentationRule;
+
 // Merges the pieces of one free-space component (grid coordinates; resolution converts the options'
-// metres) into rooms: each the exact union of its pieces, in order of their first piece, with the cuts
-// between two rooms in input order (keyhole cuts dropped); unchanged unless options.enabled.
-// component.polygon's small holes are the furniture; cells, the grid it was traced from
-// (OccupancyGrid::cells; empty: not known), tell walls from never-seen space along the rooms' outlines.
-// trace, if given, receives every merge weighed.
+// metres) into rooms by the rows of rules that act on one component and are on in options, in list
+// order (segmentation_rules(): the merges the criteria decide, then the folding): each room the exact
+// union of its pieces, in order of their first piece, with the cuts between two rooms in input order
+// (keyhole cuts dropped); the pieces unchanged when no such row is on. component.polygon's small holes
+// are the furniture; cells, the grid it was traced from (OccupancyGrid::cells; empty: not known), tell
+// walls from never-seen space along the rooms' outlines. trace, if given, receives every merge the
+// learned criterion weighed.
+PieceSet merge_rooms(const FreeSpaceComponent& component, const PieceSet& pieces, const cv::Mat& cells, double resolution,
+                     const SegmentOptions& options, const std::vector<SegmentationRule>& rules,
+                     std::vector<MergeStep>* trace = nullptr);
+
+// merge_rooms() by segmentation_rules() with these merge options (the other options at their defaults).
 PieceSet merge_rooms(const FreeSpaceComponent& component, const PieceSet& pieces, const cv::Mat& cells, double resolution,
                      const RoomMergeOptions& options = {}, std::vector<MergeStep>* trace = nullptr);
 

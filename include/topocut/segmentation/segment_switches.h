@@ -35,7 +35,7 @@ struct SegmentSettings {
 };
 
 // The segmentation options, in the order help lists them: concavity, trivial, parity, a no-NAME switch
-// per rule of segmentation_rules() in the pipeline's order, then the numbers. Setting min-room-area also
+// per rule of segmentation_rules() that has a switch, in the pipeline's order, then the numbers. Setting min-room-area also
 // sets switches.min_room_area_given.
 const std::vector<OptionRow<SegmentSettings>>& segment_option_rows();
 

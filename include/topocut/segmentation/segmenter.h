@@ -93,11 +93,11 @@ int front_end_reach(const SegmentOptions& options, double resolution);
 int front_end_context(const SegmentOptions& options, double resolution);
 
 // Stages 3 to 5 over what the front end left, on any window of a map: the free-space polygons of
-// input.floor, decompose_component() on each, the open-room rule, the rooms and their labels, the
-// passages with their doors, in input.labelled's frame (its size and origin). Only free cells of
-// input.labelled where to_label is non-zero get a room (empty: every free cell), so that a window may
-// hold cells of rooms it leaves alone. segment() is this function over the known cells' box. Stage
-// times are added to times, if given.
+// input.floor, decompose_component() on each, the rule list's rows on all rooms (open rooms), the
+// rooms and their labels, the passages with their doors, in input.labelled's frame (its size and
+// origin). Only free cells of input.labelled where to_label is non-zero get a room (empty: every free
+// cell), so that a window may hold cells of rooms it leaves alone. segment() is this function over the
+// known cells' box. Stage times are added to times, if given.
 Segmentation segment_input(const SegmentationInput& input, const SegmentOptions& options, const cv::Mat& to_label = cv::Mat(),
                            SegmentTimes* times = nullptr);
 
@@ -122,8 +122,8 @@ PieceSet decompose_pieces(const FreeSpaceComponent& component, double resolution
                           SegmentTimes* times = nullptr);
 
 // Stage 3: the rooms of one free-space component (grid coordinates of grid, the labelled grid it was
-// traced from) and the cuts between them: decompose_pieces() followed by merge_rooms() with
-// options.merge. Errors name the component's first cell. Stage times are added to times, if given.
+// traced from) and the cuts between them: decompose_pieces() followed by merge_rooms() with the rule
+// list. Errors name the component's first cell. Stage times are added to times, if given.
 PieceSet decompose_component(const FreeSpaceComponent& component, const OccupancyGrid& grid, const SegmentOptions& options,
                              SegmentTimes* times = nullptr);
 
