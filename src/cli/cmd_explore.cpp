@@ -65,6 +65,9 @@ int run(const std::vector<std::string>& args) {
       ("frame-every", po::value<int>(&frame_every)->default_value(frame_every), "with --frames: only every N-th update (and the last)");
   const SegmentSettings segment_defaults{options.incremental.segment, {}};
   add_segment_options(described, segment_defaults);
+  po::options_description incremental("Incremental segmenter");
+  add_incremental_options(incremental, options.incremental);
+  described.add(incremental);
   add_map_load_options(described, MapLoadOptions{});
   po::positional_options_description positional;
   positional.add("map", 1);
@@ -87,6 +90,7 @@ int run(const std::vector<std::string>& args) {
   if (options.batch_every < 1) throw UsageError("--batch-every must be at least 1");
   exploration.seed = seed;
   if (vm->count("start")) exploration.start = parse_point(start);
+  options.incremental = read_incremental_options(*vm, options.incremental);
   options.incremental.segment = read_segment_options(*vm, segment_defaults);
   options.use_hint = !no_hint;
   check_usage([&] {
