@@ -296,7 +296,9 @@ TEST(RosAdapter, EveryRowOfTheTablesIsAParameterWithItsDefault) {
     ASSERT_NE(at, std::string::npos) << name;
     const std::string line = help.substr(at, help.find('\n', at) - at);
     // A switch off by default shows no default (giving it means true).
-    if (!row.is_switch() || value != 0.0) EXPECT_NE(line.find("(default " + shown + ")"), std::string::npos) << line;
+    if (!row.is_switch() || value != 0.0) {
+      EXPECT_NE(line.find("(default " + shown + ")"), std::string::npos) << line;
+    }
     EXPECT_EQ(refusal({row.is_switch() ? given(name, value != 0.0) : given(name, value)}), "") << name;
   };
   for (const auto& row : topocut::segment_option_rows())

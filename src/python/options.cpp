@@ -190,12 +190,10 @@ SegmentOptions segment_options(const py::dict& kwargs) {
 
 IncrementalOptions incremental_options(py::dict kwargs) {
   IncrementalOptions o;
-  py::dict own;  // the incremental table's keywords; the rest are segment()'s
-  for (const auto& [key, value] : py::dict(kwargs))
-    if (find_keyword(incremental_option_rows(), py::str(key)) != nullptr) {
-      own[key] = value;
-      PyDict_DelItem(kwargs.ptr(), key.ptr());
-    }
+  py::dict own;  // the incremental table's keywords, taken out of kwargs; the rest are segment()'s
+  for (const auto& [key, value] : kwargs)
+    if (find_keyword(incremental_option_rows(), py::str(key)) != nullptr) own[key] = value;
+  for (const auto& [key, value] : own) PyDict_DelItem(kwargs.ptr(), key.ptr());
   set_keywords(incremental_option_rows(), own, o, keywords(incremental_option_rows()));
   SegmentSettings settings{o.segment, {}};
   take_merge_model(kwargs, settings);

@@ -12,6 +12,8 @@
 #include "cli/cli_runner.h"
 #include "io/temp_dir.h"
 #include "topocut/core/option_table.h"
+#include "topocut/decomposition/decompose.h"
+#include "topocut/exploration/explorer.h"
 #include "topocut/segmentation/incremental_segmenter.h"
 #include "topocut/segmentation/segment_switches.h"
 #include "topocut/segmentation/wall_map_segment_options.h"
@@ -50,7 +52,9 @@ void expect_rows_in_help(const std::string& command, const std::string& help, co
     const std::string line = help_line(row, defaults);
     const std::size_t at = help.find(line);
     EXPECT_NE(at, std::string::npos) << command << ": " << line;
-    if (at != std::string::npos) EXPECT_EQ(help.find(line, at + 1), std::string::npos) << command << " twice: " << line;
+    if (at != std::string::npos) {
+      EXPECT_EQ(help.find(line, at + 1), std::string::npos) << command << " twice: " << line;
+    }
   }
 }
 
@@ -62,6 +66,9 @@ TEST(OptionSpelling, EveryRowIsAFlagWithItsStructsDefault) {
   const std::string explore = run_cli(dir, "explore", {"--help"}).out;
   expect_rows_in_help("explore", explore, topocut::segment_option_rows(), SegmentSettings{IncrementalOptions{}.segment, {}});
   expect_rows_in_help("explore", explore, topocut::incremental_option_rows(), IncrementalOptions{});
+  expect_rows_in_help("explore", explore, topocut::exploration_option_rows(), topocut::ExplorationOptions{});
+  const std::string decompose = run_cli(dir, "decompose", {"--help"}).out;
+  expect_rows_in_help("decompose", decompose, topocut::decomposition_option_rows(), topocut::DecompositionOptions{});
   // walls starts from the laser-built grid's options and the real-log preset.
   const std::string walls = run_cli(dir, "walls", {"--help"}).out;
   expect_rows_in_help("walls", walls, topocut::segment_option_rows(), SegmentSettings{topocut::wall_map_segment_options(), {}});

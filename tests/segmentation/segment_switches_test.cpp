@@ -39,8 +39,10 @@ void expect_one_field_per_row(const std::vector<OptionRow<Target>>& rows, const 
   for (const OptionRow<Target>& r : rows) {
     Target target = defaults;
     r.set(target, changed_value(r, r.get(defaults)));
-    for (const OptionRow<Target>& other : rows)
-      if (&other != &r) EXPECT_EQ(other.get(target), other.get(defaults)) << r.name << " changed " << other.name;
+    for (const OptionRow<Target>& other : rows) {
+      if (&other == &r) continue;
+      EXPECT_EQ(other.get(target), other.get(defaults)) << r.name << " changed " << other.name;
+    }
   }
 }
 
