@@ -26,6 +26,9 @@ void check_option_value(OptionRange range, double value, const std::string& show
     case OptionRange::kShare:
       if (!(value >= 0.0 && value <= 1.0)) throw Error(shown + " must be a share in [0, 1]");
       break;
+    case OptionRange::kShareBelowOne:
+      if (!(value >= 0.0 && value < 1.0)) throw Error(shown + " must be a share in [0, 1)");
+      break;
     case OptionRange::kCount:
       if (!(value >= 1.0 && value <= 1e9) || value != std::floor(value)) throw Error(shown + " must be a whole number >= 1");
       break;

@@ -48,13 +48,13 @@ def check_keywords_against_help(kind, cli_help):
 
 
 def test_every_segment_keyword_is_the_commands_flag_with_its_default(cli):
-    assert check_keywords_against_help("segment", help_text(cli, "segment")) > 80
+    assert check_keywords_against_help("segment", help_text(cli, "segment")) > 60
 
 
 def test_every_incremental_keyword_is_the_explore_commands_flag_with_its_default(cli):
     # explore runs the incremental segmenter with IncrementalOptions' defaults, as Python's does.
     walked = check_keywords_against_help("incremental", help_text(cli, "explore"))
-    assert walked > 90
+    assert walked > 70
     names = [name for name, *_ in topocut._topocut._keywords("incremental")]
     assert len(names) == len(set(names))  # no keyword twice (the incremental and segment tables share none)
     for name in ("split_after", "merge_after", "neighbours_across_doors", "neighbours_across_cuts", "batch_fraction"):

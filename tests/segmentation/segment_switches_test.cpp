@@ -28,7 +28,7 @@ template <typename Target>
 double changed_value(const OptionRow<Target>& r, double before) {
   if (r.is_switch()) return before != 0.0 ? 0.0 : 1.0;
   if (r.range == OptionRange::kFraction) return before == 0.75 ? 0.5 : 0.75;
-  if (r.range == OptionRange::kShare) return before == 0.25 ? 0.5 : 0.25;
+  if (r.range == OptionRange::kShare || r.range == OptionRange::kShareBelowOne) return before == 0.25 ? 0.5 : 0.25;
   return is_whole_number(r.range) ? before + 1.0 : before + 0.25;
 }
 

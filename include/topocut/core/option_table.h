@@ -25,6 +25,7 @@ enum class OptionRange {
   kArea,            // square metres, [0, kMaxLength^2]
   kResolution,      // metres per cell, [kMinResolution, kMaxResolution]
   kShare,           // [0, 1]
+  kShareBelowOne,   // [0, 1)
   kCount,           // a whole number >= 1 (rounds, updates in a row)
   kWholeNumber,     // a whole number >= 0
   kAny,
