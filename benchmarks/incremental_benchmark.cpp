@@ -180,13 +180,9 @@ int main(int argc, char** argv) {
                "(every --batch-every'th); prints times, the rooms' stability and the final quality. The segmenter's\n"
                "options below default to IncrementalOptions'; --batch-fraction 1e-12 makes every update a batch one\n"
                "with ids kept by overlap (batch's own churn).\n",
-      .options = {count("batch-every", options.exploration.batch_every, 1, "compare batch on every N-th update and the last (default 1)"),
-                  {"no-batch", "", "no batch comparison", [&options](const std::string&) { options.exploration.compare_batch = false; }},
-                  count("split-after", incremental.split_after, 1, "decompositions in a row that split a room (default 1)"),
-                  count("merge-after", incremental.merge_after, 1, "decompositions in a row that merge two rooms (default 1)"),
-                  number("partial-area", incremental.partial_area, "rooms larger than this (m²) are decomposed near the change (default 0: off)"),
-                  number("partial-margin", incremental.partial_margin, "how near (m; default 3)"),
-                  number("batch-fraction", incremental.batch_fraction, "share of changed free cells that makes an update batch (default 0.5)")},
+      .options = joined({count("batch-every", options.exploration.batch_every, 1, "compare batch on every N-th update and the last (default 1)"),
+                         {"no-batch", "", "no batch comparison", [&options](const std::string&) { options.exploration.compare_batch = false; }}},
+                        table_options(incremental_option_rows(), incremental)),
       .dataset = &arguments,
       .tune_allocator = true};
   return benchmark_main(argc, argv, program, [&] { return run(options, arguments); });

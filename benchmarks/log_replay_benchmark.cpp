@@ -142,17 +142,10 @@ int main(int argc, char** argv) {
                "incremental segmenter with the preset of `topocut walls --incremental`; the options after --settle\n"
                "override the preset to measure a variant. --batch-fraction 1e-12 makes every update a batch one with\n"
                "ids kept by overlap (batch's own churn).\n",
-      .options = {count("batch-every", batch_every, 1, "compare batch on every N-th update and the last (default 1)"),
-                  flag("no-rest", no_rest, "end on the last windowed update (no whole segmentation of the map at rest)"),
-                  flag("settle", settle, "settle the grid's cells by occupancy evidence instead of drawing every scan"),
-                  count("split-after", incremental.split_after, 1, "decompositions in a row that split a room"),
-                  count("merge-after", incremental.merge_after, 1, "decompositions in a row that merge two rooms"),
-                  on_off("door-neighbours", incremental.neighbours_across_doors, "rooms across doors decomposed together"),
-                  on_off("cut-neighbours", incremental.neighbours_across_cuts, "rooms across other cuts decomposed together"),
-                  number("absorb-fraction", incremental.absorb_fraction, "share of a room's area it takes in undecomposed"),
-                  number("partial-area", incremental.partial_area, "rooms larger than this (m²) are decomposed near the change"),
-                  number("partial-margin", incremental.partial_margin, "how near (m)"),
-                  number("batch-fraction", incremental.batch_fraction, "share of changed free cells that makes an update batch")},
+      .options = joined({count("batch-every", batch_every, 1, "compare batch on every N-th update and the last (default 1)"),
+                         flag("no-rest", no_rest, "end on the last windowed update (no whole segmentation of the map at rest)"),
+                         flag("settle", settle, "settle the grid's cells by occupancy evidence instead of drawing every scan")},
+                        table_options(incremental_option_rows(), incremental)),
       .operands = "[LOG ...]",
       .operand = [&names](const std::string& name) { names.push_back(name); },
       .tune_allocator = true};

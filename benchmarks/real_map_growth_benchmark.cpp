@@ -145,11 +145,8 @@ int main(int argc, char** argv) {
       .about = "Every map of ../shared/datasets/real_maps (or the MAP operands) explored by the simulated robot; each\n"
                "known map segmented incrementally and (every --batch-every'th) by segment(). Prints update times,\n"
                "churn against batch's own, ids used per final room and whether the end equals batch's rooms.\n",
-      .options = {count("batch-every", options.batch_every, 1, "compare batch on every N-th update and the last (default 5)"),
-                  count("split-after", options.incremental.split_after, 1, "decompositions in a row that split a room (default 1)"),
-                  count("merge-after", options.incremental.merge_after, 1, "decompositions in a row that merge two rooms (default 1)"),
-                  number("batch-fraction", options.incremental.batch_fraction,
-                         "share of changed free cells that makes an update batch (default 0.5)")},
+      .options = joined({count("batch-every", options.batch_every, 1, "compare batch on every N-th update and the last (default 5)")},
+                        table_options(topocut::incremental_option_rows(), options.incremental)),
       .operands = "[MAP ...]",
       .operand = [&paths](const std::string& path) { paths.push_back(path); },
       .tune_allocator = true};

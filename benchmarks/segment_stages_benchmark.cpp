@@ -95,25 +95,12 @@ std::vector<Job> folder_jobs(const std::string& folder, const std::vector<std::s
   return jobs;
 }
 
-// Edits of the segmenter's options given on the command line beyond the library's table.
-using Edits = std::vector<std::function<void(SegmentOptions&)>>;
-
-// An option setting the number field(options) refers to, recorded in edits.
-template <typename Field>
-benchmarks::Option extra(const char* name, const char* help, Edits& edits, Field field) {
-  return {name, "X", help, [&edits, name, field](const std::string& value) {
-            const double v = parse_option_number(value, std::string("--") + name);
-            edits.push_back([field, v](SegmentOptions& o) { field(o) = v; });
-          }};
-}
-
 // What to time and how, besides the segmenter's options.
 struct StagesOptions {
   int repeat = 3;
   bool quality = false;
   std::string maps_folder;
   int unexplored = 0;
-  Edits edits;
 };
 
 int run(const StagesOptions& stages_options, const DatasetArguments& arguments) {
@@ -123,8 +110,7 @@ int run(const StagesOptions& stages_options, const DatasetArguments& arguments) 
   const int unexplored = stages_options.unexplored;
   if (!arguments.csv.empty()) throw Error("--csv is not written here");
   const std::vector<std::string>& names = arguments.run.maps;
-  SegmentOptions options = arguments.run.segment;
-  for (const auto& edit : stages_options.edits) edit(options);
+  const SegmentOptions& options = arguments.run.segment;
   const MapLoadOptions& load = arguments.run.load;
   std::vector<Job> jobs =
       maps_folder.empty() ? dataset_jobs(arguments.dataset, names, arguments.run.variants) : folder_jobs(maps_folder, names);
@@ -205,7 +191,6 @@ int main(int argc, char** argv) {
   using namespace topocut::benchmarks;
   StagesOptions o;
   topocut::DatasetArguments arguments;
-  Edits& e = o.edits;
   const Program program{
       .name = "segment_stages_benchmark",
       .title = "Segmentation stage times",
@@ -214,29 +199,7 @@ int main(int argc, char** argv) {
       .options = {count("repeat", o.repeat, 1, "runs per image, least time taken (default 3)"),
                   text("maps", "DIR", o.maps_folder, "time the maps of DIR (images and YAMLs) instead of the dataset"),
                   count("unexplored", o.unexplored, 1, "centre every image map in an N x N image of its corner's grey"),
-                  flag("quality", o.quality, "also score each image against its ground truth (not with --maps)"),
-                  extra("door-ratio", "merging: largest cut over the narrower side's width kept as a door", e,
-                        [](SegmentOptions& s) -> double& { return s.merge.door_ratio; }),
-                  extra("width-depth", "merging: the width-over-depth bound of a door", e,
-                        [](SegmentOptions& s) -> double& { return s.merge.width_depth; }),
-                  extra("min-room-width", "merging: narrowest room (m)", e,
-                        [](SegmentOptions& s) -> double& { return s.merge.min_room_width; }),
-                  extra("max-gap", "doors: widest gap (m) where a thin wall stops short", e,
-                        [](SegmentOptions& s) -> double& { return s.doors.max_gap; }),
-                  extra("gap-side", "doors: narrowest side (m) of a wall opening", e,
-                        [](SegmentOptions& s) -> double& { return s.doors.min_side_width; }),
-                  extra("wall-thickness", "doors: thickest wall (m) of a wall opening", e,
-                        [](SegmentOptions& s) -> double& { return s.doors.max_wall_thickness; }),
-                  extra("gap-wall", "doors: shortest wall (m) of a wall opening", e,
-                        [](SegmentOptions& s) -> double& { return s.doors.min_wall_length; }),
-                  extra("door-side-ratio", "doors: largest door width over the side's width", e,
-                        [](SegmentOptions& s) -> double& { return s.doors.door_ratio; }),
-                  extra("door-depth", "doors: the width-over-depth bound of a door", e,
-                        [](SegmentOptions& s) -> double& { return s.doors.width_depth; }),
-                  extra("door-turn", "doors: least turn (radians) at a door's ends", e,
-                        [](SegmentOptions& s) -> double& { return s.doors.min_turn; }),
-                  extra("simplify", "outline simplification tolerance (cells)", e,
-                        [](SegmentOptions& s) -> double& { return s.simplify; })},
+                  flag("quality", o.quality, "also score each image against its ground truth (not with --maps)")},
       .dataset = &arguments,
       .tune_allocator = true};
   return benchmark_main(argc, argv, program, [&] { return run(o, arguments); });

@@ -25,12 +25,11 @@ using topocut::Error;
 using topocut::OptionRow;
 using topocut::SegmentSettings;
 
-// What the node reads beside the segmentation options: how a map's values become cells, when an
-// update is a batch one, and the largest map it segments.
+// What the node reads beside the segmentation and incremental options: how a map's values become
+// cells, when the rooms settle, and the largest map it segments.
 struct MapSettings {
   double free_thresh = topocut::GridArray{}.free_thresh;
   double occupied_thresh = topocut::GridArray{}.occupied_thresh;
-  double batch_fraction = topocut::IncrementalOptions{}.batch_fraction;
   double settle_after = 2.0;  // seconds without a changed map before the rooms become segment()'s
   std::string id_ledger;      // file the room ids are kept in across restarts ("" = none)
   topocut::ImageLimits limits;
@@ -41,6 +40,7 @@ constexpr const char* kLedgerParameter = "id_ledger";
 struct NodeSettings {
   SegmentSettings segment;
   MapSettings map;
+  topocut::IncrementalOptions incremental;  // its own fields (incremental_option_rows()); segment above
 };
 
 // map_server's thresholds are probabilities; the table's fraction range leaves out 0.
@@ -57,9 +57,6 @@ const std::vector<OptionRow<MapSettings>>& map_option_rows() {
   static const std::vector<OptionRow<MapSettings>> rows = {
       threshold("free_thresh", &MapSettings::free_thresh, "map_server's rule: a cell is free below this occupancy"),
       threshold("occupied_thresh", &MapSettings::occupied_thresh, "and occupied above this one"),
-      {"batch_fraction", "F", "share of changed free cells that makes a live update a batch one",
-       topocut::OptionRange::kPositive, [](const MapSettings& s) { return s.batch_fraction; },
-       [](MapSettings& s, double v) { s.batch_fraction = v; }},
       {"settle_after", "S", "seconds without a changed map after which the rooms are segment()'s (0: never)",
        topocut::OptionRange::kNonNegative, [](const MapSettings& s) { return s.settle_after; },
        [](MapSettings& s, double v) { s.settle_after = v; }},
@@ -76,6 +73,7 @@ const std::vector<OptionRow<MapSettings>>& map_option_rows() {
 std::vector<std::string> known_names() {
   std::vector<std::string> names;
   for (const auto& row : topocut::segment_option_rows()) names.push_back(topocut::underscored_option_name(row.name));
+  for (const auto& row : topocut::incremental_option_rows()) names.push_back(topocut::underscored_option_name(row.name));
   for (const auto& row : map_option_rows()) names.push_back(row.name);
   names.push_back(kLedgerParameter);
   return names;
@@ -128,6 +126,7 @@ NodeSettings read_parameters(NodeSettings settings, const std::vector<Parameter>
       continue;
     }
     if (set_row(topocut::segment_option_rows(), topocut::dashed_option_name(p.name), settings.segment, p) ||
+        set_row(topocut::incremental_option_rows(), topocut::dashed_option_name(p.name), settings.incremental, p) ||
         set_row(map_option_rows(), topocut::underscored_option_name(p.name), settings.map, p))
       continue;
     if (unknown == nullptr) throw Error(unknown_name(p.name, false));
@@ -263,9 +262,12 @@ std::string parameters_help() {
     if (left.size() < 28) left += std::string(28 - left.size(), ' ');
     out += left + " " + help + (fallback.empty() ? "" : " (default " + fallback + ")") + "\n";
   };
-  const NodeSettings defaults{{topocut::IncrementalOptions{}.segment, {}}, {}};
+  const NodeSettings defaults{{topocut::IncrementalOptions{}.segment, {}}, {}, {}};
   for (const auto& row : topocut::segment_option_rows())
     line(topocut::underscored_option_name(row.name), row.value_name, row.help, row.is_switch() ? "" : topocut::shortest_number(row.get(defaults.segment)));
+  for (const auto& row : topocut::incremental_option_rows())
+    line(topocut::underscored_option_name(row.name), row.is_switch() ? "false" : row.value_name, row.help,
+         row.is_switch() ? (row.get(defaults.incremental) != 0.0 ? "true" : "false") : topocut::shortest_number(row.get(defaults.incremental)));
   for (const auto& row : map_option_rows())
     line(row.name, row.value_name, row.help, topocut::shortest_number(row.get(defaults.map)));
   line(kLedgerParameter, "PATH", "file the room ids are kept in: read at start, written when the rooms settle "
@@ -288,10 +290,9 @@ RoomsAdapter::RoomsAdapter(const std::vector<Parameter>& parameters, std::vector
 }
 
 void RoomsAdapter::start(const std::vector<Parameter>& parameters, std::vector<std::string>& unknown) {
-  topocut::IncrementalOptions options;
-  NodeSettings live = over(options.segment, parameters, &unknown);
+  NodeSettings live = over(topocut::IncrementalOptions{}.segment, parameters, &unknown);
+  topocut::IncrementalOptions options = live.incremental;
   options.segment = topocut::to_segment_options(live.segment);
-  options.batch_fraction = live.map.batch_fraction;
   std::vector<std::string> reported;  // the same names again
   over(topocut::SegmentOptions{}, parameters, &reported);  // segment()'s combination is checked at start-up too
   state_ = std::make_unique<State>(parameters, live, options);
@@ -325,6 +326,11 @@ std::string RoomsAdapter::settings_summary() const {
     const bool set = was_given(name);
     if (!set && name != "concavity" && name != "robot_radius") continue;  // the rest: their defaults, --help
     add(name, row.is_switch() ? (row.get(live.segment) != 0.0 ? "true" : "false") : topocut::shortest_number(row.get(live.segment)), set);
+  }
+  for (const auto& row : topocut::incremental_option_rows()) {
+    const std::string name = topocut::underscored_option_name(row.name);
+    if (was_given(name))
+      add(name, row.is_switch() ? (row.get(live.incremental) != 0.0 ? "true" : "false") : topocut::shortest_number(row.get(live.incremental)), true);
   }
   for (const auto& row : map_option_rows())
     if (was_given(row.name)) add(row.name, topocut::shortest_number(row.get(live.map)), true);

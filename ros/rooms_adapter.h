@@ -59,8 +59,9 @@ struct Parameter {
 };
 
 // The parameters topocut_node takes: every option of `topocut segment` (segment_option_rows(), '_'
-// for '-') and the node's own (map_server's free_thresh and occupied_thresh, batch_fraction,
-// max_megapixels), each with its help line and default, for --help.
+// for '-'), the incremental segmenter's (incremental_option_rows()) and the node's own (map_server's
+// free_thresh and occupied_thresh, settle_after, max_megapixels, id_ledger), each with its help line
+// and default, for --help.
 std::string parameters_help();
 
 class RoomsAdapter {

@@ -139,6 +139,11 @@ Option texts(const std::string& name, const std::string& value_name, std::vector
           true};
 }
 
+std::vector<Option> joined(std::vector<Option> a, const std::vector<Option>& b) {
+  a.insert(a.end(), b.begin(), b.end());
+  return a;
+}
+
 void require_folder(const std::string& folder) {
   if (!std::filesystem::is_directory(folder)) throw Skipped(folder + " is absent");
 }

@@ -3,10 +3,13 @@
 // `topocut evaluate`'s from the library's tables when it takes them), --help, the machine line above
 // the tables, and the same exit codes everywhere.
 #include <functional>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "topocut/core/error.h"
+#include "topocut/core/option_table.h"
 #include "topocut/evaluation/dataset_options.h"
 
 namespace topocut::benchmarks {
@@ -43,6 +46,42 @@ Option on_off(const std::string& name, bool& target, const std::string& help);  
 Option text(const std::string& name, const std::string& value_name, std::string& target, const std::string& help);
 Option texts(const std::string& name, const std::string& value_name, std::vector<std::string>& target,
              const std::string& help);
+
+// Sets row in target from value as every front end reads it (option_table.h): a switch given bare is
+// on, one given a value takes true or false (on|off); a number is read and checked by its range.
+template <typename Target>
+void set_table_option(const OptionRow<Target>& row, Target& target, const std::string& value) {
+  const std::string shown = "--" + row.name;
+  double v = 1.0;
+  if (row.is_switch() && !value.empty()) {
+    const std::optional<bool> on = parse_switch_value(value);
+    if (!on) throw Error(switch_value_error(shown, value));
+    v = *on ? 1.0 : 0.0;
+  } else if (!row.is_switch()) {
+    v = parse_option_number(value, shown);
+  }
+  set_option(row, target, v, shown);
+}
+
+// The rows of a library table as options setting target, with the table's names, help and checks,
+// target's values (the program's defaults) shown. A switch its struct has on takes true or false, as
+// on the command line (--neighbours-across-doors false).
+template <typename Target>
+std::vector<Option> table_options(const std::vector<OptionRow<Target>>& rows, Target& target) {
+  std::vector<Option> out;
+  for (const OptionRow<Target>& row : rows) {
+    const bool takes_value = !row.is_switch() || row.get(Target{}) != 0.0;
+    const double value = row.get(target);
+    const std::string shown_default = row.is_switch() ? (value != 0.0 ? "true" : "false") : shortest_number(value);
+    out.push_back({row.name, row.is_switch() ? (takes_value ? "true|false" : "") : row.value_name,
+                   row.help + (takes_value ? " (default " + shown_default + ")" : ""),
+                   [&row, &target](const std::string& given) { set_table_option(row, target, given); }});
+  }
+  return out;
+}
+
+// a's options, then b's.
+std::vector<Option> joined(std::vector<Option> a, const std::vector<Option>& b);
 
 struct Program {
   std::string name{};   // the program's file name

@@ -16,6 +16,7 @@
 #include "topocut/core/error.h"
 #include "topocut/core/option_names.h"
 #include "topocut/core/option_table.h"
+#include "topocut/segmentation/incremental_segmenter.h"
 #include "topocut/segmentation/segment_switches.h"
 #include "topocut/topocut.h"
 
@@ -278,6 +279,33 @@ TEST(RosAdapter, EveryBadNumberOfTheTableGivesTheLibrarysMessage) {
     }
   }
   EXPECT_GT(walked, 60);
+}
+
+// One spelling per option: every row of the segmentation and incremental tables is a parameter, '_'
+// for '-', listed in --help with the default of the incremental segmenter's options (the node's),
+// and taken at that default.
+TEST(RosAdapter, EveryRowOfTheTablesIsAParameterWithItsDefault) {
+  const std::string help = topocut_ros::parameters_help();
+  const topocut::IncrementalOptions incremental;
+  const topocut::SegmentSettings segment{incremental.segment, {}};
+  auto expect_row = [&](const auto& row, const auto& defaults) {
+    const std::string name = topocut::underscored_option_name(row.name);
+    const double value = row.get(defaults);
+    const std::string shown = row.is_switch() ? (value != 0.0 ? "true" : "false") : topocut::shortest_number(value);
+    const std::size_t at = help.find("  _" + name + ":=");
+    ASSERT_NE(at, std::string::npos) << name;
+    const std::string line = help.substr(at, help.find('\n', at) - at);
+    // A switch off by default shows no default (giving it means true).
+    if (!row.is_switch() || value != 0.0) {
+      EXPECT_NE(line.find("(default " + shown + ")"), std::string::npos) << line;
+    }
+    EXPECT_EQ(refusal({row.is_switch() ? given(name, value != 0.0) : given(name, value)}), "") << name;
+  };
+  for (const auto& row : topocut::segment_option_rows())
+    expect_row(row, segment);
+  for (const auto& row : topocut::incremental_option_rows()) expect_row(row, incremental);
+  EXPECT_EQ(refusal({given("split_after", 0)}), "~split_after must be a whole number >= 1");
+  EXPECT_EQ(refusal({given("neighbours_across_doors", 1)}), "~neighbours_across_doors is a switch: give true or false, not '1'");
 }
 
 TEST(RosAdapter, RoomAtRefusesAPointThatIsNotANumberWithTheReason) {

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "cli/command.h"
+#include "cli/library_options.h"
 #include "topocut/core/error.h"
 #include "topocut/decomposition/decompose.h"
 #include "topocut/decomposition/decomposition_json.h"
@@ -27,7 +28,6 @@ E pick(const std::string& option, const std::string& value, std::initializer_lis
 int run(const std::vector<std::string>& args) {
   std::string input, output, selection = "greedy", concavity = "straight", candidates = "validated";
   std::string pockets = "split", skinny = "reference", hull_distance = "segment";
-  bool keep_small_holes = false, keyholes = false;
   DecompositionOptions options;
   double tau = 0.0;
   po::options_description described("Decomposition");
@@ -40,10 +40,8 @@ int run(const std::vector<std::string>& args) {
       ("candidates", po::value<std::string>(&candidates)->default_value(candidates), "candidate cuts: validated or reference (unchecked, repaired)")
       ("pocket-polygons", po::value<std::string>(&pockets)->default_value(pockets), "dual pass on pockets: split (at the bridge) or reference")
       ("hull-chain-distance", po::value<std::string>(&hull_distance)->default_value(hull_distance), "pocket hull-chain approximation: segment or line (reference)")
-      ("skinny", po::value<std::string>(&skinny)->default_value(skinny), "skinny-cut filter: reference, all or off")
-      ("keep-small-holes", po::bool_switch(&keep_small_holes), "keep holes smaller than tau instead of absorbing them")
-      ("keyholes", po::bool_switch(&keyholes), "return pieces with keyhole rings instead of restoring their holes")
-      ("max-rounds", po::value<int>(&options.max_rounds)->default_value(options.max_rounds), "cap on decomposition passes");
+      ("skinny", po::value<std::string>(&skinny)->default_value(skinny), "skinny-cut filter: reference, all or off");
+  add_option_rows(described, decomposition_option_rows(), options);
   po::positional_options_description positional;
   positional.add("polygon", 1);
   const auto vm = parse_options(
@@ -63,9 +61,7 @@ int run(const std::vector<std::string>& args) {
   options.pocket_polygon = pick<PocketPolygon>("pocket-polygons", pockets, {{"split", PocketPolygon::kSplitOnBridge}, {"reference", PocketPolygon::kReference}});
   options.hull_chain_distance = pick<HullChainDistance>("hull-chain-distance", hull_distance, {{"segment", HullChainDistance::kSegment}, {"line", HullChainDistance::kLine}});
   options.skinny_cuts = pick<SkinnyCutFilter>("skinny", skinny, {{"reference", SkinnyCutFilter::kReference}, {"all", SkinnyCutFilter::kAll}, {"off", SkinnyCutFilter::kOff}});
-  options.absorb_small_holes = !keep_small_holes;
-  options.restore_holes = !keyholes;
-  if (options.max_rounds < 1) throw UsageError("--max-rounds must be at least 1");
+  read_option_rows(*vm, decomposition_option_rows(), options);
   if (!output.empty()) check_outputs({output}, {input});
 
   const PolygonWithHoles polygon = read_polygon_json(input);

@@ -50,21 +50,20 @@ int run(const std::vector<std::string>& args) {
   po::options_description described("Exploration");
   described.add_options()
       ("map", po::value<std::string>(&map_path)->required(), "ground-truth map the robot explores (image or ROS YAML)")
-      ("range", po::value<double>(&exploration.range)->default_value(exploration.range), "laser range in metres (360°, 1° beams)")
-      ("step", po::value<double>(&exploration.step)->default_value(exploration.step), "metres walked between scans")
       ("seed", po::value<unsigned>(&seed)->default_value(seed), "start choice: 0 = the most open cell, else a random free cell")
       ("start", po::value<std::string>(&start), "start position X,Y in metres (overrides the seed)")
-      ("max-scans", po::value<int>(&exploration.max_scans)->default_value(exploration.max_scans), "stop after this many scans")
-      ("min-frontier", po::value<double>(&exploration.min_frontier)->default_value(exploration.min_frontier), "ignore frontiers shorter than this (metres)")
-      ("grow", po::bool_switch(&exploration.growing_map), "publish a map that grows with what was seen (new size and origin), as ROS does")
       ("compare-batch", po::bool_switch(&options.compare_batch), "also run the batch segmenter on every update, timed, with its own churn (ids carried by overlap)")
       ("batch-every", po::value<int>(&options.batch_every)->default_value(1), "with --compare-batch: only every N-th update (and the last)")
       ("no-hint", po::bool_switch(&no_hint), "do not tell the segmenter which rectangle changed")
       ("gt", po::value<std::string>(&gt_path), "ground-truth segmentation image (default: X_gt_segmentation.png next to the map)")
       ("frames", po::value<std::string>(&frames), "write a PNG frame of every update into this folder")
       ("frame-every", po::value<int>(&frame_every)->default_value(frame_every), "with --frames: only every N-th update (and the last)");
+  add_option_rows(described, exploration_option_rows(), exploration);
   const SegmentSettings segment_defaults{options.incremental.segment, {}};
   add_segment_options(described, segment_defaults);
+  po::options_description incremental("Incremental segmenter");
+  add_incremental_options(incremental, options.incremental);
+  described.add(incremental);
   add_map_load_options(described, MapLoadOptions{});
   po::positional_options_description positional;
   positional.add("map", 1);
@@ -85,8 +84,10 @@ int run(const std::vector<std::string>& args) {
   if (seed > 0xffffffffu) throw UsageError("--seed must fit in 32 bits");
   if (frame_every < 1) throw UsageError("--frame-every must be at least 1");
   if (options.batch_every < 1) throw UsageError("--batch-every must be at least 1");
+  read_option_rows(*vm, exploration_option_rows(), exploration);
   exploration.seed = seed;
   if (vm->count("start")) exploration.start = parse_point(start);
+  options.incremental = read_incremental_options(*vm, options.incremental);
   options.incremental.segment = read_segment_options(*vm, segment_defaults);
   options.use_hint = !no_hint;
   check_usage([&] {

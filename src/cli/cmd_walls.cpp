@@ -43,13 +43,17 @@ struct ReplayArguments {
   int batch_every = 1;
   std::string frames;
   int frame_every = 1;
+  // The real-log preset (wall_map_incremental_options()) with the command line's options; its
+  // segment options are the command's.
+  IncrementalOptions incremental = wall_map_incremental_options(wall_map_segment_options());
 };
 
 void replay(const std::vector<PosedScan>& scans, const WallsOptions& walls, const SegmentOptions& segment_options,
             const ReplayArguments& arguments, const std::string& out_map, const std::string& out_color,
             const std::string& out_rooms) {
   GridReplayOptions options;
-  options.incremental = wall_map_incremental_options(segment_options);
+  options.incremental = arguments.incremental;
+  options.incremental.segment = segment_options;
   options.compare_batch = arguments.compare_batch;
   options.batch_every = arguments.batch_every;
   options.progress = [](const std::string& line) { progress(line); };
@@ -116,6 +120,9 @@ po::options_description walls_options(WallsRequest& r, const SegmentSettings& se
   po::options_description segmentation("Segmentation (with --segment, --out-color, --out-rooms or --incremental)");
   add_segment_options(segmentation, segment_defaults);
   described.add(segmentation);
+  po::options_description incremental("Incremental segmenter (with --incremental; the real-log preset's defaults)");
+  add_incremental_options(incremental, r.replay.incremental);
+  described.add(incremental);
   return described;
 }
 
@@ -144,6 +151,7 @@ WallsRequest parse_request(const std::vector<std::string>& args) {
     return r;
   }
   r.segment = read_segment_options(*vm, segment_defaults);
+  r.replay.incremental = read_incremental_options(*vm, r.replay.incremental);
   try {
     r.options.extraction.lines.method = parse_line_method(r.method);
   } catch (const Error& e) {

@@ -8,15 +8,14 @@ namespace topocut::cli {
 
 void add_segment_options(po::options_description& options, const SegmentSettings& defaults) {
   add_option_rows(options, segment_option_rows(), defaults);
-  options.add_options()("merge-model", po::value<std::string>()->value_name("FILE"),
-                        "merge with this learned model instead of the built-in one (a file written by "
-                        "scripts/train_merge_model.py)");
+  options.add_options()(kMergeModelOption.name, po::value<std::string>()->value_name(kMergeModelOption.value_name),
+                        kMergeModelOption.help);
 }
 
 SegmentSettings read_segment_settings(const po::variables_map& vm, SegmentSettings defaults) {
   read_option_rows(vm, segment_option_rows(), defaults);
-  if (vm.count("merge-model")) {
-    const std::string path = vm["merge-model"].as<std::string>();
+  if (vm.count(kMergeModelOption.name)) {
+    const std::string path = vm[kMergeModelOption.name].as<std::string>();
     const std::string text = read_input_file(path, "merge model", kMaxMergeModelBytes);
     try {
       defaults.options.merge.model = parse_merge_model(text);
@@ -33,6 +32,15 @@ SegmentOptions read_segment_options(const po::variables_map& vm, const SegmentSe
   SegmentOptions options;
   check_usage([&] { options = to_segment_options(settings); });
   return options;
+}
+
+void add_incremental_options(po::options_description& options, const IncrementalOptions& defaults) {
+  add_option_rows(options, incremental_option_rows(), defaults);
+}
+
+IncrementalOptions read_incremental_options(const po::variables_map& vm, IncrementalOptions defaults) {
+  read_option_rows(vm, incremental_option_rows(), defaults);
+  return defaults;
 }
 
 void add_map_load_options(po::options_description& options, const MapLoadOptions& defaults) {

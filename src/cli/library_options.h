@@ -2,11 +2,14 @@
 // The library's option tables (topocut/core/option_table.h) as program_options: a command adds the
 // rows it takes, with the defaults it uses shown in its help, and reads back what the command line
 // or its --config file gave. The names, help lines and checks are the library's, defined once.
+#include <optional>
+#include <typeinfo>
 #include <vector>
 
 #include "cli/command.h"
 #include "topocut/core/option_table.h"
 #include "topocut/io/map_load_flags.h"
+#include "topocut/segmentation/incremental_segmenter.h"
 #include "topocut/segmentation/segment_switches.h"
 
 namespace topocut::cli {
@@ -17,14 +20,25 @@ inline po::typed_value<double>* number_value(double& field) {
   return po::value<double>(&field)->default_value(field, shortest_number(field));
 }
 
-// Adds rows to options: a switch as a bool_switch, a number as text (read by parse_option_number(),
-// the parser of every front end) whose help shows its value in defaults in its shortest form
-// ("--resolution M (=0.05)").
+// Whether row is a switch its struct has on (--windowed): given as --name false, since a bare --name
+// could not turn it off; in every command alike, whatever that command's default.
+template <typename Target>
+bool switch_on_by_default(const OptionRow<Target>& row) {
+  return row.is_switch() && row.get(Target{}) != 0.0;
+}
+
+// Adds rows to options: a switch as a bool_switch (one on by default takes true or false, as --config
+// and the ROS node do), a number as text (read by parse_option_number(), the parser of every front
+// end) whose help shows its value in defaults in its shortest form ("--resolution M (=0.05)").
 template <typename Target>
 void add_option_rows(po::options_description& options, const std::vector<OptionRow<Target>>& rows,
                      const Target& defaults) {
   for (const OptionRow<Target>& row : rows) {
-    if (row.is_switch()) {
+    if (switch_on_by_default(row)) {
+      options.add_options()(row.name.c_str(),
+                            po::value<std::string>()->default_value(row.get(defaults) != 0.0 ? "true" : "false")->value_name("true|false"),
+                            row.help.c_str());
+    } else if (row.is_switch()) {
       options.add_options()(row.name.c_str(), po::bool_switch(), row.help.c_str());
     } else {
       options.add_options()(row.name.c_str(),
@@ -40,8 +54,15 @@ template <typename Target>
 void read_option_rows(const po::variables_map& vm, const std::vector<OptionRow<Target>>& rows, Target& target) {
   for (const OptionRow<Target>& row : rows) {
     if (!vm.count(row.name) || vm[row.name].defaulted()) continue;
-    if (row.is_switch() && !vm[row.name].template as<bool>()) continue;
     const std::string shown = "--" + row.name;
+    if (row.is_switch() && vm[row.name].value().type() == typeid(std::string)) {  // on by default: true or false
+      const std::string text = vm[row.name].template as<std::string>();
+      const std::optional<bool> on = parse_switch_value(text);
+      if (!on) throw UsageError(switch_value_error(shown, text));
+      row.set(target, *on ? 1.0 : 0.0);
+      continue;
+    }
+    if (row.is_switch() && !vm[row.name].template as<bool>()) continue;
     check_usage([&] {
       const double value = row.is_switch() ? 1.0 : parse_option_number(vm[row.name].template as<std::string>(), shown);
       set_option(row, target, value, shown);
@@ -57,6 +78,11 @@ SegmentSettings read_segment_settings(const po::variables_map& vm, SegmentSettin
 
 // to_segment_options(read_segment_settings(vm, defaults)); a bad combination is a UsageError.
 SegmentOptions read_segment_options(const po::variables_map& vm, const SegmentSettings& defaults);
+
+// The incremental segmenter's own options (incremental_option_rows()), with defaults' values shown,
+// and defaults with what vm gave (the segment options are read apart: read_segment_options()).
+void add_incremental_options(po::options_description& options, const IncrementalOptions& defaults);
+IncrementalOptions read_incremental_options(const po::variables_map& vm, IncrementalOptions defaults);
 
 // The map-loading options (map_load_option_rows()), with defaults' values shown.
 void add_map_load_options(po::options_description& options, const MapLoadOptions& defaults);

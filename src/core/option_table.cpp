@@ -23,6 +23,18 @@ void check_option_value(OptionRange range, double value, const std::string& show
       if (!(value >= 0.0 && value <= 255.0) || value != std::floor(value))
         throw Error(shown + " must be a grey level, a whole number in 0..255");
       break;
+    case OptionRange::kShare:
+      if (!(value >= 0.0 && value <= 1.0)) throw Error(shown + " must be a share in [0, 1]");
+      break;
+    case OptionRange::kShareBelowOne:
+      if (!(value >= 0.0 && value < 1.0)) throw Error(shown + " must be a share in [0, 1)");
+      break;
+    case OptionRange::kCount:
+      if (!(value >= 1.0 && value <= 1e9) || value != std::floor(value)) throw Error(shown + " must be a whole number >= 1");
+      break;
+    case OptionRange::kWholeNumber:
+      if (!(value >= 0.0 && value <= 1e9) || value != std::floor(value)) throw Error(shown + " must be a whole number >= 0");
+      break;
     case OptionRange::kLength: check_length(value, shown, /*zero_allowed=*/false); break;
     case OptionRange::kLengthOrZero: check_length(value, shown); break;
     case OptionRange::kArea: check_area(value, shown); break;

@@ -21,19 +21,28 @@ py::tuple keyword(const std::string& name, const char* type, const py::object& v
   return py::make_tuple(name, type, value, help);
 }
 
-// The segment command's table with '_' for '-', defaults taken from settings.
-void add_segment_rows(py::list& out, const SegmentSettings& settings) {
-  for (const OptionRow<SegmentSettings>& row : segment_option_rows()) {
+// A table's rows with '_' for '-', defaults taken from defaults: switches as bool, whole numbers as
+// int, other numbers as float.
+template <typename Target>
+void add_rows(py::list& out, const std::vector<OptionRow<Target>>& rows, const Target& defaults) {
+  for (const OptionRow<Target>& row : rows) {
     const std::string name = underscored_option_name(row.name);
-    const double value = row.get(settings);
+    const double value = row.get(defaults);
     if (row.is_switch()) {
       out.append(keyword(name, "bool", py::bool_(value != 0.0), row.help));
-    } else if (row.range == OptionRange::kGreyLevel) {
-      out.append(keyword(name, "int", py::int_(static_cast<int>(value)), row.help));
+    } else if (is_whole_number(row.range)) {
+      out.append(keyword(name, "int", py::int_(static_cast<long long>(value)), row.help));
     } else {
       out.append(keyword(name, "float", py::float_(value), row.help));
     }
   }
+}
+
+// The segment command's table and its merge model (as a model's text, not a file).
+void add_segment_rows(py::list& out, const SegmentSettings& settings) {
+  add_rows(out, segment_option_rows(), settings);
+  out.append(keyword(underscored_option_name(kMergeModelOption.name), "str | None", py::none(),
+                     std::string("the text of ") + kMergeModelOption.help + "; None: the shipped one"));
 }
 
 // How the grid's cells are read (take_grid_reading()).
@@ -48,21 +57,6 @@ void add_grid_reading(py::list& out) {
   out.append(keyword("free_threshold", "int", py::int_(r.free_threshold), "uint8 images: free above this grey (implies fixed_thresholds)"));
   out.append(keyword("occupied_threshold", "int", py::int_(r.occupied_threshold),
                      "uint8 images: occupied below this grey (implies fixed_thresholds)"));
-}
-
-// IncrementalSegmenter's own keywords (incremental_options()).
-void add_incremental(py::list& out) {
-  const IncrementalOptions o;
-  out.append(keyword("absorb_area", "float", py::float_(o.absorb_area), "m²: a new blob touching one room joins it within this allowance"));
-  out.append(keyword("absorb_fraction", "float", py::float_(o.absorb_fraction), "or within this share of the room's area"));
-  out.append(keyword("batch_fraction", "float", py::float_(o.batch_fraction), "share of changed cells that makes an update a batch one"));
-  out.append(keyword("neighbours_across_doors", "bool", py::bool_(o.neighbours_across_doors),
-                     "decompose a touched room's neighbours across doors with it"));
-  out.append(keyword("neighbours_across_cuts", "bool", py::bool_(o.neighbours_across_cuts),
-                     "decompose a touched room's neighbours across other cuts with it"));
-  out.append(keyword("speck_size", "float", py::float_(o.speck_size), "m: obstacle specks up to this size leave a room undecomposed"));
-  out.append(keyword("split_after", "int", py::int_(o.split_after), "decompositions in a row that must cut a room before it splits"));
-  out.append(keyword("merge_after", "int", py::int_(o.merge_after), "decompositions in a row that must merge two rooms before they merge"));
 }
 
 // simulate_map()'s keywords: simulate-map's table with '_' for '-'; the whole-number rows (cells,
@@ -88,17 +82,11 @@ py::list keywords(const std::string& kind) {
   if (kind != "options" && kind != "segment" && kind != "grid" && kind != "incremental")
     throw py::value_error("unknown keyword table '" + kind + "'");
   py::list out;
-  if (kind == "options" || kind == "segment") {
-    add_segment_rows(out, SegmentSettings{});
-    out.append(keyword("merge_model", "str | None", py::none(),
-                       "the text of a merge model to merge rooms with (None: the shipped one; no_learned_merge=True: none)"));
-  }
+  if (kind == "options" || kind == "segment") add_segment_rows(out, SegmentSettings{});
   if (kind == "segment" || kind == "grid") add_grid_reading(out);
   if (kind == "incremental") {
-    add_incremental(out);
+    add_rows(out, incremental_option_rows(), IncrementalOptions{});
     add_segment_rows(out, SegmentSettings{IncrementalOptions{}.segment, {}});
-    out.append(keyword("merge_model", "str | None", py::none(),
-                       "the text of a merge model to merge rooms with (None: the shipped one; no_learned_merge=True: none)"));
   }
   return out;
 }

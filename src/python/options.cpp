@@ -190,14 +190,11 @@ SegmentOptions segment_options(const py::dict& kwargs) {
 
 IncrementalOptions incremental_options(py::dict kwargs) {
   IncrementalOptions o;
-  o.absorb_area = pop<double>(kwargs, "absorb_area", o.absorb_area);
-  o.absorb_fraction = pop<double>(kwargs, "absorb_fraction", o.absorb_fraction);
-  o.batch_fraction = pop<double>(kwargs, "batch_fraction", o.batch_fraction);
-  o.neighbours_across_doors = pop<bool>(kwargs, "neighbours_across_doors", o.neighbours_across_doors);
-  o.neighbours_across_cuts = pop<bool>(kwargs, "neighbours_across_cuts", o.neighbours_across_cuts);
-  o.speck_size = pop<double>(kwargs, "speck_size", o.speck_size);
-  o.split_after = pop<int>(kwargs, "split_after", o.split_after);
-  o.merge_after = pop<int>(kwargs, "merge_after", o.merge_after);
+  py::dict own;  // the incremental table's keywords, taken out of kwargs; the rest are segment()'s
+  for (const auto& [key, value] : kwargs)
+    if (find_keyword(incremental_option_rows(), py::str(key)) != nullptr) own[key] = value;
+  for (const auto& [key, value] : own) PyDict_DelItem(kwargs.ptr(), key.ptr());
+  set_keywords(incremental_option_rows(), own, o, keywords(incremental_option_rows()));
   SegmentSettings settings{o.segment, {}};
   take_merge_model(kwargs, settings);
   o.segment = settings_from(kwargs, settings);

@@ -37,9 +37,8 @@ void apply(const GridReading& reading, double resolution, const py::handle& orig
 // value ValueError with the command's message.
 SegmentOptions segment_options(const py::dict& kwargs);
 
-// Incremental options: absorb_area, absorb_fraction, batch_fraction, neighbours_across_doors,
-// neighbours_across_cuts, speck_size, split_after, merge_after and
-// every segment option (the real-map cleaning stays off, as IncrementalOptions says).
+// Incremental options: the incremental segmenter's table (incremental_option_rows()) and every segment
+// option, by keyword, each checked and named as on the command line.
 IncrementalOptions incremental_options(py::dict kwargs);
 
 // The names segment() accepts, for docstrings.

@@ -78,10 +78,16 @@ std::vector<Row> with_rule_switches(std::vector<Row> rows) {
   return rows;
 }
 
-}  // namespace
+// The rows of the part of SegmentOptions that part() returns, after rows.
+template <typename Inner, typename Part>
+void append(std::vector<Row>& rows, const std::vector<OptionRow<Inner>>& part_rows, Part part) {
+  const std::vector<Row> lifted = rows_within<SegmentSettings>(part_rows, part);
+  rows.insert(rows.end(), lifted.begin(), lifted.end());
+}
 
-const std::vector<OptionRow<SegmentSettings>>& segment_option_rows() {
-  static const std::vector<Row> rows = with_rule_switches({
+// Every options struct under SegmentOptions by its own table, in the pipeline's order.
+std::vector<Row> make_rows() {
+  std::vector<Row> rows = {
       number("concavity", "M", OptionRange::kLength, [](auto& s) -> auto& { return s.options.concavity; },
              "maximum concavity tau in metres: larger values give fewer, less convex rooms"),
       on_off("trivial", [](auto& s) -> auto& { return s.switches.trivial; },
@@ -89,32 +95,29 @@ const std::vector<OptionRow<SegmentSettings>>& segment_option_rows() {
       on_off("parity", [](auto& s) -> auto& { return s.switches.parity; },
              "the reference behaviour: DuDe's pieces are the rooms (no cleaning, door cuts, merging or simplification); "
              "alone or with numbers and --trivial, not with a switch it already sets"),
-      number("door-width", "M", OptionRange::kLength, [](auto& s) -> auto& { return s.options.doors.max_width; },
-             "widest passage in metres taken for a door (cut before the decomposition)"),
-      number("wall-line-wall", "M", OptionRange::kLength, [](auto& s) -> auto& { return s.options.doors.wall_line_wall; },
-             "shortest straight wall (metres) whose continuation is a wall line"),
-      number("max-wall-line", "M", OptionRange::kLength, [](auto& s) -> auto& { return s.options.doors.max_wall_line; },
-             "longest stretch of free space (metres) a wall line crosses"),
-      number("wall-line-spacing", "M", OptionRange::kLengthOrZero, [](auto& s) -> auto& { return s.options.doors.wall_line_spacing; },
-             "of two wall lines closer than this (metres) along their whole length only the shorter is kept"),
-      number("wall-line-side", "M", OptionRange::kLengthOrZero, [](auto& s) -> auto& { return s.options.doors.wall_line_side; },
-             "a wall line is at least this long (metres) and leaves both sides this wide"),
-      number("fold-area", "M2", OptionRange::kArea, [](auto& s) -> auto& { return s.options.merge.min_room_area; },
-             "rooms smaller than this (m²) are folded into the neighbour they share the longest cut with"),
-      on_off("cover-obstacles", [](auto& s) -> auto& { return s.options.labels.cover_absorbed_obstacles; },
-             "label the obstacles a room absorbed (furniture) with the room, not with 0"),
-      number("robot-radius", "M", OptionRange::kLengthOrZero, [](auto& s) -> auto& { return s.options.binarize.robot_radius; },
-             "inflate obstacles by this radius in metres before decomposing (0: raw free space)"),
-      number("opening", "M", OptionRange::kLengthOrZero, [](auto& s) -> auto& { return s.options.binarize.opening_size; },
-             "open the free space with a square of this side in metres (drops single-ray spurs; 0: off)"),
-      given(number("min-room-area", "M2", OptionRange::kArea,
-                   [](auto& s) -> auto& { return s.options.contours.min_component_area; },
-                   "free-space components smaller than this (m²) are not rooms; their cells join the nearest room")),
-      number("min-hole-area", "M2", OptionRange::kArea, [](auto& s) -> auto& { return s.options.contours.min_hole_area; },
-             "obstacles inside free space smaller than this (m²) are ignored by the decomposition"),
-      number("oversegment", "F", OptionRange::kFraction, [](auto& s) -> auto& { return s.options.oversegment; },
-             "with merging, DuDe cuts at F x tau, 0 < F <= 1 (merging then removes the cuts that are not door-like)"),
-  });
+  };
+  append(rows, binarize_option_rows(), [](auto& s) -> auto& { return s.options.binarize; });
+  append(rows, cleaning_option_rows(), [](auto& s) -> auto& { return s.options.cleaning; });
+  append(rows, contour_option_rows(), [](auto& s) -> auto& { return s.options.contours; });
+  for (Row& row : rows)
+    if (row.name == "min-room-area") row = given(row);
+  rows.push_back(number("simplify", "CELLS", OptionRange::kNonNegative, [](auto& s) -> auto& { return s.options.simplify; },
+                        "tolerance (cells) of the outlines' simplification (0: the exact pixel edges, as --no-simplify)"));
+  append(rows, door_option_rows(), [](auto& s) -> auto& { return s.options.doors; });
+  rows.push_back(number("oversegment", "F", OptionRange::kFraction, [](auto& s) -> auto& { return s.options.oversegment; },
+                        "with merging, DuDe cuts at F x tau, 0 < F <= 1 (merging then removes the cuts that are not door-like)"));
+  append(rows, decomposition_option_rows(), [](auto& s) -> auto& { return s.options.decomposition; });
+  append(rows, room_merge_option_rows(), [](auto& s) -> auto& { return s.options.merge; });
+  append(rows, open_room_option_rows(), [](auto& s) -> auto& { return s.options.open_rooms; });
+  append(rows, room_label_option_rows(), [](auto& s) -> auto& { return s.options.labels; });
+  append(rows, room_kind_option_rows(), [](auto& s) -> auto& { return s.options.kinds; });
+  return with_rule_switches(std::move(rows));
+}
+
+}  // namespace
+
+const std::vector<OptionRow<SegmentSettings>>& segment_option_rows() {
+  static const std::vector<Row> rows = make_rows();
   return rows;
 }
 

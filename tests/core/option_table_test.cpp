@@ -35,6 +35,17 @@ TEST(OptionTable, RangesAreCheckedWithTheOptionsName) {
   EXPECT_NO_THROW(check_option_value(OptionRange::kGreyLevel, 255.0, "x"));
   EXPECT_THROW(check_option_value(OptionRange::kGreyLevel, 250.5, "x"), Error);
   EXPECT_THROW(check_option_value(OptionRange::kGreyLevel, 256.0, "x"), Error);
+  EXPECT_NO_THROW(check_option_value(OptionRange::kShare, 0.0, "x"));
+  EXPECT_NO_THROW(check_option_value(OptionRange::kShare, 1.0, "x"));
+  EXPECT_THROW(check_option_value(OptionRange::kShare, 1.01, "x"), Error);
+  EXPECT_NO_THROW(check_option_value(OptionRange::kShareBelowOne, 0.0, "x"));
+  EXPECT_THROW(check_option_value(OptionRange::kShareBelowOne, 1.0, "x"), Error);
+  EXPECT_NO_THROW(check_option_value(OptionRange::kCount, 1.0, "x"));
+  EXPECT_THROW(check_option_value(OptionRange::kCount, 0.0, "x"), Error);
+  EXPECT_THROW(check_option_value(OptionRange::kCount, 2.5, "x"), Error);
+  EXPECT_NO_THROW(check_option_value(OptionRange::kWholeNumber, 0.0, "x"));
+  EXPECT_THROW(check_option_value(OptionRange::kWholeNumber, -1.0, "x"), Error);
+  EXPECT_THROW(check_option_value(OptionRange::kWholeNumber, std::nan(""), "x"), Error);
   try {
     check_option_value(OptionRange::kPositive, -1.0, "--door-width");
     FAIL();

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "topocut/core/error.h"
+#include "topocut/segmentation/incremental_segmenter.h"
 
 namespace topocut {
 namespace {
@@ -22,6 +23,62 @@ SegmentOptions given(std::initializer_list<std::pair<const char*, double>> value
   return to_segment_options(settings);
 }
 
+// A valid value of row other than before: on for a switch, the next whole number for a count.
+template <typename Target>
+double changed_value(const OptionRow<Target>& r, double before) {
+  if (r.is_switch()) return before != 0.0 ? 0.0 : 1.0;
+  if (r.range == OptionRange::kFraction) return before == 0.75 ? 0.5 : 0.75;
+  if (r.range == OptionRange::kShare || r.range == OptionRange::kShareBelowOne) return before == 0.25 ? 0.5 : 0.25;
+  return is_whole_number(r.range) ? before + 1.0 : before + 0.25;
+}
+
+// Every row sets a field of its own: setting it leaves what every other row reads at its default
+// (two rows on one field, or a row on the wrong struct, would show here).
+template <typename Target>
+void expect_one_field_per_row(const std::vector<OptionRow<Target>>& rows, const Target& defaults) {
+  for (const OptionRow<Target>& r : rows) {
+    Target target = defaults;
+    r.set(target, changed_value(r, r.get(defaults)));
+    for (const OptionRow<Target>& other : rows) {
+      if (&other == &r) continue;
+      EXPECT_EQ(other.get(target), other.get(defaults)) << r.name << " changed " << other.name;
+    }
+  }
+}
+
+TEST(SegmentOptionRows, EveryRowSetsAFieldOfItsOwn) {
+  expect_one_field_per_row(segment_option_rows(), SegmentSettings{});
+  expect_one_field_per_row(incremental_option_rows(), IncrementalOptions{});
+}
+
+// The tables of SegmentOptions' parts are all in the segment table, under the same names, reading the
+// part's own defaults; the incremental table shares no name with it (one flag line, one keyword).
+TEST(SegmentOptionRows, EveryPartsTableIsInTheSegmentTable) {
+  const SegmentSettings defaults;
+  auto expect_within = [&](const auto& part_rows, const auto& part) {
+    for (const auto& r : part_rows) {
+      const OptionRow<SegmentSettings>* lifted = find_option(segment_option_rows(), r.name);
+      ASSERT_NE(lifted, nullptr) << r.name;
+      EXPECT_EQ(lifted->get(defaults), r.get(part)) << r.name;
+      EXPECT_EQ(lifted->range, r.range) << r.name;
+      EXPECT_EQ(lifted->help, r.help) << r.name;
+    }
+  };
+  expect_within(binarize_option_rows(), defaults.options.binarize);
+  expect_within(cleaning_option_rows(), defaults.options.cleaning);
+  expect_within(contour_option_rows(), defaults.options.contours);
+  expect_within(door_option_rows(), defaults.options.doors);
+  expect_within(decomposition_option_rows(), defaults.options.decomposition);
+  expect_within(room_merge_option_rows(), defaults.options.merge);
+  expect_within(open_room_option_rows(), defaults.options.open_rooms);
+  expect_within(room_label_option_rows(), defaults.options.labels);
+  expect_within(room_kind_option_rows(), defaults.options.kinds);
+  std::set<std::string> names;
+  for (const auto& r : segment_option_rows()) names.insert(r.name);
+  for (const auto& r : incremental_option_rows()) EXPECT_TRUE(names.insert(r.name).second) << r.name;
+  EXPECT_FALSE(names.count(kMergeModelOption.name));
+}
+
 TEST(SegmentOptionRows, NamesAreUniqueAndEveryRowReachesTheOptions) {
   std::set<std::string> names;
   for (const OptionRow<SegmentSettings>& r : segment_option_rows()) {
@@ -31,7 +88,7 @@ TEST(SegmentOptionRows, NamesAreUniqueAndEveryRowReachesTheOptions) {
     // Setting a row changes what get reads back, from the default.
     SegmentSettings settings;
     const double before = r.get(settings);
-    const double value = r.is_switch() ? 1.0 : r.range == OptionRange::kFraction ? 0.75 : before + 0.25;
+    const double value = changed_value(r, before);
     r.set(settings, value);
     EXPECT_EQ(r.get(settings), value) << r.name;
     EXPECT_NE(r.get(settings), before) << r.name;

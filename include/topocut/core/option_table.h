@@ -6,6 +6,8 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace topocut {
@@ -22,8 +24,17 @@ enum class OptionRange {
   kLengthOrZero,    // metres, [0, kMaxLength]
   kArea,            // square metres, [0, kMaxLength^2]
   kResolution,      // metres per cell, [kMinResolution, kMaxResolution]
+  kShare,           // [0, 1]
+  kShareBelowOne,   // [0, 1)
+  kCount,           // a whole number >= 1 (rounds, updates in a row)
+  kWholeNumber,     // a whole number >= 0
   kAny,
 };
+
+// Whether a row of range holds a whole number (Python types it int).
+inline bool is_whole_number(OptionRange range) {
+  return range == OptionRange::kGreyLevel || range == OptionRange::kCount || range == OptionRange::kWholeNumber;
+}
 
 template <typename Target>
 struct OptionRow {
@@ -67,6 +78,44 @@ template <typename Target>
 void set_option(const OptionRow<Target>& row, Target& target, double value, const std::string& shown) {
   check_option_value(row.range, value, shown);
   row.set(target, value);
+}
+
+// A row for a number or switch field of Target (double, int, bool; a bool is a switch). inverted: a
+// switch that sets the field false when on (--keep-small-holes for absorb_small_holes).
+template <typename Target, typename Value>
+OptionRow<Target> field_row(std::string name, std::string value_name, OptionRange range, Value Target::*field,
+                            std::string help) {
+  return {std::move(name), std::move(value_name), std::move(help), range,
+          [field](const Target& t) { return static_cast<double>(t.*field); },
+          [field](Target& t, double v) {
+            if constexpr (std::is_same_v<Value, bool>) {
+              t.*field = v != 0.0;
+            } else {
+              t.*field = static_cast<Value>(v);
+            }
+          }};
+}
+template <typename Target>
+OptionRow<Target> switch_row(std::string name, bool Target::*field, std::string help) {
+  return field_row(std::move(name), "", OptionRange::kSwitch, field, std::move(help));
+}
+template <typename Target>
+OptionRow<Target> inverted_switch_row(std::string name, bool Target::*field, std::string help) {
+  return {std::move(name), "", std::move(help), OptionRange::kSwitch,
+          [field](const Target& t) { return t.*field ? 0.0 : 1.0; },
+          [field](Target& t, double on) { t.*field = on == 0.0; }};
+}
+
+// The rows of a part of Outer (a sub-struct's table as rows of the struct holding it): part(outer)
+// is the part's reference, for a const and a non-const Outer (a generic lambda).
+template <typename Outer, typename Inner, typename Part>
+std::vector<OptionRow<Outer>> rows_within(const std::vector<OptionRow<Inner>>& rows, Part part) {
+  std::vector<OptionRow<Outer>> out;
+  for (const OptionRow<Inner>& row : rows)
+    out.push_back({row.name, row.value_name, row.help, row.range,
+                   [get = row.get, part](const Outer& o) { return get(part(o)); },
+                   [set = row.set, part](Outer& o, double v) { set(part(o), v); }});
+  return out;
 }
 
 // The row named name, or nullptr.

@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "topocut/core/geometry.h"
+#include "topocut/core/option_table.h"
 
 namespace topocut {
 
@@ -74,6 +75,9 @@ struct DecompositionOptions {
   // merged a hole) are returned as outer ring plus hole; false keeps the keyhole ring.
   bool restore_holes = true;
 };
+
+// The fields of DecompositionOptions as options: name, unit, range, help (option_table.h).
+const std::vector<OptionRow<DecompositionOptions>>& decomposition_option_rows();
 
 struct Cut {
   Segment2 segment;  // both end points are input vertices; the open segment lies inside the piece it split

@@ -13,6 +13,7 @@
 
 #include "topocut/core/geometry.h"
 #include "topocut/core/occupancy_grid.h"
+#include "topocut/core/option_table.h"
 #include "topocut/scan/scan.h"
 
 namespace topocut {
@@ -35,6 +36,9 @@ struct ExplorationOptions {
   bool growing_map = false;
   double growth_margin = 2.5;  // metres of unknown kept around the seen cells when growing
 };
+
+// The fields of ExplorationOptions as options: name, unit, range, help (option_table.h).
+const std::vector<OptionRow<ExplorationOptions>>& exploration_option_rows();
 
 // Throws Error unless the options are usable (positive range, resolution, step; non-negative
 // frontier size; at least one scan; positive growth margin).

@@ -4,6 +4,7 @@
 #include <opencv2/core.hpp>
 
 #include "topocut/core/occupancy_grid.h"
+#include "topocut/core/option_table.h"
 
 namespace topocut {
 
@@ -21,6 +22,9 @@ struct BinarizeOptions {
   // number of cells >= 3). 0 disables.
   double median_size = 0.0;
 };
+
+// The fields of BinarizeOptions as options: name, unit, range, help (option_table.h).
+const std::vector<OptionRow<BinarizeOptions>>& binarize_option_rows();
 
 // The free-space mask (CV_8UC1, 255 free, 0 not): cells == kFree, minus the inflated obstacles,
 // filtered. Filters only ever remove free cells: unknown and occupied cells are never free.

@@ -8,6 +8,8 @@
 
 #include <opencv2/core.hpp>
 
+#include "topocut/core/option_table.h"
+
 namespace topocut {
 
 struct FreeSpaceCleaningOptions {
@@ -21,6 +23,9 @@ struct FreeSpaceCleaningOptions {
   // (doors, windows, unseen wall) are closed; rays into the open are outside. 0: all outside.
   double inside_closing = 2.0;
 };
+
+// The fields of FreeSpaceCleaningOptions as options: name, unit, range, help (option_table.h).
+const std::vector<OptionRow<FreeSpaceCleaningOptions>>& cleaning_option_rows();
 
 // What happened to a cell (CleanedFreeSpace::removed).
 enum CleanedCell : unsigned char {

@@ -8,6 +8,7 @@
 #include <opencv2/core.hpp>
 
 #include "topocut/core/geometry.h"
+#include "topocut/core/option_table.h"
 
 namespace topocut {
 
@@ -21,6 +22,9 @@ struct ContourOptions {
   // at most 5 px²; 0.0125 m² is 5 cells at 0.05 m. Holes that contain free islands are kept.
   double min_hole_area = 0.0125;
 };
+
+// The fields of ContourOptions as options: name, unit, range, help (option_table.h).
+const std::vector<OptionRow<ContourOptions>>& contour_option_rows();
 
 struct FreeSpaceComponent {
   PolygonWithHoles polygon;  // grid coordinates; outer ring CCW, holes CW; no collinear vertices

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "topocut/core/geometry.h"
+#include "topocut/core/option_table.h"
 
 namespace topocut {
 
@@ -51,6 +52,9 @@ struct DoorOptions {
   double wall_line_spacing = 2.5;
   double wall_line_side = 1.0;  // metres: a wall line at least this long, leaving both sides this wide
 };
+
+// The fields of DoorOptions as options: name, unit, range, help (option_table.h).
+const std::vector<OptionRow<DoorOptions>>& door_option_rows();
 
 // Throws Error unless the options are usable.
 void validate(const DoorOptions& options);

@@ -16,6 +16,7 @@
 #include <opencv2/core.hpp>
 
 #include "topocut/core/occupancy_grid.h"
+#include "topocut/core/option_table.h"
 #include "topocut/core/segmentation.h"
 #include "topocut/segmentation/segmenter.h"
 
@@ -86,6 +87,9 @@ struct IncrementalOptions {
   // map), every room is decomposed again: the batch result, with ids kept where rooms overlap.
   double batch_fraction = 0.5;
 };
+
+// The fields of IncrementalOptions as options (its own fields; segment: segment_option_rows()): name, unit, range, help (option_table.h).
+const std::vector<OptionRow<IncrementalOptions>>& incremental_option_rows();
 
 // What the last update did (diagnostics for tests, benchmarks and logs).
 struct IncrementalUpdateReport {

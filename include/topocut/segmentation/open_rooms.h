@@ -5,6 +5,7 @@
 #include <opencv2/core.hpp>
 
 #include "topocut/core/occupancy_grid.h"
+#include "topocut/core/option_table.h"
 #include "topocut/segmentation/rooms_from_pieces.h"
 
 namespace topocut {
@@ -20,6 +21,9 @@ struct OpenRoomOptions {
   double wall_reach = 0.15;   // metres: never-seen cells this close to a wall count as wall (SLAM rim)
   double wall_band = 0.5;     // metres: never-seen bands this thin between free cells are drawn walls
 };
+
+// The fields of OpenRoomOptions as options: name, unit, range, help (option_table.h).
+const std::vector<OptionRow<OpenRoomOptions>>& open_room_option_rows();
 
 // Throws Error unless the numbers are finite and non-negative and share lies in [0, 1].
 void validate(const OpenRoomOptions& options);

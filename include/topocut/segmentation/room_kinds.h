@@ -8,6 +8,7 @@
 
 #include <opencv2/core.hpp>
 
+#include "topocut/core/option_table.h"
 #include "topocut/core/segmentation.h"
 
 namespace topocut {
@@ -25,6 +26,9 @@ struct RoomKindOptions {
   // segment() on the Bormann maps; every 0.1 m: 17 %, its corridor F1 on r2v 1-3 points higher).
   double sample = 0.15;
 };
+
+// The fields of RoomKindOptions as options: name, unit, range, help (option_table.h).
+const std::vector<OptionRow<RoomKindOptions>>& room_kind_option_rows();
 
 // Throws Error unless the numbers are finite and non-negative.
 void validate(const RoomKindOptions& options);

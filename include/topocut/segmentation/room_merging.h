@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "topocut/core/geometry.h"
+#include "topocut/core/option_table.h"
 #include "topocut/map/free_space_polygons.h"
 #include "topocut/segmentation/merge_features.h"
 #include "topocut/segmentation/merge_model.h"
@@ -54,6 +55,9 @@ struct RoomMergeOptions {
   // L corridor's corner is as deep as the corridor is wide, so it stays one room.
   double step_wall_line_depth = 1.25;
 };
+
+// The fields of RoomMergeOptions as options: name, unit, range, help (option_table.h).
+const std::vector<OptionRow<RoomMergeOptions>>& room_merge_option_rows();
 
 // Throws Error unless the options are usable (finite, non-negative, door_ratio > 0).
 void validate(const RoomMergeOptions& options);

@@ -6,6 +6,7 @@
 #include "topocut/core/cut_rule.h"
 #include "topocut/core/geometry.h"
 #include "topocut/core/occupancy_grid.h"
+#include "topocut/core/option_table.h"
 #include "topocut/core/segmentation.h"
 
 namespace topocut {
@@ -32,6 +33,9 @@ struct RoomLabelOptions {
   // evaluation of free cells only.
   bool cover_absorbed_obstacles = false;
 };
+
+// The fields of RoomLabelOptions as options: name, unit, range, help (option_table.h).
+const std::vector<OptionRow<RoomLabelOptions>>& room_label_option_rows();
 
 // The segmentation of grid from pieces: a piece labels the cells whose centres it contains, other free
 // cells the nearest piece along free space, non-free cells 0 (covered ones too unless

@@ -20,6 +20,18 @@ struct SegmentSwitches {
   bool merge_model_given = false;
 };
 
+// The merge model: the one segmentation option that is no number, so no row. The command line and
+// --config take the model's FILE, Python's merge_model= its text; absent (None) means the shipped model.
+struct TextOption {
+  const char* name;
+  const char* value_name;
+  const char* help;
+};
+inline constexpr TextOption kMergeModelOption{
+    "merge-model", "FILE",
+    "a learned merge model (as scripts/train_merge_model.py writes one) to merge with instead of the shipped one; "
+    "an error with learned merging off"};
+
 // Applies the switches to options (whose numbers the caller has set). The --parity rule: parity
 // sets the reference behaviour (parity_segment_options at options' concavity: every rule of
 // segmentation_rules() off, absorbed obstacles not covered, the reference's smallest room area unless
@@ -35,8 +47,9 @@ struct SegmentSettings {
 };
 
 // The segmentation options, in the order help lists them: concavity, trivial, parity, a no-NAME switch
-// per rule of segmentation_rules() that has a switch, in the pipeline's order, then the numbers. Setting min-room-area also
-// sets switches.min_room_area_given.
+// per rule of segmentation_rules() that has a switch, in the pipeline's order, then the fields of every options struct
+// under SegmentOptions by that struct's own table (binarize_option_rows(), door_option_rows(), ...) in
+// the pipeline's order. Setting min-room-area also sets switches.min_room_area_given.
 const std::vector<OptionRow<SegmentSettings>>& segment_option_rows();
 
 // settings.options with the switches applied (apply()) and validated (validate()); throws Error.

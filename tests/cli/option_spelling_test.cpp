@@ -1,0 +1,98 @@
+// One spelling per option: every row of the library's segmentation and incremental tables is a flag of
+// the commands that segment, with the table's value name and the default of the options struct the
+// command starts from, and a --config key under the same name. Python's keywords and the ROS node's
+// parameters are checked against the same tables in tests/python/test_option_spelling.py and
+// ros/test/adapter_test.cpp.
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "cli/cli_maps.h"
+#include "cli/cli_runner.h"
+#include "io/temp_dir.h"
+#include "topocut/core/option_table.h"
+#include "topocut/decomposition/decompose.h"
+#include "topocut/exploration/explorer.h"
+#include "topocut/segmentation/incremental_segmenter.h"
+#include "topocut/segmentation/segment_switches.h"
+#include "topocut/segmentation/wall_map_segment_options.h"
+
+namespace {
+
+using topocut::IncrementalOptions;
+using topocut::OptionRow;
+using topocut::SegmentSettings;
+using topocut::shortest_number;
+using topocut::testing::bundled;
+using topocut::testing::file_text;
+using topocut::testing::run_cli;
+using topocut::testing::TempDir;
+
+// Whether row's switch is on in its struct: such a switch takes true or false.
+template <typename Target>
+bool on_by_default(const OptionRow<Target>& row) {
+  return row.is_switch() && row.get(Target{}) != 0.0;
+}
+
+// The start of row's line in a command's --help, with the default it shows.
+template <typename Target>
+std::string help_line(const OptionRow<Target>& row, const Target& defaults) {
+  const double value = row.get(defaults);
+  if (on_by_default(row)) return "\n  --" + row.name + " true|false (=" + (value != 0.0 ? "true" : "false") + ")";
+  if (row.is_switch()) return "\n  --" + row.name + " ";
+  return "\n  --" + row.name + " " + row.value_name + " (=" + shortest_number(value) + ")";
+}
+
+// Every row of rows has its line in help, once.
+template <typename Target>
+void expect_rows_in_help(const std::string& command, const std::string& help, const std::vector<OptionRow<Target>>& rows,
+                         const Target& defaults) {
+  for (const OptionRow<Target>& row : rows) {
+    const std::string line = help_line(row, defaults);
+    const std::size_t at = help.find(line);
+    EXPECT_NE(at, std::string::npos) << command << ": " << line;
+    if (at != std::string::npos) {
+      EXPECT_EQ(help.find(line, at + 1), std::string::npos) << command << " twice: " << line;
+    }
+  }
+}
+
+TEST(OptionSpelling, EveryRowIsAFlagWithItsStructsDefault) {
+  const TempDir dir;
+  const std::string segment = run_cli(dir, "segment", {"--help"}).out;
+  expect_rows_in_help("segment", segment, topocut::segment_option_rows(), SegmentSettings{});
+  EXPECT_NE(segment.find("\n  --" + std::string(topocut::kMergeModelOption.name) + " FILE"), std::string::npos);
+  const std::string explore = run_cli(dir, "explore", {"--help"}).out;
+  expect_rows_in_help("explore", explore, topocut::segment_option_rows(), SegmentSettings{IncrementalOptions{}.segment, {}});
+  expect_rows_in_help("explore", explore, topocut::incremental_option_rows(), IncrementalOptions{});
+  expect_rows_in_help("explore", explore, topocut::exploration_option_rows(), topocut::ExplorationOptions{});
+  const std::string decompose = run_cli(dir, "decompose", {"--help"}).out;
+  expect_rows_in_help("decompose", decompose, topocut::decomposition_option_rows(), topocut::DecompositionOptions{});
+  // walls starts from the laser-built grid's options and the real-log preset.
+  const std::string walls = run_cli(dir, "walls", {"--help"}).out;
+  expect_rows_in_help("walls", walls, topocut::segment_option_rows(), SegmentSettings{topocut::wall_map_segment_options(), {}});
+  expect_rows_in_help("walls", walls, topocut::incremental_option_rows(),
+                      topocut::wall_map_incremental_options(topocut::wall_map_segment_options()));
+}
+
+// A --config file naming every row with its default value: each name is a key, each default reads
+// back as itself, and the rooms are those of no file at all.
+TEST(OptionSpelling, EveryRowIsAConfigKeyTakingItsDefault) {
+  const TempDir dir;
+  std::string yaml;
+  const SegmentSettings defaults;
+  for (const OptionRow<SegmentSettings>& row : topocut::segment_option_rows()) {
+    const double value = row.get(defaults);
+    yaml += row.name + ": " + (row.is_switch() ? (value != 0.0 ? "true" : "false") : shortest_number(value)) + "\n";
+  }
+  const std::string config = dir.write("all.yaml", yaml);
+  const std::string map = bundled("floorplan.yaml");
+  const std::string plain = (dir.path() / "plain.json").string(), configured = (dir.path() / "configured.json").string();
+  ASSERT_EQ(run_cli(dir, "segment", {map, "--out-json", plain}, 60).code, 0);
+  const auto r = run_cli(dir, "segment", {map, "--config", config, "--out-json", configured}, 60);
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(file_text(plain), file_text(configured));
+}
+
+}  // namespace

@@ -1,0 +1,70 @@
+# One spelling per option: every keyword Python takes from the library's option tables is the flag of
+# the command line with '_' for '-', with the same default (the C++ side, tests/cli/option_spelling_test.cpp,
+# checks the command line and --config against the tables themselves; ros/test/adapter_test.cpp the node).
+import subprocess
+
+import pytest
+
+import topocut
+
+GRID_READING = {"row_order", "free_thresh", "occupied_thresh", "fixed_thresholds", "free_threshold", "occupied_threshold"}
+
+
+def shortest(value):
+    """A number as the command's help shows it (C++'s shortest round trip: 2.5, 1, 0.0125)."""
+    text = repr(float(value))
+    return text[:-2] if text.endswith(".0") else text
+
+
+def help_text(cli, command):
+    return subprocess.run([cli, command, "--help"], capture_output=True, text=True, timeout=30, check=True).stdout
+
+
+def expected_line(name, type_name, default, cli_help):
+    flag = "--" + name.replace("_", "-")
+    if type_name == "bool":
+        # A switch on by default takes true or false; one off by default is a bare flag.
+        return f"\n  {flag} true|false (=true)" if default else f"\n  {flag} "
+    # The value name is the table's; the default must follow it.
+    at = cli_help.find(f"\n  {flag} ")
+    assert at >= 0, flag
+    value_name = cli_help[at + len(flag) + 4:].split(" ", 1)[0]
+    return f"\n  {flag} {value_name} (={shortest(default)})"
+
+
+def check_keywords_against_help(kind, cli_help):
+    walked = 0
+    for name, type_name, default, _help in topocut._topocut._keywords(kind):
+        if name in GRID_READING:
+            continue
+        if name == "merge_model":  # a FILE on the command line, the model's text in Python
+            assert "\n  --merge-model FILE" in cli_help
+            assert default is None
+            continue
+        line = expected_line(name, type_name, default, cli_help)
+        assert cli_help.count(line) == 1, (kind, name, line)
+        walked += 1
+    return walked
+
+
+def test_every_segment_keyword_is_the_commands_flag_with_its_default(cli):
+    assert check_keywords_against_help("segment", help_text(cli, "segment")) > 60
+
+
+def test_every_incremental_keyword_is_the_explore_commands_flag_with_its_default(cli):
+    # explore runs the incremental segmenter with IncrementalOptions' defaults, as Python's does.
+    walked = check_keywords_against_help("incremental", help_text(cli, "explore"))
+    assert walked > 70
+    names = [name for name, *_ in topocut._topocut._keywords("incremental")]
+    assert len(names) == len(set(names))  # no keyword twice (the incremental and segment tables share none)
+    for name in ("split_after", "merge_after", "neighbours_across_doors", "neighbours_across_cuts", "batch_fraction"):
+        assert name in names
+
+
+def test_incremental_keywords_are_checked_as_on_the_command_line(cli, bundled_map):
+    with pytest.raises(ValueError, match="^split_after must be a whole number >= 1$"):
+        topocut.IncrementalSegmenter(split_after=1.5)
+    with pytest.raises(ValueError, match="^neighbours_across_doors is a switch: give true or false, not '0'$"):
+        topocut.IncrementalSegmenter(neighbours_across_doors=0)
+    done = subprocess.run([cli, "explore", bundled_map, "--split-after", "1.5"], capture_output=True, text=True, timeout=30)
+    assert done.returncode == 2 and "--split-after must be a whole number >= 1" in done.stderr, done.stderr
