@@ -1,4 +1,4 @@
-#include "segmentation/cut_search.h"
+#include "segmentation/cuts/cut_search.h"
 
 #include <map>
 

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "segmentation/room_graph.h"
+#include "segmentation/merging/room_graph.h"
 
 namespace topocut {
 

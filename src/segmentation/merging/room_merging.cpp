@@ -12,7 +12,7 @@
 #include <tuple>
 #include <utility>
 
-#include "segmentation/room_graph.h"
+#include "segmentation/merging/room_graph.h"
 #include "topocut/core/error.h"
 #include "topocut/map/free_space_polygons.h"
 #include "topocut/segmentation/merge_model.h"

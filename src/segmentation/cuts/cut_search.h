@@ -12,7 +12,7 @@
 #include <utility>
 #include <vector>
 
-#include "segmentation/plane_vectors.h"
+#include "segmentation/cuts/plane_vectors.h"
 #include "topocut/core/cut_rule.h"
 #include "topocut/core/error.h"
 #include "topocut/core/geometry.h"

@@ -1,6 +1,6 @@
 #include "topocut/segmentation/door_cuts.h"
 
-#include "segmentation/cut_search.h"
+#include "segmentation/cuts/cut_search.h"
 #include "topocut/segmentation/wall_openings.h"
 
 namespace topocut {

@@ -9,7 +9,7 @@
 #include <utility>
 
 #include "topocut/core/error.h"
-#include "segmentation/plane_vectors.h"
+#include "segmentation/cuts/plane_vectors.h"
 
 namespace topocut {
 
