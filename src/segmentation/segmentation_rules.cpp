@@ -1,6 +1,6 @@
 #include "topocut/segmentation/segmentation_rules.h"
 
-#include "segmentation/room_graph.h"
+#include "segmentation/merging/room_graph.h"
 #include "topocut/segmentation/door_cuts.h"
 #include "topocut/segmentation/island_cuts.h"
 #include "topocut/segmentation/open_rooms.h"

@@ -2,7 +2,7 @@
 
 #include <limits>
 
-#include "segmentation/room_graph.h"
+#include "segmentation/merging/room_graph.h"
 #include "topocut/segmentation/merge_model.h"
 #include "topocut/segmentation/room_merging.h"
 
