@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Fits topocut's merge model to people's rooms and writes src/segmentation/merge_model.txt.
+"""Fits topocut's merge model to people's rooms and writes src/segmentation/merging/merge_model.txt.
 
     /usr/bin/python3 scripts/train_merge_model.py                 # retrain: writes the model file
     /usr/bin/python3 scripts/train_merge_model.py --check         # exit 1 unless the shipped file is what this produces

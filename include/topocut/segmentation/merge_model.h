@@ -1,7 +1,7 @@
 #pragma once
 // A learned merging criterion: the probability that two adjacent rooms in the making are one room of
 // people's, as a logistic regression over the named features of merge_features.h. The shipped model
-// (src/segmentation/merge_model.txt, built into the library) is fitted by
+// (src/segmentation/merging/merge_model.txt, built into the library) is fitted by
 // scripts/train_merge_model.py on people's rooms; another can be loaded from its text.
 #include <cstddef>
 #include <string>
