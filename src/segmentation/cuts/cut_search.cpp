@@ -2,23 +2,19 @@
 
 #include <map>
 
+#include "segmentation/side_width.h"
+
 namespace topocut::cut_search {
 
-// Widest chord parallel to u beside the segment's midpoint on the side of normal n, sampled up to
-// depth; capped at cap (enough to call the side wide).
+// Widest chord parallel to u beside the segment's midpoint on the side of normal n (side_width.h),
+// sampled up to depth; capped at cap (enough to call the side wide).
 double side_width(const EdgeGrid& grid, const Point2& mid, const Point2& u, const Point2& n, double depth, double cap) {
   const double inside = grid.cast(mid, n, depth);  // the side ends at the first wall along n
-  const int samples = 8;
-  double widest = 0.0;
-  for (int k = 1; k <= samples; ++k) {
-    const double d = depth * k / samples;
-    if (d >= inside) break;
+  return sampled_side_width(depth, cap, [&](double d) -> std::optional<double> {
+    if (d >= inside) return std::nullopt;
     const Point2 p{mid.x + d * n.x, mid.y + d * n.y};
-    const double chord = std::min(grid.cast(p, u, cap), cap) + std::min(grid.cast(p, {-u.x, -u.y}, cap), cap);
-    widest = std::max(widest, chord);
-    if (widest >= cap) break;
-  }
-  return widest;
+    return std::min(grid.cast(p, u, cap), cap) + std::min(grid.cast(p, {-u.x, -u.y}, cap), cap);
+  });
 }
 
 // Proper crossing or touching of two segments other than at shared end points. Not the
