@@ -55,7 +55,7 @@ bool is_wall_island(const Ring& hole, double resolution, const DoorOptions& opti
 
 DoorSearch door_search(const PolygonWithHoles& polygon, double resolution, const DoorOptions& options,
                        std::vector<bool> joinable) {
-  DoorSearch search{options, resolution, {&polygon.outer}, {}, options.max_width / resolution, options.width_depth / resolution,
+  DoorSearch search{options, resolution, {&polygon.outer}, {}, options.max_width / resolution, options.door_like.width_depth / resolution,
                     std::move(joinable)};
   for (const Ring& hole : polygon.holes) search.rings.push_back(&hole);
   for (std::size_t r = 0; r < search.rings.size(); ++r) {
@@ -169,7 +169,7 @@ bool has_wide_sides(const DoorSearch& search, const EdgeGrid& grid, const Candid
   const Point2 d = minus(c.segment.b, c.segment.a);
   const Point2 u{d.x / c.width, d.y / c.width};
   const Point2 mid{(c.segment.a.x + c.segment.b.x) / 2.0, (c.segment.a.y + c.segment.b.y) / 2.0};
-  const double cap = c.width / search.options.door_ratio;
+  const double cap = c.width / search.options.door_like.ratio;
   return side_width(grid, mid, u, {-u.y, u.x}, search.depth, cap) >= cap &&
          side_width(grid, mid, u, {u.y, -u.x}, search.depth, cap) >= cap;
 }

@@ -21,7 +21,7 @@ double MergeCandidate::width(bool left) {
   std::optional<double>& w = width_[left ? 1 : 0];
   if (!w) {
     const RoomGraph::Side& s = graph_.sides()[cut_];
-    w = graph_.side_width(cut_, graph_.root(left ? s.left : s.right), left, options_.width_depth);
+    w = graph_.side_width(cut_, graph_.root(left ? s.left : s.right), left, options_.door_like.width_depth);
   }
   return *w;
 }
@@ -88,13 +88,13 @@ MergeVerdict width_step(MergeCandidate& c) {
   return depth >= enough ? MergeVerdict::keep() : MergeVerdict::abstain();
 }
 
-// A cut narrower than door_ratio times the narrower room is door-like and stays; a cut closer to the
-// narrower room's width (a corridor cut across) merges, the clearest first.
+// A cut narrower than door_like.ratio times the narrower room is door-like (door_like_cut.h) and
+// stays; a cut closer to the narrower room's width (a corridor cut across) merges, the clearest first.
 MergeVerdict door_ratio_rule(MergeCandidate& c) {
   const double narrow = c.narrow_width();
   if (narrow <= 0.0) return MergeVerdict::merge(kInfinity);
   const double score = c.cut_length() / narrow;
-  return score >= c.options().door_ratio ? MergeVerdict::merge(score) : MergeVerdict::keep(score);
+  return score >= c.options().door_like.ratio ? MergeVerdict::merge(score) : MergeVerdict::keep(score);
 }
 
 }  // namespace topocut
