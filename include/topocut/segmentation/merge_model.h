@@ -11,8 +11,8 @@ namespace topocut {
 
 // The size of a model any front end accepts (a file, Python's text, a MergeModel built in code):
 // weighing one candidate visits at most one path per tree, so these bound merging's cost per
-// candidate at kMaxMergeTrees x (kMaxMergeTreeDepth + 1) nodes (the shipped model: 200 trees of
-// depth 3, 2966 nodes), and the nodes bound its memory.
+// candidate at kMaxMergeTrees x (kMaxMergeTreeDepth + 1) nodes (the shipped model, far smaller, says
+// its size in its header), and the nodes bound its memory.
 inline constexpr std::size_t kMaxMergeTrees = 1000;
 inline constexpr int kMaxMergeTreeDepth = 12;               // splits on a tree's longest path
 inline constexpr std::size_t kMaxMergeModelNodes = 100000;  // of all trees together
