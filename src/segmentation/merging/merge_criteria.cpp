@@ -1,8 +1,7 @@
 #include "topocut/segmentation/merge_criteria.h"
 
-#include <limits>
-
 #include "segmentation/merging/room_graph.h"
+#include "topocut/core/infinity.h"
 #include "topocut/segmentation/merge_model.h"
 #include "topocut/segmentation/room_merging.h"
 
@@ -32,8 +31,6 @@ const std::vector<double>& MergeCandidate::features() {
 }
 
 namespace {
-
-constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
 // The learned criteria's answer: merge above the model's threshold.
 MergeVerdict by_probability(double probability, const RoomMergeOptions& options) {
