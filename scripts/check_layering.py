@@ -3,7 +3,8 @@
 
     scripts/check_layering.py [ROOT]      (ROOT: the project, default: this script's parent folder)
 
-Reads every C++ file under include/topocut/<m>/, src/<m>/ and tests/<m>/ and fails (exit 1) with one
+Reads every C++ file under include/topocut/<m>/, src/<m>/ and tests/<m>/ (their subfolders too: the module
+is the first folder, src/segmentation/cuts/ is segmentation) and fails (exit 1) with one
 line per include of a module that <m> may not use; prints "layering: ok" otherwise. Modules are
 named by the first folder of an include: "topocut/<module>/..." (public headers) or "<module>/..."
 (a module's private headers under src/, or test helpers under tests/).

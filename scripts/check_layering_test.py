@@ -46,6 +46,11 @@ def main():
         write(root, "tests/exploration/run_test.cpp", ["topocut/exploration/run.h", "io/temp_dir.h"])
         write(root, "tests/io/temp_dir.h", ["topocut/core/error.h"])
         write(root, "src/cli/main.cpp", ["topocut/walls/walls.h", "topocut/evaluation/report.h", "cli/command.h"])
+        # A module's folders (src/segmentation/cuts/...) are the module's: their private headers and
+        # test helpers by their path under the module.
+        write(root, "src/segmentation/cuts/search.cpp", ["segmentation/cuts/search.h", "topocut/map/grid.h"])
+        write(root, "tests/segmentation/merging/graph_test.cpp", ["segmentation/merging/graph.h", "segmentation/ids/rows.h"])
+        write(root, "tests/segmentation/ids/rows.h", ["topocut/core/error.h"])
         code, lines = check(root)
         expect(code == 0 and lines == ["layering: ok"], f"a clean tree fails: {code} {lines}")
 
@@ -57,6 +62,9 @@ def main():
         write(root, "src/map/all.cpp", ["topocut/topocut.h"])
         write(root, "src/core/bad.cpp", ["cli/command.h"])
         write(root, "tests/lines/fit_test.cpp", ["topocut/lines/fit.h", "topocut/walls/walls.h"])
+        # The same from a module's subfolder: the module is the first folder under src/ and tests/.
+        write(root, "src/segmentation/merging/up.cpp", ["topocut/evaluation/dataset.h"])
+        write(root, "tests/segmentation/cuts/side_test.cpp", ["topocut/segmentation/cuts.h", "walls/helper.h"])
         code, lines = check(root)
         violations = [line for line in lines if not line.startswith("layering:")]
         expected = [
@@ -66,12 +74,14 @@ def main():
             "src/map/all.cpp:1: map includes topocut.h",
             "src/core/bad.cpp:1: core includes cli",
             "tests/lines/fit_test.cpp:2: lines includes walls",
+            "src/segmentation/merging/up.cpp:1: segmentation includes evaluation",
+            "tests/segmentation/cuts/side_test.cpp:2: segmentation includes walls",
         ]
         expect(code == 1, f"violations pass: {code} {lines}")
         expect(len(violations) == len(expected), f"expected {len(expected)} lines, got {violations}")
         for prefix in expected:
             expect(any(line.startswith(prefix) for line in violations), f"not reported: {prefix} in {violations}")
-        expect(lines[-1] == "layering: 6 include(s) break the module graph", f"summary: {lines[-1]}")
+        expect(lines[-1] == "layering: 8 include(s) break the module graph", f"summary: {lines[-1]}")
     print("check_layering: detects every planted violation, passes the clean tree")
     return 0
 

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Fits topocut's merge model to people's rooms and writes src/segmentation/merge_model.txt.
+"""Fits topocut's merge model to people's rooms and writes src/segmentation/merging/merge_model.txt.
 
     /usr/bin/python3 scripts/train_merge_model.py                 # retrain: writes the model file
     /usr/bin/python3 scripts/train_merge_model.py --check         # exit 1 unless the shipped file is what this produces
@@ -46,7 +46,7 @@ import numpy as np
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
-MODEL_FILE = os.path.join(ROOT, "src", "segmentation", "merge_model.txt")
+MODEL_FILE = os.path.join(ROOT, "src", "segmentation", "merging", "merge_model.txt")
 ROUNDS = 3
 SEED = 0
 RESOLUTION = 0.05  # metres a cell: the Bormann-layout images hold no scale (merge_training_rows's default too)

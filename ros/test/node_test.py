@@ -339,7 +339,7 @@ def run_checks(args, env, work, node_log, full, grids):
     # Ids are carried across updates: the node's labels are the library's byte for byte (check_rooms),
     # whose updates of this sequence are batch runs (each growth changes the frame) with ids kept by
     # overlap; batch's own churn on them is 14-48 % (how calm the library's ids are is tested in
-    # tests/segmentation/incremental_batch_test.cpp). Fresh ids for every cell would give 100 %.
+    # tests/segmentation/incremental/incremental_batch_test.cpp). Fresh ids for every cell would give 100 %.
     assert max(churns) <= 0.5, "churn %s" % churns
     print("growing sequence of %d maps: churn per update %s" % (len(grids) - 1, ", ".join("%.4f" % c for c in churns)))
     p95 = percentile95(latencies)

@@ -2,14 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
+
+#include "topocut/core/infinity.h"
 
 namespace topocut::detail {
 
 namespace {
 
 constexpr int kLeafSize = 8;
-constexpr double kInfinity = std::numeric_limits<double>::infinity();
 // Box distances are compared with this slack, so that rounding never prunes a centre at the same
 // distance (a tie that the lower id wins).
 constexpr double kSlack = 1e-12;

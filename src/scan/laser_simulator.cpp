@@ -2,17 +2,15 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <string>
 
 #include "topocut/core/error.h"
+#include "topocut/core/infinity.h"
 #include "topocut/scan/grid_ray.h"
 
 namespace topocut {
 
 namespace {
-
-constexpr double kInf = std::numeric_limits<double>::infinity();
 
 void validate_spec(const LaserSpec& spec) {
   if (!std::isfinite(spec.angular_resolution) || spec.angular_resolution <= 0.0)
@@ -29,7 +27,7 @@ void validate_spec(const LaserSpec& spec) {
 Scan empty_scan(const LaserSpec& spec, const std::vector<double>& angles) {
   Scan scan;
   scan.angles = angles;
-  scan.ranges.assign(angles.size(), kInf);
+  scan.ranges.assign(angles.size(), kInfinity);
   scan.range_min = spec.range_min;
   scan.range_max = spec.range_max;
   return scan;
@@ -70,7 +68,7 @@ SimulatedScan simulate_scan(const std::vector<Segment2>& walls, const Pose2& pos
   for (std::size_t i = 0; i < angles.size(); ++i) {
     const double a = pose.theta + angles[i];
     const Point2 d{std::cos(a), std::sin(a)};
-    double best = kInf;
+    double best = kInfinity;
     int best_index = -1;
     for (std::size_t k = 0; k < walls.size(); ++k) {
       const Segment2& w = walls[k];

@@ -17,9 +17,9 @@ const std::vector<OptionRow<DoorOptions>>& door_option_rows() {
   constexpr OptionRange kLength = OptionRange::kLength, kLengthOrZero = OptionRange::kLengthOrZero;
   static const std::vector<OptionRow<D>> rows = {
       field_row("door-width", "M", kLength, &D::max_width, "widest passage in metres taken for a door (cut before the decomposition)"),
-      field_row("door-ratio", "F", OptionRange::kPositive, &D::door_ratio,
+      field_row("door-ratio", "F", OptionRange::kPositive, &D::door_like, &DoorLikeCut::ratio,
                 "doors: a door is narrower than this times the space on each side"),
-      field_row("door-depth", "M", kLength, &D::width_depth, "doors: metres beyond a cut where each side's width is sampled"),
+      field_row("door-depth", "M", kLength, &D::door_like, &DoorLikeCut::width_depth, "doors: metres beyond a cut where each side's width is sampled"),
       field_row("door-turn", "RAD", OptionRange::kNonNegative, &D::min_turn,
                 "doors: corners turning less (radians) are bends of a wall, not a door's jambs"),
       field_row("max-gap", "M", kLength, &D::max_gap, "wall openings: longest opening (metres) a thin wall is continued across"),
@@ -57,9 +57,9 @@ const std::vector<OptionRow<RoomMergeOptions>>& room_merge_option_rows() {
                 "rooms whose widest chord along any cut is narrower (metres) fold the same way (0: off)"),
       field_row("fold-thickness", "M", OptionRange::kLengthOrZero, &R::min_room_thickness,
                 "(hand rules) rooms thinner than this (metres, 2 area / perimeter) fold the same way"),
-      field_row("merge-door-ratio", "F", OptionRange::kPositive, &R::door_ratio,
+      field_row("merge-door-ratio", "F", OptionRange::kPositive, &R::door_like, &DoorLikeCut::ratio,
                 "(hand rules) a cut narrower than this times the room on each side is door-like and stays"),
-      field_row("merge-depth", "M", OptionRange::kLengthOrZero, &R::width_depth,
+      field_row("merge-depth", "M", OptionRange::kLengthOrZero, &R::door_like, &DoorLikeCut::width_depth,
                 "metres into a room where its width next to a cut is sampled"),
       field_row("furniture-size", "M", OptionRange::kLengthOrZero, &R::furniture_size,
                 "obstacles at most this long both ways (metres) are furniture (0: none)"),

@@ -1,6 +1,6 @@
 #include "topocut/segmentation/segmentation_rules.h"
 
-#include "segmentation/room_graph.h"
+#include "segmentation/merging/room_graph.h"
 #include "topocut/segmentation/door_cuts.h"
 #include "topocut/segmentation/island_cuts.h"
 #include "topocut/segmentation/open_rooms.h"
@@ -108,7 +108,7 @@ std::vector<SegmentationRule> make_rules() {
                            [](SegmentOptions& o) { o.merge.step_ratio = 0.0; }),
                 width_step),
       criterion(unswitched_rule("door-ratio", RuleStage::kMerge,
-                                "(hand rules) a cut at least door_ratio times the narrower room's width merges", merging),
+                                "(hand rules) a cut at least door_like.ratio times the narrower room's width merges", merging),
                 door_ratio_rule),
       component_step(unswitched_rule("fold", RuleStage::kMerge, "rooms too small or too thin to be rooms join a neighbour", merging),
                      fold_small_rooms),

@@ -413,7 +413,7 @@ TEST(Segment, BadInput) {
   options.oversegment = 1.5;
   EXPECT_THROW(segment(grid, options), Error);
   options = SegmentOptions{};
-  options.merge.door_ratio = -1.0;
+  options.merge.door_like.ratio = -1.0;
   EXPECT_THROW(segment(grid, options), Error);
   options = SegmentOptions{};
   options.doors.max_width = 0.0;

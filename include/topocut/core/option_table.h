@@ -99,6 +99,15 @@ template <typename Target>
 OptionRow<Target> switch_row(std::string name, bool Target::*field, std::string help) {
   return field_row(std::move(name), "", OptionRange::kSwitch, field, std::move(help));
 }
+// The row of a number inside a part of Target (t.*part.*field), such as a ratio held in a small
+// struct that two option structs share.
+template <typename Target, typename Part, typename Value>
+OptionRow<Target> field_row(std::string name, std::string value_name, OptionRange range, Part Target::*part,
+                            Value Part::*field, std::string help) {
+  return {std::move(name), std::move(value_name), std::move(help), range,
+          [part, field](const Target& t) { return static_cast<double>(t.*part.*field); },
+          [part, field](Target& t, double v) { t.*part.*field = static_cast<Value>(v); }};
+}
 template <typename Target>
 OptionRow<Target> inverted_switch_row(std::string name, bool Target::*field, std::string help) {
   return {std::move(name), "", std::move(help), OptionRange::kSwitch,

@@ -1,7 +1,7 @@
 #pragma once
 // Matched rooms (DESIGN.md, Evaluation): Bormann's precision and recall barely punish
-// under-segmentation (three segments over thirteen rooms still score about 75 % precision), so a
-// segmentation is also counted one-to-one. A segment and a ground-truth room match when their IoU,
+// under-segmentation (docs/evaluating.md gives an example), so a segmentation is also counted
+// one-to-one. A segment and a ground-truth room match when their IoU,
 // over the map's free pixels, exceeds 0.5. Then the segment holds more than half of the room and the
 // room more than half of the segment; segments do not overlap, nor do rooms, so every segment matches
 // at most one room and every room at most one segment.

@@ -10,7 +10,8 @@
 namespace topocut {
 
 // The point-centre pairs fuzzy c-means may weigh per iteration over a whole scan (points of each
-// segment times its centres): 1 million beams with 10 centres each are 10^7 (about 10 s).
+// segment times its centres): 1 million beams with 10 centres each are 10^7, seconds of work
+// (benchmarks/README.md, "Scans of a million beams"); the bound is five times that.
 inline constexpr double kMaxCentrePairs = 5e7;
 
 // The fuzzy c-means centres of every segment of a labelled scan (sensor frame, ordered along the

@@ -4,7 +4,8 @@
 // crossed, so that both always agree on which cells a beam touches.
 #include <algorithm>
 #include <cmath>
-#include <limits>
+
+#include "topocut/core/infinity.h"
 
 namespace topocut {
 
@@ -16,14 +17,13 @@ namespace topocut {
 template <typename Visit>
 void walk_grid_ray(int width, int height, double pu, double pv, double du, double dv, double t_start, double max_t,
                    Visit&& visit) {
-  constexpr double kInf = std::numeric_limits<double>::infinity();
   int column = std::clamp(static_cast<int>(std::floor(pu + t_start * du)), 0, width - 1);
   int row = std::clamp(static_cast<int>(std::floor(pv + t_start * dv)), 0, height - 1);
   const int step_u = du > 0.0 ? 1 : -1, step_v = dv > 0.0 ? 1 : -1;
-  const double delta_u = du != 0.0 ? 1.0 / std::abs(du) : kInf;
-  const double delta_v = dv != 0.0 ? 1.0 / std::abs(dv) : kInf;
-  double next_u = du != 0.0 ? ((column + (du > 0.0 ? 1 : 0)) - pu) / du : kInf;
-  double next_v = dv != 0.0 ? ((row + (dv > 0.0 ? 1 : 0)) - pv) / dv : kInf;
+  const double delta_u = du != 0.0 ? 1.0 / std::abs(du) : kInfinity;
+  const double delta_v = dv != 0.0 ? 1.0 / std::abs(dv) : kInfinity;
+  double next_u = du != 0.0 ? ((column + (du > 0.0 ? 1 : 0)) - pu) / du : kInfinity;
+  double next_v = dv != 0.0 ? ((row + (dv > 0.0 ? 1 : 0)) - pv) / dv : kInfinity;
   double t = t_start;
   while (visit(column, row, t)) {
     if (next_u < next_v) {

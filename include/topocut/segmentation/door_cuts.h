@@ -10,6 +10,7 @@
 
 #include "topocut/core/geometry.h"
 #include "topocut/core/option_table.h"
+#include "topocut/segmentation/door_like_cut.h"
 
 namespace topocut {
 
@@ -21,10 +22,9 @@ struct DoorOptions {
   bool passages = true;
   // Widest passage taken for a door, metres: doors are 0.8-1.2 m, double doors and openings 2 m.
   double max_width = 2.0;
-  // A door is narrower than door_ratio (> 0) times the space on each side: the rooms it joins.
-  double door_ratio = 0.6;
-  // Metres beyond a cut where each side's width (longest parallel chord) is sampled: past the frame.
-  double width_depth = 1.0;
+  // A door is door-like (door_like_cut.h): narrower than 0.6 times the space on each side, the rooms
+  // it joins. Its width_depth is also where the wall openings and wall lines measure their sides.
+  DoorLikeCut door_like{.ratio = 0.6, .width_depth = 1.0};
   // Radians: corners turning less are bends of a wall, not wall corners.
   double min_turn = 0.5;
   // Wall openings (wall_openings.h): a thin wall that stops short continued to the next obstacle; a
@@ -61,7 +61,7 @@ void validate(const DoorOptions& options);
 
 // Narrow passages (the door rule): from every reflex corner of a free-space polygon (grid coordinates,
 // one unit per cell; resolution converts the options' metres), the shortest cut across it to the same
-// ring, kept where both sides are much wider (door_ratio); pairwise disjoint (they may share an end
+// ring, kept where both sides are much wider (door_like); pairwise disjoint (they may share an end
 // point), each splitting the polygon in two, narrowest first. Empty unless options.passages. Deterministic.
 std::vector<Segment2> find_passage_cuts(const PolygonWithHoles& polygon, double resolution, const DoorOptions& options = {});
 

@@ -51,10 +51,10 @@ struct IncrementalOptions {
   // out a new id and take it back with every other scan. Until then the cut-off piece keeps the
   // room's id, and the room's polygon is its larger part. Pieces mostly of newly seen cells, and
   // parts no longer connected, are new rooms at once (a piece cut off beyond a held one counts as
-  // next to the room). 1: split as soon as batch would. 5 (default): on the 40 Bormann explorations
-  // the images with ids used / final rooms <= 1.3 go from 16 to 37 and the pooled churn p95 from
-  // 0.62 % to 0 at the same final rooms (a map at rest is segmented whole: resegment(), the node's
-  // ~settle_after); the real-log replay uses 3 (wall_map_incremental_options()).
+  // next to the room). 1: split as soon as batch would. 5 (default): far fewer ids used and far less
+  // churn at the same final rooms (benchmarks/README.md, "Calm ids by default"; a map at rest is
+  // segmented whole: resegment(), the node's ~settle_after); the real-log replay uses 3
+  // (wall_map_incremental_options()).
   int split_after = 5;
   // The same for merges: an old room whose cells the decomposition puts into a piece that keeps
   // another old room's id keeps its own id and cells until merge_after decompositions in a row
@@ -66,21 +66,21 @@ struct IncrementalOptions {
   int merge_after = 5;
   // Rooms sharing a passage with a room that is decomposed again go with it (one ring), so that
   // door finding and room merging see both sides of the cut, as in batch. With false only rooms
-  // joined by cuts that were not found as doors do: half the work, about one point of recall less
-  // on the furnished dataset maps.
+  // joined by cuts that were not found as doors do: less work for a little recall
+  // (benchmarks/README.md, "Incremental (exploration)").
   bool neighbours_across_doors = true;
   // The same for rooms sharing a passage that was not found as a door (a cut the merging stage
   // left between two rooms). With both false only the rooms the change touches are decomposed
   // again (and the partners of rooms holding back a merge): the cuts on their border stay where
-  // they are, which on the real laser logs halves the p95 update time on intel and also lowers
-  // its churn (benchmarks/README.md).
+  // they are, which on the real laser logs makes the slow updates faster and the ids calmer
+  // (benchmarks/HISTORY.md, "Merges held back, only the touched rooms decomposed").
   bool neighbours_across_cuts = true;
   // A touched room larger than partial_area (m²; 0 = off, the default) is decomposed again only
   // within partial_margin (m) of the change: pieces touching the rest of the room keep its id
   // and cuts; only pieces wholly inside that window may become rooms. The whole room is decomposed
   // when the window would leave it in parts or merge another room into it. The real-log replay
-  // uses 50 m² (wall_map_incremental_options()); on the explorations it costs some images 2-3
-  // points of precision (benchmarks/README.md).
+  // uses 50 m² (wall_map_incremental_options()); on the explorations it costs some images
+  // precision, so it is off by default (benchmarks/README.md, "Partial decomposition of large rooms").
   double partial_area = 0.0;
   double partial_margin = 3.0;
   // When more cells change than this fraction of the free cells (a loop closure moving the whole

@@ -40,7 +40,7 @@ class MergeCandidate {
   CutRule rule() const;              // the rule that made the cut
   double cut_length() const;         // m
   bool ends_on_furniture() const;    // an end lies on a furniture-sized obstacle
-  double width(bool left);           // the room's width beside the cut (RoomMergeOptions::width_depth deep)
+  double width(bool left);           // the room's width beside the cut (RoomMergeOptions::door_like)
   double narrow_width() { return std::min(width(true), width(false)); }
   double wide_width() { return std::max(width(true), width(false)); }
   const std::vector<double>& features();  // merge_features.h

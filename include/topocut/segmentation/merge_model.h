@@ -1,7 +1,7 @@
 #pragma once
 // A learned merging criterion: the probability that two adjacent rooms in the making are one room of
 // people's, as a logistic regression over the named features of merge_features.h. The shipped model
-// (src/segmentation/merge_model.txt, built into the library) is fitted by
+// (src/segmentation/merging/merge_model.txt, built into the library) is fitted by
 // scripts/train_merge_model.py on people's rooms; another can be loaded from its text.
 #include <cstddef>
 #include <string>
@@ -11,8 +11,8 @@ namespace topocut {
 
 // The size of a model any front end accepts (a file, Python's text, a MergeModel built in code):
 // weighing one candidate visits at most one path per tree, so these bound merging's cost per
-// candidate at kMaxMergeTrees x (kMaxMergeTreeDepth + 1) nodes (the shipped model: 200 trees of
-// depth 3, 2966 nodes), and the nodes bound its memory.
+// candidate at kMaxMergeTrees x (kMaxMergeTreeDepth + 1) nodes (the shipped model, far smaller, says
+// its size in its header), and the nodes bound its memory.
 inline constexpr std::size_t kMaxMergeTrees = 1000;
 inline constexpr int kMaxMergeTreeDepth = 12;               // splits on a tree's longest path
 inline constexpr std::size_t kMaxMergeModelNodes = 100000;  // of all trees together

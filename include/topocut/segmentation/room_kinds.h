@@ -22,8 +22,9 @@ struct RoomKindOptions {
   double hallway_elongation = 7.0;
   double min_contact = 0.3;          // metres: a room touching another along less is not beside it
   // Metres: shapes are measured on the labels sampled every this many metres (at least every cell):
-  // a corridor a metre wide still spans 6 samples, and at 0.05 m the pass costs a ninth (about 8 % of
-  // segment() on the Bormann maps; every 0.1 m: 17 %, its corridor F1 on r2v 1-3 points higher).
+  // a corridor a metre wide still spans 6 samples, and the pass costs a fraction of sampling every
+  // cell; finer sampling costs more for a slightly better corridor score (benchmarks/README.md,
+  // "Room kinds").
   double sample = 0.15;
 };
 

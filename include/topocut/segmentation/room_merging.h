@@ -8,6 +8,7 @@
 #include "topocut/core/geometry.h"
 #include "topocut/core/option_table.h"
 #include "topocut/map/free_space_polygons.h"
+#include "topocut/segmentation/door_like_cut.h"
 #include "topocut/segmentation/merge_features.h"
 #include "topocut/segmentation/merge_model.h"
 #include "topocut/segmentation/rooms_from_pieces.h"
@@ -18,19 +19,17 @@ struct RoomMergeOptions {
   // false: the pieces are the rooms (the reference behaviour).
   bool enabled = true;
   // true: rooms merge where the learned model (merge_model.h) finds them one room; false: by the
-  // hand rules below (door_ratio, width steps, furniture). Folding applies either way.
+  // hand rules below (door_like, width steps, furniture). Folding applies either way.
   bool learned = true;
   MergeModel model = default_merge_model();
   // (Learned merging) a corridor continued across a cut is one room whatever the model says: both
   // sides strips of about one thickness (at most 2.5 m), the cut across the narrower, each side at
   // least 3 times as long as thick (--no-corridor-rule: the model decides alone).
   bool corridor_rule = true;
-  // A cut narrower than door_ratio (> 0) times the room on each side is door-like and stays; one
-  // closer to the narrower side's width (a corridor cut across) merges its rooms, clearest first.
-  double door_ratio = 0.7;
-  // Metres into a room where its width next to a cut (longest parallel chord) is sampled: more than
-  // a wall, so a door's frame is not the room behind it.
-  double width_depth = 1.0;
+  // (Hand rules) a door-like cut (door_like_cut.h: narrower than 0.7 times the room on each side)
+  // stays; one closer to the narrower side's width (a corridor cut across) merges its rooms, clearest
+  // first. Its width_depth is also where the learned criterion and min_room_width measure widths.
+  DoorLikeCut door_like{.ratio = 0.7, .width_depth = 1.0};
   // m²: smaller rooms (slivers between cuts, leaks through doors) fold into the neighbour sharing
   // the longest cut. Half a square metre: the smallest closets people draw are larger.
   double min_room_area = 0.5;
@@ -59,7 +58,7 @@ struct RoomMergeOptions {
 // The fields of RoomMergeOptions as options: name, unit, range, help (option_table.h).
 const std::vector<OptionRow<RoomMergeOptions>>& room_merge_option_rows();
 
-// Throws Error unless the options are usable (finite, non-negative, door_ratio > 0).
+// Throws Error unless the options are usable (finite, non-negative, door_like.ratio > 0).
 void validate(const RoomMergeOptions& options);
 
 struct SegmentOptions;

@@ -1,24 +1,20 @@
-#include "segmentation/cut_search.h"
+#include "segmentation/cuts/cut_search.h"
 
 #include <map>
 
+#include "segmentation/side_width.h"
+
 namespace topocut::cut_search {
 
-// Widest chord parallel to u beside the segment's midpoint on the side of normal n, sampled up to
-// depth; capped at cap (enough to call the side wide).
+// Widest chord parallel to u beside the segment's midpoint on the side of normal n (side_width.h),
+// sampled up to depth; capped at cap (enough to call the side wide).
 double side_width(const EdgeGrid& grid, const Point2& mid, const Point2& u, const Point2& n, double depth, double cap) {
   const double inside = grid.cast(mid, n, depth);  // the side ends at the first wall along n
-  const int samples = 8;
-  double widest = 0.0;
-  for (int k = 1; k <= samples; ++k) {
-    const double d = depth * k / samples;
-    if (d >= inside) break;
+  return sampled_side_width(depth, cap, [&](double d) -> std::optional<double> {
+    if (d >= inside) return std::nullopt;
     const Point2 p{mid.x + d * n.x, mid.y + d * n.y};
-    const double chord = std::min(grid.cast(p, u, cap), cap) + std::min(grid.cast(p, {-u.x, -u.y}, cap), cap);
-    widest = std::max(widest, chord);
-    if (widest >= cap) break;
-  }
-  return widest;
+    return std::min(grid.cast(p, u, cap), cap) + std::min(grid.cast(p, {-u.x, -u.y}, cap), cap);
+  });
 }
 
 // Proper crossing or touching of two segments other than at shared end points. Not the
@@ -59,7 +55,7 @@ bool is_wall_island(const Ring& hole, double resolution, const DoorOptions& opti
 
 DoorSearch door_search(const PolygonWithHoles& polygon, double resolution, const DoorOptions& options,
                        std::vector<bool> joinable) {
-  DoorSearch search{options, resolution, {&polygon.outer}, {}, options.max_width / resolution, options.width_depth / resolution,
+  DoorSearch search{options, resolution, {&polygon.outer}, {}, options.max_width / resolution, options.door_like.width_depth / resolution,
                     std::move(joinable)};
   for (const Ring& hole : polygon.holes) search.rings.push_back(&hole);
   for (std::size_t r = 0; r < search.rings.size(); ++r) {
@@ -173,7 +169,7 @@ bool has_wide_sides(const DoorSearch& search, const EdgeGrid& grid, const Candid
   const Point2 d = minus(c.segment.b, c.segment.a);
   const Point2 u{d.x / c.width, d.y / c.width};
   const Point2 mid{(c.segment.a.x + c.segment.b.x) / 2.0, (c.segment.a.y + c.segment.b.y) / 2.0};
-  const double cap = c.width / search.options.door_ratio;
+  const double cap = c.width / search.options.door_like.ratio;
   return side_width(grid, mid, u, {-u.y, u.x}, search.depth, cap) >= cap &&
          side_width(grid, mid, u, {u.y, -u.x}, search.depth, cap) >= cap;
 }

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "segmentation/room_graph.h"
+#include "segmentation/merging/room_graph.h"
 
 namespace topocut {
 
@@ -61,7 +61,7 @@ double solidity(double area, double hull) { return hull > 0.0 ? std::min(area / 
 }  // namespace
 
 std::vector<double> merge_features(RoomGraph& graph, std::size_t k, const RoomMergeOptions& options) {
-  const double width_depth = options.width_depth;
+  const double width_depth = options.door_like.width_depth;
   const RoomGraph::Side& side = graph.sides()[k];
   const int left = graph.root(side.left), right = graph.root(side.right);
   const double width_left = std::max(graph.side_width(k, left, true, width_depth), kMinLength);

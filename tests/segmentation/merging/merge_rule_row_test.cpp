@@ -78,7 +78,7 @@ TEST(MergeRuleRow, ANewCriterionRowTakesEffectWhereTheListPutsIt) {
 TEST(MergeRuleRow, TheHandRulesAfterTheModelDecideWithoutIt) {
   TwoRooms two;
   two.options.merge.learned = false;
-  two.options.merge.door_ratio = 0.5;         // 0.9 m over the 0.9 m side: the hand rules merge
+  two.options.merge.door_like.ratio = 0.5;     // 0.9 m over the 0.9 m side: the hand rules merge
   two.options.merge.min_room_thickness = 0.0;  // and the thin room is not folded
   EXPECT_EQ(two.rooms(segmentation_rules()), 1u);
   bool on = true;

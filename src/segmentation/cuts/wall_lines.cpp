@@ -1,6 +1,6 @@
 #include "topocut/segmentation/wall_lines.h"
 
-#include "segmentation/cut_search.h"
+#include "segmentation/cuts/cut_search.h"
 
 namespace topocut {
 

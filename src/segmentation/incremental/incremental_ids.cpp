@@ -1,6 +1,6 @@
 // Which room each piece of a decomposed region becomes: old ids by overlap, splits and merges held
 // back, the rooms' polygons and states, and the passages kept at the region's border or found new.
-#include "segmentation/incremental_state.h"
+#include "segmentation/incremental/incremental_state.h"
 #include "segmentation/passage_kind.h"
 
 #include <algorithm>

@@ -122,7 +122,7 @@ TEST(MergeRooms, ASliverIsFoldedIntoTheNeighbourWithTheLongestCut) {
   // (60 + 20) / 2 * 20 = 800 units² = 2 m².
   set.cuts = {{{80, 0}, {80, 60}}, {{100, 20}, {100, 0}}};
   RoomMergeOptions options = hand_rules();
-  options.door_ratio = 10.0;      // no cut is wide enough to merge as "not a door"
+  options.door_like.ratio = 10.0;  // no cut is wide enough to merge as "not a door"
   options.min_room_area = 3.0;    // m²: the strip is too small to be a room
   const PieceSet rooms = merge_rooms(no_component(), set, cv::Mat(), kRes, options);
   ASSERT_EQ(rooms.pieces.size(), 2u);
@@ -133,13 +133,13 @@ TEST(MergeRooms, ASliverIsFoldedIntoTheNeighbourWithTheLongestCut) {
 
 TEST(MergeRooms, AThinStripIsFoldedWhenAMinimumWidthIsSet) {
   // A 0.3 m x 6 m strip (1.8 m², above the area limit) sticking out of a 6 m x 4 m room, cut off
-  // at its root (a laser leak through a gap); door_ratio is set so high that nothing merges as
+  // at its root (a laser leak through a gap); door_like.ratio is set so high that nothing merges as
   // "not a door".
   PieceSet set;
   set.pieces = {{{{0, 0}, {120, 0}, {120, 80}, {56, 80}, {50, 80}, {0, 80}}, {}}, box(50, 80, 56, 200)};
   set.cuts = {{{56, 80}, {50, 80}}};
   RoomMergeOptions options = hand_rules();
-  options.door_ratio = 10.0;
+  options.door_like.ratio = 10.0;
   options.min_room_thickness = 0.0;
   EXPECT_EQ(merge_rooms(no_component(), set, cv::Mat(), kRes, options).pieces.size(), 2u);
   options.min_room_width = 0.5;  // the strip's widest chord parallel to its cut is 0.3 m
@@ -159,7 +159,7 @@ TEST(MergeRooms, DisabledReturnsThePiecesAndBadOptionsAreErrors) {
   EXPECT_EQ(same.pieces, set.pieces);
   EXPECT_EQ(same.cuts, set.cuts);
   RoomMergeOptions bad;
-  bad.door_ratio = 0.0;
+  bad.door_like.ratio = 0.0;
   EXPECT_THROW(merge_rooms(no_component(), set, cv::Mat(), kRes, bad), Error);
   bad = {};
   bad.min_room_area = -1.0;
@@ -175,12 +175,12 @@ namespace {
 
 TEST(MergeRooms, ASliverThinnerThanAPersonIsFolded) {
   // A 6 m x 4 m room and a 0.4 m x 4 m strip along its side (1.6 m², above the area limit):
-  // thickness 2 * 1.6 / 8.8 = 0.36 m. Nothing merges as "not a door" (door_ratio 10).
+  // thickness 2 * 1.6 / 8.8 = 0.36 m. Nothing merges as "not a door" (door_like.ratio 10).
   PieceSet set;
   set.pieces = {box(0, 0, 120, 80), box(120, 0, 128, 80)};
   set.cuts = {{{120, 0}, {120, 80}}};
   RoomMergeOptions options = hand_rules();
-  options.door_ratio = 10.0;
+  options.door_like.ratio = 10.0;
   options.min_room_thickness = 0.0;
   EXPECT_EQ(merge_rooms(no_component(), set, cv::Mat(), kRes, options).pieces.size(), 2u);
   options.min_room_thickness = 0.35;  // just below the strip's 0.36 m
@@ -208,7 +208,7 @@ PieceSet around_obstacle(int side, FreeSpaceComponent& component) {
 
 TEST(MergeRooms, CutsEndingOnFurnitureSeparateNoRooms) {
   RoomMergeOptions options = hand_rules();
-  options.door_ratio = 10.0;  // no cut merges as "not a door": only the furniture rule can merge
+  options.door_like.ratio = 10.0;  // no cut merges as "not a door": only the furniture rule can merge
   FreeSpaceComponent table;
   const PieceSet set = around_obstacle(20, table);  // a 1 m table
   EXPECT_EQ(merge_rooms(table, set, cv::Mat(), kRes, options).pieces.size(), 1u);
@@ -272,7 +272,7 @@ TEST(MergeRooms, AThinClosetIsTheModelsToKeepAndSliversBelowTheFoldAreaFold) {
   set.cuts = {{{80, 0}, {80, 40}}};
   EXPECT_EQ(merge_rooms(no_component(), set, cv::Mat(), kRes, constant_model(-10.0)).pieces.size(), 2u);
   RoomMergeOptions hand = hand_rules();
-  hand.door_ratio = 10.0;  // nothing merges as "not a door": only the fold can join them
+  hand.door_like.ratio = 10.0;  // nothing merges as "not a door": only the fold can join them
   EXPECT_EQ(merge_rooms(no_component(), set, cv::Mat(), kRes, hand).pieces.size(), 1u);
   set.pieces[1] = box(80, 0, 84, 40);  // 0.2 m x 2 m = 0.4 m²
   EXPECT_EQ(merge_rooms(no_component(), set, cv::Mat(), kRes, constant_model(-10.0)).pieces.size(), 1u);

@@ -10,7 +10,7 @@
 
 namespace topocut {
 
-// The text of src/segmentation/merge_model.txt, built into the library (CMakeLists.txt).
+// The text of src/segmentation/merging/merge_model.txt, built into the library (CMakeLists.txt).
 extern const char* const kShippedMergeModelText;
 
 namespace {

@@ -12,7 +12,7 @@
 
 #include <gtest/gtest.h>
 
-#include "segmentation/label_rows.h"
+#include "segmentation/incremental/label_rows.h"
 
 #include "topocut/core/error.h"
 

@@ -74,7 +74,7 @@ class RoomGraph {
   std::vector<std::size_t> room_sides(int r) const;
 
   // Width of room r beside cut k (m): the longest chord parallel to the cut within depth metres on
-  // r's side (left: the cut's left).
+  // r's side (left: the cut's left), measured as the cut rules measure it (side_width.h).
   double side_width(std::size_t k, int r, bool left, double depth);
   // Depth of room r behind cut k (m): its chord along the cut's normal through the cut's middle.
   double side_depth(std::size_t k, int r, bool left);

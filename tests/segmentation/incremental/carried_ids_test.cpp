@@ -5,7 +5,7 @@
 
 #include <gtest/gtest.h>
 
-#include "segmentation/label_rows.h"
+#include "segmentation/incremental/label_rows.h"
 
 namespace topocut {
 namespace {

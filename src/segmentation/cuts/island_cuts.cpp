@@ -1,6 +1,6 @@
 #include "topocut/segmentation/island_cuts.h"
 
-#include "segmentation/cut_search.h"
+#include "segmentation/cuts/cut_search.h"
 #include "topocut/segmentation/polygon_split.h"
 
 namespace topocut {

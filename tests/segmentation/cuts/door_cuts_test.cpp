@@ -137,7 +137,7 @@ TEST(DoorCuts, DisabledAndBadOptions) {
   off.extend_walls = false;
   EXPECT_TRUE(find_door_cuts(two_rooms(), kRes, off).empty());
   DoorOptions bad;
-  bad.door_ratio = 0.0;
+  bad.door_like.ratio = 0.0;
   EXPECT_THROW(find_door_cuts(two_rooms(), kRes, bad), Error);
   EXPECT_THROW(find_door_cuts(two_rooms(), -1.0), Error);
 }

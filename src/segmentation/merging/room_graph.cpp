@@ -1,15 +1,18 @@
-#include "segmentation/room_graph.h"
+#include "segmentation/merging/room_graph.h"
 
 #include <algorithm>
 #include <cmath>
 #include <numeric>
+#include <optional>
 #include <set>
 #include <tuple>
 #include <utility>
 
 #include <opencv2/imgproc.hpp>
 
+#include "segmentation/side_width.h"
 #include "topocut/core/error.h"
+#include "topocut/core/infinity.h"
 #include "topocut/map/free_space_polygons.h"
 #include "topocut/segmentation/room_merging.h"
 
@@ -470,14 +473,11 @@ double RoomGraph::side_width(std::size_t k, int r, bool left, double depth_m) {
 double RoomGraph::measure_side_width(std::size_t k, int r, bool left, double depth_m) {
   const auto [u, n, mid] = cut_frame(set_.cuts[k], left);
   const double depth = std::max(depth_m / resolution_, 1.0);
-  const int samples = 8;
-  double widest = 0.0;
-  for (int s = 1; s <= samples; ++s) {
-    const double d = depth * s / samples;
+  const double widest = sampled_side_width(depth, kInfinity, [&](double d) -> std::optional<double> {
     const double w = chord(r, {mid.x + d * n.x, mid.y + d * n.y}, u);
-    if (w <= 0.0) break;
-    widest = std::max(widest, w);
-  }
+    if (w <= 0.0) return std::nullopt;  // past the room's wall
+    return w;
+  });
   return widest * resolution_;
 }
 

@@ -3,21 +3,19 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
-#include <limits>
 #include <map>
 #include <unordered_map>
 #include <utility>
 
 #include "topocut/core/error.h"
-#include "segmentation/plane_vectors.h"
+#include "topocut/core/infinity.h"
+#include "segmentation/cuts/plane_vectors.h"
 
 namespace topocut {
 
 using namespace plane;
 
 namespace {
-
-constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
 // Points as hash keys, equal when their coordinates compare equal (so 0.0 and -0.0 are one point,
 // as in an ordered map); lookups only, so the hash order never shows.

@@ -1,7 +1,7 @@
 // The cut rules' shared choice of compatible cuts: narrowest_compatible() tests each candidate against
 // the accepted cuts near it only (a grid of their boxes); it must keep exactly the cuts its definition,
 // every candidate against every accepted cut, keeps.
-#include "segmentation/cut_search.h"
+#include "segmentation/cuts/cut_search.h"
 
 #include <tuple>
 

@@ -2,7 +2,7 @@
 
 #include <map>
 
-#include "segmentation/cut_search.h"
+#include "segmentation/cuts/cut_search.h"
 
 namespace topocut {
 

@@ -12,7 +12,7 @@
 #include <tuple>
 #include <utility>
 
-#include "segmentation/room_graph.h"
+#include "segmentation/merging/room_graph.h"
 #include "topocut/core/error.h"
 #include "topocut/map/free_space_polygons.h"
 #include "topocut/segmentation/merge_model.h"
@@ -134,7 +134,7 @@ void fold_small_rooms(ComponentMerge& merge) {
   auto is_thin = [&](int r) {
     std::optional<bool>& thin = thin_room[static_cast<std::size_t>(r)];
     if (!thin)
-      thin = (options.min_room_width > 0.0 && room_width(g, r, options.width_depth) < options.min_room_width) ||
+      thin = (options.min_room_width > 0.0 && room_width(g, r, options.door_like.width_depth) < options.min_room_width) ||
              (!options.learned && options.min_room_thickness > 0.0 && g.room_thickness(r) < options.min_room_thickness);
     return *thin;
   };
@@ -172,9 +172,9 @@ double turn(const Point2& a, const Point2& b, const Point2& c) {
 
 void validate(const RoomMergeOptions& options) {
   auto finite_non_negative = [](double v) { return std::isfinite(v) && v >= 0.0; };
-  if (!std::isfinite(options.door_ratio) || options.door_ratio <= 0.0)
+  if (!std::isfinite(options.door_like.ratio) || options.door_like.ratio <= 0.0)
     throw Error("the door ratio of room merging must be a positive number");
-  if (!finite_non_negative(options.width_depth) || !finite_non_negative(options.min_room_area) ||
+  if (!finite_non_negative(options.door_like.width_depth) || !finite_non_negative(options.min_room_area) ||
       !finite_non_negative(options.min_room_width) || !finite_non_negative(options.min_room_thickness) ||
       !finite_non_negative(options.furniture_size))
     throw Error("the room merging depth, minimum room area, width and thickness and the furniture size must be non-negative numbers");

@@ -4,7 +4,7 @@
 
 #include <gtest/gtest.h>
 
-#include "segmentation/room_graph.h"
+#include "segmentation/merging/room_graph.h"
 #include "topocut/core/occupancy_grid.h"
 
 namespace topocut {

@@ -1,6 +1,6 @@
 // Which rooms an update decomposes again and how: the touched rooms, their neighbours across
 // passages, large rooms only near the change (partial_area), isolated specks to the nearest room.
-#include "segmentation/incremental_state.h"
+#include "segmentation/incremental/incremental_state.h"
 
 #include <algorithm>
 #include <climits>

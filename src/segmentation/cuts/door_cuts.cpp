@@ -1,6 +1,6 @@
 #include "topocut/segmentation/door_cuts.h"
 
-#include "segmentation/cut_search.h"
+#include "segmentation/cuts/cut_search.h"
 #include "topocut/segmentation/wall_openings.h"
 
 namespace topocut {
@@ -9,7 +9,7 @@ using namespace cut_search;
 
 void validate(const DoorOptions& options) {
   auto positive = [](double v) { return std::isfinite(v) && v > 0.0; };
-  if (!positive(options.max_width) || !positive(options.door_ratio) || !positive(options.width_depth))
+  if (!positive(options.max_width) || !positive(options.door_like.ratio) || !positive(options.door_like.width_depth))
     throw Error("the door width, ratio and depth must be positive numbers");
   if (!std::isfinite(options.min_turn) || options.min_turn < 0.0) throw Error("the door corner turn must be a non-negative angle");
   if (!positive(options.max_gap) || !positive(options.max_wall_thickness) || !std::isfinite(options.min_wall_length) ||

@@ -1,4 +1,4 @@
-#include "segmentation/room_graph.h"
+#include "segmentation/merging/room_graph.h"
 
 #include <algorithm>
 #include <vector>

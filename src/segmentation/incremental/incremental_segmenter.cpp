@@ -1,6 +1,6 @@
 #include "topocut/segmentation/incremental_segmenter.h"
 
-#include "segmentation/incremental_state.h"
+#include "segmentation/incremental/incremental_state.h"
 
 #include <algorithm>
 #include <climits>

@@ -1,8 +1,7 @@
 #include "topocut/segmentation/merge_criteria.h"
 
-#include <limits>
-
-#include "segmentation/room_graph.h"
+#include "segmentation/merging/room_graph.h"
+#include "topocut/core/infinity.h"
 #include "topocut/segmentation/merge_model.h"
 #include "topocut/segmentation/room_merging.h"
 
@@ -21,7 +20,7 @@ double MergeCandidate::width(bool left) {
   std::optional<double>& w = width_[left ? 1 : 0];
   if (!w) {
     const RoomGraph::Side& s = graph_.sides()[cut_];
-    w = graph_.side_width(cut_, graph_.root(left ? s.left : s.right), left, options_.width_depth);
+    w = graph_.side_width(cut_, graph_.root(left ? s.left : s.right), left, options_.door_like.width_depth);
   }
   return *w;
 }
@@ -32,8 +31,6 @@ const std::vector<double>& MergeCandidate::features() {
 }
 
 namespace {
-
-constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
 // The learned criteria's answer: merge above the model's threshold.
 MergeVerdict by_probability(double probability, const RoomMergeOptions& options) {
@@ -88,13 +85,13 @@ MergeVerdict width_step(MergeCandidate& c) {
   return depth >= enough ? MergeVerdict::keep() : MergeVerdict::abstain();
 }
 
-// A cut narrower than door_ratio times the narrower room is door-like and stays; a cut closer to the
-// narrower room's width (a corridor cut across) merges, the clearest first.
+// A cut narrower than door_like.ratio times the narrower room is door-like (door_like_cut.h) and
+// stays; a cut closer to the narrower room's width (a corridor cut across) merges, the clearest first.
 MergeVerdict door_ratio_rule(MergeCandidate& c) {
   const double narrow = c.narrow_width();
   if (narrow <= 0.0) return MergeVerdict::merge(kInfinity);
   const double score = c.cut_length() / narrow;
-  return score >= c.options().door_ratio ? MergeVerdict::merge(score) : MergeVerdict::keep(score);
+  return score >= c.options().door_like.ratio ? MergeVerdict::merge(score) : MergeVerdict::keep(score);
 }
 
 }  // namespace topocut

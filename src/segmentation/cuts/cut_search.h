@@ -6,23 +6,22 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <limits>
 #include <optional>
 #include <unordered_map>
 #include <utility>
 #include <vector>
 
-#include "segmentation/plane_vectors.h"
+#include "segmentation/cuts/plane_vectors.h"
 #include "topocut/core/cut_rule.h"
 #include "topocut/core/error.h"
 #include "topocut/core/geometry.h"
+#include "topocut/core/infinity.h"
 #include "topocut/segmentation/door_cuts.h"
 
 namespace topocut::cut_search {
 
 using namespace plane;
 
-constexpr double kInfinity = std::numeric_limits<double>::infinity();
 constexpr double kSmallestRoom = 1.0;  // m²: no room is smaller than a square metre
 
 struct Edge {
