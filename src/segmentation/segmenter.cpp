@@ -346,7 +346,9 @@ Segmentation segment_input(const SegmentationInput& input, const SegmentOptions&
   Segmentation segmentation = rooms_from_pieces(to_label.empty() ? grid : labelled_only(grid, to_label), pieces, options.labels);
   timer.next(SegmentStage::kOutputs);
   for (Passage& passage : segmentation.passages) passage.door = is_door(passage, options.doors);
-  assign_room_kinds(segmentation, options.kinds);  // once the rooms are final: whatever decided them
+  // Once the rooms are final, whatever decided them; a window labelling only part of its cells
+  // leaves them to its caller (its rooms' neighbours lie partly beyond it).
+  if (to_label.empty()) assign_room_kinds(segmentation, options.kinds);
   return segmentation;
 }
 
