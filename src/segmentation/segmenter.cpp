@@ -80,14 +80,14 @@ cv::Mat segmentation_free_space(const OccupancyGrid& grid, const SegmentOptions&
 namespace {
 
 // The front end's second half: the free space cleaned (options.clean) as the floor to decompose, and
-// the cells to label. always_clean: the cleaning applies even where it leaves no floor (a window).
-SegmentationInput cleaned_input(const OccupancyGrid& grid, cv::Mat free, const SegmentOptions& options, bool always_clean) {
+// the cells to label. A cleaning that would leave no floor is not applied (a map smaller than a room).
+SegmentationInput cleaned_input(const OccupancyGrid& grid, cv::Mat free, const SegmentOptions& options) {
   SegmentationInput input;
   input.floor = std::move(free);
   input.labelled = grid;
   if (!options.clean) return input;
   CleanedFreeSpace cleaned = clean_free_space(input.floor, grid.cells, grid.resolution, options.cleaning);
-  if (!always_clean && cv::countNonZero(cleaned.floor) == 0) return input;
+  if (cv::countNonZero(cleaned.floor) == 0) return input;
   input.floor = cleaned.floor;
   // An unknown speck enclosed by floor is floor the sensor never reported (a cell between two
   // readings, a grey pixel of a half-seen spot), so it gets the room like the floor around it;
@@ -138,6 +138,16 @@ bool thin_parts_judged_whole(const CleanedFreeSpace& cleaned, const cv::Rect& co
   return true;
 }
 
+// What cells_after_cleaning() needs of a cleaning, seen through box (a view: nothing is copied).
+CleanedFreeSpace cropped_cleaning(const CleanedFreeSpace& cleaned, const cv::Rect& box) {
+  CleanedFreeSpace part;
+  part.removed = cleaned.removed(box);
+  part.outside_cells = cleaned.outside_cells;  // counts of the whole: only tell whether to look at all
+  part.speck_cells = cleaned.speck_cells;
+  part.window = (cleaned.window & box) - box.tl();
+  return part;
+}
+
 cv::Rect grown_within(const cv::Rect& r, int margin, const cv::Size& size) {
   return cv::Rect(r.x - margin, r.y - margin, r.width + 2 * margin, r.height + 2 * margin) & cv::Rect(cv::Point(), size);
 }
@@ -158,7 +168,7 @@ int front_end_context(const SegmentOptions& options, double resolution) {
 }
 
 SegmentationInput segmentation_input(const OccupancyGrid& grid, const SegmentOptions& options) {
-  return cleaned_input(grid, segmentation_free_space(grid, options), options, false);
+  return cleaned_input(grid, segmentation_free_space(grid, options), options);
 }
 
 SegmentationInput segmentation_input(const OccupancyGrid& grid, const cv::Rect& window, const SegmentOptions& options) {
@@ -172,10 +182,16 @@ SegmentationInput segmentation_input(const OccupancyGrid& grid, const cv::Rect& 
     input.labelled = crop(grid, window);
     return input;
   }
-  const SegmentationInput whole = cleaned_input(part, std::move(free), options, true);
-  input.floor = whole.floor(inner).clone();
-  input.labelled = crop(whole.labelled, inner);
-  input.thin_parts_within = !options.clean || thin_parts_judged_whole(whole.cleaned, context, inner, grid.cells.size());
+  input.labelled = crop(part, inner);
+  if (!options.clean) {
+    input.floor = free(inner).clone();
+    return input;
+  }
+  // cleaned_input() over the context, its cells after the cleaning taken over the window only.
+  const CleanedFreeSpace cleaned = clean_free_space(free, part.cells, part.resolution, options.cleaning);
+  input.floor = cleaned.floor(inner).clone();
+  input.labelled.cells = cells_after_cleaning(input.labelled.cells, cropped_cleaning(cleaned, inner));
+  input.thin_parts_within = thin_parts_judged_whole(cleaned, context, inner, grid.cells.size());
   return input;
 }
 
@@ -332,7 +348,9 @@ Segmentation segment_input(const SegmentationInput& input, const SegmentOptions&
   Segmentation segmentation = rooms_from_pieces(to_label.empty() ? grid : labelled_only(grid, to_label), pieces, options.labels);
   timer.next(SegmentStage::kOutputs);
   for (Passage& passage : segmentation.passages) passage.door = is_door(passage, options.doors);
-  assign_room_kinds(segmentation, options.kinds);  // once the rooms are final: whatever decided them
+  // Once the rooms are final, whatever decided them; a window labelling only part of its cells
+  // leaves them to its caller (its rooms' neighbours lie partly beyond it).
+  if (to_label.empty()) assign_room_kinds(segmentation, options.kinds);
   return segmentation;
 }
 

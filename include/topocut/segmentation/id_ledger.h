@@ -4,6 +4,7 @@
 // overlaps it most (carried_ids.h), a room that lies where one disappeared takes that id back (a
 // room that flickers, a merge undone, a cut found again), every other room takes an id never used.
 // The ledger can be saved and loaded with the ids last published, so that ids survive a restart.
+#include <algorithm>
 #include <iosfwd>
 #include <utility>
 #include <vector>
@@ -35,8 +36,11 @@ class IdLedger {
   template <class Available>
   int name(const cv::Rect& window, const cv::Mat& next, const cv::Mat& mask, std::vector<int>& ids, const Available& available);
 
-  // Room id lost its last cell at (row, column): a room found there later may take it back.
-  void retire(int row, int column, int id) { retired_.at<int>(row, column) = id; }
+  // Room id lost its cells of row from column begin to end (excluded): a room found there later may
+  // take it back.
+  void retire(int row, int begin, int end, int id) {
+    std::fill(retired_.ptr<int>(row) + begin, retired_.ptr<int>(row) + end, id);
+  }
 
   // The map grew or moved by whole cells: the cell at (r, c) is now at (r + shift.y, c + shift.x) of a
   // map of size cells; what falls outside is forgotten.

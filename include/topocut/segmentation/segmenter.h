@@ -96,8 +96,9 @@ int front_end_context(const SegmentOptions& options, double resolution);
 // input.floor, decompose_component() on each, the rule list's rows on all rooms (open rooms), the
 // rooms and their labels, the passages with their doors, in input.labelled's frame (its size and
 // origin). Only free cells of input.labelled where to_label is non-zero get a room (empty: every free
-// cell), so that a window may hold cells of rooms it leaves alone. segment() is this function over the
-// known cells' box. Stage times are added to times, if given.
+// cell), so that a window may hold cells of rooms it leaves alone; the rooms' kinds are then left to the
+// caller (kRoom: the rooms they open onto lie partly beyond the window). segment() is this function
+// over the known cells' box. Stage times are added to times, if given.
 Segmentation segment_input(const SegmentationInput& input, const SegmentOptions& options, const cv::Mat& to_label = cv::Mat(),
                            SegmentTimes* times = nullptr);
 

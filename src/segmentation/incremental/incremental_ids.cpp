@@ -208,23 +208,32 @@ std::vector<int> IncrementalSegmenter::State::retire_old_rooms(const Region& reg
     int* l = result.labels.ptr<int>(window.y + r) + window.x;
     const int* k = found.local.ptr<int>(r);
     const unsigned char* in = found.raw.ptr<unsigned char>(r);
-    for (int c = 0; c < window.width; ++c) {
-      if (!in[c]) continue;
-      const int old = l[c];
-      if (old > 0 && !found.reused[static_cast<std::size_t>(old)]) ledger.retire(window.y + r, window.x + c, old);
-      if (old > 0 && found.held_piece[static_cast<std::size_t>(old)] == k[c]) {
-        RegionPieces::HeldCells& h = found.held[static_cast<std::size_t>(held_index[static_cast<std::size_t>(old)])];
-        const int gc = window.x + c, gr = window.y + r;
-        ++h.cells;
-        h.sum_c += gc;
-        h.sum_r += gr;
-        h.min_c = std::min(h.min_c, gc);
-        h.max_c = std::max(h.max_c, gc);
-        h.min_r = std::min(h.min_r, gr);
-        h.max_r = std::max(h.max_r, gr);
+    const int gr = window.y + r;
+    for (int c = 0; c < window.width;) {
+      if (!in[c]) {
+        ++c;
         continue;
       }
-      l[c] = found.id_of_piece[static_cast<std::size_t>(k[c])];
+      // A run of the region's cells with the same old room and the same piece, taken at once.
+      const int old = l[c], piece = k[c];
+      int end = c + 1;
+      while (end < window.width && in[end] && l[end] == old && k[end] == piece) ++end;
+      if (old > 0 && !found.reused[static_cast<std::size_t>(old)]) ledger.retire(gr, window.x + c, window.x + end, old);
+      if (old > 0 && found.held_piece[static_cast<std::size_t>(old)] == piece) {
+        RegionPieces::HeldCells& h = found.held[static_cast<std::size_t>(held_index[static_cast<std::size_t>(old)])];
+        const long long n = end - c;
+        const int gc = window.x + c, last = window.x + end - 1;
+        h.cells += n;
+        h.sum_c += n * (gc + last) / 2;  // n * (gc + last) is even
+        h.sum_r += n * gr;
+        h.min_c = std::min(h.min_c, gc);
+        h.max_c = std::max(h.max_c, last);
+        h.min_r = std::min(h.min_r, gr);
+        h.max_r = std::max(h.max_r, gr);
+      } else {
+        std::fill(l + c, l + end, found.id_of_piece[static_cast<std::size_t>(piece)]);
+      }
+      c = end;
     }
   }
   return removed;

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <climits>
 #include <cmath>
+#include <cstring>
 #include <vector>
 
 #include <opencv2/imgproc.hpp>
@@ -57,26 +58,36 @@ PieceTally tally_pieces(const cv::Mat& labels, const RegionPieces& found, const 
   t.max_c.assign(slots, -1);
   t.min_r.assign(slots, INT_MAX);
   t.max_r.assign(slots, -1);
+  // Run by run: a run of cells of the region with the same piece and the same old label is counted
+  // at once (pieces and rooms are large, so runs are long).
   for (int r = 0; r < window.height; ++r) {
     const int* l = labels.ptr<int>(window.y + r) + window.x;
     const int* k = found.local.ptr<int>(r);
     const unsigned char* in = found.raw.ptr<unsigned char>(r);
     const int gr = window.y + r;
-    for (int c = 0; c < window.width; ++c) {
-      if (!in[c]) continue;
+    for (int c = 0; c < window.width;) {
+      if (!in[c]) {
+        ++c;
+        continue;
+      }
       const int piece = k[c];
       if (piece <= 0) throw Error("internal: a free cell of the re-decomposed region got no room");
+      int end = c + 1;
+      while (end < window.width && in[end] && k[end] == piece && l[end] == l[c]) ++end;
+      const long long n = end - c;
       const std::size_t p = static_cast<std::size_t>(piece);
-      if (t.cells[p]++ == 0) t.first_cell[p] = static_cast<long long>(r) * window.width + c;
+      if (t.cells[p] == 0) t.first_cell[p] = static_cast<long long>(r) * window.width + c;
+      t.cells[p] += n;
       const int j = l[c] > 0 ? old_index[static_cast<std::size_t>(l[c])] : n_old;
-      ++t.overlap[p * static_cast<std::size_t>(n_old + 1) + static_cast<std::size_t>(j)];
-      const int gc = window.x + c;
-      t.sum_c[p] += gc;
-      t.sum_r[p] += gr;
+      t.overlap[p * static_cast<std::size_t>(n_old + 1) + static_cast<std::size_t>(j)] += n;
+      const int gc = window.x + c, last = window.x + end - 1;
+      t.sum_c[p] += n * (gc + last) / 2;  // n * (gc + last) is even
+      t.sum_r[p] += n * gr;
       t.min_c[p] = std::min(t.min_c[p], gc);
-      t.max_c[p] = std::max(t.max_c[p], gc);
+      t.max_c[p] = std::max(t.max_c[p], last);
       t.min_r[p] = std::min(t.min_r[p], gr);
       t.max_r[p] = std::max(t.max_r[p], gr);
+      c = end;
     }
   }
   return t;
@@ -243,7 +254,6 @@ RegionPieces IncrementalSegmenter::State::decompose_region(const Region& region)
   cv::Mat& raw = found.raw;
   raw.create(window.size(), CV_8UC1);
   cv::Mat region_floor(window.size(), CV_8UC1);
-  int floor_cells = 0;
   // member[id + 1]: 255 if cells labelled id are in the region (kPending = -1 always is), 128 if
   // only those near the change are (a partial room).
   std::vector<unsigned char> member(rooms.size() + 1, 0);
@@ -258,16 +268,31 @@ RegionPieces IncrementalSegmenter::State::decompose_region(const Region& region)
     unsigned char* out_raw = raw.ptr<unsigned char>(r);
     unsigned char* out_floor = region_floor.ptr<unsigned char>(r);
     const bool near_row = window.y + r >= near.y && window.y + r < near.y + near.height;
-    for (int c = 0; c < window.width; ++c) {
-      unsigned char in = lut[l[c]];  // labels are >= kPending
-      if (in == 128) in = near_row && window.x + c >= near.x && window.x + c < near.x + near.width ? 255 : 0;
-      out_raw[c] = in;
-      out_floor[c] = (l[c] == 0 ? 255 : in) & f[c];
-      found.region_cells += in & 1;
-      floor_cells += out_floor[c] & 1;
+    // Cells [begin, end) of one label, in the region or not: the floor there is the region's when
+    // they are in it or in no room (obstacle specks), else none of it.
+    auto fill = [&](int begin, int end, unsigned char in, int label) {
+      std::memset(out_raw + begin, in, static_cast<std::size_t>(end - begin));
+      if (label == 0 || in != 0) std::memcpy(out_floor + begin, f + begin, static_cast<std::size_t>(end - begin));
+      else std::memset(out_floor + begin, 0, static_cast<std::size_t>(end - begin));
+      if (in != 0) found.region_cells += end - begin;
+    };
+    for (int c = 0; c < window.width;) {  // run by run of equal labels (>= kPending)
+      const int label = l[c];
+      int end = c + 1;
+      while (end < window.width && l[end] == label) ++end;
+      if (lut[label] == 128) {  // a partial room: its cells within near only
+        const int n0 = near_row ? std::clamp(near.x - window.x, c, end) : end;
+        const int n1 = near_row ? std::clamp(near.x + near.width - window.x, n0, end) : end;
+        fill(c, n0, 0, label);
+        fill(n0, n1, 255, label);
+        fill(n1, end, 0, label);
+      } else {
+        fill(c, end, lut[label], label);
+      }
+      c = end;
     }
   }
-  if (floor_cells == 0) {
+  if (cv::countNonZero(region_floor) == 0) {
     found.local = cv::Mat::zeros(window.size(), CV_32SC1);
     return found;
   }

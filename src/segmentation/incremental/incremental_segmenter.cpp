@@ -49,6 +49,17 @@ cv::Rect changed_box(const cv::Mat& a, const cv::Mat& b, const cv::Rect& window)
   return cv::Rect(left, top, right - left + 1, bottom - top + 1);
 }
 
+// Widens [first, last] to the columns where the n bytes of a and b differ (unchanged when they are equal).
+void differing_columns(const unsigned char* a, const unsigned char* b, int n, int& first, int& last) {
+  if (std::memcmp(a, b, static_cast<std::size_t>(n)) == 0) return;
+  int c0 = 0;
+  while (a[c0] == b[c0]) ++c0;
+  int c1 = n - 1;
+  while (a[c1] == b[c1]) --c1;
+  first = std::min(first, c0);
+  last = std::max(last, c1);
+}
+
 std::size_t polygon_bytes(const PolygonWithHoles& p) {
   std::size_t n = p.outer.capacity();
   for (const Ring& h : p.holes) n += h.capacity();
@@ -386,19 +397,33 @@ ChangeMask IncrementalSegmenter::State::take_changes(const OccupancyGrid& grid, 
   mask.judged_beyond = !input.thin_parts_within;
 
   mask.change = cv::Mat::zeros(window.size(), CV_8UC1);
+  int top = -1, bottom = -1, left = INT_MAX, right = -1;  // the changed cells' box
   for (int r = 0; r < window.height; ++r) {
     const unsigned char* old_cell = labelled.ptr<unsigned char>(window.y + r) + window.x;
     const unsigned char* new_cell = new_labelled.ptr<unsigned char>(r);
     const unsigned char* old_floor = floor.ptr<unsigned char>(window.y + r) + window.x;
     const unsigned char* nf = new_floor.ptr<unsigned char>(r);
+    // Most of the window is as before: only the columns where a byte differs are looked at.
+    int c0 = INT_MAX, c1 = -1;
+    differing_columns(old_cell, new_cell, window.width, c0, c1);
+    differing_columns(old_floor, nf, window.width, c0, c1);
     unsigned char* d = mask.change.ptr<unsigned char>(r);
-    for (int c = 0; c < window.width; ++c) {
+    int changed_in_row = 0;
+    for (int c = c0; c <= c1; ++c) {
       const bool was = old_cell[c] == kFree, is = new_cell[c] == kFree;
       d[c] = static_cast<unsigned char>((is && !was ? kGained : 0) | (was && !is ? kLost : 0) |
                                         ((old_floor[c] != 0) != (nf[c] != 0) ? kFloorChanged : 0));
-      mask.changed_cells += d[c] != 0;
+      if (d[c] == 0) continue;
+      ++changed_in_row;
+      left = std::min(left, c);
+      right = std::max(right, c);
     }
+    if (changed_in_row == 0) continue;
+    mask.changed_cells += changed_in_row;
+    if (top < 0) top = r;
+    bottom = r;
   }
+  if (top >= 0) mask.active = cv::Rect(left, top, right - left + 1, bottom - top + 1);
   grid.cells(changed).copyTo(cells(changed));
   new_floor.copyTo(floor(window));
   new_labelled.copyTo(labelled(window));
@@ -413,12 +438,10 @@ std::vector<Blob> IncrementalSegmenter::State::find_blobs(const ChangeMask& mask
   const cv::Mat& labels = result.labels;
   const int h = labels.rows, w = labels.cols;
   // The changed cells lie mostly well inside the window (grown by the front end's reach): the
-  // components are found within their bounding box.
-  const cv::Rect active = cv::boundingRect(mask.change);
-  blob_of = cv::Mat::zeros(window.size(), CV_32SC1);
-  cv::Mat active_blobs = blob_of(active), stats, centroids;
-  const int n = cv::connectedComponentsWithStats(mask.change(active) != 0, active_blobs, stats, centroids, 8, CV_32S);
-  CV_Assert(active_blobs.data == blob_of(active).data);  // written in place
+  // components are found within their bounding box (blob_of covers that box only).
+  const cv::Rect& active = mask.active;
+  cv::Mat stats, centroids;
+  const int n = cv::connectedComponentsWithStats(mask.change(active) != 0, blob_of, stats, centroids, 8, CV_32S);
   std::vector<Blob> blobs(static_cast<std::size_t>(n));
   for (int b = 1; b < n; ++b)
     blobs[static_cast<std::size_t>(b)].box =
@@ -426,10 +449,10 @@ std::vector<Blob> IncrementalSegmenter::State::find_blobs(const ChangeMask& mask
                  stats.at<int>(b, cv::CC_STAT_WIDTH), stats.at<int>(b, cv::CC_STAT_HEIGHT));
   for (int r = active.y; r < active.y + active.height; ++r) {
     const unsigned char* d = mask.change.ptr<unsigned char>(r);
-    const int* b = blob_of.ptr<int>(r);
+    const int* b = blob_of.ptr<int>(r - active.y);
     for (int c = active.x; c < active.x + active.width; ++c) {
       if (d[c] == 0) continue;
-      Blob& blob = blobs[static_cast<std::size_t>(b[c])];
+      Blob& blob = blobs[static_cast<std::size_t>(b[c - active.x])];
       const int gr = window.y + r, gc = window.x + c;
       blob.gained += (d[c] & kGained) != 0;
       blob.lost += (d[c] & kLost) != 0;
@@ -522,13 +545,14 @@ bool IncrementalSegmenter::State::is_speck(const Blob& blob) const {
 std::vector<int> IncrementalSegmenter::State::apply_changes(const ChangeMask& mask, const cv::Mat& blob_of,
                                                             const std::vector<Blob>& blobs, std::vector<int>& nearest) {
   const cv::Rect& window = mask.window;
+  const cv::Rect& active = mask.active;  // every changed cell lies in it
   cv::Mat& labels = result.labels;
   std::vector<int> touched_rooms;
-  for (int r = 0; r < window.height; ++r) {
+  for (int r = active.y; r < active.y + active.height; ++r) {
     const unsigned char* d = mask.change.ptr<unsigned char>(r);
-    const int* b = blob_of.empty() ? nullptr : blob_of.ptr<int>(r);
+    const int* b = blob_of.ptr<int>(r - active.y);
     int* l = labels.ptr<int>(window.y + r) + window.x;
-    for (int c = 0; c < window.width; ++c) {
+    for (int c = active.x; c < active.x + active.width; ++c) {
       if (d[c] & kLost) {
         --free_cells;
         if (l[c] <= 0) continue;
@@ -540,7 +564,7 @@ std::vector<int> IncrementalSegmenter::State::apply_changes(const ChangeMask& ma
         l[c] = 0;
       } else if (d[c] & kGained) {
         ++free_cells;
-        const Blob& blob = blobs[static_cast<std::size_t>(b[c])];
+        const Blob& blob = blobs[static_cast<std::size_t>(b[c - active.x])];
         if (!blob.floor) {
           l[c] = 0;
           nearest.push_back((window.y + r) * labels.cols + window.x + c);

@@ -61,6 +61,7 @@ constexpr unsigned char kFloorChanged = 4;  // in the decomposed free space befo
 struct ChangeMask {
   cv::Rect window;  // the changed box grown by the binarization's and the cleaning's reach
   cv::Mat change;   // per window cell: the bits above, 0 unchanged
+  cv::Rect active;  // the box of the changed cells, in window coordinates (empty: none)
   int changed_cells = 0;
   // A thin part of the free space in the window reaches beyond the cleaning's context: whether it is
   // a ray depends on all of it, which only the whole map's cleaning sees.
