@@ -204,38 +204,24 @@ std::vector<int> IncrementalSegmenter::State::retire_old_rooms(const Region& reg
   // no piece, for every other room).
   std::vector<int> held_index(found.held_piece.size(), -1);
   for (std::size_t h = 0; h < found.held.size(); ++h) held_index[static_cast<std::size_t>(found.held[h].id)] = static_cast<int>(h);
-  for (int r = 0; r < window.height; ++r) {
-    int* l = result.labels.ptr<int>(window.y + r) + window.x;
-    const int* k = found.local.ptr<int>(r);
-    const unsigned char* in = found.raw.ptr<unsigned char>(r);
-    const int gr = window.y + r;
-    for (int c = 0; c < window.width;) {
-      if (!in[c]) {
-        ++c;
-        continue;
-      }
-      // A run of the region's cells with the same old room and the same piece, taken at once.
-      const int old = l[c], piece = k[c];
-      int end = c + 1;
-      while (end < window.width && in[end] && l[end] == old && k[end] == piece) ++end;
-      if (old > 0 && !found.reused[static_cast<std::size_t>(old)]) ledger.retire(gr, window.x + c, window.x + end, old);
-      if (old > 0 && found.held_piece[static_cast<std::size_t>(old)] == piece) {
-        RegionPieces::HeldCells& h = found.held[static_cast<std::size_t>(held_index[static_cast<std::size_t>(old)])];
-        const long long n = end - c;
-        const int gc = window.x + c, last = window.x + end - 1;
-        h.cells += n;
-        h.sum_c += n * (gc + last) / 2;  // n * (gc + last) is even
-        h.sum_r += n * gr;
-        h.min_c = std::min(h.min_c, gc);
-        h.max_c = std::max(h.max_c, last);
-        h.min_r = std::min(h.min_r, gr);
-        h.max_r = std::max(h.max_r, gr);
-      } else {
-        std::fill(l + c, l + end, found.id_of_piece[static_cast<std::size_t>(piece)]);
-      }
-      c = end;
+  for_each_region_run(window, result.labels, found, [&](int gr, int gc, int end, int old, int piece) {
+    if (old > 0 && !found.reused[static_cast<std::size_t>(old)]) ledger.retire(gr, gc, end, old);
+    if (old > 0 && found.held_piece[static_cast<std::size_t>(old)] == piece) {
+      RegionPieces::HeldCells& h = found.held[static_cast<std::size_t>(held_index[static_cast<std::size_t>(old)])];
+      const long long n = end - gc;
+      const int last = end - 1;
+      h.cells += n;
+      h.sum_c += n * (gc + last) / 2;  // n * (gc + last) is even
+      h.sum_r += n * gr;
+      h.min_c = std::min(h.min_c, gc);
+      h.max_c = std::max(h.max_c, last);
+      h.min_r = std::min(h.min_r, gr);
+      h.max_r = std::max(h.max_r, gr);
+    } else {
+      int* l = result.labels.ptr<int>(gr);
+      std::fill(l + gc, l + end, found.id_of_piece[static_cast<std::size_t>(piece)]);
     }
-  }
+  });
   return removed;
 }
 

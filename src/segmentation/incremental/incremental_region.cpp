@@ -58,38 +58,22 @@ PieceTally tally_pieces(const cv::Mat& labels, const RegionPieces& found, const 
   t.max_c.assign(slots, -1);
   t.min_r.assign(slots, INT_MAX);
   t.max_r.assign(slots, -1);
-  // Run by run: a run of cells of the region with the same piece and the same old label is counted
-  // at once (pieces and rooms are large, so runs are long).
-  for (int r = 0; r < window.height; ++r) {
-    const int* l = labels.ptr<int>(window.y + r) + window.x;
-    const int* k = found.local.ptr<int>(r);
-    const unsigned char* in = found.raw.ptr<unsigned char>(r);
-    const int gr = window.y + r;
-    for (int c = 0; c < window.width;) {
-      if (!in[c]) {
-        ++c;
-        continue;
-      }
-      const int piece = k[c];
-      if (piece <= 0) throw Error("internal: a free cell of the re-decomposed region got no room");
-      int end = c + 1;
-      while (end < window.width && in[end] && k[end] == piece && l[end] == l[c]) ++end;
-      const long long n = end - c;
-      const std::size_t p = static_cast<std::size_t>(piece);
-      if (t.cells[p] == 0) t.first_cell[p] = static_cast<long long>(r) * window.width + c;
-      t.cells[p] += n;
-      const int j = l[c] > 0 ? old_index[static_cast<std::size_t>(l[c])] : n_old;
-      t.overlap[p * static_cast<std::size_t>(n_old + 1) + static_cast<std::size_t>(j)] += n;
-      const int gc = window.x + c, last = window.x + end - 1;
-      t.sum_c[p] += n * (gc + last) / 2;  // n * (gc + last) is even
-      t.sum_r[p] += n * gr;
-      t.min_c[p] = std::min(t.min_c[p], gc);
-      t.max_c[p] = std::max(t.max_c[p], last);
-      t.min_r[p] = std::min(t.min_r[p], gr);
-      t.max_r[p] = std::max(t.max_r[p], gr);
-      c = end;
-    }
-  }
+  for_each_region_run(window, labels, found, [&](int gr, int gc, int end, int old, int piece) {
+    if (piece <= 0) throw Error("internal: a free cell of the re-decomposed region got no room");
+    const long long n = end - gc;
+    const int last = end - 1;
+    const std::size_t p = static_cast<std::size_t>(piece);
+    if (t.cells[p] == 0) t.first_cell[p] = static_cast<long long>(gr - window.y) * window.width + (gc - window.x);
+    t.cells[p] += n;
+    const int j = old > 0 ? old_index[static_cast<std::size_t>(old)] : n_old;
+    t.overlap[p * static_cast<std::size_t>(n_old + 1) + static_cast<std::size_t>(j)] += n;
+    t.sum_c[p] += n * (gc + last) / 2;  // n * (gc + last) is even
+    t.sum_r[p] += n * gr;
+    t.min_c[p] = std::min(t.min_c[p], gc);
+    t.max_c[p] = std::max(t.max_c[p], last);
+    t.min_r[p] = std::min(t.min_r[p], gr);
+    t.max_r[p] = std::max(t.max_r[p], gr);
+  });
   return t;
 }
 

@@ -147,6 +147,30 @@ struct WindowFrame {
   }
 };
 
+// Calls f(row, begin, end, old, piece) for each run of the region's free cells (found.raw) in window
+// that share their old room (labels, the map's frame) and their piece (found.local): row and the
+// columns [begin, end) in the map's frame. Rooms and pieces are large, so runs are long and a pass
+// costs about a step per run. f may rewrite the labels of its own run.
+template <typename F>
+void for_each_region_run(const cv::Rect& window, const cv::Mat& labels, const RegionPieces& found, F&& f) {
+  for (int r = 0; r < window.height; ++r) {
+    const int* l = labels.ptr<int>(window.y + r) + window.x;
+    const int* k = found.local.ptr<int>(r);
+    const unsigned char* in = found.raw.ptr<unsigned char>(r);
+    for (int c = 0; c < window.width;) {
+      if (!in[c]) {
+        ++c;
+        continue;
+      }
+      const int old = l[c], piece = k[c];
+      int end = c + 1;
+      while (end < window.width && in[end] && l[end] == old && k[end] == piece) ++end;
+      f(window.y + r, window.x + c, window.x + end, old, piece);
+      c = end;
+    }
+  }
+}
+
 // Passages with their door flags, in the order they were found.
 struct PassageList {
   std::vector<Passage> passages;
