@@ -68,9 +68,10 @@ void set_table_option(const OptionRow<Target>& row, Target& target, const std::s
 // on the command line (--neighbours-across-doors false).
 template <typename Target>
 std::vector<Option> table_options(const std::vector<OptionRow<Target>>& rows, Target& target) {
+  static const Target struct_defaults{};  // made once: option structs may hold the merge model
   std::vector<Option> out;
   for (const OptionRow<Target>& row : rows) {
-    const bool takes_value = !row.is_switch() || row.get(Target{}) != 0.0;
+    const bool takes_value = !row.is_switch() || row.get(struct_defaults) != 0.0;
     const double value = row.get(target);
     const std::string shown_default = row.is_switch() ? (value != 0.0 ? "true" : "false") : shortest_number(value);
     out.push_back({row.name, row.is_switch() ? (takes_value ? "true|false" : "") : row.value_name,
