@@ -80,8 +80,7 @@ void set_option(const OptionRow<Target>& row, Target& target, double value, cons
   row.set(target, value);
 }
 
-// A row for a number or switch field of Target (double, int, bool; a bool is a switch). inverted: a
-// switch that sets the field false when on (--keep-small-holes for absorb_small_holes).
+// A row for a number or switch field of Target (double, int, bool; a bool is a switch).
 template <typename Target, typename Value>
 OptionRow<Target> field_row(std::string name, std::string value_name, OptionRange range, Value Target::*field,
                             std::string help) {
@@ -95,6 +94,7 @@ OptionRow<Target> field_row(std::string name, std::string value_name, OptionRang
             }
           }};
 }
+// A switch for a bool field.
 template <typename Target>
 OptionRow<Target> switch_row(std::string name, bool Target::*field, std::string help) {
   return field_row(std::move(name), "", OptionRange::kSwitch, field, std::move(help));
@@ -108,6 +108,7 @@ OptionRow<Target> field_row(std::string name, std::string value_name, OptionRang
           [part, field](const Target& t) { return static_cast<double>(t.*part.*field); },
           [part, field](Target& t, double v) { t.*part.*field = static_cast<Value>(v); }};
 }
+// A switch that sets the field false when on (--keep-small-holes for absorb_small_holes).
 template <typename Target>
 OptionRow<Target> inverted_switch_row(std::string name, bool Target::*field, std::string help) {
   return {std::move(name), "", std::move(help), OptionRange::kSwitch,
