@@ -26,38 +26,31 @@ using namespace incremental;
 
 namespace {
 
-// Bounding box of the cells that differ between a and b inside window: a row-wise memcmp first,
-// so unchanged rows cost a fraction of a full comparison.
-cv::Rect changed_box(const cv::Mat& a, const cv::Mat& b, const cv::Rect& window) {
-  if (window.empty()) return {};
-  int top = -1, bottom = -1, left = INT_MAX, right = -1;
-  const std::size_t bytes = static_cast<std::size_t>(window.width);
-  for (int r = window.y; r < window.y + window.height; ++r) {
-    const unsigned char* pa = a.ptr<unsigned char>(r) + window.x;
-    const unsigned char* pb = b.ptr<unsigned char>(r) + window.x;
-    if (std::memcmp(pa, pb, bytes) == 0) continue;
-    if (top < 0) top = r;
-    bottom = r;
-    int c0 = 0;
-    while (pa[c0] == pb[c0]) ++c0;
-    int c1 = window.width - 1;
-    while (pa[c1] == pb[c1]) --c1;
-    left = std::min(left, window.x + c0);
-    right = std::max(right, window.x + c1);
-  }
-  if (top < 0) return {};
-  return cv::Rect(left, top, right - left + 1, bottom - top + 1);
-}
-
-// Widens [first, last] to the columns where the n bytes of a and b differ (unchanged when they are equal).
-void differing_columns(const unsigned char* a, const unsigned char* b, int n, int& first, int& last) {
-  if (std::memcmp(a, b, static_cast<std::size_t>(n)) == 0) return;
+// Widens [first, last] to the columns where the n bytes of a and b differ; whether they differ (a
+// memcmp first, so equal rows cost a fraction of a cell-by-cell comparison).
+bool differing_columns(const unsigned char* a, const unsigned char* b, int n, int& first, int& last) {
+  if (std::memcmp(a, b, static_cast<std::size_t>(n)) == 0) return false;
   int c0 = 0;
   while (a[c0] == b[c0]) ++c0;
   int c1 = n - 1;
   while (a[c1] == b[c1]) --c1;
   first = std::min(first, c0);
   last = std::max(last, c1);
+  return true;
+}
+
+// Bounding box of the cells that differ between a and b inside window.
+cv::Rect changed_box(const cv::Mat& a, const cv::Mat& b, const cv::Rect& window) {
+  if (window.empty()) return {};
+  int top = -1, bottom = -1, left = INT_MAX, right = -1;  // columns within window
+  for (int r = window.y; r < window.y + window.height; ++r) {
+    if (!differing_columns(a.ptr<unsigned char>(r) + window.x, b.ptr<unsigned char>(r) + window.x, window.width, left, right))
+      continue;
+    if (top < 0) top = r;
+    bottom = r;
+  }
+  if (top < 0) return {};
+  return cv::Rect(window.x + left, top, right - left + 1, bottom - top + 1);
 }
 
 std::size_t polygon_bytes(const PolygonWithHoles& p) {
