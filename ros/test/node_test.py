@@ -580,9 +580,11 @@ def check_settling(args, env, work, log, grids, publisher, received):
         publisher.publish(occupancy_grid_message(g, 100 + k))
         wait_for(lambda: len(received["labels"]) > count, "rooms for map %d" % k)
     live = labels_of(received["labels"][-1])
-    count = len(received["timing"])
-    wait_for(lambda: settled_after(count) == 1, "the node to settle")
-    settled = labels_of(received["labels"][-1])
+    count, labels_count = len(received["timing"]), len(received["labels"])
+    # The labels and the timing come on topics of their own, in no set order: the settled labels are
+    # the ones published after the last live ones, whichever of the two arrives first.
+    wait_for(lambda: settled_after(count) == 1 and len(received["labels"]) > labels_count, "the node to settle")
+    settled = labels_of(received["labels"][labels_count])
     batch = labels_of(segment_map(grids[-1]).labels)
     assert same_partition(settled, batch), "the settled rooms are not segment_map's"
     kept = sum(1 for x, y in zip(live, settled) if x and x == y) / max(1, sum(1 for x in live if x))
