@@ -3,11 +3,14 @@
 # checks the command line and --config against the tables themselves; ros/test/adapter_test.cpp the node).
 import subprocess
 
+import numpy as np
 import pytest
 
 import topocut
 
-GRID_READING = {"row_order", "free_thresh", "occupied_thresh", "fixed_thresholds", "free_threshold", "occupied_threshold"}
+# How an array's cells are read: the row order (no flag) and map_server's thresholds (a map YAML's keys
+# on the command line, ROS parameters on the node). The grey thresholds are the commands' flags.
+GRID_READING = {"row_order", "free_thresh", "occupied_thresh"}
 
 
 def shortest(value):
@@ -49,6 +52,18 @@ def check_keywords_against_help(kind, cli_help):
 
 def test_every_segment_keyword_is_the_commands_flag_with_its_default(cli):
     assert check_keywords_against_help("segment", help_text(cli, "segment")) > 60
+
+
+def test_grid_keywords_are_the_map_flags_and_checked_as_there(cli, bundled_map):
+    names = {name for name, *_ in topocut._topocut._keywords("grid")}
+    assert {"fixed_thresholds", "free_threshold", "occupied_threshold", "free_thresh", "occupied_thresh"} <= names
+    grid = np.full((20, 20), 255, dtype=np.uint8)
+    with pytest.raises(ValueError, match="^free_threshold must be a grey level, a whole number in 0..255$"):
+        topocut.segment(grid, 0.05, free_threshold=300)
+    with pytest.raises(ValueError, match=r"^free_thresh must be a share in \[0, 1\]$"):
+        topocut.segment(grid.astype(np.int8), 0.05, free_thresh=1.5)
+    done = subprocess.run([cli, "segment", bundled_map, "--free-threshold", "300"], capture_output=True, text=True, timeout=30)
+    assert done.returncode == 2 and "--free-threshold must be a grey level, a whole number in 0..255" in done.stderr, done.stderr
 
 
 def test_every_incremental_keyword_is_the_explore_commands_flag_with_its_default(cli):
