@@ -95,6 +95,34 @@ TEST(OptionSpelling, EveryRowIsAFlagWithItsStructsDefault) {
   }
 }
 
+// segment --help lists the rows under their struct's heading: each heading once, in the table's order,
+// and every row of a group after its heading and before the next one.
+TEST(OptionSpelling, SegmentHelpGroupsTheRowsUnderTheirHeadings) {
+  const TempDir dir;
+  const std::string help = run_cli(dir, "segment", {"--help"}).out;
+  const auto& rows = topocut::segment_option_rows();
+  const auto& groups = topocut::segment_option_groups();
+  std::size_t counted = 0;
+  for (const topocut::OptionGroup& group : groups) counted += group.rows;
+  EXPECT_EQ(counted, rows.size());
+  std::size_t row = 0, previous = 0;
+  for (std::size_t g = 0; g < groups.size(); ++g) {
+    const std::string heading = "\n" + groups[g].heading + ":\n";
+    const std::size_t at = help.find(heading);
+    ASSERT_NE(at, std::string::npos) << heading;
+    EXPECT_EQ(help.find(heading, at + 1), std::string::npos) << heading;
+    EXPECT_GT(at, previous) << heading;
+    const std::size_t next = g + 1 < groups.size() ? help.find("\n" + groups[g + 1].heading + ":\n") : help.size();
+    for (std::size_t k = 0; k < groups[g].rows; ++k, ++row) {
+      const std::size_t line = help.find("\n  --" + rows[row].name + " ");
+      EXPECT_TRUE(line > at && line < next) << rows[row].name << " not under " << groups[g].heading;
+    }
+    previous = at;
+  }
+  const std::size_t merging = help.find(std::string("\n") + topocut::kMergingHeading + ":\n");
+  EXPECT_GT(help.find("\n  --" + std::string(topocut::kMergeModelOption.name) + " FILE"), merging);
+}
+
 // A --config file naming every row with its default value: each name is a key, each default reads
 // back as itself, and the rooms are those of no file at all.
 TEST(OptionSpelling, EveryRowIsAConfigKeyTakingItsDefault) {
