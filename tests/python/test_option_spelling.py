@@ -83,3 +83,17 @@ def test_incremental_keywords_are_checked_as_on_the_command_line(cli, bundled_ma
         topocut.IncrementalSegmenter(neighbours_across_doors=0)
     done = subprocess.run([cli, "explore", bundled_map, "--split-after", "1.5"], capture_output=True, text=True, timeout=30)
     assert done.returncode == 2 and "--split-after must be a whole number >= 1" in done.stderr, done.stderr
+
+
+def test_grid_keywords_are_set_in_the_tables_order_whatever_order_they_are_given_in():
+    # A grey band (220) between two white rooms: the palette reads it as not free, a fixed free
+    # threshold of 200 as free, so the two readings give different rooms.
+    grid = np.zeros((60, 100), dtype=np.uint8)
+    grid[5:55, 5:95] = 255
+    grid[5:55, 48:52] = 220
+    grid[0:60, 0:5] = 128
+    palette = topocut.segment(grid, 0.05).labels
+    fixed = topocut.segment(grid, 0.05, fixed_thresholds=True, free_threshold=200).labels
+    assert not np.array_equal(palette, fixed)
+    for kwargs in ({"fixed_thresholds": False, "free_threshold": 200}, {"free_threshold": 200, "fixed_thresholds": False}):
+        assert np.array_equal(topocut.segment(grid, 0.05, **kwargs).labels, fixed), kwargs
