@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "topocut/core/error.h"
+#include "topocut/core/grid_array_options.h"
 #include "topocut/core/option_names.h"
 #include "topocut/core/option_table.h"
 #include "topocut/io/atomic_file.h"
@@ -28,8 +29,7 @@ using topocut::SegmentSettings;
 // What the node reads beside the segmentation and incremental options: how a map's values become
 // cells, when the rooms settle, and the largest map it segments.
 struct MapSettings {
-  double free_thresh = topocut::GridArray{}.free_thresh;
-  double occupied_thresh = topocut::GridArray{}.occupied_thresh;
+  topocut::GridArray cells;   // map_server's thresholds (occupancy_threshold_rows()); the rest is the map's
   double settle_after = 2.0;  // seconds without a changed map before the rooms become segment()'s
   std::string id_ledger;      // file the room ids are kept in across restarts ("" = none)
   topocut::ImageLimits limits;
@@ -43,30 +43,25 @@ struct NodeSettings {
   topocut::IncrementalOptions incremental;  // its own fields (incremental_option_rows()); segment above
 };
 
-// map_server's thresholds are probabilities; the table's fraction range leaves out 0.
-OptionRow<MapSettings> threshold(const char* name, double MapSettings::*field, const char* help) {
-  return {name, "P", help, topocut::OptionRange::kAny, [field](const MapSettings& s) { return s.*field; },
-          [field, name](MapSettings& s, double v) {
-            if (!(v >= 0.0 && v <= 1.0)) throw Error(std::string("~") + name + " must be a probability in [0, 1]");
-            s.*field = v;
-          }};
-}
-
 // The node's own rows, after segment_option_rows() (named with '_', as ROS parameters are).
 const std::vector<OptionRow<MapSettings>>& map_option_rows() {
-  static const std::vector<OptionRow<MapSettings>> rows = {
-      threshold("free_thresh", &MapSettings::free_thresh, "map_server's rule: a cell is free below this occupancy"),
-      threshold("occupied_thresh", &MapSettings::occupied_thresh, "and occupied above this one"),
-      {"settle_after", "S", "seconds without a changed map after which the rooms are segment()'s (0: never)",
+  static const std::vector<OptionRow<MapSettings>> rows = [] {
+    // map_server's thresholds: the library's rows (as segment()'s keywords), named as ROS names them.
+    std::vector<OptionRow<MapSettings>> all =
+        topocut::rows_within<MapSettings>(topocut::occupancy_threshold_rows(), [](auto& s) -> auto& { return s.cells; });
+    for (OptionRow<MapSettings>& row : all) row.name = topocut::underscored_option_name(row.name);
+    all.push_back({"settle_after", "S", "seconds without a changed map after which the rooms are segment()'s (0: never)",
        topocut::OptionRange::kNonNegative, [](const MapSettings& s) { return s.settle_after; },
-       [](MapSettings& s, double v) { s.settle_after = v; }},
-      {"max_megapixels", "N", "maps of more megapixels are logged and skipped before a cell is read (at most 1000)",
+       [](MapSettings& s, double v) { s.settle_after = v; }});
+    all.push_back({"max_megapixels", "N", "maps of more megapixels are logged and skipped before a cell is read (at most 1000)",
        topocut::OptionRange::kPositive,
        [](const MapSettings& s) { return s.limits.max_megapixels; },
        [](MapSettings& s, double v) {
          s.limits.max_megapixels = v;
          topocut::validate(s.limits);
-       }}};
+       }});
+    return all;
+  }();
   return rows;
 }
 
@@ -189,8 +184,8 @@ topocut::GridArray array_of(const MapInput& map, const MapSettings& settings) {
                 " cells, more than the limit of " + topocut::shortest_number(settings.limits.max_megapixels) +
                 " megapixels (parameter ~max_megapixels)");
   topocut::GridArray array;
-  array.free_thresh = settings.free_thresh;
-  array.occupied_thresh = settings.occupied_thresh;
+  array.free_thresh = settings.cells.free_thresh;
+  array.occupied_thresh = settings.cells.occupied_thresh;
   array.data = map.data;
   array.width = static_cast<int>(map.width);
   array.height = static_cast<int>(map.height);

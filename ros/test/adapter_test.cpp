@@ -14,6 +14,7 @@
 
 #include "rooms_adapter.h"
 #include "topocut/core/error.h"
+#include "topocut/core/grid_array_options.h"
 #include "topocut/core/option_names.h"
 #include "topocut/core/option_table.h"
 #include "topocut/segmentation/incremental_segmenter.h"
@@ -115,7 +116,7 @@ TEST(RosAdapter, BadParameterValuesAreRefusedWithTheReason) {
   EXPECT_EQ(refusal({given("door_width", "wide")}), "~door_width needs a number, not 'wide'");
   EXPECT_EQ(refusal({given("no_merge", 1)}), "~no_merge is a switch: give true or false, not '1'");
   EXPECT_EQ(refusal({given("fold_area", true)}), "~fold_area needs a number, not 'true'");
-  EXPECT_EQ(refusal({given("free_thresh", 2)}), "~free_thresh must be a probability in [0, 1]");
+  EXPECT_EQ(refusal({given("free_thresh", 2)}), "~free_thresh must be a share in [0, 1]");
   EXPECT_NE(refusal({given("parity", true), given("no_merge", true)}), "");  // a combination the CLI refuses too
   EXPECT_EQ(refusal({given("concavity", 3), given("no_merge", true), given("robot_radius", 0)}), "");
 }
@@ -304,6 +305,7 @@ TEST(RosAdapter, EveryRowOfTheTablesIsAParameterWithItsDefault) {
   for (const auto& row : topocut::segment_option_rows())
     expect_row(row, segment);
   for (const auto& row : topocut::incremental_option_rows()) expect_row(row, incremental);
+  for (const auto& row : topocut::occupancy_threshold_rows()) expect_row(row, topocut::GridArray{});  // map_server's
   EXPECT_EQ(refusal({given("split_after", 0)}), "~split_after must be a whole number >= 1");
   EXPECT_EQ(refusal({given("neighbours_across_doors", 1)}), "~neighbours_across_doors is a switch: give true or false, not '1'");
 }

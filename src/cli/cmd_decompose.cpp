@@ -36,7 +36,7 @@ int run(const std::vector<std::string>& args) {
       ("tau", po::value<double>(&tau)->required(), "maximum concavity, in the polygon's units (> 0)")
       ("output,o", po::value<std::string>(&output), "write the JSON here instead of standard output")
       ("selection", po::value<std::string>(&selection)->default_value(selection), "cut selection: greedy or reference (the authors' DP)")
-      ("concavity", po::value<std::string>(&concavity)->default_value(concavity), "pocket concavity: straight (reference code) or hierarchical (paper)")
+      ("concavity-measure", po::value<std::string>(&concavity)->default_value(concavity), "how a pocket's concavity is measured: straight (reference code) or hierarchical (paper); the concavity bound itself is --tau")
       ("candidates", po::value<std::string>(&candidates)->default_value(candidates), "candidate cuts: validated or reference (unchecked, repaired)")
       ("pocket-polygons", po::value<std::string>(&pockets)->default_value(pockets), "dual pass on pockets: split (at the bridge) or reference")
       ("hull-chain-distance", po::value<std::string>(&hull_distance)->default_value(hull_distance), "pocket hull-chain approximation: segment or line (reference)")
@@ -56,7 +56,7 @@ int run(const std::vector<std::string>& args) {
   if (!(tau > 0.0) || !std::isfinite(tau)) throw UsageError("--tau must be a positive number");
   options.tau = tau;
   options.selection = pick<CutSelection>("selection", selection, {{"greedy", CutSelection::kGreedy}, {"reference", CutSelection::kReference}});
-  options.concavity = pick<ConcavityMeasure>("concavity", concavity, {{"straight", ConcavityMeasure::kStraightLine}, {"hierarchical", ConcavityMeasure::kHierarchical}});
+  options.concavity = pick<ConcavityMeasure>("concavity-measure", concavity, {{"straight", ConcavityMeasure::kStraightLine}, {"hierarchical", ConcavityMeasure::kHierarchical}});
   options.candidates = pick<CandidateCuts>("candidates", candidates, {{"validated", CandidateCuts::kValidated}, {"reference", CandidateCuts::kReference}});
   options.pocket_polygon = pick<PocketPolygon>("pocket-polygons", pockets, {{"split", PocketPolygon::kSplitOnBridge}, {"reference", PocketPolygon::kReference}});
   options.hull_chain_distance = pick<HullChainDistance>("hull-chain-distance", hull_distance, {{"segment", HullChainDistance::kSegment}, {"line", HullChainDistance::kLine}});

@@ -5,17 +5,12 @@
 #include "cli/library_options.h"
 #include "topocut/core/error.h"
 #include "topocut/labeling/labeling_json.h"
+#include "topocut/labeling/sparse_labeling.h"
 #include "topocut/labeling/segment_centres.h"
 #include "topocut/scan/scan_csv.h"
 
 namespace topocut::cli {
 namespace {
-
-StructuringElement parse_element(const std::string& name) {
-  if (name == "cross") return StructuringElement::kCross;
-  if (name == "square") return StructuringElement::kSquare;
-  throw UsageError("--element must be 'cross' or 'square', got '" + name + "'");
-}
 
 int run(const std::vector<std::string>& args) {
   std::string scan_path;
@@ -24,11 +19,10 @@ int run(const std::vector<std::string>& args) {
   int clusters = 0;
   po::options_description described("Labeling");
   described.add_options()
-      ("scan", po::value<std::string>(&scan_path)->required(), "scan CSV (header angle,range; radians, metres; - for standard input)")
-      ("cell", number_value(options.cell_size), "raster cell size in metres")
-      ("dilate", po::value<int>(&options.dilation)->default_value(options.dilation), "dilation iterations of the 3x3 element")
-      ("element", po::value<std::string>(&element)->default_value(element), "structuring element: cross or square")
-      ("connectivity", po::value<int>(&options.connectivity)->default_value(options.connectivity), "4 or 8")
+      ("scan", po::value<std::string>(&scan_path)->required(), "scan CSV (header angle,range; radians, metres; - for standard input)");
+  add_option_rows(described, labeling_option_rows(), options);
+  described.add_options()
+      ("element", po::value<std::string>(&element)->default_value(element), "labeling: structuring element, cross or square")
       ("fcm", po::value<int>(&clusters)->default_value(0), "fuzzy c-means centres per segment (0: none)");
   po::positional_options_description positional;
   positional.add("scan", 1);
@@ -39,7 +33,8 @@ int run(const std::vector<std::string>& args) {
       "up to K fuzzy c-means centres in the sensor frame, ordered along the segment.",
       described, positional, args);
   if (!vm) return 0;
-  options.element = parse_element(element);
+  read_option_rows(*vm, labeling_option_rows(), options);
+  check_usage([&] { options.element = parse_structuring_element(element, "--element"); });
   if (clusters < 0) throw UsageError("--fcm must be 0 or a positive number of centres");
 
   const Scan scan = read_scan_csv(scan_path);

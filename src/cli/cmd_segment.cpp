@@ -134,7 +134,7 @@ void check_output_files(const Request& request, const po::variables_map& vm) {
 // The command line parsed and checked; nullopt after --help.
 std::optional<Request> parse_request(const std::vector<std::string>& args) {
   Request request;
-  po::options_description described("Segmentation");
+  po::options_description described("Map and outputs");
   described.add_options()("map", po::value<std::string>(&request.map_path)->required(),
                           "map: ROS map_server YAML, or an image (PNG, PGM, ...)");
   add_segment_options(described, request.settings);

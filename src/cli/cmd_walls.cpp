@@ -15,6 +15,7 @@
 #include "topocut/io/map_saver.h"
 #include "topocut/io/overlay.h"
 #include "topocut/io/rooms_json.h"
+#include "topocut/labeling/sparse_labeling.h"
 #include "topocut/segmentation/grid_segmentation.h"
 #include "topocut/segmentation/segmenter.h"
 #include "topocut/segmentation/wall_map_segment_options.h"
@@ -99,13 +100,11 @@ po::options_description walls_options(WallsRequest& r, const SegmentSettings& se
   po::options_description described("Walls");
   described.add_options()
       ("log", po::value<std::string>(&r.log_path)->required(), "CARMEN log with FLASER messages (plain or .gz)")
-      ("resolution", number_value(r.options.map.resolution), "grid resolution in metres per cell")
       ("method", po::value<std::string>(&r.method)->default_value(r.method), "line extractor: sef, lt, iepf, smf or ale")
-      ("cell", number_value(r.options.extraction.labeling.cell_size), "labeling cell size in metres")
-      ("dilate", po::value<int>(&r.options.extraction.labeling.dilation)->default_value(r.options.extraction.labeling.dilation), "labeling dilation iterations")
-      ("element", po::value<std::string>(&r.element)->default_value(r.element), "labeling structuring element: cross or square")
-      ("thickness", number_value(r.options.map.wall_thickness), "wall thickness in metres")
-      ("max-range", po::value<double>(&r.read.max_range)->default_value(0.0), "readings at or beyond this range (m) are no return; 0 detects the laser's saturation value")
+      ("element", po::value<std::string>(&r.element)->default_value(r.element), "labeling: structuring element, cross or square");
+  add_option_rows(described, walls_option_rows(), r.options);
+  add_option_rows(described, carmen_read_option_rows(), r.read);
+  described.add_options()
       ("out-map", po::value<std::string>(&r.out_map), "write the grid as a ROS map_server map (YAML + PGM next to it)")
       ("out-walls", po::value<std::string>(&r.out_walls), "write the merged walls as JSON")
       ("segment", "segment the grid into rooms (pipeline A)")
@@ -150,6 +149,8 @@ WallsRequest parse_request(const std::vector<std::string>& args) {
     r.help = true;
     return r;
   }
+  read_option_rows(*vm, walls_option_rows(), r.options);
+  read_option_rows(*vm, carmen_read_option_rows(), r.read);
   r.segment = read_segment_options(*vm, segment_defaults);
   r.replay.incremental = read_incremental_options(*vm, r.replay.incremental);
   try {
@@ -157,9 +158,7 @@ WallsRequest parse_request(const std::vector<std::string>& args) {
   } catch (const Error& e) {
     throw UsageError(std::string("--method: ") + e.what());
   }
-  if (r.element == "cross") r.options.extraction.labeling.element = StructuringElement::kCross;
-  else if (r.element == "square") r.options.extraction.labeling.element = StructuringElement::kSquare;
-  else throw UsageError("--element must be 'cross' or 'square', got '" + r.element + "'");
+  check_usage([&] { r.options.extraction.labeling.element = parse_structuring_element(r.element, "--element"); });
   r.incremental = vm->count("incremental") > 0;
   if (!r.incremental && (r.replay.compare_batch || r.replay.settle || !r.replay.frames.empty()))
     throw UsageError("--compare-batch, --settle and --frames need --incremental");

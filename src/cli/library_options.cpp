@@ -1,5 +1,7 @@
 #include "cli/library_options.h"
 
+#include <cstddef>
+
 #include "topocut/core/error.h"
 #include "topocut/core/input_file.h"
 #include "topocut/segmentation/merge_model.h"
@@ -7,9 +9,17 @@
 namespace topocut::cli {
 
 void add_segment_options(po::options_description& options, const SegmentSettings& defaults) {
-  add_option_rows(options, segment_option_rows(), defaults);
-  options.add_options()(kMergeModelOption.name, po::value<std::string>()->value_name(kMergeModelOption.value_name),
-                        kMergeModelOption.help);
+  const std::vector<OptionRow<SegmentSettings>>& rows = segment_option_rows();
+  auto first = rows.begin();
+  for (const OptionGroup& group : segment_option_groups()) {
+    po::options_description part(group.heading);
+    add_option_rows(part, std::vector<OptionRow<SegmentSettings>>(first, first + static_cast<std::ptrdiff_t>(group.rows)), defaults);
+    if (group.heading == kMergingHeading)
+      part.add_options()(kMergeModelOption.name, po::value<std::string>()->value_name(kMergeModelOption.value_name),
+                         kMergeModelOption.help);
+    options.add(part);
+    first += static_cast<std::ptrdiff_t>(group.rows);
+  }
 }
 
 SegmentSettings read_segment_settings(const po::variables_map& vm, SegmentSettings defaults) {

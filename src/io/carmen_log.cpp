@@ -297,4 +297,12 @@ CarmenLog read_carmen_log(const std::string& path, const CarmenReadOptions& opti
   return parser.finish();
 }
 
+const std::vector<OptionRow<CarmenReadOptions>>& carmen_read_option_rows() {
+  static const std::vector<OptionRow<CarmenReadOptions>> rows = {
+      field_row("max-range", "M", OptionRange::kNonNegative, &CarmenReadOptions::max_range,
+                "readings at or beyond this range (m) are no return; 0 detects the laser's saturation value"),
+  };
+  return rows;
+}
+
 }  // namespace topocut

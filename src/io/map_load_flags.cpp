@@ -1,40 +1,27 @@
 #include "topocut/io/map_load_flags.h"
 
 #include "topocut/core/error.h"
+#include "topocut/core/grid_array_options.h"
 #include "topocut/io/image_input.h"
 
 namespace topocut {
 
 const std::vector<OptionRow<MapLoadOptions>>& map_load_option_rows() {
   using L = MapLoadOptions;
-  static const std::vector<OptionRow<L>> rows = {
-      {"resolution", "M", "metres per cell of a plain image (a YAML's own resolution always wins)", OptionRange::kResolution,
-       [](const L& l) { return l.resolution; }, [](L& l, double v) { l.resolution = v; }},
-      {"fixed-thresholds", "",
-       "plain images: use --free-threshold and --occupied-threshold instead of reading the palette from the image",
-       OptionRange::kSwitch, [](const L& l) { return l.detect_palette ? 0.0 : 1.0; },
-       [](L& l, double on) { l.detect_palette = on == 0.0; }},
-      {"free-threshold", "GREY",
-       "plain images with --fixed-thresholds (or no readable palette): grey values above this are free",
-       OptionRange::kGreyLevel, [](const L& l) { return l.free_min; },
-       [](L& l, double v) {
-         l.free_min = static_cast<int>(v);
-         l.detect_palette = false;
-       }},
-      {"occupied-threshold", "GREY",
-       "plain images with --fixed-thresholds: grey values below this are occupied (between the two: unknown)",
-       OptionRange::kGreyLevel, [](const L& l) { return l.occupied_max; },
-       [](L& l, double v) {
-         l.occupied_max = static_cast<int>(v);
-         l.detect_palette = false;
-       }},
-      {kMaxMegapixelsOption, "MP", max_megapixels_help(), OptionRange::kAny,
-       [](const L& l) { return l.limits.max_megapixels; },
-       [](L& l, double v) {
-         l.limits.max_megapixels = v;
-         validate(l.limits);
-       }},
-  };
+  static const std::vector<OptionRow<L>> rows = [] {
+    std::vector<OptionRow<L>> all = {
+        {"resolution", "M", "metres per cell of a plain image (a YAML's own resolution always wins)", OptionRange::kResolution,
+         [](const L& l) { return l.resolution; }, [](L& l, double v) { l.resolution = v; }},
+    };
+    for (OptionRow<L>& row : grey_threshold_rows<L>()) all.push_back(std::move(row));  // GridArray's rule and names
+    all.push_back({kMaxMegapixelsOption, "MP", max_megapixels_help(), OptionRange::kAny,
+                   [](const L& l) { return l.limits.max_megapixels; },
+                   [](L& l, double v) {
+                     l.limits.max_megapixels = v;
+                     validate(l.limits);
+                   }});
+    return all;
+  }();
   return rows;
 }
 

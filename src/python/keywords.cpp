@@ -6,6 +6,7 @@
 
 #include "python/bindings.h"
 #include "python/options.h"
+#include "topocut/core/grid_array_options.h"
 #include "topocut/core/option_names.h"
 #include "topocut/exploration/simulated_map.h"
 #include "topocut/segmentation/incremental_segmenter.h"
@@ -45,18 +46,12 @@ void add_segment_rows(py::list& out, const SegmentSettings& settings) {
                      std::string("the text of ") + kMergeModelOption.help + "; None: the shipped one"));
 }
 
-// How the grid's cells are read (take_grid_reading()).
+// How the grid's cells are read (take_grid_reading()): the row order, then the thresholds' rows.
 void add_grid_reading(py::list& out) {
   const GridReading r;
   out.append(keyword("row_order", "str", py::str(r.row_order),
                      "'bottom-up' or 'top-down'; '': bottom-up for int8 grids, top-down for uint8 images"));
-  out.append(keyword("free_thresh", "float", py::float_(r.free_thresh), "int8 cells: free below this occupancy fraction"));
-  out.append(keyword("occupied_thresh", "float", py::float_(r.occupied_thresh), "int8 cells: occupied above this occupancy fraction"));
-  out.append(keyword("fixed_thresholds", "bool", py::bool_(false),
-                     "uint8 images: free_threshold / occupied_threshold instead of the palette read from the image"));
-  out.append(keyword("free_threshold", "int", py::int_(r.free_threshold), "uint8 images: free above this grey (implies fixed_thresholds)"));
-  out.append(keyword("occupied_threshold", "int", py::int_(r.occupied_threshold),
-                     "uint8 images: occupied below this grey (implies fixed_thresholds)"));
+  add_rows(out, grid_array_option_rows(), r.thresholds);
 }
 
 // simulate_map()'s keywords: simulate-map's table with '_' for '-'; the whole-number rows (cells,

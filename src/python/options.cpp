@@ -6,6 +6,7 @@
 #include <pybind11/stl.h>
 
 #include "topocut/core/error.h"
+#include "topocut/core/grid_array_options.h"
 #include "topocut/core/input_file.h"
 #include "topocut/core/option_names.h"
 #include "topocut/core/option_table.h"
@@ -41,9 +42,8 @@ std::string comma_separated(const std::vector<std::string>& names) {
 // Every keyword segment() takes: the segment command's table and the map's own.
 std::vector<std::string> segment_keywords() {
   std::vector<std::string> names = keywords(segment_option_rows());
-  for (const char* name : {"merge_model", "row_order", "free_thresh", "occupied_thresh", "fixed_thresholds", "free_threshold",
-                           "occupied_threshold"})
-    names.push_back(name);
+  for (const char* name : {"merge_model", "row_order"}) names.push_back(name);
+  for (const std::string& name : keywords(grid_array_option_rows())) names.push_back(name);
   return names;
 }
 
@@ -84,11 +84,18 @@ T pop(py::dict& kwargs, const char* name, T fallback) {
 }
 
 // Sets every keyword of kwargs in target through its row of rows: the command's check and message,
-// with the keyword's name. An unknown keyword is a TypeError naming the closest of `known` and listing them.
+// with the keyword's name, in the table's order (as the command line sets them, so that the order of
+// the keywords does not matter). An unknown keyword is a TypeError naming the closest of `known` and
+// listing them.
 template <typename Target>
 void set_keywords(const std::vector<OptionRow<Target>>& rows, const py::dict& kwargs, Target& target,
                   const std::vector<std::string>& known) {
-  std::vector<const OptionRow<Target>*> given;  // robot_radius and **{"robot-radius": ...} name one option
+  struct Given {
+    const OptionRow<Target>* row;
+    py::handle value;
+    std::string name;  // as given
+  };
+  std::vector<Given> given;  // robot_radius and **{"robot-radius": ...} name one option
   for (const auto& [key, value] : kwargs) {
     const std::string name = py::str(key);
     const OptionRow<Target>* row = find_keyword(rows, name);
@@ -97,12 +104,18 @@ void set_keywords(const std::vector<OptionRow<Target>>& rows, const py::dict& kw
       throw py::type_error("unexpected keyword argument '" + name + "'" + (meant.empty() ? "" : " (did you mean " + meant + "?)") +
                            "; options are: " + comma_separated(known));
     }
-    if (std::find(given.begin(), given.end(), row) != given.end()) throw Error(given_twice_error(name));
-    given.push_back(row);
-    if (row->is_switch()) {
-      row->set(target, switch_value(value, name) ? 1.0 : 0.0);
-    } else {
-      set_option(*row, target, number(value, name), name);
+    for (const Given& earlier : given)
+      if (earlier.row == row) throw Error(given_twice_error(name));
+    given.push_back({row, value, name});
+  }
+  for (const OptionRow<Target>& row : rows) {
+    for (const Given& g : given) {
+      if (g.row != &row) continue;
+      if (row.is_switch()) {
+        row.set(target, switch_value(g.value, g.name) ? 1.0 : 0.0);
+      } else {
+        set_option(row, target, number(g.value, g.name), g.name);
+      }
     }
   }
 }
@@ -113,30 +126,18 @@ SegmentOptions settings_from(const py::dict& kwargs, SegmentSettings s) {
   return to_segment_options(s);
 }
 
-// A value of kwargs checked by the map-loading row named flag (its range and message), or fallback.
-double checked_map_option(py::dict& kwargs, const char* flag, double fallback) {
-  const std::string name = underscored_option_name(flag);
-  if (!kwargs.contains(name.c_str())) return fallback;
-  const double value = number(kwargs[name.c_str()], name);
-  PyDict_DelItemString(kwargs.ptr(), name.c_str());
-  check_option_value(find_option(map_load_option_rows(), std::string(flag))->range, value, name);
-  return value;
-}
-
 }  // namespace
 
 GridReading take_grid_reading(py::dict& kwargs) {
   GridReading r;
   r.row_order = pop<std::string>(kwargs, "row_order", r.row_order);
-  r.free_thresh = pop<double>(kwargs, "free_thresh", r.free_thresh);
-  r.occupied_thresh = pop<double>(kwargs, "occupied_thresh", r.occupied_thresh);
-  const bool free_given = kwargs.contains("free_threshold"), occupied_given = kwargs.contains("occupied_threshold");
-  r.free_threshold = static_cast<int>(checked_map_option(kwargs, "free-threshold", r.free_threshold));
-  r.occupied_threshold = static_cast<int>(checked_map_option(kwargs, "occupied-threshold", r.occupied_threshold));
-  // As the command: giving a threshold means fixed thresholds.
-  r.fixed_thresholds = pop<bool>(kwargs, "fixed_thresholds", false) || free_given || occupied_given;
   if (!r.row_order.empty() && r.row_order != "bottom-up" && r.row_order != "top-down")
     throw Error("row_order must be 'bottom-up' or 'top-down', got '" + r.row_order + "'");
+  py::dict own;  // the thresholds' keywords, taken out of kwargs; the rest are segment()'s
+  for (const auto& [key, value] : kwargs)
+    if (find_keyword(grid_array_option_rows(), py::str(key)) != nullptr) own[key] = value;
+  for (const auto& [key, value] : own) PyDict_DelItem(kwargs.ptr(), key.ptr());
+  set_keywords(grid_array_option_rows(), own, r.thresholds, keywords(grid_array_option_rows()));
   return r;
 }
 
@@ -152,11 +153,11 @@ void apply(const GridReading& reading, double resolution, const py::handle& orig
   array.resolution = resolution;
   const bool bottom_up = reading.row_order.empty() ? array.encoding == CellEncoding::kOccupancy : reading.row_order == "bottom-up";
   array.row_order = bottom_up ? RowOrder::kBottomUp : RowOrder::kTopDown;
-  array.free_thresh = reading.free_thresh;
-  array.occupied_thresh = reading.occupied_thresh;
-  array.detect_palette = !reading.fixed_thresholds;
-  array.free_min = reading.free_threshold;
-  array.occupied_max = reading.occupied_threshold;
+  array.free_thresh = reading.thresholds.free_thresh;
+  array.occupied_thresh = reading.thresholds.occupied_thresh;
+  array.detect_palette = reading.thresholds.detect_palette;
+  array.free_min = reading.thresholds.free_min;
+  array.occupied_max = reading.thresholds.occupied_max;
 }
 
 namespace {

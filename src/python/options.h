@@ -16,15 +16,16 @@ namespace topocut::python {
 
 namespace py = pybind11;
 
-// How the cells of an array are read: row order and thresholds (kwargs row_order, free_thresh,
-// occupied_thresh, fixed_thresholds, free_threshold, occupied_threshold).
+// How the cells of an array are read: the row order (kwargs row_order) and the thresholds, by the rows
+// of core/grid_array_options.h (free_thresh, occupied_thresh, fixed_thresholds, free_threshold,
+// occupied_threshold). A uint8 image's palette is read from its values unless fixed_thresholds.
 struct GridReading {
   std::string row_order;  // "", "bottom-up" or "top-down"; "" = bottom-up for int8, top-down for uint8
-  double free_thresh = GridArray{}.free_thresh;
-  double occupied_thresh = GridArray{}.occupied_thresh;
-  bool fixed_thresholds = false;
-  int free_threshold = GridArray{}.free_min;
-  int occupied_threshold = GridArray{}.occupied_max;
+  GridArray thresholds = [] {
+    GridArray a;
+    a.detect_palette = true;
+    return a;
+  }();
 };
 
 // Takes the grid-reading keywords out of kwargs (the rest stay).

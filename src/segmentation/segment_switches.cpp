@@ -56,9 +56,8 @@ Row given(Row row) {
   return row;
 }
 
-// rows with a --no-NAME switch for every rule of the pipeline after the first three (concavity,
-// trivial, parity), in the pipeline's order.
-std::vector<Row> with_rule_switches(std::vector<Row> rows) {
+// A --no-NAME switch for every rule of the pipeline that has one, in the pipeline's order.
+std::vector<Row> rule_switches() {
   std::vector<Row> switches;
   for (const SegmentationRule& rule : segmentation_rules()) {
     if (!rule.turn_off) continue;
@@ -74,52 +73,71 @@ std::vector<Row> with_rule_switches(std::vector<Row> rows) {
                           if (on != 0.0) off.push_back(name);
                         }});
   }
-  rows.insert(rows.begin() + 3, switches.begin(), switches.end());
-  return rows;
+  return switches;
 }
 
-// The rows of the part of SegmentOptions that part() returns, after rows.
+// The rows of the part of SegmentOptions that part() returns.
 template <typename Inner, typename Part>
-void append(std::vector<Row>& rows, const std::vector<OptionRow<Inner>>& part_rows, Part part) {
-  const std::vector<Row> lifted = rows_within<SegmentSettings>(part_rows, part);
-  rows.insert(rows.end(), lifted.begin(), lifted.end());
+std::vector<Row> lifted(const std::vector<OptionRow<Inner>>& part_rows, Part part) {
+  return rows_within<SegmentSettings>(part_rows, part);
 }
 
-// Every options struct under SegmentOptions by its own table, in the pipeline's order.
-std::vector<Row> make_rows() {
-  std::vector<Row> rows = {
-      number("concavity", "M", OptionRange::kLength, [](auto& s) -> auto& { return s.options.concavity; },
-             "maximum concavity tau in metres: larger values give fewer, less convex rooms"),
-      on_off("trivial", [](auto& s) -> auto& { return s.switches.trivial; },
-             "no decomposition: one room per free-space component (baseline)"),
-      on_off("parity", [](auto& s) -> auto& { return s.switches.parity; },
-             "the reference behaviour: DuDe's pieces are the rooms (no cleaning, door cuts, merging or simplification); "
-             "alone or with numbers and --trivial, not with a switch it already sets"),
-  };
-  append(rows, binarize_option_rows(), [](auto& s) -> auto& { return s.options.binarize; });
-  append(rows, cleaning_option_rows(), [](auto& s) -> auto& { return s.options.cleaning; });
-  append(rows, contour_option_rows(), [](auto& s) -> auto& { return s.options.contours; });
-  for (Row& row : rows)
+// The table and its headings, built together so that they cannot disagree.
+struct Table {
+  std::vector<Row> rows;
+  std::vector<OptionGroup> groups;
+
+  void add(const char* heading, std::vector<Row> group) {
+    groups.push_back({heading, group.size()});
+    rows.insert(rows.end(), group.begin(), group.end());
+  }
+};
+
+// Every options struct under SegmentOptions by its own table, in the pipeline's order, one heading
+// per struct.
+Table make_table() {
+  Table t;
+  t.add("Concavity and the baselines",
+        {number("concavity", "M", OptionRange::kLength, [](auto& s) -> auto& { return s.options.concavity; },
+                "maximum concavity tau in metres: larger values give fewer, less convex rooms"),
+         on_off("trivial", [](auto& s) -> auto& { return s.switches.trivial; },
+                "no decomposition: one room per free-space component (baseline)"),
+         on_off("parity", [](auto& s) -> auto& { return s.switches.parity; },
+                "the reference behaviour: DuDe's pieces are the rooms (no cleaning, door cuts, merging or simplification); "
+                "alone or with numbers and --trivial, not with a switch it already sets")});
+  t.add("Steps of the pipeline (each switch turns one off)", rule_switches());
+  t.add("Obstacles", lifted(binarize_option_rows(), [](auto& s) -> auto& { return s.options.binarize; }));
+  t.add("Cleaning the free space", lifted(cleaning_option_rows(), [](auto& s) -> auto& { return s.options.cleaning; }));
+  std::vector<Row> outlines = lifted(contour_option_rows(), [](auto& s) -> auto& { return s.options.contours; });
+  for (Row& row : outlines)
     if (row.name == "min-room-area") row = given(row);
-  rows.push_back(number("simplify", "CELLS", OptionRange::kNonNegative, [](auto& s) -> auto& { return s.options.simplify; },
-                        "tolerance (cells) of the outlines' simplification (0: the exact pixel edges, as --no-simplify)"));
-  append(rows, door_option_rows(), [](auto& s) -> auto& { return s.options.doors; });
-  rows.push_back(number("oversegment", "F", OptionRange::kFraction, [](auto& s) -> auto& { return s.options.oversegment; },
-                        "with merging, DuDe cuts at F x tau, 0 < F <= 1 (merging then removes the cuts that are not door-like)"));
-  append(rows, decomposition_option_rows(), [](auto& s) -> auto& { return s.options.decomposition; });
-  append(rows, room_merge_option_rows(), [](auto& s) -> auto& { return s.options.merge; });
-  append(rows, open_room_option_rows(), [](auto& s) -> auto& { return s.options.open_rooms; });
-  append(rows, room_label_option_rows(), [](auto& s) -> auto& { return s.options.labels; });
-  append(rows, room_kind_option_rows(), [](auto& s) -> auto& { return s.options.kinds; });
-  return with_rule_switches(std::move(rows));
+  outlines.push_back(number("simplify", "CELLS", OptionRange::kNonNegative, [](auto& s) -> auto& { return s.options.simplify; },
+                            "tolerance (cells) of the outlines' simplification (0: the exact pixel edges, as --no-simplify)"));
+  t.add("Free space and its outlines", std::move(outlines));
+  t.add("Door cuts", lifted(door_option_rows(), [](auto& s) -> auto& { return s.options.doors; }));
+  std::vector<Row> decomposition = {
+      number("oversegment", "F", OptionRange::kFraction, [](auto& s) -> auto& { return s.options.oversegment; },
+             "with merging, DuDe cuts at F x tau, 0 < F <= 1 (merging then removes the cuts that are not door-like)")};
+  for (Row& row : lifted(decomposition_option_rows(), [](auto& s) -> auto& { return s.options.decomposition; }))
+    decomposition.push_back(std::move(row));
+  t.add("Decomposition", std::move(decomposition));
+  t.add(kMergingHeading, lifted(room_merge_option_rows(), [](auto& s) -> auto& { return s.options.merge; }));
+  t.add("Open rooms", lifted(open_room_option_rows(), [](auto& s) -> auto& { return s.options.open_rooms; }));
+  t.add("Room labels", lifted(room_label_option_rows(), [](auto& s) -> auto& { return s.options.labels; }));
+  t.add("Room kinds", lifted(room_kind_option_rows(), [](auto& s) -> auto& { return s.options.kinds; }));
+  return t;
+}
+
+const Table& table() {
+  static const Table t = make_table();
+  return t;
 }
 
 }  // namespace
 
-const std::vector<OptionRow<SegmentSettings>>& segment_option_rows() {
-  static const std::vector<Row> rows = make_rows();
-  return rows;
-}
+const std::vector<OptionRow<SegmentSettings>>& segment_option_rows() { return table().rows; }
+
+const std::vector<OptionGroup>& segment_option_groups() { return table().groups; }
 
 SegmentOptions to_segment_options(const SegmentSettings& settings) {
   SegmentOptions options = settings.options;

@@ -28,7 +28,6 @@ void validate(const SegmentOptions& options) {
   check_area(options.contours.min_component_area, "the smallest room area");
   check_area(options.contours.min_hole_area, "the smallest hole area");
   check_area(options.merge.min_room_area, "the fold area");
-  check_length(options.doors.max_width, "the door width");
   validate(options.kinds);
   if (options.decomposition.max_rounds < 1) throw Error("the decomposition needs at least one round");
   validate(options.merge);

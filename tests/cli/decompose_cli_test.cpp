@@ -90,9 +90,23 @@ TEST_F(DecomposeCli, LargeTauAbsorbsTheHoleAndWritesAFile) {
   EXPECT_EQ(doc["absorbed_holes"].size(), 1u);
 }
 
+// --concavity is the concavity bound in metres in every other command (segment_option_rows()); here
+// the measure has its own name, so that one name never means two things.
+TEST_F(DecomposeCli, TheConcavityMeasureHasItsOwnName) {
+  const fs::path in = write("l.json", R"({"outer": [[0,0],[10,0],[10,4],[4,4],[4,10],[0,10]]})");
+  const CliResult help = run("--help");
+  EXPECT_NE(help.out.find("\n  --concavity-measure arg (=straight)"), std::string::npos) << help.out;
+  EXPECT_EQ(help.out.find("\n  --concavity "), std::string::npos) << help.out;
+  const CliResult old = run(in.string() + " --tau 2 --concavity hierarchical");
+  EXPECT_EQ(old.code, 2);
+  const CliResult bad = run(in.string() + " --tau 2 --concavity-measure curved");
+  EXPECT_EQ(bad.code, 2);
+  EXPECT_NE(bad.err.find("--concavity-measure must be one of 'straight', 'hierarchical', got 'curved'"), std::string::npos) << bad.err;
+}
+
 TEST_F(DecomposeCli, ReferenceOptionsAreAccepted) {
   const fs::path in = write("l.json", R"({"outer": [[0,0],[10,0],[10,4],[4,4],[4,10],[0,10]]})");
-  const CliResult o = run(in.string() + " --tau 2 --selection reference --concavity hierarchical --candidates reference"
+  const CliResult o = run(in.string() + " --tau 2 --selection reference --concavity-measure hierarchical --candidates reference"
                                       " --pocket-polygons reference --hull-chain-distance line --skinny all");
   ASSERT_EQ(o.code, 0) << o.err;
   const auto doc = nlohmann::json::parse(o.out);

@@ -192,8 +192,9 @@ TEST(HostileInputs, DecomposeFarFromUnitScaleIsRefusedNotEmptied) {
 // exist, so any other order would report the missing file instead).
 TEST(HostileInputs, WallsRefusesBadOptionsBeforeReadingTheLog) {
   TempDir dir;
+  // The row's range, checked where options enter, names the flag.
   expect_clean_error(run_cli(dir, "walls", {dir.file("missing.log"), "--thickness", "-1"}), "walls",
-                     "wall thickness", 2);
+                     "--thickness must lie in [0, 100000] metres", 2);
 }
 
 }  // namespace

@@ -1,5 +1,6 @@
 // One spelling per option: every row of the library's segmentation and incremental tables is a flag of
-// the commands that segment, with the table's value name and the default of the options struct the
+// the commands that segment (and the labeling, walls, log-reading and line tables of label, walls and
+// lines), with the table's value name and the default of the options struct the
 // command starts from, and a --config key under the same name. Python's keywords and the ROS node's
 // parameters are checked against the same tables in tests/python/test_option_spelling.py and
 // ros/test/adapter_test.cpp.
@@ -14,9 +15,13 @@
 #include "topocut/core/option_table.h"
 #include "topocut/decomposition/decompose.h"
 #include "topocut/exploration/explorer.h"
+#include "topocut/io/carmen_log.h"
+#include "topocut/labeling/sparse_labeling.h"
+#include "topocut/lines/extract.h"
 #include "topocut/segmentation/incremental_segmenter.h"
 #include "topocut/segmentation/segment_switches.h"
 #include "topocut/segmentation/wall_map_segment_options.h"
+#include "topocut/walls/walls_pipeline.h"
 
 namespace {
 
@@ -74,6 +79,48 @@ TEST(OptionSpelling, EveryRowIsAFlagWithItsStructsDefault) {
   expect_rows_in_help("walls", walls, topocut::segment_option_rows(), SegmentSettings{topocut::wall_map_segment_options(), {}});
   expect_rows_in_help("walls", walls, topocut::incremental_option_rows(),
                       topocut::wall_map_incremental_options(topocut::wall_map_segment_options()));
+  expect_rows_in_help("walls", walls, topocut::walls_option_rows(), topocut::WallsOptions{});
+  expect_rows_in_help("walls", walls, topocut::carmen_read_option_rows(), topocut::CarmenReadOptions{});
+  const std::string label = run_cli(dir, "label", {"--help"}).out;
+  expect_rows_in_help("label", label, topocut::labeling_option_rows(), topocut::LabelingOptions{});
+  // Each extractor has its own defaults: the lines command shows the value name only.
+  const std::string lines = run_cli(dir, "lines", {"--help"}).out;
+  for (const topocut::LineOptionRow& option : topocut::line_option_rows()) {
+    const std::string line = "\n  --" + option.row.name + " " + option.row.value_name + " ";
+    const std::size_t at = lines.find(line);
+    EXPECT_NE(at, std::string::npos) << "lines: " << line;
+    if (at != std::string::npos) {
+      EXPECT_EQ(lines.find(line, at + 1), std::string::npos) << "lines twice: " << line;
+    }
+  }
+}
+
+// segment --help lists the rows under their struct's heading: each heading once, in the table's order,
+// and every row of a group after its heading and before the next one.
+TEST(OptionSpelling, SegmentHelpGroupsTheRowsUnderTheirHeadings) {
+  const TempDir dir;
+  const std::string help = run_cli(dir, "segment", {"--help"}).out;
+  const auto& rows = topocut::segment_option_rows();
+  const auto& groups = topocut::segment_option_groups();
+  std::size_t counted = 0;
+  for (const topocut::OptionGroup& group : groups) counted += group.rows;
+  EXPECT_EQ(counted, rows.size());
+  std::size_t row = 0, previous = 0;
+  for (std::size_t g = 0; g < groups.size(); ++g) {
+    const std::string heading = "\n" + groups[g].heading + ":\n";
+    const std::size_t at = help.find(heading);
+    ASSERT_NE(at, std::string::npos) << heading;
+    EXPECT_EQ(help.find(heading, at + 1), std::string::npos) << heading;
+    EXPECT_GT(at, previous) << heading;
+    const std::size_t next = g + 1 < groups.size() ? help.find("\n" + groups[g + 1].heading + ":\n") : help.size();
+    for (std::size_t k = 0; k < groups[g].rows; ++k, ++row) {
+      const std::size_t line = help.find("\n  --" + rows[row].name + " ");
+      EXPECT_TRUE(line > at && line < next) << rows[row].name << " not under " << groups[g].heading;
+    }
+    previous = at;
+  }
+  const std::size_t merging = help.find(std::string("\n") + topocut::kMergingHeading + ":\n");
+  EXPECT_GT(help.find("\n  --" + std::string(topocut::kMergeModelOption.name) + " FILE"), merging);
 }
 
 // A --config file naming every row with its default value: each name is a key, each default reads
@@ -93,6 +140,24 @@ TEST(OptionSpelling, EveryRowIsAConfigKeyTakingItsDefault) {
   const auto r = run_cli(dir, "segment", {map, "--config", config, "--out-json", configured}, 60);
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_EQ(file_text(plain), file_text(configured));
+}
+
+// The same for the label command's table: its defaults as --config keys give the same segments.
+TEST(OptionSpelling, EveryLabelingRowIsAConfigKeyTakingItsDefault) {
+  const TempDir dir;
+  std::string yaml;
+  const topocut::LabelingOptions defaults;
+  for (const OptionRow<topocut::LabelingOptions>& row : topocut::labeling_option_rows())
+    yaml += row.name + ": " + shortest_number(row.get(defaults)) + "\n";
+  const std::string config = dir.write("label.yaml", yaml);
+  std::string csv = "angle,range\n";
+  for (int i = 0; i < 30; ++i) csv += std::to_string(-0.3 + 0.02 * i) + "," + (i % 10 == 9 ? "nan" : "2") + "\n";
+  const std::string scan = dir.write("scan.csv", csv);
+  const auto plain = run_cli(dir, "label", {scan});
+  const auto configured = run_cli(dir, "label", {scan, "--config", config});
+  ASSERT_EQ(plain.code, 0) << plain.err;
+  ASSERT_EQ(configured.code, 0) << configured.err;
+  EXPECT_EQ(plain.out, configured.out);
 }
 
 }  // namespace

@@ -98,9 +98,26 @@ TEST_F(WallsCli, LabelRefusesBadInput) {
   const CliResult element = run("label '" + path("scan.csv") + "' --element star");
   EXPECT_EQ(element.code, 2);
   EXPECT_NE(element.err.find("cross"), std::string::npos);
+  // The labeling rows' ranges refuse a bad value where options enter: a usage error naming the flag.
   const CliResult cell = run("label '" + path("scan.csv") + "' --cell -1");
-  EXPECT_EQ(cell.code, 1);
-  EXPECT_NE(cell.err.find("cell size"), std::string::npos) << cell.err;
+  EXPECT_EQ(cell.code, 2);
+  EXPECT_NE(cell.err.find("--cell must lie in"), std::string::npos) << cell.err;
+  const CliResult connectivity = run("label '" + path("scan.csv") + "' --connectivity 6");
+  EXPECT_EQ(connectivity.code, 2);
+  EXPECT_NE(connectivity.err.find("--connectivity must be 4 or 8, got 6"), std::string::npos) << connectivity.err;
+  const CliResult dilate = run("label '" + path("scan.csv") + "' --dilate 1.5");
+  EXPECT_EQ(dilate.code, 2);
+  EXPECT_NE(dilate.err.find("--dilate must be a whole number >= 0"), std::string::npos) << dilate.err;
+}
+
+TEST_F(WallsCli, WallsRefusesBadOptionsBeforeReadingTheLog) {
+  // The same rows as `label`: checked before the (here missing) log is opened.
+  for (const std::string bad : {"--dilate -1", "--cell 0", "--connectivity 3", "--max-range -2", "--thickness -0.1"}) {
+    const CliResult r = run("walls '" + path("missing.log") + "' " + bad);
+    EXPECT_EQ(r.code, 2) << bad << ": " << r.err;
+    EXPECT_NE(r.err.find(bad.substr(0, bad.find(' '))), std::string::npos) << bad << ": " << r.err;
+    EXPECT_EQ(r.err.find("missing.log"), std::string::npos) << bad << ": " << r.err;
+  }
 }
 
 TEST_F(WallsCli, WallsWritesMapWallsAndRooms) {

@@ -3,11 +3,14 @@
 # checks the command line and --config against the tables themselves; ros/test/adapter_test.cpp the node).
 import subprocess
 
+import numpy as np
 import pytest
 
 import topocut
 
-GRID_READING = {"row_order", "free_thresh", "occupied_thresh", "fixed_thresholds", "free_threshold", "occupied_threshold"}
+# How an array's cells are read: the row order (no flag) and map_server's thresholds (a map YAML's keys
+# on the command line, ROS parameters on the node). The grey thresholds are the commands' flags.
+GRID_READING = {"row_order", "free_thresh", "occupied_thresh"}
 
 
 def shortest(value):
@@ -51,6 +54,18 @@ def test_every_segment_keyword_is_the_commands_flag_with_its_default(cli):
     assert check_keywords_against_help("segment", help_text(cli, "segment")) > 60
 
 
+def test_grid_keywords_are_the_map_flags_and_checked_as_there(cli, bundled_map):
+    names = {name for name, *_ in topocut._topocut._keywords("grid")}
+    assert {"fixed_thresholds", "free_threshold", "occupied_threshold", "free_thresh", "occupied_thresh"} <= names
+    grid = np.full((20, 20), 255, dtype=np.uint8)
+    with pytest.raises(ValueError, match="^free_threshold must be a grey level, a whole number in 0..255$"):
+        topocut.segment(grid, 0.05, free_threshold=300)
+    with pytest.raises(ValueError, match=r"^free_thresh must be a share in \[0, 1\]$"):
+        topocut.segment(grid.astype(np.int8), 0.05, free_thresh=1.5)
+    done = subprocess.run([cli, "segment", bundled_map, "--free-threshold", "300"], capture_output=True, text=True, timeout=30)
+    assert done.returncode == 2 and "--free-threshold must be a grey level, a whole number in 0..255" in done.stderr, done.stderr
+
+
 def test_every_incremental_keyword_is_the_explore_commands_flag_with_its_default(cli):
     # explore runs the incremental segmenter with IncrementalOptions' defaults, as Python's does.
     walked = check_keywords_against_help("incremental", help_text(cli, "explore"))
@@ -68,3 +83,17 @@ def test_incremental_keywords_are_checked_as_on_the_command_line(cli, bundled_ma
         topocut.IncrementalSegmenter(neighbours_across_doors=0)
     done = subprocess.run([cli, "explore", bundled_map, "--split-after", "1.5"], capture_output=True, text=True, timeout=30)
     assert done.returncode == 2 and "--split-after must be a whole number >= 1" in done.stderr, done.stderr
+
+
+def test_grid_keywords_are_set_in_the_tables_order_whatever_order_they_are_given_in():
+    # A grey band (220) between two white rooms: the palette reads it as not free, a fixed free
+    # threshold of 200 as free, so the two readings give different rooms.
+    grid = np.zeros((60, 100), dtype=np.uint8)
+    grid[5:55, 5:95] = 255
+    grid[5:55, 48:52] = 220
+    grid[0:60, 0:5] = 128
+    palette = topocut.segment(grid, 0.05).labels
+    fixed = topocut.segment(grid, 0.05, fixed_thresholds=True, free_threshold=200).labels
+    assert not np.array_equal(palette, fixed)
+    for kwargs in ({"fixed_thresholds": False, "free_threshold": 200}, {"free_threshold": 200, "fixed_thresholds": False}):
+        assert np.array_equal(topocut.segment(grid, 0.05, **kwargs).labels, fixed), kwargs

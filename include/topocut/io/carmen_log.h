@@ -11,6 +11,8 @@
 #include <string_view>
 #include <vector>
 
+#include "topocut/core/option_table.h"
+
 namespace topocut {
 
 struct CarmenPose {
@@ -76,5 +78,8 @@ CarmenLog parse_carmen_log(std::string_view text, const std::string& source = "l
 // parsing it as parse_carmen_log. Throws Error naming the path if it is missing, not a regular file,
 // unreadable, a corrupt gzip stream, or more than options.max_text_bytes of text.
 CarmenLog read_carmen_log(const std::string& path, const CarmenReadOptions& options = {});
+
+// The reading options as people give them (the walls command): max-range.
+const std::vector<OptionRow<CarmenReadOptions>>& carmen_read_option_rows();
 
 }  // namespace topocut

@@ -6,9 +6,11 @@
 // and cells that hold no point never become points: dilation only decides which points belong
 // together.
 #include <span>
+#include <string>
 #include <vector>
 
 #include "topocut/core/geometry.h"
+#include "topocut/core/option_table.h"
 #include "topocut/scan/scan.h"
 
 namespace topocut {
@@ -47,5 +49,12 @@ Labeling label_points(std::span<const Point2> points, const LabelingOptions& opt
 // Labels the valid beams of a scan as sensor-frame points; labels are per beam (row of the scan),
 // -1 for invalid beams (Scan::is_valid). Throws Error as label_points and on an invalid scan.
 Labeling label_scan(const Scan& scan, const LabelingOptions& options = {});
+
+// The labeling options as people give them (the label and walls commands): cell, dilate,
+// connectivity; the element is a name (parse_structuring_element()). Defined in option_rows.cpp.
+const std::vector<OptionRow<LabelingOptions>>& labeling_option_rows();
+
+// "cross" or "square"; Error "<shown> must be 'cross' or 'square', got '<name>'" otherwise.
+StructuringElement parse_structuring_element(const std::string& name, const std::string& shown);
 
 }  // namespace topocut

@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "topocut/core/option_table.h"
 #include "topocut/lines/ale.h"
 #include "topocut/lines/iepf.h"
 #include "topocut/lines/line.h"
@@ -35,5 +36,16 @@ std::string to_string(LineMethod method);
 
 // Parses a method name (case-insensitive); throws Error listing the valid names otherwise.
 LineMethod parse_line_method(const std::string& name);
+
+// A tuning option of the extractors as people give it (the lines command): its row, which sets the
+// field in every method that has one (get reads the first method's), and those methods.
+struct LineOptionRow {
+  OptionRow<LineExtractionOptions> row;
+  std::vector<LineMethod> methods;
+};
+
+// d-max, t-max, sigma-max, fuzzifier, rmse-min, rmse-max, gradient-max, reference-noise,
+// smoothing-neighbours, lambda-deg, sigma-r, min-points. Defined in option_rows.cpp.
+const std::vector<LineOptionRow>& line_option_rows();
 
 }  // namespace topocut

@@ -2,6 +2,7 @@
 // The options of segmentation as people give them (every command's flags, --config keys, the
 // benchmarks' arguments, Python's keyword arguments) and what each does to SegmentOptions: defined
 // once, so that every front end means the same thing by the same name.
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -51,6 +52,20 @@ struct SegmentSettings {
 // under SegmentOptions by that struct's own table (binarize_option_rows(), door_option_rows(), ...) in
 // the pipeline's order. Setting min-room-area also sets switches.min_room_area_given.
 const std::vector<OptionRow<SegmentSettings>>& segment_option_rows();
+
+// A run of consecutive rows of segment_option_rows() under one heading (the rows of one options
+// struct), for a help text that a reader can find an option in.
+struct OptionGroup {
+  std::string heading;
+  std::size_t rows = 0;
+};
+
+// segment_option_rows() in consecutive groups, one per options struct, each with the heading a help
+// text shows above it; the groups' row counts add up to the table's.
+const std::vector<OptionGroup>& segment_option_groups();
+
+// The heading of the merging rows (RoomMergeOptions), under which front ends list the merge model.
+inline constexpr const char* kMergingHeading = "Merging pieces into rooms";
 
 // settings.options with the switches applied (apply()) and validated (validate()); throws Error.
 SegmentOptions to_segment_options(const SegmentSettings& settings);

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "topocut/core/occupancy_grid.h"
+#include "topocut/core/option_table.h"
 #include "topocut/walls/posed_scan.h"
 #include "topocut/walls/wall_extraction.h"
 #include "topocut/walls/wall_map.h"
@@ -28,6 +29,10 @@ struct WallsResult {
 // Throws Error naming the first option of any stage outside its range, so that a command can
 // refuse bad options before it reads a log.
 void validate(const WallsOptions& options);
+
+// The options as people give them (the walls command): resolution, thickness and the labeling's rows
+// (labeling_option_rows()); the line extractor is a name (parse_line_method()).
+const std::vector<OptionRow<WallsOptions>>& walls_option_rows();
 
 // Runs the pipeline on the scans. Throws Error if there are no scans or on invalid options.
 WallsResult walls_from_scans(std::span<const PosedScan> scans, const WallsOptions& options = {});

@@ -8,20 +8,16 @@ namespace topocut {
 using namespace cut_search;
 
 void validate(const DoorOptions& options) {
-  auto positive = [](double v) { return std::isfinite(v) && v > 0.0; };
-  if (!positive(options.max_width) || !positive(options.door_like.ratio) || !positive(options.door_like.width_depth))
-    throw Error("the door width, ratio and depth must be positive numbers");
-  if (!std::isfinite(options.min_turn) || options.min_turn < 0.0) throw Error("the door corner turn must be a non-negative angle");
-  if (!positive(options.max_gap) || !positive(options.max_wall_thickness) || !std::isfinite(options.min_wall_length) ||
-      options.min_wall_length < 0.0 || !std::isfinite(options.gap_alignment) || options.gap_alignment < 0.0 ||
-      !std::isfinite(options.min_side_width) || options.min_side_width < 0.0 || !positive(options.wall_end_probe))
-    throw Error("the wall opening gap, wall thickness and wall end probe must be positive, the other opening options non-negative");
-  if (!positive(options.max_wall_line) || !positive(options.wall_line_wall) || !std::isfinite(options.wall_line_straightness) ||
-      options.wall_line_straightness < 0.0 || !std::isfinite(options.wall_line_spacing) || options.wall_line_spacing < 0.0 ||
-      !std::isfinite(options.wall_line_side) || options.wall_line_side < 0.0)
-    throw Error("the wall line length and wall length must be positive, the straightness, spacing and side width non-negative");
-  if (!positive(options.max_island_thickness) || !std::isfinite(options.min_island_length) || options.min_island_length < 0.0)
-    throw Error("the wall island thickness must be positive, its length non-negative");
+  // Each field's range is its row's (door_option_rows()): one definition, which the front ends check
+  // as a value enters and which holds here for callers of the library. Every door search calls this:
+  // the names are made once.
+  static const std::vector<std::string> shown = [] {
+    std::vector<std::string> names;
+    for (const OptionRow<DoorOptions>& row : door_option_rows()) names.push_back("--" + row.name);
+    return names;
+  }();
+  const std::vector<OptionRow<DoorOptions>>& rows = door_option_rows();
+  for (std::size_t k = 0; k < rows.size(); ++k) check_option_value(rows[k].range, rows[k].get(options), shown[k]);
 }
 
 std::vector<Segment2> find_passage_cuts(const PolygonWithHoles& polygon, double resolution, const DoorOptions& options) {

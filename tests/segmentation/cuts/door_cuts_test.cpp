@@ -142,5 +142,21 @@ TEST(DoorCuts, DisabledAndBadOptions) {
   EXPECT_THROW(find_door_cuts(two_rooms(), -1.0), Error);
 }
 
+// validate() holds each field to its row's range (door_option_rows()), the range the front ends check:
+// a value no row takes (a negative length, ratio or angle) is refused naming the row's option.
+TEST(DoorOptions, ValidateHoldsEveryFieldToItsRowsRange) {
+  EXPECT_NO_THROW(validate(DoorOptions{}));
+  for (const OptionRow<DoorOptions>& row : door_option_rows()) {
+    DoorOptions options;
+    row.set(options, -1.0);
+    try {
+      validate(options);
+      ADD_FAILURE() << row.name << " took -1";
+    } catch (const Error& e) {
+      EXPECT_NE(std::string(e.what()).find("--" + row.name + " must"), std::string::npos) << e.what();
+    }
+  }
+}
+
 }  // namespace
 }  // namespace topocut
