@@ -5,7 +5,7 @@
 #   scripts/compare_outputs.sh BASE_TOPOCUT NEW_TOPOCUT [WORK_DIR] [--quick] [-- SEGMENT_OPTIONS...]
 # --quick: Bormann plain maps and the bundled maps only (no furnished maps, real maps, logs).
 # SEGMENT_OPTIONS go to every `segment` run (e.g. -- --no-learned-merge for the hand rules' rooms).
-# Exits 0 when every output is equal, 1 otherwise (listing the differing files).
+# Exits 0 when every output is equal, 1 otherwise (listing the differing files), 2 on a bad call.
 set -uo pipefail
 here="$(cd "$(dirname "$0")/.." && pwd)"
 data="$here/../shared/datasets"
@@ -13,6 +13,12 @@ segment_options=()
 for ((i = 1; i <= $#; ++i)); do
   if [[ "${!i}" == -- ]]; then segment_options=("${@:i+1}"); set -- "${@:1:i-1}"; break; fi
 done
+usage() { sed -n '2,8p' "$0" | sed 's/^# \{0,1\}//'; }
+case "${1:-}" in -h|--help) usage; exit 0 ;; esac
+# Checked before anything is deleted: a mistyped call must not wipe the work folder of another run.
+if (( $# < 2 )) || [[ ! -x "$1" || ! -x "$2" ]]; then
+  echo "compare_outputs.sh: BASE_TOPOCUT and NEW_TOPOCUT must be executable topocut binaries" >&2; usage >&2; exit 2
+fi
 base="$(realpath "$1")"; new="$(realpath "$2")"; work="${3:-/tmp/topocut_compare}"; quick="${4:-}"
 [[ "${3:-}" == --quick ]] && { work=/tmp/topocut_compare; quick=--quick; }
 rm -rf "$work"; mkdir -p "$work/base" "$work/new"
