@@ -53,7 +53,9 @@ void lower_envelope(const std::int64_t* g, int n, std::int64_t* out, int* v, Cro
 cv::Mat column_distances(const cv::Mat& labels, const cv::Rect& box) {
   cv::Mat column(box.size(), CV_32SC1, cv::Scalar(0));
   const int c0 = std::max(box.x, 1), c1 = std::min(box.x + box.width, labels.cols - 1);
-  for (int r = std::max(box.y, 1); r < std::min(box.y + box.height, labels.rows - 1); ++r) {
+  // From the box's second row: its first is never interior (above the labels, or the map's edge),
+  // and each row reads the one before it.
+  for (int r = box.y + 1; r < std::min(box.y + box.height, labels.rows - 1); ++r) {
     const int* __restrict above = labels.ptr<int>(r - 1);
     const int* __restrict row = labels.ptr<int>(r);
     const int* __restrict below = labels.ptr<int>(r + 1);
