@@ -142,13 +142,13 @@ RosMapMetadata parse_ros_map_yaml(const std::string& yaml_text, const std::strin
 namespace {
 
 // The levels of an image with N channels of type T (colour_channels of them colour, then alpha): a
-// pixel equal to the one before it (most of a map: long runs of one colour) takes its level and
-// transparency, the others their rounded channel mean.
+// run of equal pixels (most of a map: long runs of one colour) takes the level and transparency of
+// its first pixel, its rounded channel mean, written at once.
 template <typename T, int N>
 void image_levels(const cv::Mat& image, int colour_channels, bool has_alpha, double scale, double half, cv::Mat& levels,
                   cv::Mat& transparent) {
   // The level of every possible channel sum (the rounded mean on the 0..255 scale, computed in
-  // doubles, in which an integer sum is exact), so that each pixel costs a sum and a lookup.
+  // doubles, in which an integer sum is exact), so that each run costs a sum and a lookup.
   const int max_sum = static_cast<int>(std::numeric_limits<T>::max()) * colour_channels;
   std::vector<unsigned char> level_of_sum(static_cast<std::size_t>(max_sum) + 1);
   for (int sum = 0; sum <= max_sum; ++sum) {
@@ -157,23 +157,24 @@ void image_levels(const cv::Mat& image, int colour_channels, bool has_alpha, dou
   }
   levels.create(image.size(), CV_8UC1);
   transparent.create(image.size(), CV_8UC1);
+  constexpr std::size_t kPixelBytes = sizeof(T) * N;
+  constexpr int kBlock = 8;  // pixels compared at once (fixed-size memcmps: a few vector compares)
+  T block[kBlock * N];
   for (int r = 0; r < image.rows; ++r) {
     const T* in = image.ptr<T>(r);
     unsigned char* level = levels.ptr<unsigned char>(r);
     unsigned char* clear = transparent.ptr<unsigned char>(r);
-    T last[N] = {};  // the pixel before, and its level and transparency
-    unsigned char last_level = 0, last_clear = 0;
-    for (int c = 0; c < image.cols; ++c) {
+    for (int c = 0; c < image.cols;) {
       const T* px = in + static_cast<std::size_t>(c) * N;
-      if (c == 0 || std::memcmp(px, last, sizeof last) != 0) {
-        std::memcpy(last, px, sizeof last);
-        int sum = 0;
-        for (int k = 0; k < colour_channels; ++k) sum += px[k];
-        last_level = level_of_sum[static_cast<std::size_t>(sum)];
-        last_clear = has_alpha && px[N - 1] < half ? 255 : 0;
-      }
-      level[c] = last_level;
-      clear[c] = last_clear;
+      for (int k = 0; k < kBlock; ++k) std::memcpy(block + k * N, px, kPixelBytes);
+      int end = c + 1;  // the run of pixels equal to px: whole blocks, then single pixels
+      while (end + kBlock <= image.cols && std::memcmp(in + static_cast<std::size_t>(end) * N, block, sizeof block) == 0) end += kBlock;
+      while (end < image.cols && std::memcmp(in + static_cast<std::size_t>(end) * N, px, kPixelBytes) == 0) ++end;
+      int sum = 0;
+      for (int k = 0; k < colour_channels; ++k) sum += px[k];
+      std::memset(level + c, level_of_sum[static_cast<std::size_t>(sum)], static_cast<std::size_t>(end - c));
+      std::memset(clear + c, has_alpha && px[N - 1] < half ? 255 : 0, static_cast<std::size_t>(end - c));
+      c = end;
     }
   }
 }

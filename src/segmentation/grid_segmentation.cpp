@@ -2,50 +2,192 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
+#include <tuple>
 
 #include <opencv2/imgproc.hpp>
 
 namespace topocut {
 namespace {
 
+// Where two parabolas of a lower envelope cross: at num / den (den > 0), kept as a fraction and
+// compared by products in doubles, exact while the squared distances stay below 2^24 (as do the
+// floats cv::distanceTransform computes in) and without overflow beyond.
+struct Crossing {
+  std::int64_t num = 0, den = 1;
+};
+
+bool at_or_before(const Crossing& a, const Crossing& b) {
+  return static_cast<double>(a.num) * static_cast<double>(b.den) <= static_cast<double>(b.num) * static_cast<double>(a.den);
+}
+
+// out[x] = min over q of (x - q)^2 + g[q], for x and q in [0, n): the lower envelope of the parabolas
+// (Felzenszwalb and Huttenlocher's distance transform along a row), in integers. v and z hold n entries.
+void lower_envelope(const std::int64_t* g, int n, std::int64_t* out, int* v, Crossing* z) {
+  int k = 0;  // v[0..k]: the parabolas on the envelope; v[j] is lowest from z[j] on (z[0]: minus infinity)
+  v[0] = 0;
+  for (int q = 1; q < n; ++q) {
+    for (;;) {
+      const int p = v[k];
+      const Crossing s{g[q] + std::int64_t{q} * q - g[p] - std::int64_t{p} * p, 2 * std::int64_t{q - p}};
+      if (k > 0 && at_or_before(s, z[k])) {  // q is lower than v[k] wherever v[k] was lowest
+        --k;
+        continue;
+      }
+      v[++k] = q;
+      z[k] = s;
+      break;
+    }
+  }
+  for (int x = 0, j = 0; x < n; ++x) {
+    while (j < k && !at_or_before(Crossing{x, 1}, z[j + 1])) ++j;
+    const std::int64_t dx = x - v[j];
+    out[x] = dx * dx + g[v[j]];
+  }
+}
+
+// For the cells of box (labels' box grown by one cell, whose border cells are never interior): 0 for
+// a cell that is not interior (its label differs from one of its four neighbours', it has none or it
+// lies on the map's edge), else its distance to the nearest such cell up or down its column.
+cv::Mat column_distances(const cv::Mat& labels, const cv::Rect& box) {
+  cv::Mat column(box.size(), CV_32SC1, cv::Scalar(0));
+  const int c0 = std::max(box.x, 1), c1 = std::min(box.x + box.width, labels.cols - 1);
+  // From the box's second row: its first is never interior (above the labels, or the map's edge),
+  // and each row reads the one before it.
+  for (int r = box.y + 1; r < std::min(box.y + box.height, labels.rows - 1); ++r) {
+    const int* __restrict above = labels.ptr<int>(r - 1);
+    const int* __restrict row = labels.ptr<int>(r);
+    const int* __restrict below = labels.ptr<int>(r + 1);
+    const int* __restrict last = column.ptr<int>(r - 1 - box.y) - box.x;
+    int* __restrict out = column.ptr<int>(r - box.y) - box.x;
+    for (int c = c0; c < c1; ++c) {  // & and a mask rather than && and a branch, so that the loop vectorizes
+      const int id = row[c];
+      const int interior = (id > 0) & (above[c] == id) & (below[c] == id) & (row[c - 1] == id) & (row[c + 1] == id);
+      out[c] = (last[c] + 1) & -interior;
+    }
+  }
+  const int width = box.width;
+  std::vector<int> down_buffer(static_cast<std::size_t>(width), 0);
+  int* __restrict down = down_buffer.data();
+  for (int r = box.height - 1; r >= 0; --r) {
+    int* __restrict out = column.ptr<int>(r);
+    for (int c = 0; c < width; ++c) {
+      const int d = (down[c] + 1) & -static_cast<int>(out[c] > 0);
+      down[c] = d;
+      out[c] = std::min(out[c], d);
+    }
+  }
+  return column;
+}
+
+// A row's run of interior cells: all of one room, since each is its neighbours' label. A non-interior
+// cell bounds each end, so no cell beyond it can be a run cell's nearest non-interior cell.
+struct InteriorRun {
+  int row = 0, begin = 0, end = 0;  // the row of the box and its columns [begin, end)
+  int id = 0;
+  float reach = 0.0f;  // at least every run cell's depth: the most, over its cells, of the nearest run or column end
+};
+
+float depth_of(std::int64_t squared) { return std::sqrt(static_cast<float>(squared)); }
+
+// The interior runs of the box in raster order.
+std::vector<InteriorRun> interior_runs(const cv::Mat& labels, const cv::Rect& box, const cv::Mat& column) {
+  std::vector<InteriorRun> runs;
+  for (int r = 0; r < box.height; ++r) {
+    const int* col = column.ptr<int>(r);
+    for (int a = 0; a < box.width;) {
+      if (col[a] == 0) {
+        ++a;
+        continue;
+      }
+      InteriorRun run{r, a, a, labels.at<int>(box.y + r, box.x + a), 0.0f};
+      while (col[run.end] > 0) ++run.end;  // the box's last column is not interior
+      int most = 0;
+      for (int b = a; b < run.end; ++b) most = std::max(most, std::min({col[b], b - a + 1, run.end - b}));
+      run.reach = depth_of(std::int64_t{most} * most);
+      runs.push_back(run);
+      a = run.end;
+    }
+  }
+  return runs;
+}
+
+// The squared depth of the run's cells (out[k] for cell begin + k), by the lower envelope of the
+// parabolas of the run's cells and the non-interior cell at each end.
+void run_depths(const InteriorRun& run, const int* col, std::vector<std::int64_t>& g, std::vector<std::int64_t>& out,
+                std::vector<int>& v, std::vector<Crossing>& z) {
+  const int n = run.end - run.begin + 2;
+  if (g.size() < static_cast<std::size_t>(n)) {
+    g.resize(static_cast<std::size_t>(n));
+    out.resize(g.size());
+    v.resize(g.size());
+    z.resize(g.size());
+  }
+  for (int k = 0; k < n; ++k) g[static_cast<std::size_t>(k)] = std::int64_t{col[run.begin - 1 + k]} * col[run.begin - 1 + k];
+  lower_envelope(g.data(), n, out.data(), v.data(), z.data());
+}
+
+// Rooms without an interior cell (one cell thin) take their first labelled cell in raster order.
+void first_cells_of_thin_rooms(const cv::Mat& labels, const cv::Rect& box, int max_id, std::vector<cv::Point>& best) {
+  int missing = 0;
+  for (std::size_t id = 1; id < best.size(); ++id) missing += best[id].x < 0 ? 1 : 0;
+  for (int r = box.y; r < box.y + box.height && missing > 0; ++r) {
+    const int* row = labels.ptr<int>(r);
+    for (int c = box.x; c < box.x + box.width; ++c) {
+      const int id = row[c];
+      if (id <= 0 || id > max_id || best[static_cast<std::size_t>(id)].x >= 0) continue;
+      best[static_cast<std::size_t>(id)] = {c, r};
+      --missing;
+    }
+  }
+}
+
 // For every room id, the labelled cell (top-down grid) farthest from any cell of another label: the
-// distance transform of the cells whose four neighbours all share their label. Rooms without such a
-// cell (one cell thin) take their first cell in raster order. Works in the box around the labelled
-// cells grown by one cell: every cell outside it is a zero of the transform, and the nearest zero
-// of a cell inside is never farther than the grown box's border, so the (exact) distances and the
-// raster order of the labelled cells are those of the whole map.
+// distance transform of the cells whose four neighbours all share their label (the float that
+// cv::distanceTransform, DIST_L2 and DIST_MASK_PRECISE, gives: the rounded root of the exact squared
+// distance), the first in raster order among equals. Rooms without such a cell (one cell thin) take
+// their first cell in raster order. Works in the box around the labelled cells grown by one cell:
+// every cell outside it is not interior, and the nearest such cell of a cell inside is never farther
+// than the grown box's border, so the distances and the raster order are those of the whole map.
+// Only the rows' interior runs that may hold a room's deepest cell are transformed, widest first: a
+// run whose reach (a bound of its depths) is below the deepest cell found cannot.
 std::vector<cv::Point> deepest_cells(const cv::Mat& labels, int max_id) {
   std::vector<cv::Point> best(static_cast<std::size_t>(max_id) + 1, cv::Point(-1, -1));
   const cv::Rect labelled = cv::boundingRect(labels > 0);
   if (labelled.empty()) return best;
   const cv::Rect box = cv::Rect(labelled.x - 1, labelled.y - 1, labelled.width + 2, labelled.height + 2) &
                        cv::Rect(0, 0, labels.cols, labels.rows);
-  cv::Mat interior(box.size(), CV_8UC1, cv::Scalar(0));
-  // Cells on the map's edge are never interior; the others compare with their four neighbours.
-  for (int r = std::max(box.y, 1); r < std::min(box.y + box.height, labels.rows - 1); ++r) {
-    const int* up = labels.ptr<int>(r - 1);
-    const int* row = labels.ptr<int>(r);
-    const int* down = labels.ptr<int>(r + 1);
-    unsigned char* out = interior.ptr<unsigned char>(r - box.y) - box.x;
-    for (int c = std::max(box.x, 1); c < std::min(box.x + box.width, labels.cols - 1); ++c) {
-      const int id = row[c];
-      out[c] = id > 0 && up[c] == id && down[c] == id && row[c - 1] == id && row[c + 1] == id ? 255 : 0;
+  const cv::Mat column = column_distances(labels, box);
+  const std::vector<InteriorRun> runs = interior_runs(labels, box, column);
+  // Each room's runs from the widest down, until a run's reach is below the deepest cell found.
+  std::vector<std::size_t> order;
+  order.reserve(runs.size());
+  for (std::size_t k = 0; k < runs.size(); ++k)
+    if (runs[k].id <= max_id) order.push_back(k);
+  std::sort(order.begin(), order.end(), [&runs](std::size_t a, std::size_t b) {
+    return runs[a].id != runs[b].id ? runs[a].id < runs[b].id : runs[a].reach > runs[b].reach;
+  });
+  std::vector<float> best_depth(best.size(), 0.0f);
+  std::vector<std::int64_t> g, out;
+  std::vector<int> v;
+  std::vector<Crossing> z;
+  for (const std::size_t k : order) {
+    const InteriorRun& run = runs[k];
+    const auto id = static_cast<std::size_t>(run.id);
+    if (run.reach < best_depth[id]) continue;
+    run_depths(run, column.ptr<int>(run.row), g, out, v, z);
+    for (int c = run.begin; c < run.end; ++c) {
+      const float d = depth_of(out[static_cast<std::size_t>(c - run.begin + 1)]);
+      const cv::Point cell(box.x + c, box.y + run.row);
+      // The first in raster order among equals, though the runs come in another order.
+      if (d > best_depth[id] || (d == best_depth[id] && std::tie(cell.y, cell.x) < std::tie(best[id].y, best[id].x))) {
+        best_depth[id] = d;
+        best[id] = cell;
+      }
     }
   }
-  cv::Mat depth;
-  cv::distanceTransform(interior, depth, cv::DIST_L2, cv::DIST_MASK_PRECISE);
-  std::vector<float> best_depth(best.size(), -1.0f);
-  for (int r = box.y; r < box.y + box.height; ++r) {
-    const int* row = labels.ptr<int>(r);
-    const float* d = depth.ptr<float>(r - box.y) - box.x;
-    for (int c = box.x; c < box.x + box.width; ++c) {
-      const int id = row[c];
-      if (id <= 0 || id > max_id || !(d[c] > best_depth[static_cast<std::size_t>(id)])) continue;
-      best_depth[static_cast<std::size_t>(id)] = d[c];
-      best[static_cast<std::size_t>(id)] = {c, r};
-    }
-  }
+  first_cells_of_thin_rooms(labels, box, max_id, best);
   return best;
 }
 

@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 #include <opencv2/imgcodecs.hpp>
 #include <png.h>
+#include <zlib.h>
 
 #include "topocut/core/error.h"
 #include "topocut/io/image_codec.h"
@@ -224,6 +225,36 @@ TEST(ImageCodec, DamagedFilesGiveOneErrorLine) {
         EXPECT_EQ(message.find('\n'), std::string::npos);
       }
     }
+  }
+}
+
+// The decoder leaves zlib's Adler-32 of the inflated rows unchecked: each chunk's CRC-32 finds a
+// damaged file. A PNG whose Adler-32 is wrong but whose chunks' CRCs are right decodes to its pixels;
+// the same change without the IDAT's CRC made right again is refused.
+TEST(ImageCodec, PngDamageIsFoundByTheChunkChecksums) {
+  const cv::Mat image = random_image(CV_8UC3, 30, 30);
+  const std::string good = opencv_encoded(image, ".png");
+  const auto be32 = [](const std::string& s, std::size_t at) {
+    return static_cast<std::uint32_t>(static_cast<unsigned char>(s[at])) << 24 |
+           static_cast<std::uint32_t>(static_cast<unsigned char>(s[at + 1])) << 16 |
+           static_cast<std::uint32_t>(static_cast<unsigned char>(s[at + 2])) << 8 | static_cast<unsigned char>(s[at + 3]);
+  };
+  std::size_t at = 8;  // after the signature: chunks of length, type, data and CRC
+  while (at + 8 <= good.size() && good.compare(at + 4, 4, "IDAT") != 0) at += 12 + be32(good, at);
+  ASSERT_LT(at + 8, good.size());
+  const std::size_t length = be32(good, at);
+  std::string wrong_sum = good;
+  wrong_sum[at + 8 + length - 1] = static_cast<char>(~wrong_sum[at + 8 + length - 1]);  // the Adler-32's last byte
+  const std::string refused = wrong_sum;
+  const auto crc = static_cast<std::uint32_t>(crc32(0, reinterpret_cast<const Bytef*>(wrong_sum.data() + at + 4),
+                                                    static_cast<uInt>(length + 4)));
+  for (int k = 0; k < 4; ++k) wrong_sum[at + 8 + length + k] = static_cast<char>(crc >> (24 - 8 * k));
+  EXPECT_TRUE(same_pixels(decode_image(wrong_sum, "sum.png", {}), decode_image(good, "good.png", {})));
+  try {
+    decode_image(refused, "crc.png", {});
+    ADD_FAILURE() << "a PNG whose IDAT does not match its CRC was read";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("cannot read 'crc.png' as an image"), std::string::npos) << e.what();
   }
 }
 

@@ -1,6 +1,7 @@
 #include "topocut/io/map_loader.h"
 
 #include <filesystem>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -10,6 +11,7 @@
 
 #include "io/temp_dir.h"
 #include "topocut/core/error.h"
+#include "topocut/io/image_codec.h"
 
 namespace topocut {
 namespace {
@@ -174,6 +176,44 @@ TEST(LoadMap, SixteenBitGreyIsScaled) {
   const OccupancyGrid grid = load_map(dir.file("g16.png"));
   const cv::Mat expected = (cv::Mat_<unsigned char>(1, 3) << F, O, U);
   EXPECT_EQ(cv::countNonZero(grid.cells != expected), 0);
+}
+
+// Rows of runs of equal pixels of every length around the eight the levels compare at once, in
+// RGBA, RGB and 16-bit RGBA: every pixel's level is its rounded channel mean and its transparency
+// alpha below half, as a pixel-by-pixel reading gives.
+TEST(LoadMap, LevelsOfRunsOfEqualPixels) {
+  std::mt19937 random(36);
+  for (const int type : {CV_8UC4, CV_8UC3, CV_16UC4}) {
+    cv::Mat image(5, 61, type);
+    const int top = CV_MAT_DEPTH(type) == CV_8U ? 255 : 65535;
+    for (int r = 0; r < image.rows; ++r) {
+      std::vector<double> colour(4);
+      for (int c = 0, left = 0; c < image.cols; ++c, --left) {
+        if (left == 0) {  // a new run of 1 to 18 pixels
+          left = 1 + static_cast<int>(random() % 18);
+          for (double& v : colour) v = static_cast<double>(random() % 2 ? top : random() % (top + 1));
+        }
+        for (int k = 0; k < image.channels(); ++k) {
+          if (CV_MAT_DEPTH(type) == CV_8U) image.ptr<unsigned char>(r)[c * image.channels() + k] = cv::saturate_cast<unsigned char>(colour[k]);
+          else image.ptr<unsigned short>(r)[c * image.channels() + k] = cv::saturate_cast<unsigned short>(colour[k]);
+        }
+      }
+    }
+    cv::Mat levels, transparent;
+    decode_map_levels(encode_image(image, ".png"), "runs.png", levels, transparent);
+    ASSERT_EQ(levels.size(), image.size());
+    const double scale = CV_MAT_DEPTH(type) == CV_8U ? 1.0 : 255.0 / 65535.0;
+    for (int r = 0; r < image.rows; ++r)
+      for (int c = 0; c < image.cols; ++c) {
+        double sum = 0.0, alpha = top;
+        for (int k = 0; k < 3; ++k) sum += CV_MAT_DEPTH(type) == CV_8U ? image.ptr<unsigned char>(r)[c * image.channels() + k]
+                                                                       : image.ptr<unsigned short>(r)[c * image.channels() + k];
+        if (image.channels() == 4)
+          alpha = CV_MAT_DEPTH(type) == CV_8U ? image.ptr<unsigned char>(r)[c * 4 + 3] : image.ptr<unsigned short>(r)[c * 4 + 3];
+        ASSERT_EQ(levels.at<unsigned char>(r, c), cv::saturate_cast<unsigned char>(sum * scale / 3)) << r << ", " << c;
+        ASSERT_EQ(transparent.at<unsigned char>(r, c), alpha < (top + 1) / 2 ? 255 : 0) << r << ", " << c;
+      }
+  }
 }
 
 // OpenCV cannot write grey+alpha PNGs, so this builds one by hand (PNG colour type 4).

@@ -1,8 +1,10 @@
 #include "topocut/segmentation/grid_segmentation.h"
 
 #include <cmath>
+#include <random>
 
 #include <gtest/gtest.h>
+#include <opencv2/imgproc.hpp>
 
 namespace topocut {
 namespace {
@@ -48,6 +50,68 @@ TEST(GridSegmentation, TopDownKeepsTheSegmentationAndPlacesEveryRoom) {
   for (const Passage& passage : s.segmentation.passages) {
     EXPECT_TRUE(passage.door);
     EXPECT_NEAR(passage.width, 0.9, 0.11);
+  }
+}
+
+// The cell each room's placement names, found the plain way: cv::distanceTransform of the whole
+// map's interior cells (all four neighbours share the label; none on the map's edge), the deepest
+// labelled cell of each room, the first in raster order among equals.
+std::vector<cv::Point> deepest_by_distance_transform(const cv::Mat& labels, int rooms) {
+  cv::Mat interior(labels.size(), CV_8UC1, cv::Scalar(0));
+  for (int r = 1; r + 1 < labels.rows; ++r)
+    for (int c = 1; c + 1 < labels.cols; ++c) {
+      const int id = labels.at<int>(r, c);
+      interior.at<unsigned char>(r, c) = id > 0 && labels.at<int>(r - 1, c) == id && labels.at<int>(r + 1, c) == id &&
+                                                 labels.at<int>(r, c - 1) == id && labels.at<int>(r, c + 1) == id
+                                             ? 255 : 0;
+    }
+  cv::Mat depth;
+  cv::distanceTransform(interior, depth, cv::DIST_L2, cv::DIST_MASK_PRECISE);
+  std::vector<cv::Point> best(static_cast<std::size_t>(rooms) + 1, cv::Point(-1, -1));
+  std::vector<float> best_depth(best.size(), -1.0f);
+  for (int r = 0; r < labels.rows; ++r)
+    for (int c = 0; c < labels.cols; ++c) {
+      const int id = labels.at<int>(r, c);
+      if (id <= 0 || !(depth.at<float>(r, c) > best_depth[static_cast<std::size_t>(id)])) continue;
+      best_depth[static_cast<std::size_t>(id)] = depth.at<float>(r, c);
+      best[static_cast<std::size_t>(id)] = {c, r};
+    }
+  return best;
+}
+
+TEST(GridSegmentation, EachRoomIsPlacedAtItsDeepestCell) {
+  // Rooms of overlapping rectangles and discs, some touching the map's edge, some one cell thin, on
+  // an unlabelled background: rooms of every shape whose deepest cell the plain transform knows.
+  std::mt19937 random(36);
+  for (int trial = 0; trial < 20; ++trial) {
+    const int rows = 20 + static_cast<int>(random() % 60), cols = 20 + static_cast<int>(random() % 60);
+    const int rooms = 1 + static_cast<int>(random() % 8);
+    Segmentation s;
+    s.labels = cv::Mat::zeros(rows, cols, CV_32SC1);
+    s.resolution = 0.1;
+    s.origin = {1.0, -2.0};
+    for (int id = 1; id <= rooms; ++id) {
+      for (int shape = 0; shape < 3; ++shape) {
+        const cv::Point at(static_cast<int>(random() % cols), static_cast<int>(random() % rows));
+        const int size = 1 + static_cast<int>(random() % 15);
+        if (random() % 2) cv::circle(s.labels, at, size, cv::Scalar(id), cv::FILLED);
+        else cv::rectangle(s.labels, cv::Rect(at, cv::Size(size, 1 + static_cast<int>(random() % 15))), cv::Scalar(id), cv::FILLED);
+      }
+      Room room;
+      room.id = id;
+      room.centroid = {-7.0, -7.0};  // where a room with no labelled cell is placed
+      s.rooms.push_back(room);
+    }
+    const std::vector<cv::Point> expected = deepest_by_distance_transform(s.labels, rooms);
+    const GridSegmentation placed = in_frame(s, GridFrame{});
+    for (int id = 1; id <= rooms; ++id) {
+      const cv::Point cell = expected[static_cast<std::size_t>(id)];
+      const Point2 inside = placed.placements[static_cast<std::size_t>(id - 1)].inside;
+      const Point2 want = cell.x < 0 ? Point2{-7.0, -7.0}
+                                     : Point2{s.origin.x + (cell.x + 0.5) * s.resolution, s.origin.y + (rows - cell.y - 0.5) * s.resolution};
+      EXPECT_EQ(inside.x, want.x) << "trial " << trial << ", room " << id;
+      EXPECT_EQ(inside.y, want.y) << "trial " << trial << ", room " << id;
+    }
   }
 }
 

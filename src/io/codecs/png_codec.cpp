@@ -163,6 +163,10 @@ cv::Mat decode_png(std::string_view bytes, const DecodeBounds& bounds) {
   PngContext context;
   context.input = bytes;
   const PngStruct reader(context, false);
+  // zlib's Adler-32 of the inflated rows is not checked: every chunk's CRC-32 already rejects a
+  // damaged file, and the sum cost an eighth of a large map's decoding (office_g furnished: 68 of
+  // 510 M instructions).
+  png_set_option(reader.png(), PNG_IGNORE_ADLER32, PNG_OPTION_ON);
   PngImage header;
   if (!read_header(reader.png(), reader.info(), header)) throw CodecError(context.message);
   check_decoded_size(header.width, header.height, bounds, "PNG");
