@@ -4,7 +4,7 @@
 #include <cmath>
 #include <functional>
 #include <map>
-#include <unordered_map>
+#include <numeric>
 #include <utility>
 
 #include "topocut/core/error.h"
@@ -17,17 +17,6 @@ using namespace plane;
 
 namespace {
 
-// Points as hash keys, equal when their coordinates compare equal (so 0.0 and -0.0 are one point,
-// as in an ordered map); lookups only, so the hash order never shows.
-struct PointHash {
-  std::size_t operator()(const std::pair<double, double>& p) const {
-    const std::size_t x = std::hash<double>{}(p.first + 0.0), y = std::hash<double>{}(p.second + 0.0);
-    return x ^ (y + 0x9e3779b97f4a7c15ULL + (x << 6) + (x >> 2));
-  }
-};
-template <typename T>
-using PointMap = std::unordered_map<std::pair<double, double>, T, PointHash>;
-
 // A polygon's rings as one graph: directed half-edges between distinct vertices.
 struct HalfEdge {
   int from, to, twin;
@@ -35,8 +24,38 @@ struct HalfEdge {
 struct HalfEdgeGraph {
   std::vector<Point2> vertices;
   std::vector<HalfEdge> half;
-  std::vector<std::vector<int>> outgoing;  // per vertex: its half-edges, in insertion order
+  // Per vertex v: its half-edges, in insertion order, are out_edges[out_start[v] .. out_start[v + 1]).
+  std::vector<int> out_start, out_edges;
 };
+
+// Per point of the sequence, the number of the distinct point it is (points equal when their
+// coordinates compare equal), numbered by first appearance; first_points gets each distinct point
+// as it first appears. By sorting, not hashing: no allocation per point.
+std::vector<int> numbered_by_first_appearance(const std::vector<Point2>& points, std::vector<Point2>& first_points) {
+  std::vector<int> order(points.size());
+  std::iota(order.begin(), order.end(), 0);
+  auto less = [&](int a, int b) {
+    const Point2& p = points[static_cast<std::size_t>(a)];
+    const Point2& q = points[static_cast<std::size_t>(b)];
+    return p.x != q.x ? p.x < q.x : p.y < q.y;
+  };
+  std::stable_sort(order.begin(), order.end(), less);
+  std::vector<int> first(points.size());  // per point: the first index of an equal point
+  for (std::size_t k = 0; k < order.size(); ++k) {
+    const int i = order[k];
+    first[static_cast<std::size_t>(i)] = k > 0 && !less(order[k - 1], i) ? first[static_cast<std::size_t>(order[k - 1])] : i;
+  }
+  std::vector<int> id(points.size());
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    if (first[i] == static_cast<int>(i)) {
+      id[i] = static_cast<int>(first_points.size());
+      first_points.push_back(points[i]);
+    } else {
+      id[i] = id[static_cast<std::size_t>(first[i])];
+    }
+  }
+  return id;
+}
 
 // Far more than the rounding of a distance, far less than a cell: the box tests below never drop an
 // edge within a chord end's distance (1e-6) of it.
@@ -117,14 +136,27 @@ std::vector<Ring> rings_with_chord_ends(const PolygonWithHoles& polygon, const s
   for (std::size_t r = 0; r < rings.size(); ++r)
     for (std::size_t i = 0; i < rings[r].size(); ++i) edge_of.emplace_back(static_cast<int>(r), static_cast<int>(i));
   const RingEdgeGrid grid(rings);
-  PointMap<bool> is_vertex;
-  is_vertex.reserve(polygon.outer.size() * 2);
+  // The chord ends, sorted, each marked once it is a vertex (of the rings, or inserted below): only
+  // these are ever asked about, so the rings' vertices are looked up among them, not all hashed.
+  using Key = std::pair<double, double>;
+  std::vector<Key> ends;
+  for (const Segment2& chord : chords)
+    for (const Point2& p : {chord.a, chord.b}) ends.emplace_back(p.x, p.y);
+  std::sort(ends.begin(), ends.end());
+  ends.erase(std::unique(ends.begin(), ends.end()), ends.end());
+  std::vector<char> is_vertex(ends.size(), 0);
+  auto end_index = [&ends](const Point2& p) -> std::ptrdiff_t {
+    const auto it = std::lower_bound(ends.begin(), ends.end(), Key{p.x, p.y});
+    return it != ends.end() && *it == Key{p.x, p.y} ? it - ends.begin() : -1;
+  };
   for (const Ring& ring : rings)
-    for (const Point2& p : ring) is_vertex[{p.x, p.y}] = true;
+    for (const Point2& p : ring)
+      if (const std::ptrdiff_t at = end_index(p); at >= 0) is_vertex[static_cast<std::size_t>(at)] = 1;
   std::map<std::pair<int, int>, std::vector<std::pair<double, Point2>>> inserts;  // (ring, edge) -> (t, point)
   for (const Segment2& chord : chords) {
     for (const Point2& p : {chord.a, chord.b}) {
-      if (is_vertex.count({p.x, p.y})) continue;
+      const std::size_t at = static_cast<std::size_t>(end_index(p));  // every chord end is among the ends
+      if (is_vertex[at]) continue;
       int best_ring = -1, best_edge = -1;
       double best = 1e-6, best_t = 0.0;
       // The edges near p in ring and edge order, as the scan of every edge met them.
@@ -147,7 +179,7 @@ std::vector<Ring> rings_with_chord_ends(const PolygonWithHoles& polygon, const s
       }
       if (best_ring < 0) throw Error("a cut end point is not on the polygon's boundary");
       inserts[{best_ring, best_edge}].emplace_back(best_t, p);
-      is_vertex[{p.x, p.y}] = true;
+      is_vertex[at] = 1;
     }
   }
   for (std::size_t r = 0; r < rings.size(); ++r) {
@@ -172,22 +204,32 @@ std::vector<Ring> rings_with_chord_ends(const PolygonWithHoles& polygon, const s
 // vertices numbered by first appearance so that the walk below is deterministic.
 HalfEdgeGraph half_edge_graph(const std::vector<Ring>& rings, const std::vector<Segment2>& chords) {
   HalfEdgeGraph g;
-  PointMap<int> vertex_id;
-  auto id_of = [&](const Point2& p) {
-    const auto [it, added] = vertex_id.emplace(std::pair<double, double>{p.x, p.y}, static_cast<int>(g.vertices.size()));
-    if (added) g.vertices.push_back(p);
-    return it->second;
-  };
-  for (const Ring& ring : rings)
-    for (std::size_t i = 0; i < ring.size(); ++i) g.half.push_back({id_of(ring[i]), id_of(ring[(i + 1) % ring.size()]), -1});
+  // The points in the order the edges meet them first: the rings' vertices, then the chords' ends.
+  std::vector<Point2> points;
+  for (const Ring& ring : rings) points.insert(points.end(), ring.begin(), ring.end());
   for (const Segment2& chord : chords) {
-    const int a = id_of(chord.a), b = id_of(chord.b);
+    points.push_back(chord.a);
+    points.push_back(chord.b);
+  }
+  const std::vector<int> id = numbered_by_first_appearance(points, g.vertices);
+  std::size_t at = 0;
+  for (const Ring& ring : rings) {
+    for (std::size_t i = 0; i < ring.size(); ++i) g.half.push_back({id[at + i], id[at + (i + 1) % ring.size()], -1});
+    at += ring.size();
+  }
+  for (std::size_t j = 0; j < chords.size(); ++j, at += 2) {
+    const int a = id[at], b = id[at + 1];
     const int k = static_cast<int>(g.half.size());
     g.half.push_back({a, b, k + 1});
     g.half.push_back({b, a, k});
   }
-  g.outgoing.resize(g.vertices.size());
-  for (std::size_t k = 0; k < g.half.size(); ++k) g.outgoing[static_cast<std::size_t>(g.half[k].from)].push_back(static_cast<int>(k));
+  g.out_start.assign(g.vertices.size() + 1, 0);
+  for (const HalfEdge& h : g.half) ++g.out_start[static_cast<std::size_t>(h.from) + 1];
+  for (std::size_t v = 1; v < g.out_start.size(); ++v) g.out_start[v] += g.out_start[v - 1];
+  g.out_edges.resize(g.half.size());
+  std::vector<int> fill(g.out_start.begin(), g.out_start.end() - 1);
+  for (std::size_t k = 0; k < g.half.size(); ++k)
+    g.out_edges[static_cast<std::size_t>(fill[static_cast<std::size_t>(g.half[k].from)]++)] = static_cast<int>(k);
   return g;
 }
 
@@ -200,7 +242,8 @@ std::vector<std::vector<int>> face_cycles(const HalfEdgeGraph& g) {
     const HalfEdge& h = g.half[static_cast<std::size_t>(k)];
     int best = -1;
     double best_turn = -kInfinity;
-    for (const int o : g.outgoing[static_cast<std::size_t>(h.to)]) {
+    for (int e = g.out_start[static_cast<std::size_t>(h.to)]; e < g.out_start[static_cast<std::size_t>(h.to) + 1]; ++e) {
+      const int o = g.out_edges[static_cast<std::size_t>(e)];
       if (o == h.twin) continue;
       const double t = turn_angle(g.vertices[static_cast<std::size_t>(h.from)], g.vertices[static_cast<std::size_t>(h.to)],
                                   g.vertices[static_cast<std::size_t>(g.half[static_cast<std::size_t>(o)].to)]);
