@@ -145,6 +145,48 @@ std::optional<Candidate> nearest_across_corner(const DoorSearch& search, const E
   return Candidate{{v, best_point}, std::sqrt(best2), r};
 }
 
+// Where on the outline a cut across to a joinable hole (a wall island) could start: a grid of cells
+// of the door reach over the outline's box, marking the cells near some joinable hole's box. A corner
+// of the outline in an unmarked cell has no island within reach, so its search could only end on the
+// outline, which the island search drops: most of the outline's corners, as islands are few and small.
+class IslandReach {
+ public:
+  explicit IslandReach(const DoorSearch& search) {
+    const Box outline = bounding_box(*search.rings[0]);
+    cell_ = std::max(search.reach, 1.0);
+    x0_ = outline.x0;
+    y0_ = outline.y0;
+    nx_ = cell_of(outline.x1, x0_) + 1;
+    ny_ = cell_of(outline.y1, y0_) + 1;
+    near_.assign(static_cast<std::size_t>(nx_) * static_cast<std::size_t>(ny_), 0);
+    // A cell beyond the reach keeps rounding (of the box distance, of the points the search
+    // considers on an edge) on the safe side.
+    const double grow = search.reach + 1.0;
+    for (std::size_t r = 1; r < search.rings.size(); ++r) {
+      if (!search.joinable[r]) continue;
+      const Box b = bounding_box(*search.rings[r]);
+      const int cx0 = std::max(cell_of(b.x0 - grow, x0_), 0), cx1 = std::min(cell_of(b.x1 + grow, x0_), nx_ - 1);
+      const int cy0 = std::max(cell_of(b.y0 - grow, y0_), 0), cy1 = std::min(cell_of(b.y1 + grow, y0_), ny_ - 1);
+      for (int cy = cy0; cy <= cy1; ++cy)
+        for (int cx = cx0; cx <= cx1; ++cx) near_[static_cast<std::size_t>(cy) * static_cast<std::size_t>(nx_) + static_cast<std::size_t>(cx)] = 1;
+    }
+  }
+
+  // Whether some joinable hole may lie within the door reach of v (a vertex of the outline).
+  bool near(const Point2& v) const {
+    const int cx = cell_of(v.x, x0_), cy = cell_of(v.y, y0_);
+    if (cx < 0 || cy < 0 || cx >= nx_ || cy >= ny_) return true;
+    return near_[static_cast<std::size_t>(cy) * static_cast<std::size_t>(nx_) + static_cast<std::size_t>(cx)] != 0;
+  }
+
+ private:
+  int cell_of(double x, double origin) const { return static_cast<int>(std::floor((x - origin) / cell_)); }
+
+  double cell_ = 1.0, x0_ = 0.0, y0_ = 0.0;
+  int nx_ = 0, ny_ = 0;
+  std::vector<unsigned char> near_;
+};
+
 }  // namespace
 
 // Door candidates: from every reflex corner, the shortest cut across it, to its own ring or (across)
@@ -153,12 +195,15 @@ std::vector<Candidate> corner_cuts(const DoorSearch& search, const EdgeGrid& gri
   std::vector<Candidate> candidates;
   std::vector<unsigned> seen(search.edges.size(), 0);  // per edge: the last corner that looked at it
   unsigned stamp = 0;
+  std::optional<IslandReach> islands;
+  if (across) islands.emplace(search);
   for_each_reflex_corner(
       search,
       [&](std::size_t r, const Ring& hole) {
         return too_small_for_a_room(hole, search.resolution) || (across && !search.joinable[r]);
       },
       [&](int r, int i, const Point2& p, const Point2& v, const Point2& q) {
+        if (islands && r == 0 && !islands->near(v)) return;
         if (auto c = nearest_across_corner(search, grid, r, i, p, v, q, across, seen, ++stamp)) candidates.push_back(*c);
       });
   return candidates;

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <functional>
 #include <map>
-#include <unordered_map>
+#include <numeric>
 #include <utility>
 
 #include "topocut/core/error.h"
@@ -17,17 +17,6 @@ using namespace plane;
 
 namespace {
 
-// Points as hash keys, equal when their coordinates compare equal (so 0.0 and -0.0 are one point,
-// as in an ordered map); lookups only, so the hash order never shows.
-struct PointHash {
-  std::size_t operator()(const std::pair<double, double>& p) const {
-    const std::size_t x = std::hash<double>{}(p.first + 0.0), y = std::hash<double>{}(p.second + 0.0);
-    return x ^ (y + 0x9e3779b97f4a7c15ULL + (x << 6) + (x >> 2));
-  }
-};
-template <typename T>
-using PointMap = std::unordered_map<std::pair<double, double>, T, PointHash>;
-
 // A polygon's rings as one graph: directed half-edges between distinct vertices.
 struct HalfEdge {
   int from, to, twin;
@@ -35,49 +24,162 @@ struct HalfEdge {
 struct HalfEdgeGraph {
   std::vector<Point2> vertices;
   std::vector<HalfEdge> half;
-  std::vector<std::vector<int>> outgoing;  // per vertex: its half-edges, in insertion order
+  // Per vertex v: its half-edges, in insertion order, are out_edges[out_start[v] .. out_start[v + 1]).
+  std::vector<int> out_start, out_edges;
+};
+
+// Per point of the sequence, the number of the distinct point it is (points equal when their
+// coordinates compare equal), numbered by first appearance; first_points gets each distinct point
+// as it first appears. By sorting, not hashing: no allocation per point.
+std::vector<int> numbered_by_first_appearance(const std::vector<Point2>& points, std::vector<Point2>& first_points) {
+  std::vector<int> order(points.size());
+  std::iota(order.begin(), order.end(), 0);
+  auto less = [&](int a, int b) {
+    const Point2& p = points[static_cast<std::size_t>(a)];
+    const Point2& q = points[static_cast<std::size_t>(b)];
+    return p.x != q.x ? p.x < q.x : p.y < q.y;
+  };
+  std::stable_sort(order.begin(), order.end(), less);
+  std::vector<int> first(points.size());  // per point: the first index of an equal point
+  for (std::size_t k = 0; k < order.size(); ++k) {
+    const int i = order[k];
+    first[static_cast<std::size_t>(i)] = k > 0 && !less(order[k - 1], i) ? first[static_cast<std::size_t>(order[k - 1])] : i;
+  }
+  std::vector<int> id(points.size());
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    if (first[i] == static_cast<int>(i)) {
+      id[i] = static_cast<int>(first_points.size());
+      first_points.push_back(points[i]);
+    } else {
+      id[i] = id[static_cast<std::size_t>(first[i])];
+    }
+  }
+  return id;
+}
+
+// Far more than the rounding of a distance, far less than a cell: the box tests below never drop an
+// edge within a chord end's distance (1e-6) of it.
+constexpr double kNearBox = 1e-3;
+
+// The rings' edges in a uniform grid, each in the cells that its line passes within kNearBox of,
+// numbered ring by ring in ring order: the edges a point can lie on, without every edge of the
+// polygon for every chord end.
+class RingEdgeGrid {
+ public:
+  explicit RingEdgeGrid(const std::vector<Ring>& rings) {
+    Box all;
+    for (const Ring& ring : rings) {
+      const Box b = bounding_box(ring);
+      all = {std::min(all.x0, b.x0), std::min(all.y0, b.y0), std::max(all.x1, b.x1), std::max(all.y1, b.y1)};
+    }
+    if (!(all.x0 <= all.x1)) return;
+    // About a cell per edge, at least 16 map cells a side: memory as the polygon's, not its box's.
+    std::size_t edges = 0;
+    for (const Ring& ring : rings) edges += ring.size();
+    cell_ = std::max(16.0, std::sqrt((all.x1 - all.x0) * (all.y1 - all.y0) / static_cast<double>(std::max<std::size_t>(edges, 1))));
+    x0_ = all.x0 - cell_;
+    y0_ = all.y0 - cell_;
+    nx_ = column(all.x1 + cell_) + 1;
+    ny_ = row(all.y1 + cell_) + 1;
+    cells_.resize(static_cast<std::size_t>(nx_) * static_cast<std::size_t>(ny_));
+    int id = 0;
+    for (const Ring& ring : rings)
+      for (std::size_t i = 0; i < ring.size(); ++i, ++id) add(ring[i], ring[(i + 1) % ring.size()], id);
+  }
+
+  // The edges (by number, ascending) registered in the cell of p: every edge within kNearBox of p.
+  const std::vector<int>& near(const Point2& p) const {
+    static const std::vector<int> none;
+    const int cx = column(p.x), cy = row(p.y);
+    if (cx < 0 || cy < 0 || cx >= nx_ || cy >= ny_) return none;
+    return cells_[static_cast<std::size_t>(cy) * static_cast<std::size_t>(nx_) + static_cast<std::size_t>(cx)];
+  }
+
+ private:
+  void add(const Point2& a, const Point2& b, int id) {
+    const Point2 d = minus(b, a);
+    const double l = length(d);
+    const int cx0 = column(std::min(a.x, b.x) - kNearBox), cx1 = column(std::max(a.x, b.x) + kNearBox);
+    const int cy0 = row(std::min(a.y, b.y) - kNearBox), cy1 = row(std::max(a.y, b.y) + kNearBox);
+    for (int cy = cy0; cy <= cy1; ++cy)
+      for (int cx = cx0; cx <= cx1; ++cx) {
+        if (l > 0.0 && cx1 > cx0 && cy1 > cy0) {
+          // Skip a cell the edge's line passes farther than kNearBox from (all four corners beyond it on one side).
+          const double bx = x0_ + cx * cell_, by = y0_ + cy * cell_;
+          double lo = kInfinity, hi = -kInfinity;
+          for (const Point2& c : {Point2{bx, by}, Point2{bx + cell_, by}, Point2{bx, by + cell_}, Point2{bx + cell_, by + cell_}}) {
+            const double side = cross(d, minus(c, a)) / l;
+            lo = std::min(lo, side);
+            hi = std::max(hi, side);
+          }
+          if (lo > kNearBox || hi < -kNearBox) continue;
+        }
+        cells_[static_cast<std::size_t>(cy) * static_cast<std::size_t>(nx_) + static_cast<std::size_t>(cx)].push_back(id);
+      }
+  }
+  int column(double x) const { return static_cast<int>(std::floor((x - x0_) / cell_)); }
+  int row(double y) const { return static_cast<int>(std::floor((y - y0_) / cell_)); }
+
+  double cell_ = 16.0, x0_ = 0.0, y0_ = 0.0;  // cell_ in grid units (map cells)
+  int nx_ = 0, ny_ = 0;
+  std::vector<std::vector<int>> cells_;
 };
 
 // The rings with every chord end point that is not a vertex inserted as a vertex of the edge it
 // lies on (in order along the edge), so chords meet the rings only at vertices. Throws if a chord
 // end lies on no edge.
 std::vector<Ring> rings_with_chord_ends(const PolygonWithHoles& polygon, const std::vector<Segment2>& chords) {
-  // Far more than the rounding of a distance, far less than a cell: the box test below never
-  // drops an edge the distance would keep.
-  constexpr double kNearBox = 1e-3;
   std::vector<Ring> rings{polygon.outer};
   for (const Ring& hole : polygon.holes) rings.push_back(hole);
-  PointMap<bool> is_vertex;
-  is_vertex.reserve(polygon.outer.size() * 2);
+  // Edge number -> (ring, index), for the grid's numbers.
+  std::vector<std::pair<int, int>> edge_of;
+  for (std::size_t r = 0; r < rings.size(); ++r)
+    for (std::size_t i = 0; i < rings[r].size(); ++i) edge_of.emplace_back(static_cast<int>(r), static_cast<int>(i));
+  const RingEdgeGrid grid(rings);
+  // The chord ends, sorted, each marked once it is a vertex (of the rings, or inserted below): only
+  // these are ever asked about, so the rings' vertices are looked up among them, not all hashed.
+  using Key = std::pair<double, double>;
+  std::vector<Key> ends;
+  for (const Segment2& chord : chords)
+    for (const Point2& p : {chord.a, chord.b}) ends.emplace_back(p.x, p.y);
+  std::sort(ends.begin(), ends.end());
+  ends.erase(std::unique(ends.begin(), ends.end()), ends.end());
+  std::vector<char> is_vertex(ends.size(), 0);
+  auto end_index = [&ends](const Point2& p) -> std::ptrdiff_t {
+    const auto it = std::lower_bound(ends.begin(), ends.end(), Key{p.x, p.y});
+    return it != ends.end() && *it == Key{p.x, p.y} ? it - ends.begin() : -1;
+  };
   for (const Ring& ring : rings)
-    for (const Point2& p : ring) is_vertex[{p.x, p.y}] = true;
+    for (const Point2& p : ring)
+      if (const std::ptrdiff_t at = end_index(p); at >= 0) is_vertex[static_cast<std::size_t>(at)] = 1;
   std::map<std::pair<int, int>, std::vector<std::pair<double, Point2>>> inserts;  // (ring, edge) -> (t, point)
   for (const Segment2& chord : chords) {
     for (const Point2& p : {chord.a, chord.b}) {
-      if (is_vertex.count({p.x, p.y})) continue;
+      const std::size_t at = static_cast<std::size_t>(end_index(p));  // every chord end is among the ends
+      if (is_vertex[at]) continue;
       int best_ring = -1, best_edge = -1;
       double best = 1e-6, best_t = 0.0;
-      for (std::size_t r = 0; r < rings.size(); ++r) {
-        const Ring& ring = rings[r];
-        for (std::size_t i = 0; i < ring.size(); ++i) {
-          const Segment2 e{ring[i], ring[(i + 1) % ring.size()]};
-          // An edge whose box is far from p is not within best of it: skip the exact distance.
-          if (p.x < std::min(e.a.x, e.b.x) - kNearBox || p.x > std::max(e.a.x, e.b.x) + kNearBox ||
-              p.y < std::min(e.a.y, e.b.y) - kNearBox || p.y > std::max(e.a.y, e.b.y) + kNearBox)
-            continue;
-          const double d = distance_to_segment(p, e);
-          if (d < best) {
-            best = d;
-            best_ring = static_cast<int>(r);
-            best_edge = static_cast<int>(i);
-            const Point2 v = minus(e.b, e.a);
-            best_t = dot(minus(p, e.a), v) / dot(v, v);
-          }
+      // The edges near p in ring and edge order, as the scan of every edge met them.
+      for (const int id : grid.near(p)) {
+        const auto [r, i] = edge_of[static_cast<std::size_t>(id)];
+        const Ring& ring = rings[static_cast<std::size_t>(r)];
+        const Segment2 e{ring[static_cast<std::size_t>(i)], ring[(static_cast<std::size_t>(i) + 1) % ring.size()]};
+        // An edge whose box is far from p is not within best of it: skip the exact distance.
+        if (p.x < std::min(e.a.x, e.b.x) - kNearBox || p.x > std::max(e.a.x, e.b.x) + kNearBox ||
+            p.y < std::min(e.a.y, e.b.y) - kNearBox || p.y > std::max(e.a.y, e.b.y) + kNearBox)
+          continue;
+        const double d = distance_to_segment(p, e);
+        if (d < best) {
+          best = d;
+          best_ring = r;
+          best_edge = i;
+          const Point2 v = minus(e.b, e.a);
+          best_t = dot(minus(p, e.a), v) / dot(v, v);
         }
       }
       if (best_ring < 0) throw Error("a cut end point is not on the polygon's boundary");
       inserts[{best_ring, best_edge}].emplace_back(best_t, p);
-      is_vertex[{p.x, p.y}] = true;
+      is_vertex[at] = 1;
     }
   }
   for (std::size_t r = 0; r < rings.size(); ++r) {
@@ -102,22 +204,32 @@ std::vector<Ring> rings_with_chord_ends(const PolygonWithHoles& polygon, const s
 // vertices numbered by first appearance so that the walk below is deterministic.
 HalfEdgeGraph half_edge_graph(const std::vector<Ring>& rings, const std::vector<Segment2>& chords) {
   HalfEdgeGraph g;
-  PointMap<int> vertex_id;
-  auto id_of = [&](const Point2& p) {
-    const auto [it, added] = vertex_id.emplace(std::pair<double, double>{p.x, p.y}, static_cast<int>(g.vertices.size()));
-    if (added) g.vertices.push_back(p);
-    return it->second;
-  };
-  for (const Ring& ring : rings)
-    for (std::size_t i = 0; i < ring.size(); ++i) g.half.push_back({id_of(ring[i]), id_of(ring[(i + 1) % ring.size()]), -1});
+  // The points in the order the edges meet them first: the rings' vertices, then the chords' ends.
+  std::vector<Point2> points;
+  for (const Ring& ring : rings) points.insert(points.end(), ring.begin(), ring.end());
   for (const Segment2& chord : chords) {
-    const int a = id_of(chord.a), b = id_of(chord.b);
+    points.push_back(chord.a);
+    points.push_back(chord.b);
+  }
+  const std::vector<int> id = numbered_by_first_appearance(points, g.vertices);
+  std::size_t at = 0;
+  for (const Ring& ring : rings) {
+    for (std::size_t i = 0; i < ring.size(); ++i) g.half.push_back({id[at + i], id[at + (i + 1) % ring.size()], -1});
+    at += ring.size();
+  }
+  for (std::size_t j = 0; j < chords.size(); ++j, at += 2) {
+    const int a = id[at], b = id[at + 1];
     const int k = static_cast<int>(g.half.size());
     g.half.push_back({a, b, k + 1});
     g.half.push_back({b, a, k});
   }
-  g.outgoing.resize(g.vertices.size());
-  for (std::size_t k = 0; k < g.half.size(); ++k) g.outgoing[static_cast<std::size_t>(g.half[k].from)].push_back(static_cast<int>(k));
+  g.out_start.assign(g.vertices.size() + 1, 0);
+  for (const HalfEdge& h : g.half) ++g.out_start[static_cast<std::size_t>(h.from) + 1];
+  for (std::size_t v = 1; v < g.out_start.size(); ++v) g.out_start[v] += g.out_start[v - 1];
+  g.out_edges.resize(g.half.size());
+  std::vector<int> fill(g.out_start.begin(), g.out_start.end() - 1);
+  for (std::size_t k = 0; k < g.half.size(); ++k)
+    g.out_edges[static_cast<std::size_t>(fill[static_cast<std::size_t>(g.half[k].from)]++)] = static_cast<int>(k);
   return g;
 }
 
@@ -130,7 +242,8 @@ std::vector<std::vector<int>> face_cycles(const HalfEdgeGraph& g) {
     const HalfEdge& h = g.half[static_cast<std::size_t>(k)];
     int best = -1;
     double best_turn = -kInfinity;
-    for (const int o : g.outgoing[static_cast<std::size_t>(h.to)]) {
+    for (int e = g.out_start[static_cast<std::size_t>(h.to)]; e < g.out_start[static_cast<std::size_t>(h.to) + 1]; ++e) {
+      const int o = g.out_edges[static_cast<std::size_t>(e)];
       if (o == h.twin) continue;
       const double t = turn_angle(g.vertices[static_cast<std::size_t>(h.from)], g.vertices[static_cast<std::size_t>(h.to)],
                                   g.vertices[static_cast<std::size_t>(g.half[static_cast<std::size_t>(o)].to)]);

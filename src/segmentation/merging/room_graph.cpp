@@ -30,21 +30,68 @@ double perimeter(const PolygonWithHoles& polygon) {
   return length;
 }
 
-// Where the line p + t·u (u a unit vector) crosses the rings of one piece, as parameters t; the
+// Vertices per chunk of a ring whose box add_crossings() tests before the vertices.
+constexpr std::size_t kRingChunk = 16;
+
+// The bounding boxes of the ring's vertices kRingChunk at a time, in order.
+std::vector<Box> ring_chunks(const Ring& ring) {
+  std::vector<Box> chunks;
+  for (std::size_t first = 0; first < ring.size(); first += kRingChunk) {
+    Box& b = chunks.emplace_back();
+    for (std::size_t i = first; i < std::min(first + kRingChunk, ring.size()); ++i) {
+      b.x0 = std::min(b.x0, ring[i].x);
+      b.y0 = std::min(b.y0, ring[i].y);
+      b.x1 = std::max(b.x1, ring[i].x);
+      b.y1 = std::max(b.y1, ring[i].y);
+    }
+  }
+  return chunks;
+}
+
+// Where the line p + t·u (u a unit vector) crosses a ring of one piece, as parameters t; the
 // crossing rule is half-open on the side of the line (as the rasterizer's), so a vertex on the line
-// is counted once and the even-odd pairing of the sorted values gives the piece's chords.
-void add_crossings(const Ring& ring, const Point2& p, const Point2& u, std::vector<double>& ts) {
+// is counted once and the even-odd pairing of the sorted values gives the piece's chords. This runs
+// for every piece a chord's line meets on every side width merging measures, and real maps' pieces
+// have long jagged outlines: a run of vertices whose box (chunks, ring_chunks()) lies clearly on one
+// side of the line has no crossing inside it and is skipped; the rest are tested vertex by vertex, by
+// the same arithmetic, so the crossings are the same numbers in the same order.
+void add_crossings(const Ring& ring, const std::vector<Box>& chunks, const Point2& p, const Point2& u,
+                   std::vector<double>& ts) {
   const Point2 n{-u.y, u.x};
   const std::size_t count = ring.size();
-  for (std::size_t i = 0; i < count; ++i) {
-    const Point2& a = ring[i];
-    const Point2& b = ring[(i + 1) % count];
-    const double sa = (a.x - p.x) * n.x + (a.y - p.y) * n.y;
-    const double sb = (b.x - p.x) * n.x + (b.y - p.y) * n.y;
-    if ((sa > 0.0) == (sb > 0.0)) continue;
+  auto side_of = [&](const Point2& v) { return (v.x - p.x) * n.x + (v.y - p.y) * n.y; };
+  // +1: every vertex of chunk c is on the positive side, -1: none is, 0: either. The margin is far
+  // above the rounding of side_of (which is linear, so a vertex's side lies between its box corners').
+  auto chunk_side = [&](std::size_t c) {
+    const Box& b = chunks[c];
+    const double s[4] = {side_of({b.x0, b.y0}), side_of({b.x1, b.y0}), side_of({b.x0, b.y1}), side_of({b.x1, b.y1})};
+    const double margin = 1e-6;
+    if (std::min({s[0], s[1], s[2], s[3]}) > margin) return 1;
+    if (std::max({s[0], s[1], s[2], s[3]}) < -margin) return -1;
+    return 0;
+  };
+  auto add_edge = [&](const Point2& a, const Point2& b, double sa, double sb) {
+    if ((sa > 0.0) == (sb > 0.0)) return;
     const double ta = (a.x - p.x) * u.x + (a.y - p.y) * u.y;
     const double tb = (b.x - p.x) * u.x + (b.y - p.y) * u.y;
     ts.push_back(ta + (tb - ta) * sa / (sa - sb));
+  };
+  int side = chunks.empty() ? 0 : chunk_side(0);
+  for (std::size_t c = 0; c < chunks.size(); ++c) {
+    const std::size_t first = c * kRingChunk, last = std::min(first + kRingChunk, count) - 1;
+    const std::size_t after = last + 1 < count ? last + 1 : 0;
+    const int next_side = c + 1 < chunks.size() ? chunk_side(c + 1) : (chunks.size() == 1 ? side : chunk_side(0));
+    if (side == 0) {
+      double sa = side_of(ring[first]);
+      for (std::size_t i = first; i < last; ++i) {
+        const double sb = side_of(ring[i + 1]);
+        add_edge(ring[i], ring[i + 1], sa, sb);
+        sa = sb;
+      }
+    }
+    // The edge from the chunk's last vertex to the next chunk's first.
+    if (side == 0 || side != next_side) add_edge(ring[last], ring[after], side_of(ring[last]), side_of(ring[after]));
+    side = next_side;
   }
 }
 
@@ -95,6 +142,33 @@ std::vector<Point2> hull_of(const std::vector<Point2>& points) {
 
 }  // namespace
 
+// Every piece's directed edges, sorted, each with the first piece (in order) that has it: what the
+// measures of the outlines and the cut ends look edges up in, built once instead of a tree of the
+// edges per measure.
+struct RoomGraph::Edges {
+  std::vector<std::pair<Key, int>> sorted;
+
+  explicit Edges(const PieceSet& set) {
+    for (std::size_t i = 0; i < set.pieces.size(); ++i) {
+      auto add_ring = [&](const Ring& ring) {
+        for (std::size_t k = 0; k < ring.size(); ++k)
+          sorted.emplace_back(edge_key(ring[k], ring[(k + 1) % ring.size()]), static_cast<int>(i));
+      };
+      add_ring(set.pieces[i].outer);
+      for (const Ring& hole : set.pieces[i].holes) add_ring(hole);
+    }
+    std::sort(sorted.begin(), sorted.end());  // by edge, then piece: the first of an edge is its first piece
+  }
+
+  // The first piece with the edge a -> b, or -1.
+  int owner(const Point2& a, const Point2& b) const {
+    const Key key = edge_key(a, b);
+    const auto it = std::lower_bound(sorted.begin(), sorted.end(), key, [](const std::pair<Key, int>& e, const Key& k) { return e.first < k; });
+    return it != sorted.end() && it->first == key ? it->second : -1;
+  }
+  bool contains(const Point2& a, const Point2& b) const { return owner(a, b) >= 0; }
+};
+
 RoomGraph::RoomGraph(const PolygonWithHoles& polygon, const PieceSet& set, const cv::Mat& cells, double resolution,
                      double furniture_size)
     : set_(set), resolution_(resolution), parent_(set.pieces.size()) {
@@ -104,6 +178,8 @@ RoomGraph::RoomGraph(const PolygonWithHoles& polygon, const PieceSet& set, const
   boxes_.reserve(set.pieces.size());
   for (const PolygonWithHoles& piece : set.pieces) {
     boxes_.push_back(bounding_box(piece.outer));
+    chunks_.push_back({ring_chunks(piece.outer)});
+    for (const Ring& hole : piece.holes) chunks_.back().push_back(ring_chunks(hole));
     areas_.push_back(area(piece) * resolution * resolution);
     perimeters_.push_back(perimeter(piece) * resolution);
     double m[6] = {0, 0, 0, 0, 0, 0};
@@ -111,11 +187,12 @@ RoomGraph::RoomGraph(const PolygonWithHoles& polygon, const PieceSet& set, const
     for (const Ring& hole : piece.holes) add_ring_moments(hole, m);
     moments_.push_back({m[0], m[1], m[2], m[3], m[4], m[5]});
   }
-  find_sides();
+  const Edges edges(set);
+  find_sides(edges);
   side_widths_.assign(2 * sides_.size(), SideWidth{});
-  measure_cut_ends();
+  measure_cut_ends(edges);
   mark_furniture(polygon, furniture_size);
-  measure_outlines(cells);
+  measure_outlines(edges, cells);
 }
 
 namespace {
@@ -152,10 +229,9 @@ void classify_edge(const cv::Mat& cells, const Point2& a, const Point2& b, doubl
 
 // Each piece's outline edges that no other piece shares (walls in the making), split by what lies
 // beyond them in the grid.
-void RoomGraph::measure_outlines(const cv::Mat& cells) {
+void RoomGraph::measure_outlines(const Edges& edges, const cv::Mat& cells) {
   wall_lengths_.assign(set_.pieces.size(), 0.0);
   unknown_lengths_.assign(set_.pieces.size(), 0.0);
-  std::set<Key> edges;
   auto for_each_edge = [](const PolygonWithHoles& piece, const auto& visit) {
     auto ring_edges = [&visit](const Ring& ring) {
       for (std::size_t k = 0; k < ring.size(); ++k) visit(ring[k], ring[(k + 1) % ring.size()]);
@@ -163,12 +239,10 @@ void RoomGraph::measure_outlines(const cv::Mat& cells) {
     ring_edges(piece.outer);
     for (const Ring& hole : piece.holes) ring_edges(hole);
   };
-  for (const PolygonWithHoles& piece : set_.pieces)
-    for_each_edge(piece, [&](const Point2& a, const Point2& b) { edges.insert(edge_key(a, b)); });
   for (std::size_t i = 0; i < set_.pieces.size(); ++i) {
     double occupied = 0.0, unknown = 0.0;
     for_each_edge(set_.pieces[i], [&](const Point2& a, const Point2& b) {
-      if (edges.count(edge_key(b, a))) return;  // shared with another piece: a cut
+      if (edges.contains(b, a)) return;  // shared with another piece: a cut
       if (cells.empty()) occupied += distance(a, b);
       else classify_edge(cells, a, b, occupied, unknown);
     });
@@ -194,25 +268,35 @@ double RoomGraph::unknown_share(int r) {
 // The free-space angle at each cut end, and the wall edges there that the cut continues: pieces meet
 // only at shared vertices, so the interior angles of the pieces having the end as a vertex add up to
 // the free space's angle, and an edge met by no other piece in reverse is a wall.
-void RoomGraph::measure_cut_ends() {
+void RoomGraph::measure_cut_ends(const Edges& edges) {
   struct Corner {
     Point2 prev, next;
   };
-  std::map<std::pair<double, double>, std::vector<Corner>> corners;
-  std::set<Key> edges;
+  // The pieces' corners at the cut ends only (sorted), in the order of the pieces and their rings.
+  using Vertex = std::pair<double, double>;
+  std::vector<Vertex> ends;
+  for (std::size_t k = 0; k < sides_.size(); ++k)
+    if (sides_[k].left >= 0)
+      for (const Point2& end : {set_.cuts[k].a, set_.cuts[k].b}) ends.emplace_back(end.x, end.y);
+  std::sort(ends.begin(), ends.end());
+  ends.erase(std::unique(ends.begin(), ends.end()), ends.end());
+  auto end_index = [&ends](const Point2& v) -> std::ptrdiff_t {
+    const auto it = std::lower_bound(ends.begin(), ends.end(), Vertex{v.x, v.y});
+    return it != ends.end() && *it == Vertex{v.x, v.y} ? it - ends.begin() : -1;
+  };
+  std::vector<std::vector<Corner>> corners(ends.size());
   auto add_ring = [&](const Ring& ring) {
     const std::size_t n = ring.size();
     for (std::size_t i = 0; i < n; ++i) {
-      const Point2& v = ring[i];
-      corners[{v.x, v.y}].push_back({ring[(i + n - 1) % n], ring[(i + 1) % n]});
-      edges.insert(edge_key(v, ring[(i + 1) % n]));
+      const std::ptrdiff_t at = end_index(ring[i]);
+      if (at >= 0) corners[static_cast<std::size_t>(at)].push_back({ring[(i + n - 1) % n], ring[(i + 1) % n]});
     }
   };
   for (const PolygonWithHoles& piece : set_.pieces) {
     add_ring(piece.outer);
     for (const Ring& hole : piece.holes) add_ring(hole);
   }
-  auto is_wall = [&](const Point2& a, const Point2& b) { return !edges.count(edge_key(b, a)); };
+  auto is_wall = [&](const Point2& a, const Point2& b) { return !edges.contains(b, a); };
   for (std::size_t k = 0; k < sides_.size(); ++k) {
     Side& side = sides_[k];
     if (side.left < 0) continue;
@@ -225,9 +309,9 @@ void RoomGraph::measure_cut_ends() {
       const Point2& v = e == 0 ? c.a : c.b;
       const Point2& other = e == 0 ? c.b : c.a;
       const Point2 out{(v.x - other.x) / length, (v.y - other.y) / length};  // the cut's direction beyond v
-      const auto it = corners.find({v.x, v.y});
-      if (it == corners.end()) continue;
-      for (const Corner& corner : it->second) {
+      const std::ptrdiff_t at = end_index(v);
+      if (at < 0) continue;
+      for (const Corner& corner : corners[static_cast<std::size_t>(at)]) {
         const double to_next = std::atan2(corner.next.y - v.y, corner.next.x - v.x);
         const double to_prev = std::atan2(corner.prev.y - v.y, corner.prev.x - v.x);
         double interior = to_prev - to_next;
@@ -255,26 +339,17 @@ void RoomGraph::measure_cut_ends() {
   }
 }
 
-void RoomGraph::find_sides() {
-  std::map<Key, int> owner;
-  for (std::size_t i = 0; i < set_.pieces.size(); ++i) {
-    auto add_ring = [&](const Ring& ring) {
-      for (std::size_t k = 0; k < ring.size(); ++k) owner.emplace(edge_key(ring[k], ring[(k + 1) % ring.size()]), static_cast<int>(i));
-    };
-    add_ring(set_.pieces[i].outer);
-    for (const Ring& hole : set_.pieces[i].holes) add_ring(hole);
-  }
+void RoomGraph::find_sides(const Edges& edges) {
   sides_.resize(set_.cuts.size());
   piece_sides_.resize(set_.pieces.size());
   for (std::size_t k = 0; k < set_.cuts.size(); ++k) {
     const Segment2& c = set_.cuts[k];
-    const auto left = owner.find(edge_key(c.a, c.b));
-    const auto right = owner.find(edge_key(c.b, c.a));
-    if (left == owner.end() || right == owner.end() || left->second == right->second) continue;
+    const int left = edges.owner(c.a, c.b), right = edges.owner(c.b, c.a);
+    if (left < 0 || right < 0 || left == right) continue;
     const CutRule rule = k < set_.rules.size() ? set_.rules[k] : CutRule::kDecomposition;
-    sides_[k] = {left->second, right->second, distance(c.a, c.b) * resolution_, rule};
-    piece_sides_[static_cast<std::size_t>(left->second)].push_back(k);
-    piece_sides_[static_cast<std::size_t>(right->second)].push_back(k);
+    sides_[k] = {left, right, distance(c.a, c.b) * resolution_, rule};
+    piece_sides_[static_cast<std::size_t>(left)].push_back(k);
+    piece_sides_[static_cast<std::size_t>(right)].push_back(k);
   }
 }
 
@@ -302,7 +377,17 @@ void RoomGraph::mark_furniture(const PolygonWithHoles& polygon, double furniture
       const Point2& end = it->at;
       if (end.y < box.y0 - near || end.y > box.y1 + near) continue;
       bool on = false;
-      for (std::size_t i = 0; i < hole.size() && !on; ++i) on = distance_to_segment(end, {hole[i], hole[(i + 1) % hole.size()]}) <= near;
+      for (std::size_t i = 0; i < hole.size() && !on; ++i) {
+        // An edge whose box (grown by a little more than near) misses the end is farther than near:
+        // most of a long hole's edges, measured without the distance.
+        const Point2& a = hole[i];
+        const Point2& b = hole[(i + 1) % hole.size()];
+        const double grow = near * 1.001 + 1e-9;
+        if (end.x < std::min(a.x, b.x) - grow || end.x > std::max(a.x, b.x) + grow || end.y < std::min(a.y, b.y) - grow ||
+            end.y > std::max(a.y, b.y) + grow)
+          continue;
+        on = distance_to_segment(end, {a, b}) <= near;
+      }
       if (!on) continue;
       Side& side = sides_[it->k];
       ++side.ends_on_holes;
@@ -438,8 +523,10 @@ double RoomGraph::chord(int r, const Point2& p, const Point2& u) {
                          (b.x0 - p.x) * n.x + (b.y1 - p.y) * n.y, (b.x1 - p.x) * n.x + (b.y1 - p.y) * n.y};
     if (std::min({s[0], s[1], s[2], s[3]}) > 0.0 || std::max({s[0], s[1], s[2], s[3]}) <= 0.0) continue;
     ts.clear();
-    add_crossings(set_.pieces[i].outer, p, u, ts);
-    for (const Ring& hole : set_.pieces[i].holes) add_crossings(hole, p, u, ts);
+    const PolygonWithHoles& piece = set_.pieces[i];
+    const std::vector<std::vector<Box>>& chunks = chunks_[i];
+    add_crossings(piece.outer, chunks[0], p, u, ts);
+    for (std::size_t h = 0; h < piece.holes.size(); ++h) add_crossings(piece.holes[h], chunks[h + 1], p, u, ts);
     std::sort(ts.begin(), ts.end());
     for (std::size_t k = 0; k + 1 < ts.size(); k += 2) spans.emplace_back(ts[k], ts[k + 1]);
   }

@@ -84,10 +84,11 @@ class RoomGraph {
   PieceSet result();
 
  private:
-  void find_sides();
-  void measure_cut_ends();
+  struct Edges;  // the pieces' edges, looked up by the measures below
+  void find_sides(const Edges& edges);
+  void measure_cut_ends(const Edges& edges);
   void mark_furniture(const PolygonWithHoles& polygon, double furniture_size);
-  void measure_outlines(const cv::Mat& cells);
+  void measure_outlines(const Edges& edges, const cv::Mat& cells);
   double chord(int r, const Point2& p, const Point2& u);
   double measure_side_width(std::size_t k, int r, bool left, double depth);
 
@@ -96,6 +97,7 @@ class RoomGraph {
   std::vector<int> parent_;
   std::vector<std::vector<int>> members_;  // room root -> its pieces
   std::vector<Box> boxes_;
+  std::vector<std::vector<std::vector<Box>>> chunks_;  // per piece, outer ring then holes: ring_chunks() for chord()
   std::vector<double> areas_;       // m² per piece
   std::vector<double> perimeters_;  // m per piece
   std::vector<double> wall_lengths_, unknown_lengths_;  // m per piece: outline along walls, along never-seen cells

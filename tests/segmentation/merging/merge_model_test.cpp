@@ -1,6 +1,8 @@
 #include "topocut/segmentation/merge_model.h"
 
 #include <cmath>
+#include <cstring>
+#include <sstream>
 
 #include <gtest/gtest.h>
 
@@ -53,6 +55,27 @@ TEST(MergeModel, BadTextIsAnErrorNamingTheLine) {
   } catch (const Error& e) {
     EXPECT_NE(std::string(e.what()).find("line 3"), std::string::npos) << e.what();
   }
+}
+
+// The parser converts plain decimals itself (std::from_chars) and leaves the rest to the stream: a
+// bias must read as the stream reads it, to the bit, or be refused as the stream refuses it.
+TEST(MergeModel, NumbersReadAsTheStreamReadsThem) {
+  for (const std::string number :
+       {"0", "-0", "1", "-2.5", "0.1", "3.14159265358979323846264338327950288", "1e-310", "1e-400", "-4.9406564584124654e-324",
+        "1.7976931348623157e308", "2E5", "6.02e+23", "+7", "8.", ".5", "00012.50", "123456789012345678901234567890"}) {
+    std::istringstream stream(number);
+    double expected = 0.0;
+    const bool read = static_cast<bool>(stream >> expected) && std::isfinite(expected);
+    const std::string text = "topocut-merge-model 1\nbias " + number + "\n";
+    if (!read) {
+      EXPECT_THROW(parse_merge_model(text), Error) << number;
+      continue;
+    }
+    const double bias = parse_merge_model(text).bias;
+    EXPECT_EQ(std::memcmp(&bias, &expected, sizeof bias), 0) << number << ": " << bias << " against " << expected;
+  }
+  for (const std::string refused : {"1e400", "-1e999", "inf", "nan", "1e", "-", "1.5x", "0x10"})
+    EXPECT_THROW(parse_merge_model("topocut-merge-model 1\nbias " + refused + "\n"), Error) << refused;
 }
 
 TEST(MergeModel, TheShippedModelParsesAndUsesKnownFeatures) {
