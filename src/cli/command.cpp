@@ -87,7 +87,10 @@ std::optional<po::variables_map> parse_options(const std::string& usage, const s
   all.add(options);
   po::variables_map vm;
   try {
-    po::store(po::command_line_parser(dashed_names(args)).options(all).positional(positional).run(), vm);
+    // No guessing of abbreviated names: an option is spelled one way, and a prefix that names one option
+    // today (decompose's old --concavity for --concavity-measure) would silently name another tomorrow.
+    const int style = po::command_line_style::default_style & ~po::command_line_style::allow_guessing;
+    po::store(po::command_line_parser(dashed_names(args)).options(all).positional(positional).style(style).run(), vm);
     if (vm.count("help")) {
       std::cout << "Usage: " << usage << "\n\n" << description << "\n\n" << all << std::flush;
       return std::nullopt;
