@@ -9,6 +9,7 @@
 
 #include "topocut/core/error.h"
 #include "topocut/core/infinity.h"
+#include "segmentation/cuts/edge_grid.h"
 #include "segmentation/cuts/plane_vectors.h"
 
 namespace topocut {
@@ -61,69 +62,24 @@ std::vector<int> numbered_by_first_appearance(const std::vector<Point2>& points,
 // edge within a chord end's distance (1e-6) of it.
 constexpr double kNearBox = 1e-3;
 
-// The rings' edges in a uniform grid, each in the cells that its line passes within kNearBox of,
-// numbered ring by ring in ring order: the edges a point can lie on, without every edge of the
-// polygon for every chord end.
-class RingEdgeGrid {
- public:
-  explicit RingEdgeGrid(const std::vector<Ring>& rings) {
-    Box all;
-    for (const Ring& ring : rings) {
-      const Box b = bounding_box(ring);
-      all = {std::min(all.x0, b.x0), std::min(all.y0, b.y0), std::max(all.x1, b.x1), std::max(all.y1, b.y1)};
-    }
-    if (!(all.x0 <= all.x1)) return;
-    // About a cell per edge, at least 16 map cells a side: memory as the polygon's, not its box's.
-    std::size_t edges = 0;
-    for (const Ring& ring : rings) edges += ring.size();
-    cell_ = std::max(16.0, std::sqrt((all.x1 - all.x0) * (all.y1 - all.y0) / static_cast<double>(std::max<std::size_t>(edges, 1))));
-    x0_ = all.x0 - cell_;
-    y0_ = all.y0 - cell_;
-    nx_ = column(all.x1 + cell_) + 1;
-    ny_ = row(all.y1 + cell_) + 1;
-    cells_.resize(static_cast<std::size_t>(nx_) * static_cast<std::size_t>(ny_));
-    int id = 0;
-    for (const Ring& ring : rings)
-      for (std::size_t i = 0; i < ring.size(); ++i, ++id) add(ring[i], ring[(i + 1) % ring.size()], id);
-  }
+// The rings' edges, numbered ring by ring in ring order.
+std::vector<cut_search::Edge> ring_edges(const std::vector<Ring>& rings) {
+  std::vector<cut_search::Edge> edges;
+  for (std::size_t r = 0; r < rings.size(); ++r)
+    for (std::size_t i = 0; i < rings[r].size(); ++i)
+      edges.push_back({rings[r][i], rings[r][(i + 1) % rings[r].size()], static_cast<int>(r), static_cast<int>(i)});
+  return edges;
+}
 
-  // The edges (by number, ascending) registered in the cell of p: every edge within kNearBox of p.
-  const std::vector<int>& near(const Point2& p) const {
-    static const std::vector<int> none;
-    const int cx = column(p.x), cy = row(p.y);
-    if (cx < 0 || cy < 0 || cx >= nx_ || cy >= ny_) return none;
-    return cells_[static_cast<std::size_t>(cy) * static_cast<std::size_t>(nx_) + static_cast<std::size_t>(cx)];
-  }
-
- private:
-  void add(const Point2& a, const Point2& b, int id) {
-    const Point2 d = minus(b, a);
-    const double l = length(d);
-    const int cx0 = column(std::min(a.x, b.x) - kNearBox), cx1 = column(std::max(a.x, b.x) + kNearBox);
-    const int cy0 = row(std::min(a.y, b.y) - kNearBox), cy1 = row(std::max(a.y, b.y) + kNearBox);
-    for (int cy = cy0; cy <= cy1; ++cy)
-      for (int cx = cx0; cx <= cx1; ++cx) {
-        if (l > 0.0 && cx1 > cx0 && cy1 > cy0) {
-          // Skip a cell the edge's line passes farther than kNearBox from (all four corners beyond it on one side).
-          const double bx = x0_ + cx * cell_, by = y0_ + cy * cell_;
-          double lo = kInfinity, hi = -kInfinity;
-          for (const Point2& c : {Point2{bx, by}, Point2{bx + cell_, by}, Point2{bx, by + cell_}, Point2{bx + cell_, by + cell_}}) {
-            const double side = cross(d, minus(c, a)) / l;
-            lo = std::min(lo, side);
-            hi = std::max(hi, side);
-          }
-          if (lo > kNearBox || hi < -kNearBox) continue;
-        }
-        cells_[static_cast<std::size_t>(cy) * static_cast<std::size_t>(nx_) + static_cast<std::size_t>(cx)].push_back(id);
-      }
-  }
-  int column(double x) const { return static_cast<int>(std::floor((x - x0_) / cell_)); }
-  int row(double y) const { return static_cast<int>(std::floor((y - y0_) / cell_)); }
-
-  double cell_ = 16.0, x0_ = 0.0, y0_ = 0.0;  // cell_ in grid units (map cells)
-  int nx_ = 0, ny_ = 0;
-  std::vector<std::vector<int>> cells_;
-};
+// A grid cell for the edges: about a cell per edge, at least 16 map cells a side, so that the grid's
+// memory is the polygon's, not its box's.
+double edge_cell(const std::vector<cut_search::Edge>& edges) {
+  Box all;
+  for (const cut_search::Edge& e : edges)
+    all = {std::min({all.x0, e.a.x, e.b.x}), std::min({all.y0, e.a.y, e.b.y}), std::max({all.x1, e.a.x, e.b.x}),
+           std::max({all.y1, e.a.y, e.b.y})};
+  return std::max(16.0, std::sqrt((all.x1 - all.x0) * (all.y1 - all.y0) / static_cast<double>(std::max<std::size_t>(edges.size(), 1))));
+}
 
 // The rings with every chord end point that is not a vertex inserted as a vertex of the edge it
 // lies on (in order along the edge), so chords meet the rings only at vertices. Throws if a chord
@@ -131,11 +87,9 @@ class RingEdgeGrid {
 std::vector<Ring> rings_with_chord_ends(const PolygonWithHoles& polygon, const std::vector<Segment2>& chords) {
   std::vector<Ring> rings{polygon.outer};
   for (const Ring& hole : polygon.holes) rings.push_back(hole);
-  // Edge number -> (ring, index), for the grid's numbers.
-  std::vector<std::pair<int, int>> edge_of;
-  for (std::size_t r = 0; r < rings.size(); ++r)
-    for (std::size_t i = 0; i < rings[r].size(); ++i) edge_of.emplace_back(static_cast<int>(r), static_cast<int>(i));
-  const RingEdgeGrid grid(rings);
+  // Each edge in the cells its segment passes within kNearBox of: the edges a chord end may lie on.
+  const std::vector<cut_search::Edge> edges = ring_edges(rings);
+  const cut_search::EdgeGrid grid(edges, edge_cell(edges), kNearBox);
   // The chord ends, sorted, each marked once it is a vertex (of the rings, or inserted below): only
   // these are ever asked about, so the rings' vertices are looked up among them, not all hashed.
   using Key = std::pair<double, double>;
@@ -160,10 +114,9 @@ std::vector<Ring> rings_with_chord_ends(const PolygonWithHoles& polygon, const s
       int best_ring = -1, best_edge = -1;
       double best = 1e-6, best_t = 0.0;
       // The edges near p in ring and edge order, as the scan of every edge met them.
-      for (const int id : grid.near(p)) {
-        const auto [r, i] = edge_of[static_cast<std::size_t>(id)];
-        const Ring& ring = rings[static_cast<std::size_t>(r)];
-        const Segment2 e{ring[static_cast<std::size_t>(i)], ring[(static_cast<std::size_t>(i) + 1) % ring.size()]};
+      for (const int id : grid.in_cell(p)) {
+        const cut_search::Edge& edge = edges[static_cast<std::size_t>(id)];
+        const Segment2 e{edge.a, edge.b};
         // An edge whose box is far from p is not within best of it: skip the exact distance.
         if (p.x < std::min(e.a.x, e.b.x) - kNearBox || p.x > std::max(e.a.x, e.b.x) + kNearBox ||
             p.y < std::min(e.a.y, e.b.y) - kNearBox || p.y > std::max(e.a.y, e.b.y) + kNearBox)
@@ -171,8 +124,8 @@ std::vector<Ring> rings_with_chord_ends(const PolygonWithHoles& polygon, const s
         const double d = distance_to_segment(p, e);
         if (d < best) {
           best = d;
-          best_ring = r;
-          best_edge = i;
+          best_ring = edge.ring;
+          best_edge = edge.index;
           const Point2 v = minus(e.b, e.a);
           best_t = dot(minus(p, e.a), v) / dot(v, v);
         }
