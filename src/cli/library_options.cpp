@@ -9,16 +9,16 @@
 namespace topocut::cli {
 
 void add_segment_options(po::options_description& options, const SegmentSettings& defaults) {
-  const std::vector<OptionRow<SegmentSettings>>& rows = segment_option_rows();
-  auto first = rows.begin();
+  const std::span<const OptionRow<SegmentSettings>> rows(segment_option_rows());
+  std::size_t first = 0;
   for (const OptionGroup& group : segment_option_groups()) {
     po::options_description part(group.heading);
-    add_option_rows(part, std::vector<OptionRow<SegmentSettings>>(first, first + static_cast<std::ptrdiff_t>(group.rows)), defaults);
+    add_option_rows(part, rows.subspan(first, group.rows), defaults);
     if (group.heading == kMergingHeading)
       part.add_options()(kMergeModelOption.name, po::value<std::string>()->value_name(kMergeModelOption.value_name),
                          kMergeModelOption.help);
     options.add(part);
-    first += static_cast<std::ptrdiff_t>(group.rows);
+    first += group.rows;
   }
 }
 

@@ -3,6 +3,7 @@
 // rows it takes, with the defaults it uses shown in its help, and reads back what the command line
 // or its --config file gave. The names, help lines and checks are the library's, defined once.
 #include <optional>
+#include <span>
 #include <typeinfo>
 #include <vector>
 
@@ -34,8 +35,7 @@ bool switch_on_by_default(const OptionRow<Target>& row) {
 // and the ROS node do), a number as text (read by parse_option_number(), the parser of every front
 // end) whose help shows its value in defaults in its shortest form ("--resolution M (=0.05)").
 template <typename Target>
-void add_option_rows(po::options_description& options, const std::vector<OptionRow<Target>>& rows,
-                     const Target& defaults) {
+void add_option_rows(po::options_description& options, std::span<const OptionRow<Target>> rows, const Target& defaults) {
   for (const OptionRow<Target>& row : rows) {
     if (switch_on_by_default(row)) {
       options.add_options()(row.name.c_str(),
@@ -49,6 +49,13 @@ void add_option_rows(po::options_description& options, const std::vector<OptionR
                             row.help.c_str());
     }
   }
+}
+
+// The same for a whole table.
+template <typename Target>
+void add_option_rows(po::options_description& options, const std::vector<OptionRow<Target>>& rows,
+                     const Target& defaults) {
+  add_option_rows(options, std::span<const OptionRow<Target>>(rows), defaults);
 }
 
 // Sets in target every row that vm holds a given (not defaulted) value for, read and checked as every
