@@ -10,6 +10,10 @@
 
 #include <opencv2/imgproc.hpp>
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 #include "topocut/core/error.h"
 
 namespace topocut {
@@ -69,6 +73,23 @@ struct OrphanBlob {
   cv::Rect window;
 };
 
+constexpr int kLabelTile = 16;  // cells a side of a tile of LabelPresence
+
+// Whether one of the kLabelTile cells from cell on holds a label (> 0): 1 or 0.
+unsigned char any_label(const int* cell) {
+#if defined(__SSE2__)
+  const __m128i zero = _mm_setzero_si128();
+  __m128i any = zero;
+  for (int k = 0; k < kLabelTile; k += 4)
+    any = _mm_or_si128(any, _mm_cmpgt_epi32(_mm_loadu_si128(reinterpret_cast<const __m128i*>(cell + k)), zero));
+  return _mm_movemask_epi8(any) != 0;
+#else
+  int any = 0;
+  for (int k = 0; k < kLabelTile; ++k) any |= cell[k] > 0;
+  return static_cast<unsigned char>(any);
+#endif
+}
+
 // Whether a window of the label image holds a label: a tile summary (one count per 16 x 16 tile,
 // summed) rules most windows out in constant time; the cells are counted only when a tile says yes.
 class LabelPresence {
@@ -79,13 +100,9 @@ class LabelPresence {
     for (int r = 0; r < labels.rows; ++r) {
       const int* row = labels.ptr<int>(r);
       unsigned char* tile_row = tiles.ptr<unsigned char>(r / kTile);
-      // A fixed count per tile, so that the compiler tests a tile's cells together.
-      for (int t = 0; t < whole; ++t) {
-        const int* cell = row + t * kTile;
-        int any = 0;
-        for (int k = 0; k < kTile; ++k) any |= cell[k] > 0;
-        tile_row[t] |= static_cast<unsigned char>(any);
-      }
+      // A tile a row above found a label in is not read again: inside rooms, once per tile.
+      for (int t = 0; t < whole; ++t)
+        if (!tile_row[t]) tile_row[t] = any_label(row + t * kTile);
       for (int c = whole * kTile; c < labels.cols; ++c) tile_row[c / kTile] |= row[c] > 0;
     }
     cv::integral(tiles, sums_, CV_32S);
@@ -104,7 +121,7 @@ class LabelPresence {
   }
 
  private:
-  static constexpr int kTile = 16;
+  static constexpr int kTile = kLabelTile;
   const cv::Mat& labels_;
   cv::Mat sums_;
 };
