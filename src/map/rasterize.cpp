@@ -298,14 +298,15 @@ int nearest_in_band(const cv::Mat& labels, RowNeighbours& rows, int r, int c, in
   return label;
 }
 
+constexpr int kSmallRings = 8;  // rings nearest_in_small_rings() searches
+
 // Most specks lie a cell or two from a label: a search in the first square rings around the cell
 // (each row by row and column by column, a label taking the place of the best only when strictly
 // nearer) settles them when no farther ring can hold a nearer label; std::nullopt otherwise.
 std::optional<int> nearest_in_small_rings(const cv::Mat& labels, int r, int c) {
-  constexpr int kRings = 8;
   long best = std::numeric_limits<long>::max();
   int label = 0;
-  for (int k = 1; k <= kRings; ++k) {
+  for (int k = 1; k <= kSmallRings; ++k) {
     for (int y = r - k; y <= r + k; ++y) {
       if (y < 0 || y >= labels.rows) continue;
       const int* row = labels.ptr<int>(y);
@@ -347,7 +348,9 @@ SpeckLabels nearest_in_rings(const cv::Mat& labels, const LabelPresence& presenc
   RowNeighbours rows(labels, 2 * kRingCap + 1);
   for (const std::size_t k : search) {
     const int i = unlabelled[k];
-    const std::optional<int> near = nearest_in_small_rings(labels, i / w, i % w);
+    // Where no tile within the small rings holds a label, their search finds none: it is not made.
+    const cv::Rect rings(i % w - kSmallRings, i / w - kSmallRings, 2 * kSmallRings + 1, 2 * kSmallRings + 1);
+    const std::optional<int> near = presence.maybe(rings & all) ? nearest_in_small_rings(labels, i / w, i % w) : std::nullopt;
     found[k] = near ? *near : nearest_in_band(labels, rows, i / w, i % w, kRingCap);
   }
   SpeckLabels specks;
