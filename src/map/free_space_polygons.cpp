@@ -1,8 +1,8 @@
 #include "topocut/map/free_space_polygons.h"
 
 #include <algorithm>
-#include <cmath>
 #include <bit>
+#include <cmath>
 #include <cstdlib>
 #include <limits>
 #include <vector>

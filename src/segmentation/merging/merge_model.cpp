@@ -182,7 +182,7 @@ MergeModel parse_merge_model(const std::string& text) {
   std::istringstream in;
   while (std::getline(lines, raw)) {
     ++number;
-    // Nine in ten lines are plain tree nodes: read without the stream (a third of the cost left).
+    // Nine in ten lines are plain tree nodes: read without the stream, which was most of the cost.
     if (in_tree) {
       if (const std::optional<MergeTreeNode> node = plain_tree_node(raw)) {
         if (++nodes > kMaxMergeModelNodes) throw too_many("tree nodes", kMaxMergeModelNodes);
