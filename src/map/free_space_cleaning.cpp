@@ -1,11 +1,14 @@
 #include "topocut/map/free_space_cleaning.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
-#include <cstdint>
-#include <cstring>
 #include <string>
 #include <vector>
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 #include "map/row_runs.h"
 #include "topocut/core/error.h"
@@ -123,6 +126,21 @@ RowRuns inside_building(const RowRuns& lost, const RowRuns& floor, const cv::Mat
   std::vector<unsigned char> outside(component.size());
   for (std::size_t k = 0; k < outside.size(); ++k) outside[k] = reached[static_cast<std::size_t>(component[k])];
   return subtract(lost, select_runs(open, outside));
+}
+
+// The first of the cells [from, to) of row that is nonzero, to if none. Most cells the cleaning
+// leaves untouched: 16 at a compare.
+int first_nonzero(const unsigned char* row, int from, int to) {
+  int x = from;
+#if defined(__SSE2__)
+  const __m128i zero = _mm_setzero_si128();
+  for (; x + 16 <= to; x += 16) {
+    const unsigned zeros = static_cast<unsigned>(_mm_movemask_epi8(_mm_cmpeq_epi8(_mm_loadu_si128(reinterpret_cast<const __m128i*>(row + x)), zero)));
+    if (zeros != 0xFFFFu) return x + std::countr_zero(~zeros);
+  }
+#endif
+  while (x < to && row[x] == 0) ++x;
+  return x;
 }
 
 // The bounding box of each 8-connected part of runs (the parts rays_of() judges one by one).
@@ -247,17 +265,11 @@ cv::Mat cells_after_cleaning(const cv::Mat& cells, const CleanedFreeSpace& clean
   CV_Assert(cleaned.removed.size() == cells.size());
   cv::Mat out = cells.clone();
   const cv::Rect w = cleaned.window;
+  const int end = w.x + w.width;
   for (int y = w.y; y < w.y + w.height; ++y) {
     const unsigned char* removed = cleaned.removed.ptr<unsigned char>(y);
     unsigned char* cell = out.ptr<unsigned char>(y);
-    for (int x = w.x; x < w.x + w.width; ++x) {
-      // Most cells are untouched: eight at a time.
-      std::uint64_t eight = 1;
-      if (x + 8 <= w.x + w.width) std::memcpy(&eight, removed + x, sizeof eight);
-      if (eight == 0) {
-        x += 7;
-        continue;
-      }
+    for (int x = first_nonzero(removed, w.x, end); x < end; x = first_nonzero(removed, x + 1, end)) {
       if (removed[x] == kCellRemovedOutside) cell[x] = kUnknown;
       else if (removed[x] == kCellObstacleSpeck && cell[x] == kUnknown) cell[x] = kFree;
     }

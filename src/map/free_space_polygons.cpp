@@ -1,6 +1,7 @@
 #include "topocut/map/free_space_polygons.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstdlib>
 #include <limits>
@@ -10,6 +11,10 @@
 #include <utility>
 
 #include <opencv2/imgproc.hpp>
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 #include "topocut/core/error.h"
 
@@ -21,6 +26,23 @@ std::uint64_t load8(const unsigned char* p) {
   std::uint64_t v;
   std::memcpy(&v, p, sizeof v);
   return v;
+}
+
+// The first column in [from, to) where rows a and b hold different bytes, to if none. The masks'
+// rows are mostly equal to the row above (boundaries are short): 16 columns per compare.
+int first_difference(const unsigned char* a, const unsigned char* b, int from, int to) {
+  int c = from;
+#if defined(__SSE2__)
+  for (; c + 16 <= to; c += 16) {
+    const __m128i x = _mm_loadu_si128(reinterpret_cast<const __m128i*>(a + c));
+    const __m128i y = _mm_loadu_si128(reinterpret_cast<const __m128i*>(b + c));
+    const unsigned equal = static_cast<unsigned>(_mm_movemask_epi8(_mm_cmpeq_epi8(x, y)));
+    if (equal != 0xFFFFu) return c + std::countr_zero(~equal);
+  }
+#endif
+  while (c + 8 <= to && load8(a + c) == load8(b + c)) c += 8;
+  while (c < to && a[c] == b[c]) ++c;
+  return c;
 }
 
 // Pixel-edge boundary tracing with bookkeeping for a single raster scan (a pixel-edge variant of
@@ -124,11 +146,7 @@ TracedRings trace_rings(const cv::Mat& mask) {
   for (int y = 0; y <= h; ++y) {
     const unsigned char* above = y > 0 ? mask.ptr<unsigned char>(y - 1) : nothing.data();
     const unsigned char* below = y < h ? mask.ptr<unsigned char>(y) : nothing.data();
-    for (int c = 0; c < w; ++c) {
-      if (c + 8 <= w && (c & 7) == 0 && load8(above + c) == load8(below + c)) {
-        c += 7;
-        continue;
-      }
+    for (int c = first_difference(above, below, 0, w); c < w; c = first_difference(above, below, c + 1, w)) {
       const bool up = above[c] != 0, down = below[c] != 0;
       if (up == down || tracer.visited(y, c)) continue;
       const int id = static_cast<int>(t.rings.size());
@@ -233,14 +251,10 @@ cv::Mat remove_diagonal_pinches(const cv::Mat& free_mask, int* removed) {
   for (int r = 0; r + 1 < h; ++r) {
     const unsigned char* upper = f.ptr<unsigned char>(r);
     const unsigned char* lower = f.ptr<unsigned char>(r + 1);
-    int c = 0;
-    // A checkerboard needs the two rows to differ within the block: eight blocks whose nine columns
-    // are equal in both rows are skipped at once (the rows are read after every repair).
-    for (; c + 9 <= w; c += 8) {
-      if (load8(upper + c) == load8(lower + c) && upper[c + 8] == lower[c + 8]) continue;
-      for (int k = 0; k < 8; ++k) check_and_repair(r, c + k);
-    }
-    for (; c + 1 < w; ++c) check_and_repair(r, c);
+    // A checkerboard block needs the two rows to differ in its first column: the blocks between such
+    // columns are passed over (the rows are read again after every repair).
+    for (int c = first_difference(upper, lower, 0, w - 1); c + 1 < w; c = first_difference(upper, lower, c + 1, w - 1))
+      check_and_repair(r, c);
   }
   if (removed) *removed = count;
   return f;

@@ -10,6 +10,10 @@
 
 #include <opencv2/imgproc.hpp>
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 #include "topocut/core/error.h"
 
 namespace topocut {
@@ -69,6 +73,23 @@ struct OrphanBlob {
   cv::Rect window;
 };
 
+constexpr int kLabelTile = 16;  // cells a side of a tile of LabelPresence
+
+// Whether one of the kLabelTile cells from cell on holds a label (> 0): 1 or 0.
+unsigned char any_label(const int* cell) {
+#if defined(__SSE2__)
+  const __m128i zero = _mm_setzero_si128();
+  __m128i any = zero;
+  for (int k = 0; k < kLabelTile; k += 4)
+    any = _mm_or_si128(any, _mm_cmpgt_epi32(_mm_loadu_si128(reinterpret_cast<const __m128i*>(cell + k)), zero));
+  return _mm_movemask_epi8(any) != 0;
+#else
+  int any = 0;
+  for (int k = 0; k < kLabelTile; ++k) any |= cell[k] > 0;
+  return static_cast<unsigned char>(any);
+#endif
+}
+
 // Whether a window of the label image holds a label: a tile summary (one count per 16 x 16 tile,
 // summed) rules most windows out in constant time; the cells are counted only when a tile says yes.
 class LabelPresence {
@@ -79,13 +100,9 @@ class LabelPresence {
     for (int r = 0; r < labels.rows; ++r) {
       const int* row = labels.ptr<int>(r);
       unsigned char* tile_row = tiles.ptr<unsigned char>(r / kTile);
-      // A fixed count per tile, so that the compiler tests a tile's cells together.
-      for (int t = 0; t < whole; ++t) {
-        const int* cell = row + t * kTile;
-        int any = 0;
-        for (int k = 0; k < kTile; ++k) any |= cell[k] > 0;
-        tile_row[t] |= static_cast<unsigned char>(any);
-      }
+      // A tile a row above found a label in is not read again: inside rooms, once per tile.
+      for (int t = 0; t < whole; ++t)
+        if (!tile_row[t]) tile_row[t] = any_label(row + t * kTile);
       for (int c = whole * kTile; c < labels.cols; ++c) tile_row[c / kTile] |= row[c] > 0;
     }
     cv::integral(tiles, sums_, CV_32S);
@@ -104,7 +121,7 @@ class LabelPresence {
   }
 
  private:
-  static constexpr int kTile = 16;
+  static constexpr int kTile = kLabelTile;
   const cv::Mat& labels_;
   cv::Mat sums_;
 };
@@ -281,14 +298,15 @@ int nearest_in_band(const cv::Mat& labels, RowNeighbours& rows, int r, int c, in
   return label;
 }
 
+constexpr int kSmallRings = 8;  // rings nearest_in_small_rings() searches
+
 // Most specks lie a cell or two from a label: a search in the first square rings around the cell
 // (each row by row and column by column, a label taking the place of the best only when strictly
 // nearer) settles them when no farther ring can hold a nearer label; std::nullopt otherwise.
 std::optional<int> nearest_in_small_rings(const cv::Mat& labels, int r, int c) {
-  constexpr int kRings = 8;
   long best = std::numeric_limits<long>::max();
   int label = 0;
-  for (int k = 1; k <= kRings; ++k) {
+  for (int k = 1; k <= kSmallRings; ++k) {
     for (int y = r - k; y <= r + k; ++y) {
       if (y < 0 || y >= labels.rows) continue;
       const int* row = labels.ptr<int>(y);
@@ -330,7 +348,9 @@ SpeckLabels nearest_in_rings(const cv::Mat& labels, const LabelPresence& presenc
   RowNeighbours rows(labels, 2 * kRingCap + 1);
   for (const std::size_t k : search) {
     const int i = unlabelled[k];
-    const std::optional<int> near = nearest_in_small_rings(labels, i / w, i % w);
+    // Where no tile within the small rings holds a label, their search finds none: it is not made.
+    const cv::Rect rings(i % w - kSmallRings, i / w - kSmallRings, 2 * kSmallRings + 1, 2 * kSmallRings + 1);
+    const std::optional<int> near = presence.maybe(rings & all) ? nearest_in_small_rings(labels, i / w, i % w) : std::nullopt;
     found[k] = near ? *near : nearest_in_band(labels, rows, i / w, i % w, kRingCap);
   }
   SpeckLabels specks;

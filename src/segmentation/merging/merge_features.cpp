@@ -74,9 +74,13 @@ std::vector<double> merge_features(RoomGraph& graph, std::size_t k, const RoomMe
   const double s_narrow = solidity(a_narrow, graph.convex_hull_area({narrow}));
   const double s_wide = solidity(a_wide, graph.convex_hull_area({wide}));
   const double s_union = solidity(a_narrow + a_wide, graph.convex_hull_area({narrow, wide}));
-  const double perimeter = std::max(std::min(graph.room_perimeter(narrow), graph.room_perimeter(wide)), kMinLength);
+  // Each measure once: every one walks the rooms' pieces and cuts.
+  const double p_narrow = graph.room_perimeter(narrow), p_wide = graph.room_perimeter(wide);
+  const double shared = graph.shared_cut_length(narrow, wide);
+  const double t_narrow = graph.room_thickness(narrow);
+  const double perimeter = std::max(std::min(p_narrow, p_wide), kMinLength);
   const double length = std::max(side.length, kMinLength);
-  const double union_perimeter = graph.room_perimeter(narrow) + graph.room_perimeter(wide) - 2.0 * graph.shared_cut_length(narrow, wide);
+  const double union_perimeter = p_narrow + p_wide - 2.0 * shared;
   const double union_thickness = union_perimeter > 0.0 ? 2.0 * (a_narrow + a_wide) / union_perimeter : 0.0;
   return {
       std::log(length),
@@ -87,19 +91,19 @@ std::vector<double> merge_features(RoomGraph& graph, std::size_t k, const RoomMe
       std::min(d_wide / w_narrow, 5.0),
       std::log(a_narrow),
       std::log(a_wide),
-      graph.room_thickness(narrow),
+      t_narrow,
       graph.room_thickness(wide),
       s_union,
       std::min(s_narrow, s_wide) - s_union,
-      std::min(graph.shared_cut_length(narrow, wide) / perimeter, 1.0),
+      std::min(shared / perimeter, 1.0),
       side.furniture ? 1.0 : 0.0,
       side.end_angle[0] / M_PI,
       side.end_angle[1] / M_PI,
       std::log1p(side.wall_continued),
-      std::min(graph.shared_cut_length(narrow, -1) / std::max(graph.room_perimeter(narrow), kMinLength), 1.0),
-      std::min(graph.shared_cut_length(wide, -1) / std::max(graph.room_perimeter(wide), kMinLength), 1.0),
+      std::min(graph.shared_cut_length(narrow, -1) / std::max(p_narrow, kMinLength), 1.0),
+      std::min(graph.shared_cut_length(wide, -1) / std::max(p_wide, kMinLength), 1.0),
       std::min(length / w_wide, 3.0),
-      union_thickness / std::max(graph.room_thickness(narrow), kMinLength),
+      union_thickness / std::max(t_narrow, kMinLength),
       std::log(std::min(graph.elongation({narrow}), 100.0)),
       std::log(std::min(graph.elongation({narrow, wide}), 100.0)),
       static_cast<double>(std::min(side.ends_on_holes, 2)),

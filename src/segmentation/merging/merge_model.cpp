@@ -1,8 +1,10 @@
 #include "topocut/segmentation/merge_model.h"
 
 #include <algorithm>
+#include <array>
 #include <charconv>
 #include <cmath>
+#include <optional>
 #include <sstream>
 #include <string_view>
 
@@ -40,6 +42,23 @@ bool plain_decimal(std::string_view token) {
   return i == token.size();
 }
 
+// Whether token is a plain decimal (plain_decimal()) of a finite double, converted into value.
+bool read_plain_decimal(std::string_view token, double& value) {
+  if (!plain_decimal(token)) return false;
+  const auto [end, error] = std::from_chars(token.data(), token.data() + token.size(), value);
+  return error == std::errc() && end == token.data() + token.size() && std::isfinite(value);
+}
+
+// Whether token is [-]digits of an int (as the stream reads it whole), converted into value.
+bool read_plain_index(std::string_view token, int& value) {
+  const std::size_t digits = token.starts_with('-') ? 1 : 0;
+  if (token.size() == digits || !std::all_of(token.begin() + static_cast<std::ptrdiff_t>(digits), token.end(),
+                                             [](char c) { return c >= '0' && c <= '9'; }))
+    return false;
+  const auto [end, error] = std::from_chars(token.data(), token.data() + token.size(), value);
+  return error == std::errc() && end == token.data() + token.size();
+}
+
 double finite_number(std::istringstream& in, int line, const std::string& what) {
   double value = 0.0;
   // The shipped model's nine thousand numbers are plain decimals: read as a word and converted with
@@ -47,10 +66,7 @@ double finite_number(std::istringstream& in, int line, const std::string& what) 
   // value out of range) is read again by the stream from the same place, as it always was.
   const std::istringstream::pos_type start = in.tellg();
   std::string token;
-  if (in >> token && plain_decimal(token)) {
-    const auto [end, error] = std::from_chars(token.data(), token.data() + token.size(), value);
-    if (error == std::errc() && end == token.data() + token.size() && std::isfinite(value)) return value;
-  }
+  if (in >> token && read_plain_decimal(token, value)) return value;
   in.clear();
   in.seekg(start);
   value = 0.0;
@@ -88,6 +104,32 @@ MergeTreeNode tree_node(const std::string& key, std::istringstream& in, int line
   }
   expect_end(in, line);
   return node;
+}
+
+// A tree's node line in its plain form, read without the stream: "leaf VALUE" or "split NAME
+// THRESHOLD YES NO", words of visible ASCII separated by spaces and tabs, the numbers plain, NAME a
+// known feature. nullopt for any other line (a comment, other whitespace, a sign, an unknown name,
+// a word too many or too few), which tree_node() reads with the stream as before, or refuses.
+std::optional<MergeTreeNode> plain_tree_node(std::string_view line) {
+  std::array<std::string_view, 6> word;
+  std::size_t n = 0;
+  for (std::size_t i = 0; i < line.size();) {
+    if (line[i] == ' ' || line[i] == '\t') {
+      ++i;
+      continue;
+    }
+    const std::size_t start = i;
+    while (i < line.size() && line[i] > ' ' && line[i] <= '~' && line[i] != '#') ++i;
+    if (i == start || n == word.size()) return std::nullopt;  // another byte, or too many words
+    word[n++] = line.substr(start, i - start);
+  }
+  MergeTreeNode node;
+  if (n == 2 && word[0] == "leaf" && read_plain_decimal(word[1], node.value)) return node;
+  if (n != 5 || word[0] != "split" || !read_plain_decimal(word[2], node.threshold) || !read_plain_index(word[3], node.yes) ||
+      !read_plain_index(word[4], node.no))
+    return std::nullopt;
+  node.feature = merge_feature_index(std::string(word[1]));
+  return node.feature >= 0 ? std::optional<MergeTreeNode>(node) : std::nullopt;
 }
 
 // Why tree is no tree of a model, or "" when it is one: every split points forwards to a node of its
@@ -140,6 +182,14 @@ MergeModel parse_merge_model(const std::string& text) {
   std::istringstream in;
   while (std::getline(lines, raw)) {
     ++number;
+    // Nine in ten lines are plain tree nodes: read without the stream, which was most of the cost.
+    if (in_tree) {
+      if (const std::optional<MergeTreeNode> node = plain_tree_node(raw)) {
+        if (++nodes > kMaxMergeModelNodes) throw too_many("tree nodes", kMaxMergeModelNodes);
+        model.trees.back().push_back(*node);
+        continue;
+      }
+    }
     in.clear();
     in.str(raw.substr(0, raw.find('#')));
     std::string key;

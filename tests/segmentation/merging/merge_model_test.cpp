@@ -78,6 +78,51 @@ TEST(MergeModel, NumbersReadAsTheStreamReadsThem) {
     EXPECT_THROW(parse_merge_model("topocut-merge-model 1\nbias " + refused + "\n"), Error) << refused;
 }
 
+std::string error_of(const std::string& text) {
+  try {
+    parse_merge_model(text);
+  } catch (const Error& e) {
+    return e.what();
+  }
+  return "";
+}
+
+// Whether two models' trees hold the same nodes, their numbers to the bit.
+bool same_trees(const MergeModel& a, const MergeModel& b) {
+  if (a.trees.size() != b.trees.size()) return false;
+  for (std::size_t t = 0; t < a.trees.size(); ++t) {
+    if (a.trees[t].size() != b.trees[t].size()) return false;
+    for (std::size_t i = 0; i < a.trees[t].size(); ++i) {
+      const MergeTreeNode& x = a.trees[t][i];
+      const MergeTreeNode& y = b.trees[t][i];
+      if (x.feature != y.feature || x.yes != y.yes || x.no != y.no || std::memcmp(&x.threshold, &y.threshold, sizeof(double)) != 0 ||
+          std::memcmp(&x.value, &y.value, sizeof(double)) != 0)
+        return false;
+    }
+  }
+  return true;
+}
+
+// Plain tree node lines are read without the stream: the shipped model's nodes read the same when a
+// comment on every line sends each through the stream instead; spellings the stream accepts read
+// as it reads them, and what it refuses stays refused.
+TEST(MergeModel, TreeNodesReadAsTheStreamReadsThem) {
+  const MergeModel& shipped = default_merge_model();
+  std::string commented;
+  std::istringstream lines(shipped.text);
+  for (std::string line; std::getline(lines, line);) commented += line + " # read by the stream\n";
+  EXPECT_TRUE(same_trees(parse_merge_model(commented), shipped));
+
+  const std::string head = "topocut-merge-model 1\ntree\n", tail = "\nleaf 0.5\nleaf -3\nend\n";
+  const MergeModel plain = parse_merge_model(head + "split furniture_end 0.25 1 2" + tail);
+  for (const std::string split : {"\tsplit  furniture_end\t0.25 1 2 ", "split furniture_end 0.25 +1 2", "split furniture_end .25 01 2",
+                                  "split furniture_end 0.25 1 2\r", "split furniture_end 2.5e-1 1 2#"})
+    EXPECT_TRUE(same_trees(parse_merge_model(head + split + tail), plain)) << split;
+  for (const std::string bad : {"split furniture_end 0.25 1", "split furniture_end 0.25 1 2 3", "split no_such_feature 0.25 1 2",
+                                "split furniture_end 0.25 1 99999999999", "split furniture_end 0.25 -1 2", "leaf", "leaf 1 2"})
+    EXPECT_NE(error_of(head + bad + tail).find("line "), std::string::npos) << bad;
+}
+
 TEST(MergeModel, TheShippedModelParsesAndUsesKnownFeatures) {
   const MergeModel& model = default_merge_model();
   EXPECT_FALSE(model.trees.empty() && model.features.empty());
@@ -104,15 +149,6 @@ std::string chain_model(std::size_t trees, int depth) {
     text += "leaf 0.1\nend\n";
   }
   return text;
-}
-
-std::string error_of(const std::string& text) {
-  try {
-    parse_merge_model(text);
-  } catch (const Error& e) {
-    return e.what();
-  }
-  return "";
 }
 
 TEST(MergeModel, AModelAtTheLimitsParsesAndOneBeyondAnyIsRefused) {
