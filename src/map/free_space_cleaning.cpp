@@ -1,15 +1,11 @@
 #include "topocut/map/free_space_cleaning.h"
 
 #include <algorithm>
-#include <bit>
 #include <cmath>
 #include <string>
 #include <vector>
 
-#if defined(__SSE2__)
-#include <emmintrin.h>
-#endif
-
+#include "map/byte_scan.h"
 #include "map/row_runs.h"
 #include "topocut/core/error.h"
 #include "topocut/core/occupancy_grid.h"
@@ -126,21 +122,6 @@ RowRuns inside_building(const RowRuns& lost, const RowRuns& floor, const cv::Mat
   std::vector<unsigned char> outside(component.size());
   for (std::size_t k = 0; k < outside.size(); ++k) outside[k] = reached[static_cast<std::size_t>(component[k])];
   return subtract(lost, select_runs(open, outside));
-}
-
-// The first of the cells [from, to) of row that is nonzero, to if none. Most cells the cleaning
-// leaves untouched: 16 at a compare.
-int first_nonzero(const unsigned char* row, int from, int to) {
-  int x = from;
-#if defined(__SSE2__)
-  const __m128i zero = _mm_setzero_si128();
-  for (; x + 16 <= to; x += 16) {
-    const unsigned zeros = static_cast<unsigned>(_mm_movemask_epi8(_mm_cmpeq_epi8(_mm_loadu_si128(reinterpret_cast<const __m128i*>(row + x)), zero)));
-    if (zeros != 0xFFFFu) return x + std::countr_zero(~zeros);
-  }
-#endif
-  while (x < to && row[x] == 0) ++x;
-  return x;
 }
 
 // The bounding box of each 8-connected part of runs (the parts rays_of() judges one by one).

@@ -1,49 +1,21 @@
 #include "topocut/map/free_space_polygons.h"
 
 #include <algorithm>
-#include <bit>
 #include <cmath>
 #include <cstdlib>
 #include <limits>
 #include <vector>
 #include <cstdint>
-#include <cstring>
 #include <utility>
 
 #include <opencv2/imgproc.hpp>
 
-#if defined(__SSE2__)
-#include <emmintrin.h>
-#endif
-
+#include "map/byte_scan.h"
 #include "topocut/core/error.h"
 
 namespace topocut {
 
 namespace {
-
-std::uint64_t load8(const unsigned char* p) {
-  std::uint64_t v;
-  std::memcpy(&v, p, sizeof v);
-  return v;
-}
-
-// The first column in [from, to) where rows a and b hold different bytes, to if none. The masks'
-// rows are mostly equal to the row above (boundaries are short): 16 columns per compare.
-int first_difference(const unsigned char* a, const unsigned char* b, int from, int to) {
-  int c = from;
-#if defined(__SSE2__)
-  for (; c + 16 <= to; c += 16) {
-    const __m128i x = _mm_loadu_si128(reinterpret_cast<const __m128i*>(a + c));
-    const __m128i y = _mm_loadu_si128(reinterpret_cast<const __m128i*>(b + c));
-    const unsigned equal = static_cast<unsigned>(_mm_movemask_epi8(_mm_cmpeq_epi8(x, y)));
-    if (equal != 0xFFFFu) return c + std::countr_zero(~equal);
-  }
-#endif
-  while (c + 8 <= to && load8(a + c) == load8(b + c)) c += 8;
-  while (c < to && a[c] == b[c]) ++c;
-  return c;
-}
 
 // Pixel-edge boundary tracing with bookkeeping for a single raster scan (a pixel-edge variant of
 // Suzuki and Abe's border following). Corners (x, y) are the top-left corners of cells (x, y),
