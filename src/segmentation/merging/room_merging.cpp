@@ -275,7 +275,10 @@ PieceSet merge_rooms(const FreeSpaceComponent& component, const PieceSet& pieces
   if (steps.empty() || pieces.pieces.size() < 2) return pieces;
   RoomGraph graph(component.polygon, pieces, cells, resolution, options.merge.furniture_size);
   ComponentMerge merge{graph, options.merge, std::move(criteria), trace};
-  for (const SegmentationRule* step : steps) step->on_component(merge);
+  for (const SegmentationRule* step : steps) {
+    note_rule_run(*step);
+    step->on_component(merge);
+  }
   return graph.result();
 }
 
