@@ -11,7 +11,6 @@
 
 #include "topocut/core/error.h"
 #include "topocut/core/format.h"
-#include "topocut/core/value_ranges.h"
 #include "topocut/decomposition/ring_intersections.h"
 #include "topocut/map/simplify.h"
 #include "topocut/segmentation/polygon_split.h"
@@ -22,21 +21,16 @@
 namespace topocut {
 
 void validate(const SegmentOptions& options) {
-  check_length(options.concavity, "the concavity (tau)", /*zero_allowed=*/false);
-  check_length(options.binarize.robot_radius, "the robot radius");
-  check_area(options.contours.min_component_area, "the smallest room area");
-  check_area(options.contours.min_hole_area, "the smallest hole area");
-  check_area(options.merge.min_room_area, "the fold area");
-  validate(options.kinds);
-  if (options.decomposition.max_rounds < 1) throw Error("the decomposition needs at least one round");
-  validate(options.merge);
-  validate(options.doors);
-  if (!std::isfinite(options.oversegment) || options.oversegment <= 0.0 || options.oversegment > 1.0)
-    throw Error("the oversegmentation factor must lie in (0, 1]");
-  if (!std::isfinite(options.simplify) || options.simplify < 0.0)
-    throw Error("the simplification tolerance must be a non-negative number of cells");
+  // Every number through its table's row, in the pipeline's order.
+  check_option_rows(segment_number_option_rows(), options);
+  check_option_rows(binarize_option_rows(), options.binarize);
   validate(options.cleaning);
+  check_option_rows(contour_option_rows(), options.contours);
+  validate(options.doors);
+  check_option_rows(decomposition_option_rows(), options.decomposition);
+  validate(options.merge);
   validate(options.open_rooms);
+  validate(options.kinds);
 }
 
 namespace {

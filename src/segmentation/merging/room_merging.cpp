@@ -171,16 +171,7 @@ double turn(const Point2& a, const Point2& b, const Point2& c) {
 }  // namespace
 
 void validate(const RoomMergeOptions& options) {
-  auto finite_non_negative = [](double v) { return std::isfinite(v) && v >= 0.0; };
-  if (!std::isfinite(options.door_like.ratio) || options.door_like.ratio <= 0.0)
-    throw Error("the door ratio of room merging must be a positive number");
-  if (!finite_non_negative(options.door_like.width_depth) || !finite_non_negative(options.min_room_area) ||
-      !finite_non_negative(options.min_room_width) || !finite_non_negative(options.min_room_thickness) ||
-      !finite_non_negative(options.furniture_size))
-    throw Error("the room merging depth, minimum room area, width and thickness and the furniture size must be non-negative numbers");
-  if (!finite_non_negative(options.step_ratio) || options.step_ratio >= 1.0 || !finite_non_negative(options.step_min_area) ||
-      !finite_non_negative(options.step_min_wide_depth) || !finite_non_negative(options.step_wall_line_depth))
-    throw Error("the width-step ratio must lie in [0, 1) and its area and depth must be non-negative numbers");
+  check_option_rows(room_merge_option_rows(), options);  // each number's range is its row's
   if (options.learned) validate(options.model);
 }
 
