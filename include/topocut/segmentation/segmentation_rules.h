@@ -61,6 +61,7 @@ namespace topocut {
 enum class RuleStage {
   kClean,      // clean: on the free-space image, before polygons
   kOutline,    // outline: on each component's polygon, the outline the cuts and decomposition start from
+               // (each outline row on the one before's)
   kCut,        // find_cuts: on each component's polygon, before the decomposition
   kDecompose,  // decompose: on each part of the polygon the cuts leave
   kMerge,      // judge, on_component: on each component's pieces: the merges, their criteria, the folding
@@ -77,7 +78,8 @@ struct SegmentationRule {
   std::string help;  // what switching it off does (a row without a switch: what it does), one line
   std::function<bool(const SegmentOptions&)> is_on;
   std::function<void(SegmentOptions&)> turn_off;  // empty: no switch, the rule is on with the stage
-  // kClean: the free space (255 = free) cleaned, given the grid's cells (resolution: metres per cell).
+  // kClean: the free space (255 = free) cleaned, given the grid's cells as the sensor saw them
+  // (resolution: metres per cell); each cleaning row cleans the floor the one before left.
   std::function<CleanedFreeSpace(const cv::Mat& free, const cv::Mat& cells, double resolution, const SegmentOptions&)> clean;
   // kOutline: the outline to decompose first; the exact one is the fallback if it fails.
   std::function<PolygonWithHoles(const PolygonWithHoles& exact, const SegmentOptions&)> outline;
