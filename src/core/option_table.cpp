@@ -8,40 +8,45 @@
 
 namespace topocut {
 
-void check_option_value(OptionRange range, double value, const std::string& shown) {
+bool option_value_in_range(OptionRange range, double value) {
+  // Written so that NaN lies in no range.
   switch (range) {
-    case OptionRange::kPositive:
-      if (!std::isfinite(value) || value <= 0.0) throw Error(shown + " must be a positive number");
-      break;
-    case OptionRange::kNonNegative:
-      if (!std::isfinite(value) || value < 0.0) throw Error(shown + " must be a non-negative number");
-      break;
-    case OptionRange::kFraction:
-      if (!(value > 0.0 && value <= 1.0)) throw Error(shown + " must be a factor in (0, 1]");
-      break;
-    case OptionRange::kGreyLevel:
-      if (!(value >= 0.0 && value <= 255.0) || value != std::floor(value))
-        throw Error(shown + " must be a grey level, a whole number in 0..255");
-      break;
-    case OptionRange::kShare:
-      if (!(value >= 0.0 && value <= 1.0)) throw Error(shown + " must be a share in [0, 1]");
-      break;
-    case OptionRange::kShareBelowOne:
-      if (!(value >= 0.0 && value < 1.0)) throw Error(shown + " must be a share in [0, 1)");
-      break;
-    case OptionRange::kCount:
-      if (!(value >= 1.0 && value <= 1e9) || value != std::floor(value)) throw Error(shown + " must be a whole number >= 1");
-      break;
-    case OptionRange::kWholeNumber:
-      if (!(value >= 0.0 && value <= 1e9) || value != std::floor(value)) throw Error(shown + " must be a whole number >= 0");
-      break;
+    case OptionRange::kPositive: return std::isfinite(value) && value > 0.0;
+    case OptionRange::kNonNegative: return std::isfinite(value) && value >= 0.0;
+    case OptionRange::kFraction: return value > 0.0 && value <= 1.0;
+    case OptionRange::kGreyLevel: return value >= 0.0 && value <= 255.0 && value == std::floor(value);
+    case OptionRange::kShare: return value >= 0.0 && value <= 1.0;
+    case OptionRange::kShareBelowOne: return value >= 0.0 && value < 1.0;
+    case OptionRange::kCount: return value >= 1.0 && value <= 1e9 && value == std::floor(value);
+    case OptionRange::kWholeNumber: return value >= 0.0 && value <= 1e9 && value == std::floor(value);
+    case OptionRange::kLength: return value > 0.0 && value <= kMaxLength;
+    case OptionRange::kLengthOrZero: return value >= 0.0 && value <= kMaxLength;
+    case OptionRange::kArea: return value >= 0.0 && value <= kMaxLength * kMaxLength;
+    case OptionRange::kResolution: return value >= kMinResolution && value <= kMaxResolution;
+    case OptionRange::kSwitch:
+    case OptionRange::kAny: return true;
+  }
+  return true;
+}
+
+void check_option_value(OptionRange range, double value, const std::string& shown) {
+  if (option_value_in_range(range, value)) return;
+  switch (range) {
+    case OptionRange::kPositive: throw Error(shown + " must be a positive number");
+    case OptionRange::kNonNegative: throw Error(shown + " must be a non-negative number");
+    case OptionRange::kFraction: throw Error(shown + " must be a factor in (0, 1]");
+    case OptionRange::kGreyLevel: throw Error(shown + " must be a grey level, a whole number in 0..255");
+    case OptionRange::kShare: throw Error(shown + " must be a share in [0, 1]");
+    case OptionRange::kShareBelowOne: throw Error(shown + " must be a share in [0, 1)");
+    case OptionRange::kCount: throw Error(shown + " must be a whole number >= 1");
+    case OptionRange::kWholeNumber: throw Error(shown + " must be a whole number >= 0");
+    // The library's own checks, which give the interval and unit.
     case OptionRange::kLength: check_length(value, shown, /*zero_allowed=*/false); break;
     case OptionRange::kLengthOrZero: check_length(value, shown); break;
     case OptionRange::kArea: check_area(value, shown); break;
     case OptionRange::kResolution: check_resolution(value, shown); break;
     case OptionRange::kSwitch:
-    case OptionRange::kAny:
-      break;
+    case OptionRange::kAny: break;
   }
 }
 

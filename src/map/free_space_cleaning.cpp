@@ -199,12 +199,7 @@ cv::Rect box_of(const RowRuns& runs) {
 
 }  // namespace
 
-void validate(const FreeSpaceCleaningOptions& options) {
-  for (const double value : {options.max_obstacle_speck, options.min_width, options.inside_closing}) {
-    if (!std::isfinite(value) || value < 0.0)
-      throw Error("the free-space cleaning sizes must be finite, non-negative numbers of metres");
-  }
-}
+void validate(const FreeSpaceCleaningOptions& options) { check_option_rows(cleaning_option_rows(), options); }
 
 CleanedFreeSpace clean_free_space(const cv::Mat& free, const cv::Mat& grid_cells, double resolution,
                                   const FreeSpaceCleaningOptions& options) {

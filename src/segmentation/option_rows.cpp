@@ -1,4 +1,4 @@
-// The segmentation module's option tables (door_cuts.h, room_merging.h, open_rooms.h,
+// The segmentation module's option tables (segmenter.h, door_cuts.h, room_merging.h, open_rooms.h,
 // rooms_from_pieces.h, room_kinds.h, incremental_segmenter.h): each field's name, unit, range and
 // help once; defaults are the structs' own. The switches of the pipeline's rules (DoorOptions::passages,
 // RoomMergeOptions::enabled, ...) are segmentation_rules()' --no-NAME rows, not rows here.
@@ -9,8 +9,22 @@
 #include "topocut/segmentation/room_kinds.h"
 #include "topocut/segmentation/room_merging.h"
 #include "topocut/segmentation/rooms_from_pieces.h"
+#include "topocut/segmentation/segmenter.h"
 
 namespace topocut {
+
+const std::vector<OptionRow<SegmentOptions>>& segment_number_option_rows() {
+  using S = SegmentOptions;
+  static const std::vector<OptionRow<S>> rows = {
+      field_row("concavity", "M", OptionRange::kLength, &S::concavity,
+                "maximum concavity tau in metres: larger values give fewer, less convex rooms"),
+      field_row("simplify", "CELLS", OptionRange::kNonNegative, &S::simplify,
+                "tolerance (cells) of the outlines' simplification (0: the exact pixel edges, as --no-simplify)"),
+      field_row("oversegment", "F", OptionRange::kFraction, &S::oversegment,
+                "with merging, DuDe cuts at F x tau, 0 < F <= 1 (merging then removes the cuts that are not door-like)"),
+  };
+  return rows;
+}
 
 const std::vector<OptionRow<DoorOptions>>& door_option_rows() {
   using D = DoorOptions;

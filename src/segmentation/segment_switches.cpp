@@ -32,13 +32,6 @@ namespace {
 
 using Row = OptionRow<SegmentSettings>;
 
-// A row for a number field; field is a generic lambda returning a reference to it in a (const) SegmentSettings.
-template <typename Field>
-Row number(const char* name, const char* value_name, OptionRange range, Field field, const char* help) {
-  return {name, value_name, help, range, [field](const SegmentSettings& s) { return field(s); },
-          [field](SegmentSettings& s, double v) { field(s) = v; }};
-}
-
 // A row for a switch: a bool of SegmentSwitches or SegmentOptions.
 template <typename Field>
 Row on_off(const char* name, Field field, const char* help) {
@@ -82,6 +75,12 @@ std::vector<Row> lifted(const std::vector<OptionRow<Inner>>& part_rows, Part par
   return rows_within<SegmentSettings>(part_rows, part);
 }
 
+// The row of SegmentOptions' own number named name (segment_number_option_rows()).
+Row own_number(const std::string& name) {
+  static const std::vector<Row> rows = lifted(segment_number_option_rows(), [](auto& s) -> auto& { return s.options; });
+  return *find_option(rows, name);
+}
+
 // The table and its headings, built together so that they cannot disagree.
 struct Table {
   std::vector<Row> rows;
@@ -98,8 +97,7 @@ struct Table {
 Table make_table() {
   Table t;
   t.add("Concavity and the baselines",
-        {number("concavity", "M", OptionRange::kLength, [](auto& s) -> auto& { return s.options.concavity; },
-                "maximum concavity tau in metres: larger values give fewer, less convex rooms"),
+        {own_number("concavity"),
          on_off("trivial", [](auto& s) -> auto& { return s.switches.trivial; },
                 "no decomposition: one room per free-space component (baseline)"),
          on_off("parity", [](auto& s) -> auto& { return s.switches.parity; },
@@ -111,13 +109,10 @@ Table make_table() {
   std::vector<Row> outlines = lifted(contour_option_rows(), [](auto& s) -> auto& { return s.options.contours; });
   for (Row& row : outlines)
     if (row.name == "min-room-area") row = given(row);
-  outlines.push_back(number("simplify", "CELLS", OptionRange::kNonNegative, [](auto& s) -> auto& { return s.options.simplify; },
-                            "tolerance (cells) of the outlines' simplification (0: the exact pixel edges, as --no-simplify)"));
+  outlines.push_back(own_number("simplify"));
   t.add("Free space and its outlines", std::move(outlines));
   t.add("Door cuts", lifted(door_option_rows(), [](auto& s) -> auto& { return s.options.doors; }));
-  std::vector<Row> decomposition = {
-      number("oversegment", "F", OptionRange::kFraction, [](auto& s) -> auto& { return s.options.oversegment; },
-             "with merging, DuDe cuts at F x tau, 0 < F <= 1 (merging then removes the cuts that are not door-like)")};
+  std::vector<Row> decomposition = {own_number("oversegment")};
   for (Row& row : lifted(decomposition_option_rows(), [](auto& s) -> auto& { return s.options.decomposition; }))
     decomposition.push_back(std::move(row));
   t.add("Decomposition", std::move(decomposition));

@@ -1,9 +1,15 @@
 #include "topocut/segmentation/segmentation_rules.h"
 
+#include <atomic>
+#include <mutex>
+
 #include "segmentation/merging/room_graph.h"
+#include "segmentation/passage_kind.h"
 #include "topocut/segmentation/door_cuts.h"
 #include "topocut/segmentation/island_cuts.h"
 #include "topocut/segmentation/open_rooms.h"
+#include "topocut/segmentation/room_kinds.h"
+#include "topocut/segmentation/rooms_from_pieces.h"
 #include "topocut/segmentation/wall_lines.h"
 #include "topocut/segmentation/wall_openings.h"
 
@@ -43,6 +49,7 @@ SegmentationRule rooms_step(SegmentationRule rule, decltype(SegmentationRule::on
 }
 
 bool merging(const SegmentOptions& o) { return o.merge.enabled; }
+bool always(const SegmentOptions&) { return true; }
 
 SegmentationRule cut_rule(SegmentationRule rule, CutRule kind, decltype(SegmentationRule::find_cuts) find, bool may_fail) {
   rule.cut_rule = kind;
@@ -52,12 +59,38 @@ SegmentationRule cut_rule(SegmentationRule rule, CutRule kind, decltype(Segmenta
 }
 
 std::vector<SegmentationRule> make_rules() {
+  SegmentationRule clean = stage_rule("clean", RuleStage::kClean,
+                                      "decompose the free space as it is: keep laser-ray fans, slivers, free and obstacle specks",
+                                      [](const SegmentOptions& o) { return o.clean; }, [](SegmentOptions& o) { o.clean = false; });
+  clean.clean = [](const cv::Mat& free, const cv::Mat& cells, double resolution, const SegmentOptions& o) {
+    return clean_free_space(free, cells, resolution, o.cleaning);
+  };
+  SegmentationRule simplify = stage_rule("simplify", RuleStage::kOutline, "decompose the exact pixel-edge polygons (slower)",
+                                         [](const SegmentOptions& o) { return o.simplify > 0.0; },
+                                         [](SegmentOptions& o) { o.simplify = 0.0; });
+  simplify.outline = [](const PolygonWithHoles& exact, const SegmentOptions& o) { return simplified_where_valid(exact, o.simplify); };
+  SegmentationRule decomposition = unswitched_rule(
+      "decomposition", RuleStage::kDecompose, "DuDe on each part the cuts leave, at tau = concavity (times oversegment with merging)",
+      [](const SegmentOptions& o) { return o.decompose; });
+  decomposition.decompose = [](const PolygonWithHoles& part, double resolution, const SegmentOptions& o) {
+    DecompositionOptions d = o.decomposition;
+    d.tau = o.concavity * (o.merge.enabled ? o.oversegment : 1.0) / resolution;  // the polygons are in cells
+    return topocut::decompose(part, d);
+  };
+  SegmentationRule labelling = unswitched_rule("labelling", RuleStage::kLabel, "every free cell gets its room's label", always);
+  labelling.label = [](const OccupancyGrid& grid, const PieceSet& rooms, const SegmentOptions& o) {
+    return rooms_from_pieces(grid, rooms, o.labels);
+  };
+  SegmentationRule door_flags = unswitched_rule("door-flags", RuleStage::kDescribe, "passages at most --door-width wide are doors", always);
+  door_flags.describe = [](Segmentation& s, const SegmentOptions& o) {
+    for (Passage& passage : s.passages) passage.door = is_door(passage, o.doors);
+  };
+  SegmentationRule room_kinds = unswitched_rule("room-kinds", RuleStage::kDescribe, "each room is a corridor or a room", always);
+  room_kinds.describe = [](Segmentation& s, const SegmentOptions& o) { assign_room_kinds(s, o.kinds); };
+  room_kinds.whole_map = true;  // a room's kind counts the rooms it opens onto
   return {
-      stage_rule("clean", RuleStage::kClean,
-                 "decompose the free space as it is: keep laser-ray fans, slivers, free and obstacle specks",
-                 [](const SegmentOptions& o) { return o.clean; }, [](SegmentOptions& o) { o.clean = false; }),
-      stage_rule("simplify", RuleStage::kCut, "decompose the exact pixel-edge polygons (slower)",
-                 [](const SegmentOptions& o) { return o.simplify > 0.0; }, [](SegmentOptions& o) { o.simplify = 0.0; }),
+      std::move(clean),
+      std::move(simplify),
       cut_rule(stage_rule("doors", RuleStage::kCut, "no cuts across narrow passages (doors) before the decomposition",
                           [](const SegmentOptions& o) { return o.doors.passages; }, [](SegmentOptions& o) { o.doors.passages = false; }),
                CutRule::kDoor,
@@ -82,6 +115,7 @@ std::vector<SegmentationRule> make_rules() {
                           [](const SegmentOptions& o) { return o.doors.wall_lines; },
                           [](SegmentOptions& o) { o.doors.wall_lines = false; }),
                CutRule::kWallLine, find_wall_line_cuts, true),
+      std::move(decomposition),
       component_step(stage_rule("merge", RuleStage::kMerge, "keep DuDe's pieces as rooms instead of merging them", merging,
                                 [](SegmentOptions& o) { o.merge.enabled = false; }),
                      merge_by_criteria),
@@ -119,6 +153,9 @@ std::vector<SegmentationRule> make_rules() {
                  [](const PieceSet& rooms, const OccupancyGrid& grid, const SegmentOptions& o) {
                    return join_open_rooms(rooms, grid, o.open_rooms);
                  }),
+      std::move(labelling),
+      std::move(door_flags),
+      std::move(room_kinds),
   };
 }
 
@@ -141,6 +178,34 @@ std::vector<std::string> rules_off(const SegmentOptions& options) {
   for (const SegmentationRule& rule : segmentation_rules())
     if (rule.turn_off && rule.is_on(defaults) && !rule.is_on(options)) off.push_back(rule.name);
   return off;
+}
+
+namespace {
+
+// The living RuleTrace's rows; the lock guards them against schedules on other threads.
+std::atomic<bool> tracing{false};
+std::mutex trace_mutex;
+std::vector<std::string> traced;
+
+}  // namespace
+
+RuleTrace::RuleTrace() {
+  const std::lock_guard<std::mutex> lock(trace_mutex);
+  traced.clear();
+  tracing = true;
+}
+
+RuleTrace::~RuleTrace() { tracing = false; }
+
+std::vector<std::string> RuleTrace::rows() const {
+  const std::lock_guard<std::mutex> lock(trace_mutex);
+  return traced;
+}
+
+void note_rule_run(const SegmentationRule& row) {
+  if (!tracing.load(std::memory_order_relaxed)) return;
+  const std::lock_guard<std::mutex> lock(trace_mutex);
+  traced.push_back(row.name);
 }
 
 }  // namespace topocut

@@ -1,10 +1,9 @@
 #include "topocut/segmentation/segmenter.h"
 
-#include "segmentation/passage_kind.h"
-
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <iterator>
 #include <optional>
 #include <string>
 
@@ -12,7 +11,6 @@
 
 #include "topocut/core/error.h"
 #include "topocut/core/format.h"
-#include "topocut/core/value_ranges.h"
 #include "topocut/decomposition/ring_intersections.h"
 #include "topocut/map/simplify.h"
 #include "topocut/segmentation/polygon_split.h"
@@ -23,21 +21,16 @@
 namespace topocut {
 
 void validate(const SegmentOptions& options) {
-  check_length(options.concavity, "the concavity (tau)", /*zero_allowed=*/false);
-  check_length(options.binarize.robot_radius, "the robot radius");
-  check_area(options.contours.min_component_area, "the smallest room area");
-  check_area(options.contours.min_hole_area, "the smallest hole area");
-  check_area(options.merge.min_room_area, "the fold area");
-  validate(options.kinds);
-  if (options.decomposition.max_rounds < 1) throw Error("the decomposition needs at least one round");
-  validate(options.merge);
-  validate(options.doors);
-  if (!std::isfinite(options.oversegment) || options.oversegment <= 0.0 || options.oversegment > 1.0)
-    throw Error("the oversegmentation factor must lie in (0, 1]");
-  if (!std::isfinite(options.simplify) || options.simplify < 0.0)
-    throw Error("the simplification tolerance must be a non-negative number of cells");
+  // Every number through its table's row, in the pipeline's order.
+  check_option_rows(segment_number_option_rows(), options);
+  check_option_rows(binarize_option_rows(), options.binarize);
   validate(options.cleaning);
+  check_option_rows(contour_option_rows(), options.contours);
+  validate(options.doors);
+  check_option_rows(decomposition_option_rows(), options.decomposition);
+  validate(options.merge);
   validate(options.open_rooms);
+  validate(options.kinds);
 }
 
 namespace {
@@ -78,21 +71,30 @@ cv::Mat segmentation_free_space(const OccupancyGrid& grid, const SegmentOptions&
 
 namespace {
 
-// The front end's second half: the free space cleaned (options.clean) as the floor to decompose, and
-// the cells to label. A cleaning that would leave no floor is not applied (a map smaller than a room).
+// Whether rule is a row of stage that is on.
+bool runs(const SegmentationRule& rule, RuleStage stage, const SegmentOptions& options) {
+  return rule.stage == stage && rule.is_on(options);
+}
+
+// The front end's second half: the free space cleaned by the list's cleaning rows as the floor to
+// decompose, and the cells to label. A cleaning that would leave no floor is not applied (a map
+// smaller than a room).
 SegmentationInput cleaned_input(const OccupancyGrid& grid, cv::Mat free, const SegmentOptions& options) {
   SegmentationInput input;
   input.floor = std::move(free);
   input.labelled = grid;
-  if (!options.clean) return input;
-  CleanedFreeSpace cleaned = clean_free_space(input.floor, grid.cells, grid.resolution, options.cleaning);
-  if (cv::countNonZero(cleaned.floor) == 0) return input;
-  input.floor = cleaned.floor;
-  // An unknown speck enclosed by floor is floor the sensor never reported (a cell between two
-  // readings, a grey pixel of a half-seen spot), so it gets the room like the floor around it;
-  // occupied specks (chair legs) stay obstacles.
-  input.labelled.cells = cells_after_cleaning(grid.cells, cleaned);
-  input.cleaned = std::move(cleaned);
+  for (const SegmentationRule& rule : segmentation_rules()) {
+    if (!runs(rule, RuleStage::kClean, options)) continue;
+    note_rule_run(rule);
+    CleanedFreeSpace cleaned = rule.clean(input.floor, grid.cells, grid.resolution, options);
+    if (cv::countNonZero(cleaned.floor) == 0) continue;
+    input.floor = cleaned.floor;
+    // An unknown speck enclosed by floor is floor the sensor never reported (a cell between two
+    // readings, a grey pixel of a half-seen spot), so it gets the room like the floor around it;
+    // occupied specks (chair legs) stay obstacles.
+    input.labelled.cells = cells_after_cleaning(input.labelled.cells, cleaned);
+    input.cleaned = std::move(cleaned);
+  }
   return input;
 }
 
@@ -182,39 +184,47 @@ SegmentationInput segmentation_input(const OccupancyGrid& grid, const cv::Rect& 
     return input;
   }
   input.labelled = crop(part, inner);
-  if (!options.clean) {
-    input.floor = free(inner).clone();
-    return input;
-  }
   // cleaned_input() over the context, its cells after the cleaning taken over the window only.
-  const CleanedFreeSpace cleaned = clean_free_space(free, part.cells, part.resolution, options.cleaning);
-  input.floor = cleaned.floor(inner).clone();
-  input.labelled.cells = cells_after_cleaning(input.labelled.cells, cropped_cleaning(cleaned, inner));
-  input.thin_parts_within = thin_parts_judged_whole(cleaned, context, inner, grid.cells.size());
+  for (const SegmentationRule& rule : segmentation_rules()) {
+    if (!runs(rule, RuleStage::kClean, options)) continue;
+    note_rule_run(rule);
+    const CleanedFreeSpace cleaned = rule.clean(free, part.cells, part.resolution, options);
+    free = cleaned.floor;
+    input.labelled.cells = cells_after_cleaning(input.labelled.cells, cropped_cleaning(cleaned, inner));
+    input.thin_parts_within = input.thin_parts_within && thin_parts_judged_whole(cleaned, context, inner, grid.cells.size());
+  }
+  input.floor = free(inner).clone();
   return input;
 }
 
 namespace {
 
-// The cut rules (segmentation_rules()) in order, each clear of the earlier ones' cuts, then each part
-// of the polygon decomposed on its own. With fallible false, the rules that may fail are left out.
+// The cut rows (segmentation_rules()) in order, each clear of the earlier ones' cuts, then the
+// decomposition rows on each part of the polygon the cuts leave, each on the pieces of the one before.
+// With fallible false, the cut rules that may fail are left out.
 PieceSet decompose_polygon(const PolygonWithHoles& polygon, double resolution, const SegmentOptions& options, bool fallible,
                            SegmentTimes* times) {
   StageTimer timer(times, SegmentStage::kCuts);
   PieceSet set;
   for (const SegmentationRule& rule : segmentation_rules()) {
-    if (!rule.find_cuts || !rule.is_on(options) || (rule.may_fail && !fallible)) continue;
+    if (!runs(rule, RuleStage::kCut, options) || (rule.may_fail && !fallible)) continue;
+    note_rule_run(rule);
     for (const Segment2& cut : rule.find_cuts(polygon, resolution, options.doors, set.cuts)) set.add_cut(cut, rule.cut_rule);
   }
   timer.next(SegmentStage::kDecomposition);
-  const std::vector<PolygonWithHoles> parts = split_polygon(polygon, set.cuts);
-  DecompositionOptions decomposition = options.decomposition;
-  decomposition.tau = options.concavity * (options.merge.enabled ? options.oversegment : 1.0) / resolution;
-  for (const PolygonWithHoles& part : parts) {
-    const Decomposition result = decompose(part, decomposition);
-    set.pieces.insert(set.pieces.end(), result.pieces.begin(), result.pieces.end());
-    for (const Cut& cut : result.cuts) set.add_cut(cut.segment, CutRule::kDecomposition);
+  std::vector<PolygonWithHoles> parts = split_polygon(polygon, set.cuts);
+  for (const SegmentationRule& rule : segmentation_rules()) {
+    if (!runs(rule, RuleStage::kDecompose, options)) continue;
+    note_rule_run(rule);
+    std::vector<PolygonWithHoles> pieces;
+    for (const PolygonWithHoles& part : parts) {
+      Decomposition result = rule.decompose(part, resolution, options);
+      pieces.insert(pieces.end(), std::make_move_iterator(result.pieces.begin()), std::make_move_iterator(result.pieces.end()));
+      for (const Cut& cut : result.cuts) set.add_cut(cut.segment, CutRule::kDecomposition);
+    }
+    parts = std::move(pieces);
   }
+  set.pieces = std::move(parts);
   return set;
 }
 
@@ -237,16 +247,18 @@ PolygonWithHoles simplified_where_valid(const PolygonWithHoles& exact, double to
 
 PieceSet decompose_pieces(const FreeSpaceComponent& component, double resolution, const SegmentOptions& options,
                           SegmentTimes* times) {
-  if (!options.decompose) {
+  const std::vector<SegmentationRule>& rules = segmentation_rules();
+  // Without a decomposition (--trivial) the cuts would split nothing: the component is one piece.
+  if (std::none_of(rules.begin(), rules.end(), [&](const SegmentationRule& r) { return runs(r, RuleStage::kDecompose, options); })) {
     PieceSet set;
     set.pieces.push_back(component.polygon);
     return set;
   }
-  // The simplified polygon first, with every cut rule; a wall line grazing a corner may leave a
-  // degenerate part, and simplified rings may touch after all (a very thin wall or gap), so each
-  // failure falls back to the next try, the exact polygon without the rules that may fail last.
-  const bool fallible_on = std::any_of(segmentation_rules().begin(), segmentation_rules().end(),
-                                       [&](const SegmentationRule& r) { return r.may_fail && r.is_on(options); });
+  // The outline rows' polygon first (simplified), with every cut rule; a wall line grazing a corner
+  // may leave a degenerate part, and simplified rings may touch after all (a very thin wall or gap),
+  // so each failure falls back to the next try, the exact polygon without the rules that may fail last.
+  const bool fallible_on =
+      std::any_of(rules.begin(), rules.end(), [&](const SegmentationRule& r) { return r.may_fail && runs(r, RuleStage::kCut, options); });
   auto attempt = [&](const PolygonWithHoles& polygon, bool last) -> std::optional<PieceSet> {
     if (fallible_on) {
       try {
@@ -262,13 +274,17 @@ PieceSet decompose_pieces(const FreeSpaceComponent& component, double resolution
     }
   };
   try {
-    if (options.simplify > 0.0) {
-      std::optional<PolygonWithHoles> simplified;
-      {
-        const StageTimer timer(times, SegmentStage::kFrontEnd);
-        simplified = simplified_where_valid(component.polygon, options.simplify);
+    std::optional<PolygonWithHoles> outline;
+    {
+      const StageTimer timer(times, SegmentStage::kFrontEnd);
+      for (const SegmentationRule& rule : rules) {
+        if (!runs(rule, RuleStage::kOutline, options)) continue;
+        note_rule_run(rule);
+        outline = rule.outline(outline ? *outline : component.polygon, options);
       }
-      if (std::optional<PieceSet> set = attempt(*simplified, false)) return *set;
+    }
+    if (outline) {
+      if (std::optional<PieceSet> set = attempt(*outline, false)) return *set;
     }
     return *attempt(component.polygon, true);
   } catch (const Error& e) {
@@ -340,16 +356,29 @@ Segmentation segment_input(const SegmentationInput& input, const SegmentOptions&
     none.origin = grid.origin;
     return none;
   }
+  const std::vector<SegmentationRule>& rules = segmentation_rules();
   StageTimer timer(times, SegmentStage::kOpenRooms);
-  for (const SegmentationRule& rule : segmentation_rules())
-    if (rule.on_rooms && rule.is_on(options)) pieces = rule.on_rooms(pieces, grid, options);
+  for (const SegmentationRule& rule : rules) {
+    if (!runs(rule, RuleStage::kRooms, options)) continue;
+    note_rule_run(rule);
+    pieces = rule.on_rooms(pieces, grid, options);
+  }
   timer.next(SegmentStage::kLabelling);
-  Segmentation segmentation = rooms_from_pieces(to_label.empty() ? grid : labelled_only(grid, to_label), pieces, options.labels);
+  const OccupancyGrid cells = to_label.empty() ? grid : labelled_only(grid, to_label);
+  Segmentation segmentation;
+  for (const SegmentationRule& rule : rules) {
+    if (!runs(rule, RuleStage::kLabel, options)) continue;
+    note_rule_run(rule);
+    segmentation = rule.label(cells, pieces, options);
+  }
   timer.next(SegmentStage::kOutputs);
-  for (Passage& passage : segmentation.passages) passage.door = is_door(passage, options.doors);
   // Once the rooms are final, whatever decided them; a window labelling only part of its cells
-  // leaves them to its caller (its rooms' neighbours lie partly beyond it).
-  if (to_label.empty()) assign_room_kinds(segmentation, options.kinds);
+  // leaves the whole-map rows to its caller (its rooms' neighbours lie partly beyond it).
+  for (const SegmentationRule& rule : rules) {
+    if (!runs(rule, RuleStage::kDescribe, options) || (rule.whole_map && !to_label.empty())) continue;
+    note_rule_run(rule);
+    rule.describe(segmentation, options);
+  }
   return segmentation;
 }
 

@@ -18,14 +18,7 @@ constexpr double kScale = 1 << kShift;
 
 }  // namespace
 
-void validate(const WallMapOptions& o) {
-  auto non_negative = [](double v) { return std::isfinite(v) && v >= 0.0; };
-  check_resolution(o.resolution, "the map resolution");
-  check_length(o.wall_thickness, "the wall thickness");
-  check_length(o.margin, "the map margin");
-  if (!non_negative(o.no_return_free_range)) throw Error("the no-return free range must be a non-negative number of metres");
-  if (!non_negative(o.max_free_range)) throw Error("the maximum free range must be a non-negative number of metres");
-}
+void validate(const WallMapOptions& options) { check_option_rows(wall_map_option_rows(), options); }
 
 namespace {
 

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <string>
+#include <vector>
 
 #include "topocut/core/error.h"
 #include "topocut/core/value_ranges.h"
@@ -70,6 +71,52 @@ TEST(OptionTable, LengthAreaAndResolutionRangesAreTheLibrarysOwn) {
     FAIL();
   } catch (const Error& e) {
     EXPECT_EQ(std::string(e.what()), "--door-width must lie in (0, 100000] metres, got 1e+06");
+  }
+}
+
+TEST(OptionTable, InRangeIsWhatTheCheckLetsThrough) {
+  const OptionRange ranges[] = {OptionRange::kSwitch,      OptionRange::kPositive,      OptionRange::kNonNegative,
+                                OptionRange::kFraction,    OptionRange::kGreyLevel,     OptionRange::kLength,
+                                OptionRange::kLengthOrZero, OptionRange::kArea,         OptionRange::kResolution,
+                                OptionRange::kShare,       OptionRange::kShareBelowOne, OptionRange::kCount,
+                                OptionRange::kWholeNumber, OptionRange::kAny};
+  const double values[] = {-1.0, 0.0, kMinResolution, 0.5, 1.0, 2.5, 255.0, kMaxLength, 2 * kMaxLength, kMaxLength * kMaxLength,
+                           std::nan(""), std::numeric_limits<double>::infinity()};
+  for (const OptionRange range : ranges)
+    for (const double value : values) {
+      bool passes = true;
+      try {
+        check_option_value(range, value, "x");
+      } catch (const Error&) {
+        passes = false;
+      }
+      EXPECT_EQ(option_value_in_range(range, value), passes) << static_cast<int>(range) << " " << value;
+    }
+}
+
+// A struct checked through its table names the first row out of range, as the command line does.
+TEST(OptionTable, CheckingRowsNamesTheFirstOptionOutOfRange) {
+  struct Sizes {
+    double width = 1.0;
+    double share = 0.5;
+  };
+  const std::vector<OptionRow<Sizes>> rows = {field_row("width", "M", OptionRange::kLength, &Sizes::width, "w"),
+                                              field_row("share", "F", OptionRange::kShare, &Sizes::share, "s")};
+  Sizes sizes;
+  EXPECT_NO_THROW(check_option_rows(rows, sizes));
+  sizes.share = 2.0;
+  try {
+    check_option_rows(rows, sizes);
+    FAIL();
+  } catch (const Error& e) {
+    EXPECT_EQ(std::string(e.what()), "--share must be a share in [0, 1]");
+  }
+  sizes.width = 0.0;
+  try {
+    check_option_rows(rows, sizes);
+    FAIL();
+  } catch (const Error& e) {
+    EXPECT_EQ(std::string(e.what()), "--width must lie in (0, 100000] metres, got 0");
   }
 }
 

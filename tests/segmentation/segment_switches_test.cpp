@@ -108,6 +108,24 @@ TEST(SegmentOptionRows, NamesAreUniqueAndEveryRowReachesTheOptions) {
   EXPECT_THROW(set_option(row("oversegment"), settings, 2.0, "--oversegment"), Error);
 }
 
+// validate(SegmentOptions) checks every number through its row: a value that no range holds (-1),
+// set past the front ends, is refused in one line naming the option.
+TEST(SegmentOptionRows, ValidateRefusesEveryRowsBadValueByName) {
+  for (const OptionRow<SegmentSettings>& r : segment_option_rows()) {
+    if (r.is_switch() || r.range == OptionRange::kAny) continue;
+    SegmentSettings settings;
+    r.set(settings, -1.0);
+    try {
+      validate(settings.options);
+      ADD_FAILURE() << r.name << " = -1 passes";
+    } catch (const Error& e) {
+      const std::string message = e.what();
+      EXPECT_EQ(message.rfind("--" + r.name + " must ", 0), 0u) << message;
+      EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+    }
+  }
+}
+
 // The one --parity rule of every front end.
 TEST(SegmentOptionRows, ParityIsTheReferenceAndRefusesTheSwitchesItSets) {
   const SegmentOptions parity = given({{"parity", 1}, {"concavity", 3.0}});

@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <limits>
+#include <string>
 
 #include <nlohmann/json.hpp>
 #include <opencv2/imgproc.hpp>
@@ -135,6 +136,21 @@ TEST(WallsPipeline, BadInputIsRefused) {
   auto nan = scans;
   nan.front().pose.theta = std::numeric_limits<double>::quiet_NaN();
   EXPECT_THROW(walls_from_scans(nan), Error);
+}
+
+// The grid's options are checked through their rows (wall_map_option_rows()), naming the option.
+TEST(WallsPipeline, EveryGridOptionOutOfRangeIsRefusedByName) {
+  for (const OptionRow<WallMapOptions>& row : wall_map_option_rows()) {
+    WallMapOptions options;
+    EXPECT_NO_THROW(validate(options));
+    row.set(options, -1.0);
+    try {
+      validate(options);
+      ADD_FAILURE() << row.name << " = -1 passes";
+    } catch (const Error& e) {
+      EXPECT_EQ(std::string(e.what()).rfind("--" + row.name + " must ", 0), 0u) << e.what();
+    }
+  }
 }
 
 TEST(WallsPipeline, PosedScansFromACarmenLog) {

@@ -50,6 +50,8 @@ struct OptionRow {
 
 // Throws Error "<shown> must be ..." unless value lies in range (kAny: the set function checks).
 void check_option_value(OptionRange range, double value, const std::string& shown);
+// Whether value lies in range (check_option_value() would not throw).
+bool option_value_in_range(OptionRange range, double value);
 
 // The whole of text as a decimal number (a sign, digits, a point, an exponent; "inf" and "nan" are
 // read, for the range to refuse by name): the one reader of numbers given as text, for the command
@@ -126,6 +128,17 @@ std::vector<OptionRow<Outer>> rows_within(const std::vector<OptionRow<Inner>>& r
                    [get = row.get, part](const Outer& o) { return get(part(o)); },
                    [set = row.set, part](Outer& o, double v) { set(part(o), v); }});
   return out;
+}
+
+// Throws Error "--NAME must be ..." for the first row whose value in target lies outside its range:
+// an options struct's validate() through its table, so that each range is written once. The name is
+// made only for the error (validate() runs on every call of a stage).
+template <typename Target>
+void check_option_rows(const std::vector<OptionRow<Target>>& rows, const Target& target) {
+  for (const OptionRow<Target>& row : rows) {
+    const double value = row.get(target);
+    if (!option_value_in_range(row.range, value)) check_option_value(row.range, value, "--" + row.name);
+  }
 }
 
 // The row named name, or nullptr.

@@ -1,35 +1,47 @@
 #pragma once
-// The rules of segment(), in the order they run, in one list: what a reader reads to know the
-// pipeline, what runs it (the cut rules before the decomposition; after it, the rows on each
-// component's rooms with the criteria they ask, then the rows on all rooms), and where every front end
-// takes its switches from (--no-NAME on the command line and in --config, no_NAME=True in Python, the
-// ROS node's parameters), --parity (every rule off) and the ablation benchmark (each rule off in turn).
-// Both schedules run the list: segment() and the incremental update (through segment_input()).
-// Adding a rule means its file, its test and a row here (tests/segmentation/merge_rule_row_test.cpp
-// adds a merge criterion that way).
+// The pipeline of segment(), every stage a row, in the order the stages run: what a reader reads to
+// know the pipeline, what runs it, and where every front end takes its switches from (--no-NAME on
+// the command line and in --config, no_NAME=True in Python, the ROS node's parameters), --parity
+// (every switch off) and the ablation benchmark (each switch off in turn). Both schedules run the
+// list: segment() and the incremental update (segmentation_input() over a window, then
+// segment_input()). A row runs where its stage says (RuleStage) with the one function its stage
+// takes; adding a stage or a rule means its file, its test and a row here
+// (tests/segmentation/merging/merge_rule_row_test.cpp adds a merge criterion that way,
+// tests/segmentation/pipeline_rows_test.cpp checks that both schedules run the rows in order).
 //
-//   clean           map/free_space_cleaning.h     ray fans, slivers and specks out of the free space
-//   simplify        map/simplify.h                stair steps of the outline
-//   doors           segmentation/door_cuts.h      cuts across narrow passages
-//   wall-openings   segmentation/wall_openings.h  thin walls continued to the next obstacle
-//   island-cuts     segmentation/island_cuts.h    cuts onto free-standing pieces of wall
-//   wall-lines      segmentation/wall_lines.h     straight walls continued across wide openings
-//   (decomposition) decomposition/decompose.h     DuDe at oversegment x tau (--trivial: none)
-//   merge           segmentation/room_merging.h   on each component: pieces joined into rooms across the
-//                                                 cuts the criteria below merge, the highest priority first
-//   corridor-rule   segmentation/merge_criteria.h criterion (learned merging): a corridor going on merges
-//   learned-merge   segmentation/merge_criteria.h criterion: the model's probability (off: the hand rules)
-//   door-cuts       segmentation/merge_criteria.h criterion (hand rules): a door rule's cut stays
-//   furniture-rule  segmentation/merge_criteria.h criterion (hand rules): cuts ending on furniture merge
-//   width-steps     segmentation/merge_criteria.h criterion (hand rules): a room opening onto a much wider space
-//   door-ratio      segmentation/merge_criteria.h criterion (hand rules): a cut spanning the narrower room merges
-//   fold            segmentation/room_merging.h   on each component: rooms too small or thin folded
-//   open-rooms      segmentation/open_rooms.h     on all rooms: rooms bounded mostly by never-seen space join
-//                                                 their neighbour (with none beside them, outside the building:
-//                                                 left out)
+//   row             where it lives (src/)                    what it does
+//   clean           map/free_space_cleaning.cpp              ray fans, slivers and specks out of the free space
+//   simplify        map/simplify.cpp                         stair steps of each component's outline
+//   doors           segmentation/cuts/door_cuts.cpp          cuts across narrow passages
+//   wall-openings   segmentation/cuts/wall_openings.cpp      thin walls continued to the next obstacle
+//   island-cuts     segmentation/cuts/island_cuts.cpp        cuts onto free-standing pieces of wall
+//   wall-lines      segmentation/cuts/wall_lines.cpp         straight walls continued across wide openings
+//   decomposition   decomposition/decompose.cpp              DuDe at oversegment x tau on each part the cuts
+//                                                            leave (--trivial: neither the cuts nor this, the
+//                                                            component is one piece)
+//   merge           segmentation/merging/room_merging.cpp    on each component: pieces joined into rooms across
+//                                                            the cuts the criteria below merge, the highest
+//                                                            priority first
+//   corridor-rule   segmentation/merging/merge_criteria.cpp  criterion (learned merging): a corridor going on merges
+//   learned-merge   segmentation/merging/merge_criteria.cpp  criterion: the model's probability (off: the hand rules)
+//   door-cuts       segmentation/merging/merge_criteria.cpp  criterion (hand rules): a door rule's cut stays
+//   furniture-rule  segmentation/merging/merge_criteria.cpp  criterion (hand rules): cuts ending on furniture merge
+//   width-steps     segmentation/merging/merge_criteria.cpp  criterion (hand rules): a room opening onto a much
+//                                                            wider space
+//   door-ratio      segmentation/merging/merge_criteria.cpp  criterion (hand rules): a cut spanning the narrower
+//                                                            room merges
+//   fold            segmentation/merging/room_merging.cpp    on each component: rooms too small or thin folded
+//   open-rooms      segmentation/merging/open_rooms.cpp      on all rooms: rooms bounded mostly by never-seen
+//                                                            space join their neighbour (with none beside them,
+//                                                            outside the building: left out)
+//   labelling       segmentation/rooms/rooms_from_pieces.cpp the rooms' label image, outlines and passages
+//   door-flags      segmentation/passage_kind.h              passages at most --door-width wide are doors
+//   room-kinds      segmentation/rooms/room_kinds.cpp        corridor or room (whole map only: the incremental
+//                                                            update measures the rooms it changed itself)
 //
-// door-cuts, door-ratio and fold have no switch (their numbers are options of RoomMergeOptions) and
-// follow merge.
+// The public headers of these files are flat in include/topocut/ (segmentation/door_cuts.h, ...).
+// decomposition, door-cuts, door-ratio, fold, labelling, door-flags and room-kinds have no switch
+// (their numbers are options of their stage); door-cuts, door-ratio and fold follow merge.
 #include <functional>
 #include <string>
 #include <vector>
@@ -37,43 +49,65 @@
 #include "topocut/core/cut_rule.h"
 #include "topocut/core/geometry.h"
 #include "topocut/core/occupancy_grid.h"
+#include "topocut/core/segmentation.h"
+#include "topocut/decomposition/decompose.h"
+#include "topocut/map/free_space_cleaning.h"
 #include "topocut/segmentation/merge_criteria.h"
 #include "topocut/segmentation/segmenter.h"
 
 namespace topocut {
 
+// Where a row runs, in pipeline order; each stage calls one function of its rows.
 enum class RuleStage {
-  kClean,  // on the free-space image, before polygons
-  kCut,    // on each component's polygon, before the decomposition
-  kMerge,  // on each component's pieces after the decomposition: the merges, their criteria, the folding
-  kRooms,  // on all rooms of the map, after kMerge
+  kClean,      // clean: on the free-space image, before polygons
+  kOutline,    // outline: on each component's polygon, the outline the cuts and decomposition start from
+               // (each outline row on the one before's)
+  kCut,        // find_cuts: on each component's polygon, before the decomposition
+  kDecompose,  // decompose: on each part of the polygon the cuts leave
+  kMerge,      // judge, on_component: on each component's pieces: the merges, their criteria, the folding
+  kRooms,      // on_rooms: on all rooms of the map, after kMerge
+  kLabel,      // label: the rooms' labels and passages
+  kDescribe,   // describe: on the labelled rooms
 };
 
-struct ComponentMerge;  // one component's rooms as they merge (internal: src/segmentation/room_graph.h)
+struct ComponentMerge;  // one component's rooms as they merge (internal: src/segmentation/merging/room_graph.h)
 
 struct SegmentationRule {
   std::string name;  // switch --no-NAME (rules with a turn_off)
   RuleStage stage = RuleStage::kCut;
-  std::string help;  // what switching it off does, one line
+  std::string help;  // what switching it off does (a row without a switch: what it does), one line
   std::function<bool(const SegmentOptions&)> is_on;
   std::function<void(SegmentOptions&)> turn_off;  // empty: no switch, the rule is on with the stage
-  // Cut rules: the rule's cuts of a component's polygon (grid coordinates), clear of the earlier
-  // rules' cuts; and whether a failure of the decomposition after it retries without it (a cut that
-  // grazes a corner may leave a degenerate part).
+  // kClean: the free space (255 = free) cleaned, given the grid's cells as the sensor saw them
+  // (resolution: metres per cell); each cleaning row cleans the floor the one before left.
+  std::function<CleanedFreeSpace(const cv::Mat& free, const cv::Mat& cells, double resolution, const SegmentOptions&)> clean;
+  // kOutline: the outline to decompose first; the exact one is the fallback if it fails.
+  std::function<PolygonWithHoles(const PolygonWithHoles& exact, const SegmentOptions&)> outline;
+  // kCut: the rule's cuts of a component's polygon (grid coordinates), clear of the earlier rules'
+  // cuts; and whether a failure of the decomposition after it retries without it (a cut that grazes a
+  // corner may leave a degenerate part).
   CutRule cut_rule = CutRule::kDecomposition;
   std::function<std::vector<Segment2>(const PolygonWithHoles&, double resolution, const DoorOptions&,
                                       const std::vector<Segment2>& earlier)>
       find_cuts;
   bool may_fail = false;
-  // Merge criteria (kMerge): the verdict on one candidate merge (merge_criteria.h).
+  // kDecompose: the pieces of one part (grid coordinates, resolution metres per cell) and their cuts.
+  std::function<Decomposition(const PolygonWithHoles& part, double resolution, const SegmentOptions&)> decompose;
+  // kMerge: the verdict on one candidate merge (merge_criteria.h).
   MergeCriterion judge;
-  // Steps on one component's rooms (kMerge): the merges the criteria decide, the folding.
+  // kMerge: a step on one component's rooms (the merges the criteria decide, the folding).
   std::function<void(ComponentMerge&)> on_component;
-  // Steps on all rooms (kRooms), in the grid the rooms were cut from.
+  // kRooms: a step on all rooms, in the grid the rooms were cut from.
   std::function<PieceSet(const PieceSet& rooms, const OccupancyGrid& grid, const SegmentOptions&)> on_rooms;
+  // kLabel: the segmentation of the grid's free cells into the rooms.
+  std::function<Segmentation(const OccupancyGrid& grid, const PieceSet& rooms, const SegmentOptions&)> label;
+  // kDescribe: what is measured on the labelled rooms; whole_map: only where every room is labelled
+  // whole (a window labelling part of its cells leaves it to its caller).
+  std::function<void(Segmentation&, const SegmentOptions&)> describe;
+  bool whole_map = false;
 };
 
-// Every rule, in the order segment() applies them.
+// Every row, in the order segment() runs them.
 const std::vector<SegmentationRule>& segmentation_rules();
 
 // The rule named name, or nullptr.
@@ -81,5 +115,20 @@ const SegmentationRule* find_segmentation_rule(const std::string& name);
 
 // The names of the rules with a switch that are off in options although on by default, in list order.
 std::vector<std::string> rules_off(const SegmentOptions& options);
+
+// The names of the rows run (their stage's function called) while it lives, in the order they ran,
+// over every thread; merge criteria are asked inside merge and not listed. For tests that check a
+// schedule runs the list; one at a time.
+class RuleTrace {
+ public:
+  RuleTrace();
+  RuleTrace(const RuleTrace&) = delete;
+  RuleTrace& operator=(const RuleTrace&) = delete;
+  ~RuleTrace();
+  std::vector<std::string> rows() const;
+};
+
+// Records in the living RuleTrace, if any, that row ran; what the schedules call before each row.
+void note_rule_run(const SegmentationRule& row);
 
 }  // namespace topocut

@@ -128,7 +128,12 @@ PieceSet decompose_pieces(const FreeSpaceComponent& component, double resolution
 PieceSet decompose_component(const FreeSpaceComponent& component, const OccupancyGrid& grid, const SegmentOptions& options,
                              SegmentTimes* times = nullptr);
 
-// Throws Error unless the options are usable (finite, positive concavity and so on).
+// Throws Error naming the first option outside its range (each part's table and
+// segment_number_option_rows(): a range is written once).
 void validate(const SegmentOptions& options);
+
+// SegmentOptions' own numbers as options (concavity, simplify, oversegment): name, unit, range, help
+// (option_table.h). Its parts have tables of their own; segment_option_rows() lists them all.
+const std::vector<OptionRow<SegmentOptions>>& segment_number_option_rows();
 
 }  // namespace topocut

@@ -10,6 +10,7 @@
 
 #include "topocut/core/geometry.h"
 #include "topocut/core/occupancy_grid.h"
+#include "topocut/core/option_table.h"
 #include "topocut/walls/occupancy_evidence.h"
 #include "topocut/walls/posed_scan.h"
 #include "topocut/walls/wall_merging.h"
@@ -38,6 +39,10 @@ Ring wall_polygon(const Segment2& wall, double thickness);
 // on invalid options or when the grid would exceed max_cells.
 // Throws Error naming the first option outside its range.
 void validate(const WallMapOptions& options);
+
+// The fields of WallMapOptions as options (the walls command's grid): name, unit, range, help
+// (option_table.h); max_cells is a limit, not an option.
+const std::vector<OptionRow<WallMapOptions>>& wall_map_option_rows();
 
 OccupancyGrid build_wall_map(std::span<const PosedScan> scans, std::span<const Wall> walls,
                              const WallMapOptions& options = {});

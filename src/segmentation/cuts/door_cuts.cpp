@@ -9,15 +9,8 @@ using namespace cut_search;
 
 void validate(const DoorOptions& options) {
   // Each field's range is its row's (door_option_rows()): one definition, which the front ends check
-  // as a value enters and which holds here for callers of the library. Every door search calls this:
-  // the names are made once.
-  static const std::vector<std::string> shown = [] {
-    std::vector<std::string> names;
-    for (const OptionRow<DoorOptions>& row : door_option_rows()) names.push_back("--" + row.name);
-    return names;
-  }();
-  const std::vector<OptionRow<DoorOptions>>& rows = door_option_rows();
-  for (std::size_t k = 0; k < rows.size(); ++k) check_option_value(rows[k].range, rows[k].get(options), shown[k]);
+  // as a value enters and which holds here for callers of the library.
+  check_option_rows(door_option_rows(), options);
 }
 
 std::vector<Segment2> find_passage_cuts(const PolygonWithHoles& polygon, double resolution, const DoorOptions& options) {

@@ -12,12 +12,7 @@
 
 namespace topocut {
 
-void validate(const OpenRoomOptions& options) {
-  auto non_negative = [](double v) { return std::isfinite(v) && v >= 0.0; };
-  if (!non_negative(options.min_area) || !non_negative(options.wall_reach) || !non_negative(options.wall_band) || !non_negative(options.share) || options.share > 1.0 ||
-      !non_negative(options.ragged_share) || options.ragged_share > 1.0)
-    throw Error("the open rooms' area, wall reach and wall band must be non-negative numbers and their shares lie in [0, 1]");
-}
+void validate(const OpenRoomOptions& options) { check_option_rows(open_room_option_rows(), options); }
 
 namespace {
 

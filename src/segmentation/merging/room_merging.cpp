@@ -171,16 +171,7 @@ double turn(const Point2& a, const Point2& b, const Point2& c) {
 }  // namespace
 
 void validate(const RoomMergeOptions& options) {
-  auto finite_non_negative = [](double v) { return std::isfinite(v) && v >= 0.0; };
-  if (!std::isfinite(options.door_like.ratio) || options.door_like.ratio <= 0.0)
-    throw Error("the door ratio of room merging must be a positive number");
-  if (!finite_non_negative(options.door_like.width_depth) || !finite_non_negative(options.min_room_area) ||
-      !finite_non_negative(options.min_room_width) || !finite_non_negative(options.min_room_thickness) ||
-      !finite_non_negative(options.furniture_size))
-    throw Error("the room merging depth, minimum room area, width and thickness and the furniture size must be non-negative numbers");
-  if (!finite_non_negative(options.step_ratio) || options.step_ratio >= 1.0 || !finite_non_negative(options.step_min_area) ||
-      !finite_non_negative(options.step_min_wide_depth) || !finite_non_negative(options.step_wall_line_depth))
-    throw Error("the width-step ratio must lie in [0, 1) and its area and depth must be non-negative numbers");
+  check_option_rows(room_merge_option_rows(), options);  // each number's range is its row's
   if (options.learned) validate(options.model);
 }
 
@@ -275,7 +266,10 @@ PieceSet merge_rooms(const FreeSpaceComponent& component, const PieceSet& pieces
   if (steps.empty() || pieces.pieces.size() < 2) return pieces;
   RoomGraph graph(component.polygon, pieces, cells, resolution, options.merge.furniture_size);
   ComponentMerge merge{graph, options.merge, std::move(criteria), trace};
-  for (const SegmentationRule* step : steps) step->on_component(merge);
+  for (const SegmentationRule* step : steps) {
+    note_rule_run(*step);
+    step->on_component(merge);
+  }
   return graph.result();
 }
 

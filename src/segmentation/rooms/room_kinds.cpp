@@ -11,11 +11,7 @@
 
 namespace topocut {
 
-void validate(const RoomKindOptions& options) {
-  for (const double v : {options.elongation, options.width, options.hallway_elongation, options.min_contact, options.sample})
-    if (!std::isfinite(v) || v < 0.0) throw Error("the room kind thresholds must be finite and non-negative");
-  if (options.openings < 0) throw Error("the corridor's openings must be non-negative");
-}
+void validate(const RoomKindOptions& options) { check_option_rows(room_kind_option_rows(), options); }
 
 namespace {
 

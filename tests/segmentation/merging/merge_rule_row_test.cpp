@@ -1,8 +1,8 @@
 // A merge rule added as a row of the rule list, to show what adding one takes. In the library a new
 // merge criterion touches three files:
-//   1. its file, src/segmentation/NAME.cpp: the function MergeVerdict NAME(MergeCandidate&) with its
+//   1. its file, src/segmentation/merging/NAME.cpp: the function MergeVerdict NAME(MergeCandidate&) with its
 //      contract comment (merge_criteria.h says what a verdict is and what a candidate measures);
-//   2. its test, tests/segmentation/NAME_test.cpp, reaching it through its row
+//   2. its test, tests/segmentation/merging/NAME_test.cpp, reaching it through its row
 //      (find_segmentation_rule("NAME")->judge, or merge_rooms() and segment() as shipped);
 //   3. its row in make_rules() (src/segmentation/segmentation_rules.cpp), beside a declaration of the
 //      function, placed where it is to be asked: before learned-merge to overrule the model, after it
@@ -83,19 +83,6 @@ TEST(MergeRuleRow, TheHandRulesAfterTheModelDecideWithoutIt) {
   EXPECT_EQ(two.rooms(segmentation_rules()), 1u);
   bool on = true;
   EXPECT_EQ(two.rooms(with_row(door_wide_row(&on), "door-ratio")), 2u);
-}
-
-TEST(MergeRuleRow, TheRowsOnEachComponentComeBeforeTheRowsOnAllRooms) {
-  // merge_rooms() runs the component rows per component, segment_input() the all-room rows after
-  // every component: list order holds only while no component row follows an all-room row.
-  bool all_rooms_seen = false;
-  for (const SegmentationRule& rule : segmentation_rules()) {
-    SCOPED_TRACE(rule.name);
-    if (rule.stage == RuleStage::kRooms) all_rooms_seen = true;
-    EXPECT_FALSE(all_rooms_seen && rule.stage != RuleStage::kRooms);
-    EXPECT_EQ(rule.stage == RuleStage::kMerge, rule.judge || rule.on_component);
-    EXPECT_EQ(rule.stage == RuleStage::kRooms, static_cast<bool>(rule.on_rooms));
-  }
 }
 
 }  // namespace
