@@ -1,10 +1,10 @@
 #pragma once
 // Room ids carried from one segmentation of a growing map to the next by overlap: each old id goes
 // to the new room sharing the most cells with it (largest overlaps first, one id per room); a new
-// room that carries none may take back the id of a room that disappeared earlier where it lies
-// (revived_ids()); every other new room gets an id never used before. What the incremental segmenter
-// does when it segments the whole map, and the reference a live map's churn is measured against
-// (batch's own churn).
+// room that carries none may take back the id of a room that disappeared earlier where it lies, or
+// that disappeared mostly inside it (revived_ids()); every other new room gets an id never used
+// before. What the incremental segmenter does when it segments the whole map, and the reference a
+// live map's churn is measured against (batch's own churn).
 #include <algorithm>
 #include <vector>
 
@@ -20,18 +20,21 @@ namespace topocut {
 // ... in label order (for segment()'s labels: raster order of their first cells), and next_id moves past
 // them. Ties go to the lower new label, then the lower old id.
 // With retired (CV_32SC1 in next's frame: where each room that disappeared last lay, 0 elsewhere),
-// labels carrying no old id first try revived_ids() with every id not carried here.
+// labels carrying no old id first try revived_ids() with every id not carried here (retired_cells:
+// as there).
 std::vector<int> carried_ids(const cv::Mat& previous, const cv::Mat& next, int labels, int& next_id,
-                             const cv::Mat& retired = cv::Mat());
+                             const cv::Mat& retired = cv::Mat(), const std::vector<long long>* retired_cells = nullptr);
 
 // Gives labels without an id (ids[l] == 0, l = 1..ids.size() - 1) the id of a room that disappeared
 // (retired, CV_32SC1, the same size as next: the id where that room last lay) when more than half
-// their cells lie where it was: the room came back (a merge undone, a cut found again), and takes
-// its id back rather than a new one. Largest overlaps first, each id at most once and only if
-// available(id). Only next's cells where mask is non-zero count (mask may be empty: all).
+// their cells lie where it was, or (retired_cells given: by id, the cells retired holds of it in
+// the whole map, which may reach beyond next's window) when they cover more than half of where it
+// was: the room came back (a merge undone, a cut found again, or found again grown by newly seen
+// space), and takes its id back rather than a new one. Largest overlaps first, each id at most once
+// and only if available(id). Only next's cells where mask is non-zero count (mask may be empty: all).
 template <class Available>
 void revived_ids(const cv::Mat& retired, const cv::Mat& next, const cv::Mat& mask, std::vector<int>& ids,
-                 const Available& available);
+                 const Available& available, const std::vector<long long>* retired_cells = nullptr);
 
 namespace detail {
 struct IdOverlap {
@@ -47,14 +50,19 @@ std::vector<IdOverlap> id_overlaps(const cv::Mat& old, const cv::Mat& next, cons
 
 template <class Available>
 void revived_ids(const cv::Mat& retired, const cv::Mat& next, const cv::Mat& mask, std::vector<int>& ids,
-                 const Available& available) {
+                 const Available& available, const std::vector<long long>* retired_cells) {
   if (retired.empty()) return;
   const int labels = static_cast<int>(ids.size()) - 1;
   std::vector<long long> sizes;
   std::vector<int> used;
+  // Whether o's cells are more than half of where the retired room lay (in the whole map).
+  auto covers_it = [&](const detail::IdOverlap& o) {
+    const std::size_t id = static_cast<std::size_t>(o.old);
+    return retired_cells != nullptr && id < retired_cells->size() && 2 * o.cells > (*retired_cells)[id];
+  };
   for (const detail::IdOverlap& o : detail::id_overlaps(retired, next, mask, labels, &sizes)) {
     const std::size_t l = static_cast<std::size_t>(o.label);
-    if (ids[l] != 0 || 2 * o.cells <= sizes[l] || !available(o.old)) continue;
+    if (ids[l] != 0 || (2 * o.cells <= sizes[l] && !covers_it(o)) || !available(o.old)) continue;
     if (std::find(used.begin(), used.end(), o.old) != used.end()) continue;
     ids[l] = o.old;
     used.push_back(o.old);

@@ -125,12 +125,13 @@ struct IncrementalUpdateReport {
 // by id); rooms the change did not reach (not next to a changed cell, not sharing a passage with such
 // a room as the neighbours_* options say, not holding back a merge with such a room) keep their id,
 // cells, polygon and passages (a room that only took in or lost a small blob keeps its polygon);
-// a new room takes back the id of a room that disappeared where more than half of it lies (a merge
-// undone, a cut found again; revived_ids()), else an id never used before; when rooms are decomposed
-// again each old id goes to the
-// piece sharing the most cells with it (largest overlaps first, one id per piece), so a room cut in
-// two keeps its id on its larger part (and the other part too while split_after holds the split
-// back; a room merged into another keeps its id and cells while merge_after holds the merge back).
+// a new room takes back the id of a room that disappeared where more than half of it lies, or more
+// than half of whose last cells it covers (a merge undone, a cut found again, a room found again
+// with newly seen space; revived_ids()), else an id never used before; when rooms are decomposed
+// again each old id goes to the piece sharing the most cells with it (largest overlaps first, one id
+// per piece), so a room cut in two keeps its id on its larger part (and the other part too while
+// split_after holds the split back; a room merged into another keeps its id and cells while
+// merge_after holds the merge back).
 // A room larger than partial_area is decomposed only near the change: its cells farther than
 // partial_margin from the changed box keep its id and its passages there stay. Ids are therefore
 // stable but not contiguous (1..N is not promised, unlike segment()).

@@ -12,8 +12,9 @@ namespace topocut {
 SegmentOptions wall_map_segment_options();
 
 // The incremental options for such a grid built scan by scan from a real log (walls --incremental):
-// no cleaning, splits and merges held back, only touched rooms decomposed, large ones near the change,
-// since a real scan's decompositions differ from scan to scan (benchmarks/README.md, log replay).
+// segment's stages as given (the cleaning too, so that the map at rest gets segment()'s rooms),
+// splits and merges held back, only touched rooms decomposed, large ones near the change, since a
+// real scan's decompositions differ from scan to scan (benchmarks/README.md, log replay).
 IncrementalOptions wall_map_incremental_options(const SegmentOptions& segment = wall_map_segment_options());
 
 }  // namespace topocut

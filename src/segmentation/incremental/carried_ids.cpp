@@ -46,7 +46,7 @@ std::vector<IdOverlap> id_overlaps(const cv::Mat& old_ids, const cv::Mat& next, 
 }  // namespace detail
 
 std::vector<int> carried_ids(const cv::Mat& previous, const cv::Mat& next, int labels, int& next_id,
-                             const cv::Mat& retired) {
+                             const cv::Mat& retired, const std::vector<long long>* retired_cells) {
   auto fits = [&](const cv::Mat& m) { return m.empty() || (m.type() == CV_32SC1 && m.size() == next.size()); };
   if (next.type() != CV_32SC1 || !fits(previous) || !fits(retired))
     throw Error("internal: ids are carried between label images (CV_32SC1) of one size");
@@ -59,7 +59,7 @@ std::vector<int> carried_ids(const cv::Mat& previous, const cv::Mat& next, int l
       taken.insert(o.old);
     }
   }
-  revived_ids(retired, next, cv::Mat(), ids, [&](int id) { return !taken.count(id) && id < next_id; });
+  revived_ids(retired, next, cv::Mat(), ids, [&](int id) { return !taken.count(id) && id < next_id; }, retired_cells);
   for (int l = 1; l <= labels; ++l)
     if (ids[static_cast<std::size_t>(l)] == 0) ids[static_cast<std::size_t>(l)] = next_id++;
   return ids;

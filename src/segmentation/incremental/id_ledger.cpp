@@ -15,8 +15,10 @@ namespace topocut {
 
 IdLedger::IdLedger(const cv::Size& size) { clear(size); }
 
+IdLedger::IdLedger(int next_id, cv::Mat retired) : next_id_(next_id), retired_(std::move(retired)) { count_retired(); }
+
 std::vector<int> IdLedger::carry(const cv::Mat& previous, const cv::Mat& next, int labels) {
-  const std::vector<int> ids = carried_ids(previous, next, labels, next_id_, retired_);
+  const std::vector<int> ids = carried_ids(previous, next, labels, next_id_, retired_, &retired_cells_);
   if (previous.empty()) return ids;
   std::vector<char> kept(static_cast<std::size_t>(next_id_), 0);
   for (const int id : ids)
@@ -25,9 +27,36 @@ std::vector<int> IdLedger::carry(const cv::Mat& previous, const cv::Mat& next, i
     const int* l = previous.ptr<int>(r);
     int* out = retired_.ptr<int>(r);
     for (int c = 0; c < retired_.cols; ++c)
-      if (l[c] > 0 && !kept[static_cast<std::size_t>(l[c])]) out[c] = l[c];
+      if (l[c] > 0 && !kept[static_cast<std::size_t>(l[c])]) set_retired(out + c, l[c]);
   }
   return ids;
+}
+
+void IdLedger::retire(int row, int begin, int end, int id) {
+  int* cell = retired_.ptr<int>(row);
+  for (int c = begin; c < end; ++c) set_retired(cell + c, id);
+}
+
+// One cell of retired_ now holds id, the counts following (the id it held loses the cell).
+void IdLedger::set_retired(int* cell, int id) {
+  if (*cell == id) return;
+  if (*cell > 0) --retired_cells_[static_cast<std::size_t>(*cell)];
+  *cell = id;
+  if (static_cast<std::size_t>(id) >= retired_cells_.size()) retired_cells_.resize(static_cast<std::size_t>(id) + 1, 0);
+  ++retired_cells_[static_cast<std::size_t>(id)];
+}
+
+// retired_cells_ from retired_ (a ledger read back, or a frame that moved and lost cells).
+void IdLedger::count_retired() {
+  retired_cells_.assign(static_cast<std::size_t>(std::max(next_id_, 1)), 0);
+  for (int r = 0; r < retired_.rows; ++r) {
+    const int* cell = retired_.ptr<int>(r);
+    for (int c = 0; c < retired_.cols; ++c) {
+      const std::size_t id = static_cast<std::size_t>(std::max(cell[c], 0));
+      if (id >= retired_cells_.size()) retired_cells_.resize(id + 1, 0);
+      if (id > 0) ++retired_cells_[id];
+    }
+  }
 }
 
 void IdLedger::move(const cv::Point& shift, const cv::Size& size) {
@@ -36,9 +65,13 @@ void IdLedger::move(const cv::Point& shift, const cv::Size& size) {
   const cv::Rect kept = old_in_new & cv::Rect(cv::Point(), size);
   if (!kept.empty()) retired_(kept - shift).copyTo(moved(kept));
   retired_ = moved;
+  count_retired();
 }
 
-void IdLedger::clear(const cv::Size& size) { retired_ = cv::Mat::zeros(size, CV_32SC1); }
+void IdLedger::clear(const cv::Size& size) {
+  retired_ = cv::Mat::zeros(size, CV_32SC1);
+  retired_cells_.assign(static_cast<std::size_t>(next_id_), 0);
+}
 
 namespace {
 

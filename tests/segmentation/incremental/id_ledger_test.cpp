@@ -61,6 +61,67 @@ TEST(IdLedger, ARoomThatComesBackAfterAMergeTakesItsIdBack) {
   EXPECT_EQ(ledger.next_id(), 9);
 }
 
+TEST(IdLedger, ARoomFoundAgainWithNewlySeenSpaceTakesItsIdBack) {
+  // A cut-off part (id 2, two cells) merges back into room 1, then the robot sees more and the cut is
+  // found again: the part now holds its two old cells and more new ones than that, so most of it does
+  // not lie where 2 was, but it covers all of where 2 was: it takes 2 back. Again one round later
+  // with a still larger part: ids used stay 2 for one room that came and went three times.
+  IdLedger ledger(cv::Size(8, 3));
+  const cv::Mat cut = labels_of({"11111122", "00000000", "00000000"});
+  const cv::Mat whole = labels_of({"11111111", "00000000", "00000000"});
+  const cv::Mat grown = labels_of({"11111122", "00002222", "00000000"});
+  const cv::Mat merged_grown = labels_of({"11111111", "11111111", "00000000"});
+  const cv::Mat grown_more = labels_of({"11111122", "00002222", "00222222"});
+  cv::Mat published = named(cut, ledger.carry(cv::Mat(), cut, 2));
+  published = named(whole, ledger.carry(published, whole, 1));
+  EXPECT_EQ(ledger.retired_cells(2), 2);
+  EXPECT_EQ(ledger.carry(published, grown, 2), (std::vector<int>{0, 1, 2}));  // 2 of its 6 cells where 2 was
+  published = named(grown, {0, 1, 2});
+  published = named(merged_grown, ledger.carry(published, merged_grown, 1));
+  EXPECT_EQ(ledger.retired_cells(2), 6);  // where it lay last
+  EXPECT_EQ(ledger.carry(published, grown_more, 2), (std::vector<int>{0, 1, 2}));  // 6 of its 12
+  EXPECT_EQ(ledger.next_id(), 3);
+}
+
+TEST(IdLedger, ARoomCoveringLessThanHalfOfWhereOneLayTakesANewId) {
+  // Retired room 5 lay on 4 cells; a new room holding 2 of them among 6 of its own neither lies
+  // mostly where 5 was nor covers most of it: a new id, not 5.
+  IdLedger ledger(6, labels_of({"5555", "0000"}));
+  const cv::Mat previous = labels_of({"0000", "0000"});
+  const cv::Mat next = labels_of({"1100", "1111"});
+  EXPECT_EQ(ledger.carry(previous, next, 1), (std::vector<int>{0, 6}));
+  EXPECT_EQ(ledger.next_id(), 7);
+}
+
+TEST(IdLedger, NamingAWindowWeighsWhereARoomLayInTheWholeMap) {
+  // Retired 5 lay on 4 cells, 2 of them in the window (columns 4-7); retired 6 on 2 cells, both in it.
+  // Label 1 covers 5's 2 cells of the window among 6 of its own: all of 5 the window sees, but only
+  // half of where 5 lay in the map: a new id. Label 2 covers all of where 6 lay among 6 cells of its
+  // own: 6 back.
+  IdLedger ledger(7, labels_of({"00555500", "00000066", "00000000"}));
+  const cv::Mat in_window = labels_of({"1111", "1122", "2222"});
+  std::vector<int> ids{0, 0, 0};
+  const int fresh = ledger.name(cv::Rect(4, 0, 4, 3), in_window, cv::Mat(), ids, [](int) { return true; });
+  EXPECT_EQ(ids, (std::vector<int>{0, 7, 6}));
+  EXPECT_EQ(fresh, 1);
+  EXPECT_EQ(ledger.next_id(), 8);
+}
+
+TEST(IdLedger, CountsWhereEachRetiredRoomLayAsCellsAreOverwrittenAndFallOutside) {
+  IdLedger ledger(9, labels_of({"5566", "0000"}));
+  EXPECT_EQ(ledger.retired_cells(5), 2);
+  EXPECT_EQ(ledger.retired_cells(6), 2);
+  ledger.retire(0, 1, 3, 7);  // room 7 disappears over one cell of 5 and one of 6
+  EXPECT_EQ(ledger.retired_cells(5), 1);
+  EXPECT_EQ(ledger.retired_cells(6), 1);
+  EXPECT_EQ(ledger.retired_cells(7), 2);
+  ledger.move(cv::Point(-1, 0), cv::Size(4, 2));  // the map's first column falls outside
+  EXPECT_EQ(ledger.retired_cells(5), 0);
+  EXPECT_EQ(ledger.retired_cells(7), 2);
+  EXPECT_EQ(ledger.retired_cells(6), 1);
+  EXPECT_EQ(ledger.retired_cells(8), 0);  // never disappeared
+}
+
 TEST(IdLedger, NamingAWindowRevivesOnlyAvailableIdsAndCountsTheNewOnes) {
   // A window of the map (columns 2-5): label 1 lies where retired 5 was, label 2 where retired 6
   // was but 6 is not available (alive elsewhere), label 3 already has its id.
