@@ -22,9 +22,10 @@ struct OpenRoomOptions {
   double wall_band = 0.5;     // metres: never-seen bands this thin between free cells are drawn walls
   // A room with no room beside it is open too when less than floor_share of the cells the labelling
   // gives it are its floor: the rest are rays the cleaning removed (free cells of no piece, given to the
-  // nearest piece along free space), so the room a person sees is a fan seen only through a gap in a
-  // wall, however walled the floor under its densest rays. Rooms beside others are not judged so (a
-  // room is not less a room for the fan through its door).
+  // nearest piece along free space; counted within the room's longer side around its extent), so the
+  // room a person sees is a fan seen only through a gap in a wall, however walled the floor under its
+  // densest rays. Rooms beside others are not judged so (a room is not less a room for the fan through
+  // its door).
   double floor_share = 0.5;  // [0, 1]; 0: off
 };
 

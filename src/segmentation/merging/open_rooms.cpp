@@ -32,12 +32,13 @@ bool has_occupied_cell(const cv::Mat& cells) {
 }
 
 // The cells the labelling (rooms_from_pieces(): free cells of no room take the nearest room along free
-// space) gives room id, estimated in the window of its extent grown on each side by twice its longer
-// side: its own cells and the free cells of no room (rays the cleaning removed) nearest to it along
-// the free space of the window. The pass costs the window, not the grid (the labelling's pass over the
-// whole grid cost lab_b 1.3 times the segmentation's instructions); rays farther out are not counted.
-long long labelled_cells(const LabelRuns& ids, int id, const RoomExtent& extent, const cv::Mat& cells) {
-  const int margin = 2 * std::max(extent.box.width, extent.box.height);
+// space) gives room id, estimated in the window of its extent grown on each side by its longer side:
+// its own cells and the free cells of no room (rays the cleaning removed) nearest to it along the free
+// space of the window. The pass costs the window, not the grid (the labelling's pass over the whole
+// grid cost lab_b 1.3 times the segmentation's instructions); rays farther out are not counted. share:
+// with fewer free cells of no room in the window than would make it mostly rays, none is completed.
+long long labelled_cells(const LabelRuns& ids, int id, const RoomExtent& extent, const cv::Mat& cells, double share) {
+  const int margin = std::max(extent.box.width, extent.box.height);
   const cv::Rect window = cv::Rect(extent.box.x - margin, extent.box.y - margin, extent.box.width + 2 * margin,
                                    extent.box.height + 2 * margin) & cv::Rect(0, 0, cells.cols, cells.rows);
   cv::Mat labels(window.size(), CV_32SC1, cv::Scalar(0));
@@ -52,6 +53,9 @@ long long labelled_cells(const LabelRuns& ids, int id, const RoomExtent& extent,
     for (int wc = 0; wc < window.width; ++wc)
       if (cell[wc] == kFree && label[wc] == 0) unlabelled.push_back(wr * window.width + wc);
   }
+  // Given every one of them, the room would still not be mostly rays: no completion needed.
+  if (static_cast<double>(extent.cells) >= share * static_cast<double>(extent.cells + static_cast<long long>(unlabelled.size())))
+    return extent.cells;
   long long given = 0;
   if (!unlabelled.empty()) {
     std::vector<LabelChange> changes;
@@ -109,7 +113,7 @@ PieceSet join_open_rooms(const PieceSet& rooms, const OccupancyGrid& grid, const
   // Mostly rays: less than floor_share of the cells the labelling gives the room are its own.
   const auto mostly_rays = [&](int id, const RoomExtent& extent) {
     return options.floor_share > 0.0 &&
-           static_cast<double>(extent.cells) < options.floor_share * static_cast<double>(labelled_cells(ids, id, extent, grid.cells));
+           static_cast<double>(extent.cells) < options.floor_share * static_cast<double>(labelled_cells(ids, id, extent, grid.cells, options.floor_share));
   };
   for (const auto& [id, extent] : extents) {
     if (static_cast<double>(extent.cells) * cell_area < options.min_area) continue;

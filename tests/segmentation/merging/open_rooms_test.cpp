@@ -61,10 +61,10 @@ TEST(OpenRooms, AnOpenRoomWithNothingBesideItIsDropped) {
 }
 
 // Beyond the corridor's wall, a 1 m x 1.05 m block of floor (x in [60, 80]) walled on three sides, seen
-// only through a gap in that wall (rows 60 to 62): the cleaning kept the block, where the rays crossed
-// densely, as floor, and removed the rays (free cells of no piece) through the gap and beyond it, one
-// every other row to the map's edge. The labelling gives the block the rays, so the room a person would
-// see is a fan, though the block's own outline runs mostly along walls.
+// only through a gap in that wall: the cleaning kept the block, where the rays crossed densely, as
+// floor, and removed the rays (free cells of no piece) through the gap and the fan beyond the block's
+// open side, one ray every other row to the map's edge. The labelling gives the block the rays, so the
+// room a person would see is a fan, though the block's own outline runs mostly along walls.
 struct SeenThroughGap {
   PieceSet rooms;
   OccupancyGrid grid;
@@ -79,7 +79,9 @@ struct SeenThroughGap {
     const int block_top = cv::boundingRect(rasterize_polygons(rooms.pieces, grid.cells.size()) == 2).y;
     if (!rays) return;
     grid.cells(cv::Rect(45, block_top + 5, 16, 3)).setTo(kFree);  // through the corridor's wall and the block's
-    for (int row = block_top; row < block_top + 21; row += 2) grid.cells(cv::Rect(80, row, 50, 1)).setTo(kFree);
+    // The fan beyond the block's open side, wider than the block: its rays' common front, and the rays.
+    grid.cells(cv::Rect(80, block_top - 21, 1, 63)).setTo(kFree);
+    for (int row = block_top - 21; row < block_top + 42; row += 2) grid.cells(cv::Rect(80, row, 50, 1)).setTo(kFree);
   }
 };
 
