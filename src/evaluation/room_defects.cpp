@@ -96,6 +96,13 @@ RoomDefects count_room_defects(const cv::Mat& labels, const OccupancyGrid& grid,
   }
   const int band = static_cast<int>(std::lround(options.open.wall_band / resolution));
   const LabelRuns outlines = defects.open_judged ? label_runs(on_floor) : LabelRuns();
+  // Each room's floor cells: with the floor given, an island of floor that is mostly rays is open too.
+  const std::map<int, RoomExtent> floors = !floor.empty() && defects.open_judged ? room_extents(outlines) : std::map<int, RoomExtent>();
+  const auto mostly_rays = [&](int id, long long cells) {
+    const auto it = floors.find(id);
+    return options.open.floor_share > 0.0 && it != floors.end() &&
+           static_cast<double>(it->second.cells) < options.open.floor_share * static_cast<double>(cells);
+  };
   for (const auto& [id, room] : room_extents(label_runs(ids))) {
     ++defects.rooms;
     const double area = static_cast<double>(room.cells) * cell_area;
@@ -105,7 +112,7 @@ RoomDefects count_room_defects(const cv::Mat& labels, const OccupancyGrid& grid,
     bool open = false;
     if (defects.open_judged && area >= options.open.min_area) {
       const RoomOutline outline = room_outline(outlines, id, room.box, grid.cells, walls, band);
-      open = outline.open(options.open.share, options.open.ragged_share);
+      open = outline.open(options.open.share, options.open.ragged_share) || (outline.neighbours.empty() && mostly_rays(id, room.cells));
       defects.unseen += outline.open(options.open.share, 0.0);
     }
     defects.specks += speck;

@@ -100,6 +100,9 @@ const std::vector<OptionRow<OpenRoomOptions>>& open_room_option_rows() {
                 "open rooms: never-seen cells this close to a wall (metres) count as wall"),
       field_row("open-wall-band", "M", OptionRange::kLengthOrZero, &O::wall_band,
                 "open rooms: never-seen bands this thin (metres) between free cells are drawn walls"),
+      field_row("open-floor-share", "F", OptionRange::kShare, &O::floor_share,
+                "open rooms: or less than this share of the room's cells is floor, the rest rays the cleaning removed "
+                "(a fan seen through an opening; 0: off)"),
   };
   return rows;
 }

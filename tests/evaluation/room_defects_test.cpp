@@ -129,6 +129,38 @@ TEST(RoomDefects, ABandOfUnknownBetweenTwoRoomsIsAWall) {
   }
 }
 
+// A 2 m x 2 m walled room (floor) and, off its open right side, rays one every other row (free cells
+// the cleaning removed, labelled with the room): with the floor given, a room that is mostly rays and
+// touches no other room's floor is open, as the open-rooms rule leaves it out; as floor alone it is
+// walled on three sides and not open.
+TEST(RoomDefects, AnIslandOfFloorThatIsMostlyRaysIsOpen) {
+  cv::Mat labels = cv::Mat::zeros(60, 200, CV_32SC1);
+  OccupancyGrid grid = grid_like(labels, 0.05, kUnknown);
+  const cv::Rect room(10, 10, 40, 40);
+  grid.cells(cv::Rect(9, 9, 42, 42)).setTo(kOccupied);
+  grid.cells(room).setTo(kFree);
+  grid.cells(cv::Rect(50, 10, 1, 40)).setTo(kUnknown);  // the right side is never-seen
+  cv::Mat floor = cv::Mat::zeros(labels.size(), CV_8UC1);
+  floor(room).setTo(255);
+  labels(room).setTo(1);
+  for (int row = 10; row < 50; row += 2) {
+    grid.cells(cv::Rect(50, row, 150, 1)).setTo(kFree);
+    labels(cv::Rect(50, row, 150, 1)).setTo(1);
+  }
+  DefectOptions options;
+  EXPECT_EQ(topocut::count_room_defects(labels, grid, options, floor).open, 1);  // 1600 floor of 4600 cells
+  EXPECT_EQ(topocut::count_room_defects(labels, grid, options).open, 0);         // no floor: the outline alone
+  options.open.floor_share = 0.0;                                                 // off
+  EXPECT_EQ(topocut::count_room_defects(labels, grid, options, floor).open, 0);
+  // With a room beside its floor it is not judged by its rays.
+  options.open.floor_share = 0.5;
+  grid.cells(cv::Rect(9, 50, 42, 1)).setTo(kFree);
+  labels(cv::Rect(9, 50, 42, 10)).setTo(2);
+  grid.cells(cv::Rect(9, 50, 42, 10)).setTo(kFree);
+  floor(cv::Rect(9, 50, 42, 10)).setTo(255);
+  EXPECT_EQ(topocut::count_room_defects(labels, grid, options, floor).open, 0);
+}
+
 TEST(RoomDefects, AWalledRoomWithOneDoorIsNotOpen) {
   OpenRoomCase c;
   c.wall_top();

@@ -42,7 +42,9 @@ struct RoomDefects {
 };
 
 // Counts the rooms and their defects in a label image (single-channel integers, 0 = no room, the
-// grid's size) of grid; open rooms by their outline (room_outline()), floor as there. The disc is
+// grid's size) of grid; open rooms by their outline (room_outline()), floor as there, and, with the
+// floor given, rooms whose floor touches no other room's and is less than open.floor_share of their
+// cells (the rest rays: a fan seen through an opening), as open_rooms.h joins them. The disc is
 // 2 * round(thin_disc / 2 / resolution) + 1 cells across. Throws Error on a bad image, size or resolution.
 RoomDefects count_room_defects(const cv::Mat& labels, const OccupancyGrid& grid, const DefectOptions& options = {},
                                const cv::Mat& floor = cv::Mat());

@@ -20,16 +20,24 @@ struct OpenRoomOptions {
   double ragged_share = 0.3;  // [0, 1] of the never-seen edges that turn
   double wall_reach = 0.15;   // metres: never-seen cells this close to a wall count as wall (SLAM rim)
   double wall_band = 0.5;     // metres: never-seen bands this thin between free cells are drawn walls
+  // A room with no room beside it is open too when less than floor_share of the cells the labelling
+  // gives it are its floor: the rest are rays the cleaning removed (free cells of no piece, given to the
+  // nearest piece along free space; counted within the room's longer side around its extent), so the
+  // room a person sees is a fan seen only through a gap in a wall, however walled the floor under its
+  // densest rays. Rooms beside others are not judged so (a room is not less a room for the fan through
+  // its door).
+  double floor_share = 0.5;  // [0, 1]; 0: off
 };
 
 // The fields of OpenRoomOptions as options: name, unit, range, help (option_table.h).
 const std::vector<OptionRow<OpenRoomOptions>>& open_room_option_rows();
 
-// Throws Error unless the numbers are finite and non-negative and share lies in [0, 1].
+// Throws Error unless the numbers are finite and non-negative and the shares lie in [0, 1].
 void validate(const OpenRoomOptions& options);
 
-// rooms (each piece one room, grid coordinates of grid) with every open room joined to the room it
-// shares the longest boundary with (their union), and every open room with no room beside it and less
+// rooms (each piece one room, grid coordinates of grid; free cells of no piece are rays the cleaning
+// removed) with every open room joined to the room it shares the longest boundary with (their union),
+// and every open room with no room beside it (by its outline or its floor share) and less
 // than half the area of the largest room left out (its cells stay unlabelled unless label completion
 // gives them to a room nearby; a lone large one is the building, or what of it was explored). Cuts stay as they
 // are (a cut inside one room separates nothing). Unchanged unless options.enabled, and on a grid

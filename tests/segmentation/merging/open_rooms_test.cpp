@@ -1,8 +1,10 @@
 #include "topocut/segmentation/open_rooms.h"
 
 #include <gtest/gtest.h>
+#include <opencv2/imgproc.hpp>
 
 #include "topocut/core/error.h"
+#include "topocut/map/rasterize.h"
 
 namespace topocut {
 namespace {
@@ -56,6 +58,53 @@ TEST(OpenRooms, AnOpenRoomWithNothingBesideItIsDropped) {
     alone.grid.cells(cv::Rect(5, 5, 39, 120)).setTo(kFree);
     EXPECT_EQ(join_open_rooms(alone.rooms, alone.grid).pieces.size(), beyond == kUnknown ? 1u : 2u);
   }
+}
+
+// Beyond the corridor's wall, a 1 m x 1.05 m block of floor (x in [60, 80]) walled on three sides, seen
+// only through a gap in that wall: the cleaning kept the block, where the rays crossed densely, as
+// floor, and removed the rays (free cells of no piece) through the gap and the fan beyond the block's
+// open side, one ray every other row to the map's edge. The labelling gives the block the rays, so the
+// room a person would see is a fan, though the block's own outline runs mostly along walls.
+struct SeenThroughGap {
+  PieceSet rooms;
+  OccupancyGrid grid;
+  SeenThroughGap(bool rays, bool neighbour) {
+    rooms.pieces = {{{{5, 5}, {45, 5}, {45, 125}, {5, 125}}, {}}, {{{60, 55}, {80, 55}, {80, 76}, {60, 76}}, {}}};
+    if (neighbour) rooms.pieces.push_back({{{60, 35}, {80, 35}, {80, 55}, {60, 55}}, {}});  // a room below the block
+    grid.cells = cv::Mat(130, 130, CV_8UC1, cv::Scalar(kUnknown));
+    grid.resolution = kRes;
+    grid.cells(cv::Rect(4, 4, 42, 122)).setTo(kOccupied);
+    grid.cells(cv::Rect(59, 52, 21, 25)).setTo(kOccupied);  // the block's walls (its right side is never-seen)
+    grid.cells.setTo(kFree, rasterize_polygons(rooms.pieces, grid.cells.size()) > 0);
+    const int block_top = cv::boundingRect(rasterize_polygons(rooms.pieces, grid.cells.size()) == 2).y;
+    if (!rays) return;
+    grid.cells(cv::Rect(45, block_top + 5, 16, 3)).setTo(kFree);  // through the corridor's wall and the block's
+    // The fan beyond the block's open side, wider than the block: its rays' common front, and the rays.
+    grid.cells(cv::Rect(80, block_top - 21, 1, 63)).setTo(kFree);
+    for (int row = block_top - 21; row < block_top + 42; row += 2) grid.cells(cv::Rect(80, row, 50, 1)).setTo(kFree);
+  }
+};
+
+TEST(OpenRooms, FloorSeenOnlyThroughRaysIsNoRoomOfItsOwn) {
+  const SeenThroughGap fan(true, false);
+  // Not open by its outline: more wall than never-seen space.
+  OpenRoomOptions outline_only;
+  outline_only.floor_share = 0.0;
+  EXPECT_EQ(join_open_rooms(fan.rooms, fan.grid, outline_only).pieces.size(), 2u);
+  // Mostly rays once labelled: left out, so that the labelling gives its cells and the fan to the
+  // corridor they are seen from.
+  const PieceSet rooms = join_open_rooms(fan.rooms, fan.grid);
+  ASSERT_EQ(rooms.pieces.size(), 1u);
+  EXPECT_DOUBLE_EQ(area(rooms.pieces[0]), area(fan.rooms.pieces[0]));
+  // The same block without the rays (a walled niche reached some other way) stays a room.
+  const SeenThroughGap walled(false, false);
+  EXPECT_EQ(join_open_rooms(walled.rooms, walled.grid).pieces.size(), 2u);
+  // A room beside another is not judged by the rays it is given (a room with a fan through its door).
+  const SeenThroughGap beside(true, true);
+  EXPECT_EQ(join_open_rooms(beside.rooms, beside.grid).pieces.size(), 3u);
+  OpenRoomOptions bad;
+  bad.floor_share = 1.5;
+  EXPECT_THROW(join_open_rooms(fan.rooms, fan.grid, bad), Error);
 }
 
 TEST(OpenRooms, AWalledRoomOrOneBehindAStraightGreyWallStays) {
