@@ -89,12 +89,13 @@ int failure_exit_code(std::size_t failed, std::size_t total, const char* what) {
 
 // --mode incremental: a simulated robot explores every image (exploration module) and each
 // update of its map is segmented incrementally; the final maps are scored, updates timed.
-int run_incremental(const DatasetArguments& arguments, const std::vector<DatasetMap>& maps, bool compare_batch,
-                    int batch_every) {
+// comparison holds the batch comparison's rows (batch_comparison_rows()).
+int run_incremental(const DatasetArguments& arguments, const std::vector<DatasetMap>& maps,
+                    const ExplorationRunOptions& comparison) {
   IncrementalDatasetOptions options;
   options.run = arguments.run;
-  options.exploration.compare_batch = compare_batch;
-  options.exploration.batch_every = batch_every;
+  options.exploration.compare_batch = comparison.compare_batch;
+  options.exploration.batch_every = comparison.batch_every;
   const std::vector<IncrementalImageResult> results = run_incremental_dataset(maps, options);
   const std::string method = method_name(arguments.run.segment) + ", incremental";
   std::cout << "Dataset " << terminal_text(arguments.dataset) << ", " << maps.size() << " maps, method: " << terminal_text(method) << "\n\n"
@@ -161,8 +162,6 @@ int run(const std::vector<std::string>& args) {
   described.add_options()
       ("mode", po::value<std::string>()->default_value("batch")->value_name("MODE"),
        "batch, or incremental: a simulated robot (360° laser, 5 m) explores each image and every update of its map is segmented incrementally")
-      ("compare-batch", po::bool_switch(), "with --mode incremental: also time batch segmentation on the same updates")
-      ("batch-every", po::value<int>()->default_value(1)->value_name("N"), "with --compare-batch: every N-th update only (and the last)")
       ("labels", po::value<std::string>()->value_name("DIR"),
        "score the label images in DIR instead of segmenting: X.png for map X (X_furnitures.png for its furnished image), one grey or 16-bit value a region (0 none) or one colour a region (black none), restricted to the map's free pixels; a map without its image is reported as missing")
       ("maps", po::value<std::string>()->value_name("DIR"),
@@ -170,6 +169,9 @@ int run(const std::vector<std::string>& args) {
       ("floor-repetitions", po::value<int>()->default_value(3)->value_name("N"), "with --maps: repetitions of the contour floor (decode, threshold, findContours), median taken; 0: not measured")
       ("report", po::value<std::string>()->value_name("DIR"),
        "write DIR/index.html (created if missing): the summary and per-image tables and, per image, the ground truth's rooms beside the segmentation (DIR/MAP_VARIANT_truth.png, _rooms.png), matched pairs in one colour, missed rooms hatched red, segments that merged rooms orange");
+  po::options_description comparison_options("With --mode incremental");
+  add_option_rows(comparison_options, batch_comparison_rows<ExplorationRunOptions>(), ExplorationRunOptions{});
+  described.add(comparison_options);
   const auto vm = parse_options(
       "topocut evaluate --dataset DIR [--variant plain|furnished|all] [--csv FILE] [--concavity M]\n"
       "                        [--trivial] [--map NAME ...] [--mode batch|incremental [--compare-batch]]\n"
@@ -210,8 +212,8 @@ int run(const std::vector<std::string>& args) {
   DatasetArguments arguments = to_arguments(*vm);
   const std::string mode = (*vm)["mode"].as<std::string>();
   if (mode != "batch" && mode != "incremental") throw UsageError("--mode must be batch or incremental, not '" + mode + "'");
-  const int batch_every = (*vm)["batch-every"].as<int>();
-  if (batch_every < 1) throw UsageError("--batch-every must be at least 1");
+  ExplorationRunOptions comparison;
+  read_option_rows(*vm, batch_comparison_rows<ExplorationRunOptions>(), comparison);
   const std::string report = vm->count("report") ? (*vm)["report"].as<std::string>() : "";
   // Checked early, before the dataset is read; with --report the CSV may lie in the report's folder,
   // which is made below and checked with it there.
@@ -256,7 +258,7 @@ int run(const std::vector<std::string>& args) {
     check_outputs(outputs, inputs);
   }
   arguments.run.progress = [](const std::string& line) { progress(line); };
-  if (mode == "incremental") return run_incremental(arguments, maps, (*vm)["compare-batch"].as<bool>(), batch_every);
+  if (mode == "incremental") return run_incremental(arguments, maps, comparison);
   const std::vector<ImageResult> results = run_dataset(
       maps, arguments.run, labels.empty() ? batch_segmenter(arguments.run) : labels_segmenter(labels, arguments.run));
 

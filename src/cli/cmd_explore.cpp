@@ -41,23 +41,22 @@ OccupancyGrid load_inputs(const std::string& map_path, const MapLoadOptions& loa
 }
 
 int run(const std::vector<std::string>& args) {
-  std::string map_path, frames, gt_path, start;
+  std::string map_path, gt_path, start;
   ExplorationRunOptions options;
   ExplorationOptions& exploration = options.exploration;
   unsigned seed = 0;
-  int frame_every = 1;
+  FrameSequenceOptions frames;
   bool no_hint = false;
   po::options_description described("Exploration");
   described.add_options()
       ("map", po::value<std::string>(&map_path)->required(), "ground-truth map the robot explores (image or ROS YAML)")
       ("seed", po::value<unsigned>(&seed)->default_value(seed), "start choice: 0 = the most open cell, else a random free cell")
       ("start", po::value<std::string>(&start), "start position X,Y in metres (overrides the seed)")
-      ("compare-batch", po::bool_switch(&options.compare_batch), "also run the batch segmenter on every update, timed, with its own churn (ids carried by overlap)")
-      ("batch-every", po::value<int>(&options.batch_every)->default_value(1), "with --compare-batch: only every N-th update (and the last)")
       ("no-hint", po::bool_switch(&no_hint), "do not tell the segmenter which rectangle changed")
       ("gt", po::value<std::string>(&gt_path), "ground-truth segmentation image (default: X_gt_segmentation.png next to the map)")
-      ("frames", po::value<std::string>(&frames), "write a PNG frame of every update into this folder")
-      ("frame-every", po::value<int>(&frame_every)->default_value(frame_every), "with --frames: only every N-th update (and the last)");
+      ("frames", po::value<std::string>(&frames.folder), "write a PNG frame of every update into this folder");
+  add_option_rows(described, batch_comparison_rows<ExplorationRunOptions>(), options);
+  add_option_rows(described, frame_option_rows(), frames);
   add_option_rows(described, exploration_option_rows(), exploration);
   const SegmentSettings segment_defaults{options.incremental.segment, {}};
   add_segment_options(described, segment_defaults);
@@ -82,8 +81,8 @@ int run(const std::vector<std::string>& args) {
       described, positional, args);
   if (!vm) return 0;
   if (seed > 0xffffffffu) throw UsageError("--seed must fit in 32 bits");
-  if (frame_every < 1) throw UsageError("--frame-every must be at least 1");
-  if (options.batch_every < 1) throw UsageError("--batch-every must be at least 1");
+  read_option_rows(*vm, batch_comparison_rows<ExplorationRunOptions>(), options);
+  read_option_rows(*vm, frame_option_rows(), frames);
   read_option_rows(*vm, exploration_option_rows(), exploration);
   exploration.seed = seed;
   if (vm->count("start")) exploration.start = parse_point(start);
@@ -98,8 +97,8 @@ int run(const std::vector<std::string>& args) {
 
   cv::Mat gt_rooms;
   const OccupancyGrid world = load_inputs(map_path, load, gt_path, gt_rooms);
-  if (!frames.empty()) prepare_frames_folder(frames, {map_path, gt_path});
-  FrameWriter writer(frames, frame_every, exploration.range);
+  if (!frames.folder.empty()) prepare_frames_folder(frames.folder, {map_path, gt_path});
+  FrameWriter writer(frames, exploration.range);
   options.on_update = [&](const ExplorationFrame& f) {
     writer.update(f.update, f.explorer.scans(), f.grid, f.segmentation, f.explorer.path(), f.explorer.pose());
   };
@@ -111,7 +110,7 @@ int run(const std::vector<std::string>& args) {
   std::cout << "map: " << terminal_text(map_path) << " (" << world.width() << " x " << world.height() << " cells, "
             << format("%g m/cell)\n", world.resolution);
   std::cout << format_exploration_summary(run, gt_rooms, gt_path);
-  if (!frames.empty()) std::cout << "frames: " << writer.written() << " written to " << terminal_text(frames) << "\n";
+  if (!frames.folder.empty()) std::cout << "frames: " << writer.written() << " written to " << terminal_text(frames.folder) << "\n";
   return 0;
 }
 

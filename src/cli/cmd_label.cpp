@@ -14,15 +14,14 @@ namespace {
 
 int run(const std::vector<std::string>& args) {
   std::string scan_path;
-  std::string element = "cross";
   LabelingOptions options;
   int clusters = 0;
   po::options_description described("Labeling");
   described.add_options()
       ("scan", po::value<std::string>(&scan_path)->required(), "scan CSV (header angle,range; radians, metres; - for standard input)");
   add_option_rows(described, labeling_option_rows(), options);
+  add_choice_rows(described, labeling_choice_rows(), options);
   described.add_options()
-      ("element", po::value<std::string>(&element)->default_value(element), "labeling: structuring element, cross or square")
       ("fcm", po::value<int>(&clusters)->default_value(0), "fuzzy c-means centres per segment (0: none)");
   po::positional_options_description positional;
   positional.add("scan", 1);
@@ -34,7 +33,7 @@ int run(const std::vector<std::string>& args) {
       described, positional, args);
   if (!vm) return 0;
   read_option_rows(*vm, labeling_option_rows(), options);
-  check_usage([&] { options.element = parse_structuring_element(element, "--element"); });
+  read_choice_rows(*vm, labeling_choice_rows(), options);
   if (clusters < 0) throw UsageError("--fcm must be 0 or a positive number of centres");
 
   const Scan scan = read_scan_csv(scan_path);

@@ -39,27 +39,25 @@ std::string skipped_summary(const CarmenLog& log) {
 // --incremental: the log replayed scan by scan (the walls module's grid after each scan) into the
 // incremental segmenter.
 struct ReplayArguments {
-  bool compare_batch = false;
   bool settle = false;
-  int batch_every = 1;
-  std::string frames;
-  int frame_every = 1;
-  // The real-log preset (wall_map_incremental_options()) with the command line's options; its
-  // segment options are the command's.
-  IncrementalOptions incremental = wall_map_incremental_options(wall_map_segment_options());
+  FrameSequenceOptions frames;
+  // The batch comparison and the real-log preset (wall_map_incremental_options()) with the command
+  // line's options; its segment options are the command's.
+  GridReplayOptions options = [] {
+    GridReplayOptions preset;
+    preset.incremental = wall_map_incremental_options(wall_map_segment_options());
+    return preset;
+  }();
 };
 
 void replay(const std::vector<PosedScan>& scans, const WallsOptions& walls, const SegmentOptions& segment_options,
             const ReplayArguments& arguments, const std::string& out_map, const std::string& out_color,
             const std::string& out_rooms) {
-  GridReplayOptions options;
-  options.incremental = arguments.incremental;
+  GridReplayOptions options = arguments.options;
   options.incremental.segment = segment_options;
-  options.compare_batch = arguments.compare_batch;
-  options.batch_every = arguments.batch_every;
   options.progress = [](const std::string& line) { progress(line); };
   // A real laser reaches tens of metres: its range circle would hide the map.
-  FrameWriter frames(arguments.frames, arguments.frame_every, 0.0);
+  FrameWriter frames(arguments.frames, 0.0);
   options.on_update = [&](const ReplayFrame& f) { frames.update(f.update, f.scan, f.grid, f.segmentation, f.path, f.pose); };
   WallMapReplay log_map(scans, walls, arguments.settle ? std::optional(OccupancyEvidenceOptions{}) : std::nullopt);
   const GridReplay run = replay_grids(steps_of(log_map), options);
@@ -77,7 +75,7 @@ void replay(const std::vector<PosedScan>& scans, const WallsOptions& walls, cons
   std::cout << "stability: " << format_stability(run.stability) << "\n";
   std::cout << format_batch_stability(run);
   std::cout << final_rooms_line(run);
-  if (!arguments.frames.empty()) std::cout << "frames: " << frames.written() << " written to " << terminal_text(arguments.frames) << "\n";
+  if (!arguments.frames.folder.empty()) std::cout << "frames: " << frames.written() << " written to " << terminal_text(arguments.frames.folder) << "\n";
   if (!out_map.empty()) save_map(out_map, grid);
   if (!out_color.empty()) write_overlay(out_color, grid, run.incremental);
   if (!out_rooms.empty()) write_rooms_json(out_rooms, run.incremental, in_frame(run.incremental, GridFrame{}).placements);
@@ -86,7 +84,7 @@ void replay(const std::vector<PosedScan>& scans, const WallsOptions& walls, cons
 // What the command line asks for, checked; `help` when it only asked for the help.
 struct WallsRequest {
   bool help = false;
-  std::string log_path, method = "iepf", element = "cross";
+  std::string log_path, method = "iepf";
   std::string out_map, out_walls, out_color, out_rooms;
   WallsOptions options;
   CarmenReadOptions read;
@@ -100,8 +98,8 @@ po::options_description walls_options(WallsRequest& r, const SegmentSettings& se
   po::options_description described("Walls");
   described.add_options()
       ("log", po::value<std::string>(&r.log_path)->required(), "CARMEN log with FLASER messages (plain or .gz)")
-      ("method", po::value<std::string>(&r.method)->default_value(r.method), "line extractor: sef, lt, iepf, smf or ale")
-      ("element", po::value<std::string>(&r.element)->default_value(r.element), "labeling: structuring element, cross or square");
+      ("method", po::value<std::string>(&r.method)->default_value(r.method), "line extractor: sef, lt, iepf, smf or ale");
+  add_choice_rows(described, labeling_choice_rows(), r.options.extraction.labeling);
   add_option_rows(described, walls_option_rows(), r.options);
   add_option_rows(described, carmen_read_option_rows(), r.read);
   described.add_options()
@@ -111,16 +109,15 @@ po::options_description walls_options(WallsRequest& r, const SegmentSettings& se
       ("out-color", po::value<std::string>(&r.out_color), "write the rooms as a colour overlay (implies --segment)")
       ("out-rooms", po::value<std::string>(&r.out_rooms), "write the rooms as JSON (implies --segment)")
       ("incremental", "replay the log: build the grid scan by scan and segment every change incrementally")
-      ("compare-batch", po::bool_switch(&r.replay.compare_batch), "with --incremental: also run the batch segmenter on every update, timed, with its own churn (ids carried by overlap)")
       ("settle", po::bool_switch(&r.replay.settle), "with --incremental: settle each cell by occupancy evidence (log-odds, OctoMap's hit 0.7 / miss 0.4) instead of drawing every scan as it is")
-      ("batch-every", po::value<int>(&r.replay.batch_every)->default_value(1), "with --compare-batch: only every N-th update (and the last)")
-      ("frames", po::value<std::string>(&r.replay.frames), "with --incremental: write a PNG frame of every update into this folder")
-      ("frame-every", po::value<int>(&r.replay.frame_every)->default_value(1), "with --frames: only every N-th update (and the last)");
+      ("frames", po::value<std::string>(&r.replay.frames.folder), "with --incremental: write a PNG frame of every update into this folder");
+  add_option_rows(described, batch_comparison_rows<GridReplayOptions>(), r.replay.options);
+  add_option_rows(described, frame_option_rows(), r.replay.frames);
   po::options_description segmentation("Segmentation (with --segment, --out-color, --out-rooms or --incremental)");
   add_segment_options(segmentation, segment_defaults);
   described.add(segmentation);
   po::options_description incremental("Incremental segmenter (with --incremental; the real-log preset's defaults)");
-  add_incremental_options(incremental, r.replay.incremental);
+  add_incremental_options(incremental, r.replay.options.incremental);
   described.add(incremental);
   return described;
 }
@@ -152,19 +149,19 @@ WallsRequest parse_request(const std::vector<std::string>& args) {
   read_option_rows(*vm, walls_option_rows(), r.options);
   read_option_rows(*vm, carmen_read_option_rows(), r.read);
   r.segment = read_segment_options(*vm, segment_defaults);
-  r.replay.incremental = read_incremental_options(*vm, r.replay.incremental);
+  r.replay.options.incremental = read_incremental_options(*vm, r.replay.options.incremental);
+  read_option_rows(*vm, batch_comparison_rows<GridReplayOptions>(), r.replay.options);
+  read_option_rows(*vm, frame_option_rows(), r.replay.frames);
   try {
     r.options.extraction.lines.method = parse_line_method(r.method);
   } catch (const Error& e) {
     throw UsageError(std::string("--method: ") + e.what());
   }
-  check_usage([&] { r.options.extraction.labeling.element = parse_structuring_element(r.element, "--element"); });
+  read_choice_rows(*vm, labeling_choice_rows(), r.options.extraction.labeling);
   r.incremental = vm->count("incremental") > 0;
-  if (!r.incremental && (r.replay.compare_batch || r.replay.settle || !r.replay.frames.empty()))
+  if (!r.incremental && (r.replay.options.compare_batch || r.replay.settle || !r.replay.frames.folder.empty()))
     throw UsageError("--compare-batch, --settle and --frames need --incremental");
   if (r.incremental && !r.out_walls.empty()) throw UsageError("--out-walls needs merged walls: not with --incremental");
-  if (r.replay.batch_every < 1) throw UsageError("--batch-every must be at least 1");
-  if (r.replay.frame_every < 1) throw UsageError("--frame-every must be at least 1");
   r.segment_rooms = vm->count("segment") || !r.out_color.empty() || !r.out_rooms.empty();
   std::vector<std::string> outputs;
   for (const std::string& path : {r.out_map, r.out_walls, r.out_color, r.out_rooms})
@@ -211,7 +208,7 @@ void run_batch(const WallsRequest& r, const std::vector<PosedScan>& scans) {
 int run(const std::vector<std::string>& args) {
   const WallsRequest r = parse_request(args);
   if (r.help) return 0;
-  if (!r.replay.frames.empty()) prepare_frames_folder(r.replay.frames, {r.log_path});
+  if (!r.replay.frames.folder.empty()) prepare_frames_folder(r.replay.frames.folder, {r.log_path});
   const std::vector<PosedScan> scans = read_scans(r.log_path, r.read);
   if (r.incremental) {
     replay(scans, r.options, r.segment, r.replay, r.out_map, r.out_color, r.out_rooms);

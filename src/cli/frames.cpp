@@ -10,6 +10,13 @@
 
 namespace topocut::cli {
 
+const std::vector<OptionRow<FrameSequenceOptions>>& frame_option_rows() {
+  static const std::vector<OptionRow<FrameSequenceOptions>> rows = {
+      field_row("frame-every", "N", OptionRange::kCount, &FrameSequenceOptions::every,
+                "with --frames: only every N-th update (and the last)")};
+  return rows;
+}
+
 void prepare_frames_folder(const std::string& folder, const std::vector<std::string>& inputs) {
   std::error_code error;
   std::filesystem::create_directories(folder, error);

@@ -2,17 +2,27 @@
 // The frames `explore` and `walls --incremental` both write: one PNG per update (or every N-th),
 // the sequence always ending on the finished map.
 #include <string>
-#include <utility>
 #include <vector>
 
 #include <opencv2/core.hpp>
 
 #include "topocut/core/geometry.h"
 #include "topocut/core/occupancy_grid.h"
+#include "topocut/core/option_table.h"
 #include "topocut/core/segmentation.h"
 #include "topocut/scan/scan.h"
 
 namespace topocut::cli {
+
+// Where a run's frames go and how often: the folder is a path, each command's own flag; the
+// interval is a row (frame_option_rows()), spelt alike in every command that writes frames.
+struct FrameSequenceOptions {
+  std::string folder;  // empty: no frames
+  int every = 1;       // a frame of every every-th update (and the last)
+};
+
+// --frame-every, for explore and walls --incremental.
+const std::vector<OptionRow<FrameSequenceOptions>>& frame_option_rows();
 
 // Creates the frames folder (throws Error if it cannot) and checks that a frame can be written
 // there without touching an input of the run.
@@ -25,7 +35,7 @@ void write_frame(const std::string& folder, int update, const cv::Mat& image);
 // with the laser range drawn (0: none) and the caption "update U, scan S, R rooms".
 class FrameWriter {
  public:
-  FrameWriter(std::string folder, int every, double range) : folder_(std::move(folder)), every_(every), range_(range) {}
+  FrameWriter(const FrameSequenceOptions& options, double range) : folder_(options.folder), every_(options.every), range_(range) {}
 
   // The frame of an update, when it is due: the first and every every-th after it.
   void update(int update, int scan, const OccupancyGrid& grid, const Segmentation& rooms, const std::vector<Point2>& path,

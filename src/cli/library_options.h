@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "cli/command.h"
+#include "topocut/core/option_choice.h"
 #include "topocut/core/option_table.h"
 #include "topocut/io/map_load_flags.h"
 #include "topocut/segmentation/incremental_segmenter.h"
@@ -77,6 +78,25 @@ void read_option_rows(const po::variables_map& vm, const std::vector<OptionRow<T
       const double value = row.is_switch() ? 1.0 : parse_option_number(vm[row.name].template as<std::string>(), shown);
       set_option(row, target, value, shown);
     });
+  }
+}
+
+// Adds rows chosen by name to options: "--selection greedy|reference (=greedy)", the default being
+// the name of defaults' value.
+template <typename Target>
+void add_choice_rows(po::options_description& options, const std::vector<ChoiceRow<Target>>& rows, const Target& defaults) {
+  for (const ChoiceRow<Target>& row : rows)
+    options.add_options()(row.name.c_str(),
+                          po::value<std::string>()->default_value(row.get(defaults))->value_name(row.value_name()),
+                          row.help.c_str());
+}
+
+// Sets in target every choice that vm holds a given value for; a name not allowed is a UsageError.
+template <typename Target>
+void read_choice_rows(const po::variables_map& vm, const std::vector<ChoiceRow<Target>>& rows, Target& target) {
+  for (const ChoiceRow<Target>& row : rows) {
+    if (!vm.count(row.name) || vm[row.name].defaulted()) continue;
+    check_usage([&] { set_choice(row, target, vm[row.name].template as<std::string>(), "--" + row.name); });
   }
 }
 

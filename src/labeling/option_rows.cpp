@@ -21,10 +21,14 @@ const std::vector<OptionRow<LabelingOptions>>& labeling_option_rows() {
   return rows;
 }
 
-StructuringElement parse_structuring_element(const std::string& name, const std::string& shown) {
-  if (name == "cross") return StructuringElement::kCross;
-  if (name == "square") return StructuringElement::kSquare;
-  throw Error(shown + " must be 'cross' or 'square', got '" + name + "'");
+const std::vector<ChoiceRow<LabelingOptions>>& labeling_choice_rows() {
+  using L = LabelingOptions;
+  static const std::vector<ChoiceRow<L>> rows = {
+      choice_row<L, StructuringElement>("element", &L::element,
+                                        {{"cross", StructuringElement::kCross}, {"square", StructuringElement::kSquare}},
+                                        "labeling: structuring element, cross or square"),
+  };
+  return rows;
 }
 
 }  // namespace topocut

@@ -95,7 +95,7 @@ TEST_F(DecomposeCli, LargeTauAbsorbsTheHoleAndWritesAFile) {
 TEST_F(DecomposeCli, TheConcavityMeasureHasItsOwnName) {
   const fs::path in = write("l.json", R"({"outer": [[0,0],[10,0],[10,4],[4,4],[4,10],[0,10]]})");
   const CliResult help = run("--help");
-  EXPECT_NE(help.out.find("\n  --concavity-measure arg (=straight)"), std::string::npos) << help.out;
+  EXPECT_NE(help.out.find("\n  --concavity-measure straight|hierarchical (=straight)"), std::string::npos) << help.out;
   EXPECT_EQ(help.out.find("\n  --concavity "), std::string::npos) << help.out;
   const CliResult old = run(in.string() + " --tau 2 --concavity hierarchical");
   EXPECT_EQ(old.code, 2);

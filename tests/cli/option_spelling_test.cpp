@@ -6,6 +6,7 @@
 // ros/test/adapter_test.cpp.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -14,7 +15,9 @@
 #include "io/temp_dir.h"
 #include "topocut/core/option_table.h"
 #include "topocut/decomposition/decompose.h"
+#include "topocut/exploration/exploration_run.h"
 #include "topocut/exploration/explorer.h"
+#include "topocut/exploration/grid_replay.h"
 #include "topocut/io/carmen_log.h"
 #include "topocut/labeling/sparse_labeling.h"
 #include "topocut/lines/extract.h"
@@ -93,6 +96,76 @@ TEST(OptionSpelling, EveryRowIsAFlagWithItsStructsDefault) {
       EXPECT_EQ(lines.find(line, at + 1), std::string::npos) << "lines twice: " << line;
     }
   }
+}
+
+// The commands that replay updates (explore, walls --incremental, evaluate --mode incremental) take the
+// batch comparison's rows alike, and the two that write frames the same --frame-every (the CLI's
+// FrameSequenceOptions, whose help line is written here as the row writes it): one spelling, one
+// default, one check that refuses a zero with the range's line.
+TEST(OptionSpelling, EveryReplayingCommandTakesTheSameReplayRows) {
+  const TempDir dir;
+  const auto rows = topocut::batch_comparison_rows<topocut::ExplorationRunOptions>();
+  ASSERT_EQ(rows.size(), 2u);
+  const std::string frame_every = "\n  --frame-every N (=1) ";
+  for (const char* command : {"explore", "walls", "evaluate"}) {
+    const std::string help = run_cli(dir, command, {"--help"}).out;
+    expect_rows_in_help(command, help, rows, topocut::ExplorationRunOptions{});
+    const bool writes_frames = std::string(command) != "evaluate";
+    EXPECT_EQ(help.find(frame_every) != std::string::npos, writes_frames) << command;
+  }
+  // The same rows over GridReplayOptions (what walls hands the library) are spelt the same.
+  const auto replay = topocut::batch_comparison_rows<topocut::GridReplayOptions>();
+  for (std::size_t i = 0; i < rows.size(); ++i) EXPECT_EQ(replay[i].name, rows[i].name);
+  const std::string map = bundled("floorplan.yaml");
+  for (const char* option : {"--batch-every", "--frame-every"}) {
+    const auto r = run_cli(dir, "explore", {map, option, "0"});
+    EXPECT_EQ(r.code, 2) << option;
+    EXPECT_EQ(r.err.rfind("topocut explore: error: " + std::string(option) + " must be a whole number >= 1", 0), 0u) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  }
+  const auto evaluate = run_cli(dir, "evaluate", {"--dataset", dir.path().string(), "--batch-every", "0"});
+  EXPECT_EQ(evaluate.code, 2);
+  EXPECT_NE(evaluate.err.find("--batch-every must be a whole number >= 1"), std::string::npos) << evaluate.err;
+}
+
+// Every option chosen by name is a flag of its command listing the names, its struct's default shown,
+// and a name not listed is refused with one line that lists them.
+TEST(OptionSpelling, EveryChoiceIsAFlagListingItsNames) {
+  const TempDir dir;
+  const std::string help = run_cli(dir, "decompose", {"--help"}).out;
+  const topocut::DecompositionOptions defaults;
+  for (const topocut::ChoiceRow<topocut::DecompositionOptions>& row : topocut::decomposition_choice_rows()) {
+    ASSERT_GE(row.names.size(), 2u) << row.name;
+    const std::string line = "\n  --" + row.name + " " + row.value_name() + " (=" + row.get(defaults) + ")";
+    const std::size_t at = help.find(line);
+    EXPECT_NE(at, std::string::npos) << line;
+    if (at != std::string::npos) {
+      EXPECT_EQ(help.find(line, at + 1), std::string::npos) << line;
+    }
+    // Each name sets a value of its own, which reads back as the name.
+    for (const std::string& name : row.names) {
+      topocut::DecompositionOptions set;
+      topocut::set_choice(row, set, name, row.name);
+      EXPECT_EQ(row.get(set), name) << row.name;
+    }
+    const auto r = run_cli(dir, "decompose", {bundled("floorplan.yaml"), "--tau", "1", "--" + row.name, "nameless"});
+    EXPECT_EQ(r.code, 2) << row.name;
+    EXPECT_NE(r.err.find("--" + row.name + " must be one of '" + row.names.front() + "'"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("got 'nameless'"), std::string::npos) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  }
+  // The labeling's element, in both commands that label.
+  for (const char* command : {"label", "walls"}) {
+    const std::string shown = run_cli(dir, command, {"--help"}).out;
+    for (const auto& row : topocut::labeling_choice_rows()) {
+      const std::string line = "\n  --" + row.name + " " + row.value_name() + " (=" + row.get(topocut::LabelingOptions{}) + ")";
+      EXPECT_NE(shown.find(line), std::string::npos) << command << ": " << line;
+    }
+  }
+  const std::string scan = dir.write("scan.csv", "angle,range\n0,2\n0.01,2\n0.02,2\n");
+  const auto r = run_cli(dir, "label", {scan, "--element", "disc"});
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("--element must be one of 'cross', 'square', got 'disc'"), std::string::npos) << r.err;
 }
 
 // segment --help lists the rows under their struct's heading: each heading once, in the table's order,

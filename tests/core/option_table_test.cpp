@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "topocut/core/error.h"
+#include "topocut/core/option_choice.h"
 #include "topocut/core/value_ranges.h"
 
 namespace topocut {
@@ -152,6 +153,33 @@ TEST(OptionTable, SwitchValuesAreYamlsBooleans) {
   for (const std::string neither : {"1", "0", "", "tRUE", "yes!", "0x1"}) EXPECT_FALSE(parse_switch_value(neither)) << neither;
   EXPECT_EQ(switch_value_error("--trivial", "1"), "--trivial is a switch: give true or false, not '1'");
   EXPECT_EQ(given_twice_error("~concavity"), "~concavity is given twice");
+}
+
+enum class Shape { kRound, kSquare, kStar };
+struct Drawing {
+  Shape shape = Shape::kSquare;
+};
+
+// A choice reads back the name it was given, lists its names in order, and refuses any other name
+// (case included) with one message naming them, leaving the field as it was.
+TEST(OptionTable, AChoiceSetsTheValueItsNameNames) {
+  const ChoiceRow<Drawing> row = choice_row<Drawing, Shape>(
+      "shape", &Drawing::shape, {{"round", Shape::kRound}, {"square", Shape::kSquare}}, "how it is drawn");
+  EXPECT_EQ(row.value_name(), "round|square");
+  Drawing drawing;
+  EXPECT_EQ(row.get(drawing), "square");
+  set_choice(row, drawing, "round", "--shape");
+  EXPECT_EQ(drawing.shape, Shape::kRound);
+  EXPECT_EQ(row.get(drawing), "round");
+  try {
+    set_choice(row, drawing, "Square", "--shape");
+    FAIL() << "a name not listed was taken";
+  } catch (const Error& e) {
+    EXPECT_STREQ(e.what(), "--shape must be one of 'round', 'square', got 'Square'");
+  }
+  EXPECT_EQ(drawing.shape, Shape::kRound);
+  drawing.shape = Shape::kStar;  // a value the row does not name has no name
+  EXPECT_EQ(row.get(drawing), "");
 }
 
 }  // namespace

@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "topocut/core/geometry.h"
+#include "topocut/core/option_choice.h"
 #include "topocut/core/option_table.h"
 
 namespace topocut {
@@ -78,6 +79,9 @@ struct DecompositionOptions {
 
 // The fields of DecompositionOptions as options: name, unit, range, help (option_table.h).
 const std::vector<OptionRow<DecompositionOptions>>& decomposition_option_rows();
+// The fields of DecompositionOptions chosen by name (the reference variants: selection, concavity
+// measure, candidates, pocket polygons, hull-chain distance, skinny cuts), as option_choice.h rows.
+const std::vector<ChoiceRow<DecompositionOptions>>& decomposition_choice_rows();
 
 struct Cut {
   Segment2 segment;  // both end points are input vertices; the open segment lies inside the piece it split

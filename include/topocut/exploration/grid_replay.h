@@ -12,6 +12,7 @@
 
 #include "topocut/core/geometry.h"
 #include "topocut/core/occupancy_grid.h"
+#include "topocut/core/option_table.h"
 #include "topocut/core/segmentation.h"
 #include "topocut/exploration/room_stability.h"
 #include "topocut/scan/scan.h"
@@ -65,6 +66,17 @@ struct GridReplayOptions {
   std::function<void(const ReplayFrame&)> on_update;  // may be empty
   std::function<void(const std::string&)> progress;   // occasional one-line status; may be empty
 };
+
+// The batch comparison's rows (--compare-batch, --batch-every), for an options struct that holds
+// compare_batch and batch_every (GridReplayOptions, ExplorationRunOptions): one spelling, help and
+// range for every command that replays.
+template <typename Options>
+std::vector<OptionRow<Options>> batch_comparison_rows() {
+  return {switch_row("compare-batch", &Options::compare_batch,
+                     "also run the batch segmenter on every update, timed, with its own churn (ids carried by overlap)"),
+          field_row("batch-every", "N", OptionRange::kCount, &Options::batch_every,
+                    "with --compare-batch: only every N-th update (and the last)")};
+}
 
 // One update: a scan that changed the grid. Times are process CPU time (immune to other programs on
 // a shared machine), with the wall-clock time beside them.

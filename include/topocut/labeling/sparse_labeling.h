@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "topocut/core/geometry.h"
+#include "topocut/core/option_choice.h"
 #include "topocut/core/option_table.h"
 #include "topocut/scan/scan.h"
 
@@ -51,10 +52,10 @@ Labeling label_points(std::span<const Point2> points, const LabelingOptions& opt
 Labeling label_scan(const Scan& scan, const LabelingOptions& options = {});
 
 // The labeling options as people give them (the label and walls commands): cell, dilate,
-// connectivity; the element is a name (parse_structuring_element()). Defined in option_rows.cpp.
+// connectivity; the element is chosen by name (labeling_choice_rows()). Defined in option_rows.cpp.
 const std::vector<OptionRow<LabelingOptions>>& labeling_option_rows();
 
-// "cross" or "square"; Error "<shown> must be 'cross' or 'square', got '<name>'" otherwise.
-StructuringElement parse_structuring_element(const std::string& name, const std::string& shown);
+// The labeling option chosen by name: --element cross|square (option_choice.h).
+const std::vector<ChoiceRow<LabelingOptions>>& labeling_choice_rows();
 
 }  // namespace topocut
