@@ -202,6 +202,10 @@ std::vector<std::string> RuleTrace::rows() const {
   return traced;
 }
 
+bool row_is_on(const SegmentationRule& row, RuleStage stage, const SegmentOptions& options) {
+  return row.stage == stage && row.is_on(options);
+}
+
 void note_rule_run(const SegmentationRule& row) {
   if (!tracing.load(std::memory_order_relaxed)) return;
   const std::lock_guard<std::mutex> lock(trace_mutex);

@@ -71,9 +71,11 @@ cv::Mat segmentation_free_space(const OccupancyGrid& grid, const SegmentOptions&
 
 namespace {
 
-// Whether rule is a row of stage that is on.
-bool runs(const SegmentationRule& rule, RuleStage stage, const SegmentOptions& options) {
-  return rule.stage == stage && rule.is_on(options);
+// Whether rule is a row of stage that is on; one that is runs now, so the trace notes it.
+bool starts(const SegmentationRule& rule, RuleStage stage, const SegmentOptions& options) {
+  if (!row_is_on(rule, stage, options)) return false;
+  note_rule_run(rule);
+  return true;
 }
 
 // The front end's second half: the free space cleaned by the list's cleaning rows as the floor to
@@ -84,8 +86,7 @@ SegmentationInput cleaned_input(const OccupancyGrid& grid, cv::Mat free, const S
   input.floor = std::move(free);
   input.labelled = grid;
   for (const SegmentationRule& rule : segmentation_rules()) {
-    if (!runs(rule, RuleStage::kClean, options)) continue;
-    note_rule_run(rule);
+    if (!starts(rule, RuleStage::kClean, options)) continue;
     CleanedFreeSpace cleaned = rule.clean(input.floor, grid.cells, grid.resolution, options);
     if (cv::countNonZero(cleaned.floor) == 0) continue;
     input.floor = cleaned.floor;
@@ -186,8 +187,7 @@ SegmentationInput segmentation_input(const OccupancyGrid& grid, const cv::Rect& 
   input.labelled = crop(part, inner);
   // cleaned_input() over the context, its cells after the cleaning taken over the window only.
   for (const SegmentationRule& rule : segmentation_rules()) {
-    if (!runs(rule, RuleStage::kClean, options)) continue;
-    note_rule_run(rule);
+    if (!starts(rule, RuleStage::kClean, options)) continue;
     const CleanedFreeSpace cleaned = rule.clean(free, part.cells, part.resolution, options);
     free = cleaned.floor;
     input.labelled.cells = cells_after_cleaning(input.labelled.cells, cropped_cleaning(cleaned, inner));
@@ -207,15 +207,13 @@ PieceSet decompose_polygon(const PolygonWithHoles& polygon, double resolution, c
   StageTimer timer(times, SegmentStage::kCuts);
   PieceSet set;
   for (const SegmentationRule& rule : segmentation_rules()) {
-    if (!runs(rule, RuleStage::kCut, options) || (rule.may_fail && !fallible)) continue;
-    note_rule_run(rule);
+    if ((rule.may_fail && !fallible) || !starts(rule, RuleStage::kCut, options)) continue;
     for (const Segment2& cut : rule.find_cuts(polygon, resolution, options.doors, set.cuts)) set.add_cut(cut, rule.cut_rule);
   }
   timer.next(SegmentStage::kDecomposition);
   std::vector<PolygonWithHoles> parts = split_polygon(polygon, set.cuts);
   for (const SegmentationRule& rule : segmentation_rules()) {
-    if (!runs(rule, RuleStage::kDecompose, options)) continue;
-    note_rule_run(rule);
+    if (!starts(rule, RuleStage::kDecompose, options)) continue;
     std::vector<PolygonWithHoles> pieces;
     for (const PolygonWithHoles& part : parts) {
       Decomposition result = rule.decompose(part, resolution, options);
@@ -249,7 +247,7 @@ PieceSet decompose_pieces(const FreeSpaceComponent& component, double resolution
                           SegmentTimes* times) {
   const std::vector<SegmentationRule>& rules = segmentation_rules();
   // Without a decomposition (--trivial) the cuts would split nothing: the component is one piece.
-  if (std::none_of(rules.begin(), rules.end(), [&](const SegmentationRule& r) { return runs(r, RuleStage::kDecompose, options); })) {
+  if (std::none_of(rules.begin(), rules.end(), [&](const SegmentationRule& r) { return row_is_on(r, RuleStage::kDecompose, options); })) {
     PieceSet set;
     set.pieces.push_back(component.polygon);
     return set;
@@ -258,7 +256,7 @@ PieceSet decompose_pieces(const FreeSpaceComponent& component, double resolution
   // may leave a degenerate part, and simplified rings may touch after all (a very thin wall or gap),
   // so each failure falls back to the next try, the exact polygon without the rules that may fail last.
   const bool fallible_on =
-      std::any_of(rules.begin(), rules.end(), [&](const SegmentationRule& r) { return r.may_fail && runs(r, RuleStage::kCut, options); });
+      std::any_of(rules.begin(), rules.end(), [&](const SegmentationRule& r) { return r.may_fail && row_is_on(r, RuleStage::kCut, options); });
   auto attempt = [&](const PolygonWithHoles& polygon, bool last) -> std::optional<PieceSet> {
     if (fallible_on) {
       try {
@@ -278,8 +276,7 @@ PieceSet decompose_pieces(const FreeSpaceComponent& component, double resolution
     {
       const StageTimer timer(times, SegmentStage::kFrontEnd);
       for (const SegmentationRule& rule : rules) {
-        if (!runs(rule, RuleStage::kOutline, options)) continue;
-        note_rule_run(rule);
+        if (!starts(rule, RuleStage::kOutline, options)) continue;
         outline = rule.outline(outline ? *outline : component.polygon, options);
       }
     }
@@ -359,24 +356,21 @@ Segmentation segment_input(const SegmentationInput& input, const SegmentOptions&
   const std::vector<SegmentationRule>& rules = segmentation_rules();
   StageTimer timer(times, SegmentStage::kOpenRooms);
   for (const SegmentationRule& rule : rules) {
-    if (!runs(rule, RuleStage::kRooms, options)) continue;
-    note_rule_run(rule);
+    if (!starts(rule, RuleStage::kRooms, options)) continue;
     pieces = rule.on_rooms(pieces, grid, options);
   }
   timer.next(SegmentStage::kLabelling);
   const OccupancyGrid cells = to_label.empty() ? grid : labelled_only(grid, to_label);
   Segmentation segmentation;
   for (const SegmentationRule& rule : rules) {
-    if (!runs(rule, RuleStage::kLabel, options)) continue;
-    note_rule_run(rule);
+    if (!starts(rule, RuleStage::kLabel, options)) continue;
     segmentation = rule.label(cells, pieces, options);
   }
   timer.next(SegmentStage::kOutputs);
   // Once the rooms are final, whatever decided them; a window labelling only part of its cells
   // leaves the whole-map rows to its caller (its rooms' neighbours lie partly beyond it).
   for (const SegmentationRule& rule : rules) {
-    if (!runs(rule, RuleStage::kDescribe, options) || (rule.whole_map && !to_label.empty())) continue;
-    note_rule_run(rule);
+    if ((rule.whole_map && !to_label.empty()) || !starts(rule, RuleStage::kDescribe, options)) continue;
     rule.describe(segmentation, options);
   }
   return segmentation;

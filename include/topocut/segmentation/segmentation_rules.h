@@ -128,6 +128,9 @@ class RuleTrace {
   std::vector<std::string> rows() const;
 };
 
+// Whether row is one of stage's rows and is on in options.
+bool row_is_on(const SegmentationRule& row, RuleStage stage, const SegmentOptions& options);
+
 // Records in the living RuleTrace, if any, that row ran; what the schedules call before each row.
 void note_rule_run(const SegmentationRule& row);
 

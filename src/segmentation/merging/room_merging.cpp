@@ -259,7 +259,7 @@ PieceSet merge_rooms(const FreeSpaceComponent& component, const PieceSet& pieces
   std::vector<const SegmentationRule*> steps;
   std::vector<const MergeCriterion*> criteria;
   for (const SegmentationRule& rule : rules) {
-    if (rule.stage != RuleStage::kMerge || !rule.is_on(options)) continue;
+    if (!row_is_on(rule, RuleStage::kMerge, options)) continue;
     if (rule.on_component) steps.push_back(&rule);
     if (rule.judge) criteria.push_back(&rule.judge);
   }
