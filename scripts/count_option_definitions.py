@@ -13,6 +13,7 @@ What counts as one hand-written option definition:
 Rows lifted from a table (add_option_rows(), rows_within(), the keyword lists made from rows) are not
 counted: their names are written once, next to their struct. --list prints every definition counted.
 """
+import argparse
 import os
 import re
 import sys
@@ -53,15 +54,21 @@ def count(root):
 
 
 def main(argv):
-    listing = '--list' in argv
-    rest = [a for a in argv if a != '--list']
-    root = rest[0] if rest else os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-    counted = count(root)
+    parser = argparse.ArgumentParser(description=__doc__.split('\n\n')[0].replace('\n', ' '),
+                                     epilog='Prints one line per front end and the total; --list adds every definition.')
+    parser.add_argument('root', nargs='?', default=os.path.dirname(os.path.dirname(os.path.abspath(__file__))),
+                        help="the project's checkout (default: this script's)")
+    parser.add_argument('--list', action='store_true', help='print every definition counted, file and name')
+    args = parser.parse_args(argv)
+    # A root without the command line's sources would count nothing and print a total of 0.
+    if not os.path.isdir(os.path.join(args.root, 'src', 'cli')):
+        parser.exit(2, f'count_option_definitions: {args.root} is not a topocut checkout (no src/cli)\n')
+    counted = count(args.root)
     for front, found in counted.items():
         print(f'{front}: {len(found)}')
-        if listing:
+        if args.list:
             for path, name in found:
-                print(f'  {os.path.relpath(path, root)}: {name}')
+                print(f'  {os.path.relpath(path, args.root)}: {name}')
     print(f'total: {sum(len(found) for found in counted.values())}')
     return 0
 
