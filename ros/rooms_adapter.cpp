@@ -13,6 +13,8 @@
 #include "topocut/core/grid_array_options.h"
 #include "topocut/core/option_names.h"
 #include "topocut/core/option_table.h"
+#include "topocut/core/option_text.h"
+#include "topocut/io/map_load_flags.h"
 #include "topocut/io/atomic_file.h"
 #include "topocut/io/image_input.h"  // ImageLimits
 #include "topocut/segmentation/room_at.h"
@@ -32,10 +34,8 @@ struct MapSettings {
   topocut::GridArray cells;   // map_server's thresholds (occupancy_threshold_rows()); the rest is the map's
   double settle_after = 2.0;  // seconds without a changed map before the rooms become segment()'s
   std::string id_ledger;      // file the room ids are kept in across restarts ("" = none)
-  topocut::ImageLimits limits;
+  topocut::MapLoadOptions load;  // its limits (the map-loading row --max-megapixels); the map brings the rest
 };
-
-constexpr const char* kLedgerParameter = "id_ledger";
 
 struct NodeSettings {
   SegmentSettings segment;
@@ -43,23 +43,31 @@ struct NodeSettings {
   topocut::IncrementalOptions incremental;  // its own fields (incremental_option_rows()); segment above
 };
 
-// The node's own rows, after segment_option_rows() (named with '_', as ROS parameters are).
+// The node's rows, after segment_option_rows() (named with '_', as ROS parameters are): map_server's
+// thresholds and the image limit are the library's rows; settle_after is the node's own.
 const std::vector<OptionRow<MapSettings>>& map_option_rows() {
   static const std::vector<OptionRow<MapSettings>> rows = [] {
-    // map_server's thresholds: the library's rows (as segment()'s keywords), named as ROS names them.
     std::vector<OptionRow<MapSettings>> all =
         topocut::rows_within<MapSettings>(topocut::occupancy_threshold_rows(), [](auto& s) -> auto& { return s.cells; });
+    all.push_back(topocut::field_row("settle-after", "S", topocut::OptionRange::kNonNegative, &MapSettings::settle_after,
+                                     "seconds without a changed map after which the rooms are segment()'s (0: never)"));
+    const std::vector<OptionRow<topocut::MapLoadOptions>> limit = {
+        *topocut::find_option(topocut::map_load_option_rows(), std::string(topocut::kMaxMegapixelsOption))};
+    for (OptionRow<MapSettings>& row : topocut::rows_within<MapSettings>(limit, [](auto& s) -> auto& { return s.load; }))
+      all.push_back(std::move(row));
     for (OptionRow<MapSettings>& row : all) row.name = topocut::underscored_option_name(row.name);
-    all.push_back({"settle_after", "S", "seconds without a changed map after which the rooms are segment()'s (0: never)",
-       topocut::OptionRange::kNonNegative, [](const MapSettings& s) { return s.settle_after; },
-       [](MapSettings& s, double v) { s.settle_after = v; }});
-    all.push_back({"max_megapixels", "N", "maps of more megapixels are logged and skipped before a cell is read (at most 1000)",
-       topocut::OptionRange::kPositive,
-       [](const MapSettings& s) { return s.limits.max_megapixels; },
-       [](MapSettings& s, double v) {
-         s.limits.max_megapixels = v;
-         topocut::validate(s.limits);
-       }});
+    return all;
+  }();
+  return rows;
+}
+
+// The file the ids are kept in, a path.
+const std::vector<topocut::TextRow<MapSettings>>& map_text_rows() {
+  static const std::vector<topocut::TextRow<MapSettings>> rows = [] {
+    std::vector<topocut::TextRow<MapSettings>> all = {topocut::path_row(
+        "id-ledger", "PATH", topocut::TextKind::kOutput, &MapSettings::id_ledger,
+        "file the room ids are kept in: read at start, written when the rooms settle and at shutdown, so that ids survive a restart")};
+    for (topocut::TextRow<MapSettings>& row : all) row.name = topocut::underscored_option_name(row.name);
     return all;
   }();
   return rows;
@@ -70,7 +78,7 @@ std::vector<std::string> known_names() {
   for (const auto& row : topocut::segment_option_rows()) names.push_back(topocut::underscored_option_name(row.name));
   for (const auto& row : topocut::incremental_option_rows()) names.push_back(topocut::underscored_option_name(row.name));
   for (const auto& row : map_option_rows()) names.push_back(row.name);
-  names.push_back(kLedgerParameter);
+  for (const auto& row : map_text_rows()) names.push_back(row.name);
   return names;
 }
 
@@ -111,13 +119,20 @@ bool set_row(const std::vector<OptionRow<Target>>& rows, const std::string& name
   return row != nullptr;
 }
 
+template <typename Target>
+const topocut::TextRow<Target>* find_text_row(const std::vector<topocut::TextRow<Target>>& rows, const std::string& name) {
+  for (const topocut::TextRow<Target>& row : rows)
+    if (row.name == name) return &row;
+  return nullptr;
+}
+
 // settings with the parameters given, each checked by its row of the option tables; an unknown
 // name is appended to unknown, or an Error when unknown is null (a service call's options).
 NodeSettings read_parameters(NodeSettings settings, const std::vector<Parameter>& given, std::vector<std::string>* unknown) {
   for (const Parameter& p : given) {
-    if (p.name == kLedgerParameter) {
-      if (p.kind != Parameter::Kind::kText || p.text.empty()) throw Error("~id_ledger needs the path of a file");
-      settings.map.id_ledger = p.text;
+    if (const auto* row = find_text_row(map_text_rows(), topocut::underscored_option_name(p.name))) {
+      if (p.kind != Parameter::Kind::kText) throw Error("~" + row->name + " needs the path of a file");
+      topocut::set_text_option(*row, settings.map, p.text, "~" + row->name);
       continue;
     }
     if (set_row(topocut::segment_option_rows(), topocut::dashed_option_name(p.name), settings.segment, p) ||
@@ -179,9 +194,9 @@ topocut::GridArray array_of(const MapInput& map, const MapSettings& settings) {
     throw Error("the map's data holds " + std::to_string(map.size) + " values for " + std::to_string(map.width) + " x " +
                 std::to_string(map.height) + " cells");
   // Before any cell is read: a well-formed map of 2^31 cells would need about 30 GB to segment.
-  if (static_cast<double>(map.width) * map.height > settings.limits.max_megapixels * 1e6)
+  if (static_cast<double>(map.width) * map.height > settings.load.limits.max_megapixels * 1e6)
     throw Error("the map has " + std::to_string(map.width) + " x " + std::to_string(map.height) +
-                " cells, more than the limit of " + topocut::shortest_number(settings.limits.max_megapixels) +
+                " cells, more than the limit of " + topocut::shortest_number(settings.load.limits.max_megapixels) +
                 " megapixels (parameter ~max_megapixels)");
   topocut::GridArray array;
   array.free_thresh = settings.cells.free_thresh;
@@ -265,8 +280,7 @@ std::string parameters_help() {
          row.is_switch() ? (row.get(defaults.incremental) != 0.0 ? "true" : "false") : topocut::shortest_number(row.get(defaults.incremental)));
   for (const auto& row : map_option_rows())
     line(row.name, row.value_name, row.help, topocut::shortest_number(row.get(defaults.map)));
-  line(kLedgerParameter, "PATH", "file the room ids are kept in: read at start, written when the rooms settle "
-       "and at shutdown, so that ids survive a restart", "none");
+  for (const auto& row : map_text_rows()) line(row.name, row.value_name, row.help, "none");
   return out;
 }
 
@@ -329,7 +343,8 @@ std::string RoomsAdapter::settings_summary() const {
   }
   for (const auto& row : map_option_rows())
     if (was_given(row.name)) add(row.name, topocut::shortest_number(row.get(live.map)), true);
-  if (!live.map.id_ledger.empty()) add(kLedgerParameter, live.map.id_ledger, true);
+  for (const auto& row : map_text_rows())
+    if (was_given(row.name)) add(row.name, live.map.id_ledger, true);
   return (given.empty() ? "" : "given: " + given + "; ") + "defaults: " + (defaulted.empty() ? "" : defaulted + " and ") +
          "the rest (topocut_node --help lists them)";
 }

@@ -17,6 +17,7 @@
 #include "topocut/core/grid_array_options.h"
 #include "topocut/core/option_names.h"
 #include "topocut/core/option_table.h"
+#include "topocut/io/map_load_flags.h"
 #include "topocut/segmentation/incremental_segmenter.h"
 #include "topocut/segmentation/segment_switches.h"
 #include "topocut/topocut.h"
@@ -306,6 +307,9 @@ TEST(RosAdapter, EveryRowOfTheTablesIsAParameterWithItsDefault) {
     expect_row(row, segment);
   for (const auto& row : topocut::incremental_option_rows()) expect_row(row, incremental);
   for (const auto& row : topocut::occupancy_threshold_rows()) expect_row(row, topocut::GridArray{});  // map_server's
+  // The image limit is the map-loading row every command takes (--max-megapixels), not a row of its own.
+  expect_row(*topocut::find_option(topocut::map_load_option_rows(), std::string(topocut::kMaxMegapixelsOption)),
+             topocut::MapLoadOptions{});
   EXPECT_EQ(refusal({given("split_after", 0)}), "~split_after must be a whole number >= 1");
   EXPECT_EQ(refusal({given("neighbours_across_doors", 1)}), "~neighbours_across_doors is a switch: give true or false, not '1'");
 }

@@ -606,7 +606,7 @@ def check_node_arguments(args, env, work, node):
     """--help prints and exits without touching the running node; a bad value stops a node with the
     reason and exit 1; an unknown name is warned about, with the nearest known name."""
     help_out = subprocess.run([args.node, "--help"], env=env, capture_output=True, text=True, timeout=TIMEOUT)
-    assert help_out.returncode == 0 and "_concavity:=M" in help_out.stdout and "_max_megapixels:=N" in help_out.stdout, help_out
+    assert help_out.returncode == 0 and "_concavity:=M" in help_out.stdout and "_max_megapixels:=MP" in help_out.stdout, help_out
     time.sleep(0.5)
     assert node.poll() is None and "/topocut" in rosnode_names(), "--help shut the running node down"
     bad = subprocess.run([args.node, "__ns:=/other", "__name:=topocut_bad", "_concavity:=-1"], env=env, capture_output=True, text=True,

@@ -15,21 +15,31 @@
 namespace topocut::cli {
 namespace {
 
-int run(const std::vector<std::string>& args) {
+// The polygon read and the JSON written.
+struct Files {
   std::string input, output;
+};
+
+const std::vector<TextRow<Files>>& file_rows() {
+  static const std::vector<TextRow<Files>> rows = {
+      path_row("polygon", "POLYGON", TextKind::kInput, &Files::input,
+               "polygon JSON (- for standard input): {\"outer\": [[x,y],...], \"holes\": [[[x,y],...],...]}", true),
+      path_row("output", "FILE", TextKind::kOutput, &Files::output, "write the JSON here instead of standard output", false, "o")};
+  return rows;
+}
+
+int run(const std::vector<std::string>& args) {
+  Files files;
   DecompositionOptions options;
-  double tau = 0.0;
   po::options_description described("Decomposition");
-  described.add_options()
-      ("polygon", po::value<std::string>(&input)->required(), "polygon JSON (- for standard input): {\"outer\": [[x,y],...], \"holes\": [[[x,y],...],...]}")
-      ("tau", po::value<double>(&tau)->required(), "maximum concavity, in the polygon's units (> 0)")
-      ("output,o", po::value<std::string>(&output), "write the JSON here instead of standard output");
+  add_text_rows(described, file_rows());
+  add_option_rows(described, decomposition_tau_rows(), options);
   add_choice_rows(described, decomposition_choice_rows(), options);
   add_option_rows(described, decomposition_option_rows(), options);
   po::positional_options_description positional;
   positional.add("polygon", 1);
   const auto vm = parse_options(
-      "topocut decompose POLYGON.json --tau T [options]",
+      "topocut decompose POLYGON.json [--tau T] [options]",
       "Decomposes a polygon with holes into nearly convex pieces with the dual-space decomposition\n"
       "(DuDe, Liu, Xi & Lien 2014): cuts between existing vertices wherever a pocket or hole is\n"
       "deeper than tau. Rings may have any orientation. Prints JSON: the pieces (outer ring\n"
@@ -37,13 +47,13 @@ int run(const std::vector<std::string>& args) {
       "that the pieces cover.",
       described, positional, args);
   if (!vm) return 0;
-  if (!(tau > 0.0) || !std::isfinite(tau)) throw UsageError("--tau must be a positive number");
-  options.tau = tau;
+  read_text_rows(*vm, file_rows(), files);
+  read_option_rows(*vm, decomposition_tau_rows(), options);
   read_choice_rows(*vm, decomposition_choice_rows(), options);
   read_option_rows(*vm, decomposition_option_rows(), options);
-  if (!output.empty()) check_outputs({output}, {input});
+  if (!files.output.empty()) check_outputs({files.output}, {files.input});
 
-  const PolygonWithHoles polygon = read_polygon_json(input);
+  const PolygonWithHoles polygon = read_polygon_json(files.input);
   const Decomposition result = decompose(polygon, options);
   if (!result.complete) {
     std::cerr << "warning: stopped after " << result.rounds << " rounds (--max-rounds) with cuts still to make: "
@@ -51,10 +61,10 @@ int run(const std::vector<std::string>& args) {
   }
 
   const std::string text = decomposition_to_json(result);
-  if (output.empty()) {
+  if (files.output.empty()) {
     std::cout << text;
   } else {
-    write_file_atomically(output, text);
+    write_file_atomically(files.output, text);
   }
   return 0;
 }

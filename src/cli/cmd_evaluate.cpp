@@ -32,13 +32,47 @@ const char* const kNoDataset =
     "no dataset given: --dataset DIR (X.png, X_gt_segmentation.png per map X; the bundled maps: --dataset "
     "maps), or --maps DIR for maps without ground truth";
 
+// The row of dataset_options() whose help the command writes its own.
+const std::string kDatasetOptionName = "dataset";
+
+// What evaluate does besides the dataset's options: the mode, the folders read instead of segmenting,
+// the report written.
+struct EvaluateRequest {
+  std::string mode = "batch";
+  std::string labels, maps, report;
+  MapFolderOptions folder = [] {
+    MapFolderOptions o;
+    o.floor_repetitions = 3;  // a command's run is short: a few repetitions give the floor's median
+    return o;
+  }();
+};
+
+const std::vector<ChoiceRow<EvaluateRequest>>& mode_rows() {
+  static const std::vector<ChoiceRow<EvaluateRequest>> rows = {choice_row<EvaluateRequest, std::string>(
+      "mode", &EvaluateRequest::mode, {{"batch", "batch"}, {"incremental", "incremental"}},
+      "batch, or incremental: a simulated robot (360° laser, 5 m) explores each image and every update of its map is segmented incrementally")};
+  return rows;
+}
+
+const std::vector<TextRow<EvaluateRequest>>& folder_rows() {
+  using R = EvaluateRequest;
+  static const std::vector<TextRow<R>> rows = {
+      path_row("labels", "DIR", TextKind::kInput, &R::labels,
+               "score the label images in DIR instead of segmenting: X.png for map X (X_furnitures.png for its furnished image), one grey or 16-bit value a region (0 none) or one colour a region (black none), restricted to the map's free pixels; a map without its image is reported as missing"),
+      path_row("maps", "DIR", TextKind::kInput, &R::maps,
+               "maps without ground truth (every YAML, else image at --resolution, in DIR): count per map the rooms, the thin rooms (>= 1 m², less than half survives an opening with a 0.6 m disc: ray fans, slivers, strips), the speck rooms (0.1 to 1 m²) and the open rooms (>= 1 m², more than half of their outline against walls or never-seen cells runs into never-seen cells; unknown cells within 0.15 m of a wall count as wall; not judged on a map without occupied cells), time the whole segmentation and compare it with the map's contour floor"),
+      path_row("report", "DIR", TextKind::kOutput, &R::report,
+               "write DIR/index.html (created if missing): the summary and per-image tables and, per image, the ground truth's rooms beside the segmentation (DIR/MAP_VARIANT_truth.png, _rooms.png), matched pairs in one colour, missed rooms hatched red, segments that merged rooms orange")};
+  return rows;
+}
+
 // The dataset's own options (evaluation's table, which the dataset benchmarks parse too), then
 // the segmentation and map-loading flags every command shares.
 po::options_description described_options() {
   po::options_description described("Evaluation");
   for (const DatasetOption& option : dataset_options()) {
-    if (option.name == "dataset") {  // the library's default folder is the benchmarks' (a checkout's ../shared)
-      described.add_options()("dataset", po::value<std::string>()->value_name("DIR"), kDatasetHelp);
+    if (option.name == kDatasetOptionName) {  // the library's default folder is the benchmarks' (a checkout's ../shared)
+      described.add_options()(option.name.c_str(), po::value<std::string>()->value_name("DIR"), kDatasetHelp);
     } else if (option.value_name.empty()) {
       described.add_options()(option.name.c_str(), po::bool_switch(), option.help.c_str());
     } else if (option.repeatable) {
@@ -133,11 +167,9 @@ void prepare_report_folder(const std::string& folder) {
 }
 
 // --maps DIR: maps without ground truth, judged by the rooms no person would draw.
-int run_defects(const DatasetArguments& arguments, const std::string& folder, int floor_repetitions) {
-  MapFolderOptions options;
+int run_defects(const DatasetArguments& arguments, const std::string& folder, MapFolderOptions options) {
   options.segment = arguments.run.segment;
   options.load = arguments.run.load;
-  options.floor_repetitions = floor_repetitions;
   options.progress = [](const std::string& line) { progress(line); };
   const std::vector<MapFile> files = discover_map_files(folder);
   if (!arguments.csv.empty()) {
@@ -158,17 +190,13 @@ int run_defects(const DatasetArguments& arguments, const std::string& folder, in
 }
 
 int run(const std::vector<std::string>& args) {
+  EvaluateRequest request;
   po::options_description described = described_options();
-  described.add_options()
-      ("mode", po::value<std::string>()->default_value("batch")->value_name("MODE"),
-       "batch, or incremental: a simulated robot (360° laser, 5 m) explores each image and every update of its map is segmented incrementally")
-      ("labels", po::value<std::string>()->value_name("DIR"),
-       "score the label images in DIR instead of segmenting: X.png for map X (X_furnitures.png for its furnished image), one grey or 16-bit value a region (0 none) or one colour a region (black none), restricted to the map's free pixels; a map without its image is reported as missing")
-      ("maps", po::value<std::string>()->value_name("DIR"),
-       "maps without ground truth (every YAML, else image at --resolution, in DIR): count per map the rooms, the thin rooms (>= 1 m², less than half survives an opening with a 0.6 m disc: ray fans, slivers, strips), the speck rooms (0.1 to 1 m²) and the open rooms (>= 1 m², more than half of their outline against walls or never-seen cells runs into never-seen cells; unknown cells within 0.15 m of a wall count as wall; not judged on a map without occupied cells), time the whole segmentation and compare it with the map's contour floor")
-      ("floor-repetitions", po::value<int>()->default_value(3)->value_name("N"), "with --maps: repetitions of the contour floor (decode, threshold, findContours), median taken; 0: not measured")
-      ("report", po::value<std::string>()->value_name("DIR"),
-       "write DIR/index.html (created if missing): the summary and per-image tables and, per image, the ground truth's rooms beside the segmentation (DIR/MAP_VARIANT_truth.png, _rooms.png), matched pairs in one colour, missed rooms hatched red, segments that merged rooms orange");
+  add_choice_rows(described, mode_rows(), request);
+  add_text_rows(described, folder_rows());
+  po::options_description folder_options("With --maps");
+  add_option_rows(folder_options, map_folder_option_rows(), request.folder);
+  described.add(folder_options);
   po::options_description comparison_options("With --mode incremental");
   add_option_rows(comparison_options, batch_comparison_rows<ExplorationRunOptions>(), ExplorationRunOptions{});
   described.add(comparison_options);
@@ -210,28 +238,26 @@ int run(const std::vector<std::string>& args) {
       described, po::positional_options_description(), args);
   if (!vm) return 0;
   DatasetArguments arguments = to_arguments(*vm);
-  const std::string mode = (*vm)["mode"].as<std::string>();
-  if (mode != "batch" && mode != "incremental") throw UsageError("--mode must be batch or incremental, not '" + mode + "'");
+  read_choice_rows(*vm, mode_rows(), request);
+  read_text_rows(*vm, folder_rows(), request);
+  read_option_rows(*vm, map_folder_option_rows(), request.folder);
+  const std::string& mode = request.mode;
   ExplorationRunOptions comparison;
   read_option_rows(*vm, batch_comparison_rows<ExplorationRunOptions>(), comparison);
-  const std::string report = vm->count("report") ? (*vm)["report"].as<std::string>() : "";
+  const std::string& report = request.report;
   // Checked early, before the dataset is read; with --report the CSV may lie in the report's folder,
   // which is made below and checked with it there.
   if (!arguments.csv.empty() && report.empty()) check_outputs({arguments.csv}, {});
-  if (vm->count("report") && report.empty()) throw UsageError("--report needs a folder");
-  if (!report.empty() && (mode != "batch" || vm->count("maps")))
+  if (!report.empty() && (mode != "batch" || !request.maps.empty()))
     throw UsageError("--report draws images scored against a ground truth in batch mode (not --mode incremental or --maps)");
-  if (vm->count("maps")) {
-    const int floor_repetitions = (*vm)["floor-repetitions"].as<int>();
-    if (floor_repetitions < 0) throw UsageError("--floor-repetitions must not be negative");
+  if (!request.maps.empty()) {
     if (mode != "batch") throw UsageError("--maps takes no --mode (maps without ground truth are segmented in batch)");
-    if (vm->count("labels")) throw UsageError("--labels needs a dataset with ground truth, not --maps");
-    return run_defects(arguments, (*vm)["maps"].as<std::string>(), floor_repetitions);
+    if (!request.labels.empty()) throw UsageError("--labels needs a dataset with ground truth, not --maps");
+    return run_defects(arguments, request.maps, request.folder);
   }
 
-  if (!vm->count("dataset")) throw UsageError(kNoDataset);
-  const std::string labels = vm->count("labels") ? (*vm)["labels"].as<std::string>() : "";
-  if (vm->count("labels") && labels.empty()) throw UsageError("--labels needs a folder");
+  if (!vm->count(kDatasetOptionName)) throw UsageError(kNoDataset);
+  const std::string& labels = request.labels;
   if (!labels.empty() && mode != "batch") throw UsageError("--labels takes no --mode (the label images are read, not computed)");
   const std::vector<DatasetMap> maps = select_maps(discover_dataset(arguments.dataset), arguments.run.maps);
   if (!arguments.variant_given) {

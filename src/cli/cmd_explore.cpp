@@ -1,6 +1,5 @@
 // topocut explore: a simulated robot explores a map with a 360° laser while the incremental
 // segmenter keeps its rooms up to date; prints per-update times and the final quality.
-#include <cstdio>
 #include <iostream>
 
 #include <cstdint>
@@ -19,12 +18,17 @@
 namespace topocut::cli {
 namespace {
 
-Point2 parse_point(const std::string& text) {
-  double x = 0.0, y = 0.0;
-  char tail = 0;
-  if (std::sscanf(text.c_str(), "%lf,%lf%c", &x, &y, &tail) != 2)
-    throw UsageError("--start needs X,Y in metres (e.g. --start 3.5,-1.2), not '" + text + "'");
-  return {x, y};
+// The map explored and its ground truth (found beside the map when not given).
+struct ExploreFiles {
+  std::string map, gt;
+};
+
+const std::vector<TextRow<ExploreFiles>>& file_rows() {
+  static const std::vector<TextRow<ExploreFiles>> rows = {
+      path_row("map", "MAP", TextKind::kInput, &ExploreFiles::map, "ground-truth map the robot explores (image or ROS YAML)", true),
+      path_row("gt", "FILE", TextKind::kInput, &ExploreFiles::gt,
+               "ground-truth segmentation image (default: X_gt_segmentation.png next to the map)")};
+  return rows;
 }
 
 // The map, and the rooms of its ground truth: gt_path, else the one found next to the map (gt_path
@@ -41,20 +45,15 @@ OccupancyGrid load_inputs(const std::string& map_path, const MapLoadOptions& loa
 }
 
 int run(const std::vector<std::string>& args) {
-  std::string map_path, gt_path, start;
+  ExploreFiles files;
   ExplorationRunOptions options;
   ExplorationOptions& exploration = options.exploration;
-  unsigned seed = 0;
   FrameSequenceOptions frames;
-  bool no_hint = false;
   po::options_description described("Exploration");
-  described.add_options()
-      ("map", po::value<std::string>(&map_path)->required(), "ground-truth map the robot explores (image or ROS YAML)")
-      ("seed", po::value<unsigned>(&seed)->default_value(seed), "start choice: 0 = the most open cell, else a random free cell")
-      ("start", po::value<std::string>(&start), "start position X,Y in metres (overrides the seed)")
-      ("no-hint", po::bool_switch(&no_hint), "do not tell the segmenter which rectangle changed")
-      ("gt", po::value<std::string>(&gt_path), "ground-truth segmentation image (default: X_gt_segmentation.png next to the map)")
-      ("frames", po::value<std::string>(&frames.folder), "write a PNG frame of every update into this folder");
+  add_text_rows(described, file_rows());
+  add_text_rows(described, exploration_text_rows());
+  add_option_rows(described, exploration_run_option_rows(), options);
+  add_text_rows(described, frame_folder_rows());
   add_option_rows(described, batch_comparison_rows<ExplorationRunOptions>(), options);
   add_option_rows(described, frame_option_rows(), frames);
   add_option_rows(described, exploration_option_rows(), exploration);
@@ -80,15 +79,15 @@ int run(const std::vector<std::string>& args) {
       "the robot's path and laser range. Progress goes to stderr.",
       described, positional, args);
   if (!vm) return 0;
-  if (seed > 0xffffffffu) throw UsageError("--seed must fit in 32 bits");
+  read_text_rows(*vm, file_rows(), files);
+  read_text_rows(*vm, exploration_text_rows(), exploration);
+  read_option_rows(*vm, exploration_run_option_rows(), options);
+  read_text_rows(*vm, frame_folder_rows(), frames);
   read_option_rows(*vm, batch_comparison_rows<ExplorationRunOptions>(), options);
   read_option_rows(*vm, frame_option_rows(), frames);
   read_option_rows(*vm, exploration_option_rows(), exploration);
-  exploration.seed = seed;
-  if (vm->count("start")) exploration.start = parse_point(start);
   options.incremental = read_incremental_options(*vm, options.incremental);
   options.incremental.segment = read_segment_options(*vm, segment_defaults);
-  options.use_hint = !no_hint;
   check_usage([&] {
     validate(exploration);
     validate(options.incremental.segment);
@@ -96,8 +95,8 @@ int run(const std::vector<std::string>& args) {
   const MapLoadOptions load = read_map_load_options(*vm, MapLoadOptions{});
 
   cv::Mat gt_rooms;
-  const OccupancyGrid world = load_inputs(map_path, load, gt_path, gt_rooms);
-  if (!frames.folder.empty()) prepare_frames_folder(frames.folder, {map_path, gt_path});
+  const OccupancyGrid world = load_inputs(files.map, load, files.gt, gt_rooms);
+  if (!frames.folder.empty()) prepare_frames_folder(frames.folder, {files.map, files.gt});
   FrameWriter writer(frames, exploration.range);
   options.on_update = [&](const ExplorationFrame& f) {
     writer.update(f.update, f.explorer.scans(), f.grid, f.segmentation, f.explorer.path(), f.explorer.pose());
@@ -107,9 +106,9 @@ int run(const std::vector<std::string>& args) {
   const ExplorationRun run = run_exploration(world, options);
   // End the sequence on the finished map: the final map is the last update's grid.
   writer.finish(static_cast<int>(run.updates.size()), run.scans, run.final_map, run.incremental, run.path, run.final_pose);
-  std::cout << "map: " << terminal_text(map_path) << " (" << world.width() << " x " << world.height() << " cells, "
+  std::cout << "map: " << terminal_text(files.map) << " (" << world.width() << " x " << world.height() << " cells, "
             << format("%g m/cell)\n", world.resolution);
-  std::cout << format_exploration_summary(run, gt_rooms, gt_path);
+  std::cout << format_exploration_summary(run, gt_rooms, files.gt);
   if (!frames.folder.empty()) std::cout << "frames: " << writer.written() << " written to " << terminal_text(frames.folder) << "\n";
   return 0;
 }

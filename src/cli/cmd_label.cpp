@@ -12,17 +12,32 @@
 namespace topocut::cli {
 namespace {
 
+// The scan labelled and the centres asked for.
+struct LabelRequest {
+  std::string scan;
+  int clusters = 0;  // fuzzy c-means centres per segment; 0: none
+};
+
+const std::vector<TextRow<LabelRequest>>& scan_rows() {
+  static const std::vector<TextRow<LabelRequest>> rows = {path_row(
+      "scan", "SCAN", TextKind::kInput, &LabelRequest::scan, "scan CSV (header angle,range; radians, metres; - for standard input)", true)};
+  return rows;
+}
+
+const std::vector<OptionRow<LabelRequest>>& centre_rows() {
+  static const std::vector<OptionRow<LabelRequest>> rows = {field_row(
+      "fcm", "K", OptionRange::kWholeNumber, &LabelRequest::clusters, "fuzzy c-means centres per segment (0: none)")};
+  return rows;
+}
+
 int run(const std::vector<std::string>& args) {
-  std::string scan_path;
+  LabelRequest request;
   LabelingOptions options;
-  int clusters = 0;
   po::options_description described("Labeling");
-  described.add_options()
-      ("scan", po::value<std::string>(&scan_path)->required(), "scan CSV (header angle,range; radians, metres; - for standard input)");
+  add_text_rows(described, scan_rows());
   add_option_rows(described, labeling_option_rows(), options);
   add_choice_rows(described, labeling_choice_rows(), options);
-  described.add_options()
-      ("fcm", po::value<int>(&clusters)->default_value(0), "fuzzy c-means centres per segment (0: none)");
+  add_option_rows(described, centre_rows(), request);
   po::positional_options_description positional;
   positional.add("scan", 1);
   const auto vm = parse_options(
@@ -34,18 +49,19 @@ int run(const std::vector<std::string>& args) {
   if (!vm) return 0;
   read_option_rows(*vm, labeling_option_rows(), options);
   read_choice_rows(*vm, labeling_choice_rows(), options);
-  if (clusters < 0) throw UsageError("--fcm must be 0 or a positive number of centres");
+  read_text_rows(*vm, scan_rows(), request);
+  read_option_rows(*vm, centre_rows(), request);
 
-  const Scan scan = read_scan_csv(scan_path);
+  const Scan scan = read_scan_csv(request.scan);
   const Labeling labeling = label_scan(scan, options);
 
   std::vector<std::vector<Point2>> centres;
-  if (clusters > 0) {
+  if (request.clusters > 0) {
     FuzzyCMeansOptions fcm;
-    fcm.clusters = clusters;
+    fcm.clusters = request.clusters;
     centres = segment_centres(scan, labeling, fcm);
   }
-  std::cout << labeling_to_json(scan_path, scan, options, labeling, centres);
+  std::cout << labeling_to_json(request.scan, scan, options, labeling, centres);
   return 0;
 }
 

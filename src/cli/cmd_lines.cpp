@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "cli/command.h"
+#include "cli/library_options.h"
 #include "topocut/core/error.h"
 #include "topocut/io/atomic_file.h"
 #include "topocut/io/output_files.h"
@@ -16,14 +17,32 @@
 namespace topocut::cli {
 namespace {
 
+// The scan read and how the lines are written.
+struct LinesRequest {
+  std::string scan, output, format = "json";
+};
+
+const std::vector<TextRow<LinesRequest>>& request_rows() {
+  static const std::vector<TextRow<LinesRequest>> rows = {
+      path_row("scan", "SCAN", TextKind::kInput, &LinesRequest::scan,
+               "scan CSV (header angle,range; radians, metres; - for standard input)", true),
+      path_row("output", "FILE", TextKind::kOutput, &LinesRequest::output, "write to this file instead of standard output", false, "o")};
+  return rows;
+}
+
+const std::vector<ChoiceRow<LinesRequest>>& format_rows() {
+  static const std::vector<ChoiceRow<LinesRequest>> rows = {choice_row<LinesRequest, std::string>(
+      "format", &LinesRequest::format, {{"json", "json"}, {"csv", "csv"}}, "how the lines are printed")};
+  return rows;
+}
+
 int run(const std::vector<std::string>& args) {
-  std::string scan_path, method_name = "smf", format = "json", output;
+  LinesRequest request;
+  LineExtractionOptions options;
   po::options_description described("Line extraction");
-  described.add_options()
-      ("scan", po::value<std::string>(&scan_path)->required(), "scan CSV (header angle,range; radians, metres; - for standard input)")
-      ("method", po::value<std::string>(&method_name)->default_value(method_name), "sef, lt, iepf, smf or ale")
-      ("format", po::value<std::string>(&format)->default_value(format), "json or csv")
-      ("output,o", po::value<std::string>(&output), "write to this file instead of standard output");
+  add_text_rows(described, request_rows());
+  add_choice_rows(described, line_choice_rows(), options);
+  add_choice_rows(described, format_rows(), request);
   po::options_description tuning("Method options (defaults from the literature; see the library headers)");
   for (const LineOptionRow& option : line_option_rows())  // no default shown: each method has its own
     tuning.add_options()(option.row.name.c_str(), po::value<std::string>()->value_name(option.row.value_name), option.row.help.c_str());
@@ -39,9 +58,9 @@ int run(const std::vector<std::string>& args) {
       described, positional, args);
   if (!vm) return 0;
 
-  LineExtractionOptions options;
-  check_usage([&] { options.method = parse_line_method(method_name); });
-  if (format != "json" && format != "csv") throw UsageError("--format must be 'json' or 'csv', got '" + format + "'");
+  read_text_rows(*vm, request_rows(), request);
+  read_choice_rows(*vm, line_choice_rows(), options);
+  read_choice_rows(*vm, format_rows(), request);
   for (const LineOptionRow& option : line_option_rows()) {
     const std::string shown = "--" + option.row.name;
     if (!vm->count(option.row.name)) continue;
@@ -49,15 +68,15 @@ int run(const std::vector<std::string>& args) {
       throw UsageError(shown + " does not apply to --method " + to_string(options.method));
     check_usage([&] { set_option(option.row, options, parse_option_number((*vm)[option.row.name].as<std::string>(), shown), shown); });
   }
-  if (!output.empty()) check_outputs({output}, {scan_path});
+  if (!request.output.empty()) check_outputs({request.output}, {request.scan});
 
-  const Scan scan = read_scan_csv(scan_path);
+  const Scan scan = read_scan_csv(request.scan);
   const std::vector<Line> lines = extract_lines(scan, options);
-  const std::string text = format == "json" ? format_lines_json(lines) : format_lines_csv(lines);
-  if (output.empty()) {
+  const std::string text = request.format == "json" ? format_lines_json(lines) : format_lines_csv(lines);
+  if (request.output.empty()) {
     std::cout << text << std::flush;
   } else {
-    write_file_atomically(output, text);
+    write_file_atomically(request.output, text);
   }
   return 0;
 }

@@ -84,44 +84,52 @@ const char* const kDescription =
     "JSON and GeoJSON say it as \"kind\", --color-by-kind draws it.\n\n"
     "Example:\n  topocut segment maps/floorplan.yaml --out-color rooms.png --out-json rooms.json --at 2.0,1.5";
 
-void add_output_options(po::options_description& described, Outputs& out) {
-  described.add_options()
-      ("out-labels", po::value<std::string>(&out.labels), "write the room labels as a 16-bit PNG (0 = no room, rooms 1..N)")
-      ("out-color", po::value<std::string>(&out.color), "write a colour overlay of the rooms over the map (PNG, JPEG, ...)")
-      ("color-by-kind", po::bool_switch(&out.color_by_kind),
-       "with --out-color: tint corridors orange and other rooms blue instead of a colour per room")
-      ("out-json", po::value<std::string>(&out.json), "write rooms (with their kind) and passages as JSON (metres)")
-      ("out-svg", po::value<std::string>(&out.svg), "write rooms and passages as SVG (metres)")
-      ("out-geojson", po::value<std::string>(&out.geojson),
-       "write rooms (Polygons with holes) and passages (LineStrings) as a GeoJSON FeatureCollection (map frame, metres)")
-      ("out-clean", po::value<std::string>(&out.clean),
-       "write the map as the segmenter saw it (PNG): free, occupied, unknown, and what the cleaning removed in colour");
+// What segment writes, one row per file (the command line and --config take them alike).
+const std::vector<TextRow<Outputs>>& output_rows() {
+  static const std::vector<TextRow<Outputs>> rows = {
+      path_row("out-labels", "FILE", TextKind::kOutput, &Outputs::labels, "write the room labels as a 16-bit PNG (0 = no room, rooms 1..N)"),
+      path_row("out-color", "FILE", TextKind::kOutput, &Outputs::color, "write a colour overlay of the rooms over the map (PNG, JPEG, ...)"),
+      path_row("out-json", "FILE", TextKind::kOutput, &Outputs::json, "write rooms (with their kind) and passages as JSON (metres)"),
+      path_row("out-svg", "FILE", TextKind::kOutput, &Outputs::svg, "write rooms and passages as SVG (metres)"),
+      path_row("out-geojson", "FILE", TextKind::kOutput, &Outputs::geojson,
+               "write rooms (Polygons with holes) and passages (LineStrings) as a GeoJSON FeatureCollection (map frame, metres)"),
+      path_row("out-clean", "FILE", TextKind::kOutput, &Outputs::clean,
+               "write the map as the segmenter saw it (PNG): free, occupied, unknown, and what the cleaning removed in colour")};
+  return rows;
 }
 
-// "X,Y" in metres; a UsageError otherwise.
+// How the overlay is drawn.
+const std::vector<OptionRow<Outputs>>& output_switch_rows() {
+  static const std::vector<OptionRow<Outputs>> rows = {switch_row(
+      "color-by-kind", &Outputs::color_by_kind, "with --out-color: tint corridors orange and other rooms blue instead of a colour per room")};
+  return rows;
+}
+
+QueryPoint query_point(const std::string& text);
+
+// The map segment reads and the points it is asked about.
+const std::vector<TextRow<Request>>& request_rows() {
+  static const std::vector<TextRow<Request>> rows = {
+      path_row("map", "MAP", TextKind::kInput, &Request::map_path, "map: ROS map_server YAML, or an image (PNG, PGM, ...)", true),
+      text_row<Request>("at", "X,Y", [](Request& r, const std::string& text) { r.at.push_back(query_point(text)); },
+                        "print the room at this point of the map frame (metres), or none; repeatable", true)};
+  return rows;
+}
+
+// "X,Y" in metres (map frame); a UsageError otherwise.
 QueryPoint query_point(const std::string& text) {
-  const std::size_t comma = text.find(',');
-  if (comma == std::string::npos || text.find(',', comma + 1) != std::string::npos)
-    throw UsageError("--at needs a point X,Y in metres (map frame), not '" + text + "'");
   QueryPoint q{text, {}};
-  check_usage([&] {
-    q.point = {parse_option_number(text.substr(0, comma), "--at's X"), parse_option_number(text.substr(comma + 1), "--at's Y")};
-    if (!std::isfinite(q.point.x) || !std::isfinite(q.point.y)) throw Error("--at needs finite coordinates, not '" + text + "'");
-  });
+  check_usage([&] { q.point = parse_option_point(text, "--at"); });
   return q;
 }
 
 // Every output is checked before the work starts, so a typo costs no time and leaves nothing behind.
-void check_output_files(const Request& request, const po::variables_map& vm) {
+// (An empty file name was refused by its row.)
+void check_output_files(const Request& request) {
   const Outputs& out = request.out;
-  const std::pair<const char*, const std::string*> outputs[] = {
-      {"out-labels", &out.labels}, {"out-color", &out.color}, {"out-json", &out.json},
-      {"out-svg", &out.svg},       {"out-clean", &out.clean}, {"out-geojson", &out.geojson}};
   std::vector<std::string> paths;
-  for (const auto& [option, path] : outputs) {
-    if (vm.count(option) && path->empty()) throw UsageError("--" + std::string(option) + " was given an empty file name");
+  for (const std::string* path : {&out.labels, &out.color, &out.json, &out.svg, &out.clean, &out.geojson})
     if (!path->empty()) paths.push_back(*path);
-  }
   check_outputs(paths, map_files(request.map_path));
   if (!out.labels.empty() && lower_extension(out.labels) != ".png")
     throw Error("the label image '" + out.labels + "' must be a .png file (16-bit PNG)");
@@ -135,14 +143,11 @@ void check_output_files(const Request& request, const po::variables_map& vm) {
 std::optional<Request> parse_request(const std::vector<std::string>& args) {
   Request request;
   po::options_description described("Map and outputs");
-  described.add_options()("map", po::value<std::string>(&request.map_path)->required(),
-                          "map: ROS map_server YAML, or an image (PNG, PGM, ...)");
+  add_text_rows(described, request_rows());
   add_segment_options(described, request.settings);
   add_map_load_options(described, request.load);
-  add_output_options(described, request.out);
-  std::vector<std::string> at;
-  described.add_options()("at", po::value<std::vector<std::string>>(&at)->composing()->value_name("X,Y"),
-                          "print the room at this point of the map frame (metres), or none; repeatable");
+  add_text_rows(described, output_rows());
+  add_option_rows(described, output_switch_rows(), request.out);
   po::positional_options_description positional;
   positional.add("map", 1);
   const auto vm = parse_options("topocut segment MAP [options]", kDescription, described, positional, args);
@@ -151,8 +156,10 @@ std::optional<Request> parse_request(const std::vector<std::string>& args) {
   check_usage([&] { request.options = to_segment_options(request.settings); });  // the library's ranges, before any work
   request.load = read_map_load_options(*vm, request.load);
   request.resolution_given = !vm->at("resolution").defaulted();
-  for (const std::string& text : at) request.at.push_back(query_point(text));
-  check_output_files(request, *vm);
+  read_text_rows(*vm, request_rows(), request);
+  read_text_rows(*vm, output_rows(), request.out);
+  read_option_rows(*vm, output_switch_rows(), request.out);
+  check_output_files(request);
   if (request.out.color_by_kind && request.out.color.empty()) throw UsageError("--color-by-kind needs --out-color FILE");
   return request;
 }

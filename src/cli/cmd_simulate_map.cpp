@@ -56,38 +56,39 @@ const char* const kDescription =
 struct Arguments {
   std::string plan, gt, out_map, out_gt, out_world, dataset, out;
   std::vector<std::string> maps;
-  std::uint32_t seed = 1;
-  int seeds = 1;
-  int limit = 0;
-  SimulatedMapOptions options;
-  MapLoadOptions load;
+  int limit = 0;                  // with --dataset: only the first limit plans; 0: all
+  RobotMadeDatasetOptions made;   // the simulation, the plans' loading and the seeds
 };
 
-std::uint32_t parse_seed(const std::string& text) {
-  const bool digits = !text.empty() && text.size() <= 10 &&
-                      std::all_of(text.begin(), text.end(), [](char c) { return std::isdigit(static_cast<unsigned char>(c)) != 0; });
-  if (!digits || std::stoull(text) > 0xffffffffull)
-    throw UsageError("--seed must be a whole number in 0..4294967295, not '" + text + "'");
-  return static_cast<std::uint32_t>(std::stoull(text));
+// The files read and written, and which plans of a dataset.
+const std::vector<TextRow<Arguments>>& file_rows() {
+  using A = Arguments;
+  static const std::vector<TextRow<A>> rows = {
+      path_row("plan", "PLAN", TextKind::kInput, &A::plan, "the plan: a map image or ROS YAML"),
+      path_row("gt", "FILE", TextKind::kInput, &A::gt, "its people's rooms, Bormann layout (default: X_gt_segmentation.png beside X.png)"),
+      path_row("out-map", "FILE", TextKind::kOutput, &A::out_map, "write the robot's map here (.png, .pgm, ...; .yaml: ROS map_server map)"),
+      path_row("out-gt", "FILE", TextKind::kOutput, &A::out_gt, "write people's rooms in the map's frame here (PNG: 255 rooms, 0 elsewhere)"),
+      path_row("out-world", "FILE", TextKind::kOutput, &A::out_world,
+               "also write the world the robot was in (PNG, map's frame): floor the robot drives on white (light grey near walls), open ground grey, windows dark grey, walls and furniture black"),
+      path_row("dataset", "DIR", TextKind::kInput, &A::dataset, "convert every map of this Bormann-format folder instead of one plan"),
+      path_row("out", "DIR", TextKind::kOutput, &A::out, "with --dataset: the folder written (X_sN.png, X_sN_gt_segmentation.png)"),
+      text_row<A>("map", "NAME", [](A& a, const std::string& name) { a.maps.push_back(name); },
+                  "with --dataset: only this plan (repeatable)", true)};
+  return rows;
+}
+
+const std::vector<OptionRow<Arguments>>& selection_rows() {
+  static const std::vector<OptionRow<Arguments>> rows = {
+      field_row("limit", "N", OptionRange::kWholeNumber, &Arguments::limit, "with --dataset: only the first N plans (by name; 0: all)")};
+  return rows;
 }
 
 Arguments parse(const std::vector<std::string>& args, bool& help) {
   Arguments a;
-  std::string seed = "1";
   po::options_description described("Simulation");
-  described.add_options()
-      ("plan", po::value<std::string>(&a.plan)->value_name("PLAN"), "the plan: a map image or ROS YAML")
-      ("gt", po::value<std::string>(&a.gt)->value_name("FILE"), "its people's rooms, Bormann layout (default: X_gt_segmentation.png beside X.png)")
-      ("seed", po::value<std::string>(&seed)->default_value(seed)->value_name("N"), "the seed, 0..4294967295 (with --dataset: the first of --seeds seeds)")
-      ("out-map", po::value<std::string>(&a.out_map)->value_name("FILE"), "write the robot's map here (.png, .pgm, ...; .yaml: ROS map_server map)")
-      ("out-gt", po::value<std::string>(&a.out_gt)->value_name("FILE"), "write people's rooms in the map's frame here (PNG: 255 rooms, 0 elsewhere)")
-      ("out-world", po::value<std::string>(&a.out_world)->value_name("FILE"),
-       "also write the world the robot was in (PNG, map's frame): floor the robot drives on white (light grey near walls), open ground grey, windows dark grey, walls and furniture black")
-      ("dataset", po::value<std::string>(&a.dataset)->value_name("DIR"), "convert every map of this Bormann-format folder instead of one plan")
-      ("out", po::value<std::string>(&a.out)->value_name("DIR"), "with --dataset: the folder written (X_sN.png, X_sN_gt_segmentation.png)")
-      ("seeds", po::value<int>(&a.seeds)->default_value(a.seeds)->value_name("N"), "with --dataset: maps per plan, seeds --seed .. --seed + N - 1")
-      ("limit", po::value<int>(&a.limit)->default_value(a.limit)->value_name("N"), "with --dataset: only the first N plans (by name; 0: all)")
-      ("map", po::value<std::vector<std::string>>(&a.maps)->value_name("NAME"), "with --dataset: only this plan (repeatable)");
+  add_text_rows(described, file_rows());
+  add_option_rows(described, robot_made_seed_rows(), a.made);
+  add_option_rows(described, selection_rows(), a);
   add_option_rows(described, simulated_map_option_rows(), SimulatedMapOptions{});
   add_map_load_options(described, MapLoadOptions{});
   po::positional_options_description positional;
@@ -98,10 +99,12 @@ Arguments parse(const std::vector<std::string>& args, bool& help) {
       kDescription, described, positional, args);
   help = !vm;
   if (!vm) return a;
-  a.seed = parse_seed(seed);
-  read_option_rows(*vm, simulated_map_option_rows(), a.options);
-  check_usage([&] { validate(a.options); });
-  a.load = read_map_load_options(*vm, MapLoadOptions{});
+  read_text_rows(*vm, file_rows(), a);
+  read_option_rows(*vm, robot_made_seed_rows(), a.made);
+  read_option_rows(*vm, selection_rows(), a);
+  read_option_rows(*vm, simulated_map_option_rows(), a.made.simulate);
+  check_usage([&] { validate(a.made.simulate); });
+  a.made.load = read_map_load_options(*vm, MapLoadOptions{});
   if (a.dataset.empty()) {
     if (a.plan.empty()) throw UsageError("give a PLAN (or --dataset DIR)");
     if (a.out_map.empty() || a.out_gt.empty()) throw UsageError("give both --out-map and --out-gt");
@@ -111,9 +114,8 @@ Arguments parse(const std::vector<std::string>& args, bool& help) {
     if (!a.plan.empty() || !a.gt.empty() || !a.out_map.empty() || !a.out_gt.empty() || !a.out_world.empty())
       throw UsageError("--dataset converts a folder: give no PLAN, --gt, --out-map, --out-gt or --out-world with it");
     if (a.out.empty()) throw UsageError("--dataset needs --out DIR");
-    if (a.seeds < 1) throw UsageError("--seeds must be at least 1");
-    if (a.limit < 0) throw UsageError("--limit must be 0 (all) or more");
-    if (a.seed + static_cast<std::uint64_t>(a.seeds) - 1 > 0xffffffffull) throw UsageError("--seed + --seeds - 1 must fit in 32 bits");
+    if (a.made.first_seed + static_cast<std::uint64_t>(a.made.seeds) - 1 > 0xffffffffull)
+      throw UsageError("--seed + --seeds - 1 must fit in 32 bits");
   }
   return a;
 }
@@ -155,12 +157,12 @@ int run_one(const Arguments& a) {
   inputs.push_back(gt);
   check_outputs(outputs, inputs);
   cv::Mat rooms;
-  const OccupancyGrid plan = load_plan(DatasetMap{a.plan, a.plan, "", gt}, a.load, rooms);
-  const SimulatedMap simulated = simulate_map(plan, rooms, a.options, a.seed);
+  const OccupancyGrid plan = load_plan(DatasetMap{a.plan, a.plan, "", gt}, a.made.load, rooms);
+  const SimulatedMap simulated = simulate_map(plan, rooms, a.made.simulate, a.made.first_seed);
   write_map(a.out_map, simulated);
   write_image_atomically(a.out_gt, rooms_image(simulated));
   if (!a.out_world.empty()) write_image_atomically(a.out_world, world_image(simulated));
-  std::cout << "simulated " << terminal_text(a.plan) << " seed " << a.seed << ": " << summary(simulated) << "\n";
+  std::cout << "simulated " << terminal_text(a.plan) << " seed " << a.made.first_seed << ": " << summary(simulated) << "\n";
   return 0;
 }
 
@@ -174,18 +176,14 @@ int run_dataset(const Arguments& a) {
   for (const DatasetMap& m : maps) {
     inputs.push_back(m.plain);
     inputs.push_back(m.ground_truth);
-    for (int k = 0; k < a.seeds; ++k) {
-      const std::string stem = (fs::path(a.out) / robot_made_name(m.name, a.seed + static_cast<std::uint32_t>(k))).string();
+    for (int k = 0; k < a.made.seeds; ++k) {
+      const std::string stem = (fs::path(a.out) / robot_made_name(m.name, a.made.first_seed + static_cast<std::uint32_t>(k))).string();
       outputs.push_back(stem + ".png");
       outputs.push_back(stem + "_gt_segmentation.png");
     }
   }
   check_outputs(outputs, inputs);
-  RobotMadeDatasetOptions options;
-  options.simulate = a.options;
-  options.load = a.load;
-  options.first_seed = a.seed;
-  options.seeds = a.seeds;
+  RobotMadeDatasetOptions options = a.made;
   options.progress = [](const std::string& line) { progress("simulate-map: " + line); };
   const RobotMadeDataset made = make_robot_made_dataset(maps, a.out, options);
   for (const std::string& failure : made.failed)

@@ -81,36 +81,58 @@ void replay(const std::vector<PosedScan>& scans, const WallsOptions& walls, cons
   if (!out_rooms.empty()) write_rooms_json(out_rooms, run.incremental, in_frame(run.incremental, GridFrame{}).placements);
 }
 
+// What walls runs: rooms too, the replay, and how the replay draws its cells.
+struct WallsRun {
+  bool segment = false, incremental = false, settle = false;
+};
+
 // What the command line asks for, checked; `help` when it only asked for the help.
 struct WallsRequest {
   bool help = false;
-  std::string log_path, method = "iepf";
+  std::string log_path;
   std::string out_map, out_walls, out_color, out_rooms;
   WallsOptions options;
   CarmenReadOptions read;
   SegmentOptions segment;
   ReplayArguments replay;
-  bool incremental = false, segment_rooms = false;
+  WallsRun run;
+  bool incremental = false;
+  bool segment_rooms = false;  // --segment, or an output of rooms asked for
 };
+
+// The log read and the files written.
+const std::vector<TextRow<WallsRequest>>& file_rows() {
+  using R = WallsRequest;
+  static const std::vector<TextRow<R>> rows = {
+      path_row("log", "LOG", TextKind::kInput, &R::log_path, "CARMEN log with FLASER messages (plain or .gz)", true),
+      path_row("out-map", "FILE", TextKind::kOutput, &R::out_map, "write the grid as a ROS map_server map (YAML + PGM next to it)"),
+      path_row("out-walls", "FILE", TextKind::kOutput, &R::out_walls, "write the merged walls as JSON"),
+      path_row("out-color", "FILE", TextKind::kOutput, &R::out_color, "write the rooms as a colour overlay (implies --segment)"),
+      path_row("out-rooms", "FILE", TextKind::kOutput, &R::out_rooms, "write the rooms as JSON (implies --segment)")};
+  return rows;
+}
+
+// --segment, --incremental, --settle.
+const std::vector<OptionRow<WallsRun>>& run_rows() {
+  using R = WallsRun;
+  static const std::vector<OptionRow<R>> rows = {
+      switch_row("segment", &R::segment, "segment the grid into rooms (pipeline A)"),
+      switch_row("incremental", &R::incremental, "replay the log: build the grid scan by scan and segment every change incrementally"),
+      switch_row("settle", &R::settle,
+                 "with --incremental: settle each cell by occupancy evidence (log-odds, OctoMap's hit 0.7 / miss 0.4) instead of drawing every scan as it is")};
+  return rows;
+}
 
 // The options of `walls` (its own, then the shared segmentation flags) bound to the request.
 po::options_description walls_options(WallsRequest& r, const SegmentSettings& segment_defaults) {
   po::options_description described("Walls");
-  described.add_options()
-      ("log", po::value<std::string>(&r.log_path)->required(), "CARMEN log with FLASER messages (plain or .gz)")
-      ("method", po::value<std::string>(&r.method)->default_value(r.method), "line extractor: sef, lt, iepf, smf or ale");
+  add_text_rows(described, file_rows());
+  add_choice_rows(described, line_choice_rows(), r.options.extraction.lines);
   add_choice_rows(described, labeling_choice_rows(), r.options.extraction.labeling);
   add_option_rows(described, walls_option_rows(), r.options);
   add_option_rows(described, carmen_read_option_rows(), r.read);
-  described.add_options()
-      ("out-map", po::value<std::string>(&r.out_map), "write the grid as a ROS map_server map (YAML + PGM next to it)")
-      ("out-walls", po::value<std::string>(&r.out_walls), "write the merged walls as JSON")
-      ("segment", "segment the grid into rooms (pipeline A)")
-      ("out-color", po::value<std::string>(&r.out_color), "write the rooms as a colour overlay (implies --segment)")
-      ("out-rooms", po::value<std::string>(&r.out_rooms), "write the rooms as JSON (implies --segment)")
-      ("incremental", "replay the log: build the grid scan by scan and segment every change incrementally")
-      ("settle", po::bool_switch(&r.replay.settle), "with --incremental: settle each cell by occupancy evidence (log-odds, OctoMap's hit 0.7 / miss 0.4) instead of drawing every scan as it is")
-      ("frames", po::value<std::string>(&r.replay.frames.folder), "with --incremental: write a PNG frame of every update into this folder");
+  add_option_rows(described, run_rows(), r.run);
+  add_text_rows(described, frame_folder_rows());
   add_option_rows(described, batch_comparison_rows<GridReplayOptions>(), r.replay.options);
   add_option_rows(described, frame_option_rows(), r.replay.frames);
   po::options_description segmentation("Segmentation (with --segment, --out-color, --out-rooms or --incremental)");
@@ -146,23 +168,23 @@ WallsRequest parse_request(const std::vector<std::string>& args) {
     r.help = true;
     return r;
   }
+  read_text_rows(*vm, file_rows(), r);
+  read_option_rows(*vm, run_rows(), r.run);
+  r.incremental = r.run.incremental;
+  r.replay.settle = r.run.settle;
+  read_text_rows(*vm, frame_folder_rows(), r.replay.frames);
   read_option_rows(*vm, walls_option_rows(), r.options);
   read_option_rows(*vm, carmen_read_option_rows(), r.read);
   r.segment = read_segment_options(*vm, segment_defaults);
   r.replay.options.incremental = read_incremental_options(*vm, r.replay.options.incremental);
   read_option_rows(*vm, batch_comparison_rows<GridReplayOptions>(), r.replay.options);
   read_option_rows(*vm, frame_option_rows(), r.replay.frames);
-  try {
-    r.options.extraction.lines.method = parse_line_method(r.method);
-  } catch (const Error& e) {
-    throw UsageError(std::string("--method: ") + e.what());
-  }
+  read_choice_rows(*vm, line_choice_rows(), r.options.extraction.lines);
   read_choice_rows(*vm, labeling_choice_rows(), r.options.extraction.labeling);
-  r.incremental = vm->count("incremental") > 0;
   if (!r.incremental && (r.replay.options.compare_batch || r.replay.settle || !r.replay.frames.folder.empty()))
     throw UsageError("--compare-batch, --settle and --frames need --incremental");
   if (r.incremental && !r.out_walls.empty()) throw UsageError("--out-walls needs merged walls: not with --incremental");
-  r.segment_rooms = vm->count("segment") || !r.out_color.empty() || !r.out_rooms.empty();
+  r.segment_rooms = r.run.segment || !r.out_color.empty() || !r.out_rooms.empty();
   std::vector<std::string> outputs;
   for (const std::string& path : {r.out_map, r.out_walls, r.out_color, r.out_rooms})
     if (!path.empty()) outputs.push_back(path);
@@ -192,7 +214,7 @@ std::vector<PosedScan> read_scans(const std::string& log_path, const CarmenReadO
 void run_batch(const WallsRequest& r, const std::vector<PosedScan>& scans) {
   const WallsResult result = walls_from_scans(scans, r.options);
   std::cout << "walls: " << result.segments.size() << " segments merged into " << result.walls.size() << " walls ("
-            << r.method << ")\n";
+            << to_string(r.options.extraction.lines.method) << ")\n";
   const OccupancyGrid& grid = result.grid;
   std::cout << "map: " << grid.width() << " x " << grid.height() << " cells at " << grid.resolution << " m, origin ("
             << grid.origin.x << ", " << grid.origin.y << ")\n";

@@ -82,7 +82,7 @@ std::optional<po::variables_map> parse_options(const std::string& usage, const s
                                                const std::vector<std::string>& args) {
   po::options_description all("Options");
   all.add_options()("help,h", "show this help and exit");
-  all.add_options()("config", po::value<std::string>(),
+  all.add_options()("config", po::value<std::string>()->value_name("FILE"),
                     "read options from this YAML file (keys: long option names; the command line wins)");
   all.add(options);
   po::variables_map vm;

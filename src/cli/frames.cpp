@@ -17,6 +17,13 @@ const std::vector<OptionRow<FrameSequenceOptions>>& frame_option_rows() {
   return rows;
 }
 
+const std::vector<TextRow<FrameSequenceOptions>>& frame_folder_rows() {
+  static const std::vector<TextRow<FrameSequenceOptions>> rows = {
+      path_row("frames", "DIR", TextKind::kOutput, &FrameSequenceOptions::folder,
+               "write a PNG frame of every update into this folder (created if missing)")};
+  return rows;
+}
+
 void prepare_frames_folder(const std::string& folder, const std::vector<std::string>& inputs) {
   std::error_code error;
   std::filesystem::create_directories(folder, error);

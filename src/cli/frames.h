@@ -9,13 +9,14 @@
 #include "topocut/core/geometry.h"
 #include "topocut/core/occupancy_grid.h"
 #include "topocut/core/option_table.h"
+#include "topocut/core/option_text.h"
 #include "topocut/core/segmentation.h"
 #include "topocut/scan/scan.h"
 
 namespace topocut::cli {
 
-// Where a run's frames go and how often: the folder is a path, each command's own flag; the
-// interval is a row (frame_option_rows()), spelt alike in every command that writes frames.
+// Where a run's frames go and how often: the folder (frame_folder_rows()) and the interval
+// (frame_option_rows()) are rows, spelt alike in every command that writes frames.
 struct FrameSequenceOptions {
   std::string folder;  // empty: no frames
   int every = 1;       // a frame of every every-th update (and the last)
@@ -23,6 +24,8 @@ struct FrameSequenceOptions {
 
 // --frame-every, for explore and walls --incremental.
 const std::vector<OptionRow<FrameSequenceOptions>>& frame_option_rows();
+// --frames DIR, for the same commands.
+const std::vector<TextRow<FrameSequenceOptions>>& frame_folder_rows();
 
 // Creates the frames folder (throws Error if it cannot) and checks that a frame can be written
 // there without touching an input of the run.

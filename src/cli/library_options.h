@@ -10,6 +10,7 @@
 #include "cli/command.h"
 #include "topocut/core/option_choice.h"
 #include "topocut/core/option_table.h"
+#include "topocut/core/option_text.h"
 #include "topocut/io/map_load_flags.h"
 #include "topocut/segmentation/incremental_segmenter.h"
 #include "topocut/segmentation/segment_switches.h"
@@ -97,6 +98,40 @@ void read_choice_rows(const po::variables_map& vm, const std::vector<ChoiceRow<T
   for (const ChoiceRow<Target>& row : rows) {
     if (!vm.count(row.name) || vm[row.name].defaulted()) continue;
     check_usage([&] { set_choice(row, target, vm[row.name].template as<std::string>(), "--" + row.name); });
+  }
+}
+
+// Adds text rows to options: "--out-json FILE", a required one (an operand) marked required, a
+// repeatable one taking every value given.
+template <typename Target>
+void add_text_rows(po::options_description& options, const std::vector<TextRow<Target>>& rows) {
+  for (const TextRow<Target>& row : rows) {
+    const std::string name = row.letter.empty() ? row.name : row.name + "," + row.letter;
+    if (row.repeatable) {
+      options.add_options()(name.c_str(), po::value<std::vector<std::string>>()->composing()->value_name(row.value_name),
+                            row.help.c_str());
+    } else {
+      po::typed_value<std::string>* value = po::value<std::string>()->value_name(row.value_name);
+      options.add_options()(name.c_str(), row.required ? value->required() : value, row.help.c_str());
+    }
+  }
+}
+
+// Sets in target every text row vm holds a value for, checked as set_text_option() checks it; a bad
+// value (an empty file name, a point that is none) is a UsageError.
+template <typename Target>
+void read_text_rows(const po::variables_map& vm, const std::vector<TextRow<Target>>& rows, Target& target) {
+  for (const TextRow<Target>& row : rows) {
+    if (!vm.count(row.name)) continue;
+    const std::string shown = "--" + row.name;
+    check_usage([&] {
+      if (row.repeatable) {
+        for (const std::string& text : vm[row.name].template as<std::vector<std::string>>())
+          set_text_option(row, target, text, shown);
+      } else {
+        set_text_option(row, target, vm[row.name].template as<std::string>(), shown);
+      }
+    });
   }
 }
 

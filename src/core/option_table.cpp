@@ -19,6 +19,7 @@ bool option_value_in_range(OptionRange range, double value) {
     case OptionRange::kShareBelowOne: return value >= 0.0 && value < 1.0;
     case OptionRange::kCount: return value >= 1.0 && value <= 1e9 && value == std::floor(value);
     case OptionRange::kWholeNumber: return value >= 0.0 && value <= 1e9 && value == std::floor(value);
+    case OptionRange::kSeed: return value >= 0.0 && value <= 4294967295.0 && value == std::floor(value);
     case OptionRange::kLength: return value > 0.0 && value <= kMaxLength;
     case OptionRange::kLengthOrZero: return value >= 0.0 && value <= kMaxLength;
     case OptionRange::kArea: return value >= 0.0 && value <= kMaxLength * kMaxLength;
@@ -40,6 +41,7 @@ void check_option_value(OptionRange range, double value, const std::string& show
     case OptionRange::kShareBelowOne: throw Error(shown + " must be a share in [0, 1)");
     case OptionRange::kCount: throw Error(shown + " must be a whole number >= 1");
     case OptionRange::kWholeNumber: throw Error(shown + " must be a whole number >= 0");
+    case OptionRange::kSeed: throw Error(shown + " must be a whole number in 0..4294967295");
     // The library's own checks, which give the interval and unit.
     case OptionRange::kLength: check_length(value, shown, /*zero_allowed=*/false); break;
     case OptionRange::kLengthOrZero: check_length(value, shown); break;

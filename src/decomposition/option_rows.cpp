@@ -19,6 +19,13 @@ const std::vector<OptionRow<DecompositionOptions>>& decomposition_option_rows() 
   return rows;
 }
 
+const std::vector<OptionRow<DecompositionOptions>>& decomposition_tau_rows() {
+  static const std::vector<OptionRow<DecompositionOptions>> rows = {
+      field_row("tau", "T", OptionRange::kPositive, &DecompositionOptions::tau, "maximum concavity, in the polygon's units"),
+  };
+  return rows;
+}
+
 const std::vector<ChoiceRow<DecompositionOptions>>& decomposition_choice_rows() {
   using D = DecompositionOptions;
   static const std::vector<ChoiceRow<D>> rows = {

@@ -9,6 +9,15 @@
 
 namespace topocut {
 
+const std::vector<OptionRow<RobotMadeDatasetOptions>>& robot_made_seed_rows() {
+  using R = RobotMadeDatasetOptions;
+  static const std::vector<OptionRow<R>> rows = {
+      field_row("seed", "N", OptionRange::kSeed, &R::first_seed, "the seed (with --dataset: the first of --seeds seeds)"),
+      field_row("seeds", "N", OptionRange::kCount, &R::seeds, "with --dataset: maps per plan, seeds --seed .. --seed + N - 1"),
+  };
+  return rows;
+}
+
 std::string robot_made_name(const std::string& plan, std::uint32_t seed) { return plan + "_s" + std::to_string(seed); }
 
 OccupancyGrid load_plan(const DatasetMap& plan, const MapLoadOptions& load, cv::Mat& rooms) {

@@ -17,6 +17,14 @@
 
 namespace topocut {
 
+const std::vector<OptionRow<MapFolderOptions>>& map_folder_option_rows() {
+  static const std::vector<OptionRow<MapFolderOptions>> rows = {
+      field_row("floor-repetitions", "N", OptionRange::kWholeNumber, &MapFolderOptions::floor_repetitions,
+                "repetitions of the contour floor (decode, threshold, findContours) per map, median taken; 0: not measured"),
+  };
+  return rows;
+}
+
 namespace fs = std::filesystem;
 
 namespace {

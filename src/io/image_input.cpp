@@ -180,8 +180,8 @@ void validate(const ImageLimits& limits) {
 
 std::string max_megapixels_help() {
   std::ostringstream text;
-  text << "refuse images above this many megapixels, read from the header before decoding (default "
-       << ImageLimits{}.max_megapixels << ", at most " << kMaxMegapixelsCeiling << ")";
+  // The front ends add the default; an image's size is read from its header, a ROS map's from its info.
+  text << "refuse maps of more megapixels, before a cell is decoded (at most " << kMaxMegapixelsCeiling << ")";
   return text.str();
 }
 

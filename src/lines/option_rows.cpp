@@ -60,3 +60,16 @@ const std::vector<LineOptionRow>& line_option_rows() {
 }
 
 }  // namespace topocut
+
+namespace topocut {
+
+const std::vector<ChoiceRow<LineExtractionOptions>>& line_choice_rows() {
+  static const std::vector<ChoiceRow<O>> rows = {
+      choice_row<O, M>("method", &O::method,
+                       {{"sef", M::kSef}, {"lt", M::kLt}, {"iepf", M::kIepf}, {"smf", M::kSmf}, {"ale", M::kAle}},
+                       "line extractor (each with its defaults from the literature)"),
+  };
+  return rows;
+}
+
+}  // namespace topocut

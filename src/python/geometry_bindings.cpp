@@ -20,13 +20,16 @@ Ring ring_from(const py::handle& points, const std::string& name) {
   return ring;
 }
 
+// The row of decompose()'s tau and of extract_lines()' method: the decompose and lines commands' rows.
+const OptionRow<DecompositionOptions>& tau_row() { return decomposition_tau_rows().front(); }
+const ChoiceRow<LineExtractionOptions>& method_row() { return line_choice_rows().front(); }
+
 py::dict decompose_py(const py::handle& outer, const py::handle& holes, double tau) {
-  if (!(tau > 0.0) || !std::isfinite(tau)) throw Error("--tau must be a positive number");
   PolygonWithHoles polygon;
   polygon.outer = ring_from(outer, "outer");
   for (const py::handle& hole : holes) polygon.holes.push_back(ring_from(hole, "a hole"));
   DecompositionOptions options;
-  options.tau = tau;
+  set_option(tau_row(), options, tau, "--" + tau_row().name);
   Decomposition d;
   {
     py::gil_scoped_release release;
@@ -49,7 +52,7 @@ py::list lines_py(const py::handle& angles, const py::handle& ranges, const std:
   scan.range_min = range_min;
   scan.range_max = range_max;
   LineExtractionOptions options;
-  options.method = parse_line_method(method);
+  set_choice(method_row(), options, method, "--" + method_row().name);
   std::vector<Line> lines;
   {
     py::gil_scoped_release release;
@@ -69,19 +72,20 @@ py::list lines_py(const py::handle& angles, const py::handle& ranges, const std:
 }  // namespace
 
 void bind_geometry(py::module_& m) {
-  m.def("decompose", &decompose_py, py::arg("outer"), py::arg("holes") = py::list(), py::arg("tau") = 2.5,
+  m.def("decompose", &decompose_py, py::arg("outer"), py::arg("holes") = py::list(),
+        py::arg(tau_row().name.c_str()) = tau_row().get(DecompositionOptions{}),
         "Dual-space decomposition (DuDe) of a polygon with holes into nearly convex pieces: cuts wherever a\n"
         "pocket or hole is deeper than tau (polygon units). outer: (n, 2) array; holes: list of (n, 2) arrays;\n"
         "any orientation. Returns {'pieces': [{'outer', 'holes', 'area'}], 'cuts': [(2, 2) arrays]}.\n"
         "Raises ValueError on a ring with fewer than 3 points or a polygon that is not simple.");
-  m.def("extract_lines", &lines_py, py::arg("angles"), py::arg("ranges"), py::arg("method") = "smf", py::arg("range_min") = 0.0,
+  m.def("extract_lines", &lines_py, py::arg("angles"), py::arg("ranges"),
+        py::arg(method_row().name.c_str()) = method_row().get(LineExtractionOptions{}), py::arg("range_min") = 0.0,
         py::arg("range_max") = std::numeric_limits<double>::infinity(),
         "Wall lines of one laser scan: angles (radians) and ranges (metres), one per beam; invalid ranges\n"
         "(0, nan, inf, outside [range_min, range_max]) are skipped. method: sef, lt, iepf, smf or ale (defaults\n"
         "from the literature). Returns a list of {'rho', 'alpha', 'start', 'end', 'support'} (support: beam indices).");
-  for (const char* method : {"sef", "lt", "iepf", "smf", "ale"}) {
-    const std::string name = method;
-    m.def(method, [name](const py::handle& angles, const py::handle& ranges, double range_min, double range_max) {
+  for (const std::string& name : method_row().names) {
+    m.def(name.c_str(), [name](const py::handle& angles, const py::handle& ranges, double range_min, double range_max) {
       return lines_py(angles, ranges, name, range_min, range_max);
     }, py::arg("angles"), py::arg("ranges"), py::arg("range_min") = 0.0, py::arg("range_max") = std::numeric_limits<double>::infinity(),
           ("extract_lines(angles, ranges, method='" + name + "')").c_str());

@@ -8,7 +8,10 @@
 #include "python/options.h"
 #include "topocut/core/grid_array_options.h"
 #include "topocut/core/option_names.h"
+#include "topocut/decomposition/decompose.h"
+#include "topocut/evaluation/robot_made_dataset.h"
 #include "topocut/exploration/simulated_map.h"
+#include "topocut/lines/extract.h"
 #include "topocut/segmentation/incremental_segmenter.h"
 #include "topocut/segmentation/segment_switches.h"
 
@@ -66,14 +69,32 @@ void add_simulation_rows(py::list& out) {
   }
 }
 
+// The keywords of the functions without an options struct, from their commands' rows: decompose()'s
+// tau, extract_lines()' method, simulate_map()'s seed.
+bool add_function_rows(py::list& out, const std::string& kind) {
+  if (kind == "decompose") {
+    add_rows(out, decomposition_tau_rows(), DecompositionOptions{});
+  } else if (kind == "lines") {
+    for (const ChoiceRow<LineExtractionOptions>& row : line_choice_rows())
+      out.append(keyword(underscored_option_name(row.name), "str", py::str(row.get(LineExtractionOptions{})), row.help));
+  } else if (kind == "seed") {
+    add_rows(out, std::vector<OptionRow<RobotMadeDatasetOptions>>{robot_made_seed_rows().front()}, RobotMadeDatasetOptions{});
+  } else {
+    return false;
+  }
+  return true;
+}
+
 // kind: "options" (merge_training_rows()), "segment" (segment(): the options and the grid reading),
-// "grid" (update()), "incremental" (IncrementalSegmenter()) or "simulate" (simulate_map()).
+// "grid" (update()), "incremental" (IncrementalSegmenter()), "simulate" (simulate_map()'s options),
+// or "decompose", "lines", "seed" (add_function_rows()).
 py::list keywords(const std::string& kind) {
   if (kind == "simulate") {
     py::list out;
     add_simulation_rows(out);
     return out;
   }
+  if (py::list out; add_function_rows(out, kind)) return out;
   if (kind != "options" && kind != "segment" && kind != "grid" && kind != "incremental")
     throw py::value_error("unknown keyword table '" + kind + "'");
   py::list out;
@@ -91,7 +112,8 @@ py::list keywords(const std::string& kind) {
 void bind_keywords(py::module_& m) {
   m.def("_keywords", &keywords, py::arg("kind"),
         "The keyword arguments of segment() ('segment'), merge_training_rows() ('options'), update() ('grid'),\n"
-        "IncrementalSegmenter() ('incremental') or simulate_map() ('simulate'):\n"
+        "IncrementalSegmenter() ('incremental'), simulate_map() ('simulate', and its 'seed'), decompose()\n"
+        "('decompose') or extract_lines() ('lines'):\n"
         "a list of (name, type name, default, help).");
 }
 

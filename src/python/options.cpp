@@ -165,17 +165,18 @@ namespace {
 // merge_model= of kwargs (popped) in settings: None or absent keeps the shipped model; a text is
 // parsed (within the limits of every front end) and must not meet learned merging switched off.
 void take_merge_model(py::dict& kwargs, SegmentSettings& settings) {
-  if (!kwargs.contains("merge_model")) return;
-  const py::object value = kwargs["merge_model"];
-  PyDict_DelItemString(kwargs.ptr(), "merge_model");
+  const std::string name = underscored_option_name(kMergeModelOption.name);  // the segmentation options' row
+  if (!kwargs.contains(name)) return;
+  const py::object value = kwargs[name.c_str()];
+  PyDict_DelItemString(kwargs.ptr(), name.c_str());
   if (value.is_none()) return;
-  if (!py::isinstance<py::str>(value)) throw Error("merge_model must be a model's text (a str) or None");
+  if (!py::isinstance<py::str>(value)) throw Error(name + " must be a model's text (a str) or None");
   // Measured before it is copied: a 190 MiB text cost 1.5 GB on its way to the parser's limit.
   if (static_cast<std::uint64_t>(PyUnicode_GetLength(value.ptr())) > kMaxMergeModelBytes)
     throw Error("merge model: " + std::to_string(PyUnicode_GetLength(value.ptr())) + " characters, more than the limit of " +
                 byte_size_text(kMaxMergeModelBytes));
   const std::string text = value.cast<std::string>();
-  if (text.empty()) throw Error("merge_model is empty: give a model's text, or None for the shipped model");
+  if (text.empty()) throw Error(name + " is empty: give a model's text, or None for the shipped model");
   settings.options.merge.model = parse_merge_model(text);
   settings.switches.merge_model_given = true;
 }

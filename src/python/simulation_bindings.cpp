@@ -8,6 +8,7 @@
 #include "python/options.h"
 #include "topocut/core/error.h"
 #include "topocut/evaluation/precision_recall.h"
+#include "topocut/evaluation/robot_made_dataset.h"
 #include "topocut/exploration/simulated_map.h"
 #include "topocut/io/grid_from_array.h"
 #include "topocut/io/image_input.h"
@@ -61,11 +62,16 @@ cv::Mat rooms_from(const py::object& ground_truth, const OccupancyGrid& plan) {
   return rooms;
 }
 
+// The seed's row: simulate-map's --seed (the first seed of a dataset's maps, a plan's only one).
+const OptionRow<RobotMadeDatasetOptions>& seed_row() { return robot_made_seed_rows().front(); }
+
 std::uint32_t seed_from(const py::object& seed) {
-  if (!py::isinstance<py::int_>(seed) || py::isinstance<py::bool_>(seed)) throw Error("seed must be a whole number in 0..4294967295");
-  const auto value = seed.cast<long long>();
-  if (value < 0 || value > 0xffffffffll) throw Error("seed must be a whole number in 0..4294967295");
-  return static_cast<std::uint32_t>(value);
+  const std::string& name = seed_row().name;
+  if (!py::isinstance<py::int_>(seed) || py::isinstance<py::bool_>(seed)) throw Error(name + " must be a whole number in 0..4294967295");
+  RobotMadeDatasetOptions options;
+  const auto value = seed.cast<long long>();  // beyond long long: OverflowError
+  set_option(seed_row(), options, static_cast<double>(value), name);
+  return options.first_seed;
 }
 
 py::array_t<std::uint8_t> image_array(const cv::Mat& image) {
@@ -93,7 +99,7 @@ py::tuple simulate_map_py(const py::object& plan, const py::object& ground_truth
 }  // namespace
 
 void bind_simulation(py::module_& m) {
-  m.def("simulate_map", &simulate_map_py, py::arg("plan"), py::arg("ground_truth"), py::arg("seed") = 1,
+  m.def("simulate_map", &simulate_map_py, py::arg("plan"), py::arg("ground_truth"), py::arg(seed_row().name.c_str()) = static_cast<long long>(seed_row().get(RobotMadeDatasetOptions{})),
         py::arg("resolution") = 0.05,
         ("simulate_map(plan, ground_truth, seed=1, resolution=0.05, **options) -> (map, ground_truth)\n\n"
          "The map a robot would build of a plan with people's rooms, as `topocut simulate-map` writes it: map\n"

@@ -16,6 +16,8 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/cli_runner.h"
+#include "topocut/core/option_table.h"
+#include "topocut/decomposition/decompose.h"
 
 namespace {
 
@@ -145,7 +147,15 @@ TEST_F(DecomposeCli, RejectsNonPositiveTau) {
   const std::string in = write("room.json", kSquareWithHole).string();
   expect_error(in + " --tau 0", "--tau");
   expect_error(in + " --tau -3", "--tau");
-  expect_error(in, "tau");  // missing
+}
+
+// Without --tau the struct's default holds, as in Python's decompose(): one default for both.
+TEST_F(DecomposeCli, TauDefaultsToTheStructsAsInPython) {
+  const std::string in = write("room.json", kSquareWithHole).string();
+  const CliResult bare = run(in);
+  ASSERT_EQ(bare.code, 0) << bare.err;
+  const CliResult given = run(in + " --tau " + topocut::shortest_number(topocut::DecompositionOptions{}.tau));
+  EXPECT_EQ(bare.out, given.out);
 }
 
 TEST_F(DecomposeCli, RejectsMalformedJson) {

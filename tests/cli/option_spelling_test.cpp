@@ -16,6 +16,8 @@
 #include "topocut/core/option_table.h"
 #include "topocut/decomposition/decompose.h"
 #include "topocut/exploration/exploration_run.h"
+#include "topocut/evaluation/robot_made_dataset.h"
+#include "topocut/evaluation/room_defects.h"
 #include "topocut/exploration/explorer.h"
 #include "topocut/exploration/grid_replay.h"
 #include "topocut/io/carmen_log.h"
@@ -231,6 +233,57 @@ TEST(OptionSpelling, EveryLabelingRowIsAConfigKeyTakingItsDefault) {
   ASSERT_EQ(plain.code, 0) << plain.err;
   ASSERT_EQ(configured.code, 0) << configured.err;
   EXPECT_EQ(plain.out, configured.out);
+}
+
+// The commands' own numbers and names are library rows too, lifted as the segmentation's are: each is
+// a flag with its struct's default (evaluate starts --floor-repetitions at 3, walls its extractor at
+// IEPF: the struct each starts from), and a bad value is one line naming the flag, exit code 2.
+TEST(OptionSpelling, EveryCommandsOwnNumbersAreRowsWithTheirChecks) {
+  const TempDir dir;
+  expect_rows_in_help("decompose", run_cli(dir, "decompose", {"--help"}).out, topocut::decomposition_tau_rows(),
+                      topocut::DecompositionOptions{});
+  expect_rows_in_help("explore", run_cli(dir, "explore", {"--help"}).out, topocut::exploration_run_option_rows(),
+                      topocut::ExplorationRunOptions{});
+  expect_rows_in_help("simulate-map", run_cli(dir, "simulate-map", {"--help"}).out, topocut::robot_made_seed_rows(),
+                      topocut::RobotMadeDatasetOptions{});
+  topocut::MapFolderOptions folder;
+  folder.floor_repetitions = 3;
+  expect_rows_in_help("evaluate", run_cli(dir, "evaluate", {"--help"}).out, topocut::map_folder_option_rows(), folder);
+  const auto& method = topocut::line_choice_rows().front();
+  for (const auto& [command, defaults] : {std::pair<const char*, std::string>{"lines", "smf"}, {"walls", "iepf"}}) {
+    const std::string help = run_cli(dir, command, {"--help"}).out;
+    EXPECT_NE(help.find("\n  --method " + method.value_name() + " (=" + defaults + ")"), std::string::npos) << command;
+  }
+  for (const auto& row : topocut::exploration_text_rows())
+    EXPECT_NE(run_cli(dir, "explore", {"--help"}).out.find("\n  --" + row.name + " " + row.value_name + " "), std::string::npos);
+
+  const std::string map = bundled("floorplan.yaml");
+  const std::string scan = dir.write("scan.csv", "angle,range\n0,2\n0.01,2\n0.02,2\n");
+  const struct {
+    const char* command;
+    std::vector<std::string> args;
+    std::string message;
+  } bad[] = {
+      {"explore", {map, "--seed=-1"}, "--seed must be a whole number in 0..4294967295"},
+      {"explore", {map, "--start", "3"}, "--start needs a point X,Y in metres, not '3'"},
+      {"simulate-map", {"--dataset", dir.path().string(), "--out", dir.file("out"), "--seed", "4294967296"},
+       "--seed must be a whole number in 0..4294967295"},
+      {"simulate-map", {"--dataset", dir.path().string(), "--out", dir.file("out"), "--seeds", "0"}, "--seeds must be a whole number >= 1"},
+      {"lines", {scan, "--method", "SMF"}, "--method must be one of 'sef', 'lt', 'iepf', 'smf', 'ale', got 'SMF'"},
+      {"lines", {scan, "--format", "xml"}, "--format must be one of 'json', 'csv', got 'xml'"},
+      {"label", {scan, "--fcm=-1"}, "--fcm must be a whole number >= 0"},
+      {"evaluate", {"--dataset", dir.path().string(), "--mode", "live"}, "--mode must be one of 'batch', 'incremental', got 'live'"},
+      {"evaluate", {"--maps", dir.path().string(), "--floor-repetitions", "1.5"}, "--floor-repetitions must be a whole number >= 0"},
+      {"segment", {map, "--out-json", ""}, "--out-json was given an empty file name"},
+      {"walls", {"log.gz", "--out-map", ""}, "--out-map was given an empty file name"},
+      {"decompose", {scan, "--tau", "0"}, "--tau must be a positive number"},
+  };
+  for (const auto& b : bad) {
+    const auto r = run_cli(dir, b.command, b.args);
+    EXPECT_EQ(r.code, 2) << b.command << " " << b.message << ": " << r.err;
+    EXPECT_EQ(r.err.rfind("topocut " + std::string(b.command) + ": error: " + b.message, 0), 0u) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  }
 }
 
 }  // namespace

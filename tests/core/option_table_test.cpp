@@ -48,6 +48,10 @@ TEST(OptionTable, RangesAreCheckedWithTheOptionsName) {
   EXPECT_NO_THROW(check_option_value(OptionRange::kWholeNumber, 0.0, "x"));
   EXPECT_THROW(check_option_value(OptionRange::kWholeNumber, -1.0, "x"), Error);
   EXPECT_THROW(check_option_value(OptionRange::kWholeNumber, std::nan(""), "x"), Error);
+  // A seed is any 32-bit value, and nothing past it.
+  EXPECT_NO_THROW(check_option_value(OptionRange::kSeed, 4294967295.0, "x"));
+  EXPECT_THROW(check_option_value(OptionRange::kSeed, 4294967296.0, "x"), Error);
+  EXPECT_THROW(check_option_value(OptionRange::kSeed, 1.5, "x"), Error);
   try {
     check_option_value(OptionRange::kPositive, -1.0, "--door-width");
     FAIL();
@@ -80,7 +84,7 @@ TEST(OptionTable, InRangeIsWhatTheCheckLetsThrough) {
                                 OptionRange::kFraction,    OptionRange::kGreyLevel,     OptionRange::kLength,
                                 OptionRange::kLengthOrZero, OptionRange::kArea,         OptionRange::kResolution,
                                 OptionRange::kShare,       OptionRange::kShareBelowOne, OptionRange::kCount,
-                                OptionRange::kWholeNumber, OptionRange::kAny};
+                                OptionRange::kWholeNumber, OptionRange::kSeed,      OptionRange::kAny};
   const double values[] = {-1.0, 0.0, kMinResolution, 0.5, 1.0, 2.5, 255.0, kMaxLength, 2 * kMaxLength, kMaxLength * kMaxLength,
                            std::nan(""), std::numeric_limits<double>::infinity()};
   for (const OptionRange range : ranges)

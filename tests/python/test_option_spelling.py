@@ -1,6 +1,7 @@
 # One spelling per option: every keyword Python takes from the library's option tables is the flag of
 # the command line with '_' for '-', with the same default (the C++ side, tests/cli/option_spelling_test.cpp,
 # checks the command line and --config against the tables themselves; ros/test/adapter_test.cpp the node).
+import inspect
 import subprocess
 
 import numpy as np
@@ -97,3 +98,32 @@ def test_grid_keywords_are_set_in_the_tables_order_whatever_order_they_are_given
     assert not np.array_equal(palette, fixed)
     for kwargs in ({"fixed_thresholds": False, "free_threshold": 200}, {"free_threshold": 200, "fixed_thresholds": False}):
         assert np.array_equal(topocut.segment(grid, 0.05, **kwargs).labels, fixed), kwargs
+
+
+def signature_default(function, name):
+    """The default of keyword name in function's signature line (pybind11's docstring), as text."""
+    import re
+    first = function.__doc__.splitlines()[0]
+    found = re.search(r"\b" + name + r": [\w.]+ = ('?[\w.]+'?)", first)
+    assert found, (name, first)
+    return found.group(1)
+
+
+def test_functions_without_an_options_struct_take_their_commands_rows(cli):
+    # decompose's tau, extract_lines' method and simulate_map's seed are the decompose, lines and
+    # simulate-map commands' rows: one name, one default, one check.
+    assert f"\n  --tau T (={signature_default(topocut.decompose, 'tau')})" in help_text(cli, "decompose")
+    lines = help_text(cli, "lines")
+    method = signature_default(topocut.extract_lines, "method").strip("'")
+    names = lines.split("\n  --method ", 1)[1].split(" ", 1)[0].split("|")
+    assert f"\n  --method {'|'.join(names)} (={method})" in lines
+    assert all(callable(getattr(topocut, name)) for name in names)  # one function per name, no other
+    seed = signature_default(topocut._topocut.simulate_map, "seed")
+    assert f"\n  --seed N (={seed})" in help_text(cli, "simulate-map")
+    assert str(inspect.signature(topocut.simulate_map).parameters["seed"].default) == seed  # the package's wrapper
+    with pytest.raises(ValueError, match="^--tau must be a positive number$"):
+        topocut.decompose([[0, 0], [1, 0], [1, 1]], tau=0.0)
+    with pytest.raises(ValueError, match="^--method must be one of 'sef', 'lt', 'iepf', 'smf', 'ale', got 'SMF'$"):
+        topocut.extract_lines([0.0, 0.1], [1.0, 1.0], method="SMF")
+    done = subprocess.run([cli, "lines", "-", "--method", "SMF"], input="angle,range\n", capture_output=True, text=True, timeout=30)
+    assert done.returncode == 2 and "--method must be one of 'sef', 'lt', 'iepf', 'smf', 'ale', got 'SMF'" in done.stderr

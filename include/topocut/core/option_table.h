@@ -28,12 +28,14 @@ enum class OptionRange {
   kShareBelowOne,   // [0, 1)
   kCount,           // a whole number >= 1 (rounds, updates in a row)
   kWholeNumber,     // a whole number >= 0
+  kSeed,            // a random seed: a whole number in 0..2^32-1
   kAny,
 };
 
 // Whether a row of range holds a whole number (Python types it int).
 inline bool is_whole_number(OptionRange range) {
-  return range == OptionRange::kGreyLevel || range == OptionRange::kCount || range == OptionRange::kWholeNumber;
+  return range == OptionRange::kGreyLevel || range == OptionRange::kCount || range == OptionRange::kWholeNumber ||
+         range == OptionRange::kSeed;
 }
 
 template <typename Target>

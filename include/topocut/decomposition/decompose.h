@@ -79,6 +79,9 @@ struct DecompositionOptions {
 
 // The fields of DecompositionOptions as options: name, unit, range, help (option_table.h).
 const std::vector<OptionRow<DecompositionOptions>>& decomposition_option_rows();
+// tau itself, in the polygon's units, for the front ends that decompose a polygon (decompose --tau,
+// Python's decompose(tau=)); segment() sets it from --concavity in metres.
+const std::vector<OptionRow<DecompositionOptions>>& decomposition_tau_rows();
 // The fields of DecompositionOptions chosen by name (the reference variants: selection, concavity
 // measure, candidates, pocket polygons, hull-chain distance, skinny cuts), as option_choice.h rows.
 const std::vector<ChoiceRow<DecompositionOptions>>& decomposition_choice_rows();

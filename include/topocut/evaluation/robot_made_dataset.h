@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "topocut/core/option_table.h"
 #include "topocut/evaluation/dataset.h"
 #include "topocut/exploration/simulated_map.h"
 #include "topocut/io/map_loader.h"
@@ -21,6 +22,9 @@ struct RobotMadeDatasetOptions {
   int seeds = 1;                   // >= 1
   std::function<void(const std::string&)> progress;  // one line per plan, if given
 };
+
+// The seeds as options: seed (first_seed; for one plan, its seed) and seeds (option_table.h rows).
+const std::vector<OptionRow<RobotMadeDatasetOptions>>& robot_made_seed_rows();
 
 struct RobotMadeDataset {
   int written = 0;                   // maps written

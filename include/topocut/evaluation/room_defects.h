@@ -12,6 +12,7 @@
 #include <opencv2/core.hpp>
 
 #include "topocut/core/occupancy_grid.h"
+#include "topocut/core/option_table.h"
 #include "topocut/io/map_loader.h"
 #include "topocut/segmentation/segmenter.h"
 
@@ -80,6 +81,9 @@ struct MapFolderOptions {
   ClockMs clock = wall_clock_ms;  // what the times are read from (the floor's too)
   std::function<void(const std::string&)> progress;  // one line per map; may be empty
 };
+
+// floor_repetitions as an option (option_table.h); a front end may start from another default.
+const std::vector<OptionRow<MapFolderOptions>>& map_folder_option_rows();
 
 // Segments every map (load + segment timed together, and each stage), counts its defects and, if asked,
 // measures its contour floor. A map that fails becomes a failed result; never throws for a single map.

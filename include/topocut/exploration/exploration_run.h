@@ -38,6 +38,9 @@ struct ExplorationRunOptions {
   std::function<void(const std::string&)> progress;        // occasional one-line status; may be empty
 };
 
+// The run's own switch (--no-hint: use_hint off); the batch comparison's are batch_comparison_rows().
+const std::vector<OptionRow<ExplorationRunOptions>>& exploration_run_option_rows();
+
 // The replay of the robot's known maps (updates, scans, path, final map, incremental and batch
 // results, stability, peak state) and what the robot did.
 struct ExplorationRun : GridReplay {

@@ -14,6 +14,7 @@
 #include "topocut/core/geometry.h"
 #include "topocut/core/occupancy_grid.h"
 #include "topocut/core/option_table.h"
+#include "topocut/core/option_text.h"
 #include "topocut/scan/scan.h"
 
 namespace topocut {
@@ -39,6 +40,8 @@ struct ExplorationOptions {
 
 // The fields of ExplorationOptions as options: name, unit, range, help (option_table.h).
 const std::vector<OptionRow<ExplorationOptions>>& exploration_option_rows();
+// The start position, a point given as text (X,Y in metres).
+const std::vector<TextRow<ExplorationOptions>>& exploration_text_rows();
 
 // Throws Error unless the options are usable (positive range, resolution, step; non-negative
 // frontier size; at least one scan; positive growth margin).

@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "topocut/core/option_choice.h"
 #include "topocut/core/option_table.h"
 #include "topocut/lines/ale.h"
 #include "topocut/lines/iepf.h"
@@ -47,5 +48,9 @@ struct LineOptionRow {
 // d-max, t-max, sigma-max, fuzzifier, rmse-min, rmse-max, gradient-max, reference-noise,
 // smoothing-neighbours, lambda-deg, sigma-r, min-points. Defined in option_rows.cpp.
 const std::vector<LineOptionRow>& line_option_rows();
+
+// The extractor chosen by name (--method sef|lt|iepf|smf|ale, Python's method=): names in lower case,
+// one spelling everywhere (parse_line_method() also reads other cases, for the library's callers).
+const std::vector<ChoiceRow<LineExtractionOptions>>& line_choice_rows();
 
 }  // namespace topocut

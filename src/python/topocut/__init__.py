@@ -85,13 +85,16 @@ merge_training_rows.__doc__ = _topocut.merge_training_rows.__doc__.split("\n\n",
 _with_keywords(merge_training_rows, "options", [_positional("image"), _positional("ground_truth"), _positional("resolution", 0.05)])
 
 
-def simulate_map(plan, ground_truth, seed=1, resolution=0.05, **options):
+_SEED = _topocut._keywords("seed")[0][2]  # simulate-map's --seed row
+
+
+def simulate_map(plan, ground_truth, seed=_SEED, resolution=0.05, **options):
     return _topocut.simulate_map(plan, ground_truth, seed, resolution, **options)
 
 
 simulate_map.__doc__ = _topocut.simulate_map.__doc__.split("\n\n", 1)[1].strip()
 _with_keywords(simulate_map, "simulate",
-               [_positional("plan"), _positional("ground_truth"), _positional("seed", 1), _positional("resolution", 0.05)])
+               [_positional("plan"), _positional("ground_truth"), _positional("seed", _SEED), _positional("resolution", 0.05)])
 
 
 class IncrementalSegmenter(_topocut.IncrementalSegmenter):
