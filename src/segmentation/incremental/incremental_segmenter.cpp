@@ -301,6 +301,7 @@ void IncrementalSegmenter::State::segment_whole(const OccupancyGrid& grid, const
   rooms.assign(static_cast<std::size_t>(ledger.next_id()), RoomState{});
   for (const Room& room : result.rooms) rooms[static_cast<std::size_t>(room.id)].alive = true;
   recount_rooms();
+  for (RoomState& room : rooms) room.whole_cells = room.cells;
   report.region = cv::Rect(0, 0, grid.width(), grid.height());
   report.region_cells = static_cast<int>(free_cells);
 }

@@ -31,6 +31,7 @@ struct RoomState {
   double sum_c = 0.0;        // sums of the column and row indices of its cells, for the centroid
   double sum_r = 0.0;
   long long absorbed = 0;    // cells joined without a decomposition since the last one
+  long long whole_cells = 0; // its cells when it was last decomposed whole (frame_region)
   int split_votes = 0;       // decompositions in a row that cut a piece off this room (held back)
   int merge_votes = 0;       // decompositions in a row that merged this room into merge_partner (held back)
   int merge_partner = 0;     // the room it is held apart from (0: none); decomposed together
