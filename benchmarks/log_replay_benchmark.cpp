@@ -91,7 +91,7 @@ int run(std::vector<std::string> names, int batch_every, bool settle, bool rest,
     logs.push_back(replay_file(name, path, batch_every, settle, rest, incremental));
   }
 
-  std::vector<std::vector<std::string>> times{{"log", "grid", "scans", "updates", "inc median ms", "inc p95 ms", "inc max ms",
+  std::vector<std::vector<std::string>> times{{"log", "grid", "scans", "updates", "whole-map updates", "inc median ms", "inc p95 ms", "inc max ms",
                                                "wall p95 ms", "batch median ms", "speed-up (totals)", "speed-up (medians)"}};
   std::vector<std::vector<std::string>> stability{{"log", "churn median %", "churn p95 %", "batch churn p95 %", "churn max %",
                                                    "updates with churn", "ids used inc / batch", "final rooms inc (windowed) / batch"}};
@@ -102,7 +102,10 @@ int run(std::vector<std::string> names, int batch_every, bool settle, bool rest,
     const StabilityReport& b = f.run.batch_stability;
     const double ratio = f.paired.total > 0.0 ? f.batch.total / f.paired.total : 0.0;
     times.push_back({f.name, std::to_string(f.run.final_map.width()) + " x " + std::to_string(f.run.final_map.height()),
-                     std::to_string(f.run.scans), std::to_string(f.run.updates.size()), format("%.3f", f.inc.median),
+                     std::to_string(f.run.scans), std::to_string(f.run.updates.size()),
+                     std::to_string(std::count_if(f.run.updates.begin(), f.run.updates.end(),
+                                                  [](const UpdateRecord& u) { return u.batch_update; })),
+                     format("%.3f", f.inc.median),
                      format("%.3f", f.inc.p95), format("%.2f", f.inc.max), format("%.3f", f.wall.p95), format("%.2f", f.batch.median),
                      format("%.1fx", ratio), format("%.1fx", f.paired.median > 0.0 ? f.batch.median / f.paired.median : 0.0)});
     const std::size_t rooms = f.run.incremental.rooms.size(), batch_rooms = f.run.batch.rooms.size();

@@ -125,19 +125,20 @@ int cleaning_reach(const FreeSpaceCleaningOptions& o, double resolution) {
   return static_cast<int>(std::min(std::ceil((1.25 * o.min_width + o.max_obstacle_speck + o.inside_closing) / resolution) + 2, kMaxReach));
 }
 
-// Whether every thin part the cleaning of context judged (ray or not, by all its cells) and that
-// reaches into inner lies within context but for the map's own edges: a part running out of the
-// context across the map would be judged on more cells by the whole map's cleaning.
-bool thin_parts_judged_whole(const CleanedFreeSpace& cleaned, const cv::Rect& context, const cv::Rect& inner,
-                             const cv::Size& map) {
+// The box (context's frame) of the thin parts the cleaning of context judged (ray or not, by all their
+// cells) that reach into inner and run out of the context across the map: the whole map's cleaning
+// would judge them on more cells. Empty when every such part lies within context but for the map's
+// own edges.
+cv::Rect thin_parts_cut(const CleanedFreeSpace& cleaned, const cv::Rect& context, const cv::Rect& inner, const cv::Size& map) {
+  cv::Rect box;
   for (const cv::Rect& part : cleaned.thin_parts) {
     if ((part & inner).empty()) continue;
     const bool cut = (part.x == 0 && context.x > 0) || (part.y == 0 && context.y > 0) ||
                      (part.br().x == context.width && context.br().x < map.width) ||
                      (part.br().y == context.height && context.br().y < map.height);
-    if (cut) return false;
+    if (cut) box |= part;
   }
-  return true;
+  return box;
 }
 
 // What cells_after_cleaning() needs of a cleaning, seen through box (a view: nothing is copied).
@@ -191,7 +192,8 @@ SegmentationInput segmentation_input(const OccupancyGrid& grid, const cv::Rect& 
     const CleanedFreeSpace cleaned = rule.clean(free, part.cells, part.resolution, options);
     free = cleaned.floor;
     input.labelled.cells = cells_after_cleaning(input.labelled.cells, cropped_cleaning(cleaned, inner));
-    input.thin_parts_within = input.thin_parts_within && thin_parts_judged_whole(cleaned, context, inner, grid.cells.size());
+    const cv::Rect cut = thin_parts_cut(cleaned, context, inner, grid.cells.size());
+    if (!cut.empty()) input.thin_parts_cut |= cut + context.tl();
   }
   input.floor = free(inner).clone();
   return input;

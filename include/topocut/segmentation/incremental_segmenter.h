@@ -78,7 +78,9 @@ struct IncrementalOptions {
   // A touched room larger than partial_area (m²; 0 = off, the default) is decomposed again only
   // within partial_margin (m) of the change: pieces touching the rest of the room keep its id
   // and cuts; only pieces wholly inside that window may become rooms. The whole room is decomposed
-  // when the window would leave it in parts or merge another room into it. The real-log replay
+  // when the window would leave it in parts or merge another room into it, when it has grown by
+  // partial_area since it was last decomposed whole, or while it holds back a split (else a room
+  // that grows from the first scans is never cut: the pieces at its edge always join it). The real-log replay
   // uses 50 m² (wall_map_incremental_options()); on the explorations it costs some images
   // precision, so it is off by default (benchmarks/README.md, "Partial decomposition of large rooms").
   double partial_area = 0.0;

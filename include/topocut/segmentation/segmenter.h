@@ -73,10 +73,11 @@ struct SegmentationInput {
   cv::Mat floor;
   OccupancyGrid labelled;
   CleanedFreeSpace cleaned;
-  // Windowed front end only: false when a thin part the cleaning judged as a whole (ray or not)
-  // reaches into the window but runs out of the context it was given, so that only the whole map's
-  // cleaning, seeing all of it, judges it as segment() does.
-  bool thin_parts_within = true;
+  // Windowed front end only: the box (the grid's frame) of the thin parts the cleaning judged as a
+  // whole (ray or not) that reach into the window but run out of the context it was given, so that only
+  // a cleaning seeing all of them judges them as segment() does; empty when there are none. A window
+  // grown to hold this box is given a context reaching farther along them.
+  cv::Rect thin_parts_cut;
 };
 SegmentationInput segmentation_input(const OccupancyGrid& grid, const SegmentOptions& options);
 

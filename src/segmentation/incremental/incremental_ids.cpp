@@ -255,6 +255,7 @@ void IncrementalSegmenter::State::adopt_pieces(const RegionPieces& found) {
   }
   for (std::size_t id = 1; id < rooms.size(); ++id) {
     if (largest[id] == 0 || found.remainder(static_cast<int>(id)) != nullptr) continue;  // traced later
+    rooms[id].whole_cells = rooms[id].cells;
     refresh_room(static_cast<int>(id), &found.rooms.rooms[static_cast<std::size_t>(largest[id]) - 1].polygon);
   }
 }

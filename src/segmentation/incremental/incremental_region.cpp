@@ -168,6 +168,9 @@ void IncrementalSegmenter::State::add_neighbour_rooms(Region& region) const {
 // The region's window: the change and every room of the region, except that a room larger than
 // partial_area whose box lies mostly beyond partial_margin of the change takes part only with its
 // cells near the change (Region::near_change), so that a long corridor costs what the change costs.
+// Pieces touching a partial room's rest join it, so that a partial decomposition never cuts it: a room
+// that has grown by partial_area since it was last decomposed whole, or that holds back a split (every
+// decomposition votes on it), is decomposed whole, as segment() would cut it.
 void IncrementalSegmenter::State::frame_region(Region& region) const {
   const cv::Rect change = region.window;
   if (options.partial_area > 0.0 && !change.empty()) {
@@ -178,7 +181,8 @@ void IncrementalSegmenter::State::frame_region(Region& region) const {
       const RoomState& room = rooms[static_cast<std::size_t>(id)];
       // Worth it only when the window leaves out most of the room's box.
       if (static_cast<double>(room.cells) * cell_area > options.partial_area &&
-          2 * (room.box & region.near_change).area() < room.box.area())
+          2 * (room.box & region.near_change).area() < room.box.area() && room.split_votes == 0 &&
+          static_cast<double>(room.cells - room.whole_cells) * cell_area <= options.partial_area)
         region.member[static_cast<std::size_t>(id)] = kPartial;
     }
   }

@@ -301,6 +301,7 @@ void IncrementalSegmenter::State::segment_whole(const OccupancyGrid& grid, const
   rooms.assign(static_cast<std::size_t>(ledger.next_id()), RoomState{});
   for (const Room& room : result.rooms) rooms[static_cast<std::size_t>(room.id)].alive = true;
   recount_rooms();
+  for (RoomState& room : rooms) room.whole_cells = room.cells;
   report.region = cv::Rect(0, 0, grid.width(), grid.height());
   report.region_cells = static_cast<int>(free_cells);
 }
@@ -384,10 +385,10 @@ ChangeMask IncrementalSegmenter::State::take_changes(const OccupancyGrid& grid, 
   const cv::Rect& window = mask.window;
   if (window.empty()) return mask;
   // segment()'s front end over the window (segmentation_input): what lies farther keeps its last cleaning.
-  const SegmentationInput input = segmentation_input(grid, window, options.segment);
+  const SegmentationInput input = window_input(grid, mask);
+  if (mask.judged_beyond) return mask;  // the whole map is segmented instead
   const cv::Mat& new_floor = input.floor;
   const cv::Mat& new_labelled = input.labelled.cells;
-  mask.judged_beyond = !input.thin_parts_within;
 
   mask.change = cv::Mat::zeros(window.size(), CV_8UC1);
   int top = -1, bottom = -1, left = INT_MAX, right = -1;  // the changed cells' box
@@ -421,6 +422,24 @@ ChangeMask IncrementalSegmenter::State::take_changes(const OccupancyGrid& grid, 
   new_floor.copyTo(floor(window));
   new_labelled.copyTo(labelled(window));
   return mask;
+}
+
+// segment()'s front end over mask.window, grown until no thin part reaching into it runs out of the
+// context the cleaning is given (such a part is judged a ray or not by all its cells): each round the
+// window takes the parts' box and its context reaches farther along them. A window that would cover
+// more than half the map is given up (judged_beyond): a whole-map update costs no more.
+SegmentationInput IncrementalSegmenter::State::window_input(const OccupancyGrid& grid, ChangeMask& mask) const {
+  const long long map_cells = static_cast<long long>(grid.width()) * grid.height();
+  for (;;) {
+    SegmentationInput input = segmentation_input(grid, mask.window, options.segment);
+    if (input.thin_parts_cut.empty()) return input;
+    const cv::Rect wider = mask.window | input.thin_parts_cut;
+    if (2LL * wider.area() > map_cells || wider == mask.window) {
+      mask.judged_beyond = true;
+      return input;
+    }
+    mask.window = wider;
+  }
 }
 
 // Blobs of changed cells (8-connected), each with the rooms it touches in raster order of first

@@ -31,6 +31,7 @@ struct RoomState {
   double sum_c = 0.0;        // sums of the column and row indices of its cells, for the centroid
   double sum_r = 0.0;
   long long absorbed = 0;    // cells joined without a decomposition since the last one
+  long long whole_cells = 0; // its cells when it was last decomposed whole (frame_region)
   int split_votes = 0;       // decompositions in a row that cut a piece off this room (held back)
   int merge_votes = 0;       // decompositions in a row that merged this room into merge_partner (held back)
   int merge_partner = 0;     // the room it is held apart from (0: none); decomposed together
@@ -59,12 +60,14 @@ constexpr unsigned char kFloorChanged = 4;  // in the decomposed free space befo
 
 // The changed cells of one update, over the window where the cleaned free space may differ.
 struct ChangeMask {
-  cv::Rect window;  // the changed box grown by the binarization's and the cleaning's reach
+  // The changed box grown by the binarization's and the cleaning's reach, and further to hold the thin
+  // parts reaching into it (window_input())
+  cv::Rect window;
   cv::Mat change;   // per window cell: the bits above, 0 unchanged
   cv::Rect active;  // the box of the changed cells, in window coordinates (empty: none)
   int changed_cells = 0;
-  // A thin part of the free space in the window reaches beyond the cleaning's context: whether it is
-  // a ray depends on all of it, which only the whole map's cleaning sees.
+  // A thin part of the free space in the window reaches so far that a window holding it would cover
+  // most of the map: whether it is a ray depends on all of it, so the whole map is segmented.
   bool judged_beyond = false;
 };
 
@@ -222,6 +225,7 @@ struct IncrementalSegmenter::State {
   void segment_whole(const OccupancyGrid& grid, const std::string& reason);
   void take_loaded_ledger();
   ChangeMask take_changes(const OccupancyGrid& grid, const cv::Rect& changed);
+  SegmentationInput window_input(const OccupancyGrid& grid, ChangeMask& mask) const;
   std::vector<Blob> find_blobs(const ChangeMask& mask, cv::Mat& blob_of) const;
   Region choose_region(std::vector<Blob>& blobs);
   bool is_speck(const Blob& blob) const;

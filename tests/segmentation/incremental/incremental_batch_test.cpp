@@ -230,6 +230,32 @@ TEST(IncrementalBatch, AThinStripRunningOutOfTheWindowIsJudgedOnTheWholeMap) {
   EXPECT_GT(cv::countNonZero(s.labels), 2000);
 }
 
+TEST(IncrementalBatch, AThinStripRunningOutOfTheWindowIsJudgedInAWindowGrownToHoldIt) {
+  // The same corridor, 470 cells long, on a larger map with a walled room far below: seen further
+  // along at its right end, it runs out of the context of the change's window, so that cleaning
+  // alone would judge it a ray (the context's edge reads as never seen). The window grows to hold the
+  // strip: the update stays windowed and labels what segment() labels.
+  const auto map = [](int length) {
+    OccupancyGrid g{cv::Mat(200, 700, CV_8UC1, cv::Scalar(kUnknown)), 0.05, {0.0, 0.0}};
+    g.cells(cv::Rect(0, 0, length, 1)).setTo(kOccupied);
+    g.cells(cv::Rect(0, 0, 1, 11)).setTo(kOccupied);
+    g.cells(cv::Rect(1, 1, length - 1, 10)).setTo(kFree);
+    g.cells(cv::Rect(100, 100, 120, 90)).setTo(kOccupied);
+    g.cells(cv::Rect(104, 104, 112, 82)).setTo(kFree);
+    return g;
+  };
+  IncrementalSegmenter segmenter;
+  segmenter.update(map(470));
+  for (const int length : {490, 510}) {
+    SCOPED_TRACE(length);
+    const OccupancyGrid longer = map(length);
+    const Segmentation& s = segmenter.update(longer);
+    EXPECT_EQ(segmenter.last_update().kind, IncrementalUpdateReport::Kind::kIncremental) << segmenter.last_update().reason;
+    EXPECT_EQ(cv::countNonZero(labelled_cells(s) != labelled_cells(segment(longer))), 0);
+    EXPECT_GT(cv::countNonZero(s.labels(cv::Rect(0, 0, length, 11))), 4000);  // the strip is kept: no ray
+  }
+}
+
 // A world to reveal: a wall-less strip, or walled rooms with partitions and doorways, sometimes
 // with specks of every kind.
 cv::Mat random_world(std::mt19937& random, int h, int w) {

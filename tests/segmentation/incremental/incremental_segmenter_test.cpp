@@ -890,6 +890,34 @@ TEST(IncrementalSegmenter, ALongCorridorGrowingAtItsFarEndIsDecomposedOnlyThere)
   }
 }
 
+TEST(IncrementalSegmenter, ALargeRoomGrowingUnderPartialDecompositionIsCutOnceItHasGrownByThePartialArea) {
+  // A corridor 20 m x 2 m opening without a door into a 10 m x 10 m hall, seen 1 m further east each
+  // update. With partial_area 20 m² the corridor is decomposed only near its growing end, where
+  // every piece touches its rest and so joins it: the hall would grow inside the corridor for good.
+  // Once the corridor has grown by 20 m² since it was last decomposed whole, it is decomposed whole
+  // again and the hall is cut off as segment() cuts it.
+  const cv::Rect corridor(4, 110, 400, 40), hall(404, 30, 200, 200), closed_room(4, 4, 100, 60);
+  const OccupancyGrid world = walled(240, 620, {corridor, hall, closed_room});
+  IncrementalOptions options;
+  options.partial_area = 20.0;
+  options.split_after = options.merge_after = 1;
+  IncrementalSegmenter segmenter(options);
+  int partial = 0;
+  for (int seen = 424; seen <= 620; seen += 20) {
+    OccupancyGrid grid = world;
+    grid.cells = world.cells.clone();
+    if (seen < 620) grid.cells(cv::Rect(seen, 0, 620 - seen, 240)).setTo(kUnknown);
+    segmenter.update(grid);
+    partial += segmenter.last_update().partial_rooms;
+  }
+  EXPECT_GT(partial, 0);  // the corridor was decomposed near the change only, some of the time
+  const Segmentation batch = segment(world, options.segment);
+  ASSERT_GE(batch.rooms.size(), 3u);  // the hall is no part of the corridor in batch
+  const Segmentation& live = segmenter.result();
+  EXPECT_NE(live.labels.at<int>(corridor.y + 20, corridor.x + 20), live.labels.at<int>(hall.y + 100, hall.x + 150));
+  EXPECT_EQ(live.rooms.size(), batch.rooms.size());
+}
+
 TEST(IncrementalSegmenter, AnIsolatedSpeckTakesTheNearestRoomWithoutADecomposition) {
   // Two rooms; beyond the wall of the right one a ray seen through a gap leaves a line of free
   // cells one cell wide: touching no room and gone after the 0.15 m opening, it can be no room. It
