@@ -196,8 +196,12 @@ std::string method_summary(const Request& request) {
     std::string stages = std::string(o.clean ? "cleaning + " : "") + (o.doors.passages ? "doors + " : "") + "DuDe";
     if (o.merge.enabled) stages += o.merge.learned ? " + merging" : " + merging by hand rules";
     std::string others;
-    for (const std::string& rule : rules_off(o))
-      if (rule != "clean" && rule != "doors" && rule != "merge" && rule != "learned-merge") others += (others.empty() ? "" : ", ") + rule;
+    for (const std::string& rule : rules_off(o)) {
+      if (rule == "clean" || rule == "doors" || rule == "merge" || rule == "learned-merge") continue;
+      // Without merging, its steps (fragments, bays) are not run either: no news.
+      if (!o.merge.enabled && find_segmentation_rule(rule)->stage == RuleStage::kMerge) continue;
+      others += (others.empty() ? "" : ", ") + rule;
+    }
     text << stages << (others.empty() ? "" : ", without " + others);
   }
   text << ", concavity " << o.concavity << " m";

@@ -71,6 +71,18 @@ const std::vector<OptionRow<RoomMergeOptions>>& room_merge_option_rows() {
                 "rooms whose widest chord along any cut is narrower (metres) fold the same way (0: off)"),
       field_row("fold-thickness", "M", OptionRange::kLengthOrZero, &R::min_room_thickness,
                 "(hand rules) rooms thinner than this (metres, 2 area / perimeter) fold the same way"),
+      field_row("fragment-area", "M2", OptionRange::kArea, &R::fragment_area,
+                "(learned merging) rooms smaller than this (m²), bounded more by never-seen cells than by walls and "
+                "entered through a gap narrower than fragment-gap, fold the same way (0: off)"),
+      field_row("fragment-gap", "M", OptionRange::kLengthOrZero, &R::fragment_gap,
+                "fragments: the widest gap (metres) a fragment is entered through; wider is a door"),
+      field_row("bay-share", "F", OptionRange::kShare, &R::bay_share,
+                "(learned merging) bays: a room whose cuts to a much larger neighbour (door rules' cuts left out) are this share of its "
+                "outline joins it (0: off)"),
+      field_row("bay-area-ratio", "F", OptionRange::kShare, &R::bay_area_ratio,
+                "bays: the room at most this share of the neighbour's area"),
+      field_row("hang-probability", "F", OptionRange::kShare, &R::hang_probability,
+                "(learned merging) fragments and bays join only where the model's probability of one room is at least this"),
       field_row("merge-door-ratio", "F", OptionRange::kPositive, &R::door_like, &DoorLikeCut::ratio,
                 "(hand rules) a cut narrower than this times the room on each side is door-like and stays"),
       field_row("merge-depth", "M", OptionRange::kLengthOrZero, &R::door_like, &DoorLikeCut::width_depth,

@@ -146,6 +146,18 @@ std::vector<SegmentationRule> make_rules() {
                 door_ratio_rule),
       component_step(unswitched_rule("fold", RuleStage::kMerge, "rooms too small or too thin to be rooms join a neighbour", merging),
                      fold_small_rooms),
+      component_step(stage_rule("fragments", RuleStage::kMerge,
+                                "(learned merging) keep small rooms bounded more by never-seen cells than by walls and "
+                                "entered through a gap narrower than a person (scraps of floor beside a room) as rooms",
+                                [](const SegmentOptions& o) { return o.merge.enabled && o.merge.fragment_area > 0.0; },
+                                [](SegmentOptions& o) { o.merge.fragment_area = 0.0; }),
+                     fold_fragments),
+      component_step(stage_rule("bays", RuleStage::kMerge,
+                                "(learned merging) keep rooms cut off a much larger room along a large share of their "
+                                "outline (bays, wedges, strips along a wall line) as rooms",
+                                [](const SegmentOptions& o) { return o.merge.enabled && o.merge.bay_share > 0.0; },
+                                [](SegmentOptions& o) { o.merge.bay_share = 0.0; }),
+                     fold_bays),
       rooms_step(stage_rule("open-rooms", RuleStage::kRooms,
                             "keep rooms whose outline runs mostly into never-seen space (ray fans, scraps beyond the walls) as rooms",
                             [](const SegmentOptions& o) { return o.open_rooms.enabled; },

@@ -145,6 +145,12 @@ TEST(SegmentOptionRows, ParityIsTheReferenceAndRefusesTheSwitchesItSets) {
   EXPECT_TRUE(given({}).doors.island_cuts);
   EXPECT_FALSE(given({{"no-corridor-rule", 1}}).merge.corridor_rule);
   EXPECT_TRUE(given({}).merge.corridor_rule);
+  EXPECT_EQ(given({{"no-bays", 1}}).merge.bay_share, 0.0);
+  EXPECT_GT(given({}).merge.bay_share, 0.0);
+  EXPECT_EQ(given({{"no-fragments", 1}}).merge.fragment_area, 0.0);
+  EXPECT_GT(given({}).merge.fragment_area, 0.0);
+  EXPECT_EQ(given({{"bay-share", 0.3}, {"hang-probability", 0.4}}).merge.bay_share, 0.3);
+  EXPECT_EQ(given({{"hang-probability", 0.4}}).merge.hang_probability, 0.4);
   for (const char* sw : {"no-doors", "no-wall-openings", "no-merge", "no-simplify", "no-clean", "no-width-steps",
                          "no-furniture-rule", "cover-obstacles", "no-wall-lines", "no-island-cuts", "no-corridor-rule"}) {
     EXPECT_THROW(given({{"parity", 1}, {sw, 1}}), Error) << sw;

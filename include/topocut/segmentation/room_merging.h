@@ -33,6 +33,28 @@ struct RoomMergeOptions {
   // m²: smaller rooms (slivers between cuts, leaks through doors) fold into the neighbour sharing
   // the longest cut. Half a square metre: the smallest closets people draw are larger.
   double min_room_area = 0.5;
+  // (Learned merging, after the folding) Fragments: a room smaller than fragment_area m², bounded
+  // more by never-seen cells than by walls, whose longest cut to the room it shares the most cut with
+  // is narrower than fragment_gap (no door a person walks through) joins that room: the corner of a
+  // room seen through a gap between furniture, the ray-lit floor behind a narrow opening. Closets and
+  // WCs of that size are walled and entered through a door. 2 m² and 0.6 m (a person's width, as the
+  // cleaning's thin free space and the defect count): every such scrap on the real maps is smaller,
+  // the rooms people drew on them larger. Only where the grid holds occupied cells (walls drawn in the
+  // never-seen grey cannot be told from the dark). 0: off (--no-fragments).
+  double fragment_area = 2.0;
+  double fragment_gap = 0.6;
+  // (Learned merging, after the fragments) Bays: a room at most bay_area_ratio of a neighbour's area
+  // whose cuts to it (door rules' cuts left out: a door or a room's open front stays a boundary) are at
+  // least bay_share of its outline joins it: a bay, a wedge or a strip cut off a room along a diagonal
+  // or a wall line. A room beside a corridor or a hall shares a fifth of its outline with it only when
+  // it is shallow. 0: off (--no-bays).
+  double bay_share = 0.2;
+  double bay_area_ratio = 0.25;
+  // Fragments and bays join their neighbour only where the model's probability of one room across
+  // their longest cut to it is at least this and at most its threshold (above, a criterion before the
+  // model kept the cut): the model leaning that way without deciding. The scraps and bays of the real
+  // maps lie at 0.39 to 0.49, the rooms the sketches' people drew beside a hall below 0.07.
+  double hang_probability = 0.35;
   // Metres: rooms whose widest chord along any cut stays below this fold the same way (a strip of
   // rays through a gap). 0 (default) disables: leaks are mostly components of their own.
   double min_room_width = 0.0;

@@ -31,6 +31,10 @@
 //   door-ratio      segmentation/merging/merge_criteria.cpp  criterion (hand rules): a cut spanning the narrower
 //                                                            room merges
 //   fold            segmentation/merging/room_merging.cpp    on each component: rooms too small or thin folded
+//   fragments       segmentation/merging/room_merging.cpp    on each component (learned merging): small rooms bounded
+//                                                            by never-seen cells behind a gap folded (scraps)
+//   bays            segmentation/merging/room_merging.cpp    on each component (learned merging): rooms cut off a much
+//                                                            larger room along much of their outline join it
 //   open-rooms      segmentation/merging/open_rooms.cpp      on all rooms: rooms bounded mostly by never-seen
 //                                                            space join their neighbour (with none beside them,
 //                                                            outside the building: left out)

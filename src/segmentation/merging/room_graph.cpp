@@ -193,6 +193,7 @@ RoomGraph::RoomGraph(const PolygonWithHoles& polygon, const PieceSet& set, const
   measure_cut_ends(edges);
   mark_furniture(polygon, furniture_size);
   measure_outlines(edges, cells);
+  cells_ = cells;
 }
 
 namespace {
@@ -256,6 +257,11 @@ double RoomGraph::wall_share(int r) {
   for (const int member : members(r)) length += wall_lengths_[static_cast<std::size_t>(member)];
   const double perimeter = room_perimeter(r);
   return perimeter > 0.0 ? std::min(length / perimeter, 1.0) : 0.0;
+}
+
+bool RoomGraph::walls_seen() {
+  if (!walls_seen_) walls_seen_ = cells_.empty() || cv::countNonZero(cells_ == kOccupied) > 0;
+  return *walls_seen_;
 }
 
 double RoomGraph::unknown_share(int r) {

@@ -4,6 +4,7 @@
 // decides by (chords, widths and depths beside a cut, areas, thickness, convex hulls). Grid
 // coordinates (one unit per cell); every measure it returns is in metres.
 #include <map>
+#include <optional>
 #include <vector>
 
 #include <opencv2/core.hpp>
@@ -67,6 +68,9 @@ class RoomGraph {
   // and along never-seen cells (the sensor saw no wall there: a ray fan's rim, an opening to the dark).
   double wall_share(int r);
   double unknown_share(int r);
+  // Whether the grid holds an occupied cell (or is not known): without, the map draws its walls in the
+  // never-seen grey, and walls cannot be told from the dark. Looked at when first asked.
+  bool walls_seen();
   // Length of the cuts between rooms r and s (m); s < 0: between r and every other room.
   double shared_cut_length(int r, int s);
   // The cuts with a piece of room r on a side, ascending, each once: what a measure of r reads
@@ -100,6 +104,8 @@ class RoomGraph {
   std::vector<std::vector<std::vector<Box>>> chunks_;  // per piece, outer ring then holes: ring_chunks() for chord()
   std::vector<double> areas_;       // m² per piece
   std::vector<double> perimeters_;  // m per piece
+  cv::Mat cells_;                     // the grid (a header: no copy of the cells)
+  std::optional<bool> walls_seen_;
   std::vector<double> wall_lengths_, unknown_lengths_;  // m per piece: outline along walls, along never-seen cells
   struct Moments {
     double a = 0.0, x = 0.0, y = 0.0, xx = 0.0, xy = 0.0, yy = 0.0;  // integrals of 1, x, y, x², xy, y² (cells)
@@ -141,6 +147,15 @@ void merge_by_criteria(ComponentMerge& merge);
 
 // Rooms too small or too thin to be rooms join the neighbour they share the longest cut with.
 void fold_small_rooms(ComponentMerge& merge);
+
+// Small rooms walled along little of their outline (RoomMergeOptions::fragment_area) join the
+// neighbour they share the longest cut with: scraps of floor the cuts left, not closets.
+void fold_fragments(ComponentMerge& merge);
+
+// A room much smaller than a neighbour (RoomMergeOptions::bay_area_ratio) whose cuts to it, door rules'
+// cuts left out, are a large share of its outline (bay_share) joins it: a bay, a wedge or a strip cut
+// off a room along a diagonal or a wall line.
+void fold_bays(ComponentMerge& merge);
 
 // The features (merge_features.h) of merging the two rooms on the sides of cut k of graph.
 std::vector<double> merge_features(RoomGraph& graph, std::size_t k, const RoomMergeOptions& options);

@@ -124,41 +124,136 @@ void merge_by_criteria(ComponentMerge& merge) {
   });
 }
 
-// Smallest first (the least likely to be a room of its own). A room's width and thickness change only
-// when it grows, so they are measured once per room and again after it grows.
-void fold_small_rooms(ComponentMerge& merge) {
-  RoomGraph& g = merge.graph;
-  const RoomMergeOptions& options = merge.options;
+
+namespace {
+
+// Folds every room that folds(r) says is no room into the room into(r) names (-1: none, the room
+// stays), the smallest first (the least likely to be a room of its own). folds(r) is asked again of a
+// room only after it or a room beside it grew (its measures change only then).
+template <class Folds, class Into>
+void fold_rooms(RoomGraph& g, const Folds& folds, const Into& into) {
   std::vector<bool> stuck(g.piece_count(), false);
-  std::vector<std::optional<bool>> thin_room(g.piece_count());  // by room root; empty: to measure
-  auto is_thin = [&](int r) {
-    std::optional<bool>& thin = thin_room[static_cast<std::size_t>(r)];
-    if (!thin)
-      thin = (options.min_room_width > 0.0 && room_width(g, r, options.door_like.width_depth) < options.min_room_width) ||
-             (!options.learned && options.min_room_thickness > 0.0 && g.room_thickness(r) < options.min_room_thickness);
-    return *thin;
-  };
+  std::vector<std::optional<bool>> no_room(g.piece_count());  // by room root; empty: to measure
   while (true) {
     int victim = -1;
     double victim_area = 0.0;
     for (std::size_t i = 0; i < g.piece_count(); ++i) {
       const int r = static_cast<int>(i);
       if (g.root(r) != r || stuck[i]) continue;
+      std::optional<bool>& verdict = no_room[i];
+      if (!verdict) verdict = folds(r);
       const double a = g.room_area(r);
-      if ((a < options.min_room_area || is_thin(r)) && (victim < 0 || a < victim_area)) {
+      if (*verdict && (victim < 0 || a < victim_area)) {
         victim = r;
         victim_area = a;
       }
     }
     if (victim < 0) return;
-    const int into = longest_shared_neighbour(g, victim);
-    if (into < 0) {
+    const int target = into(victim);
+    if (target < 0) {
       stuck[static_cast<std::size_t>(victim)] = true;
       continue;
     }
-    g.unite(victim, into);
-    thin_room[static_cast<std::size_t>(g.root(victim))].reset();
+    g.unite(victim, target);
+    const int grown = g.root(victim);
+    no_room[static_cast<std::size_t>(grown)].reset();
+    for (const std::size_t k : g.room_sides(grown)) {
+      const RoomGraph::Side& s = g.sides()[k];
+      for (const int piece : {s.left, s.right}) {
+        const int r = g.root(piece);
+        no_room[static_cast<std::size_t>(r)].reset();
+        stuck[static_cast<std::size_t>(r)] = false;
+      }
+    }
   }
+}
+
+template <class Folds>
+void fold_rooms(RoomGraph& g, const Folds& folds) {
+  fold_rooms(g, folds, [&g](int r) { return longest_shared_neighbour(g, r); });
+}
+
+// The rooms beside room r with the length of the cuts r shares with each, door rules' cuts left out
+// when skip_doors (a door or a room's open front stays a boundary), and the longest of those cuts.
+struct Shared {
+  double length = 0.0;
+  std::size_t longest = 0;
+};
+std::map<int, Shared> shared_cuts(RoomGraph& g, int r, bool skip_doors) {
+  std::map<int, Shared> shared;
+  for (const std::size_t k : g.room_sides(r)) {
+    const RoomGraph::Side& s = g.sides()[k];
+    if (!g.separates(k) || (skip_doors && is_door_rule(s.rule))) continue;
+    const int a = g.root(s.left), b = g.root(s.right);
+    Shared& with = shared[a == r ? b : a];
+    if (with.length == 0.0 || s.length > g.sides()[with.longest].length) with.longest = k;
+    with.length += s.length;
+  }
+  return shared;
+}
+
+// Whether the model leans towards one room across cut k (at least RoomMergeOptions::hang_probability)
+// without reaching its threshold: above it, the cut stands because a criterion before the model kept
+// it, and that stays.
+bool hangs_across(RoomGraph& g, std::size_t k, const RoomMergeOptions& options) {
+  const double p = merge_probability(options.model, merge_features(g, k, options));
+  return p >= options.hang_probability && p <= options.model.threshold;
+}
+
+// The room that room r is a bay of (-1: none): a room at least bay_area_ratio^-1 times r's area whose
+// cuts to r, door rules' left out, are at least bay_share of r's outline, the longest share first,
+// when the model leans towards one room across the longest of them.
+int bay_of(RoomGraph& g, int r, const RoomMergeOptions& options) {
+  const double perimeter = g.room_perimeter(r), area = g.room_area(r);
+  int into = -1;
+  double longest = 0.0;
+  for (const auto& [room, with] : shared_cuts(g, r, true)) {
+    if (with.length < options.bay_share * perimeter || with.length <= longest) continue;
+    if (area > options.bay_area_ratio * g.room_area(room) || !hangs_across(g, with.longest, options)) continue;
+    into = room;
+    longest = with.length;
+  }
+  return into;
+}
+
+// The room that room r is a fragment of (-1: none): r smaller than fragment_area and bounded more by
+// never-seen cells than by walls, the room it shares the longest cuts with, when the model leans
+// towards one room across the longest of them.
+int fragment_of(RoomGraph& g, int r, const RoomMergeOptions& options) {
+  if (g.room_area(r) >= options.fragment_area || g.unknown_share(r) <= g.wall_share(r) || !g.walls_seen()) return -1;
+  int into = -1;
+  Shared best;
+  for (const auto& [room, with] : shared_cuts(g, r, false)) {
+    if (with.length > best.length) std::tie(into, best) = std::pair{room, with};
+  }
+  if (into < 0 || g.sides()[best.longest].length >= options.fragment_gap) return -1;
+  return hangs_across(g, best.longest, options) ? into : -1;
+}
+
+}  // namespace
+
+void fold_small_rooms(ComponentMerge& merge) {
+  RoomGraph& g = merge.graph;
+  const RoomMergeOptions& options = merge.options;
+  fold_rooms(g, [&](int r) {
+    return g.room_area(r) < options.min_room_area ||
+           (options.min_room_width > 0.0 && room_width(g, r, options.door_like.width_depth) < options.min_room_width) ||
+           (!options.learned && options.min_room_thickness > 0.0 && g.room_thickness(r) < options.min_room_thickness);
+  });
+}
+
+void fold_fragments(ComponentMerge& merge) {
+  RoomGraph& g = merge.graph;
+  const RoomMergeOptions& options = merge.options;
+  if (options.fragment_area <= 0.0 || !options.learned) return;
+  fold_rooms(g, [&](int r) { return fragment_of(g, r, options) >= 0; }, [&](int r) { return fragment_of(g, r, options); });
+}
+
+void fold_bays(ComponentMerge& merge) {
+  RoomGraph& g = merge.graph;
+  const RoomMergeOptions& options = merge.options;
+  if (options.bay_share <= 0.0 || !options.learned) return;
+  fold_rooms(g, [&](int r) { return bay_of(g, r, options) >= 0; }, [&](int r) { return bay_of(g, r, options); });
 }
 
 namespace {

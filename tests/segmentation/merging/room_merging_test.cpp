@@ -1,6 +1,7 @@
 #include "topocut/segmentation/room_merging.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include <gtest/gtest.h>
 
@@ -295,6 +296,99 @@ TEST(MergeRooms, ACorridorContinuedIsOneRoomWhateverTheModel) {
   room.cuts = {{{200, 0}, {200, 40}}};
   EXPECT_EQ(merge_rooms(no_component(), room, cv::Mat(), kRes, constant_model(-10.0)).pieces.size(), 2u);
   EXPECT_EQ(merge_rooms(no_component(), room, cv::Mat(), kRes, constant_model(10.0)).pieces.size(), 1u);
+}
+
+}  // namespace
+}  // namespace topocut
+
+namespace topocut {
+namespace {
+
+// The learned criterion with a model that answers p to every merge (below 0.5: it keeps every cut).
+RoomMergeOptions model_answering(double p) {
+  RoomMergeOptions options;
+  options.model = parse_merge_model("topocut-merge-model 1\nthreshold 0.5\nbias " + std::to_string(std::log(p / (1.0 - p))) + "\n");
+  return options;
+}
+
+// A 10 m x 8 m room and a 4 m x 1.5 m strip along its top edge, cut off across the strip's whole
+// length (a strip cut off along a wall line): 6 m² beside 80 m², the cut 4 of its 11 m of outline.
+PieceSet strip_beside_room(CutRule rule) {
+  PieceSet set;
+  set.pieces = {{{{0, 0}, {200, 0}, {200, 160}, {140, 160}, {60, 160}, {0, 160}}, {}}, box(60, 160, 140, 190)};
+  set.add_cut({{60, 160}, {140, 160}}, rule);
+  return set;
+}
+
+TEST(MergeRooms, ABayCutOffALargerRoomAlongMuchOfItsOutlineJoinsItWhereTheModelLeansThatWay) {
+  const PieceSet set = strip_beside_room(CutRule::kWallLine);
+  RoomMergeOptions options = model_answering(0.45);  // below the threshold: the merge keeps the cut
+  const PieceSet rooms = merge_rooms(no_component(), set, cv::Mat(), kRes, options);
+  ASSERT_EQ(rooms.pieces.size(), 1u);
+  EXPECT_DOUBLE_EQ(area(rooms.pieces[0]), 200 * 160 + 80 * 30);
+  EXPECT_TRUE(rooms.cuts.empty());
+  options.bay_share = 0.0;  // --no-bays
+  EXPECT_EQ(merge_rooms(no_component(), set, cv::Mat(), kRes, options).pieces.size(), 2u);
+  // The model sure of two rooms (a room beside a hall in a drawn plan): the bay stays.
+  EXPECT_EQ(merge_rooms(no_component(), set, cv::Mat(), kRes, model_answering(0.2)).pieces.size(), 2u);
+  // A door, or a room's open front, stays a boundary.
+  EXPECT_EQ(merge_rooms(no_component(), strip_beside_room(CutRule::kDoor), cv::Mat(), kRes, model_answering(0.45)).pieces.size(), 2u);
+  EXPECT_EQ(merge_rooms(no_component(), strip_beside_room(CutRule::kWallOpening), cv::Mat(), kRes, model_answering(0.45)).pieces.size(), 2u);
+  // A cut at most a fifth of the room's outline (4 of 11 m: 0.36), or a room not much smaller (6 of
+  // 80 m²: 0.075), is no bay.
+  options = model_answering(0.45);
+  options.bay_share = 0.4;
+  EXPECT_EQ(merge_rooms(no_component(), set, cv::Mat(), kRes, options).pieces.size(), 2u);
+  options = model_answering(0.45);
+  options.bay_area_ratio = 0.07;
+  EXPECT_EQ(merge_rooms(no_component(), set, cv::Mat(), kRes, options).pieces.size(), 2u);
+  // Hand rules: no model to lean on; the bay rule stays out of them.
+  RoomMergeOptions hand = hand_rules();
+  hand.door_like.ratio = 10.0;  // no cut merges as "not a door"
+  hand.step_ratio = 0.0;
+  EXPECT_EQ(merge_rooms(no_component(), set, cv::Mat(), kRes, hand).pieces.size(), 2u);
+}
+
+// A 10 m x 8 m room and, behind a gap of gap cells in its 0.2 m top wall, a 1.2 m x 1 m scrap of
+// floor; the scrap's sides and top run into never-seen cells, or into walls when walled.
+struct ScrapBehindGap {
+  PieceSet set;
+  cv::Mat cells;
+  ScrapBehindGap(int gap, bool walled) {
+    const int a = 100 - gap / 2, b = a + gap;
+    set.pieces = {{{{0, 0}, {200, 0}, {200, 160}, {static_cast<double>(b), 160}, {static_cast<double>(a), 160}, {0, 160}}, {}},
+                  {{{static_cast<double>(a), 160}, {static_cast<double>(b), 160}, {static_cast<double>(b), 164}, {112, 164},
+                    {112, 184}, {88, 184}, {88, 164}, {static_cast<double>(a), 164}},
+                   {}}};
+    set.add_cut({{static_cast<double>(a), 160}, {static_cast<double>(b), 160}}, CutRule::kDoor);
+    cells = cv::Mat(200, 220, CV_8UC1, cv::Scalar(kOccupied));
+    if (!walled) cells(cv::Rect(82, 164, 36, 26)).setTo(kUnknown);
+    cells(cv::Rect(0, 0, 200, 160)).setTo(kFree);
+    cells(cv::Rect(a, 160, gap, 4)).setTo(kFree);
+    cells(cv::Rect(88, 164, 24, 20)).setTo(kFree);
+  }
+};
+
+TEST(MergeRooms, AScrapBoundedByNeverSeenCellsBehindAGapNarrowerThanAPersonJoinsTheRoom) {
+  const RoomMergeOptions options = model_answering(0.45);
+  const ScrapBehindGap scrap(8, false);  // a 0.4 m gap
+  const PieceSet rooms = merge_rooms(no_component(), scrap.set, scrap.cells, kRes, options);
+  ASSERT_EQ(rooms.pieces.size(), 1u);
+  EXPECT_DOUBLE_EQ(area(rooms.pieces[0]), 200 * 160 + 8 * 4 + 24 * 20);
+  // A walled closet behind the same gap, the scrap behind a door a person walks through (0.8 m), the
+  // model sure of two rooms, or --no-fragments: two rooms.
+  const ScrapBehindGap closet(8, true);
+  EXPECT_EQ(merge_rooms(no_component(), closet.set, closet.cells, kRes, options).pieces.size(), 2u);
+  const ScrapBehindGap door(16, false);
+  EXPECT_EQ(merge_rooms(no_component(), door.set, door.cells, kRes, options).pieces.size(), 2u);
+  EXPECT_EQ(merge_rooms(no_component(), scrap.set, scrap.cells, kRes, model_answering(0.2)).pieces.size(), 2u);
+  RoomMergeOptions off = options;
+  off.fragment_area = 0.0;
+  EXPECT_EQ(merge_rooms(no_component(), scrap.set, scrap.cells, kRes, off).pieces.size(), 2u);
+  // Walls drawn in the never-seen grey (no occupied cell): walls and the dark cannot be told apart.
+  cv::Mat grey = scrap.cells.clone();
+  grey.setTo(kUnknown, grey == kOccupied);
+  EXPECT_EQ(merge_rooms(no_component(), scrap.set, grey, kRes, options).pieces.size(), 2u);
 }
 
 }  // namespace
