@@ -4,10 +4,12 @@
     /usr/bin/python3 scripts/train_merge_model.py                 # retrain: writes the model file
     /usr/bin/python3 scripts/train_merge_model.py --check         # exit 1 unless the shipped file is what this produces
     /usr/bin/python3 scripts/train_merge_model.py --generalisation  # leave-one-kind-out and 5-fold tables
+    /usr/bin/python3 scripts/train_merge_model.py --generalisation --folds 0 --every 5  # a quicker check (minutes)
 
 The merge model decides, for two adjacent rooms in the making and the cut between them, whether people
 would call them one room (segmentation/merge_model.h; the features are merge_feature_names(), all of
-them measurements, none a rule's decision). Its rows come from the library itself
+them measurements, none a rule's decision; the lengths are in the component's own scale, its typical
+piece's thickness and cut's length, so that a kind never fitted on is judged by its own sizes). Its rows come from the library itself
 (topocut.merge_training_rows): every candidate merge the segmenter weighs on a map with the library's
 default options, labelled by the map's ground truth. Merging is greedy (the most probable merge first,
 then the probabilities next to the grown room are computed again), so the rooms it meets depend on its
@@ -21,7 +23,7 @@ people's rooms, and robot-made maps that `topocut simulate-map` makes of the pla
 kinds (a simulated lidar exploring the plan; people's rooms carried over). Each kind weighs the same,
 each set within its kind, each map within its set and each candidate within its map (times how purely
 each side lies in one room of people's): a small room lost costs a matched room as a large one does.
-The model: gradient-boosted trees of depth 4 (XGBoost, 300 trees at learning rate 0.05, histogram
+The model: gradient-boosted trees of depth 5 (XGBoost, 300 trees at learning rate 0.05, histogram
 splits, one thread, fixed seed), written from XGBoost's public JSON dump of its trees. Deterministic:
 the same data and library versions give the same file, byte for byte; the file's header records the
 sets, their sizes and the versions.
@@ -50,7 +52,7 @@ MODEL_FILE = os.path.join(ROOT, "src", "segmentation", "merging", "merge_model.t
 ROUNDS = 3
 SEED = 0
 RESOLUTION = 0.05  # metres a cell: the Bormann-layout images hold no scale (merge_training_rows's default too)
-TREES = dict(n_estimators=300, max_depth=4, learning_rate=0.05, max_bin=256)
+TREES = dict(n_estimators=300, max_depth=5, learning_rate=0.05, max_bin=256)
 FOLDS = 5  # --generalisation's default: every map scored by a model fitted without its building, plan or sketch
 SKIPPED = 77  # ctest's skip code: --check without the shared data sets
 FIRST_ROUND = "topocut-merge-model 1\nthreshold 2\n"  # merges nothing: the first candidates only
@@ -268,9 +270,16 @@ def main():
     parser.add_argument("--folds", type=int, default=FOLDS,
                         help=f"--generalisation: folds by building, plan or sketch (default {FOLDS}; 0: leave-one-kind-out only)")
     parser.add_argument("--no-kinds", action="store_true", help="--generalisation: the folds only, no leave-one-kind-out")
+    parser.add_argument("--every", type=int, default=1,
+                        help="a quicker check: every N-th map of the sets of more than 100 maps (homes, robot-made homes), "
+                             "for fitting and scoring; the model file records the maps it was fitted on")
     args = parser.parse_args()
     if args.folds < 0 or args.folds == 1:
         parser.error("--folds must be 0 or at least 2")
+    if args.every < 1:
+        parser.error("--every must be at least 1")
+    if args.every > 1 and args.check:
+        parser.error("--check compares with a model fitted on every map: --every leaves some out")
     if args.no_kinds and args.folds == 0:
         parser.error("--no-kinds with --folds 0 leaves nothing to measure")
     if not os.path.isdir(os.path.join(args.shared, "datasets")):
@@ -281,6 +290,7 @@ def main():
     progress = lambda s: print("train_merge_model: " + s, file=sys.stderr)
     sets = datasets(args.shared, os.path.join(args.build, "topocut"), args.robot_maps or os.path.join(args.build, "robot_maps"),
                     progress)
+    sets = {name: maps[:: args.every] if len(maps) > 100 else maps for name, maps in sets.items()}
     if args.generalisation:
         generalisation(topocut, sets, args.workers, args.folds, not args.no_kinds)
         return 0

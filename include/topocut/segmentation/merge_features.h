@@ -1,8 +1,9 @@
 #pragma once
 // What merging knows of a candidate merge: two adjacent rooms in the making and one cut between them,
-// described by measurements in metres and ratios (cut length, widths and depths of both sides, areas,
+// described by measurements and ratios (cut length, widths and depths of both sides, areas,
 // thickness, convexity of the union, what the rooms' outlines run along, the cut's angles to the
-// walls), the same on every kind of map. No feature is a rule's decision, so rules and the model can
+// walls), the same on every kind of map: lengths in the component's own scale (its typical piece and
+// cut), areas and thicknesses in metres and in that scale. No feature is a rule's decision, so rules and the model can
 // change apart.
 #include <string>
 #include <vector>

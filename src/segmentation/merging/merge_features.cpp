@@ -9,10 +9,8 @@ namespace topocut {
 
 const std::vector<std::string>& merge_feature_names() {
   static const std::vector<std::string> names{
-      "log_cut_length",               // log(cut length, m)
       "cut_over_narrow_width",        // cut length / narrow side's width (a door is well below 1), at most 3
       "narrow_over_wide_width",       // narrow width / wide width: 1 a room cut across, small a width step
-      "log_narrow_width",             // log(narrow width, m)
       "narrow_depth_over_width",      // narrow side's depth behind the cut / its width, at most 5
       "wide_depth_over_narrow_width", // wide side's depth / narrow width, at most 5
       "log_narrow_area",              // log(narrow room's area, m²)
@@ -25,21 +23,35 @@ const std::vector<std::string>& merge_feature_names() {
       "furniture_end",                // an end of the cut lies on a furniture-sized obstacle
       "min_end_angle",                // the free space's angle at the cut's ends / pi: 1 in a straight wall,
       "max_end_angle",                //   1.5 at a door jamb, 2 at a wall's end, 0.5 in a corner
-      "log_wall_continued",           // log(1 + the wall the cut continues straight on, m)
       "narrow_open_share",            // the narrow room's cuts to other rooms / its perimeter
       "wide_open_share",              // the same of the wide room
       "cut_over_wide_width",          // cut length / the wide side's width
       "union_thickness_over_narrow",  // 2 area / perimeter of the union over the narrow room's
       "log_narrow_elongation",        // log of the narrow room's elongation (second moments: about length / width)
       "log_union_elongation",         // log of the union's elongation
-      "ends_on_holes",                // ends of the cut on an obstacle inside the free space (0, 1 or 2)
-      "log_hole_extent",              // log(1 + the largest such obstacle's bounding-box side, m)
+      "ends_on_holes",                // ends of the cut on an obstacle inside the free space (0, 1 or 2);
+                                      //   its extent is log_hole_extent_over_scale below
       "narrow_wall_share",            // the narrow room's outline along occupied cells / its perimeter
       "wide_wall_share",              // the same of the wide room
       "narrow_unknown_share",         // the narrow room's outline along never-seen cells / its perimeter
       "wide_unknown_share",           // the same of the wide room
       "cut_skew",                     // the cut's angle to the walls at its ends / (pi / 4): 0 along or
                                       //   across them, 1 a diagonal
+      // Lengths in the component's own scale (RoomGraph::piece_scale(): the typical piece's thickness;
+      // cut_scale(): the typical cut's length), the same whatever a kind's sizes: in metres, the cut's
+      // length and the narrow width told the kinds fitted on apart more than doors from rooms, and a
+      // model fitted without homes or sketches misjudged theirs (benchmarks/README.md). The areas and
+      // thicknesses above stay in metres too: both together generalised best.
+      "log_cut_over_scale",           // log(cut length / piece scale)
+      "log_cut_over_cut_scale",       // log(cut length / cut scale)
+      "log_narrow_width_over_scale",  // log(narrow width / piece scale)
+      "log_narrow_width_over_cut_scale",  // log(narrow width / cut scale)
+      "log_narrow_area_over_scale",   // log(narrow room's area / piece scale²)
+      "log_wide_area_over_scale",     // log(wide room's area / piece scale²)
+      "narrow_thickness_over_scale",  // narrow_thickness / piece scale, at most 10
+      "wide_thickness_over_scale",    // wide_thickness / piece scale, at most 10
+      "log_wall_continued_over_scale",  // log(1 + the wall the cut continues straight on / piece scale)
+      "log_hole_extent_over_scale",   // log(1 + the largest such obstacle's bounding-box side / piece scale)
   };
   return names;
 }
@@ -82,11 +94,10 @@ std::vector<double> merge_features(RoomGraph& graph, std::size_t k, const RoomMe
   const double length = std::max(side.length, kMinLength);
   const double union_perimeter = p_narrow + p_wide - 2.0 * shared;
   const double union_thickness = union_perimeter > 0.0 ? 2.0 * (a_narrow + a_wide) / union_perimeter : 0.0;
+  const double scale = std::max(graph.piece_scale(), kMinLength), cut_scale = std::max(graph.cut_scale(), kMinLength);
   return {
-      std::log(length),
       std::min(length / w_narrow, 3.0),
       w_narrow / w_wide,
-      std::log(w_narrow),
       std::min(d_narrow / w_narrow, 5.0),
       std::min(d_wide / w_narrow, 5.0),
       std::log(a_narrow),
@@ -99,7 +110,6 @@ std::vector<double> merge_features(RoomGraph& graph, std::size_t k, const RoomMe
       side.furniture ? 1.0 : 0.0,
       side.end_angle[0] / M_PI,
       side.end_angle[1] / M_PI,
-      std::log1p(side.wall_continued),
       std::min(graph.shared_cut_length(narrow, -1) / std::max(p_narrow, kMinLength), 1.0),
       std::min(graph.shared_cut_length(wide, -1) / std::max(p_wide, kMinLength), 1.0),
       std::min(length / w_wide, 3.0),
@@ -107,12 +117,21 @@ std::vector<double> merge_features(RoomGraph& graph, std::size_t k, const RoomMe
       std::log(std::min(graph.elongation({narrow}), 100.0)),
       std::log(std::min(graph.elongation({narrow, wide}), 100.0)),
       static_cast<double>(std::min(side.ends_on_holes, 2)),
-      std::log1p(side.hole_extent),
       graph.wall_share(narrow),
       graph.wall_share(wide),
       graph.unknown_share(narrow),
       graph.unknown_share(wide),
       side.skew / (M_PI / 4.0),
+      std::log(length / scale),
+      std::log(length / cut_scale),
+      std::log(w_narrow / scale),
+      std::log(w_narrow / cut_scale),
+      std::log(a_narrow / (scale * scale)),
+      std::log(a_wide / (scale * scale)),
+      std::min(t_narrow / scale, 10.0),
+      std::min(graph.room_thickness(wide) / scale, 10.0),
+      std::log1p(side.wall_continued / scale),
+      std::log1p(side.hole_extent / scale),
   };
 }
 

@@ -194,6 +194,32 @@ RoomGraph::RoomGraph(const PolygonWithHoles& polygon, const PieceSet& set, const
   mark_furniture(polygon, furniture_size);
   measure_outlines(edges, cells);
   cells_ = cells;
+  measure_scales();
+}
+
+// The medians that piece_scale() and cut_scale() return (0 without pieces or cuts). Weighted by area,
+// the slivers beside furniture and doors leave the pieces' scale where the rooms and corridors put it.
+void RoomGraph::measure_scales() {
+  std::vector<std::pair<double, double>> thickness;  // (2 area / perimeter, area)
+  double total = 0.0;
+  for (std::size_t i = 0; i < areas_.size(); ++i) {
+    if (perimeters_[i] <= 0.0) continue;
+    thickness.emplace_back(2.0 * areas_[i] / perimeters_[i], areas_[i]);
+    total += areas_[i];
+  }
+  std::sort(thickness.begin(), thickness.end());
+  double below = 0.0;
+  for (const auto& [t, a] : thickness) {
+    piece_scale_ = t;
+    below += a;
+    if (below >= 0.5 * total) break;
+  }
+  std::vector<double> lengths;
+  for (const Side& side : sides_) lengths.push_back(side.length);
+  if (lengths.empty()) return;
+  const std::size_t middle = lengths.size() / 2;
+  std::nth_element(lengths.begin(), lengths.begin() + static_cast<std::ptrdiff_t>(middle), lengths.end());
+  cut_scale_ = lengths[middle];
 }
 
 namespace {

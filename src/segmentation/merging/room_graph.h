@@ -47,6 +47,11 @@ class RoomGraph {
   double resolution() const { return resolution_; }
   const std::vector<Side>& sides() const { return sides_; }
   std::size_t piece_count() const { return parent_.size(); }
+  // The component's own scale, measured before any merge, for features that read the same whatever
+  // a kind's sizes (a home's closet and an office beside an office's corridor): the area-weighted
+  // median thickness (2 area / perimeter) of its pieces, and the median length of its cuts (m).
+  double piece_scale() const { return piece_scale_; }
+  double cut_scale() const { return cut_scale_; }
 
   // The room (root piece) holding piece i.
   int root(int i);
@@ -92,12 +97,14 @@ class RoomGraph {
   void find_sides(const Edges& edges);
   void measure_cut_ends(const Edges& edges);
   void mark_furniture(const PolygonWithHoles& polygon, double furniture_size);
+  void measure_scales();
   void measure_outlines(const Edges& edges, const cv::Mat& cells);
   double chord(int r, const Point2& p, const Point2& u);
   double measure_side_width(std::size_t k, int r, bool left, double depth);
 
   const PieceSet& set_;
   double resolution_;
+  double piece_scale_ = 0.0, cut_scale_ = 0.0;
   std::vector<int> parent_;
   std::vector<std::vector<int>> members_;  // room root -> its pieces
   std::vector<Box> boxes_;

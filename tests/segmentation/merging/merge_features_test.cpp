@@ -30,10 +30,9 @@ TEST(MergeFeatures, ACorridorCutAcrossMeasuresAsWorkedOutByHand) {
   RoomGraph graph(PolygonWithHoles{}, set, cv::Mat(), kRes, 2.5);
   const std::vector<double> f = merge_features(graph, 0, RoomMergeOptions{});
   ASSERT_EQ(f.size(), merge_feature_names().size());
-  EXPECT_NEAR(feature(f, "log_cut_length"), std::log(2.0), 1e-9);
   EXPECT_NEAR(feature(f, "cut_over_narrow_width"), 1.0, 1e-9);  // the cut spans the corridor
   EXPECT_NEAR(feature(f, "narrow_over_wide_width"), 1.0, 1e-9);
-  EXPECT_NEAR(feature(f, "log_narrow_width"), std::log(2.0), 1e-9);
+  EXPECT_NEAR(feature(f, "log_narrow_width_over_cut_scale"), 0.0, 1e-9);  // 2 m wide, its one cut 2 m
   // Equal widths: the left side (A, 3 m deep) counts as narrow, B (2 m deep) as wide.
   EXPECT_NEAR(feature(f, "narrow_depth_over_width"), 1.5, 1e-9);
   EXPECT_NEAR(feature(f, "wide_depth_over_narrow_width"), 1.0, 1e-9);
@@ -46,7 +45,7 @@ TEST(MergeFeatures, ACorridorCutAcrossMeasuresAsWorkedOutByHand) {
   EXPECT_NEAR(feature(f, "shared_over_perimeter"), 0.25, 1e-9);  // 2 m of B's 8 m
   EXPECT_NEAR(feature(f, "min_end_angle"), 1.0, 1e-9);  // both ends in a straight wall: pi
   EXPECT_NEAR(feature(f, "max_end_angle"), 1.0, 1e-9);
-  EXPECT_NEAR(feature(f, "log_wall_continued"), 0.0, 1e-9);
+  EXPECT_NEAR(feature(f, "log_wall_continued_over_scale"), 0.0, 1e-9);
   EXPECT_NEAR(feature(f, "narrow_open_share"), 0.2, 1e-9);
   EXPECT_NEAR(feature(f, "wide_open_share"), 0.25, 1e-9);
   EXPECT_NEAR(feature(f, "union_thickness_over_narrow"), (2.0 * 10.0 / 14.0) / 1.2, 1e-9);
@@ -59,6 +58,34 @@ TEST(MergeFeatures, ACorridorCutAcrossMeasuresAsWorkedOutByHand) {
   EXPECT_EQ(feature(f, "narrow_unknown_share"), 0.0);
   EXPECT_EQ(feature(f, "wide_unknown_share"), 0.0);
   EXPECT_NEAR(feature(f, "cut_skew"), 0.0, 1e-9);  // across the corridor, square to its walls
+}
+
+TEST(MergeFeatures, TheComponentsScalesAreItsTypicalPieceAndCut) {
+  // Pieces 1.2 m and 1.0 m thick (A: 6 m², B: 4 m²): A holds more than half the area, so the
+  // area-weighted median is A's thickness; the one cut is 2 m long.
+  const PieceSet set = corridor_cut_across(CutRule::kDecomposition);
+  RoomGraph graph(PolygonWithHoles{}, set, cv::Mat(), kRes, 2.5);
+  EXPECT_NEAR(graph.piece_scale(), 1.2, 1e-9);
+  EXPECT_NEAR(graph.cut_scale(), 2.0, 1e-9);
+  const std::vector<double> f = merge_features(graph, 0, RoomMergeOptions{});
+  EXPECT_NEAR(feature(f, "log_cut_over_scale"), std::log(2.0 / 1.2), 1e-9);
+  EXPECT_NEAR(feature(f, "log_cut_over_cut_scale"), 0.0, 1e-9);
+  EXPECT_NEAR(feature(f, "log_narrow_area_over_scale"), std::log(6.0 / 1.44), 1e-9);
+  EXPECT_NEAR(feature(f, "narrow_thickness_over_scale"), 1.0, 1e-9);
+}
+
+TEST(MergeFeatures, TheFeaturesInTheComponentsScaleReadTheSameAtEverySize) {
+  // The same corridor at twice the cell size is twice as large: the lengths in metres move, the
+  // lengths in the component's own scale do not (a sketch drawn larger, a home's rooms beside an office's).
+  const PieceSet set = corridor_cut_across(CutRule::kDecomposition);
+  RoomGraph small(PolygonWithHoles{}, set, cv::Mat(), kRes, 2.5), large(PolygonWithHoles{}, set, cv::Mat(), 2.0 * kRes, 5.0);
+  const std::vector<double> a = merge_features(small, 0, RoomMergeOptions{}), b = merge_features(large, 0, RoomMergeOptions{});
+  EXPECT_NEAR(feature(b, "log_narrow_area") - feature(a, "log_narrow_area"), std::log(4.0), 1e-9);
+  for (const char* name : {"log_cut_over_scale", "log_cut_over_cut_scale", "log_narrow_width_over_scale",
+                           "log_narrow_width_over_cut_scale", "log_narrow_area_over_scale", "log_wide_area_over_scale",
+                           "narrow_thickness_over_scale", "wide_thickness_over_scale", "log_wall_continued_over_scale",
+                           "log_hole_extent_over_scale"})
+    EXPECT_NEAR(feature(a, name), feature(b, name), 1e-9) << name;
 }
 
 TEST(MergeFeatures, NoFeatureDependsOnTheRuleThatMadeTheCut) {

@@ -43,8 +43,8 @@ TEST(MergeModel, ALinearTermAndATreeAddUpInTheLogit) {
 TEST(MergeModel, BadTextIsAnErrorNamingTheLine) {
   const std::string head = "topocut-merge-model 1\n";
   for (const std::string& text :
-       {std::string("bias 0\n"), head + "no_such_feature 0 1 1\n", head + "log_cut_length 0 0 1\n",
-        head + "log_cut_length 0 1 1\nlog_cut_length 0 1 1\n", head + "bias nan\n", head + "tree\nleaf 1\n",
+       {std::string("bias 0\n"), head + "no_such_feature 0 1 1\n", head + "cut_skew 0 0 1\n",
+        head + "cut_skew 0 1 1\ncut_skew 0 1 1\n", head + "bias nan\n", head + "tree\nleaf 1\n",
         head + "tree\nsplit furniture_end 0.5 0 1\nleaf 1\nend\n", head + "tree\nsplit furniture_end 0.5 1 5\nleaf 1\nleaf 2\nend\n",
         head + "tree\nend\n", head + "bias 1 2\n"}) {
     EXPECT_THROW(parse_merge_model(text), Error) << text;
