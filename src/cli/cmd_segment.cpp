@@ -72,6 +72,7 @@ const char* const kDescription =
     "--no-doors, --no-merge, --no-simplify and the reference's --min-room-area, so it is given\n"
     "alone or with numbers (--concavity, --min-room-area, --robot-radius, ...) and --trivial; with\n"
     "a switch it already sets, or --cover-obstacles, it is a usage error.\n"
+    "`topocut rules` lists the pipeline's rows in order, with their --no-NAME switches.\n"
     "A ROS map_server YAML supplies its own resolution, origin and thresholds; for a plain image\n"
     "the palette is read from the image (free: the brightest grey; unknown: the grey covering the\n"
     "border; occupied: the darkest other grey; transparency is unknown) unless --fixed-thresholds.\n"

@@ -15,12 +15,14 @@
 #include "python/bindings.h"
 #include "python/options.h"
 #include "python/state.h"
+#include "topocut/core/option_names.h"
 #include "topocut/core/value_ranges.h"
 #include "topocut/io/atomic_file.h"
 #include "topocut/io/map_loader.h"
 #include "topocut/io/rooms_geojson.h"
 #include "topocut/io/rooms_json.h"
 #include "topocut/segmentation/room_at.h"
+#include "topocut/segmentation/segmentation_rules.h"
 #include "topocut/topocut.h"
 
 namespace topocut::python {
@@ -518,6 +520,21 @@ std::optional<cv::Mat> segment_labels_top_down(const py::handle& labels) {
   return top_down;
 }
 
+namespace {
+
+// The rule list's rows as (name, stage, keyword or None, what it does).
+py::list segmentation_rules_py() {
+  py::list rows;
+  for (const RuleListing& row : rule_listing(segmentation_rules())) {
+    py::object keyword = py::none();
+    if (!row.switch_name.empty()) keyword = py::str(underscored_option_name(row.switch_name));
+    rows.append(py::make_tuple(row.name, row.stage, keyword, row.does));
+  }
+  return rows;
+}
+
+}  // namespace
+
 void bind_segmentation(py::module_& m) {
   bind_results(m);
   m.def("segment", &segment_py, py::arg("grid"), py::arg("resolution") = 0.05, py::arg("origin") = py::make_tuple(0.0, 0.0, 0.0),
@@ -531,6 +548,10 @@ void bind_segmentation(py::module_& m) {
          segment_option_names() +
          ".\nReturns a Segmentation (labels in the grid's row order, rooms and passages in the map frame).\n"
          "Raises ValueError on bad input. The GIL is released while segmenting.").c_str());
+  m.def("segmentation_rules", &segmentation_rules_py,
+        "The pipeline segment() runs, one tuple a row in the order the rows run: (name, stage, switch, what it\n"
+        "does); switch is the keyword that turns the row off (no_NAME=True), or None: on with its stage. What\n"
+        "`topocut rules` prints.");
   m.def("load_options", &load_options_py, py::arg("path"),
         "The segmentation options of a robot's YAML file, read as `topocut segment --config FILE` reads them\n"
         "(the same keys, '_' or '-', the same checks and messages): a dict of segment()'s keywords, so\n"

@@ -36,6 +36,19 @@ def test_options_are_the_commands(cli, bundled_map, tmp_path):
     assert len(trivial.rooms) < len(result.rooms)
 
 
+def test_segmentation_rules_are_the_commands_list_and_its_switches(cli):
+    rows = topocut.segmentation_rules()
+    printed = subprocess.run([cli, "rules"], capture_output=True, text=True, check=True).stdout.splitlines()
+    assert [line.split()[0] for line in printed] == [name for name, _, _, _ in rows]
+    for line, (name, stage, keyword, does) in zip(printed, rows):
+        assert line.split()[1] == stage and line.endswith(does)
+        assert ("--no-" + name in line.split()) == (keyword is not None)
+    # Each keyword is a switch segment() takes.
+    keywords = [keyword for _, _, keyword, _ in rows if keyword is not None]
+    assert "no_merge" in keywords
+    topocut.segment(np.zeros((20, 20), np.int8), 0.05, **{keyword: True for keyword in keywords})
+
+
 def grey_image(occupancy):
     """The top-down grey picture of an int8 ROS grid: 255 free, 0 occupied, 128 unknown."""
     grey = np.where(occupancy == 0, 255, np.where(occupancy == 100, 0, 128)).astype(np.uint8)

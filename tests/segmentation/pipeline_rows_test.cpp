@@ -141,5 +141,39 @@ TEST(PipelineRows, ATraceListsOnlyWhatRanWhileItLived) {
   EXPECT_EQ(rows.back(), "room-kinds");
 }
 
+// The list describes each row (`topocut rules` prints it): what it does, its stage, and a switch's help
+// for the rows with one; one line each, the list's order and names.
+TEST(PipelineRows, TheListingIsTheListDescribed) {
+  const std::vector<SegmentationRule>& rules = segmentation_rules();
+  const std::vector<RuleListing> listing = rule_listing(rules);
+  ASSERT_EQ(listing.size(), rules.size());
+  const std::string text = rule_list_text(rules);
+  EXPECT_EQ(static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n')), rules.size());
+  std::size_t line = 0;
+  for (std::size_t i = 0; i < rules.size(); ++i) {
+    const SegmentationRule& rule = rules[i];
+    EXPECT_EQ(listing[i].name, rule.name);
+    EXPECT_EQ(listing[i].stage, to_string(rule.stage));
+    EXPECT_FALSE(rule.does.empty()) << rule.name;
+    EXPECT_EQ(rule.does.find('\n'), std::string::npos) << rule.name;
+    EXPECT_EQ(rule.help.empty(), !rule.turn_off) << rule.name << ": a switch has help, a row without one none";
+    const std::string switch_name = rule.turn_off ? "no-" + rule.name : "";
+    EXPECT_EQ(listing[i].switch_name, switch_name) << rule.name;
+    // Built piece by piece: GCC 12 warns falsely (-Wrestrict) on "literal" + a temporary string.
+    std::string stage = " ", switch_shown = " ";
+    stage += to_string(rule.stage);
+    stage += ' ';
+    switch_shown += switch_name.empty() ? "no switch" : "--" + switch_name;
+    switch_shown += ' ';
+    const std::size_t end = text.find('\n', line);
+    const std::string row = text.substr(line, end - line);
+    EXPECT_EQ(row.rfind(rule.name + " ", 0), 0u) << row;
+    EXPECT_NE(row.find(stage), std::string::npos) << row;
+    EXPECT_NE(row.find(switch_shown), std::string::npos) << row;
+    EXPECT_EQ(row.substr(row.size() - rule.does.size()), rule.does) << row;
+    line = end + 1;
+  }
+}
+
 }  // namespace
 }  // namespace topocut

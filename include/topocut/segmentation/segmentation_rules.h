@@ -9,43 +9,13 @@
 // (tests/segmentation/merging/merge_rule_row_test.cpp adds a merge criterion that way,
 // tests/segmentation/pipeline_rows_test.cpp checks that both schedules run the rows in order).
 //
-//   row             where it lives (src/)                    what it does
-//   clean           map/free_space_cleaning.cpp              ray fans, slivers and specks out of the free space
-//   simplify        map/simplify.cpp                         stair steps of each component's outline
-//   doors           segmentation/cuts/door_cuts.cpp          cuts across narrow passages
-//   wall-openings   segmentation/cuts/wall_openings.cpp      thin walls continued to the next obstacle
-//   island-cuts     segmentation/cuts/island_cuts.cpp        cuts onto free-standing pieces of wall
-//   wall-lines      segmentation/cuts/wall_lines.cpp         straight walls continued across wide openings
-//   decomposition   decomposition/decompose.cpp              DuDe at oversegment x tau on each part the cuts
-//                                                            leave (--trivial: neither the cuts nor this, the
-//                                                            component is one piece)
-//   merge           segmentation/merging/room_merging.cpp    on each component: pieces joined into rooms across
-//                                                            the cuts the criteria below merge, the highest
-//                                                            priority first
-//   corridor-rule   segmentation/merging/merge_criteria.cpp  criterion (learned merging): a corridor going on merges
-//   learned-merge   segmentation/merging/merge_criteria.cpp  criterion: the model's probability (off: the hand rules)
-//   door-cuts       segmentation/merging/merge_criteria.cpp  criterion (hand rules): a door rule's cut stays
-//   furniture-rule  segmentation/merging/merge_criteria.cpp  criterion (hand rules): cuts ending on furniture merge
-//   width-steps     segmentation/merging/merge_criteria.cpp  criterion (hand rules): a room opening onto a much
-//                                                            wider space
-//   door-ratio      segmentation/merging/merge_criteria.cpp  criterion (hand rules): a cut spanning the narrower
-//                                                            room merges
-//   fold            segmentation/merging/room_merging.cpp    on each component: rooms too small or thin folded
-//   fragments       segmentation/merging/room_merging.cpp    on each component (learned merging): small rooms bounded
-//                                                            by never-seen cells behind a gap folded (scraps)
-//   bays            segmentation/merging/room_merging.cpp    on each component (learned merging): rooms cut off a much
-//                                                            larger room along much of their outline join it
-//   open-rooms      segmentation/merging/open_rooms.cpp      on all rooms: rooms bounded mostly by never-seen
-//                                                            space join their neighbour (with none beside them,
-//                                                            outside the building: left out)
-//   labelling       segmentation/rooms/rooms_from_pieces.cpp the rooms' label image, outlines and passages
-//   door-flags      segmentation/passage_kind.h              passages at most --door-width wide are doors
-//   room-kinds      segmentation/rooms/room_kinds.cpp        corridor or room (whole map only: the incremental
-//                                                            update measures the rooms it changed itself)
-//
-// The public headers of these files are flat in include/topocut/ (segmentation/door_cuts.h, ...).
-// decomposition, door-cuts, door-ratio, fold, labelling, door-flags and room-kinds have no switch
-// (their numbers are options of their stage); door-cuts, door-ratio and fold follow merge.
+// `topocut rules` prints the list, one row a line in order: its name, its stage, its switch and what
+// it does (rule_listing(); Python's topocut.segmentation_rules()). Each row names the function it runs;
+// the function's file is where its stage keeps such files (src/map/ for clean and simplify,
+// src/segmentation/cuts/, src/decomposition/, src/segmentation/merging/, src/segmentation/rooms/),
+// its public header flat in include/topocut/ (segmentation/door_cuts.h, ...). The rows without a
+// switch are on with their stage (their numbers are options of their stage); door-cuts, door-ratio
+// and fold follow merge.
 #include <functional>
 #include <string>
 #include <vector>
@@ -79,7 +49,8 @@ struct ComponentMerge;  // one component's rooms as they merge (internal: src/se
 struct SegmentationRule {
   std::string name;  // switch --no-NAME (rules with a turn_off)
   RuleStage stage = RuleStage::kCut;
-  std::string help;  // what switching it off does (a row without a switch: what it does), one line
+  std::string does;  // what the row does, one line: the rule list's description of it
+  std::string help;  // rows with a switch: what switching it off does, one line (the switch's help)
   std::function<bool(const SegmentOptions&)> is_on;
   std::function<void(SegmentOptions&)> turn_off;  // empty: no switch, the rule is on with the stage
   // kClean: the free space (255 = free) cleaned, given the grid's cells as the sensor saw them
@@ -113,6 +84,23 @@ struct SegmentationRule {
 
 // Every row, in the order segment() runs them.
 const std::vector<SegmentationRule>& segmentation_rules();
+
+// The stage's name as the rule list shows it: "clean", "outline", "cut", "decompose", "merge", "rooms",
+// "label" or "describe".
+std::string to_string(RuleStage stage);
+
+// One row as the rule list shows it.
+struct RuleListing {
+  std::string name, stage;
+  std::string switch_name;  // "no-NAME"; empty: no switch, on with its stage
+  std::string does;
+};
+
+// rules as a reader sees them, in their order.
+std::vector<RuleListing> rule_listing(const std::vector<SegmentationRule>& rules);
+
+// rule_listing(rules) as text, one line a row in columns: name, stage, --no-NAME or "no switch", what it does.
+std::string rule_list_text(const std::vector<SegmentationRule>& rules);
 
 // The rule named name, or nullptr.
 const SegmentationRule* find_segmentation_rule(const std::string& name);

@@ -35,6 +35,7 @@ from ._topocut import (
     load_options,
     lt,
     merge_feature_names,
+    segmentation_rules,
     sef,
     smf,
 )
@@ -42,7 +43,7 @@ from ._topocut import (
 __all__ = [
     "IncrementalSegmenter", "Map", "Passage", "Room", "Scores", "Segmentation", "ale", "decompose", "evaluate",
     "extract_lines", "iepf", "load_map", "load_options", "lt", "merge_feature_names", "merge_training_rows", "segment",
-    "sef", "simulate_map", "smf",
+    "segmentation_rules", "sef", "simulate_map", "smf",
 ]
 
 _TYPES = {"bool": bool, "int": int, "float": float, "str": str, "str | None": _typing.Optional[str]}

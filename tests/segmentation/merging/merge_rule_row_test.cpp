@@ -4,8 +4,9 @@
 //      contract comment (merge_criteria.h says what a verdict is and what a candidate measures);
 //   2. its test, tests/segmentation/merging/NAME_test.cpp, reaching it through its row
 //      (find_segmentation_rule("NAME")->judge, or merge_rooms() and segment() as shipped);
-//   3. its row in make_rules() (src/segmentation/segmentation_rules.cpp), beside a declaration of the
-//      function, placed where it is to be asked: before learned-merge to overrule the model, after it
+//   3. its row in make_rules() (src/segmentation/segmentation_rules.cpp): name, stage, what it does (the
+//      line `topocut rules` prints), is_on, judge, and with a switch turn_off and its help; beside a
+//      declaration of the function, placed where it is to be asked: before learned-merge to overrule the model, after it
 //      to decide with the hand rules only. A row with a turn_off gets its switch (--no-NAME in every
 //      front end, --parity, the ablation) from the list; a switch of its own needs a field in
 //      RoomMergeOptions to read and clear (a fourth file), a rule on with the merging (is_on: merge) none.
@@ -34,7 +35,7 @@ SegmentationRule door_wide_row(const bool* on) {
   SegmentationRule row;
   row.name = "door-wide-cuts";
   row.stage = RuleStage::kMerge;
-  row.help = "a cut no wider than a door may merge its rooms";
+  row.does = "criterion: a cut no wider than a door keeps its rooms apart";
   row.is_on = [on](const SegmentOptions&) { return *on; };
   row.judge = door_wide_cuts_stay;
   return row;
@@ -83,6 +84,29 @@ TEST(MergeRuleRow, TheHandRulesAfterTheModelDecideWithoutIt) {
   EXPECT_EQ(two.rooms(segmentation_rules()), 1u);
   bool on = true;
   EXPECT_EQ(two.rooms(with_row(door_wide_row(&on), "door-ratio")), 2u);
+}
+
+// The rule list describes itself: the new row is listed where it runs, with what it does, and no
+// table kept by hand needs a line for it.
+TEST(MergeRuleRow, ANewRowIsListedWhereItRuns) {
+  bool on = true;
+  const std::vector<SegmentationRule> rules = with_row(door_wide_row(&on), "learned-merge");
+  const std::vector<RuleListing> listing = rule_listing(rules);
+  ASSERT_EQ(listing.size(), segmentation_rules().size() + 1);
+  const auto at = std::find_if(listing.begin(), listing.end(), [](const RuleListing& r) { return r.name == "door-wide-cuts"; });
+  ASSERT_NE(at, listing.end());
+  EXPECT_EQ(std::next(at)->name, "learned-merge");
+  EXPECT_EQ(at->stage, "merge");
+  EXPECT_EQ(at->switch_name, "");  // no turn_off: no switch
+  EXPECT_EQ(at->does, "criterion: a cut no wider than a door keeps its rooms apart");
+  const std::string text = rule_list_text(rules);
+  const std::size_t line = text.find("door-wide-cuts ");
+  ASSERT_NE(line, std::string::npos) << text;
+  EXPECT_LT(line, text.find("learned-merge "));
+  const std::string row = text.substr(line, text.find('\n', line) - line);
+  EXPECT_NE(row.find(" merge "), std::string::npos) << row;
+  EXPECT_NE(row.find(" no switch "), std::string::npos) << row;
+  EXPECT_TRUE(row.ends_with(" criterion: a cut no wider than a door keeps its rooms apart")) << row;
 }
 
 }  // namespace
