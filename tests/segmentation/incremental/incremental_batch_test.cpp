@@ -212,16 +212,20 @@ TEST(IncrementalBatch, AWallLessStripGrowingIsLabelledAsBatchLabelsIt) {
   EXPECT_EQ(cv::countNonZero(after_nothing.result().labels), 185 * 9);
 }
 
+// A map of size never seen but for a corridor along its top edge, length cells long and 10 wide
+// (thinner than a person), walled along its top and at its left end only.
+OccupancyGrid thin_strip(cv::Size size, int length) {
+  OccupancyGrid g{cv::Mat(size, CV_8UC1, cv::Scalar(kUnknown)), 0.05, {0.0, 0.0}};
+  g.cells(cv::Rect(0, 0, length, 1)).setTo(kOccupied);
+  g.cells(cv::Rect(0, 0, 1, 11)).setTo(kOccupied);
+  g.cells(cv::Rect(1, 1, length - 1, 10)).setTo(kFree);
+  return g;
+}
+
 TEST(IncrementalBatch, AThinStripRunningOutOfTheWindowIsJudgedOnTheWholeMap) {
-  // A corridor 10 cells wide (thinner than a person) with a wall on one side only, seen further
-  // along: whether it is a ray depends on all of it, not on the window around the change.
-  const auto strip = [](int length) {
-    OccupancyGrid g{cv::Mat(22, 295, CV_8UC1, cv::Scalar(kUnknown)), 0.05, {0.0, 0.0}};
-    g.cells(cv::Rect(0, 0, length, 1)).setTo(kOccupied);
-    g.cells(cv::Rect(0, 0, 1, 11)).setTo(kOccupied);
-    g.cells(cv::Rect(1, 1, length - 1, 10)).setTo(kFree);
-    return g;
-  };
+  // The strip seen further along: whether it is a ray depends on all of it, not on the window around
+  // the change.
+  const auto strip = [](int length) { return thin_strip({295, 22}, length); };
   IncrementalSegmenter segmenter;
   segmenter.update(strip(193));
   const OccupancyGrid longer = strip(216);
@@ -236,10 +240,7 @@ TEST(IncrementalBatch, AThinStripRunningOutOfTheWindowIsJudgedInAWindowGrownToHo
   // alone would judge it a ray (the context's edge reads as never seen). The window grows to hold the
   // strip: the update stays windowed and labels what segment() labels.
   const auto map = [](int length) {
-    OccupancyGrid g{cv::Mat(200, 700, CV_8UC1, cv::Scalar(kUnknown)), 0.05, {0.0, 0.0}};
-    g.cells(cv::Rect(0, 0, length, 1)).setTo(kOccupied);
-    g.cells(cv::Rect(0, 0, 1, 11)).setTo(kOccupied);
-    g.cells(cv::Rect(1, 1, length - 1, 10)).setTo(kFree);
+    OccupancyGrid g = thin_strip({700, 200}, length);
     g.cells(cv::Rect(100, 100, 120, 90)).setTo(kOccupied);
     g.cells(cv::Rect(104, 104, 112, 82)).setTo(kFree);
     return g;
