@@ -71,6 +71,9 @@ const std::vector<OptionRow<RoomMergeOptions>>& room_merge_option_rows() {
                 "rooms whose widest chord along any cut is narrower (metres) fold the same way (0: off)"),
       field_row("fold-thickness", "M", OptionRange::kLengthOrZero, &R::min_room_thickness,
                 "(hand rules) rooms thinner than this (metres, 2 area / perimeter) fold the same way"),
+      field_row("sliver-thickness", "M", OptionRange::kLengthOrZero, &R::sliver_thickness,
+                "(learned merging) rooms thinner than this (metres, 2 area / perimeter) fold the same way: slivers, "
+                "not closets (0: off)"),
       field_row("fragment-area", "M2", OptionRange::kArea, &R::fragment_area,
                 "(learned merging) rooms smaller than this (m²), bounded more by never-seen cells than by walls and "
                 "entered through a gap narrower than fragment-gap, fold the same way (0: off)"),

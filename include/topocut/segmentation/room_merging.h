@@ -62,6 +62,11 @@ struct RoomMergeOptions {
   // fold the same way. 0.6 m is a person's width, the disc the defect count uses. The learned
   // criterion weighs thin rooms itself (closets behind a door are thin and are rooms).
   double min_room_thickness = 0.6;
+  // (Learned merging) metres of thickness: thinner rooms fold the same way. A sliver thinner than half
+  // a person (a ragged scrap beside a door, the rim of a room between two cuts) is no room, however
+  // sure the model is of the door-like cut beside it; a closet, thin as it is, is thicker (a 0.5 m x
+  // 2 m one is 0.4 m). 0: off.
+  double sliver_thickness = 0.3;
   // Metres: an obstacle whose box is at most this long both ways is furniture: a feature of the
   // learned criterion, and for the hand rules a cut ending on it separates no rooms (a room does not
   // end at a table). 0: no obstacle is furniture.

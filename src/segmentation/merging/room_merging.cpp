@@ -238,7 +238,8 @@ void fold_small_rooms(ComponentMerge& merge) {
   fold_rooms(g, [&](int r) {
     return g.room_area(r) < options.min_room_area ||
            (options.min_room_width > 0.0 && room_width(g, r, options.door_like.width_depth) < options.min_room_width) ||
-           (!options.learned && options.min_room_thickness > 0.0 && g.room_thickness(r) < options.min_room_thickness);
+           (!options.learned && options.min_room_thickness > 0.0 && g.room_thickness(r) < options.min_room_thickness) ||
+           (options.learned && options.sliver_thickness > 0.0 && g.room_thickness(r) < options.sliver_thickness);
   });
 }
 
