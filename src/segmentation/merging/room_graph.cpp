@@ -224,6 +224,16 @@ void RoomGraph::measure_scales() {
 
 namespace {
 
+// The cell holding point p of the grid coordinates the pieces are in (x = column, y = rows-1-row at
+// the cells' centres, as free_space_polygons() writes them), kUnknown beyond the grid. Reading row
+// floor(y) instead read the map upside down, half a cell off: a small room walled all round measured
+// its outline mostly against whatever the mirrored map had there.
+int cell_at(const cv::Mat& cells, const Point2& p) {
+  const int c = static_cast<int>(std::floor(p.x + 0.5)), r = cells.rows - 1 - static_cast<int>(std::floor(p.y + 0.5));
+  if (c < 0 || r < 0 || c >= cells.cols || r >= cells.rows) return kUnknown;
+  return cells.at<unsigned char>(r, c);
+}
+
 // What lies just outside a piece's wall edge a -> b (grid coordinates): the occupied and never-seen
 // lengths (cells) of the edge, sampled a cell apart. Outside is the side whose cell is not free (the
 // piece's own side is floor); an edge with floor on both sides (a cleaned-away strip) counts as neither.
@@ -233,11 +243,7 @@ void classify_edge(const cv::Mat& cells, const Point2& a, const Point2& b, doubl
   const Point2 n{-(b.y - a.y) / length, (b.x - a.x) / length};
   const int samples = std::max(1, static_cast<int>(std::lround(length)));
   const double step = length / samples;
-  auto cell = [&cells](double x, double y) -> int {
-    const int c = static_cast<int>(std::floor(x)), r = static_cast<int>(std::floor(y));
-    if (c < 0 || r < 0 || c >= cells.cols || r >= cells.rows) return kUnknown;
-    return cells.at<unsigned char>(r, c);
-  };
+  auto cell = [&cells](double x, double y) { return cell_at(cells, {x, y}); };
   for (int i = 0; i < samples; ++i) {
     const double t = (i + 0.5) / samples;
     const Point2 p{a.x + (b.x - a.x) * t, a.y + (b.y - a.y) * t};

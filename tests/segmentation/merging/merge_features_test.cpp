@@ -102,8 +102,11 @@ TEST(MergeFeatures, OutlinesAgainstNeverSeenCellsAreMeasuredFromTheGrid) {
   cells(cv::Rect(10, 10, 100, 40)).setTo(kFree);
   cells(cv::Rect(110, 0, 10, 60)).setTo(kUnknown);
   PieceSet set;
-  set.pieces = {{{{10, 10}, {70, 10}, {70, 50}, {10, 50}}, {}}, {{{70, 10}, {110, 10}, {110, 50}, {70, 50}}, {}}};
-  set.add_cut({{70, 10}, {70, 50}}, CutRule::kDecomposition);
+  // In the grid coordinates the segmenter traces outlines in (x = column, y = rows-1-row at the cells'
+  // centres), the free cells' outline runs half a cell outside their centres.
+  set.pieces = {{{{9.5, 9.5}, {69.5, 9.5}, {69.5, 49.5}, {9.5, 49.5}}, {}},
+                {{{69.5, 9.5}, {109.5, 9.5}, {109.5, 49.5}, {69.5, 49.5}}, {}}};
+  set.add_cut({{69.5, 9.5}, {69.5, 49.5}}, CutRule::kDecomposition);
   RoomGraph graph(PolygonWithHoles{}, set, cells, kRes, 2.5);
   const std::vector<double> f = merge_features(graph, 0, RoomMergeOptions{});
   EXPECT_NEAR(feature(f, "wide_unknown_share"), 0.25, 1e-9);

@@ -5,6 +5,9 @@
 
 #include <gtest/gtest.h>
 
+#include "topocut/core/occupancy_grid.h"
+#include "topocut/map/free_space_polygons.h"
+
 namespace topocut {
 namespace {
 
@@ -69,6 +72,37 @@ TEST(RoomGraph, ARoomsCutsAndMeasuresAreThoseOfEveryCutBesideIt) {
   EXPECT_NEAR(g.room_perimeter(g.root(0)), 8.0, 1e-12);
   // Between that room and the room of pieces 2 and 9: the cut from 1 to 2 and the one from 1 to 9.
   EXPECT_NEAR(g.shared_cut_length(g.root(0), g.root(2)), 2.0, 1e-12);
+}
+
+// A room of 5 m x 1 m in the upper half of a 120 x 60 grid of walls (columns 10..109, rows 5..24),
+// never-seen cells beyond its right end (columns 110..119 of the upper half), and a never-seen band
+// where the room's mirror image would be (rows 35..54): the outline must be read where the room is.
+// Its outline as the segmenter traces it, cut by hand 3 m from the left end into A and B.
+TEST(RoomGraph, OutlinesAreMeasuredAgainstTheCellsBesideThemInTheTracedFrame) {
+  cv::Mat cells(60, 120, CV_8UC1, cv::Scalar(kOccupied));
+  cells(cv::Rect(10, 5, 100, 20)).setTo(kFree);
+  cells(cv::Rect(110, 0, 10, 30)).setTo(kUnknown);
+  cells(cv::Rect(0, 35, 120, 20)).setTo(kUnknown);
+  const FreeSpacePolygons traced = free_space_polygons(cells == kFree, kRes);
+  ASSERT_EQ(traced.components.size(), 1u);
+  const Box box = bounding_box(traced.components[0].polygon.outer);
+  // Grid coordinates: x = column, y = rows-1-row at the cells' centres; the outline on the cells' edges.
+  ASSERT_EQ(box.x0, 9.5);
+  ASSERT_EQ(box.x1, 109.5);
+  ASSERT_EQ(box.y0, 34.5);
+  ASSERT_EQ(box.y1, 54.5);
+  const double cut = 69.5;  // between columns 69 and 70
+  PieceSet set;
+  set.pieces = {{{{box.x0, box.y0}, {cut, box.y0}, {cut, box.y1}, {box.x0, box.y1}}, {}},
+                {{{cut, box.y0}, {box.x1, box.y0}, {box.x1, box.y1}, {cut, box.y1}}, {}}};
+  set.add_cut({{cut, box.y0}, {cut, box.y1}}, CutRule::kDecomposition);
+  RoomGraph g(traced.components[0].polygon, set, cells, kRes, 2.5);
+  // A: 3 m + 3 m + 1 m of wall in 8 m of outline, the other 1 m the cut.
+  EXPECT_NEAR(g.wall_share(g.root(0)), 7.0 / 8.0, 1e-9);
+  EXPECT_NEAR(g.unknown_share(g.root(0)), 0.0, 1e-9);
+  // B: 2 m + 2 m of wall and its 1 m end against never-seen cells in 6 m.
+  EXPECT_NEAR(g.wall_share(g.root(1)), 4.0 / 6.0, 1e-9);
+  EXPECT_NEAR(g.unknown_share(g.root(1)), 1.0 / 6.0, 1e-9);
 }
 
 }  // namespace
