@@ -31,9 +31,9 @@ const std::vector<std::string>& merge_feature_names() {
       "log_union_elongation",         // log of the union's elongation
       "ends_on_holes",                // ends of the cut on an obstacle inside the free space (0, 1 or 2);
                                       //   its extent is log_hole_extent_over_scale below
-      "narrow_wall_share",            // the narrow room's outline along occupied cells / its perimeter
+      "narrow_wall_share",            // the narrow room's outline along occupied cells / its outline but cuts
       "wide_wall_share",              // the same of the wide room
-      "narrow_unknown_share",         // the narrow room's outline along never-seen cells / its perimeter
+      "narrow_unknown_share",         // the narrow room's outline along never-seen cells / the same
       "wide_unknown_share",           // the same of the wide room
       "cut_skew",                     // the cut's angle to the walls at its ends / (pi / 4): 0 along or
                                       //   across them, 1 a diagonal

@@ -69,10 +69,12 @@ class RoomGraph {
   // The rooms' elongation together: the square root of the ratio of the principal second moments
   // of their area (1 for a square or a disc, about L / W for an L x W strip).
   double elongation(const std::vector<int>& rooms);
-  // Share of room r's perimeter (room_perimeter()) that runs along occupied cells (walls, furniture),
-  // and along never-seen cells (the sensor saw no wall there: a ray fan's rim, an opening to the dark).
+  // Share of room r's own outline (own_outline(): its perimeter but the cuts to other rooms) that runs
+  // along occupied cells (walls, furniture), and along never-seen cells (the sensor saw no wall there:
+  // a ray fan's rim, an opening to the dark).
   double wall_share(int r);
   double unknown_share(int r);
+  double own_outline(int r);  // m
   // Whether the grid holds an occupied cell (or is not known): without, the map draws its walls in the
   // never-seen grey, and walls cannot be told from the dark. Looked at when first asked.
   bool walls_seen();

@@ -97,12 +97,13 @@ TEST(RoomGraph, OutlinesAreMeasuredAgainstTheCellsBesideThemInTheTracedFrame) {
                 {{{cut, box.y0}, {box.x1, box.y0}, {box.x1, box.y1}, {cut, box.y1}}, {}}};
   set.add_cut({{cut, box.y0}, {cut, box.y1}}, CutRule::kDecomposition);
   RoomGraph g(traced.components[0].polygon, set, cells, kRes, 2.5);
-  // A: 3 m + 3 m + 1 m of wall in 8 m of outline, the other 1 m the cut.
-  EXPECT_NEAR(g.wall_share(g.root(0)), 7.0 / 8.0, 1e-9);
+  // A: 3 m + 3 m + 1 m of wall: all of its 8 m of outline but the 1 m cut.
+  EXPECT_NEAR(g.own_outline(g.root(0)), 7.0, 1e-9);
+  EXPECT_NEAR(g.wall_share(g.root(0)), 1.0, 1e-9);
   EXPECT_NEAR(g.unknown_share(g.root(0)), 0.0, 1e-9);
-  // B: 2 m + 2 m of wall and its 1 m end against never-seen cells in 6 m.
-  EXPECT_NEAR(g.wall_share(g.root(1)), 4.0 / 6.0, 1e-9);
-  EXPECT_NEAR(g.unknown_share(g.root(1)), 1.0 / 6.0, 1e-9);
+  // B: 2 m + 2 m of wall and its 1 m end against never-seen cells, in the 5 m that are no cut.
+  EXPECT_NEAR(g.wall_share(g.root(1)), 4.0 / 5.0, 1e-9);
+  EXPECT_NEAR(g.unknown_share(g.root(1)), 1.0 / 5.0, 1e-9);
 }
 
 }  // namespace
