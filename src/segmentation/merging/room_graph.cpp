@@ -201,12 +201,13 @@ RoomGraph::RoomGraph(const PolygonWithHoles& polygon, const PieceSet& set, const
 // the slivers beside furniture and doors leave the pieces' scale where the rooms and corridors put it.
 // A piece's thickness here is 2 area / the perimeter of its convex hull: a robot's map draws walls
 // ragged and obstacles as specks, which lengthen the outline without changing the room, and 2 area /
-// outline put the same homes' scale at 0.7 of their plans' (seed to seed 0.7 to 1.3).
+// outline put the same homes' scale at 0.7 of their plans' (seed to seed 0.7 to 1.3). The hulls are
+// the pieces' room_hull(), kept for the candidates' convexity.
 void RoomGraph::measure_scales() {
   std::vector<std::pair<double, double>> thickness;  // (2 area / hull perimeter, area)
   double total = 0.0;
   for (std::size_t i = 0; i < areas_.size(); ++i) {
-    const double hull = perimeter(hull_of(set_.pieces[i].outer)) * resolution_;
+    const double hull = perimeter(room_hull(static_cast<int>(i))) * resolution_;
     if (hull <= 0.0) continue;
     thickness.emplace_back(2.0 * areas_[i] / hull, areas_[i]);
     total += areas_[i];
@@ -293,24 +294,28 @@ void RoomGraph::measure_outlines(const Edges& edges, const cv::Mat& cells) {
 // much of it is open (the open share): on a drawn plan every such outline is wall, whatever the cuts.
 double RoomGraph::own_outline(int r) { return room_perimeter(r) - shared_cut_length(r, -1); }
 
-double RoomGraph::wall_share(int r) {
+double RoomGraph::wall_length(int r) {
   double length = 0.0;
   for (const int member : members(r)) length += wall_lengths_[static_cast<std::size_t>(member)];
-  const double outline = own_outline(r);
-  return outline > 0.0 ? std::min(length / outline, 1.0) : 0.0;
+  return length;
 }
+
+double RoomGraph::unknown_length(int r) {
+  double length = 0.0;
+  for (const int member : members(r)) length += unknown_lengths_[static_cast<std::size_t>(member)];
+  return length;
+}
+
+double outline_share(double length, double outline) { return outline > 0.0 ? std::min(length / outline, 1.0) : 0.0; }
+
+double RoomGraph::wall_share(int r) { return outline_share(wall_length(r), own_outline(r)); }
 
 bool RoomGraph::walls_seen() {
   if (!walls_seen_) walls_seen_ = cells_.empty() || cv::countNonZero(cells_ == kOccupied) > 0;
   return *walls_seen_;
 }
 
-double RoomGraph::unknown_share(int r) {
-  double length = 0.0;
-  for (const int member : members(r)) length += unknown_lengths_[static_cast<std::size_t>(member)];
-  const double outline = own_outline(r);
-  return outline > 0.0 ? std::min(length / outline, 1.0) : 0.0;
-}
+double RoomGraph::unknown_share(int r) { return outline_share(unknown_length(r), own_outline(r)); }
 
 // The free-space angle at each cut end, and the wall edges there that the cut continues: pieces meet
 // only at shared vertices, so the interior angles of the pieces having the end as a vertex add up to

@@ -75,6 +75,10 @@ class RoomGraph {
   double wall_share(int r);
   double unknown_share(int r);
   double own_outline(int r);  // m
+  // The lengths (m) of room r's outline along occupied and along never-seen cells: the shares'
+  // numerators, for a caller that has the outline already.
+  double wall_length(int r);
+  double unknown_length(int r);
   // Whether the grid holds an occupied cell (or is not known): without, the map draws its walls in the
   // never-seen grey, and walls cannot be told from the dark. Looked at when first asked.
   bool walls_seen();
@@ -137,6 +141,9 @@ class RoomGraph {
   };
   std::vector<SideWidth> side_widths_;  // 2 k: left of cut k, 2 k + 1: right
 };
+
+// A length along a room's outline over the outline (RoomGraph::own_outline()), at most 1; 0 without one.
+double outline_share(double length, double outline);
 
 }  // namespace topocut
 
