@@ -471,7 +471,7 @@ double RoomGraph::room_area(int r) {
   return it != area_sum_.end() ? it->second : areas_[static_cast<std::size_t>(r)];
 }
 
-const RoomGraph::RoomMeasures& RoomGraph::measures(int r) {
+RoomGraph::RoomMeasures& RoomGraph::measures(int r) {
   RoomMeasures& m = room_measures_[static_cast<std::size_t>(r)];
   if (m.pieces == members(r).size()) return m;
   m.pieces = members(r).size();
@@ -483,6 +483,7 @@ const RoomGraph::RoomMeasures& RoomGraph::measures(int r) {
   // Ascending, so that sums over them add in the order of the cuts, as they always did.
   std::sort(m.sides.begin(), m.sides.end());
   m.sides.erase(std::unique(m.sides.begin(), m.sides.end()), m.sides.end());
+  m.hull_area.reset();
   m.perimeter = 0.0;
   for (const int member : members(r)) m.perimeter += perimeters_[static_cast<std::size_t>(member)];
   m.open = 0.0;
@@ -516,14 +517,21 @@ const std::vector<Point2>& RoomGraph::room_hull(int r) {
 }
 
 double RoomGraph::convex_hull_area(const std::vector<int>& rooms) {
+  if (rooms.size() == 1) {
+    std::optional<double>& known = measures(rooms[0]).hull_area;
+    if (!known) {
+      const std::vector<Point2>& hull = room_hull(rooms[0]);
+      known = hull.size() < 3 ? 0.0 : std::abs(signed_area(hull)) * resolution_ * resolution_;
+    }
+    return *known;
+  }
   std::vector<Point2> points;
   for (const int r : rooms) {
     const std::vector<Point2>& hull = room_hull(r);
     points.insert(points.end(), hull.begin(), hull.end());
   }
   if (points.size() < 3) return 0.0;
-  const std::vector<Point2> hull = rooms.size() == 1 ? points : hull_of(points);
-  return std::abs(signed_area(hull)) * resolution_ * resolution_;
+  return std::abs(signed_area(hull_of(points))) * resolution_ * resolution_;
 }
 
 double RoomGraph::elongation(const std::vector<int>& rooms) {
@@ -554,8 +562,9 @@ double RoomGraph::shared_cut_length(int r, int s) {
 }
 
 double RoomGraph::chord(int r, const Point2& p, const Point2& u) {
-  std::vector<std::pair<double, double>> spans;
-  std::vector<double> ts;
+  std::vector<std::pair<double, double>>& spans = chord_spans_;
+  std::vector<double>& ts = chord_ts_;
+  spans.clear();
   const Point2 n{-u.y, u.x};
   for (const int member : members(r)) {
     const std::size_t i = static_cast<std::size_t>(member);

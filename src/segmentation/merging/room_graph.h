@@ -101,6 +101,8 @@ class RoomGraph {
   void measure_scales();
   void measure_outlines(const Edges& edges, const cv::Mat& cells);
   double chord(int r, const Point2& p, const Point2& u);
+  std::vector<double> chord_ts_;  // chord()'s crossings and spans, kept to spare their allocations
+  std::vector<std::pair<double, double>> chord_spans_;
   double measure_side_width(std::size_t k, int r, bool left, double depth);
 
   const PieceSet& set_;
@@ -144,9 +146,10 @@ class RoomGraph {
     std::size_t pieces = 0;  // 0: not measured yet
     std::vector<std::size_t> sides;
     double perimeter = 0.0, open = 0.0;  // m: room_perimeter(), shared_cut_length(r, -1)
+    std::optional<double> hull_area;     // m²: convex_hull_area({r}), when first asked
   };
   std::vector<RoomMeasures> room_measures_;
-  const RoomMeasures& measures(int r);
+  RoomMeasures& measures(int r);  // r's, measured again when it grew
 };
 
 }  // namespace topocut
