@@ -4,6 +4,7 @@
 #include <array>
 #include <charconv>
 #include <cmath>
+#include <cstdint>
 #include <optional>
 #include <sstream>
 #include <string_view>
@@ -19,32 +20,68 @@ extern const char* const kShippedMergeModelText;
 
 namespace {
 
-// Whether token is a plain decimal number ([-]digits[.digits][(e|E)[+|-]digits]), which the stream
-// would read whole, to the same double (both round correctly).
-bool plain_decimal(std::string_view token) {
+// A plain decimal number ([-]digits[.digits][(e|E)[+|-]digits]), which the stream would read whole,
+// to the same double (both round correctly): its digits as an integer (while at most 2^53, else
+// exact is false) and the power of ten they are scaled by.
+struct PlainDecimal {
+  bool negative = false, exact = true;
+  std::uint64_t digits = 0;
+  int power = 0;
+};
+
+// token as a plain decimal, or nullopt for any other spelling; one pass over its characters.
+std::optional<PlainDecimal> plain_decimal(std::string_view token) {
+  constexpr std::uint64_t kMaxExact = std::uint64_t{1} << 53;
+  PlainDecimal d;
   std::size_t i = 0;
-  auto digits = [&] {
+  auto digits = [&](bool fraction) {
     const std::size_t start = i;
-    while (i < token.size() && token[i] >= '0' && token[i] <= '9') ++i;
+    for (; i < token.size() && token[i] >= '0' && token[i] <= '9'; ++i) {
+      if (d.digits > kMaxExact) {
+        d.exact = false;
+        continue;
+      }
+      d.digits = d.digits * 10 + static_cast<std::uint64_t>(token[i] - '0');  // below 2^64: 10 * 2^53 + 9
+      if (fraction) --d.power;
+    }
     return i > start;
   };
-  if (i < token.size() && token[i] == '-') ++i;
-  if (!digits()) return false;
+  d.negative = !token.empty() && token[0] == '-';
+  if (d.negative) ++i;
+  if (!digits(false)) return std::nullopt;
   if (i < token.size() && token[i] == '.') {
     ++i;
-    if (!digits()) return false;
+    if (!digits(true)) return std::nullopt;
   }
   if (i < token.size() && (token[i] == 'e' || token[i] == 'E')) {
     ++i;
+    const bool below = i < token.size() && token[i] == '-';
     if (i < token.size() && (token[i] == '+' || token[i] == '-')) ++i;
-    if (!digits()) return false;
+    const std::size_t start = i;
+    int e = 0;
+    for (; i < token.size() && token[i] >= '0' && token[i] <= '9'; ++i) e = std::min(e * 10 + (token[i] - '0'), 100000);
+    if (i == start) return std::nullopt;
+    d.power += below ? -e : e;
   }
-  return i == token.size();
+  if (i != token.size()) return std::nullopt;
+  return d;
 }
 
-// Whether token is a plain decimal (plain_decimal()) of a finite double, converted into value.
+// Whether token is a plain decimal (plain_decimal()) of a finite double, converted into value. By the
+// fast path of Clinger's algorithm where it holds: digits <= 2^53 and ten to a power of at most 22
+// are exact doubles, so one multiplication or division rounds correctly, to the double
+// std::from_chars gives, which reads the rest.
 bool read_plain_decimal(std::string_view token, double& value) {
-  if (!plain_decimal(token)) return false;
+  static constexpr double kPowerOfTen[] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,  1e8,  1e9,  1e10, 1e11,
+                                           1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
+  const std::optional<PlainDecimal> d = plain_decimal(token);
+  if (!d) return false;
+  if (d->exact && d->digits <= (std::uint64_t{1} << 53) && d->power >= -22 && d->power <= 22) {
+    const double w = static_cast<double>(d->digits);
+    const double magnitude = d->power < 0 ? w / kPowerOfTen[-d->power] : w * kPowerOfTen[d->power];
+    value = d->negative ? -magnitude : magnitude;
+    return true;
+  }
   const auto [end, error] = std::from_chars(token.data(), token.data() + token.size(), value);
   return error == std::errc() && end == token.data() + token.size() && std::isfinite(value);
 }
@@ -128,7 +165,7 @@ std::optional<MergeTreeNode> plain_tree_node(std::string_view line) {
   if (n != 5 || word[0] != "split" || !read_plain_decimal(word[2], node.threshold) || !read_plain_index(word[3], node.yes) ||
       !read_plain_index(word[4], node.no))
     return std::nullopt;
-  node.feature = merge_feature_index(std::string(word[1]));
+  node.feature = merge_feature_index(word[1]);
   return node.feature >= 0 ? std::optional<MergeTreeNode>(node) : std::nullopt;
 }
 
@@ -173,14 +210,16 @@ MergeModel parse_merge_model(const std::string& text) {
   MergeModel model;
   std::size_t nodes = 0;
   model.text = text;
-  std::istringstream lines(text);
-  std::string raw;
   int number = 0;
   bool header = false, in_tree = false;
   // One stream for every line: making a stream per line (its locale and buffers) was most of the
   // cost of reading the shipped model's nine thousand lines, paid once by every `topocut` run.
   std::istringstream in;
-  while (std::getline(lines, raw)) {
+  // The lines as std::getline splits them (at each '\n', none after a last '\n'), without copying.
+  for (std::size_t at = 0; at < text.size();) {
+    const std::size_t newline = std::min(text.find('\n', at), text.size());
+    const std::string_view raw = std::string_view(text).substr(at, newline - at);
+    at = newline + 1;
     ++number;
     // Nine in ten lines are plain tree nodes: read without the stream, which was most of the cost.
     if (in_tree) {
@@ -191,7 +230,7 @@ MergeModel parse_merge_model(const std::string& text) {
       }
     }
     in.clear();
-    in.str(raw.substr(0, raw.find('#')));
+    in.str(std::string(raw.substr(0, raw.find('#'))));
     std::string key;
     if (!(in >> key)) continue;
     if (in_tree) {

@@ -1,6 +1,7 @@
 #include "segmentation/merging/room_graph.h"
 
 #include <algorithm>
+#include <utility>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -69,6 +70,41 @@ TEST(RoomGraph, ARoomsCutsAndMeasuresAreThoseOfEveryCutBesideIt) {
   EXPECT_NEAR(g.room_perimeter(g.root(0)), 8.0, 1e-12);
   // Between that room and the room of pieces 2 and 9: the cut from 1 to 2 and the one from 1 to 9.
   EXPECT_NEAR(g.shared_cut_length(g.root(0), g.root(2)), 2.0, 1e-12);
+}
+
+// Every measure a room keeps (its cuts, perimeter, cuts to other rooms, hull area, the width and depth
+// beside each cut) as a graph measured after every merge has it is what a graph merged the same way
+// and measured only at the end finds, to the bit: nothing kept outlives the room it was measured in.
+TEST(RoomGraph, MeasuresKeptAsRoomsGrowAreThoseMeasuredAfresh) {
+  const PieceSet set = comb(8);
+  const std::vector<std::pair<int, int>> merges{{0, 1}, {8, 1}, {2, 9}, {3, 2}, {12, 5}, {6, 12}, {4, 0}, {13, 7}, {3, 6}};
+  RoomGraph watched(PolygonWithHoles{}, set, cv::Mat(), kRes, 0.0);
+  auto measures = [](RoomGraph& g) {
+    std::vector<double> out;
+    for (std::size_t p = 0; p < g.piece_count(); ++p) {
+      const int r = g.root(static_cast<int>(p));
+      if (r != static_cast<int>(p)) continue;
+      const std::vector<std::size_t>& sides = g.room_sides(r);
+      out.insert(out.end(), sides.begin(), sides.end());
+      out.push_back(g.room_perimeter(r));
+      out.push_back(g.shared_cut_length(r, -1));
+      out.push_back(g.convex_hull_area({r}));
+      for (const std::size_t k : sides) {
+        const RoomGraph::Side& s = g.sides()[k];
+        const bool left = g.root(s.left) == r;
+        out.push_back(g.side_width(k, r, left, 1.0));
+        out.push_back(g.side_depth(k, r, left));
+      }
+    }
+    return out;
+  };
+  for (std::size_t m = 0; m < merges.size(); ++m) {
+    measures(watched);
+    watched.unite(merges[m].first, merges[m].second);
+    RoomGraph fresh(PolygonWithHoles{}, set, cv::Mat(), kRes, 0.0);
+    for (std::size_t i = 0; i <= m; ++i) fresh.unite(merges[i].first, merges[i].second);
+    EXPECT_EQ(measures(watched), measures(fresh)) << "after merge " << m;
+  }
 }
 
 }  // namespace
