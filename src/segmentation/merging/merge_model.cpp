@@ -4,7 +4,6 @@
 #include <array>
 #include <charconv>
 #include <cmath>
-#include <cstdint>
 #include <optional>
 #include <sstream>
 #include <string_view>
@@ -20,68 +19,32 @@ extern const char* const kShippedMergeModelText;
 
 namespace {
 
-// A plain decimal number ([-]digits[.digits][(e|E)[+|-]digits]), which the stream would read whole,
-// to the same double (both round correctly): its digits as an integer (while at most 2^53, else
-// exact is false) and the power of ten they are scaled by.
-struct PlainDecimal {
-  bool negative = false, exact = true;
-  std::uint64_t digits = 0;
-  int power = 0;
-};
-
-// token as a plain decimal, or nullopt for any other spelling; one pass over its characters.
-std::optional<PlainDecimal> plain_decimal(std::string_view token) {
-  constexpr std::uint64_t kMaxExact = std::uint64_t{1} << 53;
-  PlainDecimal d;
+// Whether token is a plain decimal number ([-]digits[.digits][(e|E)[+|-]digits]), which the stream
+// would read whole, to the same double (both round correctly).
+bool plain_decimal(std::string_view token) {
   std::size_t i = 0;
-  auto digits = [&](bool fraction) {
+  auto digits = [&] {
     const std::size_t start = i;
-    for (; i < token.size() && token[i] >= '0' && token[i] <= '9'; ++i) {
-      if (d.digits > kMaxExact) {
-        d.exact = false;
-        continue;
-      }
-      d.digits = d.digits * 10 + static_cast<std::uint64_t>(token[i] - '0');  // below 2^64: 10 * 2^53 + 9
-      if (fraction) --d.power;
-    }
+    while (i < token.size() && token[i] >= '0' && token[i] <= '9') ++i;
     return i > start;
   };
-  d.negative = !token.empty() && token[0] == '-';
-  if (d.negative) ++i;
-  if (!digits(false)) return std::nullopt;
+  if (i < token.size() && token[i] == '-') ++i;
+  if (!digits()) return false;
   if (i < token.size() && token[i] == '.') {
     ++i;
-    if (!digits(true)) return std::nullopt;
+    if (!digits()) return false;
   }
   if (i < token.size() && (token[i] == 'e' || token[i] == 'E')) {
     ++i;
-    const bool below = i < token.size() && token[i] == '-';
     if (i < token.size() && (token[i] == '+' || token[i] == '-')) ++i;
-    const std::size_t start = i;
-    int e = 0;
-    for (; i < token.size() && token[i] >= '0' && token[i] <= '9'; ++i) e = std::min(e * 10 + (token[i] - '0'), 100000);
-    if (i == start) return std::nullopt;
-    d.power += below ? -e : e;
+    if (!digits()) return false;
   }
-  if (i != token.size()) return std::nullopt;
-  return d;
+  return i == token.size();
 }
 
-// Whether token is a plain decimal (plain_decimal()) of a finite double, converted into value. By the
-// fast path of Clinger's algorithm where it holds: digits <= 2^53 and ten to a power of at most 22
-// are exact doubles, so one multiplication or division rounds correctly, to the double
-// std::from_chars gives, which reads the rest.
+// Whether token is a plain decimal (plain_decimal()) of a finite double, converted into value.
 bool read_plain_decimal(std::string_view token, double& value) {
-  static constexpr double kPowerOfTen[] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,  1e8,  1e9,  1e10, 1e11,
-                                           1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
-  const std::optional<PlainDecimal> d = plain_decimal(token);
-  if (!d) return false;
-  if (d->exact && d->digits <= (std::uint64_t{1} << 53) && d->power >= -22 && d->power <= 22) {
-    const double w = static_cast<double>(d->digits);
-    const double magnitude = d->power < 0 ? w / kPowerOfTen[-d->power] : w * kPowerOfTen[d->power];
-    value = d->negative ? -magnitude : magnitude;
-    return true;
-  }
+  if (!plain_decimal(token)) return false;
   const auto [end, error] = std::from_chars(token.data(), token.data() + token.size(), value);
   return error == std::errc() && end == token.data() + token.size() && std::isfinite(value);
 }

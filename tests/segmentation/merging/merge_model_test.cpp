@@ -2,7 +2,6 @@
 
 #include <cmath>
 #include <cstring>
-#include <random>
 #include <sstream>
 
 #include <gtest/gtest.h>
@@ -77,28 +76,6 @@ TEST(MergeModel, NumbersReadAsTheStreamReadsThem) {
   }
   for (const std::string refused : {"1e400", "-1e999", "inf", "nan", "1e", "-", "1.5x", "0x10"})
     EXPECT_THROW(parse_merge_model("topocut-merge-model 1\nbias " + refused + "\n"), Error) << refused;
-}
-
-// Decimals of every length, with and without exponents, on both sides of the fast path (at most 2^53
-// as digits and ten to at most 22): the parser's double is the stream's, to the bit.
-TEST(MergeModel, RandomDecimalsReadAsTheStreamReadsThem) {
-  std::mt19937 random(36);
-  auto digits = [&random](int count) {
-    std::string out;
-    for (int i = 0; i < count; ++i) out += static_cast<char>('0' + random() % 10);
-    return out;
-  };
-  for (int trial = 0; trial < 3000; ++trial) {
-    std::string number = random() % 2 ? "-" : "";
-    number += digits(1 + static_cast<int>(random() % 18));
-    if (random() % 4 != 0) number += "." + digits(1 + static_cast<int>(random() % 18));
-    if (random() % 3 == 0) number += (random() % 2 ? "e" : "E") + std::string(random() % 2 ? "-" : "") + std::to_string(random() % 30);
-    std::istringstream stream(number);
-    double expected = 0.0;
-    ASSERT_TRUE(static_cast<bool>(stream >> expected)) << number;
-    const double bias = parse_merge_model("topocut-merge-model 1\nbias " + number + "\n").bias;
-    EXPECT_EQ(std::memcmp(&bias, &expected, sizeof bias), 0) << number << ": " << bias << " against " << expected;
-  }
 }
 
 std::string error_of(const std::string& text) {
