@@ -56,7 +56,7 @@ const std::vector<std::string>& merge_feature_names() {
   return names;
 }
 
-int merge_feature_index(const std::string& name) {
+int merge_feature_index(std::string_view name) {
   const std::vector<std::string>& names = merge_feature_names();
   const auto it = std::find(names.begin(), names.end(), name);
   return it == names.end() ? -1 : static_cast<int>(it - names.begin());

@@ -190,6 +190,8 @@ RoomGraph::RoomGraph(const PolygonWithHoles& polygon, const PieceSet& set, const
   const Edges edges(set);
   find_sides(edges);
   side_widths_.assign(2 * sides_.size(), SideWidth{});
+  side_depths_.assign(2 * sides_.size(), SideWidth{});
+  room_measures_.resize(set.pieces.size());
   measure_cut_ends(edges);
   mark_furniture(polygon, furniture_size);
   measure_outlines(edges, cells);
@@ -489,27 +491,34 @@ double RoomGraph::room_area(int r) {
   return it != area_sum_.end() ? it->second : areas_[static_cast<std::size_t>(r)];
 }
 
-std::vector<std::size_t> RoomGraph::room_sides(int r) const {
-  std::vector<std::size_t> sides;
+RoomGraph::RoomMeasures& RoomGraph::measures(int r) {
+  RoomMeasures& m = room_measures_[static_cast<std::size_t>(r)];
+  if (m.pieces == members(r).size()) return m;
+  m.pieces = members(r).size();
+  m.sides.clear();
   for (const int member : members(r)) {
     const std::vector<std::size_t>& own = piece_sides_[static_cast<std::size_t>(member)];
-    sides.insert(sides.end(), own.begin(), own.end());
+    m.sides.insert(m.sides.end(), own.begin(), own.end());
   }
   // Ascending, so that sums over them add in the order of the cuts, as they always did.
-  std::sort(sides.begin(), sides.end());
-  sides.erase(std::unique(sides.begin(), sides.end()), sides.end());
-  return sides;
+  std::sort(m.sides.begin(), m.sides.end());
+  m.sides.erase(std::unique(m.sides.begin(), m.sides.end()), m.sides.end());
+  m.hull_area.reset();
+  m.perimeter = 0.0;
+  for (const int member : members(r)) m.perimeter += perimeters_[static_cast<std::size_t>(member)];
+  m.open = 0.0;
+  for (const std::size_t k : m.sides) {
+    const Side& s = sides_[k];
+    const bool inside = root(s.left) == r && root(s.right) == r;
+    if (inside) m.perimeter -= 2.0 * s.length;
+    else m.open += s.length;  // a cut beside r not inside it separates r from another room
+  }
+  return m;
 }
 
-double RoomGraph::room_perimeter(int r) {
-  double length = 0.0;
-  for (const int member : members(r)) length += perimeters_[static_cast<std::size_t>(member)];
-  for (const std::size_t k : room_sides(r)) {
-    const Side& s = sides_[k];
-    if (root(s.left) == r && root(s.right) == r) length -= 2.0 * s.length;
-  }
-  return length;
-}
+const std::vector<std::size_t>& RoomGraph::room_sides(int r) { return measures(r).sides; }
+
+double RoomGraph::room_perimeter(int r) { return measures(r).perimeter; }
 
 double RoomGraph::room_thickness(int r) {
   const double length = room_perimeter(r);
@@ -528,14 +537,21 @@ const std::vector<Point2>& RoomGraph::room_hull(int r) {
 }
 
 double RoomGraph::convex_hull_area(const std::vector<int>& rooms) {
+  if (rooms.size() == 1) {
+    std::optional<double>& known = measures(rooms[0]).hull_area;
+    if (!known) {
+      const std::vector<Point2>& hull = room_hull(rooms[0]);
+      known = hull.size() < 3 ? 0.0 : std::abs(signed_area(hull)) * resolution_ * resolution_;
+    }
+    return *known;
+  }
   std::vector<Point2> points;
   for (const int r : rooms) {
     const std::vector<Point2>& hull = room_hull(r);
     points.insert(points.end(), hull.begin(), hull.end());
   }
   if (points.size() < 3) return 0.0;
-  const std::vector<Point2> hull = rooms.size() == 1 ? points : hull_of(points);
-  return std::abs(signed_area(hull)) * resolution_ * resolution_;
+  return std::abs(signed_area(hull_of(points))) * resolution_ * resolution_;
 }
 
 double RoomGraph::elongation(const std::vector<int>& rooms) {
@@ -554,19 +570,21 @@ double RoomGraph::elongation(const std::vector<int>& rooms) {
 }
 
 double RoomGraph::shared_cut_length(int r, int s) {
+  if (s < 0) return measures(r).open;
   double length = 0.0;
   for (const std::size_t k : room_sides(r)) {
     const Side& side = sides_[k];
     const int a = root(side.left), b = root(side.right);
     if (a == b) continue;
-    if ((a == r && (s < 0 || b == s)) || (b == r && (s < 0 || a == s))) length += side.length;
+    if ((a == r && b == s) || (b == r && a == s)) length += side.length;
   }
   return length;
 }
 
 double RoomGraph::chord(int r, const Point2& p, const Point2& u) {
-  std::vector<std::pair<double, double>> spans;
-  std::vector<double> ts;
+  std::vector<std::pair<double, double>>& spans = chord_spans_;
+  std::vector<double>& ts = chord_ts_;
+  spans.clear();
   const Point2 n{-u.y, u.x};
   for (const int member : members(r)) {
     const std::size_t i = static_cast<std::size_t>(member);
@@ -621,8 +639,12 @@ double RoomGraph::measure_side_width(std::size_t k, int r, bool left, double dep
 }
 
 double RoomGraph::side_depth(std::size_t k, int r, bool left) {
+  SideWidth& known = side_depths_[2 * k + (left ? 0 : 1)];
+  const std::size_t pieces = members(r).size();
+  if (known.room == r && known.pieces == pieces) return known.width;
   const auto [u, n, mid] = cut_frame(set_.cuts[k], left);
-  return chord(r, {mid.x + 0.5 * n.x, mid.y + 0.5 * n.y}, n) * resolution_;
+  known = {r, pieces, 0.0, chord(r, {mid.x + 0.5 * n.x, mid.y + 0.5 * n.y}, n) * resolution_};
+  return known.width;
 }
 
 PieceSet RoomGraph::result() {

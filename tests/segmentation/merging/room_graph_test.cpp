@@ -1,6 +1,7 @@
 #include "segmentation/merging/room_graph.h"
 
 #include <algorithm>
+#include <utility>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -104,6 +105,41 @@ TEST(RoomGraph, OutlinesAreMeasuredAgainstTheCellsBesideThemInTheTracedFrame) {
   // B: 2 m + 2 m of wall and its 1 m end against never-seen cells, in the 5 m that are no cut.
   EXPECT_NEAR(g.wall_share(g.root(1)), 4.0 / 5.0, 1e-9);
   EXPECT_NEAR(g.unknown_share(g.root(1)), 1.0 / 5.0, 1e-9);
+}
+
+// Every measure a room keeps (its cuts, perimeter, cuts to other rooms, hull area, the width and depth
+// beside each cut) as a graph measured after every merge has it is what a graph merged the same way
+// and measured only at the end finds, to the bit: nothing kept outlives the room it was measured in.
+TEST(RoomGraph, MeasuresKeptAsRoomsGrowAreThoseMeasuredAfresh) {
+  const PieceSet set = comb(8);
+  const std::vector<std::pair<int, int>> merges{{0, 1}, {8, 1}, {2, 9}, {3, 2}, {12, 5}, {6, 12}, {4, 0}, {13, 7}, {3, 6}};
+  RoomGraph watched(PolygonWithHoles{}, set, cv::Mat(), kRes, 0.0);
+  auto measures = [](RoomGraph& g) {
+    std::vector<double> out;
+    for (std::size_t p = 0; p < g.piece_count(); ++p) {
+      const int r = g.root(static_cast<int>(p));
+      if (r != static_cast<int>(p)) continue;
+      const std::vector<std::size_t>& sides = g.room_sides(r);
+      out.insert(out.end(), sides.begin(), sides.end());
+      out.push_back(g.room_perimeter(r));
+      out.push_back(g.shared_cut_length(r, -1));
+      out.push_back(g.convex_hull_area({r}));
+      for (const std::size_t k : sides) {
+        const RoomGraph::Side& s = g.sides()[k];
+        const bool left = g.root(s.left) == r;
+        out.push_back(g.side_width(k, r, left, 1.0));
+        out.push_back(g.side_depth(k, r, left));
+      }
+    }
+    return out;
+  };
+  for (std::size_t m = 0; m < merges.size(); ++m) {
+    measures(watched);
+    watched.unite(merges[m].first, merges[m].second);
+    RoomGraph fresh(PolygonWithHoles{}, set, cv::Mat(), kRes, 0.0);
+    for (std::size_t i = 0; i <= m; ++i) fresh.unite(merges[i].first, merges[i].second);
+    EXPECT_EQ(measures(watched), measures(fresh)) << "after merge " << m;
+  }
 }
 
 }  // namespace
