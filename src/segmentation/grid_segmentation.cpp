@@ -47,15 +47,51 @@ void lower_envelope(const std::int64_t* g, int n, std::int64_t* out, int* v, Cro
   }
 }
 
+// The first of values[from, n) that is positive, or n; the last, or from - 1. Most of a map's
+// cells are not labelled, nor interior: eight at a time, in loops that vectorize, then one by one.
+constexpr int kBlock = 8;
+
+int first_positive(const int* values, int from, int n) {
+  int a = from;
+  for (; a + kBlock <= n; a += kBlock) {
+    int any = 0;
+    for (int k = 0; k < kBlock; ++k) any |= static_cast<int>(values[a + k] > 0);
+    if (any != 0) break;
+  }
+  while (a < n && values[a] <= 0) ++a;
+  return a;
+}
+
+int last_positive(const int* values, int from, int n) {
+  int b = n;  // values[b, n) hold none
+  for (; b - kBlock >= from; b -= kBlock) {
+    int any = 0;
+    for (int k = 1; k <= kBlock; ++k) any |= static_cast<int>(values[b - k] > 0);
+    if (any != 0) break;
+  }
+  while (b > from && values[b - 1] <= 0) --b;
+  return b - 1;
+}
+
 // For the cells of box (labels' box grown by one cell, whose border cells are never interior): 0 for
 // a cell that is not interior (its label differs from one of its four neighbours', it has none or it
 // lies on the map's edge), else its distance to the nearest such cell up or down its column.
 cv::Mat column_distances(const cv::Mat& labels, const cv::Rect& box) {
-  cv::Mat column(box.size(), CV_32SC1, cv::Scalar(0));
+  cv::Mat column(box.size(), CV_32SC1);
   const int c0 = std::max(box.x, 1), c1 = std::min(box.x + box.width, labels.cols - 1);
+  const int r0 = box.y + 1, r1 = std::min(box.y + box.height, labels.rows - 1);
+  // Zeroed only where the pass below does not write (filling the whole grid first cost more than the
+  // pass itself on a large map).
+  const int w0 = std::clamp(c0 - box.x, 0, box.width), w1 = std::clamp(c1 - box.x, w0, box.width);
+  for (int i = 0; i < box.height; ++i) {
+    int* out = column.ptr<int>(i);
+    const bool written = box.y + i >= r0 && box.y + i < r1;
+    std::fill(out, out + (written ? w0 : box.width), 0);
+    if (written) std::fill(out + w1, out + box.width, 0);
+  }
   // From the box's second row: its first is never interior (above the labels, or the map's edge),
   // and each row reads the one before it.
-  for (int r = box.y + 1; r < std::min(box.y + box.height, labels.rows - 1); ++r) {
+  for (int r = r0; r < r1; ++r) {
     const int* __restrict above = labels.ptr<int>(r - 1);
     const int* __restrict row = labels.ptr<int>(r);
     const int* __restrict below = labels.ptr<int>(r + 1);
@@ -96,18 +132,14 @@ std::vector<InteriorRun> interior_runs(const cv::Mat& labels, const cv::Rect& bo
   std::vector<InteriorRun> runs;
   for (int r = 0; r < box.height; ++r) {
     const int* col = column.ptr<int>(r);
-    for (int a = 0; a < box.width;) {
-      if (col[a] == 0) {
-        ++a;
-        continue;
-      }
+    for (int a = first_positive(col, 0, box.width); a < box.width;) {
       InteriorRun run{r, a, a, labels.at<int>(box.y + r, box.x + a), 0.0f};
       while (col[run.end] > 0) ++run.end;  // the box's last column is not interior
       int most = 0;
       for (int b = a; b < run.end; ++b) most = std::max(most, std::min({col[b], b - a + 1, run.end - b}));
       run.reach = depth_of(std::int64_t{most} * most);
       runs.push_back(run);
-      a = run.end;
+      a = first_positive(col, run.end, box.width);
     }
   }
   return runs;
@@ -143,6 +175,25 @@ void first_cells_of_thin_rooms(const cv::Mat& labels, const cv::Rect& box, int m
   }
 }
 
+// The bounding box of the cells with a positive label (empty: none), as cv::boundingRect(labels > 0)
+// gives it, without the mask of the whole map: each row is looked at right of the box so far, left
+// of it, and only when neither holds a label, inside it.
+cv::Rect labelled_box(const cv::Mat& labels) {
+  const int n = labels.cols;
+  int x0 = n, x1 = -1, y0 = -1, y1 = -1;
+  for (int r = 0; r < labels.rows; ++r) {
+    const int* row = labels.ptr<int>(r);
+    const int last = last_positive(row, x1 + 1, n), first = first_positive(row, 0, x0);
+    const bool labelled = last > x1 || first < x0 || (x0 <= x1 && first_positive(row, x0, x1 + 1) <= x1);
+    x1 = std::max(x1, last);
+    x0 = std::min(x0, first);
+    if (!labelled) continue;
+    if (y0 < 0) y0 = r;
+    y1 = r;
+  }
+  return y0 < 0 ? cv::Rect() : cv::Rect(x0, y0, x1 - x0 + 1, y1 - y0 + 1);
+}
+
 // For every room id, the labelled cell (top-down grid) farthest from any cell of another label: the
 // distance transform of the cells whose four neighbours all share their label (the float that
 // cv::distanceTransform, DIST_L2 and DIST_MASK_PRECISE, gives: the rounded root of the exact squared
@@ -154,7 +205,7 @@ void first_cells_of_thin_rooms(const cv::Mat& labels, const cv::Rect& box, int m
 // run whose reach (a bound of its depths) is below the deepest cell found cannot.
 std::vector<cv::Point> deepest_cells(const cv::Mat& labels, int max_id) {
   std::vector<cv::Point> best(static_cast<std::size_t>(max_id) + 1, cv::Point(-1, -1));
-  const cv::Rect labelled = cv::boundingRect(labels > 0);
+  const cv::Rect labelled = labelled_box(labels);
   if (labelled.empty()) return best;
   const cv::Rect box = cv::Rect(labelled.x - 1, labelled.y - 1, labelled.width + 2, labelled.height + 2) &
                        cv::Rect(0, 0, labels.cols, labels.rows);

@@ -1,10 +1,13 @@
 // Rooms JSON, SVG and the colour overlay, on a hand-built two-room segmentation.
 #include <cmath>
+#include <random>
+#include <sstream>
 #include <string>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "io/json_coordinates.h"
 #include "io/temp_dir.h"
 #include "topocut/core/error.h"
 #include "topocut/io/overlay.h"
@@ -85,6 +88,50 @@ TEST(RoomsJson, CarriesWhatTheGeoJsonCarries) {
   passage.erase("cut");
   EXPECT_EQ(passage, geo["features"][2]["properties"]);
   EXPECT_THROW(rooms_to_json(t.seg, {t.placements[0]}), Error);
+}
+
+// Rooms are printed without building their rings as JSON trees: each room's line is still the
+// library's dump of the room's object, rings and all, for coordinates of every size and sign (some
+// rounding to 0 or -0, some beyond the fixed notation), with holes and without.
+TEST(RoomsJson, EachRoomLineIsTheLibrarysDumpOfTheRoom) {
+  std::mt19937 random(36);
+  auto coordinate = [&random] {
+    const double magnitude = std::pow(10.0, static_cast<double>(random() % 24) - 9.0);
+    return (random() % 2 ? -1.0 : 1.0) * magnitude * static_cast<double>(random() % 100000) / 1000.0;
+  };
+  auto ring = [&](std::size_t n) {
+    Ring r;
+    for (std::size_t k = 0; k < n; ++k) r.push_back({coordinate(), coordinate()});
+    return r;
+  };
+  Segmentation seg;
+  seg.labels = cv::Mat::zeros(4, 4, CV_32SC1);
+  seg.resolution = 0.05;
+  std::vector<RoomPlacement> placements;
+  for (int id = 1; id <= 40; ++id) {
+    Room room;
+    room.id = id;
+    room.polygon.outer = ring(3 + random() % 30);
+    for (std::size_t h = 0; h < random() % 3; ++h) room.polygon.holes.push_back(ring(3 + random() % 5));
+    room.area = coordinate();
+    room.labelled_area = coordinate();
+    room.centroid = {coordinate(), coordinate()};
+    seg.rooms.push_back(room);
+    placements.push_back({{coordinate(), coordinate()}, {}, {}});
+  }
+  std::istringstream lines(rooms_to_json(seg, placements));
+  std::string line;
+  while (std::getline(lines, line) && line != "\"rooms\": [") {}
+  for (std::size_t i = 0; i < seg.rooms.size(); ++i) {
+    ASSERT_TRUE(std::getline(lines, line));
+    const Room& room = seg.rooms[i];
+    nlohmann::json holes = nlohmann::json::array();
+    for (const Ring& hole : room.polygon.holes) holes.push_back(json_coordinates::ring(hole));
+    nlohmann::json entry = json_coordinates::room_properties(room, &placements[i]);
+    entry["outer"] = json_coordinates::ring(room.polygon.outer);
+    entry["holes"] = holes;
+    EXPECT_EQ(line, " " + entry.dump() + (i + 1 < seg.rooms.size() ? "," : "")) << "room " << room.id;
+  }
 }
 
 TEST(RoomsJson, WritesAtomicallyAndReportsBadPaths) {

@@ -6,6 +6,7 @@
 // cut), areas and thicknesses in metres and in that scale. No feature is a rule's decision, so rules and the model can
 // change apart.
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace topocut {
@@ -15,7 +16,7 @@ namespace topocut {
 const std::vector<std::string>& merge_feature_names();
 
 // Index of a feature name, or -1.
-int merge_feature_index(const std::string& name);
+int merge_feature_index(std::string_view name);
 
 // One candidate merge as merging saw it, for training and inspection: its features, the pieces of its
 // two rooms (indices into the component's pieces), the model's probability and whether it merged.

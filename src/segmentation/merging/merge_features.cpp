@@ -31,9 +31,9 @@ const std::vector<std::string>& merge_feature_names() {
       "log_union_elongation",         // log of the union's elongation
       "ends_on_holes",                // ends of the cut on an obstacle inside the free space (0, 1 or 2);
                                       //   its extent is log_hole_extent_over_scale below
-      "narrow_wall_share",            // the narrow room's outline along occupied cells / its perimeter
+      "narrow_wall_share",            // the narrow room's outline along occupied cells / its outline but cuts
       "wide_wall_share",              // the same of the wide room
-      "narrow_unknown_share",         // the narrow room's outline along never-seen cells / its perimeter
+      "narrow_unknown_share",         // the narrow room's outline along never-seen cells / the same
       "wide_unknown_share",           // the same of the wide room
       "cut_skew",                     // the cut's angle to the walls at its ends / (pi / 4): 0 along or
                                       //   across them, 1 a diagonal
@@ -56,7 +56,7 @@ const std::vector<std::string>& merge_feature_names() {
   return names;
 }
 
-int merge_feature_index(const std::string& name) {
+int merge_feature_index(std::string_view name) {
   const std::vector<std::string>& names = merge_feature_names();
   const auto it = std::find(names.begin(), names.end(), name);
   return it == names.end() ? -1 : static_cast<int>(it - names.begin());
@@ -89,6 +89,10 @@ std::vector<double> merge_features(RoomGraph& graph, std::size_t k, const RoomMe
   // Each measure once: every one walks the rooms' pieces and cuts.
   const double p_narrow = graph.room_perimeter(narrow), p_wide = graph.room_perimeter(wide);
   const double shared = graph.shared_cut_length(narrow, wide);
+  // Each room's cuts to other rooms: its open share, and what is left of its outline for the shares
+  // of walls and never-seen cells (RoomGraph::own_outline()).
+  const double open_narrow = graph.shared_cut_length(narrow, -1), open_wide = graph.shared_cut_length(wide, -1);
+  const double own_narrow = p_narrow - open_narrow, own_wide = p_wide - open_wide;
   const double t_narrow = graph.room_thickness(narrow);
   const double perimeter = std::max(std::min(p_narrow, p_wide), kMinLength);
   const double length = std::max(side.length, kMinLength);
@@ -110,17 +114,17 @@ std::vector<double> merge_features(RoomGraph& graph, std::size_t k, const RoomMe
       side.furniture ? 1.0 : 0.0,
       side.end_angle[0] / M_PI,
       side.end_angle[1] / M_PI,
-      std::min(graph.shared_cut_length(narrow, -1) / std::max(p_narrow, kMinLength), 1.0),
-      std::min(graph.shared_cut_length(wide, -1) / std::max(p_wide, kMinLength), 1.0),
+      std::min(open_narrow / std::max(p_narrow, kMinLength), 1.0),
+      std::min(open_wide / std::max(p_wide, kMinLength), 1.0),
       std::min(length / w_wide, 3.0),
       union_thickness / std::max(t_narrow, kMinLength),
       std::log(std::min(graph.elongation({narrow}), 100.0)),
       std::log(std::min(graph.elongation({narrow, wide}), 100.0)),
       static_cast<double>(std::min(side.ends_on_holes, 2)),
-      graph.wall_share(narrow),
-      graph.wall_share(wide),
-      graph.unknown_share(narrow),
-      graph.unknown_share(wide),
+      outline_share(graph.wall_length(narrow), own_narrow),
+      outline_share(graph.wall_length(wide), own_wide),
+      outline_share(graph.unknown_length(narrow), own_narrow),
+      outline_share(graph.unknown_length(wide), own_wide),
       side.skew / (M_PI / 4.0),
       std::log(length / scale),
       std::log(length / cut_scale),

@@ -128,7 +128,7 @@ std::optional<MergeTreeNode> plain_tree_node(std::string_view line) {
   if (n != 5 || word[0] != "split" || !read_plain_decimal(word[2], node.threshold) || !read_plain_index(word[3], node.yes) ||
       !read_plain_index(word[4], node.no))
     return std::nullopt;
-  node.feature = merge_feature_index(std::string(word[1]));
+  node.feature = merge_feature_index(word[1]);
   return node.feature >= 0 ? std::optional<MergeTreeNode>(node) : std::nullopt;
 }
 
@@ -173,14 +173,16 @@ MergeModel parse_merge_model(const std::string& text) {
   MergeModel model;
   std::size_t nodes = 0;
   model.text = text;
-  std::istringstream lines(text);
-  std::string raw;
   int number = 0;
   bool header = false, in_tree = false;
   // One stream for every line: making a stream per line (its locale and buffers) was most of the
   // cost of reading the shipped model's nine thousand lines, paid once by every `topocut` run.
   std::istringstream in;
-  while (std::getline(lines, raw)) {
+  // The lines as std::getline splits them (at each '\n', none after a last '\n'), without copying.
+  for (std::size_t at = 0; at < text.size();) {
+    const std::size_t newline = std::min(text.find('\n', at), text.size());
+    const std::string_view raw = std::string_view(text).substr(at, newline - at);
+    at = newline + 1;
     ++number;
     // Nine in ten lines are plain tree nodes: read without the stream, which was most of the cost.
     if (in_tree) {
@@ -191,7 +193,7 @@ MergeModel parse_merge_model(const std::string& text) {
       }
     }
     in.clear();
-    in.str(raw.substr(0, raw.find('#')));
+    in.str(std::string(raw.substr(0, raw.find('#'))));
     std::string key;
     if (!(in >> key)) continue;
     if (in_tree) {

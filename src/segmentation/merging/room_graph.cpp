@@ -190,6 +190,8 @@ RoomGraph::RoomGraph(const PolygonWithHoles& polygon, const PieceSet& set, const
   const Edges edges(set);
   find_sides(edges);
   side_widths_.assign(2 * sides_.size(), SideWidth{});
+  side_depths_.assign(2 * sides_.size(), SideWidth{});
+  room_measures_.resize(set.pieces.size());
   measure_cut_ends(edges);
   mark_furniture(polygon, furniture_size);
   measure_outlines(edges, cells);
@@ -199,12 +201,17 @@ RoomGraph::RoomGraph(const PolygonWithHoles& polygon, const PieceSet& set, const
 
 // The medians that piece_scale() and cut_scale() return (0 without pieces or cuts). Weighted by area,
 // the slivers beside furniture and doors leave the pieces' scale where the rooms and corridors put it.
+// A piece's thickness here is 2 area / the perimeter of its convex hull: a robot's map draws walls
+// ragged and obstacles as specks, which lengthen the outline without changing the room, and 2 area /
+// outline put the same homes' scale at 0.7 of their plans' (seed to seed 0.7 to 1.3). The hulls are
+// the pieces' room_hull(), kept for the candidates' convexity.
 void RoomGraph::measure_scales() {
-  std::vector<std::pair<double, double>> thickness;  // (2 area / perimeter, area)
+  std::vector<std::pair<double, double>> thickness;  // (2 area / hull perimeter, area)
   double total = 0.0;
   for (std::size_t i = 0; i < areas_.size(); ++i) {
-    if (perimeters_[i] <= 0.0) continue;
-    thickness.emplace_back(2.0 * areas_[i] / perimeters_[i], areas_[i]);
+    const double hull = perimeter(room_hull(static_cast<int>(i))) * resolution_;
+    if (hull <= 0.0) continue;
+    thickness.emplace_back(2.0 * areas_[i] / hull, areas_[i]);
     total += areas_[i];
   }
   std::sort(thickness.begin(), thickness.end());
@@ -224,6 +231,16 @@ void RoomGraph::measure_scales() {
 
 namespace {
 
+// The cell holding point p of the grid coordinates the pieces are in (x = column, y = rows-1-row at
+// the cells' centres, as free_space_polygons() writes them), kUnknown beyond the grid. Reading row
+// floor(y) instead read the map upside down, half a cell off: a small room walled all round measured
+// its outline mostly against whatever the mirrored map had there.
+int cell_at(const cv::Mat& cells, const Point2& p) {
+  const int c = static_cast<int>(std::floor(p.x + 0.5)), r = cells.rows - 1 - static_cast<int>(std::floor(p.y + 0.5));
+  if (c < 0 || r < 0 || c >= cells.cols || r >= cells.rows) return kUnknown;
+  return cells.at<unsigned char>(r, c);
+}
+
 // What lies just outside a piece's wall edge a -> b (grid coordinates): the occupied and never-seen
 // lengths (cells) of the edge, sampled a cell apart. Outside is the side whose cell is not free (the
 // piece's own side is floor); an edge with floor on both sides (a cleaned-away strip) counts as neither.
@@ -233,11 +250,7 @@ void classify_edge(const cv::Mat& cells, const Point2& a, const Point2& b, doubl
   const Point2 n{-(b.y - a.y) / length, (b.x - a.x) / length};
   const int samples = std::max(1, static_cast<int>(std::lround(length)));
   const double step = length / samples;
-  auto cell = [&cells](double x, double y) -> int {
-    const int c = static_cast<int>(std::floor(x)), r = static_cast<int>(std::floor(y));
-    if (c < 0 || r < 0 || c >= cells.cols || r >= cells.rows) return kUnknown;
-    return cells.at<unsigned char>(r, c);
-  };
+  auto cell = [&cells](double x, double y) { return cell_at(cells, {x, y}); };
   for (int i = 0; i < samples; ++i) {
     const double t = (i + 0.5) / samples;
     const Point2 p{a.x + (b.x - a.x) * t, a.y + (b.y - a.y) * t};
@@ -278,24 +291,33 @@ void RoomGraph::measure_outlines(const Edges& edges, const cv::Mat& cells) {
   }
 }
 
-double RoomGraph::wall_share(int r) {
+// The length of room r's outline that is no cut to another room: what the wall and never-seen
+// shares are shares of, so that they say what the room's own outline runs along, apart from how
+// much of it is open (the open share): on a drawn plan every such outline is wall, whatever the cuts.
+double RoomGraph::own_outline(int r) { return room_perimeter(r) - shared_cut_length(r, -1); }
+
+double RoomGraph::wall_length(int r) {
   double length = 0.0;
   for (const int member : members(r)) length += wall_lengths_[static_cast<std::size_t>(member)];
-  const double perimeter = room_perimeter(r);
-  return perimeter > 0.0 ? std::min(length / perimeter, 1.0) : 0.0;
+  return length;
 }
+
+double RoomGraph::unknown_length(int r) {
+  double length = 0.0;
+  for (const int member : members(r)) length += unknown_lengths_[static_cast<std::size_t>(member)];
+  return length;
+}
+
+double outline_share(double length, double outline) { return outline > 0.0 ? std::min(length / outline, 1.0) : 0.0; }
+
+double RoomGraph::wall_share(int r) { return outline_share(wall_length(r), own_outline(r)); }
 
 bool RoomGraph::walls_seen() {
   if (!walls_seen_) walls_seen_ = cells_.empty() || cv::countNonZero(cells_ == kOccupied) > 0;
   return *walls_seen_;
 }
 
-double RoomGraph::unknown_share(int r) {
-  double length = 0.0;
-  for (const int member : members(r)) length += unknown_lengths_[static_cast<std::size_t>(member)];
-  const double perimeter = room_perimeter(r);
-  return perimeter > 0.0 ? std::min(length / perimeter, 1.0) : 0.0;
-}
+double RoomGraph::unknown_share(int r) { return outline_share(unknown_length(r), own_outline(r)); }
 
 // The free-space angle at each cut end, and the wall edges there that the cut continues: pieces meet
 // only at shared vertices, so the interior angles of the pieces having the end as a vertex add up to
@@ -469,27 +491,34 @@ double RoomGraph::room_area(int r) {
   return it != area_sum_.end() ? it->second : areas_[static_cast<std::size_t>(r)];
 }
 
-std::vector<std::size_t> RoomGraph::room_sides(int r) const {
-  std::vector<std::size_t> sides;
+RoomGraph::RoomMeasures& RoomGraph::measures(int r) {
+  RoomMeasures& m = room_measures_[static_cast<std::size_t>(r)];
+  if (m.pieces == members(r).size()) return m;
+  m.pieces = members(r).size();
+  m.sides.clear();
   for (const int member : members(r)) {
     const std::vector<std::size_t>& own = piece_sides_[static_cast<std::size_t>(member)];
-    sides.insert(sides.end(), own.begin(), own.end());
+    m.sides.insert(m.sides.end(), own.begin(), own.end());
   }
   // Ascending, so that sums over them add in the order of the cuts, as they always did.
-  std::sort(sides.begin(), sides.end());
-  sides.erase(std::unique(sides.begin(), sides.end()), sides.end());
-  return sides;
+  std::sort(m.sides.begin(), m.sides.end());
+  m.sides.erase(std::unique(m.sides.begin(), m.sides.end()), m.sides.end());
+  m.hull_area.reset();
+  m.perimeter = 0.0;
+  for (const int member : members(r)) m.perimeter += perimeters_[static_cast<std::size_t>(member)];
+  m.open = 0.0;
+  for (const std::size_t k : m.sides) {
+    const Side& s = sides_[k];
+    const bool inside = root(s.left) == r && root(s.right) == r;
+    if (inside) m.perimeter -= 2.0 * s.length;
+    else m.open += s.length;  // a cut beside r not inside it separates r from another room
+  }
+  return m;
 }
 
-double RoomGraph::room_perimeter(int r) {
-  double length = 0.0;
-  for (const int member : members(r)) length += perimeters_[static_cast<std::size_t>(member)];
-  for (const std::size_t k : room_sides(r)) {
-    const Side& s = sides_[k];
-    if (root(s.left) == r && root(s.right) == r) length -= 2.0 * s.length;
-  }
-  return length;
-}
+const std::vector<std::size_t>& RoomGraph::room_sides(int r) { return measures(r).sides; }
+
+double RoomGraph::room_perimeter(int r) { return measures(r).perimeter; }
 
 double RoomGraph::room_thickness(int r) {
   const double length = room_perimeter(r);
@@ -508,14 +537,21 @@ const std::vector<Point2>& RoomGraph::room_hull(int r) {
 }
 
 double RoomGraph::convex_hull_area(const std::vector<int>& rooms) {
+  if (rooms.size() == 1) {
+    std::optional<double>& known = measures(rooms[0]).hull_area;
+    if (!known) {
+      const std::vector<Point2>& hull = room_hull(rooms[0]);
+      known = hull.size() < 3 ? 0.0 : std::abs(signed_area(hull)) * resolution_ * resolution_;
+    }
+    return *known;
+  }
   std::vector<Point2> points;
   for (const int r : rooms) {
     const std::vector<Point2>& hull = room_hull(r);
     points.insert(points.end(), hull.begin(), hull.end());
   }
   if (points.size() < 3) return 0.0;
-  const std::vector<Point2> hull = rooms.size() == 1 ? points : hull_of(points);
-  return std::abs(signed_area(hull)) * resolution_ * resolution_;
+  return std::abs(signed_area(hull_of(points))) * resolution_ * resolution_;
 }
 
 double RoomGraph::elongation(const std::vector<int>& rooms) {
@@ -534,19 +570,21 @@ double RoomGraph::elongation(const std::vector<int>& rooms) {
 }
 
 double RoomGraph::shared_cut_length(int r, int s) {
+  if (s < 0) return measures(r).open;
   double length = 0.0;
   for (const std::size_t k : room_sides(r)) {
     const Side& side = sides_[k];
     const int a = root(side.left), b = root(side.right);
     if (a == b) continue;
-    if ((a == r && (s < 0 || b == s)) || (b == r && (s < 0 || a == s))) length += side.length;
+    if ((a == r && b == s) || (b == r && a == s)) length += side.length;
   }
   return length;
 }
 
 double RoomGraph::chord(int r, const Point2& p, const Point2& u) {
-  std::vector<std::pair<double, double>> spans;
-  std::vector<double> ts;
+  std::vector<std::pair<double, double>>& spans = chord_spans_;
+  std::vector<double>& ts = chord_ts_;
+  spans.clear();
   const Point2 n{-u.y, u.x};
   for (const int member : members(r)) {
     const std::size_t i = static_cast<std::size_t>(member);
@@ -601,8 +639,12 @@ double RoomGraph::measure_side_width(std::size_t k, int r, bool left, double dep
 }
 
 double RoomGraph::side_depth(std::size_t k, int r, bool left) {
+  SideWidth& known = side_depths_[2 * k + (left ? 0 : 1)];
+  const std::size_t pieces = members(r).size();
+  if (known.room == r && known.pieces == pieces) return known.width;
   const auto [u, n, mid] = cut_frame(set_.cuts[k], left);
-  return chord(r, {mid.x + 0.5 * n.x, mid.y + 0.5 * n.y}, n) * resolution_;
+  known = {r, pieces, 0.0, chord(r, {mid.x + 0.5 * n.x, mid.y + 0.5 * n.y}, n) * resolution_};
+  return known.width;
 }
 
 PieceSet RoomGraph::result() {

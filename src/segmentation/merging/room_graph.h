@@ -69,18 +69,25 @@ class RoomGraph {
   // The rooms' elongation together: the square root of the ratio of the principal second moments
   // of their area (1 for a square or a disc, about L / W for an L x W strip).
   double elongation(const std::vector<int>& rooms);
-  // Share of room r's perimeter (room_perimeter()) that runs along occupied cells (walls, furniture),
-  // and along never-seen cells (the sensor saw no wall there: a ray fan's rim, an opening to the dark).
+  // Share of room r's own outline (own_outline(): its perimeter but the cuts to other rooms) that runs
+  // along occupied cells (walls, furniture), and along never-seen cells (the sensor saw no wall there:
+  // a ray fan's rim, an opening to the dark).
   double wall_share(int r);
   double unknown_share(int r);
+  double own_outline(int r);  // m
+  // The lengths (m) of room r's outline along occupied and along never-seen cells: the shares'
+  // numerators, for a caller that has the outline already.
+  double wall_length(int r);
+  double unknown_length(int r);
   // Whether the grid holds an occupied cell (or is not known): without, the map draws its walls in the
   // never-seen grey, and walls cannot be told from the dark. Looked at when first asked.
   bool walls_seen();
   // Length of the cuts between rooms r and s (m); s < 0: between r and every other room.
   double shared_cut_length(int r, int s);
   // The cuts with a piece of room r on a side, ascending, each once: what a measure of r reads
-  // instead of every cut of the component (which made merging quadratic in the cuts).
-  std::vector<std::size_t> room_sides(int r) const;
+  // instead of every cut of the component (which made merging quadratic in the cuts). The reference
+  // holds until the next unite().
+  const std::vector<std::size_t>& room_sides(int r);
 
   // Width of room r beside cut k (m): the longest chord parallel to the cut within depth metres on
   // r's side (left: the cut's left), measured as the cut rules measure it (side_width.h).
@@ -100,6 +107,8 @@ class RoomGraph {
   void measure_scales();
   void measure_outlines(const Edges& edges, const cv::Mat& cells);
   double chord(int r, const Point2& p, const Point2& u);
+  std::vector<double> chord_ts_;  // chord()'s crossings and spans, kept to spare their allocations
+  std::vector<std::pair<double, double>> chord_spans_;
   double measure_side_width(std::size_t k, int r, bool left, double depth);
 
   const PieceSet& set_;
@@ -134,7 +143,23 @@ class RoomGraph {
     double depth = 0.0, width = 0.0;
   };
   std::vector<SideWidth> side_widths_;  // 2 k: left of cut k, 2 k + 1: right
+  // side_depth's last answer per cut and side, kept as side_widths_ are.
+  std::vector<SideWidth> side_depths_;
+  // What the measures of a room read, per room root, kept while the room has as many pieces (a room
+  // only grows, so that is the same room): its cuts, perimeter and cuts to other rooms, which every
+  // feature of every cut beside the room asked for again (each a walk over the room's pieces and cuts).
+  struct RoomMeasures {
+    std::size_t pieces = 0;  // 0: not measured yet
+    std::vector<std::size_t> sides;
+    double perimeter = 0.0, open = 0.0;  // m: room_perimeter(), shared_cut_length(r, -1)
+    std::optional<double> hull_area;     // m²: convex_hull_area({r}), when first asked
+  };
+  std::vector<RoomMeasures> room_measures_;
+  RoomMeasures& measures(int r);  // r's, measured again when it grew
 };
+
+// A length along a room's outline over the outline (RoomGraph::own_outline()), at most 1; 0 without one.
+double outline_share(double length, double outline);
 
 }  // namespace topocut
 

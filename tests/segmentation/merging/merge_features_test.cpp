@@ -52,9 +52,9 @@ TEST(MergeFeatures, ACorridorCutAcrossMeasuresAsWorkedOutByHand) {
   EXPECT_NEAR(feature(f, "log_narrow_elongation"), std::log(1.5), 1e-9);  // 3 m x 2 m
   EXPECT_NEAR(feature(f, "log_union_elongation"), std::log(2.5), 1e-9);   // 5 m x 2 m
   EXPECT_EQ(feature(f, "ends_on_holes"), 0.0);
-  // Without the grid every outline counts as wall: A's 10 m less the 2 m cut, B's 8 m less the cut.
-  EXPECT_NEAR(feature(f, "narrow_wall_share"), 0.8, 1e-9);
-  EXPECT_NEAR(feature(f, "wide_wall_share"), 0.75, 1e-9);
+  // Without the grid every outline but the cuts counts as wall: all of A's 8 m and B's 6 m.
+  EXPECT_NEAR(feature(f, "narrow_wall_share"), 1.0, 1e-9);
+  EXPECT_NEAR(feature(f, "wide_wall_share"), 1.0, 1e-9);
   EXPECT_EQ(feature(f, "narrow_unknown_share"), 0.0);
   EXPECT_EQ(feature(f, "wide_unknown_share"), 0.0);
   EXPECT_NEAR(feature(f, "cut_skew"), 0.0, 1e-9);  // across the corridor, square to its walls
@@ -72,6 +72,24 @@ TEST(MergeFeatures, TheComponentsScalesAreItsTypicalPieceAndCut) {
   EXPECT_NEAR(feature(f, "log_cut_over_cut_scale"), 0.0, 1e-9);
   EXPECT_NEAR(feature(f, "log_narrow_area_over_scale"), std::log(6.0 / 1.44), 1e-9);
   EXPECT_NEAR(feature(f, "narrow_thickness_over_scale"), 1.0, 1e-9);
+}
+
+TEST(MergeFeatures, ARaggedWallLeavesThePieceScaleWhereTheRoomPutsIt) {
+  // The corridor with 15 notches of one cell in A's bottom wall (a robot's ragged wall): A is 2385
+  // cells (5.9625 m²), its outline 1.5 m longer, its convex hull the 10 m of the straight room's. The
+  // scale is 2 area / the hull's perimeter of A (still more than half the area): 1.1925 m, where
+  // 2 area / the outline would give 1.037 m.
+  PieceSet set = corridor_cut_across(CutRule::kDecomposition);
+  Ring ragged{{0, 0}};
+  for (int k = 0; k < 15; ++k) {
+    const double x = 4.0 * k + 2.0;
+    ragged.insert(ragged.end(), {{x, 0}, {x, 1}, {x + 1, 1}, {x + 1, 0}});
+  }
+  ragged.insert(ragged.end(), {{60, 0}, {60, 40}, {0, 40}});
+  set.pieces[0].outer = ragged;
+  RoomGraph graph(PolygonWithHoles{}, set, cv::Mat(), kRes, 2.5);
+  EXPECT_NEAR(graph.room_area(0), 5.9625, 1e-9);
+  EXPECT_NEAR(graph.piece_scale(), 2.0 * 5.9625 / 10.0, 1e-5);  // the hull in single precision
 }
 
 TEST(MergeFeatures, TheFeaturesInTheComponentsScaleReadTheSameAtEverySize) {
@@ -97,19 +115,23 @@ TEST(MergeFeatures, NoFeatureDependsOnTheRuleThatMadeTheCut) {
 TEST(MergeFeatures, OutlinesAgainstNeverSeenCellsAreMeasuredFromTheGrid) {
   // The same corridor placed at cell (10, 10) of a 120 x 60 grid of walls, its floor free, and the
   // 10 columns beyond its right end (x = 110) never seen: B's outline is 2 m against never-seen cells
-  // (its 2 m end), 4 m against walls (top and bottom), 2 m the cut.
+  // (its 2 m end), 4 m against walls (top and bottom), 2 m the cut; the shares are of the 6 m that
+  // are no cut.
   cv::Mat cells(60, 120, CV_8UC1, cv::Scalar(kOccupied));
   cells(cv::Rect(10, 10, 100, 40)).setTo(kFree);
   cells(cv::Rect(110, 0, 10, 60)).setTo(kUnknown);
   PieceSet set;
-  set.pieces = {{{{10, 10}, {70, 10}, {70, 50}, {10, 50}}, {}}, {{{70, 10}, {110, 10}, {110, 50}, {70, 50}}, {}}};
-  set.add_cut({{70, 10}, {70, 50}}, CutRule::kDecomposition);
+  // In the grid coordinates the segmenter traces outlines in (x = column, y = rows-1-row at the cells'
+  // centres), the free cells' outline runs half a cell outside their centres.
+  set.pieces = {{{{9.5, 9.5}, {69.5, 9.5}, {69.5, 49.5}, {9.5, 49.5}}, {}},
+                {{{69.5, 9.5}, {109.5, 9.5}, {109.5, 49.5}, {69.5, 49.5}}, {}}};
+  set.add_cut({{69.5, 9.5}, {69.5, 49.5}}, CutRule::kDecomposition);
   RoomGraph graph(PolygonWithHoles{}, set, cells, kRes, 2.5);
   const std::vector<double> f = merge_features(graph, 0, RoomMergeOptions{});
-  EXPECT_NEAR(feature(f, "wide_unknown_share"), 0.25, 1e-9);
-  EXPECT_NEAR(feature(f, "wide_wall_share"), 0.5, 1e-9);
+  EXPECT_NEAR(feature(f, "wide_unknown_share"), 2.0 / 6.0, 1e-9);
+  EXPECT_NEAR(feature(f, "wide_wall_share"), 4.0 / 6.0, 1e-9);
   EXPECT_NEAR(feature(f, "narrow_unknown_share"), 0.0, 1e-9);
-  EXPECT_NEAR(feature(f, "narrow_wall_share"), 0.8, 1e-9);
+  EXPECT_NEAR(feature(f, "narrow_wall_share"), 1.0, 1e-9);
 }
 
 TEST(MergeFeatures, ADiagonalAcrossARoomIsSkewedToItsWalls) {

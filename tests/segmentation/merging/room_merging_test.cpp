@@ -367,22 +367,25 @@ TEST(MergeRooms, ABayCutOffALargerRoomAlongMuchOfItsOutlineJoinsItWhereTheModelL
 }
 
 // A 10 m x 8 m room and, behind a gap of gap cells in its 0.2 m top wall, a 1.2 m x 1 m scrap of
-// floor; the scrap's sides and top run into never-seen cells, or into walls when walled.
+// floor; the scrap's sides and top run into never-seen cells, or into walls when walled. Drawn with
+// y up from the grid's bottom edge and cell (x, y) the square [x, x + 1] x [y, y + 1], then put in the
+// segmenter's grid coordinates (cell centres at whole numbers, row 0 the top row).
 struct ScrapBehindGap {
   PieceSet set;
   cv::Mat cells;
   ScrapBehindGap(int gap, bool walled) {
     const int a = 100 - gap / 2, b = a + gap;
-    set.pieces = {{{{0, 0}, {200, 0}, {200, 160}, {static_cast<double>(b), 160}, {static_cast<double>(a), 160}, {0, 160}}, {}},
-                  {{{static_cast<double>(a), 160}, {static_cast<double>(b), 160}, {static_cast<double>(b), 164}, {112, 164},
-                    {112, 184}, {88, 184}, {88, 164}, {static_cast<double>(a), 164}},
+    const double da = a - 0.5, db = b - 0.5;
+    set.pieces = {{{{-0.5, -0.5}, {199.5, -0.5}, {199.5, 159.5}, {db, 159.5}, {da, 159.5}, {-0.5, 159.5}}, {}},
+                  {{{da, 159.5}, {db, 159.5}, {db, 163.5}, {111.5, 163.5}, {111.5, 183.5}, {87.5, 183.5}, {87.5, 163.5}, {da, 163.5}},
                    {}}};
-    set.add_cut({{static_cast<double>(a), 160}, {static_cast<double>(b), 160}}, CutRule::kDoor);
+    set.add_cut({{da, 159.5}, {db, 159.5}}, CutRule::kDoor);
     cells = cv::Mat(200, 220, CV_8UC1, cv::Scalar(kOccupied));
     if (!walled) cells(cv::Rect(82, 164, 36, 26)).setTo(kUnknown);
     cells(cv::Rect(0, 0, 200, 160)).setTo(kFree);
     cells(cv::Rect(a, 160, gap, 4)).setTo(kFree);
     cells(cv::Rect(88, 164, 24, 20)).setTo(kFree);
+    cv::flip(cells, cells, 0);
   }
 };
 
