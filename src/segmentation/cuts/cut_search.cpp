@@ -92,6 +92,7 @@ std::optional<Candidate> nearest_across_corner(const DoorSearch& search, const E
   auto box_outside_cone = [&](const Box& b) {
     const double side1 = u1.x * ((u1.x > 0.0 ? b.y1 : b.y0) - v.y) - u1.y * ((u1.y > 0.0 ? b.x0 : b.x1) - v.x);
     const double side2 = ((u2.y > 0.0 ? b.x1 : b.x0) - v.x) * u2.y - ((u2.x > 0.0 ? b.y0 : b.y1) - v.y) * u2.x;
+    if (side1 >= 0.0 && side2 >= 0.0) return false;  // the margin is positive: no need to know it
     const double reach = std::max(std::abs(b.x0 - v.x), std::abs(b.x1 - v.x)) + std::max(std::abs(b.y0 - v.y), std::abs(b.y1 - v.y));
     const double margin = 2e-9 * reach + 1e-12;
     return side1 < -margin || side2 < -margin;
@@ -107,8 +108,8 @@ std::optional<Candidate> nearest_across_corner(const DoorSearch& search, const E
     // No point of the edge can beat the best so far if its bounding box is farther, or lie in the
     // cone if its box lies outside.
     const Box& b = boxes[static_cast<std::size_t>(id)];
-    const double gx = std::max({b.x0 - v.x, 0.0, v.x - b.x1});
-    const double gy = std::max({b.y0 - v.y, 0.0, v.y - b.y1});
+    const double gx = std::max(std::max(b.x0 - v.x, v.x - b.x1), 0.0);
+    const double gy = std::max(std::max(b.y0 - v.y, v.y - b.y1), 0.0);
     if (gx * gx + gy * gy >= best2) return;
     if (box_outside_cone(b)) return;
     const Edge& e = search.edges[static_cast<std::size_t>(id)];
