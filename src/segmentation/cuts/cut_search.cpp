@@ -232,8 +232,10 @@ bool has_wide_sides(const DoorSearch& search, const EdgeGrid& grid, const Candid
 
 // Narrowest first; a door found from both of its jambs (or from two corners of one wall end) is
 // kept once; crossing cuts are not allowed. Each candidate is tested against the accepted cuts near
-// it only (a grid of their boxes), not against all of them.
-std::vector<Candidate> narrowest_compatible(std::vector<Candidate> doors, double resolution) {
+// it only (a grid of their boxes), not against all of them; keep last, as a candidate it rejects
+// would not have blocked any other.
+std::vector<Candidate> narrowest_compatible(std::vector<Candidate> doors, double resolution,
+                                           const std::function<bool(const Candidate&)>& keep) {
   std::sort(doors.begin(), doors.end(), [](const Candidate& x, const Candidate& y) {
     return std::tie(x.width, x.segment.a.x, x.segment.a.y, x.segment.b.x, x.segment.b.y) <
            std::tie(y.width, y.segment.a.x, y.segment.a.y, y.segment.b.x, y.segment.b.y);
@@ -248,7 +250,7 @@ std::vector<Candidate> narrowest_compatible(std::vector<Candidate> doors, double
              (distance_to_segment(c.segment.a, s) < duplicate && distance_to_segment(c.segment.b, s) < duplicate) ||
              (distance_to_segment(s.a, c.segment) < duplicate && distance_to_segment(s.b, c.segment) < duplicate);
     });
-    if (conflict) continue;
+    if (conflict || (keep && !keep(c))) continue;
     accepted.push_back(c);
     near.add(c.segment);
   }
