@@ -72,9 +72,10 @@ namespace {
 // and q), inside the cone that resolves the corner; nullopt unless it lies on ring r itself (or,
 // across, on another ring, both joinable: such a cut separates nothing alone, only with the cuts
 // on the island's other sides).
-std::optional<Candidate> nearest_across_corner(const DoorSearch& search, const EdgeGrid& grid, int r, int i,
-                                               const Point2& p, const Point2& v, const Point2& q, bool across,
-                                               std::vector<unsigned>& seen, unsigned stamp) {
+// The corner's own two edges are edges[own_before] and edges[own].
+std::optional<Candidate> nearest_across_corner(const DoorSearch& search, const EdgeGrid& grid, const std::vector<Box>& boxes,
+                                               int r, int own_before, int own, const Point2& p, const Point2& v,
+                                               const Point2& q, bool across, std::vector<unsigned>& seen, unsigned stamp) {
   // Directions that resolve the corner: between the continuations of its two edges.
   const Point2 e1 = minus(v, p), e2 = minus(v, q);
   const double l1 = length(e1), l2 = length(e2);
@@ -84,21 +85,18 @@ std::optional<Candidate> nearest_across_corner(const DoorSearch& search, const E
     const double tolerance = 1e-9 * (std::abs(d.x) + std::abs(d.y));
     return cross(u1, d) >= -tolerance && cross(d, u2) >= -tolerance;
   };
-  // Whether no point of the box [x0, x1] x [y0, y1] passes in_cone(): all four corners beyond one side
-  // of the cone by more than the tolerance any point of the box is given (it is linear over the box).
-  auto box_outside_cone = [&](double x0, double y0, double x1, double y1) {
-    double side1 = -kInfinity, side2 = -kInfinity, reach = 0.0;
-    for (const Point2& c : {Point2{x0, y0}, Point2{x1, y0}, Point2{x0, y1}, Point2{x1, y1}}) {
-      const Point2 d = minus(c, v);
-      side1 = std::max(side1, cross(u1, d));
-      side2 = std::max(side2, cross(d, u2));
-      reach = std::max(reach, std::abs(d.x) + std::abs(d.y));
-    }
+  // Whether no point of the box passes in_cone(): all four corners beyond one side of the cone by
+  // more than the tolerance any point of the box is given (it is linear over the box). Each side's
+  // largest value over the corners is at the corner its signs pick (every rounded step is monotone
+  // in it), and so is the largest |dx| + |dy|: the same numbers as trying all four corners.
+  auto box_outside_cone = [&](const Box& b) {
+    const double side1 = u1.x * ((u1.x > 0.0 ? b.y1 : b.y0) - v.y) - u1.y * ((u1.y > 0.0 ? b.x0 : b.x1) - v.x);
+    const double side2 = ((u2.y > 0.0 ? b.x1 : b.x0) - v.x) * u2.y - ((u2.x > 0.0 ? b.y0 : b.y1) - v.y) * u2.x;
+    if (side1 >= 0.0 && side2 >= 0.0) return false;  // the margin is positive: no need to know it
+    const double reach = std::max(std::abs(b.x0 - v.x), std::abs(b.x1 - v.x)) + std::max(std::abs(b.y0 - v.y), std::abs(b.y1 - v.y));
     const double margin = 2e-9 * reach + 1e-12;
     return side1 < -margin || side2 < -margin;
   };
-  const int n = static_cast<int>(search.rings[static_cast<std::size_t>(r)]->size());
-  const int before = (i + n - 1) % n;
   double best2 = search.reach * search.reach;  // squared distance of the nearest point so far
   Point2 best_point;
   int best_ring = -1;
@@ -106,14 +104,15 @@ std::optional<Candidate> nearest_across_corner(const DoorSearch& search, const E
     // An edge in several cells is met again: its points cannot beat the best so far a second time.
     if (seen[static_cast<std::size_t>(id)] == stamp) return;
     seen[static_cast<std::size_t>(id)] = stamp;
-    const Edge& e = search.edges[static_cast<std::size_t>(id)];
-    if (e.ring == r && (e.index == i || e.index == before)) return;
+    if (id == own || id == own_before) return;
     // No point of the edge can beat the best so far if its bounding box is farther, or lie in the
     // cone if its box lies outside.
-    const double gx = std::max({std::min(e.a.x, e.b.x) - v.x, 0.0, v.x - std::max(e.a.x, e.b.x)});
-    const double gy = std::max({std::min(e.a.y, e.b.y) - v.y, 0.0, v.y - std::max(e.a.y, e.b.y)});
+    const Box& b = boxes[static_cast<std::size_t>(id)];
+    const double gx = std::max(std::max(b.x0 - v.x, v.x - b.x1), 0.0);
+    const double gy = std::max(std::max(b.y0 - v.y, v.y - b.y1), 0.0);
     if (gx * gx + gy * gy >= best2) return;
-    if (box_outside_cone(std::min(e.a.x, e.b.x), std::min(e.a.y, e.b.y), std::max(e.a.x, e.b.x), std::max(e.a.y, e.b.y))) return;
+    if (box_outside_cone(b)) return;
+    const Edge& e = search.edges[static_cast<std::size_t>(id)];
     auto consider = [&](const Point2& x) {
       const Point2 d = minus(x, v);
       const double d2 = dot(d, d);
@@ -195,6 +194,15 @@ std::vector<Candidate> corner_cuts(const DoorSearch& search, const EdgeGrid& gri
   std::vector<Candidate> candidates;
   std::vector<unsigned> seen(search.edges.size(), 0);  // per edge: the last corner that looked at it
   unsigned stamp = 0;
+  // Each edge's box once, not once per corner that meets it; and where each ring's edges start
+  // (door_search lists them ring by ring, edge i of a ring from its vertex i).
+  std::vector<Box> boxes;
+  boxes.reserve(search.edges.size());
+  for (const Edge& e : search.edges)
+    boxes.push_back({std::min(e.a.x, e.b.x), std::min(e.a.y, e.b.y), std::max(e.a.x, e.b.x), std::max(e.a.y, e.b.y)});
+  std::vector<int> first_edge(search.rings.size() + 1, 0);
+  for (std::size_t r = 0; r < search.rings.size(); ++r)
+    first_edge[r + 1] = first_edge[r] + static_cast<int>(search.rings[r]->size());
   std::optional<IslandReach> islands;
   if (across) islands.emplace(search);
   for_each_reflex_corner(
@@ -204,7 +212,10 @@ std::vector<Candidate> corner_cuts(const DoorSearch& search, const EdgeGrid& gri
       },
       [&](int r, int i, const Point2& p, const Point2& v, const Point2& q) {
         if (islands && r == 0 && !islands->near(v)) return;
-        if (auto c = nearest_across_corner(search, grid, r, i, p, v, q, across, seen, ++stamp)) candidates.push_back(*c);
+        const int first = first_edge[static_cast<std::size_t>(r)];
+        const int n = first_edge[static_cast<std::size_t>(r) + 1] - first;
+        if (auto c = nearest_across_corner(search, grid, boxes, r, first + (i + n - 1) % n, first + i, p, v, q, across, seen, ++stamp))
+          candidates.push_back(*c);
       });
   return candidates;
 }
@@ -221,8 +232,10 @@ bool has_wide_sides(const DoorSearch& search, const EdgeGrid& grid, const Candid
 
 // Narrowest first; a door found from both of its jambs (or from two corners of one wall end) is
 // kept once; crossing cuts are not allowed. Each candidate is tested against the accepted cuts near
-// it only (a grid of their boxes), not against all of them.
-std::vector<Candidate> narrowest_compatible(std::vector<Candidate> doors, double resolution) {
+// it only (a grid of their boxes), not against all of them; keep last, as a candidate it rejects
+// would not have blocked any other.
+std::vector<Candidate> narrowest_compatible(std::vector<Candidate> doors, double resolution,
+                                           const std::function<bool(const Candidate&)>& keep) {
   std::sort(doors.begin(), doors.end(), [](const Candidate& x, const Candidate& y) {
     return std::tie(x.width, x.segment.a.x, x.segment.a.y, x.segment.b.x, x.segment.b.y) <
            std::tie(y.width, y.segment.a.x, y.segment.a.y, y.segment.b.x, y.segment.b.y);
@@ -237,7 +250,7 @@ std::vector<Candidate> narrowest_compatible(std::vector<Candidate> doors, double
              (distance_to_segment(c.segment.a, s) < duplicate && distance_to_segment(c.segment.b, s) < duplicate) ||
              (distance_to_segment(s.a, c.segment) < duplicate && distance_to_segment(s.b, c.segment) < duplicate);
     });
-    if (conflict) continue;
+    if (conflict || (keep && !keep(c))) continue;
     accepted.push_back(c);
     near.add(c.segment);
   }

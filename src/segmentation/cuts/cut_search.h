@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <unordered_map>
 #include <utility>
@@ -150,8 +151,11 @@ class CutGrid {
 
 // Narrowest first; a door found from both of its jambs (or from two corners of one wall end) is
 // kept once; crossing cuts are not allowed. Each candidate is tested against the accepted cuts near
-// it (CutGrid), not against all of them.
-std::vector<Candidate> narrowest_compatible(std::vector<Candidate> doors, double resolution);
+// it (CutGrid), not against all of them. keep (when given) is a further test a candidate must pass, asked
+// only of those no accepted cut conflicts with: the same cuts as keeping only the candidates it passes
+// beforehand, without testing the many a narrower cut rules out anyway.
+std::vector<Candidate> narrowest_compatible(std::vector<Candidate> doors, double resolution,
+                                           const std::function<bool(const Candidate&)>& keep = {});
 
 // The segments of candidates, in order.
 std::vector<Segment2> segments_of(const std::vector<Candidate>& candidates);

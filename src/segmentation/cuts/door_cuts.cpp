@@ -15,11 +15,8 @@ void validate(const DoorOptions& options) {
 
 std::vector<Segment2> find_passage_cuts(const PolygonWithHoles& polygon, double resolution, const DoorOptions& options) {
   return search_cuts(polygon, resolution, options, options.passages, {}, [&](const DoorSearch& search, const EdgeGrid& grid) {
-    std::vector<Candidate> doors;
-    for (const Candidate& c : corner_cuts(search, grid, false)) {
-      if (has_wide_sides(search, grid, c)) doors.push_back(c);
-    }
-    return segments_of(narrowest_compatible(std::move(doors), resolution));
+    return segments_of(narrowest_compatible(corner_cuts(search, grid, false), resolution,
+                                            [&](const Candidate& c) { return has_wide_sides(search, grid, c); }));
   });
 }
 

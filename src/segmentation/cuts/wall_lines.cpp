@@ -23,17 +23,32 @@ std::optional<Point2> wall_direction(const Ring& ring, int i, int step, double r
   // Squared lengths well below reach² skip hypot (the walk passes many vertices of a noisy wall);
   // the margin leaves every decision near reach to the exact test below.
   const double surely_short = reach * reach * (1.0 - 1e-9);
-  for (int k = 1, index_k = further(i); k < n; ++k, index_k = further(index_k)) {
-    const Point2& end = ring[static_cast<std::size_t>(index_k)];
-    const Point2 d = minus(v, end);
-    if (dot(d, d) < surely_short) continue;
-    const double l = length(d);
-    if (l < reach) continue;
-    for (int j = 1, index_j = further(i); j < k; ++j, index_j = further(index_j))
-      if (std::abs(cross(d, minus(ring[static_cast<std::size_t>(index_j)], end))) / l > tolerance) return std::nullopt;
-    return Point2{d.x / l, d.y / l};
+  auto far = [&](int index) {
+    const Point2 d = minus(v, ring[static_cast<std::size_t>(index)]);
+    return dot(d, d) >= surely_short && length(d) >= reach;
+  };
+  // The first vertex at least reach from v, k vertices away (k < n), walking the ring as two runs
+  // of indices (up to its end, then on from its other end) with no wrap test per vertex; k 0: none.
+  int k = 1, index_k = -1;
+  if (step < 0) {
+    for (int index = i + 1; index < n && index_k < 0; ++index, ++k)
+      if (far(index)) index_k = index;
+    for (int index = 0; k < n && index_k < 0; ++index, ++k)
+      if (far(index)) index_k = index;
+  } else {
+    for (int index = i - 1; index >= 0 && index_k < 0; --index, ++k)
+      if (far(index)) index_k = index;
+    for (int index = n - 1; k < n && index_k < 0; --index, ++k)
+      if (far(index)) index_k = index;
   }
-  return std::nullopt;
+  if (index_k < 0) return std::nullopt;
+  --k;  // the loops counted one past the vertex found
+  const Point2& end = ring[static_cast<std::size_t>(index_k)];
+  const Point2 d = minus(v, end);
+  const double l = length(d);
+  for (int j = 1, index_j = further(i); j < k; ++j, index_j = further(index_j))
+    if (std::abs(cross(d, minus(ring[static_cast<std::size_t>(index_j)], end))) / l > tolerance) return std::nullopt;
+  return Point2{d.x / l, d.y / l};
 }
 
 // Counter-clockwise angle from direction `from` to direction `to`, in [0, 2 pi).
