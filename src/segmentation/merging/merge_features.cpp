@@ -89,10 +89,8 @@ std::vector<double> merge_features(RoomGraph& graph, std::size_t k, const RoomMe
   // Each measure once: every one walks the rooms' pieces and cuts.
   const double p_narrow = graph.room_perimeter(narrow), p_wide = graph.room_perimeter(wide);
   const double shared = graph.shared_cut_length(narrow, wide);
-  // Each room's cuts to other rooms: its open share, and what is left of its outline for the shares
-  // of walls and never-seen cells (RoomGraph::own_outline()).
+  // Each room's cuts to other rooms: its open share.
   const double open_narrow = graph.shared_cut_length(narrow, -1), open_wide = graph.shared_cut_length(wide, -1);
-  const double own_narrow = p_narrow - open_narrow, own_wide = p_wide - open_wide;
   const double t_narrow = graph.room_thickness(narrow);
   const double perimeter = std::max(std::min(p_narrow, p_wide), kMinLength);
   const double length = std::max(side.length, kMinLength);
@@ -121,10 +119,10 @@ std::vector<double> merge_features(RoomGraph& graph, std::size_t k, const RoomMe
       std::log(std::min(graph.elongation({narrow}), 100.0)),
       std::log(std::min(graph.elongation({narrow, wide}), 100.0)),
       static_cast<double>(std::min(side.ends_on_holes, 2)),
-      outline_share(graph.wall_length(narrow), own_narrow),
-      outline_share(graph.wall_length(wide), own_wide),
-      outline_share(graph.unknown_length(narrow), own_narrow),
-      outline_share(graph.unknown_length(wide), own_wide),
+      graph.wall_share(narrow),
+      graph.wall_share(wide),
+      graph.unknown_share(narrow),
+      graph.unknown_share(wide),
       side.skew / (M_PI / 4.0),
       std::log(length / scale),
       std::log(length / cut_scale),

@@ -308,7 +308,10 @@ double RoomGraph::unknown_length(int r) {
   return length;
 }
 
+namespace {
+// A length along a room's outline over the outline (own_outline()), at most 1; 0 without one.
 double outline_share(double length, double outline) { return outline > 0.0 ? std::min(length / outline, 1.0) : 0.0; }
+}  // namespace
 
 double RoomGraph::wall_share(int r) { return outline_share(wall_length(r), own_outline(r)); }
 

@@ -75,10 +75,6 @@ class RoomGraph {
   double wall_share(int r);
   double unknown_share(int r);
   double own_outline(int r);  // m
-  // The lengths (m) of room r's outline along occupied and along never-seen cells: the shares'
-  // numerators, for a caller that has the outline already.
-  double wall_length(int r);
-  double unknown_length(int r);
   // Whether the grid holds an occupied cell (or is not known): without, the map draws its walls in the
   // never-seen grey, and walls cannot be told from the dark. Looked at when first asked.
   bool walls_seen();
@@ -106,6 +102,9 @@ class RoomGraph {
   void mark_furniture(const PolygonWithHoles& polygon, double furniture_size);
   void measure_scales();
   void measure_outlines(const Edges& edges, const cv::Mat& cells);
+  // The lengths (m) of room r's outline along occupied and along never-seen cells: the shares' numerators.
+  double wall_length(int r);
+  double unknown_length(int r);
   double chord(int r, const Point2& p, const Point2& u);
   std::vector<double> chord_ts_;  // chord()'s crossings and spans, kept to spare their allocations
   std::vector<std::pair<double, double>> chord_spans_;
@@ -157,9 +156,6 @@ class RoomGraph {
   std::vector<RoomMeasures> room_measures_;
   RoomMeasures& measures(int r);  // r's, measured again when it grew
 };
-
-// A length along a room's outline over the outline (RoomGraph::own_outline()), at most 1; 0 without one.
-double outline_share(double length, double outline);
 
 }  // namespace topocut
 
