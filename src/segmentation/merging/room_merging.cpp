@@ -251,11 +251,12 @@ int fragment_of(RoomGraph& g, int r, const RoomMergeOptions& options) {
 void fold_small_rooms(ComponentMerge& merge) {
   RoomGraph& g = merge.graph;
   const RoomMergeOptions& options = merge.options;
+  // One thickness per criterion: the hand rules fold thin rooms, learned merging only slivers.
+  const double thickness = options.learned ? options.sliver_thickness : options.min_room_thickness;
   fold_rooms(g, [&](int r) {
     return g.room_area(r) < options.min_room_area ||
            (options.min_room_width > 0.0 && room_width(g, r, options.door_like.width_depth) < options.min_room_width) ||
-           (!options.learned && options.min_room_thickness > 0.0 && g.room_thickness(r) < options.min_room_thickness) ||
-           (options.learned && options.sliver_thickness > 0.0 && g.room_thickness(r) < options.sliver_thickness);
+           (thickness > 0.0 && g.room_thickness(r) < thickness);
   });
 }
 
