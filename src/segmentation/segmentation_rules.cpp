@@ -104,8 +104,8 @@ std::vector<SegmentationRule> make_rules() {
                           "no cuts across narrow passages (doors) before the decomposition",
                           [](const SegmentOptions& o) { return o.doors.passages; }, [](SegmentOptions& o) { o.doors.passages = false; }),
                CutRule::kDoor,
-               [](const PolygonWithHoles& p, double res, const DoorOptions& d, const std::vector<Segment2>&) {
-                 return find_passage_cuts(p, res, d);
+               [](const PolygonWithHoles& p, double res, const DoorOptions& d, const std::vector<Segment2>&, const CutSearchIndex* index) {
+                 return find_passage_cuts(p, res, d, index);
                },
                false),
       cut_rule(stage_rule("wall-openings", RuleStage::kCut, "thin walls that stop short continued to the next obstacle",

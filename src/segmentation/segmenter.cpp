@@ -208,9 +208,10 @@ PieceSet decompose_polygon(const PolygonWithHoles& polygon, double resolution, c
                            SegmentTimes* times) {
   StageTimer timer(times, SegmentStage::kCuts);
   PieceSet set;
+  const CutSearchIndex index(polygon, resolution, options.doors);  // every cut row searches the same edges
   for (const SegmentationRule& rule : segmentation_rules()) {
     if ((rule.may_fail && !fallible) || !starts(rule, RuleStage::kCut, options)) continue;
-    for (const Segment2& cut : rule.find_cuts(polygon, resolution, options.doors, set.cuts)) set.add_cut(cut, rule.cut_rule);
+    for (const Segment2& cut : rule.find_cuts(polygon, resolution, options.doors, set.cuts, &index)) set.add_cut(cut, rule.cut_rule);
   }
   timer.next(SegmentStage::kDecomposition);
   std::vector<PolygonWithHoles> parts = split_polygon(polygon, set.cuts);

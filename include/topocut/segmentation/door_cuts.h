@@ -10,6 +10,7 @@
 
 #include "topocut/core/geometry.h"
 #include "topocut/core/option_table.h"
+#include "topocut/segmentation/cut_search_index.h"
 #include "topocut/segmentation/door_like_cut.h"
 
 namespace topocut {
@@ -63,7 +64,9 @@ void validate(const DoorOptions& options);
 // one unit per cell; resolution converts the options' metres), the shortest cut across it to the same
 // ring, kept where both sides are much wider (door_like); pairwise disjoint (they may share an end
 // point), each splitting the polygon in two, narrowest first. Empty unless options.passages. Deterministic.
-std::vector<Segment2> find_passage_cuts(const PolygonWithHoles& polygon, double resolution, const DoorOptions& options = {});
+// index (cut_search_index.h), when given, holds the polygon's edges for every rule that searches it.
+std::vector<Segment2> find_passage_cuts(const PolygonWithHoles& polygon, double resolution, const DoorOptions& options = {},
+                                        const CutSearchIndex* index = nullptr);
 
 // The narrow passages (empty unless options.passages), then the wall openings (wall_openings.h, unless
 // options.extend_walls is off) clear of them.

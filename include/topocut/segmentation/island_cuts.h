@@ -13,8 +13,8 @@ namespace topocut {
 // or of a wall island (a hole longer than min_island_length, at most max_island_thickness thick on
 // average) to the nearest point of another of these, found and tested as doors are, not crossing the
 // doors; only those that, with the doors and each other, have a different part of the polygon on either
-// side (separating_chords). Doors are not repeated.
+// side (separating_chords). Doors are not repeated. index: as find_passage_cuts'.
 std::vector<Segment2> find_island_cuts(const PolygonWithHoles& polygon, double resolution, const DoorOptions& options,
-                                       const std::vector<Segment2>& doors);
+                                       const std::vector<Segment2>& doors, const CutSearchIndex* index = nullptr);
 
 }  // namespace topocut

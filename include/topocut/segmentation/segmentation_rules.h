@@ -60,10 +60,10 @@ struct SegmentationRule {
   std::function<PolygonWithHoles(const PolygonWithHoles& exact, const SegmentOptions&)> outline;
   // kCut: the rule's cuts of a component's polygon (grid coordinates), clear of the earlier rules'
   // cuts; and whether a failure of the decomposition after it retries without it (a cut that grazes a
-  // corner may leave a degenerate part).
+  // corner may leave a degenerate part). index: the polygon's edges, which every cut row searches.
   CutRule cut_rule = CutRule::kDecomposition;
   std::function<std::vector<Segment2>(const PolygonWithHoles&, double resolution, const DoorOptions&,
-                                      const std::vector<Segment2>& earlier)>
+                                      const std::vector<Segment2>& earlier, const CutSearchIndex* index)>
       find_cuts;
   bool may_fail = false;
   // kDecompose: the pieces of one part (grid coordinates, resolution metres per cell) and their cuts.

@@ -11,8 +11,9 @@ namespace topocut {
 
 // The wall openings of a free-space polygon (grid coordinates; options.max_gap, max_wall_thickness,
 // wall_end_probe, min_wall_length, gap_alignment, min_side_width), clear of doors (which are not
-// repeated); narrowest first, none crossing another. Empty unless options.extend_walls.
+// repeated); narrowest first, none crossing another. Empty unless options.extend_walls. index: as
+// find_passage_cuts'.
 std::vector<Segment2> find_wall_openings(const PolygonWithHoles& polygon, double resolution, const DoorOptions& options,
-                                         const std::vector<Segment2>& doors);
+                                         const std::vector<Segment2>& doors, const CutSearchIndex* index = nullptr);
 
 }  // namespace topocut

@@ -53,17 +53,53 @@ bool is_wall_island(const Ring& hole, double resolution, const DoorOptions& opti
          2.0 * std::abs(signed_area(hole)) / around * resolution <= options.max_island_thickness;
 }
 
-DoorSearch door_search(const PolygonWithHoles& polygon, double resolution, const DoorOptions& options,
-                       std::vector<bool> joinable) {
-  DoorSearch search{options, resolution, {&polygon.outer}, {}, options.max_width / resolution, options.door_like.width_depth / resolution,
-                    std::move(joinable)};
-  for (const Ring& hole : polygon.holes) search.rings.push_back(&hole);
-  for (std::size_t r = 0; r < search.rings.size(); ++r) {
-    const Ring& ring = *search.rings[r];
+namespace {
+
+std::vector<const Ring*> rings_of(const PolygonWithHoles& polygon) {
+  std::vector<const Ring*> rings{&polygon.outer};
+  for (const Ring& hole : polygon.holes) rings.push_back(&hole);
+  return rings;
+}
+
+std::vector<Edge> edges_of(const std::vector<const Ring*>& rings) {
+  std::vector<Edge> edges;
+  for (std::size_t r = 0; r < rings.size(); ++r) {
+    const Ring& ring = *rings[r];
     for (std::size_t i = 0; i < ring.size(); ++i)
-      search.edges.push_back({ring[i], ring[(i + 1) % ring.size()], static_cast<int>(r), static_cast<int>(i)});
+      edges.push_back({ring[i], ring[(i + 1) % ring.size()], static_cast<int>(r), static_cast<int>(i)});
   }
-  return search;
+  return edges;
+}
+
+// Free space lies left of every ring (outer CCW, holes CW): a right turn by at least min_turn is a
+// reflex corner. A left turn (positive cross product) has a positive angle, above -min_turn: no atan2.
+std::vector<Corner> reflex_corners(const std::vector<const Ring*>& rings, double min_turn) {
+  std::vector<Corner> corners;
+  for (std::size_t r = 0; r < rings.size(); ++r) {
+    const Ring& ring = *rings[r];
+    const int n = static_cast<int>(ring.size());
+    for (int i = 0; i < n; ++i) {
+      const Point2& p = ring[static_cast<std::size_t>((i + n - 1) % n)];
+      const Point2& v = ring[static_cast<std::size_t>(i)];
+      const Point2& q = ring[static_cast<std::size_t>((i + 1) % n)];
+      if (cross(minus(v, p), minus(q, v)) > 0.0 || turn_angle(p, v, q) > -min_turn) continue;
+      corners.push_back({static_cast<int>(r), i});
+    }
+  }
+  return corners;
+}
+
+}  // namespace
+
+PolygonEdges::PolygonEdges(const PolygonWithHoles& polygon, double cell, double min_turn)
+    : rings(rings_of(polygon)), edges(edges_of(rings)), grid(edges, cell), reflex(reflex_corners(rings, min_turn)) {}
+
+double search_cell(const DoorOptions& options, double resolution) { return std::max(4.0, options.max_width / resolution / 4.0); }
+
+DoorSearch door_search(const PolygonEdges& polygon, double resolution, const DoorOptions& options,
+                       std::vector<bool> joinable) {
+  return DoorSearch{options, resolution, polygon.rings, polygon.edges, polygon.reflex, options.max_width / resolution,
+                    options.door_like.width_depth / resolution, std::move(joinable)};
 }
 
 namespace {
@@ -195,7 +231,7 @@ std::vector<Candidate> corner_cuts(const DoorSearch& search, const EdgeGrid& gri
   std::vector<unsigned> seen(search.edges.size(), 0);  // per edge: the last corner that looked at it
   unsigned stamp = 0;
   // Each edge's box once, not once per corner that meets it; and where each ring's edges start
-  // (door_search lists them ring by ring, edge i of a ring from its vertex i).
+  // (PolygonEdges lists them ring by ring, edge i of a ring from its vertex i).
   std::vector<Box> boxes;
   boxes.reserve(search.edges.size());
   for (const Edge& e : search.edges)
@@ -278,3 +314,21 @@ std::vector<Segment2> without_doors(std::vector<Segment2> cuts, const std::vecto
 }
 
 }  // namespace topocut::cut_search
+
+namespace topocut {
+
+CutSearchIndex::CutSearchIndex(const PolygonWithHoles& polygon, double resolution, const DoorOptions& options)
+    : polygon_(polygon), resolution_(resolution), cell_(cut_search::search_cell(options, resolution)), min_turn_(options.min_turn) {}
+
+CutSearchIndex::~CutSearchIndex() = default;
+
+const cut_search::PolygonEdges* CutSearchIndex::edges_for(const PolygonWithHoles& polygon, double resolution,
+                                                          const DoorOptions& options) const {
+  if (&polygon != &polygon_ || resolution != resolution_ || cut_search::search_cell(options, resolution) != cell_ ||
+      options.min_turn != min_turn_)
+    return nullptr;
+  if (!edges_) edges_ = std::make_unique<cut_search::PolygonEdges>(polygon_, cell_, min_turn_);
+  return edges_.get();
+}
+
+}  // namespace topocut

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <unordered_map>
 #include <utility>
@@ -18,6 +19,7 @@
 #include "topocut/core/error.h"
 #include "topocut/core/geometry.h"
 #include "topocut/core/infinity.h"
+#include "topocut/segmentation/cut_search_index.h"
 #include "topocut/segmentation/door_cuts.h"
 
 namespace topocut::cut_search {
@@ -53,13 +55,36 @@ bool too_small_for_a_room(const Ring& hole, double resolution);
 // (solid or small) and clutter. 2 area / perimeter is the mean thickness of a thin shape.
 bool is_wall_island(const Ring& hole, double resolution, const DoorOptions& options);
 
+// A reflex corner: vertex i of ring r.
+struct Corner {
+  int ring = 0, index = 0;
+};
+
+// The polygon's rings, their edges, the edges' grid and the reflex corners: what every rule searches,
+// the same for all. The grid refers to the edges, so the whole neither moves nor copies.
+struct PolygonEdges {
+  // cell: the grid's; min_turn: the least right turn (radians, not negative) of a reflex corner.
+  PolygonEdges(const PolygonWithHoles& polygon, double cell, double min_turn);
+  PolygonEdges(const PolygonEdges&) = delete;
+  PolygonEdges& operator=(const PolygonEdges&) = delete;
+
+  std::vector<const Ring*> rings;  // the outline, then the holes
+  std::vector<Edge> edges;         // ring by ring, edge i of a ring from its vertex i
+  EdgeGrid grid;
+  std::vector<Corner> reflex;  // ring by ring, in vertex order
+};
+
+// The cell of the rules' edge grid: a quarter of the widest door, at least 4 cells.
+double search_cell(const DoorOptions& options, double resolution);
+
 // What every phase of the door search reads: the polygon's rings, their edges, and the option
 // lengths in cells.
 struct DoorSearch {
   const DoorOptions& options;
   double resolution = 1.0;
-  std::vector<const Ring*> rings;
-  std::vector<Edge> edges;
+  const std::vector<const Ring*>& rings;
+  const std::vector<Edge>& edges;
+  const std::vector<Corner>& reflex;  // corners turning right by at least options.min_turn
   double reach = 0.0;  // widest door, cells
   double depth = 0.0;  // how far beside a cut the sides are measured, cells
   // Per ring, for the island search only: may a cut join it to another such ring (the outline, and
@@ -67,25 +92,26 @@ struct DoorSearch {
   std::vector<bool> joinable;
 };
 
-DoorSearch door_search(const PolygonWithHoles& polygon, double resolution, const DoorOptions& options,
+DoorSearch door_search(const PolygonEdges& polygon, double resolution, const DoorOptions& options,
                        std::vector<bool> joinable);
 
 // Calls visit(r, i, p, v, q) for every reflex corner v (vertex i of ring r, between p and q) that
 // turns by at least min_turn, skipping holes for which skip_hole(r, hole) is true.
+// (The corners are PolygonEdges' list, found once for every rule; each hole is asked about once.)
 template <typename SkipHole, typename Visit>
 void for_each_reflex_corner(const DoorSearch& search, SkipHole&& skip_hole, Visit&& visit) {
-  for (std::size_t r = 0; r < search.rings.size(); ++r) {
-    const Ring& ring = *search.rings[r];
-    if (r > 0 && skip_hole(r, ring)) continue;
-    const int n = static_cast<int>(ring.size());
-    for (int i = 0; i < n; ++i) {
-      const Point2& p = ring[static_cast<std::size_t>((i + n - 1) % n)];
-      const Point2& v = ring[static_cast<std::size_t>(i)];
-      const Point2& q = ring[static_cast<std::size_t>((i + 1) % n)];
-      // Free space lies left of every ring (outer CCW, holes CW): a right turn is a reflex corner.
-      if (turn_angle(p, v, q) > -search.options.min_turn) continue;
-      visit(static_cast<int>(r), i, p, v, q);
+  int asked = 0;  // the ring skip was last decided for
+  bool skip = false;
+  for (const Corner& c : search.reflex) {
+    if (c.ring != asked) {
+      asked = c.ring;
+      skip = skip_hole(static_cast<std::size_t>(c.ring), *search.rings[static_cast<std::size_t>(c.ring)]);
     }
+    if (skip) continue;
+    const Ring& ring = *search.rings[static_cast<std::size_t>(c.ring)];
+    const int n = static_cast<int>(ring.size()), i = c.index;
+    visit(c.ring, i, ring[static_cast<std::size_t>((i + n - 1) % n)], ring[static_cast<std::size_t>(i)],
+          ring[static_cast<std::size_t>((i + 1) % n)]);
   }
 }
 
@@ -162,17 +188,23 @@ std::vector<Segment2> segments_of(const std::vector<Candidate>& candidates);
 
 // Validates the options and the resolution, then returns find(search, grid) over the polygon's
 // edges (joinable: DoorSearch::joinable), or nothing when the search is off or the polygon has no
-// edge.
+// edge. The edges are index's when it holds this polygon's (else built here).
 template <typename Find>
 auto search_cuts(const PolygonWithHoles& polygon, double resolution, const DoorOptions& options, bool on,
-                 std::vector<bool> joinable, Find&& find) -> decltype(find(std::declval<const DoorSearch&>(), std::declval<const EdgeGrid&>())) {
+                 std::vector<bool> joinable, const CutSearchIndex* index, Find&& find)
+    -> decltype(find(std::declval<const DoorSearch&>(), std::declval<const EdgeGrid&>())) {
   validate(options);
   if (!std::isfinite(resolution) || resolution <= 0.0) throw Error("the map resolution must be a positive number");
   if (!on) return {};
-  const DoorSearch search = door_search(polygon, resolution, options, std::move(joinable));
-  if (search.edges.empty()) return {};
-  const EdgeGrid grid(search.edges, std::max(4.0, search.reach / 4.0));
-  return find(search, grid);
+  std::unique_ptr<PolygonEdges> own;
+  const PolygonEdges* edges = index ? index->edges_for(polygon, resolution, options) : nullptr;
+  if (!edges) {
+    own = std::make_unique<PolygonEdges>(polygon, search_cell(options, resolution), options.min_turn);
+    edges = own.get();
+  }
+  if (edges->edges.empty()) return {};
+  const DoorSearch search = door_search(*edges, resolution, options, std::move(joinable));
+  return find(search, edges->grid);
 }
 
 // The doors as candidates that go first and stay: narrowest_compatible keeps later cuts off them.

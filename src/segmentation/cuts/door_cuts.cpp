@@ -13,8 +13,9 @@ void validate(const DoorOptions& options) {
   check_option_rows(door_option_rows(), options);
 }
 
-std::vector<Segment2> find_passage_cuts(const PolygonWithHoles& polygon, double resolution, const DoorOptions& options) {
-  return search_cuts(polygon, resolution, options, options.passages, {}, [&](const DoorSearch& search, const EdgeGrid& grid) {
+std::vector<Segment2> find_passage_cuts(const PolygonWithHoles& polygon, double resolution, const DoorOptions& options,
+                                        const CutSearchIndex* index) {
+  return search_cuts(polygon, resolution, options, options.passages, {}, index, [&](const DoorSearch& search, const EdgeGrid& grid) {
     return segments_of(narrowest_compatible(corner_cuts(search, grid, false), resolution,
                                             [&](const Candidate& c) { return has_wide_sides(search, grid, c); }));
   });
@@ -22,8 +23,9 @@ std::vector<Segment2> find_passage_cuts(const PolygonWithHoles& polygon, double 
 
 std::vector<Segment2> find_door_cuts(const PolygonWithHoles& polygon, double resolution, const DoorOptions& options) {
   validate(options);
-  std::vector<Segment2> cuts = find_passage_cuts(polygon, resolution, options);
-  const std::vector<Segment2> openings = find_wall_openings(polygon, resolution, options, cuts);
+  const CutSearchIndex index(polygon, resolution, options);  // both rules search the same edges
+  std::vector<Segment2> cuts = find_passage_cuts(polygon, resolution, options, &index);
+  const std::vector<Segment2> openings = find_wall_openings(polygon, resolution, options, cuts, &index);
   cuts.insert(cuts.end(), openings.begin(), openings.end());
   return cuts;
 }

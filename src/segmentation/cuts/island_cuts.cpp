@@ -8,7 +8,7 @@ namespace topocut {
 using namespace cut_search;
 
 std::vector<Segment2> find_island_cuts(const PolygonWithHoles& polygon, double resolution, const DoorOptions& options,
-                                       const std::vector<Segment2>& doors) {
+                                       const std::vector<Segment2>& doors, const CutSearchIndex* index) {
   // The outline, then each hole; most maps have no wall island, and then there is nothing to search.
   std::vector<bool> joinable{true};
   bool any = false;
@@ -18,7 +18,7 @@ std::vector<Segment2> find_island_cuts(const PolygonWithHoles& polygon, double r
       any = any || joinable.back();
     }
   }
-  return search_cuts(polygon, resolution, options, any, std::move(joinable), [&](const DoorSearch& search, const EdgeGrid& grid) {
+  return search_cuts(polygon, resolution, options, any, std::move(joinable), index, [&](const DoorSearch& search, const EdgeGrid& grid) {
     std::vector<Candidate> all = doors_first(doors);
     for (const Candidate& c : corner_cuts(search, grid, true)) {
       if (has_wide_sides(search, grid, c)) all.push_back(c);

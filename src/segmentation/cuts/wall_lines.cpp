@@ -106,8 +106,8 @@ std::vector<Candidate> wall_line_cuts(const DoorSearch& search, const EdgeGrid& 
 }  // namespace
 
 std::vector<Segment2> find_wall_line_cuts(const PolygonWithHoles& polygon, double resolution, const DoorOptions& options,
-                                          const std::vector<Segment2>& doors) {
-  return search_cuts(polygon, resolution, options, options.wall_lines, {}, [&](const DoorSearch& search, const EdgeGrid& grid) {
+                                          const std::vector<Segment2>& doors, const CutSearchIndex* index) {
+  return search_cuts(polygon, resolution, options, options.wall_lines, {}, index, [&](const DoorSearch& search, const EdgeGrid& grid) {
     std::vector<Candidate> all = doors_first(doors);
     for (const Candidate& c : wall_line_cuts(search, grid)) all.push_back(c);
     const std::vector<Segment2> kept = segments_of(narrowest_compatible(std::move(all), resolution));

@@ -102,8 +102,8 @@ std::vector<Candidate> wall_openings(const DoorSearch& search, const EdgeGrid& g
 }  // namespace
 
 std::vector<Segment2> find_wall_openings(const PolygonWithHoles& polygon, double resolution, const DoorOptions& options,
-                                         const std::vector<Segment2>& doors) {
-  return search_cuts(polygon, resolution, options, options.extend_walls, {},
+                                         const std::vector<Segment2>& doors, const CutSearchIndex* index) {
+  return search_cuts(polygon, resolution, options, options.extend_walls, {}, index,
                      [&](const DoorSearch& search, const EdgeGrid& grid) {
                        std::vector<Candidate> all = doors_first(doors);
                        for (const Candidate& c : wall_openings(search, grid)) all.push_back(c);
