@@ -136,11 +136,12 @@ std::optional<Candidate> nearest_across_corner(const DoorSearch& search, const E
   double best2 = search.reach * search.reach;  // squared distance of the nearest point so far
   Point2 best_point;
   int best_ring = -1;
+  // The corner's own edges count as met already: they are skipped without a test per edge.
+  seen[static_cast<std::size_t>(own)] = seen[static_cast<std::size_t>(own_before)] = stamp;
   grid.visit_nearest(v, search.reach, [&](int id) {
     // An edge in several cells is met again: its points cannot beat the best so far a second time.
     if (seen[static_cast<std::size_t>(id)] == stamp) return;
     seen[static_cast<std::size_t>(id)] = stamp;
-    if (id == own || id == own_before) return;
     // No point of the edge can beat the best so far if its bounding box is farther, or lie in the
     // cone if its box lies outside.
     const Box& b = boxes[static_cast<std::size_t>(id)];

@@ -87,8 +87,13 @@ class EdgeGrid {
   void visit_nearest(const Point2& p, double reach, F&& f, G&& keep_going) const {
     const int cx = column(p.x), cy = row(p.y);
     const int rings = static_cast<int>(std::ceil(reach / cell_)) + 1;
+    // Ring k's cells lie k - 1 cells beyond p's cell, and beyond p's distance to the nearest side of
+    // its own cell; that less a rounding margin (a point may sit a hair across the side of the cell
+    // it was registered in), so that no cell goes unvisited that could hold a nearer point.
+    const double bx = x0_ + cx * cell_, by = y0_ + cy * cell_;
+    const double inset = std::max(std::min({p.x - bx, bx + cell_ - p.x, p.y - by, by + cell_ - p.y}) - 1e-6 * cell_, 0.0);
     for (int k = 0; k <= rings; ++k) {
-      if (k > 0 && !keep_going((k - 1) * cell_)) return;
+      if (k > 0 && !keep_going((k - 1) * cell_ + inset)) return;
       for (int y = cy - k; y <= cy + k; ++y) {
         if (y < 0 || y >= ny_) continue;
         const bool edge_row = y == cy - k || y == cy + k;
