@@ -8,11 +8,24 @@ using namespace cut_search;
 
 namespace {
 
+// The length along the ring from vertex 0 to each vertex j (at[j]), and round the whole ring (at[n]).
+std::vector<double> arc_lengths(const Ring& ring) {
+  const std::size_t n = ring.size();
+  std::vector<double> at(n + 1, 0.0);
+  for (std::size_t j = 0; j < n; ++j) {
+    const Point2 d = minus(ring[(j + 1) % n], ring[j]);
+    at[j + 1] = at[j] + std::sqrt(dot(d, d));
+  }
+  return at;
+}
+
 // The direction (unit) of the wall that arrives at corner v (vertex i), read from the first vertex
 // at least `reach` cells behind v (step -1) or ahead of it (step +1): a straight wall, every vertex
 // in between within `tolerance` cells of that line, so a jagged hand-drawn or noisy wall gives the
 // direction of the wall, not of its last pixel step, and a short edge (a desk, a door frame) none.
-std::optional<Point2> wall_direction(const Ring& ring, int i, int step, double reach, double tolerance) {
+// at: the ring's arc_lengths().
+std::optional<Point2> wall_direction(const Ring& ring, const std::vector<double>& at, int i, int step, double reach,
+                                     double tolerance) {
   const int n = static_cast<int>(ring.size());
   const Point2& v = ring[static_cast<std::size_t>(i)];
   // The index one vertex further from v (step is +1 or -1), without a division per vertex.
@@ -28,21 +41,39 @@ std::optional<Point2> wall_direction(const Ring& ring, int i, int step, double r
     return dot(d, d) >= surely_short && length(d) >= reach;
   };
   // The first vertex at least reach from v, k vertices away (k < n), walking the ring as two runs
-  // of indices (up to its end, then on from its other end) with no wrap test per vertex; k 0: none.
-  int k = 1, index_k = -1;
-  if (step < 0) {
-    for (int index = i + 1; index < n && index_k < 0; ++index, ++k)
-      if (far(index)) index_k = index;
-    for (int index = 0; k < n && index_k < 0; ++index, ++k)
-      if (far(index)) index_k = index;
-  } else {
-    for (int index = i - 1; index >= 0 && index_k < 0; --index, ++k)
-      if (far(index)) index_k = index;
-    for (int index = n - 1; k < n && index_k < 0; --index, ++k)
-      if (far(index)) index_k = index;
+  // of indices (up to its end, then on from its other end) with no wrap test per vertex. A vertex
+  // less than reach along the ring from v is nearer than reach: each run starts at the first vertex
+  // that is not (found by bisection in at), less a margin far above the sums' rounding.
+  const double along = reach - 1e-6 * (reach + at[static_cast<std::size_t>(n)]);
+  const double* a = at.data();
+  int k = 0, index_k = -1;
+  if (step < 0) {  // i + 1 .. n - 1, then 0 .. i - 1
+    for (int index = static_cast<int>(std::lower_bound(a + i + 1, a + n, a[i] + along) - a); index < n; ++index)
+      if (far(index)) {
+        index_k = index;
+        k = index - i;
+        break;
+      }
+    const double wrap = a[n] - a[i];  // along the ring from v to vertex 0
+    for (int index = static_cast<int>(std::lower_bound(a, a + i, along - wrap) - a); index_k < 0 && index < i; ++index)
+      if (far(index)) {
+        index_k = index;
+        k = n - i + index;
+      }
+  } else {  // i - 1 .. 0, then n - 1 .. i + 1
+    for (int index = static_cast<int>(std::upper_bound(a, a + i, a[i] - along) - a) - 1; index >= 0; --index)
+      if (far(index)) {
+        index_k = index;
+        k = i - index;
+        break;
+      }
+    for (int index = static_cast<int>(std::upper_bound(a + i + 1, a + n, a[i] + a[n] - along) - a) - 1; index_k < 0 && index > i; --index)
+      if (far(index)) {
+        index_k = index;
+        k = i + n - index;
+      }
   }
   if (index_k < 0) return std::nullopt;
-  --k;  // the loops counted one past the vertex found
   const Point2& end = ring[static_cast<std::size_t>(index_k)];
   const Point2 d = minus(v, end);
   const double l = length(d);
@@ -90,12 +121,15 @@ std::vector<Candidate> wall_line_cuts(const DoorSearch& search, const EdgeGrid& 
   std::vector<Candidate> cuts;
   const double reach = search.options.wall_line_wall / search.resolution;
   const double tolerance = search.options.wall_line_straightness / search.resolution;
+  std::vector<std::vector<double>> arcs(search.rings.size());  // per ring, made when a corner first needs it
   for_each_reflex_corner(
       search, [&](std::size_t, const Ring& hole) { return too_small_for_a_room(hole, search.resolution); },
       [&](int r, int i, const Point2& p, const Point2& v, const Point2& q) {
         const Ring& ring = *search.rings[static_cast<std::size_t>(r)];
+        std::vector<double>& at = arcs[static_cast<std::size_t>(r)];
+        if (at.empty()) at = arc_lengths(ring);
         for (const int step : {1, -1}) {
-          const std::optional<Point2> dir = wall_direction(ring, i, step, reach, tolerance);
+          const std::optional<Point2> dir = wall_direction(ring, at, i, step, reach, tolerance);
           if (!dir) continue;
           if (const std::optional<Candidate> c = wall_line(search, grid, r, p, v, q, *dir)) cuts.push_back(*c);
         }
