@@ -10,11 +10,16 @@ namespace topocut::cut_search {
 // sampled up to depth; capped at cap (enough to call the side wide).
 double side_width(const EdgeGrid& grid, const Point2& mid, const Point2& u, const Point2& n, double depth, double cap) {
   const double inside = grid.cast(mid, n, depth);  // the side ends at the first wall along n
-  return sampled_side_width(depth, cap, [&](double d) -> std::optional<double> {
+  return std::min(cap, sampled_side_width(depth, cap, [&](double d) -> std::optional<double> {
     if (d >= inside) return std::nullopt;
     const Point2 p{mid.x + d * n.x, mid.y + d * n.y};
-    return std::min(grid.cast(p, u, cap), cap) + std::min(grid.cast(p, {-u.x, -u.y}, cap), cap);
-  });
+    const double one_way = std::min(grid.cast(p, u, cap), cap);
+    if (one_way >= cap) return cap;
+    // The other way only as far as the chord needs to reach cap, and a little beyond for rounding: a
+    // wall found there is the same wall, and none found leaves the chord at least cap.
+    const double other_way = grid.cast(p, {-u.x, -u.y}, cap - one_way + 1e-9 * cap);
+    return std::isfinite(other_way) ? one_way + std::min(other_way, cap) : cap;
+  }));
 }
 
 // Proper crossing or touching of two segments other than at shared end points. Not the
