@@ -32,13 +32,21 @@ std::uint64_t set_bits(const unsigned char* p, unsigned char pattern, bool set_w
 }
 
 // Appends the runs of one row's set cells, 64 cells at a time: a block that continues the current
-// state is skipped, in a mixed one the state changes are its set bits' edges.
+// state is skipped, in a mixed one the state changes are its set bits' edges. The row's last cells
+// (fewer than 64) are copied into a block whose remaining cells are not set, so a run that reaches
+// the row's end closes there.
 void scan_row(const unsigned char* p, int w, unsigned char pattern, bool set_when_equal, RowRuns& out) {
   bool in = false;
   int start = 0;
-  int x = 0;
-  for (; x + 64 <= w; x += 64) {
-    const std::uint64_t bits = set_bits(p + x, pattern, set_when_equal);
+  unsigned char tail[64];
+  for (int x = 0; x < w; x += 64) {
+    const unsigned char* block = p + x;
+    if (x + 64 > w) {
+      std::memset(tail, set_when_equal ? pattern ^ 1 : pattern, sizeof tail);
+      std::memcpy(tail, p + x, static_cast<std::size_t>(w - x));
+      block = tail;
+    }
+    const std::uint64_t bits = set_bits(block, pattern, set_when_equal);
     if (bits == (in ? ~std::uint64_t{0} : 0)) continue;
     // Bit i of changes: cell x+i differs from the cell before it.
     std::uint64_t changes = bits ^ ((bits << 1) | (in ? 1 : 0));
@@ -50,14 +58,7 @@ void scan_row(const unsigned char* p, int w, unsigned char pattern, bool set_whe
       in = !in;
     }
   }
-  for (; x < w; ++x) {
-    const bool set = (p[x] == pattern) == set_when_equal;
-    if (set == in) continue;
-    if (set) start = x;
-    else out.push({start, x});
-    in = set;
-  }
-  if (in) out.push({start, w});
+  if (in) out.push({start, w});  // a row of a multiple of 64 cells ending in a run
   out.end_row();
 }
 
