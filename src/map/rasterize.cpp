@@ -45,21 +45,19 @@ void nearest_labels_in(const cv::Mat& labels, const cv::Rect& window, const std:
                        std::vector<int>& settled_index, std::vector<int>& settled_label) {
   const int w = labels.cols;
   const cv::Mat local = labels(window);
-  // distanceTransform measures distance to zero cells (the labelled ones) and numbers them from 1 in
-  // raster order (DIST_LABEL_PIXEL): one pass builds its input and the label of each number.
-  cv::Mat sources(local.size(), CV_8UC1);
-  std::vector<int> label_of(1, 0);
-  for (int r = 0; r < local.rows; ++r) {
-    const int* l = local.ptr<int>(r);
-    unsigned char* s = sources.ptr<unsigned char>(r);
-    for (int c = 0; c < local.cols; ++c) {
-      s[c] = l[c] > 0 ? 0 : 255;
-      if (l[c] > 0) label_of.push_back(l[c]);
-    }
-  }
-  if (label_of.size() == 1) return;  // no label anywhere
+  cv::Mat sources = local <= 0;  // distanceTransform measures distance to zero cells: the labelled ones
+  if (cv::countNonZero(sources == 0) == 0) return;  // no label anywhere
   cv::Mat distance, nearest;
   cv::distanceTransform(sources, distance, nearest, cv::DIST_L2, 5, cv::DIST_LABEL_PIXEL);
+  double max_index = 0.0;
+  cv::minMaxLoc(nearest, nullptr, &max_index);
+  std::vector<int> label_of(static_cast<std::size_t>(max_index) + 1, 0);
+  for (int r = 0; r < local.rows; ++r) {
+    const int* l = local.ptr<int>(r);
+    const int* n = nearest.ptr<int>(r);
+    for (int c = 0; c < local.cols; ++c)
+      if (l[c] > 0) label_of[static_cast<std::size_t>(n[c])] = l[c];
+  }
   for (const int i : cells) {
     const int r = i / w - window.y, c = i % w - window.x;
     const int label = label_of[static_cast<std::size_t>(nearest.at<int>(r, c))];
