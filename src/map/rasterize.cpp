@@ -236,17 +236,28 @@ struct SpeckLabels {
 
 // For the rows of a band of the label image, the nearest labelled column at or left of each
 // column and at or right of it: a row's nearest label to a cell in one lookup, instead of reading
-// every cell around it. The rows are kept in a ring of `rows` slots, filled as the band moves down.
+// every cell around it. The rows are kept in a ring of `rows` slots, filled as the band moves down,
+// each only across the columns its cells may ask about (a label beyond them lies farther than the
+// cap from every cell that asks).
 class RowNeighbours {
  public:
   static constexpr int kNone = std::numeric_limits<int>::min() / 4;  // no label on that side
 
   RowNeighbours(const cv::Mat& labels, int rows) : labels_(labels), rows_(rows),
       row_of_(static_cast<std::size_t>(rows), -1), left_(static_cast<std::size_t>(rows) * labels.cols),
-      right_(left_.size()) {}
+      right_(left_.size()), from_(static_cast<std::size_t>(labels.rows), labels.cols), to_(from_.size(), -1) {}
+
+  // Announces a cell (r, c) that will ask about the rows within cap of it, columns within cap of c.
+  void will_ask(int r, int c, int cap) {
+    for (int y = std::max(0, r - cap); y <= std::min(labels_.rows - 1, r + cap); ++y) {
+      from_[static_cast<std::size_t>(y)] = std::min(from_[static_cast<std::size_t>(y)], std::max(0, c - cap));
+      to_[static_cast<std::size_t>(y)] = std::max(to_[static_cast<std::size_t>(y)], std::min(labels_.cols - 1, c + cap));
+    }
+  }
 
   // Columns of the nearest labels at or left of column c and at or right of it in row y (kNone and
-  // -kNone where there is none); y must not lie `rows` rows or more above a row asked before.
+  // -kNone where there is none within the columns announced for the row); y must not lie `rows`
+  // rows or more above a row asked before, and (y, c) must be within the cap of an announced cell.
   std::pair<int, int> at(int y, int c) {
     const std::size_t slot = static_cast<std::size_t>(y % rows_), w = static_cast<std::size_t>(labels_.cols);
     if (row_of_[slot] != y) fill(y, slot);
@@ -256,19 +267,21 @@ class RowNeighbours {
  private:
   void fill(int y, std::size_t slot) {
     const int w = labels_.cols;
+    const int from = from_[static_cast<std::size_t>(y)], to = to_[static_cast<std::size_t>(y)];
     const int* row = labels_.ptr<int>(y);
     int* left = left_.data() + slot * static_cast<std::size_t>(w);
     int* right = right_.data() + slot * static_cast<std::size_t>(w);
     int last = kNone;
-    for (int c = 0; c < w; ++c) left[c] = last = row[c] > 0 ? c : last;
+    for (int c = from; c <= to; ++c) left[c] = last = row[c] > 0 ? c : last;
     last = -kNone;
-    for (int c = w - 1; c >= 0; --c) right[c] = last = row[c] > 0 ? c : last;
+    for (int c = to; c >= from; --c) right[c] = last = row[c] > 0 ? c : last;
     row_of_[slot] = y;
   }
 
   const cv::Mat& labels_;
   int rows_;
   std::vector<int> row_of_, left_, right_;
+  std::vector<int> from_, to_;  // per row: the columns its cells may ask about
 };
 
 // The label of the nearest labelled cell to the cell (r, c) within cap cells in x and y, by
@@ -277,8 +290,7 @@ class RowNeighbours {
 // Each row offers one cell (its nearest, the left one at equal distance) and the rows are compared
 // by (distance, ring, row), an order with one least element whatever order the rows are read in:
 // they are read outwards from the cell's own row, and no farther row can be nearer once a row is
-// farther than the best found. A speck next to a room so costs a few rows, which a separate search
-// of the first square rings (the same answer: the least in the same order) did before at more cost.
+// farther than the best found.
 int nearest_in_band(const cv::Mat& labels, RowNeighbours& rows, int r, int c, int cap) {
   const int h = labels.rows;
   long best = std::numeric_limits<long>::max();
@@ -306,8 +318,38 @@ int nearest_in_band(const cv::Mat& labels, RowNeighbours& rows, int r, int c, in
   return label;
 }
 
-// Most specks lie next to a room: the nearest label within kRingCap cells (nearest_in_band) settles
-// them without a window. The cells are searched in raster order, so that the rows' nearest labels
+constexpr int kSmallRings = 8;  // rings nearest_in_small_rings() searches
+
+// Most specks lie a cell or two from a label: a search in the first square rings around the cell
+// (each row by row and column by column, a label taking the place of the best only when strictly
+// nearer) settles them when no farther ring can hold a nearer label; std::nullopt otherwise.
+std::optional<int> nearest_in_small_rings(const cv::Mat& labels, int r, int c) {
+  long best = std::numeric_limits<long>::max();
+  int label = 0;
+  for (int k = 1; k <= kSmallRings; ++k) {
+    for (int y = r - k; y <= r + k; ++y) {
+      if (y < 0 || y >= labels.rows) continue;
+      const int* row = labels.ptr<int>(y);
+      const bool edge_row = y == r - k || y == r + k;
+      for (int x = c - k; x <= c + k; x += edge_row ? 1 : 2 * k) {
+        if (x < 0 || x >= labels.cols || row[x] <= 0) continue;
+        const long d = static_cast<long>(y - r) * (y - r) + static_cast<long>(x - c) * (x - c);
+        if (d < best) {
+          best = d;
+          label = row[x];
+        }
+      }
+    }
+    // Ring k + 1 and beyond lie at least (k + 1)² away: none of them can be strictly nearer.
+    if (static_cast<long>(k + 1) * (k + 1) >= best) return label;
+  }
+  return std::nullopt;
+}
+
+// Most specks lie next to a room: the nearest label within kRingCap cells settles them without a
+// window: the first square rings around the cell, and for the cells they leave the band's rows
+// (nearest_in_band: the same answer, the least in the same order), each row filled only across the
+// columns those cells ask about. The cells are searched in raster order, so that the rows' nearest labels
 // are found once each, and the results kept in the cells' own order. Nothing is written here, so
 // the labelled cells taken are those present before this step, as in settle_orphans' windows.
 SpeckLabels nearest_in_rings(const cv::Mat& labels, const LabelPresence& presence, const std::vector<int>& unlabelled) {
@@ -326,10 +368,20 @@ SpeckLabels nearest_in_rings(const cv::Mat& labels, const LabelPresence& presenc
     std::stable_sort(search.begin(), search.end(), [&](std::size_t a, std::size_t b) { return unlabelled[a] < unlabelled[b]; });
   std::vector<int> found(unlabelled.size(), 0);
   RowNeighbours rows(labels, 2 * kRingCap + 1);
+  std::vector<std::size_t> far;  // the cells the small rings leave, in raster order
   for (const std::size_t k : search) {
     const int i = unlabelled[k];
-    found[k] = nearest_in_band(labels, rows, i / w, i % w, kRingCap);
+    // Where no tile within the small rings holds a label, their search finds none: it is not made.
+    const cv::Rect rings(i % w - kSmallRings, i / w - kSmallRings, 2 * kSmallRings + 1, 2 * kSmallRings + 1);
+    const std::optional<int> near = presence.maybe(rings & all) ? nearest_in_small_rings(labels, i / w, i % w) : std::nullopt;
+    if (near) {
+      found[k] = *near;
+    } else {
+      far.push_back(k);
+      rows.will_ask(i / w, i % w, kRingCap);
+    }
   }
+  for (const std::size_t k : far) found[k] = nearest_in_band(labels, rows, unlabelled[k] / w, unlabelled[k] % w, kRingCap);
   SpeckLabels specks;
   for (std::size_t k = 0; k < unlabelled.size(); ++k) {
     const int i = unlabelled[k];
