@@ -248,11 +248,9 @@ class RowNeighbours {
       right_(left_.size()), from_(static_cast<std::size_t>(labels.rows), labels.cols), to_(from_.size(), -1) {}
 
   // Announces a cell (r, c) that will ask about the rows within cap of it, columns within cap of c.
-  void will_ask(int r, int c, int cap) {
-    for (int y = std::max(0, r - cap); y <= std::min(labels_.rows - 1, r + cap); ++y) {
-      from_[static_cast<std::size_t>(y)] = std::min(from_[static_cast<std::size_t>(y)], std::max(0, c - cap));
-      to_[static_cast<std::size_t>(y)] = std::max(to_[static_cast<std::size_t>(y)], std::min(labels_.cols - 1, c + cap));
-    }
+  void will_ask(int r, int c) {
+    from_[static_cast<std::size_t>(r)] = std::min(from_[static_cast<std::size_t>(r)], c);
+    to_[static_cast<std::size_t>(r)] = std::max(to_[static_cast<std::size_t>(r)], c);
   }
 
   // Columns of the nearest labels at or left of column c and at or right of it in row y (kNone and
@@ -267,7 +265,15 @@ class RowNeighbours {
  private:
   void fill(int y, std::size_t slot) {
     const int w = labels_.cols;
-    const int from = from_[static_cast<std::size_t>(y)], to = to_[static_cast<std::size_t>(y)];
+    // The columns the announced cells within cap rows may ask about.
+    const int cap = rows_ / 2;
+    int from = labels_.cols, to = -1;
+    for (int r = std::max(0, y - cap); r <= std::min(labels_.rows - 1, y + cap); ++r) {
+      from = std::min(from, from_[static_cast<std::size_t>(r)]);
+      to = std::max(to, to_[static_cast<std::size_t>(r)]);
+    }
+    from = std::max(0, from - cap);
+    to = std::min(w - 1, to + cap);
     const int* row = labels_.ptr<int>(y);
     int* left = left_.data() + slot * static_cast<std::size_t>(w);
     int* right = right_.data() + slot * static_cast<std::size_t>(w);
@@ -281,7 +287,7 @@ class RowNeighbours {
   const cv::Mat& labels_;
   int rows_;
   std::vector<int> row_of_, left_, right_;
-  std::vector<int> from_, to_;  // per row: the columns its cells may ask about
+  std::vector<int> from_, to_;  // per row: the first and last column of its announced cells
 };
 
 // The label of the nearest labelled cell to the cell (r, c) within cap cells in x and y, by
@@ -318,40 +324,11 @@ int nearest_in_band(const cv::Mat& labels, RowNeighbours& rows, int r, int c, in
   return label;
 }
 
-constexpr int kSmallRings = 8;  // rings nearest_in_small_rings() searches
-
-// Most specks lie a cell or two from a label: a search in the first square rings around the cell
-// (each row by row and column by column, a label taking the place of the best only when strictly
-// nearer) settles them when no farther ring can hold a nearer label; std::nullopt otherwise.
-std::optional<int> nearest_in_small_rings(const cv::Mat& labels, int r, int c) {
-  long best = std::numeric_limits<long>::max();
-  int label = 0;
-  for (int k = 1; k <= kSmallRings; ++k) {
-    for (int y = r - k; y <= r + k; ++y) {
-      if (y < 0 || y >= labels.rows) continue;
-      const int* row = labels.ptr<int>(y);
-      const bool edge_row = y == r - k || y == r + k;
-      for (int x = c - k; x <= c + k; x += edge_row ? 1 : 2 * k) {
-        if (x < 0 || x >= labels.cols || row[x] <= 0) continue;
-        const long d = static_cast<long>(y - r) * (y - r) + static_cast<long>(x - c) * (x - c);
-        if (d < best) {
-          best = d;
-          label = row[x];
-        }
-      }
-    }
-    // Ring k + 1 and beyond lie at least (k + 1)² away: none of them can be strictly nearer.
-    if (static_cast<long>(k + 1) * (k + 1) >= best) return label;
-  }
-  return std::nullopt;
-}
-
-// Most specks lie next to a room: the nearest label within kRingCap cells settles them without a
-// window: the first square rings around the cell, and for the cells they leave the band's rows
-// (nearest_in_band: the same answer, the least in the same order), each row filled only across the
-// columns those cells ask about. The cells are searched in raster order, so that the rows' nearest labels
-// are found once each, and the results kept in the cells' own order. Nothing is written here, so
-// the labelled cells taken are those present before this step, as in settle_orphans' windows.
+// Most specks lie next to a room: the nearest label within kRingCap cells (nearest_in_band, which
+// reads few rows for a speck next to a room) settles them without a window. The cells are searched
+// in raster order, so that the rows' nearest labels are found once each, and the results kept in
+// the cells' own order. Nothing is written here, so the labelled cells taken are those present
+// before this step, as in settle_orphans' windows.
 SpeckLabels nearest_in_rings(const cv::Mat& labels, const LabelPresence& presence, const std::vector<int>& unlabelled) {
   constexpr int kRingCap = 24;
   const int h = labels.rows, w = labels.cols;
@@ -368,20 +345,8 @@ SpeckLabels nearest_in_rings(const cv::Mat& labels, const LabelPresence& presenc
     std::stable_sort(search.begin(), search.end(), [&](std::size_t a, std::size_t b) { return unlabelled[a] < unlabelled[b]; });
   std::vector<int> found(unlabelled.size(), 0);
   RowNeighbours rows(labels, 2 * kRingCap + 1);
-  std::vector<std::size_t> far;  // the cells the small rings leave, in raster order
-  for (const std::size_t k : search) {
-    const int i = unlabelled[k];
-    // Where no tile within the small rings holds a label, their search finds none: it is not made.
-    const cv::Rect rings(i % w - kSmallRings, i / w - kSmallRings, 2 * kSmallRings + 1, 2 * kSmallRings + 1);
-    const std::optional<int> near = presence.maybe(rings & all) ? nearest_in_small_rings(labels, i / w, i % w) : std::nullopt;
-    if (near) {
-      found[k] = *near;
-    } else {
-      far.push_back(k);
-      rows.will_ask(i / w, i % w, kRingCap);
-    }
-  }
-  for (const std::size_t k : far) found[k] = nearest_in_band(labels, rows, unlabelled[k] / w, unlabelled[k] % w, kRingCap);
+  for (const std::size_t k : search) rows.will_ask(unlabelled[k] / w, unlabelled[k] % w);
+  for (const std::size_t k : search) found[k] = nearest_in_band(labels, rows, unlabelled[k] / w, unlabelled[k] % w, kRingCap);
   SpeckLabels specks;
   for (std::size_t k = 0; k < unlabelled.size(); ++k) {
     const int i = unlabelled[k];
