@@ -115,33 +115,50 @@ void mark_levels(CDT& cdt, IsBoundary boundary) {
 
 bool inside_face(const CDT& cdt, Face f) { return !cdt.is_infinite(f) && f->info().level % 2 == 1; }
 
-// The edges of a triangulation by the local ids of their end points, and each point's degree: what
-// free_segment() asks about many times. CGAL's own edge test circulates around a vertex, which is
-// quadratic when many segments start at a vertex of high degree (the base corners of a comb).
-struct EdgeIndex {
-  std::unordered_map<std::uint64_t, CDT::Edge> edges;
-  std::vector<int> degree;  // per local id
+// Each point's degree (edges to other points of the set), counted when first asked: what
+// free_segment() asks about for the few segments it tests. CGAL's own edge test circulates around
+// either end, which is quadratic when many segments start at a vertex of high degree (the base
+// corners of a comb); circulating around the end of lower degree is not, and hashing every edge of
+// the triangulation for a few questions costs an allocation per edge.
+class VertexDegrees {
+ public:
+  explicit VertexDegrees(std::size_t points) : degree_(points, -1) {}
 
-  EdgeIndex(const CDT& cdt, std::size_t points) : degree(points, 0) {
-    edges.reserve(3 * points);
-    for (auto e = cdt.finite_edges_begin(); e != cdt.finite_edges_end(); ++e) {
-      const int u = e->first->vertex(CDT::cw(e->second))->info().id;
-      const int w = e->first->vertex(CDT::ccw(e->second))->info().id;
-      if (u < 0 || w < 0) continue;
-      edges.emplace(pair_key(u, w), *e);
-      ++degree[static_cast<std::size_t>(u)];
-      ++degree[static_cast<std::size_t>(w)];
+  int of(const CDT& cdt, Vertex v) {
+    int& d = degree_[static_cast<std::size_t>(v->info().id)];
+    if (d < 0) {
+      d = 0;
+      auto n = cdt.incident_vertices(v), done = n;
+      do {
+        if (!cdt.is_infinite(n) && n->info().id >= 0) ++d;
+      } while (++n != done);
     }
+    return d;
   }
+
+ private:
+  std::vector<int> degree_;
 };
+
+// The edge va-vb of the triangulation, found around va; false if there is none.
+bool find_edge(const CDT& cdt, Vertex va, Vertex vb, CDT::Edge& edge) {
+  auto fc = cdt.incident_faces(va), done = fc;
+  do {
+    const int k = fc->index(va);
+    if (fc->vertex(CDT::ccw(k)) == vb) {
+      edge = CDT::Edge(fc, CDT::cw(k));
+      return true;
+    }
+  } while (++fc != done);
+  return false;
+}
 
 // True when the segment between two vertices crosses no constrained edge and passes through no
 // other vertex: a walk through the triangles it crosses, with exact orientation tests. The walk
 // starts at the end of lower degree (the answer does not depend on the direction).
-bool free_segment(const CDT& cdt, const EdgeIndex& index, Vertex va, Vertex vb) {
-  const int ia = va->info().id, ib = vb->info().id;
-  if (const auto it = index.edges.find(pair_key(ia, ib)); it != index.edges.end()) return !cdt.is_constrained(it->second);
-  if (index.degree[static_cast<std::size_t>(ia)] > index.degree[static_cast<std::size_t>(ib)]) std::swap(va, vb);
+bool free_segment(const CDT& cdt, VertexDegrees& degrees, Vertex va, Vertex vb) {
+  if (degrees.of(cdt, va) > degrees.of(cdt, vb)) std::swap(va, vb);
+  if (CDT::Edge edge; find_edge(cdt, va, vb, edge)) return !cdt.is_constrained(edge);
   const Pt& a = va->point();
   const Pt& b = vb->point();
   // The triangle at va whose angle contains the direction to b: (va, right, left) counter-clockwise.
@@ -470,11 +487,11 @@ CheckedDiagonals check_inside(const Poly& poly, const FullTriangulation& full, c
                               bool reference) {
   const PointSet& set = full.set;
   std::vector<char> s_valid(s_diagonals.size(), 0);
-  const EdgeIndex edge_index(full.cdt, set.points.size());
+  VertexDegrees degrees(set.points.size());
   for (std::size_t i = 0; i < s_diagonals.size(); ++i) {
     const auto [a, b] = s_diagonals[i];
     s_valid[i] = poly.vid[a] != poly.vid[b] && in_wedge(poly, a, poly.pt[b]) && in_wedge(poly, b, poly.pt[a]) &&
-                 free_segment(full.cdt, edge_index, full.handle[set.local[a]], full.handle[set.local[b]]);
+                 free_segment(full.cdt, degrees, full.handle[set.local[a]], full.handle[set.local[b]]);
   }
   CheckedDiagonals checked;
   for (std::size_t i = 0; i < s_diagonals.size(); ++i) {

@@ -1,9 +1,11 @@
 // §1 decompose(): validate, then run DuDe passes on every piece until no pass produces a cut.
 #include "topocut/decomposition/decompose.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <unordered_map>
+#include <utility>
+#include <vector>
 
 #include "decomposition/dude.h"
 #include "decomposition/validate.h"
@@ -19,19 +21,22 @@ using dude::Pt;
 Point2 to_point(const Pt& p) { return {p.x(), p.y()}; }
 
 // Removes the slits of a ring (an edge u->v also traversed as v->u, §7.1): each slit splits the ring
-// into two closed rings. Reasons with vertex ids only.
+// into two closed rings. Reasons with vertex ids only. The first edge whose reverse ran earlier is
+// found through the ring's edges sorted by their ends (the earliest position among equal ones), not a
+// hash map with an allocation per edge.
 void unslit(const std::vector<int>& ring, const std::vector<int>& vid_of, std::vector<std::vector<int>>& out) {
   const int n = static_cast<int>(ring.size());
-  std::unordered_map<std::uint64_t, int> edges;  // (from vid, to vid) -> position
-  edges.reserve(2 * n);
   auto key = [&](int from, int to) {
     return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(vid_of[from])) << 32) |
            static_cast<std::uint32_t>(vid_of[to]);
   };
+  std::vector<std::pair<std::uint64_t, int>> edges(static_cast<std::size_t>(n));  // (from vid, to vid), position
+  for (int i = 0; i < n; ++i) edges[static_cast<std::size_t>(i)] = {key(ring[i], ring[(i + 1) % n]), i};
+  std::sort(edges.begin(), edges.end());
   for (int i = 0; i < n; ++i) {
     const int a = ring[i], b = ring[(i + 1) % n];
-    const auto reverse = edges.find(key(b, a));
-    if (reverse != edges.end()) {
+    const auto reverse = std::lower_bound(edges.begin(), edges.end(), std::pair{key(b, a), 0});
+    if (reverse != edges.end() && reverse->first == key(b, a) && reverse->second < i) {
       const int j = reverse->second;  // edge j: b -> a, earlier in the ring
       std::vector<int> inner, outer;
       for (int k = j + 1; k <= i; ++k) inner.push_back(ring[k]);  // a(j+1) .. a(i): from b's successor to a
@@ -45,7 +50,6 @@ void unslit(const std::vector<int>& ring, const std::vector<int>& vid_of, std::v
       if (outer.size() >= 3) unslit(outer, vid_of, out);
       return;
     }
-    edges.emplace(key(a, b), i);
   }
   out.push_back(ring);
 }

@@ -236,17 +236,26 @@ struct SpeckLabels {
 
 // For the rows of a band of the label image, the nearest labelled column at or left of each
 // column and at or right of it: a row's nearest label to a cell in one lookup, instead of reading
-// every cell around it. The rows are kept in a ring of `rows` slots, filled as the band moves down.
+// every cell around it. The rows are kept in a ring of `rows` slots, filled as the band moves down,
+// each only across the columns its cells may ask about (a label beyond them lies farther than the
+// cap from every cell that asks).
 class RowNeighbours {
  public:
   static constexpr int kNone = std::numeric_limits<int>::min() / 4;  // no label on that side
 
   RowNeighbours(const cv::Mat& labels, int rows) : labels_(labels), rows_(rows),
       row_of_(static_cast<std::size_t>(rows), -1), left_(static_cast<std::size_t>(rows) * labels.cols),
-      right_(left_.size()) {}
+      right_(left_.size()), from_(static_cast<std::size_t>(labels.rows), labels.cols), to_(from_.size(), -1) {}
+
+  // Announces a cell (r, c) that will ask about the rows within cap of it, columns within cap of c.
+  void will_ask(int r, int c) {
+    from_[static_cast<std::size_t>(r)] = std::min(from_[static_cast<std::size_t>(r)], c);
+    to_[static_cast<std::size_t>(r)] = std::max(to_[static_cast<std::size_t>(r)], c);
+  }
 
   // Columns of the nearest labels at or left of column c and at or right of it in row y (kNone and
-  // -kNone where there is none); y must not lie `rows` rows or more above a row asked before.
+  // -kNone where there is none within the columns announced for the row); y must not lie `rows`
+  // rows or more above a row asked before, and (y, c) must be within the cap of an announced cell.
   std::pair<int, int> at(int y, int c) {
     const std::size_t slot = static_cast<std::size_t>(y % rows_), w = static_cast<std::size_t>(labels_.cols);
     if (row_of_[slot] != y) fill(y, slot);
@@ -256,36 +265,49 @@ class RowNeighbours {
  private:
   void fill(int y, std::size_t slot) {
     const int w = labels_.cols;
+    // The columns the announced cells within cap rows may ask about.
+    const int cap = rows_ / 2;
+    int from = labels_.cols, to = -1;
+    for (int r = std::max(0, y - cap); r <= std::min(labels_.rows - 1, y + cap); ++r) {
+      from = std::min(from, from_[static_cast<std::size_t>(r)]);
+      to = std::max(to, to_[static_cast<std::size_t>(r)]);
+    }
+    from = std::max(0, from - cap);
+    to = std::min(w - 1, to + cap);
     const int* row = labels_.ptr<int>(y);
     int* left = left_.data() + slot * static_cast<std::size_t>(w);
     int* right = right_.data() + slot * static_cast<std::size_t>(w);
     int last = kNone;
-    for (int c = 0; c < w; ++c) left[c] = last = row[c] > 0 ? c : last;
+    for (int c = from; c <= to; ++c) left[c] = last = row[c] > 0 ? c : last;
     last = -kNone;
-    for (int c = w - 1; c >= 0; --c) right[c] = last = row[c] > 0 ? c : last;
+    for (int c = to; c >= from; --c) right[c] = last = row[c] > 0 ? c : last;
     row_of_[slot] = y;
   }
 
   const cv::Mat& labels_;
   int rows_;
   std::vector<int> row_of_, left_, right_;
+  std::vector<int> from_, to_;  // per row: the first and last column of its announced cells
 };
 
 // The label of the nearest labelled cell to the cell (r, c) within cap cells in x and y, by
 // squared distance; among equally near ones the first in the order of a search in square rings
 // around the cell (ring, then row, then column): the lowest ring, row and column. 0 when none.
+// Each row offers one cell (its nearest, the left one at equal distance) and the rows are compared
+// by (distance, ring, row), an order with one least element whatever order the rows are read in:
+// they are read outwards from the cell's own row, and no farther row can be nearer once a row is
+// farther than the best found.
 int nearest_in_band(const cv::Mat& labels, RowNeighbours& rows, int r, int c, int cap) {
   const int h = labels.rows;
   long best = std::numeric_limits<long>::max();
   int best_ring = 0, best_y = 0, label = 0;
-  for (int y = std::max(0, r - cap); y <= std::min(h - 1, r + cap); ++y) {
+  auto offer = [&](int y) {
     const long dy = y - r;
-    if (dy * dy > best) continue;
     const auto [left, right] = rows.at(y, c);
     // In one row the nearer column wins; at equal distance the left one (a lower column).
     const int x = c - left <= right - c ? left : right;
     const long dx = x - c;
-    if (dx < -cap || dx > cap) continue;
+    if (dx < -cap || dx > cap) return;
     const long d = dy * dy + dx * dx;
     const int ring = static_cast<int>(std::max(std::abs(dy), std::abs(dx)));
     if (d < best || (d == best && (ring < best_ring || (ring == best_ring && y < best_y)))) {
@@ -294,42 +316,19 @@ int nearest_in_band(const cv::Mat& labels, RowNeighbours& rows, int r, int c, in
       best_y = y;
       label = labels.ptr<int>(y)[x];
     }
+  };
+  for (long dy = 0; dy <= cap && dy * dy <= best; ++dy) {
+    if (r - dy >= 0) offer(r - static_cast<int>(dy));
+    if (dy > 0 && r + dy < h) offer(r + static_cast<int>(dy));
   }
   return label;
 }
 
-constexpr int kSmallRings = 8;  // rings nearest_in_small_rings() searches
-
-// Most specks lie a cell or two from a label: a search in the first square rings around the cell
-// (each row by row and column by column, a label taking the place of the best only when strictly
-// nearer) settles them when no farther ring can hold a nearer label; std::nullopt otherwise.
-std::optional<int> nearest_in_small_rings(const cv::Mat& labels, int r, int c) {
-  long best = std::numeric_limits<long>::max();
-  int label = 0;
-  for (int k = 1; k <= kSmallRings; ++k) {
-    for (int y = r - k; y <= r + k; ++y) {
-      if (y < 0 || y >= labels.rows) continue;
-      const int* row = labels.ptr<int>(y);
-      const bool edge_row = y == r - k || y == r + k;
-      for (int x = c - k; x <= c + k; x += edge_row ? 1 : 2 * k) {
-        if (x < 0 || x >= labels.cols || row[x] <= 0) continue;
-        const long d = static_cast<long>(y - r) * (y - r) + static_cast<long>(x - c) * (x - c);
-        if (d < best) {
-          best = d;
-          label = row[x];
-        }
-      }
-    }
-    // Ring k + 1 and beyond lie at least (k + 1)² away: none of them can be strictly nearer.
-    if (static_cast<long>(k + 1) * (k + 1) >= best) return label;
-  }
-  return std::nullopt;
-}
-
-// Most specks lie next to a room: the nearest label within kRingCap cells (nearest_in_band) settles
-// them without a window. The cells are searched in raster order, so that the rows' nearest labels
-// are found once each, and the results kept in the cells' own order. Nothing is written here, so
-// the labelled cells taken are those present before this step, as in settle_orphans' windows.
+// Most specks lie next to a room: the nearest label within kRingCap cells (nearest_in_band, which
+// reads few rows for a speck next to a room) settles them without a window. The cells are searched
+// in raster order, so that the rows' nearest labels are found once each, and the results kept in
+// the cells' own order. Nothing is written here, so the labelled cells taken are those present
+// before this step, as in settle_orphans' windows.
 SpeckLabels nearest_in_rings(const cv::Mat& labels, const LabelPresence& presence, const std::vector<int>& unlabelled) {
   constexpr int kRingCap = 24;
   const int h = labels.rows, w = labels.cols;
@@ -346,13 +345,8 @@ SpeckLabels nearest_in_rings(const cv::Mat& labels, const LabelPresence& presenc
     std::stable_sort(search.begin(), search.end(), [&](std::size_t a, std::size_t b) { return unlabelled[a] < unlabelled[b]; });
   std::vector<int> found(unlabelled.size(), 0);
   RowNeighbours rows(labels, 2 * kRingCap + 1);
-  for (const std::size_t k : search) {
-    const int i = unlabelled[k];
-    // Where no tile within the small rings holds a label, their search finds none: it is not made.
-    const cv::Rect rings(i % w - kSmallRings, i / w - kSmallRings, 2 * kSmallRings + 1, 2 * kSmallRings + 1);
-    const std::optional<int> near = presence.maybe(rings & all) ? nearest_in_small_rings(labels, i / w, i % w) : std::nullopt;
-    found[k] = near ? *near : nearest_in_band(labels, rows, i / w, i % w, kRingCap);
-  }
+  for (const std::size_t k : search) rows.will_ask(unlabelled[k] / w, unlabelled[k] % w);
+  for (const std::size_t k : search) found[k] = nearest_in_band(labels, rows, unlabelled[k] / w, unlabelled[k] % w, kRingCap);
   SpeckLabels specks;
   for (std::size_t k = 0; k < unlabelled.size(); ++k) {
     const int i = unlabelled[k];
