@@ -5,6 +5,8 @@
     /usr/bin/python3 scripts/train_merge_model.py --check         # exit 1 unless the shipped file is what this produces
     /usr/bin/python3 scripts/train_merge_model.py --generalisation  # leave-one-kind-out and 5-fold tables
     /usr/bin/python3 scripts/train_merge_model.py --generalisation --folds 0 --every 5  # a quicker check (minutes)
+    ... --generalisation --folds 0 --every 5 --seed 2 --out M.txt  # the same on a bootstrap sample: a change
+                                                                   # counts when it moves more than this does
 
 The merge model decides, for two adjacent rooms in the making and the cut between them, whether people
 would call them one room (segmentation/merge_model.h; the features are merge_feature_names(), all of
