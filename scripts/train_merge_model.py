@@ -208,7 +208,7 @@ def model_text(topocut, members, sets, row_count, seed):
     lines = ["# topocut's merge model: p(one room) = 1 / (1 + exp(-(bias + the sum of the trees' leaves))).",
              "# Written by scripts/train_merge_model.py (retrain: /usr/bin/python3 scripts/train_merge_model.py).",
              (f"# {len(members)} models, each fitted on a bootstrap sample of the maps (seed {seed}), averaged: " if len(members) > 1
-              else "" if seed == 0 else f"# fitted on a bootstrap sample of the maps (seed {seed}): ") +
+              else "# " if seed == 0 else f"# fitted on a bootstrap sample of the maps (seed {seed}): ") +
              f"{TREES['n_estimators']} trees of depth {TREES['max_depth']}{' each' if len(members) > 1 else ''}, "
              f"{ROUNDS} rounds, {row_count} candidate merges, fitted on {fitted_on}.",
              f"# XGBoost {xgboost.__version__}, NumPy {np.__version__}.",

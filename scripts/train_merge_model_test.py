@@ -3,7 +3,8 @@
 written for a bag of models gives, read node by node as the library reads it (merge_model.h: the first
 node when the feature is at most the threshold, the margin the sum of the leaves), the mean of the
 members' own margins; and the bootstrap samples keep each set's size, differ between members and are
-the same for the same seed, while seed 0 of a single model draws every map once."""
+the same for the same seed, while seed 0 of a single model draws every map once and is written as
+before (its header's lines comments)."""
 import os
 import sys
 
@@ -74,6 +75,12 @@ def main():
     expect(text.count("\ntree\n") == 60, f"a bag of 3 models of 20 trees is one file of 60 trees, not {text.count(chr(10) + 'tree' + chr(10))}")
     expect(np.max(np.abs(got - mean)) < 1e-4, f"the file's margin is the members' mean (largest difference {np.max(np.abs(got - mean)):.2g})")
     expect(np.max(np.abs(expected[0] - expected[1])) > 0.1, "members fitted on different samples differ")
+
+    single = tm.model_text(Library, members[:1], {}, len(x), seed=0)
+    head = single.split("topocut-merge-model 1")[0].splitlines()
+    expect(all(line.startswith("# ") for line in head), "every line above the model's first line is a comment")
+    expect(any(line.startswith("# 20 trees of depth 3, ") for line in head), "a single model's header says its trees as before")
+    expect(np.max(np.abs(margins(single, x) - expected[0])) < 1e-4, "a single model's file is its margin")
 
     sets = {"a": [("m", "t")] * 10, "b": [("m", "t")] * 3}
     once = tm.draws(sets, 0, 1)
