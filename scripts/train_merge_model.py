@@ -5,6 +5,8 @@
     /usr/bin/python3 scripts/train_merge_model.py --check         # exit 1 unless the shipped file is what this produces
     /usr/bin/python3 scripts/train_merge_model.py --generalisation  # leave-one-kind-out and 5-fold tables
     /usr/bin/python3 scripts/train_merge_model.py --generalisation --folds 0 --every 5  # a quicker check (minutes)
+    ... --generalisation --folds 0 --every 5 --seed 2 --out M.txt  # the same on a bootstrap sample: a change
+                                                                   # counts when it moves more than this does
 
 The merge model decides, for two adjacent rooms in the making and the cut between them, whether people
 would call them one room (segmentation/merge_model.h; the features are merge_feature_names(), all of
@@ -50,7 +52,8 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
 MODEL_FILE = os.path.join(ROOT, "src", "segmentation", "merging", "merge_model.txt")
 ROUNDS = 3
-SEED = 0
+SEED = 0  # 0 with BAG 1: every map once; otherwise the seed of the bootstrap samples
+BAG = 1  # models averaged, each fitted on its own bootstrap sample of the maps
 RESOLUTION = 0.05  # metres a cell: the Bormann-layout images hold no scale (merge_training_rows's default too)
 TREES = dict(n_estimators=300, max_depth=5, learning_rate=0.05, max_bin=256)
 FOLDS = 5  # --generalisation's default: every map scored by a model fitted without its building, plan or sketch
@@ -116,15 +119,31 @@ def _rows_of_map(job):
     return x, same, purity
 
 
-def rows(sets, policy, workers):
-    """Features, labels and weights of every candidate merge on the sets' maps, merging with policy."""
+def draws(sets, seed, bag):
+    """How many times each member of the bag draws each map, {set name: array (bag, maps)}: every map once
+    for a single model of seed 0 (the shipped model's sample); otherwise, per member, as many maps drawn
+    with replacement within each set as it holds (a bootstrap; numpy's generator seeded by seed and member)."""
+    if bag == 1 and seed == 0:
+        return {name: np.ones((1, len(maps))) for name, maps in sets.items()}
+    out = {name: np.zeros((bag, len(maps))) for name, maps in sets.items()}
+    for member in range(bag):
+        rng = np.random.default_rng([seed, member + 1])
+        for name, maps in sets.items():
+            out[name][member] = rng.multinomial(len(maps), np.full(len(maps), 1.0 / len(maps)))
+    return out
+
+
+def rows(sets, policy, workers, drawn):
+    """Features, labels and one weight column per member of the bag (drawn: draws()) of every candidate
+    merge on the sets' maps, merging with policy; maps no member draws are not segmented."""
     jobs, share = [], []
     kinds = {kind_of(s) for s in sets}
     for name, maps in sets.items():
         in_kind = sum(1 for s in sets if kind_of(s) == kind_of(name))
-        for image, truth in maps:
-            jobs.append((image, truth, policy))
-            share.append(1.0 / len(kinds) / in_kind / len(maps))
+        for (image, truth), counts in zip(maps, drawn[name].T):
+            if counts.any():
+                jobs.append((image, truth, policy))
+                share.append(counts / len(kinds) / in_kind / len(maps))
     with ProcessPoolExecutor(workers) as pool:
         found = list(pool.map(_rows_of_map, jobs, chunksize=4))
     xs, ys, ws = [], [], []
@@ -133,21 +152,33 @@ def rows(sets, policy, workers):
             continue
         xs.append(x)
         ys.append(same)
-        ws.append(purity * map_share / len(x))
-    return np.vstack(xs), np.concatenate(ys), np.concatenate(ws)
+        ws.append(np.outer(purity, map_share) / len(x))
+    return np.vstack(xs), np.concatenate(ys), np.vstack(ws)
 
 
-def fit(x, y, w):
+def _fit_member(job):
     import xgboost
+    x, y, w = job
     model = xgboost.XGBClassifier(tree_method="hist", n_jobs=1, random_state=SEED, base_score=0.5, **TREES)
-    model.fit(x, y, sample_weight=w / w.mean())
-    return model
+    keep = w > 0
+    model.fit(x[keep], y[keep], sample_weight=w[keep] / w[keep].mean())
+    return [json.loads(dump) for dump in model.get_booster().get_dump(dump_format="json")]
 
 
-def tree_lines(tree, names):
+def fit(x, y, w, workers):
+    """The trees of each member of the bag (one per column of w), fitted in separate processes of one
+    thread each (sums in one order: the same trees every time)."""
+    jobs = [(x, y, w[:, member]) for member in range(w.shape[1])]
+    if len(jobs) == 1:
+        return [_fit_member(jobs[0])]
+    with ProcessPoolExecutor(min(workers, len(jobs))) as pool:
+        return list(pool.map(_fit_member, jobs))
+
+
+def tree_lines(tree, names, scale=1.0):
     """One tree of XGBoost's JSON dump in the model file's form: nodes in preorder (a split's nodes come after
-    it). XGBoost sends x < t to its first child, the file x <= threshold: the threshold is the float below t
-    (XGBoost compares in single precision)."""
+    it), leaves times scale. XGBoost sends x < t to its first child, the file x <= threshold: the threshold
+    is the float below t (XGBoost compares in single precision)."""
     order = []
     stack = [tree]
     while stack:
@@ -158,7 +189,7 @@ def tree_lines(tree, names):
     lines = ["tree"]
     for node in order:
         if "leaf" in node:
-            lines.append(f"leaf {node['leaf']:.9g}")
+            lines.append(f"leaf {node['leaf'] * scale:.9g}")
         else:
             threshold = float(np.nextafter(np.float32(node["split_condition"]), np.float32(-np.inf)))
             lines.append(f"split {names[int(node['split'][1:])]} {threshold:.9g} {at[node['yes']]} {at[node['no']]}")
@@ -166,33 +197,38 @@ def tree_lines(tree, names):
     return lines
 
 
-def model_text(topocut, model, sets, row_count):
+def model_text(topocut, members, sets, row_count, seed):
     """The model as the library reads it (merge_model.h): a header saying what it was fitted on, then each
-    tree's nodes in order."""
+    tree's nodes in order. A bag's members are averaged: their margins' mean is the sum of every member's
+    trees with the leaves divided by the members' count (each member's bias is 0)."""
     import xgboost
     names = topocut.merge_feature_names()
     fitted_on = "; ".join(f"{kind}: " + ", ".join(f"{s} ({len(sets[s])} maps)" for s in KINDS[kind] if s in sets)
                           for kind in KINDS if any(s in sets for s in KINDS[kind]))
     lines = ["# topocut's merge model: p(one room) = 1 / (1 + exp(-(bias + the sum of the trees' leaves))).",
              "# Written by scripts/train_merge_model.py (retrain: /usr/bin/python3 scripts/train_merge_model.py).",
-             f"# {TREES['n_estimators']} trees of depth {TREES['max_depth']}, {ROUNDS} rounds, {row_count} candidate merges, "
-             f"fitted on {fitted_on}.",
+             (f"# {len(members)} models, each fitted on a bootstrap sample of the maps (seed {seed}), averaged: " if len(members) > 1
+              else "# " if seed == 0 else f"# fitted on a bootstrap sample of the maps (seed {seed}): ") +
+             f"{TREES['n_estimators']} trees of depth {TREES['max_depth']}{' each' if len(members) > 1 else ''}, "
+             f"{ROUNDS} rounds, {row_count} candidate merges, fitted on {fitted_on}.",
              f"# XGBoost {xgboost.__version__}, NumPy {np.__version__}.",
              "# A split goes to its first node when the feature is at most the threshold.",
              "topocut-merge-model 1", "threshold 0.5", "bias 0"]
-    for dump in model.get_booster().get_dump(dump_format="json"):
-        lines += tree_lines(json.loads(dump), names)
+    for trees in members:
+        for tree in trees:
+            lines += tree_lines(tree, names, 1.0 / len(members))
     return "\n".join(lines) + "\n"
 
 
-def train(topocut, sets, workers, progress=print):
-    """The model text after ROUNDS rounds of gathering rows and fitting."""
+def train(topocut, sets, workers, progress=print, seed=SEED, bag=BAG):
+    """The model text after ROUNDS rounds of gathering rows and fitting (a bag of bag models, averaged)."""
     policy, xs, ys, ws = FIRST_ROUND, [], [], []
+    drawn = draws(sets, seed, bag)
     for r in range(ROUNDS):
-        x, y, w = rows(sets, policy, workers)
+        x, y, w = rows(sets, policy, workers, drawn)
         xs.append(x), ys.append(y), ws.append(w)
         count = sum(len(v) for v in ys)
-        policy = model_text(topocut, fit(np.vstack(xs), np.concatenate(ys), np.concatenate(ws)), sets, count)
+        policy = model_text(topocut, fit(np.vstack(xs), np.concatenate(ys), np.vstack(ws), workers), sets, count, seed)
         progress(f"round {r + 1} of {ROUNDS}: {count} rows")
     return policy
 
@@ -225,15 +261,19 @@ def without_kind(sets, kind):
     return {s: m for s, m in sets.items() if kind_of(s) != kind and PLAN_KIND.get(s) != kind}
 
 
-def generalisation(topocut, sets, workers, folds, with_kinds=True):
-    """Matched-room F1 per set: fitted on every kind; fitted without the set's kind (and the robot-made
-    maps of its plans; skipped unless with_kinds); and on maps whose building, plan or sketch was not
-    fitted on (folds folds, none when 0)."""
+def generalisation(topocut, sets, workers, folds, with_kinds=True, seed=SEED, bag=BAG, out=None):
+    """Matched-room F1 per set: fitted on every kind (that model written to out, unless None); fitted
+    without the set's kind (and the robot-made maps of its plans; skipped unless with_kinds); and on maps
+    whose building, plan or sketch was not fitted on (folds folds, none when 0)."""
     quiet = lambda s: print("train_merge_model: " + s, file=sys.stderr)
-    full = scores(sets, train(topocut, sets, workers, quiet), workers)
+    text = train(topocut, sets, workers, quiet, seed, bag)
+    if out:
+        with open(out, "w") as f:
+            f.write(text)
+    full = scores(sets, text, workers)
     others = {}
     for kind in KINDS if with_kinds else []:
-        model = train(topocut, without_kind(sets, kind), workers, quiet)
+        model = train(topocut, without_kind(sets, kind), workers, quiet, seed, bag)
         others.update(scores({s: sets[s] for s in KINDS[kind]}, model, workers))
     fold = lambda image: zlib.crc32(plan_key(image).encode()) % folds
     unseen = {name: [] for name in sets}
@@ -241,7 +281,7 @@ def generalisation(topocut, sets, workers, folds, with_kinds=True):
         trained = {name: [m for m in maps if fold(m[0]) != f] for name, maps in sets.items()}
         held = {name: [m for m in maps if fold(m[0]) == f] for name, maps in sets.items()}
         held = {name: maps for name, maps in held.items() if maps}
-        for name, f1 in scores(held, train(topocut, trained, workers, quiet), workers).items():
+        for name, f1 in scores(held, train(topocut, trained, workers, quiet, seed, bag), workers).items():
             unseen[name].append((f1, len(held[name])))
     print("| set | kind | fitted on every kind |" + (" fitted without its kind |" if with_kinds else "") +
           (f" on maps not fitted on ({folds} folds) |" if folds else ""))
@@ -262,7 +302,8 @@ def main():
     parser.add_argument("--shared", default=os.path.join(ROOT, "..", "shared"), help="the folder holding datasets/")
     parser.add_argument("--robot-maps", default=None,
                         help="where the robot-made maps are made (default BUILD/robot_maps; kept between runs)")
-    parser.add_argument("--out", default=MODEL_FILE, help="where to write the model")
+    parser.add_argument("--out", default=MODEL_FILE,
+                        help="where to write the model (--generalisation: the model fitted on every kind, when given)")
     parser.add_argument("--workers", type=int, default=2, help="processes segmenting maps at once")
     parser.add_argument("--check", action="store_true",
                         help="exit 1 unless --out equals what training produces (77: no data sets to train on)")
@@ -273,7 +314,17 @@ def main():
     parser.add_argument("--every", type=int, default=1,
                         help="a quicker check: every N-th map of the sets of more than 100 maps (homes, robot-made homes), "
                              "for fitting and scoring; the model file records the maps it was fitted on")
+    parser.add_argument("--seed", type=int, default=SEED,
+                        help=f"the bootstrap samples' seed (default {SEED}: with --bag 1, every map once, as shipped); "
+                             "another seed with --bag 1 measures how far the model moves with its sample")
+    parser.add_argument("--bag", type=int, default=BAG, help=f"models averaged, each on a bootstrap sample of the maps (default {BAG})")
+    parser.add_argument("--trees", type=int, default=TREES["n_estimators"], help="trees of each model (default %(default)s)")
+    parser.add_argument("--depth", type=int, default=TREES["max_depth"], help="the trees' depth (default %(default)s)")
+    parser.add_argument("--learning-rate", type=float, default=TREES["learning_rate"], help="default %(default)s")
     args = parser.parse_args()
+    if args.seed < 0 or args.bag < 1 or args.trees < 1 or not 1 <= args.depth <= 12 or args.learning_rate <= 0:
+        parser.error("--seed must be at least 0, --bag and --trees at least 1, --depth 1-12, --learning-rate positive")
+    TREES.update(n_estimators=args.trees, max_depth=args.depth, learning_rate=args.learning_rate)
     if args.folds < 0 or args.folds == 1:
         parser.error("--folds must be 0 or at least 2")
     if args.every < 1:
@@ -292,9 +343,10 @@ def main():
                     progress)
     sets = {name: maps[:: args.every] if len(maps) > 100 else maps for name, maps in sets.items()}
     if args.generalisation:
-        generalisation(topocut, sets, args.workers, args.folds, not args.no_kinds)
+        generalisation(topocut, sets, args.workers, args.folds, not args.no_kinds, args.seed, args.bag,
+                       args.out if args.out != MODEL_FILE else None)
         return 0
-    text = train(topocut, sets, args.workers, progress)
+    text = train(topocut, sets, args.workers, progress, args.seed, args.bag)
     if args.check:
         with open(args.out) as f:
             shipped = f.read()
