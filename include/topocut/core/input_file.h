@@ -13,7 +13,7 @@ inline constexpr std::uint64_t kMaxMapYamlBytes = 1ull << 20;       // ROS map_s
 inline constexpr std::uint64_t kMaxPolygonJsonBytes = 4ull << 20;   // decompose's polygon JSON: 4 MiB
 inline constexpr std::uint64_t kMaxScanCsvBytes = 64ull << 20;      // one scan as CSV: 64 MiB (4 million beams)
 inline constexpr std::uint64_t kMaxConfigYamlBytes = 1ull << 20;    // --config FILE.yaml: 1 MiB
-inline constexpr std::uint64_t kMaxMergeModelBytes = 4ull << 20;    // --merge-model FILE: 4 MiB (the shipped one is ~40 KiB)
+inline constexpr std::uint64_t kMaxMergeModelBytes = 4ull << 20;    // --merge-model FILE: 4 MiB (the shipped one is ~0.5 MiB)
 
 // Throws Error naming `what` and path unless path is an existing regular file (symlinks followed).
 // Opening never blocks (a FIFO is refused, not waited on).
