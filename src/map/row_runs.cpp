@@ -410,6 +410,11 @@ RowRuns grow_within(const RowRuns& seed, const RowRuns& within, int steps) {
         repeat_last_row(grown, around);
         continue;
       }
+      // A row already all of within's cannot grow (a room's rows away from its thin parts).
+      if (same_runs(current.row(y), within.row(y))) {
+        grown.append_row(within.row(y));
+        continue;
+      }
       around.clear();
       for (int dy = -1; dy <= 1; ++dy) {
         if (y + dy < 0 || y + dy >= h) continue;

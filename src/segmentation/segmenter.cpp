@@ -180,7 +180,8 @@ SegmentationInput segmentation_input(const OccupancyGrid& grid, const cv::Rect& 
   const cv::Rect inner = window - context.tl();
   cv::Mat free = has_free_cell(part.cells) ? free_space_mask(part, options.binarize) : cv::Mat();
   SegmentationInput input;
-  if (free.empty() || cv::countNonZero(free) == 0) {
+  // Without a binarization the mask holds the free cells, which has_free_cell found: no count needed.
+  if (free.empty() || (!trivial_binarization(options.binarize) && cv::countNonZero(free) == 0)) {
     input.floor = cv::Mat::zeros(window.size(), CV_8UC1);
     input.labelled = crop(grid, window);
     return input;

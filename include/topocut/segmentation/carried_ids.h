@@ -51,7 +51,8 @@ std::vector<IdOverlap> id_overlaps(const cv::Mat& old, const cv::Mat& next, cons
 template <class Available>
 void revived_ids(const cv::Mat& retired, const cv::Mat& next, const cv::Mat& mask, std::vector<int>& ids,
                  const Available& available, const std::vector<long long>* retired_cells) {
-  if (retired.empty()) return;
+  // Nothing to name (every label has its id): the overlaps, a pass over next, would be read for nothing.
+  if (retired.empty() || ids.size() < 2 || std::find(ids.begin() + 1, ids.end(), 0) == ids.end()) return;
   const int labels = static_cast<int>(ids.size()) - 1;
   std::vector<long long> sizes;
   std::vector<int> used;

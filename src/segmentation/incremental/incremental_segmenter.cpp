@@ -462,6 +462,7 @@ std::vector<Blob> IncrementalSegmenter::State::find_blobs(const ChangeMask& mask
   for (int r = active.y; r < active.y + active.height; ++r) {
     const unsigned char* d = mask.change.ptr<unsigned char>(r);
     const int* b = blob_of.ptr<int>(r - active.y);
+    int open_before = INT_MIN;  // column of the row's last unlabelled changed cell
     for (int c = active.x; c < active.x + active.width; ++c) {
       if (d[c] == 0) continue;
       Blob& blob = blobs[static_cast<std::size_t>(b[c - active.x])];
@@ -477,9 +478,12 @@ std::vector<Blob> IncrementalSegmenter::State::find_blobs(const ChangeMask& mask
         add_unique(blob.touched, own);
         continue;
       }
+      // The cell before it in the row (the same blob) looked at all but the column on its right.
+      const int first_column = open_before == c - 1 ? gc + 1 : std::max(0, gc - 1);
+      open_before = c;
       for (int nr = std::max(0, gr - 1); nr <= std::min(h - 1, gr + 1); ++nr) {
         const int* row = labels.ptr<int>(nr);
-        for (int nc = std::max(0, gc - 1); nc <= std::min(w - 1, gc + 1); ++nc)
+        for (int nc = first_column; nc <= std::min(w - 1, gc + 1); ++nc)
           if (row[nc] > 0) add_unique(blob.touched, row[nc]);
       }
     }

@@ -5,6 +5,8 @@
 // becomes: ids, held splits and merges, polygons, passages).
 #include <algorithm>
 #include <climits>
+#include <cstdint>
+#include <cstring>
 #include <optional>
 #include <string>
 #include <vector>
@@ -154,22 +156,31 @@ struct WindowFrame {
 // that share their old room (labels, the map's frame) and their piece (found.local): row and the
 // columns [begin, end) in the map's frame. Rooms and pieces are large, so runs are long and a pass
 // costs about a step per run. f may rewrite the labels of its own run.
+// The first of the bytes [from, to) of row that is nonzero, to if none: eight at a time, since a
+// region's window holds long stretches of other rooms, walls and unseen space between its runs.
+inline int next_nonzero(const unsigned char* row, int from, int to) {
+  int x = from;
+  for (; x + 8 <= to; x += 8) {
+    std::uint64_t word;
+    std::memcpy(&word, row + x, sizeof word);
+    if (word != 0) break;
+  }
+  while (x < to && row[x] == 0) ++x;
+  return x;
+}
+
 template <typename F>
 void for_each_region_run(const cv::Rect& window, const cv::Mat& labels, const RegionPieces& found, F&& f) {
   for (int r = 0; r < window.height; ++r) {
     const int* l = labels.ptr<int>(window.y + r) + window.x;
     const int* k = found.local.ptr<int>(r);
     const unsigned char* in = found.raw.ptr<unsigned char>(r);
-    for (int c = 0; c < window.width;) {
-      if (!in[c]) {
-        ++c;
-        continue;
-      }
+    for (int c = next_nonzero(in, 0, window.width); c < window.width;) {
       const int old = l[c], piece = k[c];
       int end = c + 1;
       while (end < window.width && in[end] && l[end] == old && k[end] == piece) ++end;
       f(window.y + r, window.x + c, window.x + end, old, piece);
-      c = end;
+      c = next_nonzero(in, end, window.width);
     }
   }
 }
