@@ -152,10 +152,6 @@ struct WindowFrame {
   }
 };
 
-// Calls f(row, begin, end, old, piece) for each run of the region's free cells (found.raw) in window
-// that share their old room (labels, the map's frame) and their piece (found.local): row and the
-// columns [begin, end) in the map's frame. Rooms and pieces are large, so runs are long and a pass
-// costs about a step per run. f may rewrite the labels of its own run.
 // The first of the bytes [from, to) of row that is nonzero, to if none: eight at a time, since a
 // region's window holds long stretches of other rooms, walls and unseen space between its runs.
 inline int next_nonzero(const unsigned char* row, int from, int to) {
@@ -169,6 +165,10 @@ inline int next_nonzero(const unsigned char* row, int from, int to) {
   return x;
 }
 
+// Calls f(row, begin, end, old, piece) for each run of the region's free cells (found.raw) in window
+// that share their old room (labels, the map's frame) and their piece (found.local): row and the
+// columns [begin, end) in the map's frame. Rooms and pieces are large, so runs are long and a pass
+// costs about a step per run. f may rewrite the labels of its own run.
 template <typename F>
 void for_each_region_run(const cv::Rect& window, const cv::Mat& labels, const RegionPieces& found, F&& f) {
   for (int r = 0; r < window.height; ++r) {
