@@ -94,16 +94,32 @@ std::vector<Corner> reflex_corners(const std::vector<const Ring*>& rings, double
   return corners;
 }
 
+std::vector<Box> boxes_of(const std::vector<Edge>& edges) {
+  std::vector<Box> boxes;
+  boxes.reserve(edges.size());
+  for (const Edge& e : edges)
+    boxes.push_back({std::min(e.a.x, e.b.x), std::min(e.a.y, e.b.y), std::max(e.a.x, e.b.x), std::max(e.a.y, e.b.y)});
+  return boxes;
+}
+
+std::vector<int> first_edges(const std::vector<const Ring*>& rings) {
+  std::vector<int> first(rings.size() + 1, 0);
+  for (std::size_t r = 0; r < rings.size(); ++r) first[r + 1] = first[r] + static_cast<int>(rings[r]->size());
+  return first;
+}
+
 }  // namespace
 
 PolygonEdges::PolygonEdges(const PolygonWithHoles& polygon, double cell, double min_turn)
-    : rings(rings_of(polygon)), edges(edges_of(rings)), grid(edges, cell), reflex(reflex_corners(rings, min_turn)) {}
+    : rings(rings_of(polygon)), edges(edges_of(rings)), grid(edges, cell), reflex(reflex_corners(rings, min_turn)),
+      boxes(boxes_of(edges)), first_edge(first_edges(rings)) {}
 
 double search_cell(const DoorOptions& options, double resolution) { return std::max(4.0, options.max_width / resolution / 4.0); }
 
 DoorSearch door_search(const PolygonEdges& polygon, double resolution, const DoorOptions& options,
                        std::vector<bool> joinable) {
-  return DoorSearch{options, resolution, polygon.rings, polygon.edges, polygon.reflex, options.max_width / resolution,
+  return DoorSearch{options, resolution, polygon.rings, polygon.edges, polygon.reflex, polygon.boxes, polygon.first_edge,
+                    options.max_width / resolution,
                     options.door_like.width_depth / resolution, std::move(joinable)};
 }
 
@@ -114,8 +130,8 @@ namespace {
 // across, on another ring, both joinable: such a cut separates nothing alone, only with the cuts
 // on the island's other sides).
 // The corner's own two edges are edges[own_before] and edges[own].
-std::optional<Candidate> nearest_across_corner(const DoorSearch& search, const EdgeGrid& grid, const std::vector<Box>& boxes,
-                                               int r, int own_before, int own, const Point2& p, const Point2& v,
+std::optional<Candidate> nearest_across_corner(const DoorSearch& search, const EdgeGrid& grid, int r, int own_before,
+                                               int own, const Point2& p, const Point2& v,
                                                const Point2& q, bool across, std::vector<unsigned>& seen, unsigned stamp) {
   // Directions that resolve the corner: between the continuations of its two edges.
   const Point2 e1 = minus(v, p), e2 = minus(v, q);
@@ -149,7 +165,7 @@ std::optional<Candidate> nearest_across_corner(const DoorSearch& search, const E
     seen[static_cast<std::size_t>(id)] = stamp;
     // No point of the edge can beat the best so far if its bounding box is farther, or lie in the
     // cone if its box lies outside.
-    const Box& b = boxes[static_cast<std::size_t>(id)];
+    const Box& b = search.boxes[static_cast<std::size_t>(id)];
     const double gx = std::max(std::max(b.x0 - v.x, v.x - b.x1), 0.0);
     const double gy = std::max(std::max(b.y0 - v.y, v.y - b.y1), 0.0);
     if (gx * gx + gy * gy >= best2) return;
@@ -236,15 +252,6 @@ std::vector<Candidate> corner_cuts(const DoorSearch& search, const EdgeGrid& gri
   std::vector<Candidate> candidates;
   std::vector<unsigned> seen(search.edges.size(), 0);  // per edge: the last corner that looked at it
   unsigned stamp = 0;
-  // Each edge's box once, not once per corner that meets it; and where each ring's edges start
-  // (PolygonEdges lists them ring by ring, edge i of a ring from its vertex i).
-  std::vector<Box> boxes;
-  boxes.reserve(search.edges.size());
-  for (const Edge& e : search.edges)
-    boxes.push_back({std::min(e.a.x, e.b.x), std::min(e.a.y, e.b.y), std::max(e.a.x, e.b.x), std::max(e.a.y, e.b.y)});
-  std::vector<int> first_edge(search.rings.size() + 1, 0);
-  for (std::size_t r = 0; r < search.rings.size(); ++r)
-    first_edge[r + 1] = first_edge[r] + static_cast<int>(search.rings[r]->size());
   std::optional<IslandReach> islands;
   if (across) islands.emplace(search);
   for_each_reflex_corner(
@@ -254,9 +261,10 @@ std::vector<Candidate> corner_cuts(const DoorSearch& search, const EdgeGrid& gri
       },
       [&](int r, int i, const Point2& p, const Point2& v, const Point2& q) {
         if (islands && r == 0 && !islands->near(v)) return;
-        const int first = first_edge[static_cast<std::size_t>(r)];
-        const int n = first_edge[static_cast<std::size_t>(r) + 1] - first;
-        if (auto c = nearest_across_corner(search, grid, boxes, r, first + (i + n - 1) % n, first + i, p, v, q, across, seen, ++stamp))
+        // Edge i of a ring runs from its vertex i (PolygonEdges lists them ring by ring).
+        const int first = search.first_edge[static_cast<std::size_t>(r)];
+        const int n = search.first_edge[static_cast<std::size_t>(r) + 1] - first;
+        if (auto c = nearest_across_corner(search, grid, r, first + (i + n - 1) % n, first + i, p, v, q, across, seen, ++stamp))
           candidates.push_back(*c);
       });
   return candidates;

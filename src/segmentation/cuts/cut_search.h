@@ -71,7 +71,9 @@ struct PolygonEdges {
   std::vector<const Ring*> rings;  // the outline, then the holes
   std::vector<Edge> edges;         // ring by ring, edge i of a ring from its vertex i
   EdgeGrid grid;
-  std::vector<Corner> reflex;  // ring by ring, in vertex order
+  std::vector<Corner> reflex;    // ring by ring, in vertex order
+  std::vector<Box> boxes;        // per edge, its bounding box
+  std::vector<int> first_edge;   // per ring, where its edges start in edges; then edges.size()
 };
 
 // The cell of the rules' edge grid: a quarter of the widest door, at least 4 cells.
@@ -85,6 +87,8 @@ struct DoorSearch {
   const std::vector<const Ring*>& rings;
   const std::vector<Edge>& edges;
   const std::vector<Corner>& reflex;  // corners turning right by at least options.min_turn
+  const std::vector<Box>& boxes;      // per edge
+  const std::vector<int>& first_edge; // per ring, where its edges start; then edges.size()
   double reach = 0.0;  // widest door, cells
   double depth = 0.0;  // how far beside a cut the sides are measured, cells
   // Per ring, for the island search only: may a cut join it to another such ring (the outline, and
