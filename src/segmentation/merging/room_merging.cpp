@@ -144,43 +144,45 @@ void merge_by_criteria(ComponentMerge& merge) {
 namespace {
 
 // Folds every room that folds(r) says is no room into the room into(r) names (-1: none, the room
-// stays), the smallest first (the least likely to be a room of its own). folds(r) is asked again of a
-// room only after it or a room beside it grew (its measures change only then).
+// stays), the smallest first (the least likely to be a room of its own), ties to the lowest room.
+// folds(r) is asked again of a room only after it or a room beside it grew (its measures change only
+// then). The rooms to fold wait in a set ordered as that choice, so that a fold costs the grown room's
+// neighbours, not a look at every room of the component (quadratic on a large floor).
 template <class Folds, class Into>
 void fold_rooms(RoomGraph& g, const Folds& folds, const Into& into) {
-  std::vector<bool> stuck(g.piece_count(), false);
-  std::vector<std::optional<bool>> no_room(g.piece_count());  // by room root; empty: to measure
-  while (true) {
-    int victim = -1;
-    double victim_area = 0.0;
-    for (std::size_t i = 0; i < g.piece_count(); ++i) {
-      const int r = static_cast<int>(i);
-      if (g.root(r) != r || stuck[i]) continue;
-      std::optional<bool>& verdict = no_room[i];
-      if (!verdict) verdict = folds(r);
-      const double a = g.room_area(r);
-      if (*verdict && (victim < 0 || a < victim_area)) {
-        victim = r;
-        victim_area = a;
-      }
-    }
-    if (victim < 0) return;
+  std::set<std::pair<double, int>> waiting;                     // (area, room): the rooms to fold
+  std::vector<std::optional<double>> queued(g.piece_count());  // the area a room waits with
+  auto leave = [&](int r) {
+    std::optional<double>& area = queued[static_cast<std::size_t>(r)];
+    if (area) waiting.erase({*area, r});
+    area.reset();
+  };
+  auto ask = [&](int r) {
+    leave(r);
+    if (!folds(r)) return;
+    const double area = g.room_area(r);
+    waiting.insert({area, r});
+    queued[static_cast<std::size_t>(r)] = area;
+  };
+  for (std::size_t i = 0; i < g.piece_count(); ++i)
+    if (g.root(static_cast<int>(i)) == static_cast<int>(i)) ask(static_cast<int>(i));
+  std::vector<int> beside;
+  while (!waiting.empty()) {
+    const int victim = waiting.begin()->second;
     const int target = into(victim);
-    if (target < 0) {
-      stuck[static_cast<std::size_t>(victim)] = true;
-      continue;
-    }
+    leave(victim);  // a room that cannot fold waits again only once a room beside it grows
+    if (target < 0) continue;
+    leave(target);
     g.unite(victim, target);
     const int grown = g.root(victim);
-    no_room[static_cast<std::size_t>(grown)].reset();
+    beside.assign(1, grown);
     for (const std::size_t k : g.room_sides(grown)) {
       const RoomGraph::Side& s = g.sides()[k];
-      for (const int piece : {s.left, s.right}) {
-        const int r = g.root(piece);
-        no_room[static_cast<std::size_t>(r)].reset();
-        stuck[static_cast<std::size_t>(r)] = false;
-      }
+      for (const int piece : {s.left, s.right}) beside.push_back(g.root(piece));
     }
+    std::sort(beside.begin(), beside.end());
+    beside.erase(std::unique(beside.begin(), beside.end()), beside.end());
+    for (const int r : beside) ask(r);
   }
 }
 
