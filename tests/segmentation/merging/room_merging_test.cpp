@@ -132,6 +132,28 @@ TEST(MergeRooms, ASliverIsFoldedIntoTheNeighbourWithTheLongestCut) {
   EXPECT_EQ(rooms.cuts[0], set.cuts[1]);
 }
 
+TEST(MergeRooms, SmallRoomsFoldSmallestFirstAndAreAskedAgainOnceGrown) {
+  // A 1 m² room beside a 2 m² one beside a large room; the 2 m² room shares 2 m with the large one
+  // and 1 m with the small one. Smallest first: the 1 m² room folds into the 2 m², which at 3 m² is
+  // a room. The 2 m² first would fold into the large room (its longest cut) and take the small one.
+  PieceSet set;
+  set.pieces = {box(0, 0, 20, 20), {{{20, 0}, {40, 0}, {40, 40}, {20, 40}, {20, 20}}, {}},
+                {{{40, 0}, {200, 0}, {200, 100}, {40, 100}, {40, 40}}, {}}};
+  set.cuts = {{{20, 0}, {20, 20}}, {{40, 0}, {40, 40}}};
+  RoomMergeOptions options = hand_rules();
+  options.door_like.ratio = 10.0;  // nothing merges as "not a door"
+  options.min_room_thickness = 0.0;
+  options.min_room_area = 2.5;  // m²: both small rooms alone, not the two together
+  const PieceSet rooms = merge_rooms(no_component(), set, cv::Mat(), kRes, options);
+  ASSERT_EQ(rooms.pieces.size(), 2u);
+  std::vector<double> areas{area(rooms.pieces[0]), area(rooms.pieces[1])};
+  std::sort(areas.begin(), areas.end());
+  EXPECT_DOUBLE_EQ(areas[0], 20 * 20 + 20 * 40);
+  EXPECT_DOUBLE_EQ(areas[1], 160 * 100);
+  ASSERT_EQ(rooms.cuts.size(), 1u);
+  EXPECT_EQ(rooms.cuts[0], set.cuts[1]);
+}
+
 TEST(MergeRooms, AThinStripIsFoldedWhenAMinimumWidthIsSet) {
   // A 0.3 m x 6 m strip (1.8 m², above the area limit) sticking out of a 6 m x 4 m room, cut off
   // at its root (a laser leak through a gap); door_like.ratio is set so high that nothing merges as
