@@ -121,8 +121,9 @@ int binarization_reach(const BinarizeOptions& b, double resolution) {
 // min_width, grown by a quarter of it) and the obstacle specks change the floor nearby; whether a
 // removed cell is inside the building (labelled) or outside (not) depends on the structure within
 // inside_closing of it, so a wall seen there can bring it in or leave it out.
-int cleaning_reach(const FreeSpaceCleaningOptions& o, double resolution) {
-  return static_cast<int>(std::min(std::ceil((1.25 * o.min_width + o.max_obstacle_speck + o.inside_closing) / resolution) + 2, kMaxReach));
+int cleaning_reach(const FreeSpaceCleaningOptions& o, double resolution, bool with_closing = true) {
+  const double metres = 1.25 * o.min_width + o.max_obstacle_speck + (with_closing ? o.inside_closing : 0.0);
+  return static_cast<int>(std::min(std::ceil(metres / resolution) + 2, kMaxReach));
 }
 
 // The box (context's frame) of the thin parts the cleaning of context judged (ray or not, by all their
@@ -174,8 +175,18 @@ SegmentationInput segmentation_input(const OccupancyGrid& grid, const SegmentOpt
   return cleaned_input(grid, segmentation_free_space(grid, options), options);
 }
 
+int front_end_local_reach(const SegmentOptions& options, double resolution) {
+  if (!options.clean || options.cleaning.inside_closing <= 0.0 || !trivial_binarization(options.binarize)) return -1;
+  return cleaning_reach(options.cleaning, resolution, false);
+}
+
 SegmentationInput segmentation_input(const OccupancyGrid& grid, const cv::Rect& window, const SegmentOptions& options) {
-  const cv::Rect context = grown_within(window, front_end_context(options, grid.resolution), grid.cells.size());
+  return segmentation_input(grid, window, options, front_end_context(options, grid.resolution));
+}
+
+SegmentationInput segmentation_input(const OccupancyGrid& grid, const cv::Rect& window, const SegmentOptions& options,
+                                     int context_cells) {
+  const cv::Rect context = grown_within(window, context_cells, grid.cells.size());
   const OccupancyGrid part = crop(grid, context);
   const cv::Rect inner = window - context.tl();
   cv::Mat free = has_free_cell(part.cells) ? free_space_mask(part, options.binarize) : cv::Mat();

@@ -474,5 +474,38 @@ TEST(Segment, RaysOutsideTheBuildingAreNoRoomAndSpecksAreNoRooms) {
   EXPECT_EQ(r.labels.at<int>(140, 60), 0);  // without the cleaning unknown is never labelled
 }
 
+TEST(Segment, AWindowWithoutRemovedCellsNeedsOnlyTheFloorTestsReach) {
+  // A walled 15 m x 5 m room with a window in its top wall at the left end and one-cell laser rays
+  // fanning out of it into the unknown (cells the cleaning removes), a table near the right end.
+  OccupancyGrid grid{cv::Mat(200, 400, CV_8UC1, cv::Scalar(kUnknown)), 0.05, {0.0, 0.0}};
+  cv::rectangle(grid.cells, cv::Rect(19, 79, 302, 102), cv::Scalar(kOccupied), cv::FILLED);
+  grid.cells(cv::Rect(20, 80, 300, 100)).setTo(kFree);
+  grid.cells(cv::Rect(40, 79, 20, 1)).setTo(kFree);
+  for (int k = -2; k <= 2; ++k)
+    for (int t = 1; t <= 60; ++t) grid.cells.at<unsigned char>(cv::Point(50 + k * t / 4, 79 - t)) = kFree;
+  grid.cells(cv::Rect(270, 120, 20, 10)).setTo(kOccupied);
+  const SegmentOptions options;
+  const int local = front_end_local_reach(options, grid.resolution);
+  EXPECT_EQ(local, 23);  // (1.25 x 0.6 m + 0.3 m) / 0.05 m + 2: no inside closing
+  EXPECT_LT(local, front_end_reach(options, grid.resolution));
+  // Far from the rays the floor tests' reach as context gives the full context's front end.
+  const cv::Rect window(250, 100, 40, 40);
+  const SegmentationInput full = segmentation_input(grid, window, options);
+  const SegmentationInput near = segmentation_input(grid, window, options, local);
+  EXPECT_EQ(cv::countNonZero(full.floor != near.floor), 0);
+  EXPECT_EQ(cv::countNonZero(full.labelled.cells != near.labelled.cells), 0);
+  EXPECT_GT(cv::countNonZero(near.floor), 0);
+  // Beside the rays the cleaning removes free cells: there the inside closing's reach is needed.
+  const SegmentationInput rays = segmentation_input(grid, cv::Rect(30, 10, 40, 70), options, local);
+  EXPECT_GT(cv::countNonZero((grid.cells(cv::Rect(30, 10, 40, 70)) == kFree) & (rays.floor == 0)), 0);
+  // It does not apply where removed cells are not the free cells off the floor, nor without a cleaning.
+  SegmentOptions inflated;
+  inflated.binarize.robot_radius = 0.2;
+  EXPECT_EQ(front_end_local_reach(inflated, grid.resolution), -1);
+  SegmentOptions raw;
+  raw.clean = false;
+  EXPECT_EQ(front_end_local_reach(raw, grid.resolution), -1);
+}
+
 }  // namespace
 }  // namespace topocut

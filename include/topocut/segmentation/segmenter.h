@@ -87,11 +87,21 @@ SegmentationInput segmentation_input(const OccupancyGrid& grid, const SegmentOpt
 // no influence). No error for a window without free space: its floor is then empty of free cells.
 // The windowed incremental update's front end.
 SegmentationInput segmentation_input(const OccupancyGrid& grid, const cv::Rect& window, const SegmentOptions& options);
+// The same from the window grown by context cells (at least front_end_local_reach(), for a window
+// without removed cells: the floor there is then segmentation_input()'s, thin parts cut aside).
+SegmentationInput segmentation_input(const OccupancyGrid& grid, const cv::Rect& window, const SegmentOptions& options,
+                                     int context);
 
 // How far (cells) a changed cell can change the front end's output (the binarization's and the
 // cleaning's reach), and how much around a window the front end reads to compute it there.
 int front_end_reach(const SegmentOptions& options, double resolution);
 int front_end_context(const SegmentOptions& options, double resolution);
+// The reach of the cleaning's floor tests alone (thin parts, obstacle specks), without the inside
+// closing's: how far a change moves the front end's output when the cleaning removes no free cell
+// within front_end_reach() of it, before or after (no inside or outside to judge). -1 when that does
+// not apply: no cleaning, no inside closing, or a binarization that moves free cells (the removed
+// cells are then not the grid's free cells off the floor).
+int front_end_local_reach(const SegmentOptions& options, double resolution);
 
 // Stages 3 to 5 over what the front end left, on any window of a map: the free-space polygons of
 // input.floor, decompose_component() on each, the rule list's rows on all rooms (open rooms), the

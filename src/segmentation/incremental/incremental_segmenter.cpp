@@ -381,12 +381,15 @@ void IncrementalSegmenter::State::update_kinds() {
 // that remains of how they were.
 ChangeMask IncrementalSegmenter::State::take_changes(const OccupancyGrid& grid, const cv::Rect& changed) {
   ChangeMask mask;
-  mask.window = grown(changed, front_end_reach(options.segment, resolution), grid.cells.size());
-  const cv::Rect& window = mask.window;
-  if (window.empty()) return mask;
+  if (changed.empty()) return mask;
   // segment()'s front end over the window (segmentation_input): what lies farther keeps its last cleaning.
-  const SegmentationInput input = window_input(grid, mask);
-  if (mask.judged_beyond) return mask;  // the whole map is segmented instead
+  SegmentationInput input;
+  if (!local_input(grid, changed, mask, input)) {
+    mask.window = grown(changed, front_end_reach(options.segment, resolution), grid.cells.size());
+    input = window_input(grid, mask);
+    if (mask.judged_beyond) return mask;  // the whole map is segmented instead
+  }
+  const cv::Rect& window = mask.window;
   const cv::Mat& new_floor = input.floor;
   const cv::Mat& new_labelled = input.labelled.cells;
 
@@ -422,6 +425,42 @@ ChangeMask IncrementalSegmenter::State::take_changes(const OccupancyGrid& grid, 
   new_floor.copyTo(floor(window));
   new_labelled.copyTo(labelled(window));
   return mask;
+}
+
+namespace {
+
+// Whether cells == kFree and floor == 0 anywhere (two views of one box): a free cell the cleaning
+// removed (a ray, inside or outside the building), when the binarization leaves the free cells as they are.
+bool removes_free_cells(const cv::Mat& cells, const cv::Mat& floor) {
+  for (int r = 0; r < cells.rows; ++r) {
+    const unsigned char* c = cells.ptr<unsigned char>(r);
+    const unsigned char* f = floor.ptr<unsigned char>(r);
+    int any = 0;
+    for (int k = 0; k < cells.cols; ++k) any |= static_cast<int>(c[k] == kFree) & static_cast<int>(f[k] == 0);
+    if (any != 0) return true;
+  }
+  return false;
+}
+
+}  // namespace
+
+// segment()'s front end over the changed box grown by the floor tests' reach only, when that is all
+// the change can move: the cleaning removed no free cell within the full reach before, and removes
+// none in the small window now, nor cuts a thin part reaching into it (so no inside or outside is
+// judged near the change, and the inside closing's reach and context, 2 m twice over, are not
+// needed: a window of a tenth of the cells for a change of a few cells). False: the full window.
+bool IncrementalSegmenter::State::local_input(const OccupancyGrid& grid, const cv::Rect& changed, ChangeMask& mask,
+                                              SegmentationInput& input) const {
+  const SegmentOptions& o = options.segment;
+  const int local = front_end_local_reach(o, resolution);
+  if (local < 0) return false;
+  const cv::Rect full = grown(changed, front_end_reach(o, resolution), grid.cells.size());
+  if (removes_free_cells(cells(full), floor(full))) return false;
+  const cv::Rect window = grown(changed, local, grid.cells.size());
+  input = segmentation_input(grid, window, o, local);
+  if (!input.thin_parts_cut.empty() || removes_free_cells(grid.cells(window), input.floor)) return false;
+  mask.window = window;
+  return true;
 }
 
 // segment()'s front end over mask.window, grown until no thin part reaching into it runs out of the

@@ -237,6 +237,7 @@ struct IncrementalSegmenter::State {
   void take_loaded_ledger();
   ChangeMask take_changes(const OccupancyGrid& grid, const cv::Rect& changed);
   SegmentationInput window_input(const OccupancyGrid& grid, ChangeMask& mask) const;
+  bool local_input(const OccupancyGrid& grid, const cv::Rect& changed, ChangeMask& mask, SegmentationInput& input) const;
   std::vector<Blob> find_blobs(const ChangeMask& mask, cv::Mat& blob_of) const;
   Region choose_region(std::vector<Blob>& blobs);
   bool is_speck(const Blob& blob) const;
