@@ -12,6 +12,7 @@
 #include "topocut/core/error.h"
 #include "topocut/core/format.h"
 #include "topocut/decomposition/ring_intersections.h"
+#include "topocut/map/rasterize.h"
 #include "topocut/map/simplify.h"
 #include "topocut/segmentation/polygon_split.h"
 #include "topocut/segmentation/room_kinds.h"
@@ -359,16 +360,20 @@ Segmentation segment_input(const SegmentationInput& input, const SegmentOptions&
   }
   const std::vector<SegmentationRule>& rules = segmentation_rules();
   StageTimer timer(times, SegmentStage::kOpenRooms);
+  // The rooms rasterized once for the open rooms and the labelling, again only if a row changed them.
+  std::vector<CellSpan> spans = polygon_spans(pieces.pieces, grid.cells.size());
   for (const SegmentationRule& rule : rules) {
     if (!starts(rule, RuleStage::kRooms, options)) continue;
-    pieces = rule.on_rooms(pieces, grid, options);
+    PieceSet next = rule.on_rooms(pieces, grid, options, spans);
+    if (next.pieces != pieces.pieces) spans = polygon_spans(next.pieces, grid.cells.size());
+    pieces = std::move(next);
   }
   timer.next(SegmentStage::kLabelling);
   const OccupancyGrid cells = to_label.empty() ? grid : labelled_only(grid, to_label);
   Segmentation segmentation;
   for (const SegmentationRule& rule : rules) {
     if (!starts(rule, RuleStage::kLabel, options)) continue;
-    segmentation = rule.label(cells, pieces, options);
+    segmentation = rule.label(cells, pieces, options, spans);
   }
   timer.next(SegmentStage::kOutputs);
   // Once the rooms are final, whatever decided them; a window labelling only part of its cells
