@@ -7,6 +7,8 @@
 #include <limits>
 #include <random>
 
+#include <opencv2/imgproc.hpp>
+
 #include "topocut/core/error.h"
 
 namespace topocut {
@@ -216,6 +218,55 @@ TEST(FillLabels, SpecksTakeTheNearestLabelFirstInRingOrder) {
       }
     EXPECT_GT(checked, 200) << density;
   }
+}
+
+// Many specks more than 24 cells from every label (beyond the ring search), spread so that a window
+// each would cost more than the map: each takes the label that one distance transform of the whole
+// map gives it (OpenCV's, computed here), whatever windows the library solves them in. Labels on even
+// cells make many specks equally near two labels; the labels keep to part of the map, so that some
+// specks lie farther than the first windows reach.
+TEST(FillLabels, SpreadSpecksTakeWhatTheWholeMapTransformGives) {
+  std::mt19937 random(11);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  double farthest = 0.0;
+  for (int round = 0; round < 6; ++round) {
+    const int h = 240 + 40 * round, w = 400;
+    const int labelled_width = 120 + 40 * round;
+    cv::Mat free = cv::Mat::zeros(h, w, CV_8UC1);
+    cv::Mat labels = cv::Mat::zeros(h, w, CV_32SC1);
+    for (int k = 0; k < 30 + 10 * round; ++k) {
+      const int r = 2 * static_cast<int>(unit(random) * (h / 2)), c = 2 * static_cast<int>(unit(random) * (labelled_width / 2));
+      const cv::Rect block(c, r, 1 + 2 * (k % 3), 1 + 2 * (k % 2));
+      labels(block & cv::Rect(0, 0, w, h)).setTo(1 + k % 4);
+      free(block & cv::Rect(0, 0, w, h)).setTo(255);
+    }
+    const cv::Mat before = labels.clone();
+    std::vector<cv::Point> specks;
+    for (int k = 0; k < 400; ++k) {
+      const cv::Point p(static_cast<int>(unit(random) * w), static_cast<int>(unit(random) * h));
+      const cv::Rect near = cv::Rect(p.x - 25, p.y - 25, 51, 51) & cv::Rect(0, 0, w - 1, h);  // room for a pair
+      if (cv::countNonZero(before(near)) > 0 || free.at<unsigned char>(p) != 0) continue;
+      free.at<unsigned char>(p) = 255;
+      specks.push_back(p);
+      if (k % 5 == 0) {  // a blob of two cells now and then
+        free.at<unsigned char>(p + cv::Point(1, 0)) = 255;
+        specks.push_back(p + cv::Point(1, 0));
+      }
+    }
+    cv::Mat distance, nearest;
+    cv::distanceTransform(before <= 0, distance, nearest, cv::DIST_L2, 5, cv::DIST_LABEL_PIXEL);
+    std::vector<int> label_of(static_cast<std::size_t>(h) * w + 1, 0);
+    for (int r = 0; r < h; ++r)
+      for (int c = 0; c < w; ++c)
+        if (before.at<int>(r, c) > 0) label_of[static_cast<std::size_t>(nearest.at<int>(r, c))] = before.at<int>(r, c);
+    fill_free_space_labels(labels, free);
+    for (const cv::Point& p : specks) {
+      EXPECT_EQ(labels.at<int>(p), label_of[static_cast<std::size_t>(nearest.at<int>(p))]) << "round " << round << " at " << p;
+      farthest = std::max(farthest, static_cast<double>(distance.at<float>(p)));
+    }
+    EXPECT_GT(specks.size(), 100u) << "round " << round;
+  }
+  EXPECT_GT(farthest, 130.0);  // beyond twice the first windows' margin too
 }
 
 TEST(FillLabels, SpecksWithoutAnyLabelStayUnlabelled) {
