@@ -527,6 +527,18 @@ std::vector<CellSpan> polygon_spans(const std::vector<PolygonWithHoles>& polygon
   return spans;
 }
 
+std::vector<CellSpan> kept_spans(const std::vector<CellSpan>& spans, const std::vector<int>& new_index) {
+  std::vector<CellSpan> out;
+  out.reserve(spans.size());
+  for (const CellSpan& span : spans) {
+    if (span.index < 0 || static_cast<std::size_t>(span.index) >= new_index.size())
+      throw Error("a span names a polygon the index does not list");
+    const int index = new_index[static_cast<std::size_t>(span.index)];
+    if (index >= 0) out.push_back({span.row, span.first, span.end, index});
+  }
+  return out;
+}
+
 cv::Mat rasterize_polygons(const std::vector<PolygonWithHoles>& polygons, cv::Size size) {
   const std::vector<CellSpan> spans = polygon_spans(polygons, size);
   cv::Mat labels = cv::Mat::zeros(size, CV_32SC1);

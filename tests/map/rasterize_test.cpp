@@ -59,6 +59,36 @@ TEST(Rasterize, PolygonsOutsideTheImageAreClipped) {
   EXPECT_THROW(rasterize_polygons({bad}, cv::Size(4, 3)), Error);
 }
 
+// Rooms dropped from a list keep the spans they had: kept_spans() of the whole list's spans is
+// polygon_spans() of the rooms left, in their new numbering (the open rooms' row drops rooms and the
+// labelling reads the rest).
+TEST(Rasterize, KeptSpansAreThoseOfTheKeptPolygons) {
+  std::mt19937 random(5);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  const cv::Size size(60, 40);
+  for (int round = 0; round < 30; ++round) {
+    std::vector<PolygonWithHoles> all, kept;
+    std::vector<int> new_index;
+    for (int k = 0; k < 1 + round % 7; ++k) {
+      const double x = unit(random) * 70.0 - 5.0, y = unit(random) * 50.0 - 5.0, s = 1.0 + unit(random) * 20.0;
+      all.push_back({{{x, y}, {x + s, y + s * 0.3}, {x + s * 0.6, y + s}}, {}});
+      const bool keep = unit(random) < 0.6;
+      new_index.push_back(keep ? static_cast<int>(kept.size()) : -1);
+      if (keep) kept.push_back(all.back());
+    }
+    const std::vector<CellSpan> expected = polygon_spans(kept, size);
+    const std::vector<CellSpan> got = kept_spans(polygon_spans(all, size), new_index);
+    ASSERT_EQ(got.size(), expected.size()) << "round " << round;
+    for (std::size_t i = 0; i < got.size(); ++i) {
+      EXPECT_EQ(got[i].row, expected[i].row);
+      EXPECT_EQ(got[i].first, expected[i].first);
+      EXPECT_EQ(got[i].end, expected[i].end);
+      EXPECT_EQ(got[i].index, expected[i].index);
+    }
+  }
+  EXPECT_THROW(kept_spans({{0, 0, 1, 3}}, {0, 1}), Error);  // polygon 3 is not listed
+}
+
 TEST(FillLabels, EveryFreeCellLabelledNoObstacleLabelled) {
   // Two rooms separated by a wall with a door; label only a seed in each, let the fill do the rest.
   cv::Mat free(10, 21, CV_8UC1, cv::Scalar(255));
