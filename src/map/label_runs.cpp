@@ -105,7 +105,10 @@ LabelRuns label_runs(const cv::Mat& labels) {
 }
 
 LabelRuns polygon_label_runs(const std::vector<PolygonWithHoles>& polygons, cv::Size size) {
-  const std::vector<CellSpan> spans = polygon_spans(polygons, size);
+  return polygon_label_runs(polygon_spans(polygons, size), size);
+}
+
+LabelRuns polygon_label_runs(const std::vector<CellSpan>& spans, cv::Size size) {
   // The spans by row, each row's in the order rasterize_polygons paints them.
   std::vector<std::size_t> row_begin(static_cast<std::size_t>(size.height) + 1, 0);
   for (const CellSpan& span : spans) ++row_begin[static_cast<std::size_t>(span.row) + 1];

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <deque>
 #include <limits>
+#include <numeric>
 #include <optional>
 #include <unordered_map>
 #include <string>
@@ -39,14 +40,20 @@ void add_crossings(const Ring& ring, int height, std::vector<std::vector<double>
   }
 }
 
-// Nearest label in a straight line for each cell of `cells`, from a distance transform of `window`
-// of labels (0 where the window holds no label). Approximate (OpenCV's 5x5 mask), as before.
-void nearest_labels_in(const cv::Mat& labels, const cv::Rect& window, const std::vector<int>& cells,
-                       std::vector<int>& settled_index, std::vector<int>& settled_label) {
+// The nearest label in a straight line of each cell of `cells`, from a distance transform of
+// `window` of labels (0: no label in the window). Approximate (OpenCV's 5x5 mask), as before. With
+// as_whole_map, a cell gets -1 unless the transform of the whole map is sure to give it the same
+// label: its value at a cell is the length of a path of mask steps from the label it names, each step
+// at least as long as the rows or columns it spans, its ties are broken by comparing values along such
+// paths no longer than it, and a window's value is never below the whole map's. So wherever the
+// square around the cell of half-side its distance lies within the window (or beyond the map's edge),
+// the whole map's transform takes the same steps.
+std::vector<int> window_nearest_labels(const cv::Mat& labels, const cv::Rect& window, const std::vector<int>& cells,
+                                       bool as_whole_map) {
   const int w = labels.cols;
   const cv::Mat local = labels(window);
   cv::Mat sources = local <= 0;  // distanceTransform measures distance to zero cells: the labelled ones
-  if (cv::countNonZero(sources == 0) == 0) return;  // no label anywhere
+  if (cv::countNonZero(sources == 0) == 0) return std::vector<int>(cells.size(), as_whole_map ? -1 : 0);  // no label
   cv::Mat distance, nearest;
   cv::distanceTransform(sources, distance, nearest, cv::DIST_L2, 5, cv::DIST_LABEL_PIXEL);
   double max_index = 0.0;
@@ -58,12 +65,31 @@ void nearest_labels_in(const cv::Mat& labels, const cv::Rect& window, const std:
     for (int c = 0; c < local.cols; ++c)
       if (l[c] > 0) label_of[static_cast<std::size_t>(n[c])] = l[c];
   }
-  for (const int i : cells) {
-    const int r = i / w - window.y, c = i % w - window.x;
-    const int label = label_of[static_cast<std::size_t>(nearest.at<int>(r, c))];
-    if (label == 0) continue;
-    settled_index.push_back(i);
-    settled_label.push_back(label);
+  // The window's sides inside the map (a side on the map's edge hides nothing).
+  const bool left = window.x > 0, top = window.y > 0;
+  const bool right = window.x + window.width < labels.cols, bottom = window.y + window.height < labels.rows;
+  std::vector<int> found(cells.size(), 0);
+  for (std::size_t k = 0; k < cells.size(); ++k) {
+    const int r = cells[k] / w - window.y, c = cells[k] % w - window.x;
+    found[k] = label_of[static_cast<std::size_t>(nearest.at<int>(r, c))];
+    if (!as_whole_map) continue;
+    // Above the distance (the float rounds a fixed-point value; a relative 1e-6 covers it).
+    const int reach = static_cast<int>(std::floor(distance.at<float>(r, c) * (1.0 + 1e-6))) + 1;
+    if ((left && c - reach < 0) || (top && r - reach < 0) || (right && c + reach >= window.width) ||
+        (bottom && r + reach >= window.height))
+      found[k] = -1;
+  }
+  return found;
+}
+
+// Appends the cells of `cells` the window's transform gives a label to settled_index and settled_label.
+void nearest_labels_in(const cv::Mat& labels, const cv::Rect& window, const std::vector<int>& cells,
+                       std::vector<int>& settled_index, std::vector<int>& settled_label) {
+  const std::vector<int> found = window_nearest_labels(labels, window, cells, false);
+  for (std::size_t k = 0; k < cells.size(); ++k) {
+    if (found[k] == 0) continue;
+    settled_index.push_back(cells[k]);
+    settled_label.push_back(found[k]);
   }
 }
 
@@ -180,15 +206,116 @@ std::optional<std::vector<OrphanBlob>> orphan_blobs(const cv::Mat& labels, const
   return blobs;
 }
 
+// Some of the orphans (members: their indices) and a window around them.
+struct OrphanGroup {
+  std::vector<std::size_t> members;
+  cv::Rect window;
+};
+
+// The orphans `which` in groups, each with its box grown by margin as window: orphans in squares of
+// margin cells a side within two squares of each other go together (their windows would overlap).
+std::vector<OrphanGroup> orphan_groups(const std::vector<int>& orphans, const std::vector<std::size_t>& which, int margin,
+                                       cv::Size size) {
+  const int w = size.width;
+  const int gw = (size.width + margin - 1) / margin, gh = (size.height + margin - 1) / margin;
+  const auto square = [&](std::size_t k) { return orphans[k] / w / margin * gw + orphans[k] % w / margin; };
+  std::vector<int> group_of(static_cast<std::size_t>(gw) * static_cast<std::size_t>(gh), -2);  // -2: no orphan
+  for (const std::size_t k : which) group_of[static_cast<std::size_t>(square(k))] = -1;
+  int groups = 0;
+  std::vector<int> queue;
+  for (std::size_t start = 0; start < group_of.size(); ++start) {
+    if (group_of[start] != -1) continue;
+    group_of[start] = groups;
+    queue.assign(1, static_cast<int>(start));
+    for (std::size_t head = 0; head < queue.size(); ++head) {
+      const int gy = queue[head] / gw, gx = queue[head] % gw;
+      for (int y = std::max(0, gy - 2); y <= std::min(gh - 1, gy + 2); ++y)
+        for (int x = std::max(0, gx - 2); x <= std::min(gw - 1, gx + 2); ++x) {
+          int& g = group_of[static_cast<std::size_t>(y * gw + x)];
+          if (g != -1) continue;
+          g = groups;
+          queue.push_back(y * gw + x);
+        }
+    }
+    ++groups;
+  }
+  std::vector<OrphanGroup> out(static_cast<std::size_t>(groups));
+  std::vector<cv::Rect> box(out.size());
+  for (const std::size_t k : which) {
+    const std::size_t g = static_cast<std::size_t>(group_of[static_cast<std::size_t>(square(k))]);
+    const cv::Rect cell(orphans[k] % w, orphans[k] / w, 1, 1);
+    box[g] = out[g].members.empty() ? cell : box[g] | cell;
+    out[g].members.push_back(k);
+  }
+  for (std::size_t g = 0; g < out.size(); ++g)
+    out[g].window = cv::Rect(box[g].x - margin, box[g].y - margin, box[g].width + 2 * margin, box[g].height + 2 * margin) &
+                    cv::Rect(0, 0, size.width, size.height);
+  return out;
+}
+
+constexpr int kSpreadMargin = 64;  // first margin around groups of spread orphans (cells)
+
+// The labels one transform of the whole map gives orphans too many and too spread for a window
+// each (settled as nearest_labels_in() over the map, in the orphans' order): from the transforms of
+// windows around groups of them, each orphan the whole map might answer otherwise (its distance
+// reaching the window's side) again with twice the margin; the rest in one transform of the whole map
+// once the windows would cost more than it (lab_b: 1,205 orphans at 25-61 cells from a label, their
+// windows a fifth of the map).
+void nearest_labels_spread(const cv::Mat& labels, const std::vector<int>& orphans, std::vector<int>& settled_index,
+                           std::vector<int>& settled_label) {
+  const cv::Rect all(0, 0, labels.cols, labels.rows);
+  const double budget = static_cast<double>(labels.total());
+  double work = 0.0;
+  std::vector<int> found(orphans.size(), 0);
+  std::vector<std::size_t> left(orphans.size());
+  std::iota(left.begin(), left.end(), std::size_t{0});
+  const auto cells_of = [&](const std::vector<std::size_t>& members) {
+    std::vector<int> cells;
+    cells.reserve(members.size());
+    for (const std::size_t k : members) cells.push_back(orphans[k]);
+    return cells;
+  };
+  for (int margin = kSpreadMargin; !left.empty(); margin *= 2) {
+    std::vector<OrphanGroup> groups;
+    if (margin < std::max(labels.rows, labels.cols)) groups = orphan_groups(orphans, left, margin, labels.size());
+    double area = 0.0;
+    for (const OrphanGroup& group : groups) area += group.window.area();
+    if (groups.empty() || work + area > budget) {
+      const std::vector<int> whole = window_nearest_labels(labels, all, cells_of(left), false);
+      for (std::size_t j = 0; j < left.size(); ++j) found[left[j]] = whole[j];
+      break;
+    }
+    work += area;
+    std::vector<std::size_t> unsure;
+    for (const OrphanGroup& group : groups) {
+      const std::vector<int> got = window_nearest_labels(labels, group.window, cells_of(group.members), true);
+      for (std::size_t j = 0; j < got.size(); ++j) {
+        if (got[j] < 0)
+          unsure.push_back(group.members[j]);
+        else
+          found[group.members[j]] = got[j];
+      }
+    }
+    std::sort(unsure.begin(), unsure.end());
+    left = std::move(unsure);
+  }
+  for (std::size_t k = 0; k < orphans.size(); ++k) {
+    if (found[k] == 0) continue;
+    settled_index.push_back(orphans[k]);
+    settled_label.push_back(found[k]);
+  }
+}
+
 // Free cells cut off from every label take the nearest label in a straight line. Few blobs are
 // each solved in their own window, instead of a distance transform of the whole map; many specks
-// far from any room share one transform of the whole map, so the work stays linear in its size.
+// far from any room take what one transform of the whole map gives them, from windows around groups
+// of them where those are enough, so the work stays linear in the map's size.
 void settle_orphans(const cv::Mat& labels, const LabelPresence& presence, const std::vector<int>& orphans,
                     std::vector<int>& settled_index, std::vector<int>& settled_label) {
   if (orphans.empty()) return;
   const std::optional<std::vector<OrphanBlob>> blobs = orphan_blobs(labels, presence, orphans);
   if (!blobs) {
-    nearest_labels_in(labels, cv::Rect(0, 0, labels.cols, labels.rows), orphans, settled_index, settled_label);
+    nearest_labels_spread(labels, orphans, settled_index, settled_label);
     return;
   }
   for (const OrphanBlob& blob : *blobs) nearest_labels_in(labels, blob.window, blob.cells, settled_index, settled_label);
@@ -398,6 +525,18 @@ std::vector<CellSpan> polygon_spans(const std::vector<PolygonWithHoles>& polygon
     }
   }
   return spans;
+}
+
+std::vector<CellSpan> kept_spans(const std::vector<CellSpan>& spans, const std::vector<int>& new_index) {
+  std::vector<CellSpan> out;
+  out.reserve(spans.size());
+  for (const CellSpan& span : spans) {
+    if (span.index < 0 || static_cast<std::size_t>(span.index) >= new_index.size())
+      throw Error("a span names a polygon the index does not list");
+    const int index = new_index[static_cast<std::size_t>(span.index)];
+    if (index >= 0) out.push_back({span.row, span.first, span.end, index});
+  }
+  return out;
 }
 
 cv::Mat rasterize_polygons(const std::vector<PolygonWithHoles>& polygons, cv::Size size) {

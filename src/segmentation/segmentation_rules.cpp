@@ -85,8 +85,8 @@ std::vector<SegmentationRule> make_rules() {
   };
   SegmentationRule labelling = unswitched_rule(
       "labelling", RuleStage::kLabel, "every free cell gets its room's label; the rooms' outlines and the passages between them", always);
-  labelling.label = [](const OccupancyGrid& grid, const PieceSet& rooms, const SegmentOptions& o) {
-    return rooms_from_pieces(grid, rooms, o.labels);
+  labelling.label = [](const OccupancyGrid& grid, const PieceSet& rooms, const SegmentOptions& o, const std::vector<CellSpan>& spans) {
+    return rooms_from_pieces(grid, rooms, spans, o.labels);
   };
   SegmentationRule door_flags = unswitched_rule("door-flags", RuleStage::kDescribe, "a passage at most --door-width wide is a door", always);
   door_flags.describe = [](Segmentation& s, const SegmentOptions& o) {
@@ -196,8 +196,8 @@ std::vector<SegmentationRule> make_rules() {
                             "keep rooms whose outline runs mostly into never-seen space (ray fans, scraps beyond the walls) as rooms",
                             [](const SegmentOptions& o) { return o.open_rooms.enabled; },
                             [](SegmentOptions& o) { o.open_rooms.enabled = false; }),
-                 [](const PieceSet& rooms, const OccupancyGrid& grid, const SegmentOptions& o) {
-                   return join_open_rooms(rooms, grid, o.open_rooms);
+                 [](const PieceSet& rooms, const OccupancyGrid& grid, const SegmentOptions& o, const std::vector<CellSpan>& spans) {
+                   return join_open_rooms(rooms, grid, o.open_rooms, spans);
                  }),
       std::move(labelling),
       std::move(door_flags),

@@ -12,6 +12,7 @@
 #include "topocut/core/error.h"
 #include "topocut/core/format.h"
 #include "topocut/decomposition/ring_intersections.h"
+#include "topocut/map/rasterize.h"
 #include "topocut/map/simplify.h"
 #include "topocut/segmentation/polygon_split.h"
 #include "topocut/segmentation/room_kinds.h"
@@ -348,6 +349,19 @@ OccupancyGrid labelled_only(const OccupancyGrid& grid, const cv::Mat& to_label) 
   return out;
 }
 
+// The spans of after's rooms given those of before's: kept_spans() where after keeps some of before's
+// rooms in their order (a row that drops rooms, or changes none), else the rooms rasterized anew.
+std::vector<CellSpan> spans_after(const std::vector<PolygonWithHoles>& before, std::vector<CellSpan> spans,
+                                  const std::vector<PolygonWithHoles>& after, cv::Size size) {
+  std::vector<int> new_index(before.size(), -1);
+  std::size_t kept = 0;
+  for (std::size_t i = 0; i < before.size() && kept < after.size(); ++i)
+    if (before[i] == after[kept]) new_index[i] = static_cast<int>(kept++);
+  if (kept < after.size()) return polygon_spans(after, size);
+  if (after.size() == before.size()) return spans;  // the same rooms
+  return kept_spans(spans, new_index);
+}
+
 }  // namespace
 
 Segmentation segment_input(const SegmentationInput& input, const SegmentOptions& options, const cv::Mat& to_label,
@@ -370,16 +384,21 @@ Segmentation segment_input(const SegmentationInput& input, const SegmentOptions&
   }
   const std::vector<SegmentationRule>& rules = segmentation_rules();
   StageTimer timer(times, SegmentStage::kOpenRooms);
+  // The rooms rasterized once for the open rooms and the labelling, again only if a row did more
+  // than drop some of them.
+  std::vector<CellSpan> spans = polygon_spans(pieces.pieces, grid.cells.size());
   for (const SegmentationRule& rule : rules) {
     if (!starts(rule, RuleStage::kRooms, options)) continue;
-    pieces = rule.on_rooms(pieces, grid, options);
+    PieceSet next = rule.on_rooms(pieces, grid, options, spans);
+    spans = spans_after(pieces.pieces, std::move(spans), next.pieces, grid.cells.size());
+    pieces = std::move(next);
   }
   timer.next(SegmentStage::kLabelling);
   const OccupancyGrid cells = to_label.empty() ? grid : labelled_only(grid, to_label);
   Segmentation segmentation;
   for (const SegmentationRule& rule : rules) {
     if (!starts(rule, RuleStage::kLabel, options)) continue;
-    segmentation = rule.label(cells, pieces, options);
+    segmentation = rule.label(cells, pieces, options, spans);
   }
   timer.next(SegmentStage::kOutputs);
   // Once the rooms are final, whatever decided them; a window labelling only part of its cells

@@ -98,6 +98,10 @@ TEST(LabelRuns, PiecesAreTheirRasterizedImage) {
     const LabelRuns runs = polygon_label_runs(pieces, size);
     expect_well_formed(runs);
     EXPECT_EQ(cv::countNonZero(image_of(runs) != rasterize_polygons(pieces, size)), 0) << "round " << round;
+    // From spans rasterized beforehand (the open rooms' stage reads the labelling's): the same runs.
+    const LabelRuns from_spans = polygon_label_runs(polygon_spans(pieces, size), size);
+    EXPECT_EQ(cv::countNonZero(image_of(from_spans) != image_of(runs)), 0) << "round " << round;
+    EXPECT_EQ(from_spans.all().size(), runs.all().size()) << "round " << round;
   }
 }
 

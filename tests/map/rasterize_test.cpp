@@ -7,6 +7,8 @@
 #include <limits>
 #include <random>
 
+#include <opencv2/imgproc.hpp>
+
 #include "topocut/core/error.h"
 
 namespace topocut {
@@ -55,6 +57,36 @@ TEST(Rasterize, PolygonsOutsideTheImageAreClipped) {
   EXPECT_THROW(rasterize_polygons({big}, cv::Size(0, 3)), Error);
   const PolygonWithHoles bad{{{0, 0}, {std::nan(""), 1}, {1, 1}}, {}};
   EXPECT_THROW(rasterize_polygons({bad}, cv::Size(4, 3)), Error);
+}
+
+// Rooms dropped from a list keep the spans they had: kept_spans() of the whole list's spans is
+// polygon_spans() of the rooms left, in their new numbering (the open rooms' row drops rooms and the
+// labelling reads the rest).
+TEST(Rasterize, KeptSpansAreThoseOfTheKeptPolygons) {
+  std::mt19937 random(5);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  const cv::Size size(60, 40);
+  for (int round = 0; round < 30; ++round) {
+    std::vector<PolygonWithHoles> all, kept;
+    std::vector<int> new_index;
+    for (int k = 0; k < 1 + round % 7; ++k) {
+      const double x = unit(random) * 70.0 - 5.0, y = unit(random) * 50.0 - 5.0, s = 1.0 + unit(random) * 20.0;
+      all.push_back({{{x, y}, {x + s, y + s * 0.3}, {x + s * 0.6, y + s}}, {}});
+      const bool keep = unit(random) < 0.6;
+      new_index.push_back(keep ? static_cast<int>(kept.size()) : -1);
+      if (keep) kept.push_back(all.back());
+    }
+    const std::vector<CellSpan> expected = polygon_spans(kept, size);
+    const std::vector<CellSpan> got = kept_spans(polygon_spans(all, size), new_index);
+    ASSERT_EQ(got.size(), expected.size()) << "round " << round;
+    for (std::size_t i = 0; i < got.size(); ++i) {
+      EXPECT_EQ(got[i].row, expected[i].row);
+      EXPECT_EQ(got[i].first, expected[i].first);
+      EXPECT_EQ(got[i].end, expected[i].end);
+      EXPECT_EQ(got[i].index, expected[i].index);
+    }
+  }
+  EXPECT_THROW(kept_spans({{0, 0, 1, 3}}, {0, 1}), Error);  // polygon 3 is not listed
 }
 
 TEST(FillLabels, EveryFreeCellLabelledNoObstacleLabelled) {
@@ -216,6 +248,55 @@ TEST(FillLabels, SpecksTakeTheNearestLabelFirstInRingOrder) {
       }
     EXPECT_GT(checked, 200) << density;
   }
+}
+
+// Many specks more than 24 cells from every label (beyond the ring search), spread so that a window
+// each would cost more than the map: each takes the label that one distance transform of the whole
+// map gives it (OpenCV's, computed here), whatever windows the library solves them in. Labels on even
+// cells make many specks equally near two labels; the labels keep to part of the map, so that some
+// specks lie farther than the first windows reach.
+TEST(FillLabels, SpreadSpecksTakeWhatTheWholeMapTransformGives) {
+  std::mt19937 random(11);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  double farthest = 0.0;
+  for (int round = 0; round < 6; ++round) {
+    const int h = 240 + 40 * round, w = 400;
+    const int labelled_width = 120 + 40 * round;
+    cv::Mat free = cv::Mat::zeros(h, w, CV_8UC1);
+    cv::Mat labels = cv::Mat::zeros(h, w, CV_32SC1);
+    for (int k = 0; k < 30 + 10 * round; ++k) {
+      const int r = 2 * static_cast<int>(unit(random) * (h / 2)), c = 2 * static_cast<int>(unit(random) * (labelled_width / 2));
+      const cv::Rect block(c, r, 1 + 2 * (k % 3), 1 + 2 * (k % 2));
+      labels(block & cv::Rect(0, 0, w, h)).setTo(1 + k % 4);
+      free(block & cv::Rect(0, 0, w, h)).setTo(255);
+    }
+    const cv::Mat before = labels.clone();
+    std::vector<cv::Point> specks;
+    for (int k = 0; k < 400; ++k) {
+      const cv::Point p(static_cast<int>(unit(random) * w), static_cast<int>(unit(random) * h));
+      const cv::Rect near = cv::Rect(p.x - 25, p.y - 25, 51, 51) & cv::Rect(0, 0, w - 1, h);  // room for a pair
+      if (cv::countNonZero(before(near)) > 0 || free.at<unsigned char>(p) != 0) continue;
+      free.at<unsigned char>(p) = 255;
+      specks.push_back(p);
+      if (k % 5 == 0) {  // a blob of two cells now and then
+        free.at<unsigned char>(p + cv::Point(1, 0)) = 255;
+        specks.push_back(p + cv::Point(1, 0));
+      }
+    }
+    cv::Mat distance, nearest;
+    cv::distanceTransform(before <= 0, distance, nearest, cv::DIST_L2, 5, cv::DIST_LABEL_PIXEL);
+    std::vector<int> label_of(static_cast<std::size_t>(h) * w + 1, 0);
+    for (int r = 0; r < h; ++r)
+      for (int c = 0; c < w; ++c)
+        if (before.at<int>(r, c) > 0) label_of[static_cast<std::size_t>(nearest.at<int>(r, c))] = before.at<int>(r, c);
+    fill_free_space_labels(labels, free);
+    for (const cv::Point& p : specks) {
+      EXPECT_EQ(labels.at<int>(p), label_of[static_cast<std::size_t>(nearest.at<int>(p))]) << "round " << round << " at " << p;
+      farthest = std::max(farthest, static_cast<double>(distance.at<float>(p)));
+    }
+    EXPECT_GT(specks.size(), 100u) << "round " << round;
+  }
+  EXPECT_GT(farthest, 130.0);  // beyond twice the first windows' margin too
 }
 
 TEST(FillLabels, SpecksWithoutAnyLabelStayUnlabelled) {

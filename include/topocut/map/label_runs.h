@@ -9,6 +9,7 @@
 #include <opencv2/core.hpp>
 
 #include "topocut/core/geometry.h"
+#include "topocut/map/rasterize.h"
 
 namespace topocut {
 
@@ -64,5 +65,9 @@ LabelRuns label_runs(const cv::Mat& labels);
 // The runs of rasterize_polygons(polygons, size) without the image: polygon i's cells labelled i + 1,
 // the earlier polygon keeping a cell two of them claim.
 LabelRuns polygon_label_runs(const std::vector<PolygonWithHoles>& polygons, cv::Size size);
+
+// polygon_label_runs() from the polygons' spans (polygon_spans(polygons, size)), for a caller that
+// has rasterized them already.
+LabelRuns polygon_label_runs(const std::vector<CellSpan>& spans, cv::Size size);
 
 }  // namespace topocut

@@ -27,6 +27,11 @@ struct CellSpan {
 // bottom up, then by column), clipped to the image; overlaps between polygons are not resolved.
 std::vector<CellSpan> polygon_spans(const std::vector<PolygonWithHoles>& polygons, cv::Size size);
 
+// The spans of some of the polygons, from polygon_spans() of them all: polygon i is kept as polygon
+// new_index[i] (new_index ascending over the kept ones), or left out where new_index[i] < 0. The same
+// as polygon_spans() of the kept polygons, without rasterizing them again.
+std::vector<CellSpan> kept_spans(const std::vector<CellSpan>& spans, const std::vector<int>& new_index);
+
 // Completes labels over the free space (free_mask CV_8UC1, nonzero = free): each unlabelled free cell
 // takes the nearest label along free space (4-connected, so never through walls), or in a straight
 // line where free space reaches no label; non-free cells become 0 unless keep_non_free (absorbed

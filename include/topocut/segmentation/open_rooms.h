@@ -6,6 +6,7 @@
 
 #include "topocut/core/occupancy_grid.h"
 #include "topocut/core/option_table.h"
+#include "topocut/map/rasterize.h"
 #include "topocut/segmentation/rooms_from_pieces.h"
 
 namespace topocut {
@@ -44,5 +45,10 @@ void validate(const OpenRoomOptions& options);
 // without occupied cells (walls drawn in the unknown grey: walls and never-seen space cannot be told
 // apart).
 PieceSet join_open_rooms(const PieceSet& rooms, const OccupancyGrid& grid, const OpenRoomOptions& options = {});
+
+// join_open_rooms() given the rooms' spans (polygon_spans(rooms.pieces, grid.cells.size())), which the
+// labelling of the same rooms reads too: the rooms are rasterized once.
+PieceSet join_open_rooms(const PieceSet& rooms, const OccupancyGrid& grid, const OpenRoomOptions& options,
+                         const std::vector<CellSpan>& spans);
 
 }  // namespace topocut

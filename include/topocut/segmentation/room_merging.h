@@ -98,12 +98,14 @@ struct SegmentationRule;
 // (keyhole cuts dropped); the pieces unchanged when no such row is on. component.polygon's small holes
 // are the furniture; cells, the grid it was traced from (OccupancyGrid::cells; empty: not known), tell
 // walls from never-seen space along the rooms' outlines. trace, if given, receives every merge the
-// learned criterion weighed.
+// learned criterion weighed. options.merge must be valid (validate(); not checked here: segment() and
+// the incremental segmenter check their options once, not per component).
 PieceSet merge_rooms(const FreeSpaceComponent& component, const PieceSet& pieces, const cv::Mat& cells, double resolution,
                      const SegmentOptions& options, const std::vector<SegmentationRule>& rules,
                      std::vector<MergeStep>* trace = nullptr);
 
-// merge_rooms() by segmentation_rules() with these merge options (the other options at their defaults).
+// merge_rooms() by segmentation_rules() with these merge options (the other options at their defaults);
+// throws Error unless validate(options) accepts them.
 PieceSet merge_rooms(const FreeSpaceComponent& component, const PieceSet& pieces, const cv::Mat& cells, double resolution,
                      const RoomMergeOptions& options = {}, std::vector<MergeStep>* trace = nullptr);
 

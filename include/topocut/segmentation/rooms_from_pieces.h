@@ -8,6 +8,7 @@
 #include "topocut/core/occupancy_grid.h"
 #include "topocut/core/option_table.h"
 #include "topocut/core/segmentation.h"
+#include "topocut/map/rasterize.h"
 
 namespace topocut {
 
@@ -42,6 +43,11 @@ const std::vector<OptionRow<RoomLabelOptions>>& room_label_option_rows();
 // cover_absorbed_obstacles). Rooms: the pieces labelling a cell, numbered 1..N in raster order, polygon
 // in metres. A cut between two rooms is a passage (metres), sorted by room ids, then by cut.
 Segmentation rooms_from_pieces(const OccupancyGrid& grid, const PieceSet& pieces, const RoomLabelOptions& options = {});
+
+// rooms_from_pieces() given the pieces' spans (polygon_spans(pieces.pieces, grid.cells.size())), for a
+// caller that has rasterized them already (the open rooms' stage, when it joined none).
+Segmentation rooms_from_pieces(const OccupancyGrid& grid, const PieceSet& pieces, const std::vector<CellSpan>& spans,
+                               const RoomLabelOptions& options = {});
 
 // Index of the piece containing point p (grid coordinates, even-odd over all rings), or -1.
 int piece_containing(const std::vector<PolygonWithHoles>& pieces, const Point2& p);

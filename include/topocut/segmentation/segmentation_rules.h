@@ -26,6 +26,7 @@
 #include "topocut/core/segmentation.h"
 #include "topocut/decomposition/decompose.h"
 #include "topocut/map/free_space_cleaning.h"
+#include "topocut/map/rasterize.h"
 #include "topocut/segmentation/merge_criteria.h"
 #include "topocut/segmentation/segmenter.h"
 
@@ -72,10 +73,15 @@ struct SegmentationRule {
   MergeCriterion judge;
   // kMerge: a step on one component's rooms (the merges the criteria decide, the folding).
   std::function<void(ComponentMerge&)> on_component;
-  // kRooms: a step on all rooms, in the grid the rooms were cut from.
-  std::function<PieceSet(const PieceSet& rooms, const OccupancyGrid& grid, const SegmentOptions&)> on_rooms;
-  // kLabel: the segmentation of the grid's free cells into the rooms.
-  std::function<Segmentation(const OccupancyGrid& grid, const PieceSet& rooms, const SegmentOptions&)> label;
+  // kRooms: a step on all rooms, in the grid the rooms were cut from; spans: the rooms' polygon_spans()
+  // at the grid's size, which the kRooms and kLabel rows share while the rooms stay the same.
+  std::function<PieceSet(const PieceSet& rooms, const OccupancyGrid& grid, const SegmentOptions&,
+                         const std::vector<CellSpan>& spans)>
+      on_rooms;
+  // kLabel: the segmentation of the grid's free cells into the rooms (spans: theirs, as for kRooms).
+  std::function<Segmentation(const OccupancyGrid& grid, const PieceSet& rooms, const SegmentOptions&,
+                             const std::vector<CellSpan>& spans)>
+      label;
   // kDescribe: what is measured on the labelled rooms; whole_map: only where every room is labelled
   // whole (a window labelling part of its cells leaves it to its caller).
   std::function<void(Segmentation&, const SegmentOptions&)> describe;

@@ -109,13 +109,13 @@ int front_end_local_reach(const SegmentOptions& options, double resolution);
 // origin). Only free cells of input.labelled where to_label is non-zero get a room (empty: every free
 // cell), so that a window may hold cells of rooms it leaves alone; the rooms' kinds are then left to the
 // caller (kRoom: the rooms they open onto lie partly beyond the window). segment() is this function
-// over the known cells' box. Stage times are added to times, if given.
+// over the known cells' box. Stage times are added to times, if given. options must be valid (validate()).
 Segmentation segment_input(const SegmentationInput& input, const SegmentOptions& options, const cv::Mat& to_label = cv::Mat(),
                            SegmentTimes* times = nullptr);
 
 // segment()'s stages over window of grid (its front end on the window alone): the segmentation of the
 // crop, in its frame. segment() is this over segmentation_box(), placed back into the whole grid.
-// Stage times are added to times, if given.
+// Stage times are added to times, if given. options must be valid (validate()).
 Segmentation segment_window(const OccupancyGrid& grid, const cv::Rect& window, const SegmentOptions& options,
                             SegmentationInput* input = nullptr, SegmentTimes* times = nullptr);
 
@@ -135,7 +135,8 @@ PieceSet decompose_pieces(const FreeSpaceComponent& component, double resolution
 
 // Stage 3: the rooms of one free-space component (grid coordinates of grid, the labelled grid it was
 // traced from) and the cuts between them: decompose_pieces() followed by merge_rooms() with the rule
-// list. Errors name the component's first cell. Stage times are added to times, if given.
+// list. Errors name the component's first cell. Stage times are added to times, if given. options must
+// be valid (validate(); checked once by segment() and the incremental segmenter, not per component).
 PieceSet decompose_component(const FreeSpaceComponent& component, const OccupancyGrid& grid, const SegmentOptions& options,
                              SegmentTimes* times = nullptr);
 

@@ -321,6 +321,8 @@ std::vector<Candidate> doors_first(const std::vector<Segment2>& doors) {
   return all;
 }
 
+bool is_door_first(const Candidate& c) { return c.width < 0.0; }
+
 // cuts without the doors (which went first only to keep the other cuts clear of them).
 std::vector<Segment2> without_doors(std::vector<Segment2> cuts, const std::vector<Segment2>& doors) {
   std::erase_if(cuts, [&](const Segment2& s) { return std::find(doors.begin(), doors.end(), s) != doors.end(); });

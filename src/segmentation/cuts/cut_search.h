@@ -214,6 +214,9 @@ auto search_cuts(const PolygonWithHoles& polygon, double resolution, const DoorO
 // The doors as candidates that go first and stay: narrowest_compatible keeps later cuts off them.
 std::vector<Candidate> doors_first(const std::vector<Segment2>& doors);
 
+// Whether c is one of doors_first()'s doors (their width is -1; a corner's cut is never narrower than 0).
+bool is_door_first(const Candidate& c);
+
 // cuts without the doors (which went first only to keep the other cuts clear of them).
 std::vector<Segment2> without_doors(std::vector<Segment2> cuts, const std::vector<Segment2>& doors);
 

@@ -20,11 +20,13 @@ std::vector<Segment2> find_island_cuts(const PolygonWithHoles& polygon, double r
   }
   return search_cuts(polygon, resolution, options, any, std::move(joinable), index, [&](const DoorSearch& search, const EdgeGrid& grid) {
     std::vector<Candidate> all = doors_first(doors);
-    for (const Candidate& c : corner_cuts(search, grid, true)) {
-      if (has_wide_sides(search, grid, c)) all.push_back(c);
-    }
+    const std::vector<Candidate> corners = corner_cuts(search, grid, true);
+    all.insert(all.end(), corners.begin(), corners.end());
+    // The side test only on the candidates no narrower cut has ruled out (a candidate it rejects
+    // blocks none, so the same cuts as testing all first); the doors stay as they are.
+    const auto wide = [&](const Candidate& c) { return is_door_first(c) || has_wide_sides(search, grid, c); };
     // Only the cuts that, with the doors and each other, close a part off.
-    return without_doors(separating_chords(polygon, segments_of(narrowest_compatible(std::move(all), resolution))), doors);
+    return without_doors(separating_chords(polygon, segments_of(narrowest_compatible(std::move(all), resolution, wide))), doors);
   });
 }
 

@@ -90,12 +90,12 @@ PieceSet joined(const PieceSet& rooms, std::vector<int>& parent, const std::vect
   return out;
 }
 
-}  // namespace
-
-PieceSet join_open_rooms(const PieceSet& rooms, const OccupancyGrid& grid, const OpenRoomOptions& options) {
+// join_open_rooms() with the rooms' spans if given (else rasterized here, only when needed).
+PieceSet join_open_rooms(const PieceSet& rooms, const OccupancyGrid& grid, const OpenRoomOptions& options,
+                         const std::vector<CellSpan>* spans) {
   validate(options);
   if (!options.enabled || rooms.pieces.empty() || !has_occupied_cell(grid.cells)) return rooms;
-  const LabelRuns ids = polygon_label_runs(rooms.pieces, grid.cells.size());
+  const LabelRuns ids = spans ? polygon_label_runs(*spans, grid.cells.size()) : polygon_label_runs(rooms.pieces, grid.cells.size());
   const cv::Mat walls = wall_cells(grid.cells, options.wall_reach / grid.resolution + 1e-9);
   const double cell_area = grid.resolution * grid.resolution;
   std::vector<int> parent(rooms.pieces.size());
@@ -132,6 +132,17 @@ PieceSet join_open_rooms(const PieceSet& rooms, const OccupancyGrid& grid, const
     changed = true;
   }
   return changed ? joined(rooms, parent, dropped) : rooms;
+}
+
+}  // namespace
+
+PieceSet join_open_rooms(const PieceSet& rooms, const OccupancyGrid& grid, const OpenRoomOptions& options) {
+  return join_open_rooms(rooms, grid, options, nullptr);
+}
+
+PieceSet join_open_rooms(const PieceSet& rooms, const OccupancyGrid& grid, const OpenRoomOptions& options,
+                         const std::vector<CellSpan>& spans) {
+  return join_open_rooms(rooms, grid, options, &spans);
 }
 
 }  // namespace topocut

@@ -448,8 +448,13 @@ int piece_containing(const std::vector<PolygonWithHoles>& pieces, const Point2& 
 
 Segmentation rooms_from_pieces(const OccupancyGrid& grid, const PieceSet& set, const RoomLabelOptions& options) {
   validate(grid);
+  return rooms_from_pieces(grid, set, polygon_spans(set.pieces, grid.cells.size()), options);
+}
+
+Segmentation rooms_from_pieces(const OccupancyGrid& grid, const PieceSet& set, const std::vector<CellSpan>& spans,
+                               const RoomLabelOptions& options) {
+  validate(grid);
   const bool cover = options.cover_absorbed_obstacles;
-  const std::vector<CellSpan> spans = polygon_spans(set.pieces, grid.cells.size());
   RoomNumbering numbering = number_by_spans(grid, spans, set.pieces.size(), cover);
   SpanLabels written = write_span_labels(grid, spans, numbering, cover);
   const std::vector<long> filled_first = complete_labels(grid, written, numbering.rooms);

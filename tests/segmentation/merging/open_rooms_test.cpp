@@ -116,6 +116,24 @@ TEST(OpenRooms, AWalledRoomOrOneBehindAStraightGreyWallStays) {
   EXPECT_EQ(join_open_rooms(straight.rooms, straight.grid, any_outline).pieces.size(), 1u);
 }
 
+// Given the rooms' spans (as segment_input() shares them with the labelling), the same rooms as when
+// it rasterizes them itself, whether it joins, drops or keeps them.
+TEST(OpenRooms, TheRoomsSpansGivenChangeNothing) {
+  const auto same = [](const PieceSet& rooms, const OccupancyGrid& grid, std::size_t expected) {
+    const PieceSet own = join_open_rooms(rooms, grid);
+    const PieceSet given = join_open_rooms(rooms, grid, OpenRoomOptions{}, polygon_spans(rooms.pieces, grid.cells.size()));
+    EXPECT_EQ(own.pieces.size(), expected);
+    EXPECT_EQ(given.pieces, own.pieces);
+    EXPECT_EQ(given.cuts, own.cuts);
+  };
+  const Plan ragged(true, kUnknown), walled(true, kOccupied);
+  same(ragged.rooms, ragged.grid, 1u);
+  same(walled.rooms, walled.grid, 2u);
+  const SeenThroughGap fan(true, false), beside(true, true);
+  same(fan.rooms, fan.grid, 1u);
+  same(beside.rooms, beside.grid, 3u);
+}
+
 TEST(OpenRooms, OffWithoutWallsOrWhenSwitchedOffAndBadOptions) {
   Plan plan(true, kUnknown);
   OpenRoomOptions off;

@@ -61,6 +61,26 @@ TEST(RoomsFromPieces, UncoveredFreeCellsJoinTheNearestPieceAndObstaclesStayZero)
   EXPECT_TRUE(s.passages.empty());
 }
 
+// Given the pieces' spans (the open rooms' stage rasterized them already), the same segmentation.
+TEST(RoomsFromPieces, ThePiecesSpansGivenGiveTheSameRooms) {
+  Split t;
+  t.grid.cells.at<unsigned char>(1, 1) = kOccupied;
+  t.set.pieces[1] = {{{-0.5, -0.5}, {2.5, -0.5}, {2.5, 3.5}, {-0.5, 3.5}}, {}};  // column 3 left to the completion
+  for (const bool cover : {false, true}) {
+    RoomLabelOptions options;
+    options.cover_absorbed_obstacles = cover;
+    const Segmentation own = rooms_from_pieces(t.grid, t.set, options);
+    const Segmentation given = rooms_from_pieces(t.grid, t.set, polygon_spans(t.set.pieces, t.grid.cells.size()), options);
+    EXPECT_EQ(cv::countNonZero(own.labels != given.labels), 0);
+    ASSERT_EQ(own.rooms.size(), given.rooms.size());
+    for (std::size_t k = 0; k < own.rooms.size(); ++k) {
+      EXPECT_EQ(own.rooms[k].polygon, given.rooms[k].polygon);
+      EXPECT_DOUBLE_EQ(own.rooms[k].labelled_area, given.rooms[k].labelled_area);
+    }
+    EXPECT_EQ(own.passages.size(), given.passages.size());
+  }
+}
+
 TEST(RoomsFromPieces, KeyholeCutsAndEmptyPiecesAreNotPassages) {
   Split t;
   t.set.cuts.push_back({{0.0, 0.0}, {1.0, 1.0}});                           // inside one piece
