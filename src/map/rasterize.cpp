@@ -40,6 +40,11 @@ void add_crossings(const Ring& ring, int height, std::vector<std::vector<double>
   }
 }
 
+// box grown by margin cells on every side, clipped to bounds.
+cv::Rect grown_box(const cv::Rect& box, int margin, const cv::Rect& bounds) {
+  return cv::Rect(box.x - margin, box.y - margin, box.width + 2 * margin, box.height + 2 * margin) & bounds;
+}
+
 // The nearest label in a straight line of each cell of `cells`, from a distance transform of
 // `window` of labels (0: no label in the window). Approximate (OpenCV's 5x5 mask), as before. With
 // as_whole_map, a cell gets -1 unless the transform of the whole map is sure to give it the same
@@ -189,15 +194,16 @@ std::optional<std::vector<OrphanBlob>> orphan_blobs(const cv::Mat& labels, const
           blob.push_back(it->first);
         }
     }
+    const cv::Rect box(c0, r0, c1 - c0 + 1, r1 - r0 + 1);
     int margin = 8;
     cv::Rect window;
     while (true) {
-      window = cv::Rect(c0 - margin, r0 - margin, c1 - c0 + 1 + 2 * margin, r1 - r0 + 1 + 2 * margin) & all;
+      window = grown_box(box, margin, all);
       if (presence.holds(window, work) || window == all) break;
       margin *= 2;
     }
     margin += std::max(r1 - r0, c1 - c0) + 2;
-    window = cv::Rect(c0 - margin, r0 - margin, c1 - c0 + 1 + 2 * margin, r1 - r0 + 1 + 2 * margin) & all;
+    window = grown_box(box, margin, all);
     if (!presence.holds(window, work)) continue;  // no label anywhere
     work += window.area();
     if (work > budget) return std::nullopt;
@@ -248,8 +254,7 @@ std::vector<OrphanGroup> orphan_groups(const std::vector<int>& orphans, const st
     out[g].members.push_back(k);
   }
   for (std::size_t g = 0; g < out.size(); ++g)
-    out[g].window = cv::Rect(box[g].x - margin, box[g].y - margin, box[g].width + 2 * margin, box[g].height + 2 * margin) &
-                    cv::Rect(0, 0, size.width, size.height);
+    out[g].window = grown_box(box[g], margin, cv::Rect(0, 0, size.width, size.height));
   return out;
 }
 
