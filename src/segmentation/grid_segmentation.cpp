@@ -16,50 +16,6 @@
 namespace topocut {
 namespace {
 
-// Where two parabolas of a lower envelope cross: at num / den (den > 0), kept as a fraction and
-// compared by products: in doubles, exact while the squared distances stay below 2^24 (as do the
-// floats cv::distanceTransform computes in) and without overflow beyond; in integers where the box
-// is narrow enough (Depth of 16 bits) that the products stay below 2^53, where both are exact and so
-// the same, the integers fewer instructions.
-struct Crossing {
-  std::int64_t num = 0, den = 1;
-};
-
-template <typename Depth>
-bool at_or_before(const Crossing& a, const Crossing& b) {
-  if constexpr (sizeof(Depth) == sizeof(std::int16_t)) {
-    return a.num * b.den <= b.num * a.den;
-  } else {
-    return static_cast<double>(a.num) * static_cast<double>(b.den) <= static_cast<double>(b.num) * static_cast<double>(a.den);
-  }
-}
-
-// out[x] = min over q of (x - q)^2 + g[q], for x and q in [0, n): the lower envelope of the parabolas
-// (Felzenszwalb and Huttenlocher's distance transform along a row), in integers. v and z hold n entries.
-template <typename Depth>
-void lower_envelope(const std::int64_t* g, int n, std::int64_t* out, int* v, Crossing* z) {
-  int k = 0;  // v[0..k]: the parabolas on the envelope; v[j] is lowest from z[j] on (z[0]: minus infinity)
-  v[0] = 0;
-  for (int q = 1; q < n; ++q) {
-    for (;;) {
-      const int p = v[k];
-      const Crossing s{g[q] + std::int64_t{q} * q - g[p] - std::int64_t{p} * p, 2 * std::int64_t{q - p}};
-      if (k > 0 && at_or_before<Depth>(s, z[k])) {  // q is lower than v[k] wherever v[k] was lowest
-        --k;
-        continue;
-      }
-      v[++k] = q;
-      z[k] = s;
-      break;
-    }
-  }
-  for (int x = 0, j = 0; x < n; ++x) {
-    while (j < k && !at_or_before<Depth>(Crossing{x, 1}, z[j + 1])) ++j;
-    const std::int64_t dx = x - v[j];
-    out[x] = dx * dx + g[v[j]];
-  }
-}
-
 // Scans of a row for the next cell that is positive, or not. Most of a map's cells are not labelled,
 // nor interior, and most of a room's are: where SSE2 is there, 16 bytes of cells are compared at
 // once and the answer read from the comparison's bits, elsewhere cell by cell, with the same answer.
@@ -127,6 +83,35 @@ bool fits_short_depths(const cv::Rect& box) {
   return std::max(box.width, box.height) < std::numeric_limits<std::int16_t>::max();
 }
 
+#if defined(__SSE2__)
+// All ones in each of the four cells of row from c that is interior (its label positive, its four
+// neighbours' the same), else zero.
+__m128i interior4(const int* above, const int* row, const int* below, int c) {
+  const auto at = [c](const int* p) { return _mm_loadu_si128(reinterpret_cast<const __m128i*>(p + c)); };
+  const __m128i id = at(row);
+  __m128i interior = _mm_cmpgt_epi32(id, _mm_setzero_si128());
+  interior = _mm_and_si128(interior, _mm_cmpeq_epi32(at(above), id));
+  interior = _mm_and_si128(interior, _mm_cmpeq_epi32(at(below), id));
+  interior = _mm_and_si128(interior, _mm_cmpeq_epi32(at(row - 1), id));
+  return _mm_and_si128(interior, _mm_cmpeq_epi32(at(row + 1), id));
+}
+
+// column_distances()'s downward pass over the 16-bit cells [c0, c1) of a row, eight at a time: the
+// compiler's own vectorization of the loop widens and narrows the masks lane by lane, while SSE2
+// packs two of four 32-bit masks into eight 16-bit ones in one instruction. The first cell not done.
+int down_from_above8(const int* above, const int* row, const int* below, const std::int16_t* last, std::int16_t* out, int c0,
+                     int c1) {
+  const __m128i one = _mm_set1_epi16(1);
+  int c = c0;
+  for (; c + 8 <= c1; c += 8) {
+    const __m128i interior = _mm_packs_epi32(interior4(above, row, below, c), interior4(above, row, below, c + 4));
+    const __m128i up = _mm_add_epi16(_mm_loadu_si128(reinterpret_cast<const __m128i*>(last + c)), one);
+    _mm_storeu_si128(reinterpret_cast<__m128i*>(out + c), _mm_and_si128(up, interior));
+  }
+  return c;
+}
+#endif
+
 // For the cells of box (labels' box grown by one cell, whose border cells are never interior): 0 for
 // a cell that is not interior (its label differs from one of its four neighbours', it has none or it
 // lies on the map's edge), else its distance to the nearest such cell up or down its column.
@@ -152,7 +137,11 @@ cv::Mat column_distances(const cv::Mat& labels, const cv::Rect& box) {
     const int* __restrict below = labels.ptr<int>(r + 1);
     const Depth* __restrict last = column.ptr<Depth>(r - 1 - box.y) - box.x;
     Depth* __restrict out = column.ptr<Depth>(r - box.y) - box.x;
-    for (int c = c0; c < c1; ++c) {  // & and a mask rather than && and a branch, so that the loop vectorizes
+    int c = c0;
+#if defined(__SSE2__)
+    if constexpr (sizeof(Depth) == sizeof(std::int16_t)) c = down_from_above8(above, row, below, last, out, c0, c1);
+#endif
+    for (; c < c1; ++c) {  // & and a mask rather than && and a branch, so that the loop vectorizes
       const int id = row[c];
       const int interior = (id > 0) & (above[c] == id) & (below[c] == id) & (row[c - 1] == id) & (row[c + 1] == id);
       out[c] = static_cast<Depth>((last[c] + 1) & -interior);
@@ -212,20 +201,28 @@ std::vector<InteriorRun> interior_runs(const cv::Mat& labels, const cv::Rect& bo
   return runs;
 }
 
-// The squared depth of the run's cells (out[k] for cell begin + k), by the lower envelope of the
-// parabolas of the run's cells and the non-interior cell at each end.
+// The squared depth of the run's cell b: the least (b - q)^2 + col[q]^2 over the columns q of the
+// run and the non-interior cell at each of its ends (no cell beyond an end is nearer than the end),
+// searched outward from b until no farther column can be nearer. Once the least found is below
+// floor the search stops and returns it: the cell cannot be the room's deepest.
 template <typename Depth>
-void run_depths(const InteriorRun& run, const Depth* col, std::vector<std::int64_t>& g, std::vector<std::int64_t>& out,
-                std::vector<int>& v, std::vector<Crossing>& z) {
-  const int n = run.end - run.begin + 2;
-  if (g.size() < static_cast<std::size_t>(n)) {
-    g.resize(static_cast<std::size_t>(n));
-    out.resize(g.size());
-    v.resize(g.size());
-    z.resize(g.size());
+std::int64_t squared_depth(const Depth* col, int b, std::int64_t floor) {
+  std::int64_t least = std::int64_t{col[b]} * col[b];
+  // Both sides at once: the nearer run end (col 0) ends the search before the farther one is passed.
+  for (std::int64_t k = 1; k * k < least && least >= floor; ++k) {
+    const std::int64_t left = col[b - k], right = col[b + k];
+    least = std::min(least, k * k + std::min(left * left, right * right));
   }
-  for (int k = 0; k < n; ++k) g[static_cast<std::size_t>(k)] = std::int64_t{col[run.begin - 1 + k]} * col[run.begin - 1 + k];
-  lower_envelope<Depth>(g.data(), n, out.data(), v.data(), z.data());
+  return least;
+}
+
+// The least squared distance whose depth is at least depth (strict: more than depth).
+std::int64_t least_squared_depth(float depth, bool strict) {
+  const auto enough = [depth, strict](std::int64_t s) { return strict ? depth_of(s) > depth : depth_of(s) >= depth; };
+  auto s = static_cast<std::int64_t>(static_cast<double>(depth) * depth);
+  while (s > 0 && enough(s - 1)) --s;
+  while (!enough(s)) ++s;
+  return s;
 }
 
 // Rooms without an interior cell (one cell thin) take their first labelled cell in raster order.
@@ -262,10 +259,41 @@ cv::Rect labelled_box(const cv::Mat& labels) {
   return y0 < 0 ? cv::Rect() : cv::Rect(x0, y0, x1 - x0 + 1, y1 - y0 + 1);
 }
 
-// Each room's deepest cell among the box's interior runs (best, ids up to max_id; the box's
-// column grid of Depth). Only the runs that may hold a room's deepest cell are transformed, each
-// room's from the widest reach down: a run whose reach (a bound of its depths) is below the deepest
-// cell found cannot.
+// A room's deepest cell so far (box coordinates) and the least squared depth a cell needs to take
+// its place: as deep and earlier in raster order, or deeper.
+struct Deepest {
+  float depth = 0.0f;
+  cv::Point cell{-1, -1};
+  std::int64_t as_deep = 0, deeper = 1;
+
+  bool before(int row, int c) const { return std::tie(row, c) < std::tie(cell.y, cell.x); }
+  void take(float d, cv::Point at) {
+    depth = d;
+    cell = at;
+    as_deep = least_squared_depth(d, false);
+    deeper = least_squared_depth(d, true);
+  }
+};
+
+// The run's cells that may take the room's place, each measured by squared_depth(): a cell deeper
+// than its nearest column or run end (its bound) cannot be, nor one whose search falls below what it
+// needs.
+template <typename Depth>
+void search_run(const InteriorRun& run, const Depth* col, Deepest& deepest) {
+  for (int b = run.begin; b < run.end; ++b) {
+    const std::int64_t bound = std::min({static_cast<int>(col[b]), b - run.begin + 1, run.end - b});
+    const std::int64_t needed = deepest.before(run.row, b) ? deepest.as_deep : deepest.deeper;
+    if (bound * bound < needed) continue;
+    const std::int64_t squared = squared_depth(col, b, needed);
+    if (squared < needed) continue;
+    const float d = depth_of(squared);
+    if (d > deepest.depth || (d == deepest.depth && deepest.before(run.row, b))) deepest.take(d, {b, run.row});
+  }
+}
+
+// Each room's deepest cell among the box's interior runs (best, ids up to max_id; the box's column
+// grid of Depth). Each room's runs are searched from the widest reach down, until a run's reach
+// (a bound of its depths) is below the deepest cell found.
 template <typename Depth>
 void deepest_interior_cells(const cv::Mat& labels, const cv::Rect& box, int max_id, std::vector<cv::Point>& best) {
   const cv::Mat column = column_distances<Depth>(labels, box);
@@ -277,25 +305,15 @@ void deepest_interior_cells(const cv::Mat& labels, const cv::Rect& box, int max_
   std::sort(order.begin(), order.end(), [&runs](std::size_t a, std::size_t b) {
     return runs[a].id != runs[b].id ? runs[a].id < runs[b].id : runs[a].reach > runs[b].reach;
   });
-  std::vector<float> best_depth(best.size(), 0.0f);
-  std::vector<std::int64_t> g, out;
-  std::vector<int> v;
-  std::vector<Crossing> z;
+  std::vector<Deepest> deepest(best.size());
   for (const std::size_t k : order) {
     const InteriorRun& run = runs[k];
-    const auto id = static_cast<std::size_t>(run.id);
-    if (run.reach < best_depth[id]) continue;
-    run_depths(run, column.ptr<Depth>(run.row), g, out, v, z);
-    for (int c = run.begin; c < run.end; ++c) {
-      const float d = depth_of(out[static_cast<std::size_t>(c - run.begin + 1)]);
-      const cv::Point cell(box.x + c, box.y + run.row);
-      // The first in raster order among equals, though the runs come in another order.
-      if (d > best_depth[id] || (d == best_depth[id] && std::tie(cell.y, cell.x) < std::tie(best[id].y, best[id].x))) {
-        best_depth[id] = d;
-        best[id] = cell;
-      }
-    }
+    Deepest& room = deepest[static_cast<std::size_t>(run.id)];
+    if (run.reach < room.depth) continue;
+    search_run(run, column.ptr<Depth>(run.row), room);
   }
+  for (std::size_t id = 0; id < best.size(); ++id)
+    if (deepest[id].cell.x >= 0) best[id] = {box.x + deepest[id].cell.x, box.y + deepest[id].cell.y};
 }
 
 // For every room id, the labelled cell (top-down grid) farthest from any cell of another label: the
