@@ -216,7 +216,9 @@ std::int64_t squared_depth(const Depth* col, int b, std::int64_t floor) {
   return least;
 }
 
-// The least squared distance whose depth is at least depth (strict: more than depth).
+// The least squared distance whose depth is at least depth (strict: more than depth). In steps of
+// one from the square: few squared distances share a float depth below 2^14, and no map within the
+// size limit has a deeper room.
 std::int64_t least_squared_depth(float depth, bool strict) {
   const auto enough = [depth, strict](std::int64_t s) { return strict ? depth_of(s) > depth : depth_of(s) >= depth; };
   auto s = static_cast<std::int64_t>(static_cast<double>(depth) * depth);
@@ -275,9 +277,8 @@ struct Deepest {
   }
 };
 
-// The run's cells that may take the room's place, each measured by squared_depth(): a cell deeper
-// than its nearest column or run end (its bound) cannot be, nor one whose search falls below what it
-// needs.
+// The run's cells that may take the room's place, each measured by squared_depth(): not a cell whose
+// bound (its nearest column or run end) is below what it needs, nor one whose search falls below.
 template <typename Depth>
 void search_run(const InteriorRun& run, const Depth* col, Deepest& deepest) {
   for (int b = run.begin; b < run.end; ++b) {
