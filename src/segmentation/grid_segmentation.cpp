@@ -16,6 +16,50 @@
 namespace topocut {
 namespace {
 
+// Where two parabolas of a lower envelope cross: at num / den (den > 0), kept as a fraction and
+// compared by products: in doubles, exact while the squared distances stay below 2^24 (as do the
+// floats cv::distanceTransform computes in) and without overflow beyond; in integers where the box
+// is narrow enough (Depth of 16 bits) that the products stay below 2^53, where both are exact and so
+// the same, the integers fewer instructions.
+struct Crossing {
+  std::int64_t num = 0, den = 1;
+};
+
+template <typename Depth>
+bool at_or_before(const Crossing& a, const Crossing& b) {
+  if constexpr (sizeof(Depth) == sizeof(std::int16_t)) {
+    return a.num * b.den <= b.num * a.den;
+  } else {
+    return static_cast<double>(a.num) * static_cast<double>(b.den) <= static_cast<double>(b.num) * static_cast<double>(a.den);
+  }
+}
+
+// out[x] = min over q of (x - q)^2 + g[q], for x and q in [0, n): the lower envelope of the parabolas
+// (Felzenszwalb and Huttenlocher's distance transform along a row), in integers. v and z hold n entries.
+template <typename Depth>
+void lower_envelope(const std::int64_t* g, int n, std::int64_t* out, int* v, Crossing* z) {
+  int k = 0;  // v[0..k]: the parabolas on the envelope; v[j] is lowest from z[j] on (z[0]: minus infinity)
+  v[0] = 0;
+  for (int q = 1; q < n; ++q) {
+    for (;;) {
+      const int p = v[k];
+      const Crossing s{g[q] + std::int64_t{q} * q - g[p] - std::int64_t{p} * p, 2 * std::int64_t{q - p}};
+      if (k > 0 && at_or_before<Depth>(s, z[k])) {  // q is lower than v[k] wherever v[k] was lowest
+        --k;
+        continue;
+      }
+      v[++k] = q;
+      z[k] = s;
+      break;
+    }
+  }
+  for (int x = 0, j = 0; x < n; ++x) {
+    while (j < k && !at_or_before<Depth>(Crossing{x, 1}, z[j + 1])) ++j;
+    const std::int64_t dx = x - v[j];
+    out[x] = dx * dx + g[v[j]];
+  }
+}
+
 // Scans of a row for the next cell that is positive, or not. Most of a map's cells are not labelled,
 // nor interior, and most of a room's are: where SSE2 is there, 16 bytes of cells are compared at
 // once and the answer read from the comparison's bits, elsewhere cell by cell, with the same answer.
@@ -227,6 +271,31 @@ std::int64_t least_squared_depth(float depth, bool strict) {
   return s;
 }
 
+// The lower envelope's buffers, kept from run to run.
+struct EnvelopeBuffers {
+  std::vector<std::int64_t> g, out;
+  std::vector<int> v;
+  std::vector<Crossing> z;
+};
+
+// The squared depth of the run's cells (buffers.out[k] for cell begin + k), by the lower envelope of
+// the parabolas of the run's cells and the non-interior cell at each end.
+template <typename Depth>
+void run_depths(const InteriorRun& run, const Depth* col, EnvelopeBuffers& buffers) {
+  const auto n = static_cast<std::size_t>(run.end - run.begin + 2);
+  if (buffers.g.size() < n) {
+    buffers.g.resize(n);
+    buffers.out.resize(n);
+    buffers.v.resize(n);
+    buffers.z.resize(n);
+  }
+  for (std::size_t k = 0; k < n; ++k) {
+    const std::int64_t c = col[run.begin - 1 + static_cast<int>(k)];
+    buffers.g[k] = c * c;
+  }
+  lower_envelope<Depth>(buffers.g.data(), static_cast<int>(n), buffers.out.data(), buffers.v.data(), buffers.z.data());
+}
+
 // Rooms without an interior cell (one cell thin) take their first labelled cell in raster order.
 void first_cells_of_thin_rooms(const cv::Mat& labels, const cv::Rect& box, int max_id, std::vector<cv::Point>& best) {
   int missing = 0;
@@ -292,9 +361,29 @@ void search_run(const InteriorRun& run, const Depth* col, Deepest& deepest) {
   }
 }
 
+// A room's first run (its widest reach) transformed whole: searched cell by cell, each cell on the
+// way up to its deepest would be deeper than the last, searched to its end, and the room's deepest
+// taken again; the envelope costs the same for every cell and sets the room's deepest near its
+// final depth at once.
+template <typename Depth>
+void deepest_of_first_run(const InteriorRun& run, const Depth* col, EnvelopeBuffers& buffers, Deepest& room) {
+  run_depths(run, col, buffers);
+  float depth = 0.0f;
+  int at = run.begin;
+  for (int c = run.begin; c < run.end; ++c) {  // the first in raster order among equals
+    const float d = depth_of(buffers.out[static_cast<std::size_t>(c - run.begin + 1)]);
+    if (d > depth) {
+      depth = d;
+      at = c;
+    }
+  }
+  room.take(depth, {at, run.row});
+}
+
 // Each room's deepest cell among the box's interior runs (best, ids up to max_id; the box's column
-// grid of Depth). Each room's runs are searched from the widest reach down, until a run's reach
-// (a bound of its depths) is below the deepest cell found.
+// grid of Depth). Each room's runs are taken from the widest reach down, until a run's reach (a
+// bound of its depths) is below the deepest cell found: the first transformed whole, the others'
+// cells searched where they may be deeper.
 template <typename Depth>
 void deepest_interior_cells(const cv::Mat& labels, const cv::Rect& box, int max_id, std::vector<cv::Point>& best) {
   const cv::Mat column = column_distances<Depth>(labels, box);
@@ -307,11 +396,16 @@ void deepest_interior_cells(const cv::Mat& labels, const cv::Rect& box, int max_
     return runs[a].id != runs[b].id ? runs[a].id < runs[b].id : runs[a].reach > runs[b].reach;
   });
   std::vector<Deepest> deepest(best.size());
+  EnvelopeBuffers buffers;
   for (const std::size_t k : order) {
     const InteriorRun& run = runs[k];
     Deepest& room = deepest[static_cast<std::size_t>(run.id)];
     if (run.reach < room.depth) continue;
-    search_run(run, column.ptr<Depth>(run.row), room);
+    if (room.cell.x < 0) {
+      deepest_of_first_run(run, column.ptr<Depth>(run.row), buffers, room);
+    } else {
+      search_run(run, column.ptr<Depth>(run.row), room);
+    }
   }
   for (std::size_t id = 0; id < best.size(); ++id)
     if (deepest[id].cell.x >= 0) best[id] = {box.x + deepest[id].cell.x, box.y + deepest[id].cell.y};
