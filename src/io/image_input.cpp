@@ -232,14 +232,16 @@ void check_image_size(const ImageHeader& header, const ImageLimits& limits, cons
 }
 
 cv::Mat decode_image(std::string_view bytes, const std::string& source, const ImageLimits& limits,
-                     const ExpectedSize* expected) {
+                     const ExpectedSize* expected, ColourOrder order) {
   const ImageHeader header = read_image_header(bytes, source);
   check_image_size(header, limits, source, expected);
   const codecs::DecodeBounds bounds{header.width, header.height};
   cv::Mat image;
   try {
     switch (header.format) {
-      case ImageFormat::kPng: image = codecs::decode_png(bytes, bounds); break;
+      case ImageFormat::kPng:
+        image = order == ColourOrder::kBgr ? codecs::decode_png(bytes, bounds) : codecs::decode_png_rgb(bytes, bounds);
+        break;
       case ImageFormat::kNetpbm: image = codecs::decode_netpbm(bytes, bounds); break;
       case ImageFormat::kJpeg: image = codecs::decode_jpeg(bytes, bounds); break;
       case ImageFormat::kBmp: image = codecs::decode_bmp(bytes, bounds); break;

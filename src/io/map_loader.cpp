@@ -285,7 +285,8 @@ cv::Mat ros_cells(const cv::Mat& grey, const cv::Mat& transparent, const RosMapM
 
 void decode_map_levels(const std::string& bytes, const std::string& source, cv::Mat& levels, cv::Mat& transparent,
                        const ImageLimits& limits) {
-  levels_of(decode_image(bytes, source, limits), source, levels, transparent);
+  // A level is the channels' mean, whatever their order: libpng need not swap red and blue.
+  levels_of(decode_image(bytes, source, limits, nullptr, ColourOrder::kAny), source, levels, transparent);
 }
 
 MapPalette plain_image_palette(const cv::Mat& levels, const cv::Mat& transparent, const MapLoadOptions& options) {

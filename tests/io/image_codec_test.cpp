@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 #include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
 #include <png.h>
 #include <zlib.h>
 
@@ -82,6 +83,24 @@ TEST(ImageCodec, PngDecodesLikeOpenCv) {
   expect_decodes_like_opencv(
       simplified_png(PNG_FORMAT_RGBA_COLORMAP, indices, w, h, {0, 0, 0, 0, 255, 255, 255, 255, 10, 200, 30, 90, 1, 2, 3, 255}),
       "palette png with transparency");
+}
+
+// ColourOrder::kAny: a colour PNG in its own order, red and blue the other way round from kBgr's;
+// grey ones (and their alpha) as before.
+TEST(ImageCodec, PngInAnyColourOrderIsItsOwnRgb) {
+  for (const int type : {CV_8UC1, CV_16UC1, CV_8UC3, CV_16UC3, CV_8UC4, CV_16UC4}) {
+    SCOPED_TRACE(type);
+    const std::string bytes = opencv_encoded(random_image(type), ".png");
+    const cv::Mat bgr = decode_image(bytes, "bgr", {});
+    const cv::Mat any = decode_image(bytes, "any", {}, nullptr, ColourOrder::kAny);
+    cv::Mat expected = bgr.clone();
+    if (bgr.channels() == 3) cv::cvtColor(bgr, expected, cv::COLOR_BGR2RGB);
+    if (bgr.channels() == 4) cv::cvtColor(bgr, expected, cv::COLOR_BGRA2RGBA);
+    EXPECT_TRUE(same_pixels(any, expected));
+    if (bgr.channels() > 1) {
+      EXPECT_FALSE(same_pixels(any, bgr));
+    }
+  }
 }
 
 TEST(ImageCodec, NetpbmDecodesLikeOpenCv) {

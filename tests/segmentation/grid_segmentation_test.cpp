@@ -79,39 +79,77 @@ std::vector<cv::Point> deepest_by_distance_transform(const cv::Mat& labels, int 
   return best;
 }
 
+// Rooms of overlapping rectangles and discs (ids 1 to rooms), some touching the map's edge, some one
+// cell thin, on an unlabelled background: rooms of every shape whose deepest cell the plain
+// transform knows.
+Segmentation random_rooms(std::mt19937& random, int rows, int cols, int rooms) {
+  Segmentation s;
+  s.labels = cv::Mat::zeros(rows, cols, CV_32SC1);
+  s.resolution = 0.1;
+  s.origin = {1.0, -2.0};
+  for (int id = 1; id <= rooms; ++id) {
+    for (int shape = 0; shape < 3; ++shape) {
+      const cv::Point at(static_cast<int>(random() % cols), static_cast<int>(random() % rows));
+      const int size = 1 + static_cast<int>(random() % 15);
+      if (random() % 2) cv::circle(s.labels, at, size, cv::Scalar(id), cv::FILLED);
+      else cv::rectangle(s.labels, cv::Rect(at, cv::Size(size, 1 + static_cast<int>(random() % 15))), cv::Scalar(id), cv::FILLED);
+    }
+    Room room;
+    room.id = id;
+    room.centroid = {-7.0, -7.0};  // where a room with no labelled cell is placed
+    s.rooms.push_back(room);
+  }
+  return s;
+}
+
+// Every room of s is placed at the centre of its cell in expected (x < 0: none, at its centroid).
+void expect_placed_at(const Segmentation& s, const std::vector<cv::Point>& expected, int trial) {
+  const GridSegmentation placed = in_frame(s, GridFrame{});
+  for (std::size_t k = 0; k < s.rooms.size(); ++k) {
+    const int id = s.rooms[k].id;
+    const cv::Point cell = expected[static_cast<std::size_t>(id)];
+    const Point2 inside = placed.placements[k].inside;
+    const Point2 want = cell.x < 0 ? Point2{-7.0, -7.0}
+                                   : Point2{s.origin.x + (cell.x + 0.5) * s.resolution,
+                                            s.origin.y + (s.labels.rows - cell.y - 0.5) * s.resolution};
+    EXPECT_EQ(inside.x, want.x) << "trial " << trial << ", room " << id;
+    EXPECT_EQ(inside.y, want.y) << "trial " << trial << ", room " << id;
+  }
+}
+
 TEST(GridSegmentation, EachRoomIsPlacedAtItsDeepestCell) {
-  // Rooms of overlapping rectangles and discs, some touching the map's edge, some one cell thin, on
-  // an unlabelled background: rooms of every shape whose deepest cell the plain transform knows.
   std::mt19937 random(36);
   for (int trial = 0; trial < 20; ++trial) {
     const int rows = 20 + static_cast<int>(random() % 60), cols = 20 + static_cast<int>(random() % 60);
     const int rooms = 1 + static_cast<int>(random() % 8);
-    Segmentation s;
-    s.labels = cv::Mat::zeros(rows, cols, CV_32SC1);
-    s.resolution = 0.1;
-    s.origin = {1.0, -2.0};
-    for (int id = 1; id <= rooms; ++id) {
-      for (int shape = 0; shape < 3; ++shape) {
-        const cv::Point at(static_cast<int>(random() % cols), static_cast<int>(random() % rows));
-        const int size = 1 + static_cast<int>(random() % 15);
-        if (random() % 2) cv::circle(s.labels, at, size, cv::Scalar(id), cv::FILLED);
-        else cv::rectangle(s.labels, cv::Rect(at, cv::Size(size, 1 + static_cast<int>(random() % 15))), cv::Scalar(id), cv::FILLED);
-      }
+    const Segmentation s = random_rooms(random, rows, cols, rooms);
+    expect_placed_at(s, deepest_by_distance_transform(s.labels, rooms), trial);
+  }
+}
+
+TEST(GridSegmentation, RoomsOfAMapTooTallForShortDepthsArePlacedAtTheirDeepestCells) {
+  // A map more than 2^15 rows tall, its depths kept in 32 bits rather than 16: room 1 a corridor
+  // from top to bottom whose deepest cells are in a square at its bottom end, more than 2^15 cells
+  // down its columns, and random rooms beside that square.
+  std::mt19937 random(37);
+  constexpr int kRows = 32840, kCols = 90, kBottom = 80;
+  for (int trial = 0; trial < 3; ++trial) {
+    const int rooms = 1 + static_cast<int>(random() % 6);
+    Segmentation s = random_rooms(random, kRows, kCols, 0);
+    s.labels(cv::Rect(2, 1, 20, kRows - 2)).setTo(cv::Scalar(1));
+    s.labels(cv::Rect(2, kRows - 36, 30, 30)).setTo(cv::Scalar(1));
+    const Segmentation beside = random_rooms(random, kBottom, kCols - 35, rooms);
+    cv::Mat shifted = beside.labels + 1;
+    shifted.copyTo(s.labels(cv::Rect(35, kRows - kBottom, kCols - 35, kBottom)), beside.labels > 0);
+    for (int id = 1; id <= rooms + 1; ++id) {
       Room room;
       room.id = id;
-      room.centroid = {-7.0, -7.0};  // where a room with no labelled cell is placed
+      room.centroid = {-7.0, -7.0};
       s.rooms.push_back(room);
     }
-    const std::vector<cv::Point> expected = deepest_by_distance_transform(s.labels, rooms);
-    const GridSegmentation placed = in_frame(s, GridFrame{});
-    for (int id = 1; id <= rooms; ++id) {
-      const cv::Point cell = expected[static_cast<std::size_t>(id)];
-      const Point2 inside = placed.placements[static_cast<std::size_t>(id - 1)].inside;
-      const Point2 want = cell.x < 0 ? Point2{-7.0, -7.0}
-                                     : Point2{s.origin.x + (cell.x + 0.5) * s.resolution, s.origin.y + (rows - cell.y - 0.5) * s.resolution};
-      EXPECT_EQ(inside.x, want.x) << "trial " << trial << ", room " << id;
-      EXPECT_EQ(inside.y, want.y) << "trial " << trial << ", room " << id;
-    }
+    const std::vector<cv::Point> expected = deepest_by_distance_transform(s.labels, rooms + 1);
+    ASSERT_GT(expected[1].y, 32767) << "trial " << trial;
+    expect_placed_at(s, expected, trial);
   }
 }
 

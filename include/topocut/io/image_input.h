@@ -50,11 +50,17 @@ ImageHeader read_image_header(std::string_view bytes, const std::string& source)
 void check_image_size(const ImageHeader& header, const ImageLimits& limits, const std::string& source,
                       const ExpectedSize* expected = nullptr);
 
+// The order of a colour image's channels from decode_image(): blue, green, red (and alpha), as
+// cv::imdecode gave them, or whichever order its decoder gives cheapest (a PNG's own red, green,
+// blue: libpng then swaps no pixel), for a caller that reads only what the order does not change,
+// such as the channels' sum.
+enum class ColourOrder { kBgr, kAny };
+
 // The pixels after read_image_header() and check_image_size(), as cv::imdecode(IMREAD_UNCHANGED)
-// gave them (grey, BGR or BGRA; 8 or 16 bits; see image_codec.h); nothing is printed. Throws Error
-// naming source if it is refused or does not decode.
+// gave them (grey, BGR or BGRA; 8 or 16 bits; see image_codec.h) but for the colour order asked;
+// nothing is printed. Throws Error naming source if it is refused or does not decode.
 cv::Mat decode_image(std::string_view bytes, const std::string& source, const ImageLimits& limits,
-                     const ExpectedSize* expected = nullptr);
+                     const ExpectedSize* expected = nullptr, ColourOrder order = ColourOrder::kBgr);
 
 // The byte limit of an image file under limits: 8 bytes a pixel (16-bit RGBA, uncompressed) plus 1 MiB.
 std::uint64_t max_image_file_bytes(const ImageLimits& limits);

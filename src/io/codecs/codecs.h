@@ -41,6 +41,8 @@ void check_decoded_size(std::uint64_t width, std::uint64_t height, const DecodeB
 inline constexpr int kMaxJpegScans = 100;
 
 cv::Mat decode_png(std::string_view bytes, const DecodeBounds& bounds);
+// decode_png() but a colour PNG's channels in its own order (red first): no pass over the pixels to swap them.
+cv::Mat decode_png_rgb(std::string_view bytes, const DecodeBounds& bounds);
 cv::Mat decode_jpeg(std::string_view bytes, const DecodeBounds& bounds);
 cv::Mat decode_netpbm(std::string_view bytes, const DecodeBounds& bounds);
 cv::Mat decode_bmp(std::string_view bytes, const DecodeBounds& bounds);

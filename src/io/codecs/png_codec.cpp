@@ -73,8 +73,9 @@ bool read_header(png_structp png, png_infop info, PngImage& image) {
   return true;
 }
 
-// Phase 2: the rows, expanded to 8 or 16 bits, BGR order, little-endian 16-bit samples.
-bool read_rows(png_structp png, png_infop info, const PngImage& image, png_bytep* rows) {
+// Phase 2: the rows, expanded to 8 or 16 bits, BGR order (bgr false: the file's RGB), little-endian
+// 16-bit samples.
+bool read_rows(png_structp png, png_infop info, const PngImage& image, bool bgr, png_bytep* rows) {
   if (setjmp(png_jmpbuf(png))) return false;
   if (image.bit_depth == 16) png_set_swap(png);
   if (image.channels < 4) {
@@ -85,7 +86,7 @@ bool read_rows(png_structp png, png_infop info, const PngImage& image, png_bytep
   if (image.colour_type == PNG_COLOR_TYPE_PALETTE) png_set_palette_to_rgb(png);
   if ((image.colour_type & PNG_COLOR_MASK_COLOR) == 0 && image.bit_depth < 8) png_set_expand_gray_1_2_4_to_8(png);
   if (image.colour_type & PNG_COLOR_MASK_COLOR) {
-    png_set_bgr(png);
+    if (bgr) png_set_bgr(png);
   } else if (image.channels > 1) {
     png_set_gray_to_rgb(png);
   }
@@ -157,9 +158,8 @@ std::vector<png_bytep> row_pointers(const cv::Mat& image) {
   return rows;
 }
 
-}  // namespace
-
-cv::Mat decode_png(std::string_view bytes, const DecodeBounds& bounds) {
+// The pixels of a PNG, in BGR order or (bgr false) the file's own.
+cv::Mat decoded_png(std::string_view bytes, const DecodeBounds& bounds, bool bgr) {
   PngContext context;
   context.input = bytes;
   const PngStruct reader(context, false);
@@ -173,9 +173,15 @@ cv::Mat decode_png(std::string_view bytes, const DecodeBounds& bounds) {
   cv::Mat image(static_cast<int>(header.height), static_cast<int>(header.width),
                 CV_MAKETYPE(header.bit_depth == 16 ? CV_16U : CV_8U, header.channels));
   std::vector<png_bytep> rows = row_pointers(image);
-  if (!read_rows(reader.png(), reader.info(), header, rows.data())) throw CodecError(context.message);
+  if (!read_rows(reader.png(), reader.info(), header, bgr, rows.data())) throw CodecError(context.message);
   return image;
 }
+
+}  // namespace
+
+cv::Mat decode_png(std::string_view bytes, const DecodeBounds& bounds) { return decoded_png(bytes, bounds, true); }
+
+cv::Mat decode_png_rgb(std::string_view bytes, const DecodeBounds& bounds) { return decoded_png(bytes, bounds, false); }
 
 std::string encode_png(const cv::Mat& image) {
   std::string out;

@@ -57,9 +57,21 @@ const std::vector<std::string>& merge_feature_names() {
 }
 
 int merge_feature_index(std::string_view name) {
+  // The names by length, in their order (at most six share one), built once: reading the shipped model
+  // looks up a name for each of its eight thousand splits.
   const std::vector<std::string>& names = merge_feature_names();
-  const auto it = std::find(names.begin(), names.end(), name);
-  return it == names.end() ? -1 : static_cast<int>(it - names.begin());
+  static const std::vector<std::vector<int>> by_length = [&names] {
+    std::vector<std::vector<int>> lengths;
+    for (std::size_t i = 0; i < names.size(); ++i) {
+      if (lengths.size() <= names[i].size()) lengths.resize(names[i].size() + 1);
+      lengths[names[i].size()].push_back(static_cast<int>(i));
+    }
+    return lengths;
+  }();
+  if (name.size() >= by_length.size()) return -1;
+  for (const int i : by_length[name.size()])
+    if (names[static_cast<std::size_t>(i)] == name) return i;
+  return -1;
 }
 
 namespace {

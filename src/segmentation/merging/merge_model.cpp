@@ -1,9 +1,9 @@
 #include "topocut/segmentation/merge_model.h"
 
 #include <algorithm>
-#include <array>
 #include <charconv>
 #include <cmath>
+#include <cstring>
 #include <optional>
 #include <sstream>
 #include <string_view>
@@ -19,54 +19,83 @@ extern const char* const kShippedMergeModelText;
 
 namespace {
 
-// Whether token is a plain decimal number ([-]digits[.digits][(e|E)[+|-]digits]), which the stream
-// would read whole, to the same double (both round correctly).
-bool plain_decimal(std::string_view token) {
-  std::size_t i = 0;
-  auto digits = [&] {
-    const std::size_t start = i;
-    while (i < token.size() && token[i] >= '0' && token[i] <= '9') ++i;
-    return i > start;
-  };
-  if (i < token.size() && token[i] == '-') ++i;
-  if (!digits()) return false;
-  if (i < token.size() && token[i] == '.') {
-    ++i;
-    if (!digits()) return false;
-  }
-  if (i < token.size() && (token[i] == 'e' || token[i] == 'E')) {
-    ++i;
-    if (i < token.size() && (token[i] == '+' || token[i] == '-')) ++i;
-    if (!digits()) return false;
-  }
-  return i == token.size();
-}
+// A line read word by word without the stream: words separated by spaces and tabs, each word taken
+// whole (what follows it is a space, a tab or the line's end) or not at all.
+class PlainWords {
+ public:
+  explicit PlainWords(std::string_view line) : at_(line.data()), end_(line.data() + line.size()) {}
 
-// Whether token is a plain decimal (plain_decimal()) of a finite double, converted into value.
-bool read_plain_decimal(std::string_view token, double& value) {
-  if (!plain_decimal(token)) return false;
-  const auto [end, error] = std::from_chars(token.data(), token.data() + token.size(), value);
-  return error == std::errc() && end == token.data() + token.size() && std::isfinite(value);
-}
+  // Whether the next word is word; takes it if so.
+  bool take(std::string_view word) {
+    skip_blanks();
+    if (static_cast<std::size_t>(end_ - at_) < word.size() || std::string_view(at_, word.size()) != word) return false;
+    return taken(at_ + word.size());
+  }
 
-// Whether token is [-]digits of an int (as the stream reads it whole), converted into value.
-bool read_plain_index(std::string_view token, int& value) {
-  const std::size_t digits = token.starts_with('-') ? 1 : 0;
-  if (token.size() == digits || !std::all_of(token.begin() + static_cast<std::ptrdiff_t>(digits), token.end(),
-                                             [](char c) { return c >= '0' && c <= '9'; }))
-    return false;
-  const auto [end, error] = std::from_chars(token.data(), token.data() + token.size(), value);
-  return error == std::errc() && end == token.data() + token.size();
+  // The next word, up to a space or the line's end (perhaps empty): a name, which ends at a space in
+  // every model written (a name followed by a tab is no feature's, and its line goes to the stream).
+  std::string_view name() {
+    skip_blanks();
+    const char* start = at_;
+    const void* space = std::memchr(start, ' ', static_cast<std::size_t>(end_ - start));
+    at_ = space ? static_cast<const char*>(space) : end_;
+    return {start, static_cast<std::size_t>(at_ - start)};
+  }
+
+  // Whether the next word is a decimal number of a finite double as std::from_chars reads it
+  // ([-]digits[.digits][(e|E)[+|-]digits], either digits of the mantissa perhaps missing), converted
+  // into value: the stream reads such a word whole, to the same double (both round correctly).
+  // Anything else from_chars reads (infinity, NaN) is not finite.
+  bool decimal(double& value) {
+    skip_blanks();
+    const auto [stop, error] = std::from_chars(at_, end_, value);
+    return error == std::errc() && std::isfinite(value) && taken(stop);
+  }
+
+  // Whether the next word is [-]digits of an int (as the stream reads it whole: std::from_chars reads
+  // the same form), converted into value.
+  bool index(int& value) {
+    skip_blanks();
+    const auto [stop, error] = std::from_chars(at_, end_, value);
+    return error == std::errc() && taken(stop);
+  }
+
+  // Whether nothing but spaces and tabs is left.
+  bool done() {
+    skip_blanks();
+    return at_ == end_;
+  }
+
+ private:
+  static bool blank(char c) { return c == ' ' || c == '\t'; }
+  void skip_blanks() {
+    while (at_ != end_ && blank(*at_)) ++at_;
+  }
+  // Whether a word ends at word_end (a space, a tab or the line's end follows); takes it if so.
+  bool taken(const char* word_end) {
+    if (word_end != end_ && !blank(*word_end)) return false;
+    at_ = word_end;
+    return true;
+  }
+
+  const char* at_;
+  const char* end_;
+};
+
+// Whether token is a decimal (PlainWords::decimal()) of a finite double, converted into value.
+bool read_decimal(std::string_view token, double& value) {
+  PlainWords words(token);
+  return words.decimal(value) && words.done();
 }
 
 double finite_number(std::istringstream& in, int line, const std::string& what) {
   double value = 0.0;
-  // The shipped model's nine thousand numbers are plain decimals: read as a word and converted with
+  // The shipped model's numbers are plain decimals: read as a word and converted with
   // std::from_chars, several times cheaper than the stream's number parsing. Anything else (and a
   // value out of range) is read again by the stream from the same place, as it always was.
   const std::istringstream::pos_type start = in.tellg();
   std::string token;
-  if (in >> token && read_plain_decimal(token, value)) return value;
+  if (in >> token && read_decimal(token, value)) return value;
   in.clear();
   in.seekg(start);
   value = 0.0;
@@ -107,29 +136,18 @@ MergeTreeNode tree_node(const std::string& key, std::istringstream& in, int line
 }
 
 // A tree's node line in its plain form, read without the stream: "leaf VALUE" or "split NAME
-// THRESHOLD YES NO", words of visible ASCII separated by spaces and tabs, the numbers plain, NAME a
-// known feature. nullopt for any other line (a comment, other whitespace, a sign, an unknown name,
-// a word too many or too few), which tree_node() reads with the stream as before, or refuses.
+// THRESHOLD YES NO", words separated by spaces and tabs, the numbers read whole by std::from_chars,
+// NAME a known feature. nullopt for any other line (a comment, other whitespace or bytes, a sign, an unknown name, a word
+// too many or too few), which tree_node() reads with the stream as before, or refuses.
 std::optional<MergeTreeNode> plain_tree_node(std::string_view line) {
-  std::array<std::string_view, 6> word;
-  std::size_t n = 0;
-  for (std::size_t i = 0; i < line.size();) {
-    if (line[i] == ' ' || line[i] == '\t') {
-      ++i;
-      continue;
-    }
-    const std::size_t start = i;
-    while (i < line.size() && line[i] > ' ' && line[i] <= '~' && line[i] != '#') ++i;
-    if (i == start || n == word.size()) return std::nullopt;  // another byte, or too many words
-    word[n++] = line.substr(start, i - start);
-  }
+  PlainWords words(line);
   MergeTreeNode node;
-  if (n == 2 && word[0] == "leaf" && read_plain_decimal(word[1], node.value)) return node;
-  if (n != 5 || word[0] != "split" || !read_plain_decimal(word[2], node.threshold) || !read_plain_index(word[3], node.yes) ||
-      !read_plain_index(word[4], node.no))
+  if (words.take("leaf")) return words.decimal(node.value) && words.done() ? std::optional<MergeTreeNode>(node) : std::nullopt;
+  if (!words.take("split")) return std::nullopt;
+  node.feature = merge_feature_index(words.name());
+  if (node.feature < 0 || !words.decimal(node.threshold) || !words.index(node.yes) || !words.index(node.no) || !words.done())
     return std::nullopt;
-  node.feature = merge_feature_index(word[1]);
-  return node.feature >= 0 ? std::optional<MergeTreeNode>(node) : std::nullopt;
+  return node;
 }
 
 // Why tree is no tree of a model, or "" when it is one: every split points forwards to a node of its
@@ -178,6 +196,9 @@ MergeModel parse_merge_model(const std::string& text) {
   // One stream for every line: making a stream per line (its locale and buffers) was most of the
   // cost of reading the shipped model's nine thousand lines, paid once by every `topocut` run.
   std::istringstream in;
+  // The tree being read: its nodes are copied into the model once, at its end, rather than the
+  // model's tree grown node by node.
+  std::vector<MergeTreeNode> tree;
   // The lines as std::getline splits them (at each '\n', none after a last '\n'), without copying.
   for (std::size_t at = 0; at < text.size();) {
     const std::size_t newline = std::min(text.find('\n', at), text.size());
@@ -188,7 +209,7 @@ MergeModel parse_merge_model(const std::string& text) {
     if (in_tree) {
       if (const std::optional<MergeTreeNode> node = plain_tree_node(raw)) {
         if (++nodes > kMaxMergeModelNodes) throw too_many("tree nodes", kMaxMergeModelNodes);
-        model.trees.back().push_back(*node);
+        tree.push_back(*node);
         continue;
       }
     }
@@ -199,11 +220,13 @@ MergeModel parse_merge_model(const std::string& text) {
     if (in_tree) {
       if (key == "end") {
         expect_end(in, number);
-        check_tree(model.trees.back(), number);
+        check_tree(tree, number);
+        model.trees.push_back(tree);
+        tree.clear();
         in_tree = false;
       } else {
         if (++nodes > kMaxMergeModelNodes) throw too_many("tree nodes", kMaxMergeModelNodes);
-        model.trees.back().push_back(tree_node(key, in, number));
+        tree.push_back(tree_node(key, in, number));
       }
     } else if (!header) {
       int version = 0;
@@ -220,7 +243,6 @@ MergeModel parse_merge_model(const std::string& text) {
     } else if (key == "tree") {
       expect_end(in, number);
       if (model.trees.size() == kMaxMergeTrees) throw too_many("trees", kMaxMergeTrees);
-      model.trees.emplace_back();
       in_tree = true;
     } else {
       const int index = feature_named(key, number);

@@ -116,10 +116,12 @@ TEST(MergeModel, TreeNodesReadAsTheStreamReadsThem) {
   const std::string head = "topocut-merge-model 1\ntree\n", tail = "\nleaf 0.5\nleaf -3\nend\n";
   const MergeModel plain = parse_merge_model(head + "split furniture_end 0.25 1 2" + tail);
   for (const std::string split : {"\tsplit  furniture_end\t0.25 1 2 ", "split furniture_end 0.25 +1 2", "split furniture_end .25 01 2",
-                                  "split furniture_end 0.25 1 2\r", "split furniture_end 2.5e-1 1 2#"})
+                                  "split furniture_end 0.25 1 2\r", "split furniture_end 2.5e-1 1 2#", "split furniture_end 25.e-2 1 2",
+                                  "split furniture_end 0.25E+0 1 2"})
     EXPECT_TRUE(same_trees(parse_merge_model(head + split + tail), plain)) << split;
   for (const std::string bad : {"split furniture_end 0.25 1", "split furniture_end 0.25 1 2 3", "split no_such_feature 0.25 1 2",
-                                "split furniture_end 0.25 1 99999999999", "split furniture_end 0.25 -1 2", "leaf", "leaf 1 2"})
+                                "split furniture_end 0.25 1 99999999999", "split furniture_end 0.25 -1 2", "leaf", "leaf 1 2", "split furniture_end inf 1 2",
+                                "split furniture_end 0x1 1 2", "leaf nan", "leaf 1e400", "leaf 1e"})
     EXPECT_NE(error_of(head + bad + tail).find("line "), std::string::npos) << bad;
 }
 
