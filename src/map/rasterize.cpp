@@ -87,15 +87,20 @@ std::vector<int> window_nearest_labels(const cv::Mat& labels, const cv::Rect& wi
   return found;
 }
 
-// Appends the cells of `cells` the window's transform gives a label to settled_index and settled_label.
-void nearest_labels_in(const cv::Mat& labels, const cv::Rect& window, const std::vector<int>& cells,
-                       std::vector<int>& settled_index, std::vector<int>& settled_label) {
-  const std::vector<int> found = window_nearest_labels(labels, window, cells, false);
+// Appends each of `cells` that found gives a label (found[k] != 0) to settled_index and settled_label.
+void append_settled(const std::vector<int>& cells, const std::vector<int>& found, std::vector<int>& settled_index,
+                    std::vector<int>& settled_label) {
   for (std::size_t k = 0; k < cells.size(); ++k) {
     if (found[k] == 0) continue;
     settled_index.push_back(cells[k]);
     settled_label.push_back(found[k]);
   }
+}
+
+// Appends the cells of `cells` the window's transform gives a label to settled_index and settled_label.
+void nearest_labels_in(const cv::Mat& labels, const cv::Rect& window, const std::vector<int>& cells,
+                       std::vector<int>& settled_index, std::vector<int>& settled_label) {
+  append_settled(cells, window_nearest_labels(labels, window, cells, false), settled_index, settled_label);
 }
 
 // A cut-off blob of free cells and the window around it that holds its nearest labels.
@@ -304,11 +309,7 @@ void nearest_labels_spread(const cv::Mat& labels, const std::vector<int>& orphan
     std::sort(unsure.begin(), unsure.end());
     left = std::move(unsure);
   }
-  for (std::size_t k = 0; k < orphans.size(); ++k) {
-    if (found[k] == 0) continue;
-    settled_index.push_back(orphans[k]);
-    settled_label.push_back(found[k]);
-  }
+  append_settled(orphans, found, settled_index, settled_label);
 }
 
 // Free cells cut off from every label take the nearest label in a straight line. Few blobs are
