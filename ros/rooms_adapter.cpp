@@ -288,6 +288,7 @@ struct RoomsAdapter::State {
   std::vector<Parameter> parameters;  // as given at start-up, for segment()'s options to go over
   NodeSettings live;                  // over the incremental segmenter's defaults
   topocut::IncrementalSegmenter segmenter;
+  topocut::FramedUpdates framed;                    // places every result: the rooms it left alone keep their cells
   std::optional<topocut::GridSegmentation> latest;  // the rooms last published, for room_at()
   topocut::GridFrame frame;                         // of the map they are of
   State(std::vector<Parameter> given, NodeSettings settings, const topocut::IncrementalOptions& options)
@@ -357,10 +358,10 @@ RoomsOutput RoomsAdapter::update_once(const MapInput& map) {
   const topocut::GridArray array = array_of(map, state_->live.map);
   const topocut::OccupancyGrid grid = topocut::grid_from_array(array);  // validates the array
   const auto start = std::chrono::steady_clock::now();
-  const topocut::Segmentation& result = state_->segmenter.update(grid);
+  state_->segmenter.update(grid);
   const double update_ms = ms_since(start);
   state_->frame = topocut::frame_of(array);
-  topocut::GridSegmentation rooms = topocut::in_frame(result, state_->frame);
+  topocut::GridSegmentation rooms = state_->framed.place(state_->segmenter, state_->frame);
   RoomsOutput out = output_of(rooms);
   state_->latest = std::move(rooms);
   out.update_ms = update_ms;
@@ -392,9 +393,9 @@ RoomsOutput RoomsAdapter::segment_once(const MapInput& map, const std::vector<st
 RoomsOutput RoomsAdapter::settle() {
   if (!state_->latest) return {};
   const auto start = std::chrono::steady_clock::now();
-  const topocut::Segmentation& result = state_->segmenter.resegment();
+  state_->segmenter.resegment();
   const double settle_ms = ms_since(start);
-  topocut::GridSegmentation rooms = topocut::in_frame(result, state_->frame);
+  topocut::GridSegmentation rooms = state_->framed.place(state_->segmenter, state_->frame);
   RoomsOutput out = output_of(rooms);
   state_->latest = std::move(rooms);
   out.update_ms = settle_ms;

@@ -296,15 +296,22 @@ void run_depths(const InteriorRun& run, const Depth* col, EnvelopeBuffers& buffe
   lower_envelope<Depth>(buffers.g.data(), static_cast<int>(n), buffers.out.data(), buffers.v.data(), buffers.z.data());
 }
 
-// Rooms without an interior cell (one cell thin) take their first labelled cell in raster order.
-void first_cells_of_thin_rooms(const cv::Mat& labels, const cv::Rect& box, int max_id, std::vector<cv::Point>& best) {
+// The rooms wanted (by id) of those whose deepest cells are sought.
+using WantedIds = std::vector<char>;
+
+bool is_wanted(const WantedIds& wanted, int id) {
+  return id > 0 && static_cast<std::size_t>(id) < wanted.size() && wanted[static_cast<std::size_t>(id)] != 0;
+}
+
+// Wanted rooms without an interior cell (one cell thin) take their first labelled cell in raster order.
+void first_cells_of_thin_rooms(const cv::Mat& labels, const cv::Rect& box, const WantedIds& wanted, std::vector<cv::Point>& best) {
   int missing = 0;
-  for (std::size_t id = 1; id < best.size(); ++id) missing += best[id].x < 0 ? 1 : 0;
+  for (std::size_t id = 1; id < best.size(); ++id) missing += wanted[id] != 0 && best[id].x < 0 ? 1 : 0;
   for (int r = box.y; r < box.y + box.height && missing > 0; ++r) {
     const int* row = labels.ptr<int>(r);
     for (int c = box.x; c < box.x + box.width; ++c) {
       const int id = row[c];
-      if (id <= 0 || id > max_id || best[static_cast<std::size_t>(id)].x >= 0) continue;
+      if (!is_wanted(wanted, id) || best[static_cast<std::size_t>(id)].x >= 0) continue;
       best[static_cast<std::size_t>(id)] = {c, r};
       --missing;
     }
@@ -380,18 +387,18 @@ void deepest_of_first_run(const InteriorRun& run, const Depth* col, EnvelopeBuff
   room.take(depth, {at, run.row});
 }
 
-// Each room's deepest cell among the box's interior runs (best, ids up to max_id; the box's column
-// grid of Depth). Each room's runs are taken from the widest reach down, until a run's reach (a
-// bound of its depths) is below the deepest cell found: the first transformed whole, the others'
-// cells searched where they may be deeper.
+// Each wanted room's deepest cell among the box's interior runs (best; the box's column grid of
+// Depth). Each room's runs are taken from the widest reach down, until a run's reach (a bound of
+// its depths) is below the deepest cell found: the first transformed whole, the others' cells
+// searched where they may be deeper.
 template <typename Depth>
-void deepest_interior_cells(const cv::Mat& labels, const cv::Rect& box, int max_id, std::vector<cv::Point>& best) {
+void deepest_interior_cells(const cv::Mat& labels, const cv::Rect& box, const WantedIds& wanted, std::vector<cv::Point>& best) {
   const cv::Mat column = column_distances<Depth>(labels, box);
   const std::vector<InteriorRun> runs = interior_runs<Depth>(labels, box, column);
   std::vector<std::size_t> order;
   order.reserve(runs.size());
   for (std::size_t k = 0; k < runs.size(); ++k)
-    if (runs[k].id <= max_id) order.push_back(k);
+    if (is_wanted(wanted, runs[k].id)) order.push_back(k);
   std::sort(order.begin(), order.end(), [&runs](std::size_t a, std::size_t b) {
     return runs[a].id != runs[b].id ? runs[a].id < runs[b].id : runs[a].reach > runs[b].reach;
   });
@@ -408,35 +415,47 @@ void deepest_interior_cells(const cv::Mat& labels, const cv::Rect& box, int max_
     }
   }
   for (std::size_t id = 0; id < best.size(); ++id)
-    if (deepest[id].cell.x >= 0) best[id] = {box.x + deepest[id].cell.x, box.y + deepest[id].cell.y};
+    if (wanted[id] != 0 && deepest[id].cell.x >= 0) best[id] = {box.x + deepest[id].cell.x, box.y + deepest[id].cell.y};
 }
 
-// For every room id, the labelled cell (top-down grid) farthest from any cell of another label: the
-// distance transform of the cells whose four neighbours all share their label (the float that
-// cv::distanceTransform, DIST_L2 and DIST_MASK_PRECISE, gives: the rounded root of the exact squared
-// distance), the first in raster order among equals. Rooms without such a cell (one cell thin) take
-// their first cell in raster order. Works in the box around the labelled cells grown by one cell:
-// every cell outside it is not interior, and the nearest such cell of a cell inside is never farther
-// than the grown box's border, so the distances and the raster order are those of the whole map.
-std::vector<cv::Point> deepest_cells(const cv::Mat& labels, int max_id) {
-  std::vector<cv::Point> best(static_cast<std::size_t>(max_id) + 1, cv::Point(-1, -1));
-  const cv::Rect labelled = labelled_box(labels);
-  if (labelled.empty()) return best;
+// For every wanted room id, the labelled cell (top-down grid) farthest from any cell of another
+// label (into best; the others' entries untouched): the distance transform of the cells whose four
+// neighbours all share their label (the float that cv::distanceTransform, DIST_L2 and
+// DIST_MASK_PRECISE, gives: the rounded root of the exact squared distance), the first in raster
+// order among equals. Rooms without such a cell (one cell thin) take their first cell in raster
+// order. Works in within (the labels' box when empty), grown by one cell, which must hold every cell
+// of the wanted rooms: a cell of a room beside another room's cell or none is not interior, so the
+// nearest non-interior cell of a room's interior cell lies within the room's box (a staircase path
+// to any nearer cell of another label leaves the room through one within the box of the two), and
+// the distances and the raster order are those of the whole map.
+void deepest_cells(const cv::Mat& labels, const cv::Rect& within, const WantedIds& wanted, std::vector<cv::Point>& best) {
+  const cv::Rect labelled = within.empty() ? labelled_box(labels) : within;
+  if (labelled.empty()) return;
   const cv::Rect box = cv::Rect(labelled.x - 1, labelled.y - 1, labelled.width + 2, labelled.height + 2) &
                        cv::Rect(0, 0, labels.cols, labels.rows);
   if (fits_short_depths(box)) {
-    deepest_interior_cells<std::int16_t>(labels, box, max_id, best);
+    deepest_interior_cells<std::int16_t>(labels, box, wanted, best);
   } else {
-    deepest_interior_cells<int>(labels, box, max_id, best);
+    deepest_interior_cells<int>(labels, box, wanted, best);
   }
-  first_cells_of_thin_rooms(labels, box, max_id, best);
+  first_cells_of_thin_rooms(labels, box, wanted, best);
+}
+
+int max_room_id(const Segmentation& s) {
+  int max_id = 0;
+  for (const Room& room : s.rooms) max_id = std::max(max_id, room.id);
+  return max_id;
+}
+
+// Every room's deepest cell (deepest_cells() over the whole labels), by id.
+std::vector<cv::Point> every_deepest_cell(const Segmentation& s) {
+  const auto ids = static_cast<std::size_t>(max_room_id(s)) + 1;
+  std::vector<cv::Point> best(ids, cv::Point(-1, -1));
+  deepest_cells(s.labels, cv::Rect(), WantedIds(ids, 1), best);
   return best;
 }
 
-std::vector<RoomPlacement> placements_of(const Segmentation& s) {
-  int max_id = 0;
-  for (const Room& room : s.rooms) max_id = std::max(max_id, room.id);
-  const std::vector<cv::Point> deepest = deepest_cells(s.labels, max_id);
+std::vector<RoomPlacement> placements_of(const Segmentation& s, const std::vector<cv::Point>& deepest) {
   std::vector<RoomPlacement> placements;
   placements.reserve(s.rooms.size());
   for (const Room& room : s.rooms) {
@@ -483,12 +502,11 @@ void bound(GridSegmentation& out) {
   }
 }
 
-}  // namespace
-
-GridSegmentation in_frame(Segmentation segmentation, const GridFrame& frame) {
+// in_frame() with each room's deepest cell given (by id; (-1, -1): none, its centroid is its place).
+GridSegmentation placed_in_frame(Segmentation segmentation, const GridFrame& frame, const std::vector<cv::Point>& deepest) {
   GridSegmentation out;
   out.frame = frame;
-  out.placements = placements_of(segmentation);
+  out.placements = placements_of(segmentation, deepest);
   out.segmentation = std::move(segmentation);
   if (frame.yaw != 0.0)
     rotate(out, Rotation{out.segmentation.origin, std::cos(frame.yaw), std::sin(frame.yaw)});
@@ -501,6 +519,37 @@ GridSegmentation in_frame(Segmentation segmentation, const GridFrame& frame) {
   return out;
 }
 
+// The ids of the rooms with a cell on the labels' edge, sorted: such a cell is never interior, and
+// may be once the map has grown past it.
+std::vector<int> ids_on_edge(const cv::Mat& labels) {
+  std::vector<int> ids;
+  if (labels.empty()) return ids;
+  const auto add_row = [&](int r) {
+    const int* row = labels.ptr<int>(r);
+    for (int c = 0; c < labels.cols; ++c)
+      if (row[c] > 0) ids.push_back(row[c]);
+  };
+  add_row(0);
+  add_row(labels.rows - 1);
+  for (int r = 0; r < labels.rows; ++r) {
+    const int* row = labels.ptr<int>(r);
+    if (row[0] > 0) ids.push_back(row[0]);
+    if (row[labels.cols - 1] > 0) ids.push_back(row[labels.cols - 1]);
+  }
+  std::sort(ids.begin(), ids.end());
+  ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+  return ids;
+}
+
+bool holds(const std::vector<int>& sorted, int id) { return std::binary_search(sorted.begin(), sorted.end(), id); }
+
+}  // namespace
+
+GridSegmentation in_frame(Segmentation segmentation, const GridFrame& frame) {
+  const std::vector<cv::Point> deepest = every_deepest_cell(segmentation);
+  return placed_in_frame(std::move(segmentation), frame, deepest);
+}
+
 GridSegmentation segment_grid(const OccupancyGrid& grid, const GridFrame& frame, const SegmentOptions& options,
                               SegmentationInput* input) {
   return in_frame(segment(grid, options, input), frame);
@@ -508,6 +557,46 @@ GridSegmentation segment_grid(const OccupancyGrid& grid, const GridFrame& frame,
 
 GridSegmentation update_grid(IncrementalSegmenter& segmenter, const OccupancyGrid& grid, const GridFrame& frame) {
   return in_frame(segmenter.update(grid), frame);
+}
+
+// A room keeps its deepest cell, moved by the frame's shift, when the update left its cells as they
+// were (the report does not list it) and, if the frame changed, when it has no cell on the old
+// edge or the new one (where a cell that could not be interior may now be). Every other room is
+// measured again: within the report's box of the listed rooms when they are all it has to measure,
+// else over the whole labels.
+GridSegmentation FramedUpdates::place(const IncrementalSegmenter& segmenter, const GridFrame& frame) {
+  const Segmentation& result = segmenter.result();
+  const IncrementalUpdateReport& report = segmenter.last_update();
+  const bool kept = segmenter_ == &segmenter && result_ + 1 == segmenter.results();
+  const std::vector<int> edge = ids_on_edge(result.labels);
+  const bool moved = report.shift != cv::Point() || result.labels.size() != size_;
+  const auto ids = static_cast<std::size_t>(max_room_id(result)) + 1;
+  std::vector<cv::Point> best(ids, cv::Point(-1, -1));
+  WantedIds wanted(ids, 0);
+  bool only_listed = true;
+  reused_ = 0;
+  for (const Room& room : result.rooms) {
+    const int id = room.id;
+    const bool listed = report.every_room_relabelled || holds(report.relabelled_rooms, id);
+    const auto old = std::lower_bound(cells_.begin(), cells_.end(), id, [](const Kept& k, int value) { return k.id < value; });
+    const bool known = kept && old != cells_.end() && old->id == id;
+    if (!listed && known && (!moved || (!holds(edge_, id) && !holds(edge, id)))) {
+      best[static_cast<std::size_t>(id)] = old->cell.x < 0 ? old->cell : old->cell + report.shift;
+      ++reused_;
+      continue;
+    }
+    wanted[static_cast<std::size_t>(id)] = 1;
+    only_listed = only_listed && listed && !report.every_room_relabelled;
+  }
+  if (reused_ < static_cast<int>(result.rooms.size()))
+    deepest_cells(result.labels, only_listed ? report.relabelled_box : cv::Rect(), wanted, best);
+  cells_.clear();
+  for (const Room& room : result.rooms) cells_.push_back({room.id, best[static_cast<std::size_t>(room.id)]});
+  edge_ = edge;
+  size_ = result.labels.size();
+  segmenter_ = &segmenter;
+  result_ = segmenter.results();
+  return placed_in_frame(result, frame, best);
 }
 
 }  // namespace topocut

@@ -6,6 +6,8 @@
 #include <gtest/gtest.h>
 #include <opencv2/imgproc.hpp>
 
+#include "segmentation/growing_map.h"
+
 namespace topocut {
 namespace {
 
@@ -201,6 +203,71 @@ TEST(GridSegmentation, IncrementalUpdatesComeInTheSameFrame) {
   EXPECT_EQ(cv::countNonZero(again.segmentation.labels != flipped), 0);
   EXPECT_EQ(cv::countNonZero(again.segmentation.labels != first.segmentation.labels), 0);
   EXPECT_EQ(again.segmentation.rooms.size(), first.segmentation.rooms.size());
+}
+
+void expect_same_placed_rooms(const GridSegmentation& got, const GridSegmentation& want, std::size_t step) {
+  EXPECT_EQ(cv::countNonZero(got.segmentation.labels != want.segmentation.labels), 0) << "step " << step;
+  ASSERT_EQ(got.placements.size(), want.placements.size()) << "step " << step;
+  for (std::size_t k = 0; k < want.placements.size(); ++k) {
+    const int id = want.segmentation.rooms[k].id;
+    EXPECT_EQ(got.segmentation.rooms[k].id, id) << "step " << step;
+    EXPECT_EQ(got.segmentation.rooms[k].polygon, want.segmentation.rooms[k].polygon) << "step " << step << ", room " << id;
+    // Bit for bit: the same cell, and its centre computed in the same frame.
+    EXPECT_EQ(got.placements[k].inside, want.placements[k].inside) << "step " << step << ", room " << id;
+    EXPECT_EQ(got.placements[k].min, want.placements[k].min) << "step " << step << ", room " << id;
+    EXPECT_EQ(got.placements[k].max, want.placements[k].max) << "step " << step << ", room " << id;
+  }
+}
+
+// A map growing in size and origin, then unchanged, then changed inside one room and at a door:
+// every update's placements are those in_frame() measures on the whole labels, in a frame turned
+// and flipped too, and some rooms keep their cell from the update before (so the test sees both).
+TEST(FramedUpdates, EveryUpdateIsInFramesBitForBitWhileUnchangedRoomsKeepTheirCells) {
+  const std::vector<OccupancyGrid> grids = testing::growing_map_sequence();
+  for (const GridFrame& frame : {GridFrame{}, GridFrame{RowOrder::kBottomUp, 0.3}}) {
+    IncrementalSegmenter segmenter;
+    FramedUpdates framed;
+    int reused = 0, measured = 0, moved_and_reused = 0;
+    for (std::size_t step = 0; step < grids.size(); ++step) {
+      segmenter.update(grids[step]);
+      const GridSegmentation got = framed.place(segmenter, frame);
+      const GridSegmentation want = in_frame(segmenter.result(), frame);
+      expect_same_placed_rooms(got, want, step);
+      reused += framed.reused_rooms();
+      measured += static_cast<int>(want.segmentation.rooms.size()) - framed.reused_rooms();
+      if (segmenter.last_update().shift != cv::Point()) moved_and_reused += framed.reused_rooms();
+    }
+    EXPECT_GT(reused, 0);
+    EXPECT_GT(measured, reused / 4);  // the changed rooms were measured: not every room kept
+    EXPECT_GT(moved_and_reused, 0);   // cells kept across a frame that moved
+    // resegment(): the whole map again, every room measured.
+    segmenter.resegment();
+    const GridSegmentation settled = framed.place(segmenter, frame);
+    expect_same_placed_rooms(settled, in_frame(segmenter.result(), frame), grids.size());
+    EXPECT_EQ(framed.reused_rooms(), 0);
+  }
+}
+
+// A result not placed (an update between two calls, or another segmenter) keeps no cell: the
+// report compares with the result right before only.
+TEST(FramedUpdates, AResultNotPlacedMakesEveryRoomMeasuredAgain) {
+  const std::vector<OccupancyGrid> grids = testing::growing_map_sequence();
+  IncrementalSegmenter segmenter, other;
+  FramedUpdates framed;
+  const std::size_t last = grids.size() - 1;
+  segmenter.update(grids[last - 3]);
+  framed.place(segmenter, GridFrame{});
+  segmenter.update(grids[last - 2]);
+  framed.place(segmenter, GridFrame{});
+  ASSERT_GT(framed.reused_rooms(), 0);  // an unchanged map: every room kept
+  segmenter.update(grids[last - 1]);
+  segmenter.update(grids[last]);
+  const GridSegmentation got = framed.place(segmenter, GridFrame{});
+  EXPECT_EQ(framed.reused_rooms(), 0);
+  expect_same_placed_rooms(got, in_frame(segmenter.result(), GridFrame{}), last);
+  other.update(grids[last]);
+  framed.place(other, GridFrame{});
+  EXPECT_EQ(framed.reused_rooms(), 0);
 }
 
 }  // namespace

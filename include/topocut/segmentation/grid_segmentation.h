@@ -2,6 +2,7 @@
 // Segmentation results as a caller of the array API wants them (GridArray, ROS, Python): labels in
 // the caller's row order, geometry in the map frame (the origin's yaw applied), and for every room a
 // point inside it and its bounding box, so that a label can be drawn and a room looked up.
+#include <cstdint>
 #include <vector>
 
 #include "topocut/core/grid_array.h"
@@ -30,5 +31,32 @@ GridSegmentation segment_grid(const OccupancyGrid& grid, const GridFrame& frame,
 
 // segmenter.update(grid) followed by in_frame() (ids stay those of the segmenter).
 GridSegmentation update_grid(IncrementalSegmenter& segmenter, const OccupancyGrid& grid, const GridFrame& frame);
+
+// in_frame() of an incremental segmenter's results, result after result, with the work of the
+// placements following the change: a room whose cells the update left as they were
+// (IncrementalUpdateReport::relabelled_rooms) keeps its deepest cell from the previous result,
+// moved with the frame; the others are measured again. The placements are in_frame()'s bit for bit.
+// For a live map (the ROS node).
+class FramedUpdates {
+ public:
+  // in_frame(segmenter.result(), frame), keeping cells only when the previous call placed the
+  // result right before this one (segmenter.results() one less) of the same segmenter.
+  GridSegmentation place(const IncrementalSegmenter& segmenter, const GridFrame& frame);
+  // Rooms whose deepest cell the last call kept rather than measured (for tests and benchmarks).
+  int reused_rooms() const { return reused_; }
+
+ private:
+  struct Kept {
+    int id = 0;
+    cv::Point cell;  // its deepest cell, top-down ((-1, -1): none)
+  };
+
+  const IncrementalSegmenter* segmenter_ = nullptr;  // of the kept cells
+  std::uint64_t result_ = 0;                        // its results() then
+  std::vector<Kept> cells_;  // of that result's rooms, by id
+  std::vector<int> edge_;    // the rooms with a cell on its labels' edge, sorted
+  cv::Size size_;            // its labels' size
+  int reused_ = 0;
+};
 
 }  // namespace topocut

@@ -9,9 +9,11 @@
 // one IdLedger (id_ledger.h). Work stays near the change, so an update costs what the change costs,
 // not what the map does.
 #include <cstddef>
+#include <cstdint>
 #include <iosfwd>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include <opencv2/core.hpp>
 
@@ -111,6 +113,15 @@ struct IncrementalUpdateReport {
   int partial_rooms = 0;      // rooms of the region decomposed only near the change (partial_area)
   int new_rooms = 0;          // ids handed out by this update
   int removed_rooms = 0;      // ids that disappeared
+  // Whose cells may differ from the previous result's moved into this frame: every room's
+  // (every_room_relabelled: a whole-map update, a new frame, a failed update before), else only
+  // the rooms listed (sorted ids: rooms that appeared, disappeared, gained or lost a cell); every
+  // other room keeps exactly its cells, moved by shift. So that a caller redoes per-room work
+  // (placements, drawings) only for the rooms an update changed.
+  bool every_room_relabelled = true;
+  std::vector<int> relabelled_rooms;
+  cv::Rect relabelled_box;    // holds every cell of the listed rooms still in the result (empty: none)
+  cv::Point shift;            // where the previous result's cell (0, 0) lies in this one's frame
 };
 
 // Keeps the previous grid, its cleaned free space (what is decomposed), the cells the cleaning leaves
@@ -169,6 +180,11 @@ class IncrementalSegmenter {
   // What the latest update did.
   const IncrementalUpdateReport& last_update() const;
 
+  // How many results this segmenter has handed out (every update and resegment(), reset() and
+  // load_ledger() too, failed or not): whether a caller saw each one (last_update() compares with
+  // the one before only).
+  std::uint64_t results() const { return results_; }
+
   // Bytes held between updates: grid copy, cleaned free space, labelled cells, labels, rooms and passages.
   std::size_t state_bytes() const;
 
@@ -190,6 +206,7 @@ class IncrementalSegmenter {
  private:
   struct State;
   std::unique_ptr<State> state_;
+  std::uint64_t results_ = 0;
 };
 
 }  // namespace topocut

@@ -219,7 +219,12 @@ std::vector<int> IncrementalSegmenter::State::retire_old_rooms(const Region& reg
       h.max_r = std::max(h.max_r, gr);
     } else {
       int* l = result.labels.ptr<int>(gr);
-      std::fill(l + gc, l + end, found.id_of_piece[static_cast<std::size_t>(piece)]);
+      const int id = found.id_of_piece[static_cast<std::size_t>(piece)];
+      if (id != old) {  // a room whose every run keeps its id keeps its cells
+        if (old > 0) relabelled.push_back(old);
+        if (id > 0) relabelled.push_back(id);
+      }
+      std::fill(l + gc, l + end, id);
     }
   });
   return removed;

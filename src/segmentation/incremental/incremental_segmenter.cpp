@@ -120,6 +120,7 @@ bool IncrementalSegmenter::State::move_frame(const OccupancyGrid& grid, bool& re
   floor = moved(floor, CV_8UC1, 0);
   labelled = moved(labelled, CV_8UC1, kUnknown);
   result.labels = moved(result.labels, CV_32SC1, 0);
+  report.shift = shift;
   ledger.move(shift, grid.cells.size());
   result.origin = grid.origin;
   origin = grid.origin;
@@ -241,6 +242,7 @@ const Segmentation& IncrementalSegmenter::State::update(const OccupancyGrid& gri
   report.changed = changed;
   if (changed.empty() && whole_reason.empty()) {
     report.kind = IncrementalUpdateReport::Kind::kUnchanged;
+    report.every_room_relabelled = false;
     return result;
   }
   if (whole_reason.empty() && !options.windowed) whole_reason = "every update segments the whole map";
@@ -267,6 +269,9 @@ const Segmentation& IncrementalSegmenter::State::resegment() {
 void IncrementalSegmenter::State::segment_whole(const OccupancyGrid& grid, const std::string& reason) {
   report.kind = IncrementalUpdateReport::Kind::kBatch;
   report.reason = reason;
+  report.every_room_relabelled = true;
+  report.relabelled_rooms.clear();
+  report.relabelled_box = {};
   if (report.changed_cells == 0) report.changed_cells = cv::countNonZero(cells != grid.cells);
   cells = grid.cells.clone();
   Segmentation batch;
@@ -325,6 +330,7 @@ void IncrementalSegmenter::State::process(const OccupancyGrid& grid, const cv::R
   report.changed_cells = mask.changed_cells;
   if (mask.changed_cells == 0) {
     report.kind = IncrementalUpdateReport::Kind::kUnchanged;
+    report.every_room_relabelled = false;
     return;
   }
   if (static_cast<double>(mask.changed_cells) > options.batch_fraction * static_cast<double>(free_cells)) {
@@ -336,6 +342,7 @@ void IncrementalSegmenter::State::process(const OccupancyGrid& grid, const cv::R
   Region region = choose_region(blobs);
   std::vector<int> nearest;  // cells that take the nearest room's label
   std::vector<int> touched_rooms = apply_changes(mask, blob_of, blobs, nearest);  // rooms whose area or cells changed
+  relabelled = touched_rooms;  // the decomposition adds those whose runs change their id
   report.kind = IncrementalUpdateReport::Kind::kIncremental;
   if ((!region.ids.empty() || !region.window.empty()) && !redecompose(std::move(region), touched_rooms)) {
     segment_whole(grid, "no free space to decompose in the changed rooms");
@@ -343,7 +350,25 @@ void IncrementalSegmenter::State::process(const OccupancyGrid& grid, const cv::R
   }
   label_from_nearest_rooms(nearest, touched_rooms);
   for (const int id : touched_rooms) refresh_room(id, nullptr);
+  relabelled.insert(relabelled.end(), touched_rooms.begin(), touched_rooms.end());
+  report_relabelled();
   update_kinds();
+}
+
+// The rooms whose cells this windowed update changed: those of the cells it lost, absorbed or gave
+// the nearest room (apply_changes(), label_from_nearest_rooms()), and both rooms of every run of the
+// decomposed region whose id changed (retire_old_rooms()); a room decomposed again into the same
+// cells is not one of them. No other label is written.
+void IncrementalSegmenter::State::report_relabelled() {
+  std::vector<int>& ids = report.relabelled_rooms;
+  ids.swap(relabelled);
+  relabelled.clear();
+  std::sort(ids.begin(), ids.end());
+  ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+  report.relabelled_box = {};
+  for (const int id : ids)
+    if (rooms[static_cast<std::size_t>(id)].alive) report.relabelled_box = unite(report.relabelled_box, rooms[static_cast<std::size_t>(id)].box);
+  report.every_room_relabelled = false;
 }
 
 // The kinds of the rooms this update changed and of their neighbours (how many rooms a room opens
@@ -722,13 +747,20 @@ IncrementalSegmenter::~IncrementalSegmenter() = default;
 IncrementalSegmenter::IncrementalSegmenter(IncrementalSegmenter&&) noexcept = default;
 IncrementalSegmenter& IncrementalSegmenter::operator=(IncrementalSegmenter&&) noexcept = default;
 
-const Segmentation& IncrementalSegmenter::update(const OccupancyGrid& grid) { return state_->update(grid, nullptr); }
+const Segmentation& IncrementalSegmenter::update(const OccupancyGrid& grid) {
+  ++results_;
+  return state_->update(grid, nullptr);
+}
 
 const Segmentation& IncrementalSegmenter::update(const OccupancyGrid& grid, const cv::Rect& changed) {
+  ++results_;
   return state_->update(grid, &changed);
 }
 
-const Segmentation& IncrementalSegmenter::resegment() { return state_->resegment(); }
+const Segmentation& IncrementalSegmenter::resegment() {
+  ++results_;
+  return state_->resegment();
+}
 
 const Segmentation& IncrementalSegmenter::result() const { return state_->result; }
 
@@ -762,6 +794,7 @@ void IncrementalSegmenter::load_ledger(std::istream& in) {
 }
 
 void IncrementalSegmenter::reset() {
+  ++results_;
   IncrementalOptions options = state_->options;
   state_ = std::make_unique<State>();
   state_->options = options;

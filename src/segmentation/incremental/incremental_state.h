@@ -218,6 +218,7 @@ struct IncrementalSegmenter::State {
   std::vector<RoomState> rooms{1};   // by id; index 0 unused
   IdLedger ledger;   // the ids handed out and where rooms that disappeared lay (id_ledger.h)
   std::vector<int> refreshed;  // rooms refresh_room() changed since the kinds were last measured
+  std::vector<int> relabelled;  // rooms that gained or lost a cell in this update (report_relabelled())
   std::optional<SavedLedger> loaded;  // a saved ledger, taken by the next whole-map update's frame
   long long free_cells = 0;
   IncrementalUpdateReport report;
@@ -269,6 +270,7 @@ struct IncrementalSegmenter::State {
   WindowFrame window_frame(const cv::Rect& window) const;
   void store_sorted(const PassageList& list);
   void refresh_room(int id, const PolygonWithHoles* polygon);
+  void report_relabelled();
   void update_kinds();
   Point2 room_centroid(const RoomState& room, int height) const;
 };
