@@ -1,9 +1,12 @@
 #include "topocut/segmentation/grid_segmentation.h"
 
 #include <cmath>
+#include <filesystem>
+#include <string>
 #include <random>
 
 #include <gtest/gtest.h>
+#include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
 #include "segmentation/growing_map.h"
@@ -246,6 +249,33 @@ TEST(FramedUpdates, EveryUpdateIsInFramesBitForBitWhileUnchangedRoomsKeepTheirCe
     expect_same_placed_rooms(settled, in_frame(segmenter.result(), frame), grids.size());
     EXPECT_EQ(framed.reused_rooms(), 0);
   }
+}
+
+// The node's sequence on a Bormann map (revealed around its centre in 20 growing frames): the
+// report lists every room whose cells changed, and every update's placements are in_frame()'s.
+TEST(FramedUpdates, ABormannMapGrowingAsTheNodeSeesIt) {
+  const std::string path = std::string(TOPOCUT_SHARED_DIR) + "/datasets/bormann/NLB.png";
+  if (!std::filesystem::exists(path)) GTEST_SKIP() << "shared Bormann dataset not found at " << path;
+  const cv::Mat grey = cv::imread(path, cv::IMREAD_GRAYSCALE);
+  ASSERT_FALSE(grey.empty());
+  OccupancyGrid world{cv::Mat(grey.size(), CV_8UC1, cv::Scalar(kUnknown)), 0.05, {-12.0, 3.0}};
+  world.cells.setTo(kFree, grey > 250);
+  world.cells.setTo(kOccupied, grey < 50);
+  const std::vector<OccupancyGrid> grids = testing::node_sequence(world, 20);
+  IncrementalSegmenter segmenter;
+  FramedUpdates framed;
+  const GridFrame frame{RowOrder::kBottomUp, 0.0};
+  cv::Mat before;
+  int reused = 0;
+  for (std::size_t step = 0; step < grids.size(); ++step) {
+    const Segmentation& after = segmenter.update(grids[step]);
+    if (!before.empty() && !segmenter.last_update().every_room_relabelled)
+      testing::expect_relabelled_rooms_listed(before, after, segmenter.last_update(), step);
+    before = after.labels.clone();
+    expect_same_placed_rooms(framed.place(segmenter, frame), in_frame(segmenter.result(), frame), step);
+    reused += framed.reused_rooms();
+  }
+  EXPECT_GT(reused, 0);
 }
 
 // A result not placed (an update between two calls, or another segmenter) keeps no cell: the

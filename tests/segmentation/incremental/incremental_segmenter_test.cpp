@@ -1076,27 +1076,6 @@ TEST(IncrementalSegmenter, BadInputIsOneClearError) {
   expect_valid(plan.world, segmenter.update(plan.world));
 }
 
-// The report's promise, checked cell by cell against the previous labels moved by its shift: a room
-// it does not list has the same cells, and the listed ones lie in its box.
-void expect_relabelled_rooms_listed(const cv::Mat& before, const Segmentation& after, const IncrementalUpdateReport& report,
-                                    std::size_t step) {
-  const std::vector<int>& listed = report.relabelled_rooms;
-  const auto is_listed = [&](int id) { return std::binary_search(listed.begin(), listed.end(), id); };
-  ASSERT_TRUE(std::is_sorted(listed.begin(), listed.end()));
-  int missed = 0, outside_box = 0;
-  for (int r = 0; r < after.labels.rows; ++r)
-    for (int c = 0; c < after.labels.cols; ++c) {
-      const cv::Point old = cv::Point(c, r) - report.shift;
-      const int was = cv::Rect(0, 0, before.cols, before.rows).contains(old) ? before.at<int>(old) : 0;
-      const int is = after.labels.at<int>(r, c);
-      if (is > 0 && is_listed(is) && !report.relabelled_box.contains({c, r})) ++outside_box;
-      if (was == is) continue;
-      missed += (was > 0 && !is_listed(was)) + (is > 0 && !is_listed(is));
-    }
-  EXPECT_EQ(missed, 0) << "step " << step;
-  EXPECT_EQ(outside_box, 0) << "step " << step;
-}
-
 TEST(IncrementalSegmenter, TheReportListsEveryRoomWhoseCellsChanged) {
   const std::vector<OccupancyGrid> grids = testing::growing_map_sequence();
   IncrementalOptions partial;  // large rooms decomposed near the change only, holds of 3
@@ -1112,7 +1091,7 @@ TEST(IncrementalSegmenter, TheReportListsEveryRoomWhoseCellsChanged) {
       EXPECT_EQ(report.every_room_relabelled, report.kind == IncrementalUpdateReport::Kind::kBatch &&
                                                   report.reason != "the change touched every room") << "step " << step;
       if (!before.empty() && !report.every_room_relabelled) {
-        expect_relabelled_rooms_listed(before, after, report, step);
+        testing::expect_relabelled_rooms_listed(before, after, report, step);
         windowed += report.kind == IncrementalUpdateReport::Kind::kIncremental;
         moved += report.shift != cv::Point();
         for (const Room& room : after.rooms) unlisted += !std::binary_search(report.relabelled_rooms.begin(), report.relabelled_rooms.end(), room.id);
