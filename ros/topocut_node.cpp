@@ -30,7 +30,6 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
-#include <cstring>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -96,12 +95,13 @@ sensor_msgs::Image labels_image(const std_msgs::Header& header, std::uint32_t wi
   image.encoding = "16UC1";
   image.is_bigendian = 0;
   image.step = width * 2;
-  image.data.resize(2 * labels.size());
   const std::uint16_t probe = 1;
   if (*reinterpret_cast<const std::uint8_t*>(&probe) == 1) {  // a little-endian host holds the bytes as sent
-    std::memcpy(image.data.data(), labels.data(), image.data.size());
+    const auto* bytes = reinterpret_cast<const std::uint8_t*>(labels.data());
+    image.data.assign(bytes, bytes + 2 * labels.size());
     return image;
   }
+  image.data.resize(2 * labels.size());
   for (std::size_t k = 0; k < labels.size(); ++k) {
     image.data[2 * k] = static_cast<std::uint8_t>(labels[k] & 0xff);  // little-endian, as is_bigendian says
     image.data[2 * k + 1] = static_cast<std::uint8_t>(labels[k] >> 8);
@@ -117,11 +117,13 @@ nav_msgs::OccupancyGrid labels_grid(const std_msgs::Header& header, const nav_ms
   grid.header = header;
   grid.info = info;
   grid.data.resize(labels.size());
-  // One division per id rather than per cell: the wrapped value of each id up to the largest.
-  const std::uint16_t largest = labels.empty() ? 0 : *std::max_element(labels.begin(), labels.end());
-  std::vector<std::int8_t> wrapped(static_cast<std::size_t>(largest) + 1, std::int8_t{-1});
-  for (std::size_t id = 1; id < wrapped.size(); ++id) wrapped[id] = static_cast<std::int8_t>(1 + (id - 1) % 100);
-  for (std::size_t k = 0; k < labels.size(); ++k) grid.data[k] = wrapped[labels[k]];
+  // In 16 bits, so that the loop vectorizes (an int division per cell was most of it); id 0 wraps
+  // to something and is then replaced by -1.
+  for (std::size_t k = 0; k < labels.size(); ++k) {
+    const std::uint16_t id = labels[k];
+    const auto wrapped = static_cast<std::int8_t>(static_cast<std::uint16_t>(static_cast<std::uint16_t>(id - 1u) % 100u) + 1);
+    grid.data[k] = id == 0 ? std::int8_t{-1} : wrapped;
+  }
   return grid;
 }
 
