@@ -559,6 +559,11 @@ GridSegmentation update_grid(IncrementalSegmenter& segmenter, const OccupancyGri
   return in_frame(segmenter.update(grid), frame);
 }
 
+const FramedUpdates::Kept* FramedUpdates::kept_cell(int id) const {
+  const auto it = std::lower_bound(cells_.begin(), cells_.end(), id, [](const Kept& k, int value) { return k.id < value; });
+  return it != cells_.end() && it->id == id ? &*it : nullptr;
+}
+
 // A room keeps its deepest cell, moved by the frame's shift, when the update left its cells as they
 // were (the report does not list it) and, if the frame changed, when it has no cell on the old
 // edge or the new one (where a cell that could not be interior may now be). Every other room is
@@ -578,9 +583,8 @@ GridSegmentation FramedUpdates::place(const IncrementalSegmenter& segmenter, con
   for (const Room& room : result.rooms) {
     const int id = room.id;
     const bool listed = report.every_room_relabelled || holds(report.relabelled_rooms, id);
-    const auto old = std::lower_bound(cells_.begin(), cells_.end(), id, [](const Kept& k, int value) { return k.id < value; });
-    const bool known = kept && old != cells_.end() && old->id == id;
-    if (!listed && known && (!moved || (!holds(edge_, id) && !holds(edge, id)))) {
+    const Kept* old = kept ? kept_cell(id) : nullptr;
+    if (!listed && old != nullptr && (!moved || (!holds(edge_, id) && !holds(edge, id)))) {
       best[static_cast<std::size_t>(id)] = old->cell.x < 0 ? old->cell : old->cell + report.shift;
       ++reused_;
       continue;

@@ -50,6 +50,7 @@ class FramedUpdates {
     int id = 0;
     cv::Point cell;  // its deepest cell, top-down ((-1, -1): none)
   };
+  const Kept* kept_cell(int id) const;  // the room's entry in cells_, or null
 
   const IncrementalSegmenter* segmenter_ = nullptr;  // of the kept cells
   std::uint64_t result_ = 0;                        // its results() then
