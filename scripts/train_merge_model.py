@@ -7,6 +7,8 @@
     /usr/bin/python3 scripts/train_merge_model.py --generalisation --folds 0 --every 5  # a quicker check (minutes)
     ... --generalisation --folds 0 --every 5 --seed 2 --out M.txt  # the same on a bootstrap sample: a change
                                                                    # counts when it moves more than this does
+    ... --segment-option oversegment=0.3 --out M.txt  # a model for maps segmented with other options
+                                                       # (topocut segment --oversegment 0.3 --merge-model M.txt)
 
 The merge model decides, for two adjacent rooms in the making and the cut between them, whether people
 would call them one room (segmentation/merge_model.h; the features are merge_feature_names(), all of
@@ -56,6 +58,7 @@ SEED = 0  # 0 with BAG 1: every map once; otherwise the seed of the bootstrap sa
 BAG = 1  # models averaged, each fitted on its own bootstrap sample of the maps
 RESOLUTION = 0.05  # metres a cell: the Bormann-layout images hold no scale (merge_training_rows's default too)
 TREES = dict(n_estimators=300, max_depth=5, learning_rate=0.05, max_bin=256)
+SEGMENT_OPTIONS = {}  # --segment-option: the segmenter's keyword options for the rows and the scores (none: its defaults)
 FOLDS = 5  # --generalisation's default: every map scored by a model fitted without its building, plan or sketch
 SKIPPED = 77  # ctest's skip code: --check without the shared data sets
 FIRST_ROUND = "topocut-merge-model 1\nthreshold 2\n"  # merges nothing: the first candidates only
@@ -114,8 +117,8 @@ def kind_of(set_name):
 
 def _rows_of_map(job):
     import topocut
-    image, truth, policy = job
-    x, same, purity, _ = topocut.merge_training_rows(image, truth, merge_model=policy)
+    image, truth, policy, options = job
+    x, same, purity, _ = topocut.merge_training_rows(image, truth, merge_model=policy, **options)
     return x, same, purity
 
 
@@ -142,7 +145,7 @@ def rows(sets, policy, workers, drawn):
         in_kind = sum(1 for s in sets if kind_of(s) == kind_of(name))
         for (image, truth), counts in zip(maps, drawn[name].T):
             if counts.any():
-                jobs.append((image, truth, policy))
+                jobs.append((image, truth, policy, SEGMENT_OPTIONS))
                 share.append(counts / len(kinds) / in_kind / len(maps))
     with ProcessPoolExecutor(workers) as pool:
         found = list(pool.map(_rows_of_map, jobs, chunksize=4))
@@ -197,6 +200,28 @@ def tree_lines(tree, names, scale=1.0):
     return lines
 
 
+def segment_option(text):
+    """NAME=VALUE of --segment-option as a keyword option of topocut.segment (NAME as the command line or
+    Python spells it; VALUE a number, true or false)."""
+    name, sep, value = text.partition("=")
+    if not sep or not name or not value:
+        raise argparse.ArgumentTypeError(f"'{text}' is not NAME=VALUE (e.g. oversegment=0.3)")
+    words = {"true": True, "false": False}
+    if value.lower() in words:
+        return name.lstrip("-").replace("-", "_"), words[value.lower()]
+    try:
+        number = float(value)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"'{value}' of {name} is not a number, true or false")
+    return name.lstrip("-").replace("-", "_"), int(number) if number.is_integer() and "." not in value else number
+
+
+def segment_flags():
+    """SEGMENT_OPTIONS as topocut's command line spells them (a switch set false is its default: left out)."""
+    flag = lambda n: "--" + n.replace("_", "-")
+    return " ".join(flag(n) if v is True else f"{flag(n)} {v}" for n, v in SEGMENT_OPTIONS.items() if v is not False)
+
+
 def model_text(topocut, members, sets, row_count, seed):
     """The model as the library reads it (merge_model.h): a header saying what it was fitted on, then each
     tree's nodes in order. A bag's members are averaged: their margins' mean is the sum of every member's
@@ -212,6 +237,8 @@ def model_text(topocut, members, sets, row_count, seed):
              f"{TREES['n_estimators']} trees of depth {TREES['max_depth']}{' each' if len(members) > 1 else ''}, "
              f"{ROUNDS} rounds, {row_count} candidate merges, fitted on {fitted_on}.",
              f"# XGBoost {xgboost.__version__}, NumPy {np.__version__}.",
+             *([f"# Fitted with the segment options {segment_flags()}: give them to topocut with this model."]
+               if segment_flags() else []),
              "# A split goes to its first node when the feature is at most the threshold.",
              "topocut-merge-model 1", "threshold 0.5", "bias 0"]
     for trees in members:
@@ -235,15 +262,15 @@ def train(topocut, sets, workers, progress=print, seed=SEED, bag=BAG):
 
 def _f1_of_map(job):
     import topocut
-    image, truth, model = job
+    image, truth, model, options = job
     m = topocut.load_map(image, resolution=RESOLUTION)
-    result = topocut.segment(m.grid, m.resolution, m.origin, merge_model=model)
+    result = topocut.segment(m.grid, m.resolution, m.origin, merge_model=model, **options)
     return topocut.evaluate(result, truth, free=image, clip_to_free=False).f1
 
 
 def scores(sets, model, workers):
     """Mean matched-room F1 (%) of each set's maps segmented with model, as `topocut evaluate` scores."""
-    jobs = [(image, truth, model) for maps in sets.values() for image, truth in maps]
+    jobs = [(image, truth, model, SEGMENT_OPTIONS) for maps in sets.values() for image, truth in maps]
     with ProcessPoolExecutor(workers) as pool:
         f1 = iter(pool.map(_f1_of_map, jobs, chunksize=4))
     return {name: 100.0 * float(np.mean([next(f1) for _ in maps])) for name, maps in sets.items()}
@@ -321,16 +348,23 @@ def main():
     parser.add_argument("--trees", type=int, default=TREES["n_estimators"], help="trees of each model (default %(default)s)")
     parser.add_argument("--depth", type=int, default=TREES["max_depth"], help="the trees' depth (default %(default)s)")
     parser.add_argument("--learning-rate", type=float, default=TREES["learning_rate"], help="default %(default)s")
+    parser.add_argument("--segment-option", type=segment_option, action="append", default=[], metavar="NAME=VALUE",
+                        help="a segmenter option for the training rows and the scores, as topocut.segment takes it "
+                             "(repeatable; e.g. oversegment=0.3): the model is then for maps segmented with it, "
+                             "and its file says so")
     args = parser.parse_args()
     if args.seed < 0 or args.bag < 1 or args.trees < 1 or not 1 <= args.depth <= 12 or args.learning_rate <= 0:
         parser.error("--seed must be at least 0, --bag and --trees at least 1, --depth 1-12, --learning-rate positive")
     TREES.update(n_estimators=args.trees, max_depth=args.depth, learning_rate=args.learning_rate)
+    SEGMENT_OPTIONS.update(args.segment_option)
     if args.folds < 0 or args.folds == 1:
         parser.error("--folds must be 0 or at least 2")
     if args.every < 1:
         parser.error("--every must be at least 1")
     if args.every > 1 and args.check:
         parser.error("--check compares with a model fitted on every map: --every leaves some out")
+    if args.segment_option and args.check:
+        parser.error("--check compares with the shipped model, fitted with the segmenter's defaults")
     if args.no_kinds and args.folds == 0:
         parser.error("--no-kinds with --folds 0 leaves nothing to measure")
     if not os.path.isdir(os.path.join(args.shared, "datasets")):
@@ -338,6 +372,11 @@ def main():
         return SKIPPED if args.check else 1
     sys.path.insert(0, os.path.join(args.build, "python"))
     import topocut
+    import inspect
+    known = inspect.signature(topocut.merge_training_rows).parameters
+    unknown = [n for n in SEGMENT_OPTIONS if n not in known or n in ("image", "ground_truth", "resolution", "merge_model")]
+    if unknown:
+        parser.error(f"--segment-option: no segmenter option {', '.join(unknown)} (topocut segment --help lists them)")
     progress = lambda s: print("train_merge_model: " + s, file=sys.stderr)
     sets = datasets(args.shared, os.path.join(args.build, "topocut"), args.robot_maps or os.path.join(args.build, "robot_maps"),
                     progress)

@@ -4,7 +4,8 @@ written for a bag of models gives, read node by node as the library reads it (me
 node when the feature is at most the threshold, the margin the sum of the leaves), the mean of the
 members' own margins; and the bootstrap samples keep each set's size, differ between members and are
 the same for the same seed, while seed 0 of a single model draws every map once and is written as
-before (its header's lines comments)."""
+before (its header's lines comments); --segment-option's NAME=VALUE is read as topocut.segment's keyword
+and named in the header of a model fitted with it."""
 import os
 import sys
 
@@ -91,6 +92,24 @@ def main():
     expect(not (drawn["a"][0] == drawn["a"][1]).all(), "members draw different samples")
     expect(all((drawn[s] == again[s]).all() for s in sets), "the same seed draws the same samples")
     expect(not all((drawn[s] == other[s]).all() for s in sets), "another seed draws other samples")
+    import argparse
+    expect(tm.segment_option("oversegment=0.3") == ("oversegment", 0.3), "NAME=VALUE reads a number")
+    expect(tm.segment_option("--no-bays=true") == ("no_bays", True), "a command-line name and true read as a switch")
+    expect(tm.segment_option("corridor-openings=4") == ("corridor_openings", 4), "a whole number stays whole")
+    for bad in ("oversegment", "=0.3", "oversegment=", "oversegment=small"):
+        try:
+            tm.segment_option(bad)
+            expect(False, f"'{bad}' is refused")
+        except argparse.ArgumentTypeError:
+            pass
+    expect(not any("segment options" in line for line in head), "a model fitted with the defaults names no options")
+    tm.SEGMENT_OPTIONS.update([("oversegment", 0.3), ("no_bays", True)])
+    with_options = tm.model_text(Library, members[:1], {}, len(x), seed=0)
+    tm.SEGMENT_OPTIONS.clear()
+    expect("# Fitted with the segment options --oversegment 0.3 --no-bays: give them to topocut with this model.\n"
+           in with_options.split("topocut-merge-model 1")[0], "a model fitted with options names them in its header")
+    expect(with_options.split("topocut-merge-model 1")[1] == single.split("topocut-merge-model 1")[1],
+           "the options change the header only")
     print("train_merge_model_test: passed")
 
 
