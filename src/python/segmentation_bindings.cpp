@@ -355,8 +355,9 @@ class PyIncremental {
     {
       py::gil_scoped_release release;
       const std::lock_guard<std::mutex> lock(mutex_);
-      out = std::make_shared<GridSegmentation>(update_grid(segmenter_, array));
+      segmenter_.update(grid_from_array(array));
       frame_ = frame_of(array);
+      out = std::make_shared<GridSegmentation>(framed_.place(segmenter_, frame_));
     }
     return {out};
   }
@@ -366,7 +367,8 @@ class PyIncremental {
       py::gil_scoped_release release;
       const std::lock_guard<std::mutex> lock(mutex_);
       if (segmenter_.result().labels.empty()) throw Error("resegment() needs a map: call update() first");
-      out = std::make_shared<GridSegmentation>(in_frame(segmenter_.resegment(), frame_));
+      segmenter_.resegment();
+      out = std::make_shared<GridSegmentation>(framed_.place(segmenter_, frame_));
     }
     return {out};
   }
@@ -409,6 +411,7 @@ class PyIncremental {
  private:
   std::mutex mutex_;
   IncrementalSegmenter segmenter_;
+  FramedUpdates framed_;  // places each result: the rooms an update left alone keep their deepest cells
   GridFrame frame_;  // of the latest update, for resegment()
 };
 

@@ -36,7 +36,7 @@ GridSegmentation update_grid(IncrementalSegmenter& segmenter, const OccupancyGri
 // placements following the change: a room whose cells the update left as they were
 // (IncrementalUpdateReport::relabelled_rooms) keeps its deepest cell from the previous result,
 // moved with the frame; the others are measured again. The placements are in_frame()'s bit for bit.
-// For a live map (the ROS node).
+// For a live map (the ROS node, Python's IncrementalSegmenter).
 class FramedUpdates {
  public:
   // in_frame(segmenter.result(), frame), keeping cells only when the previous call placed the
