@@ -15,12 +15,13 @@ is absent.
 import argparse
 import json
 import os
-import platform
 import statistics
 import subprocess
 import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, HERE)
+from node_latency_benchmark import cpu_model  # noqa: E402  (the machine line the other benchmarks print)
 SHARED = os.path.join(HERE, "..", "..", "shared", "datasets", "bormann")
 SKIPPED = 77
 
@@ -44,17 +45,6 @@ for step in range(1, steps + still + 1):
     times.append(1000 * (time.process_time() - start))
 print(json.dumps(times))
 """
-
-
-def cpu_model():
-    try:
-        with open("/proc/cpuinfo") as f:
-            for line in f:
-                if line.startswith("model name"):
-                    return " ".join(line.split(":", 1)[1].split()[:2])
-    except OSError:
-        pass
-    return platform.machine()
 
 
 def measure(build, image, steps, still):
