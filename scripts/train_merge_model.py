@@ -377,6 +377,10 @@ def main():
     unknown = [n for n in SEGMENT_OPTIONS if n not in known or n in ("image", "ground_truth", "resolution", "merge_model")]
     if unknown:
         parser.error(f"--segment-option: no segmenter option {', '.join(unknown)} (topocut segment --help lists them)")
+    try:  # a value out of range is refused here, with the library's message, not in every worker
+        topocut.segment(np.zeros((8, 8), np.int8), RESOLUTION, **SEGMENT_OPTIONS)
+    except ValueError as error:
+        parser.error(f"--segment-option: {error}")
     progress = lambda s: print("train_merge_model: " + s, file=sys.stderr)
     sets = datasets(args.shared, os.path.join(args.build, "topocut"), args.robot_maps or os.path.join(args.build, "robot_maps"),
                     progress)
