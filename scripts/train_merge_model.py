@@ -38,6 +38,7 @@ ten trainings more).
 """
 import argparse
 import glob
+import inspect
 import json
 import os
 import re
@@ -372,7 +373,6 @@ def main():
         return SKIPPED if args.check else 1
     sys.path.insert(0, os.path.join(args.build, "python"))
     import topocut
-    import inspect
     known = inspect.signature(topocut.merge_training_rows).parameters
     unknown = [n for n in SEGMENT_OPTIONS if n not in known or n in ("image", "ground_truth", "resolution", "merge_model")]
     if unknown:
