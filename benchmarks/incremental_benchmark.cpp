@@ -135,7 +135,8 @@ int run(IncrementalDatasetOptions& options, const DatasetArguments& arguments) {
   std::cout << "## Targets\n\n";
   std::vector<std::vector<std::string>> rows{{"target", "measured", "met"}};
   const bool timed = t.count > 0;
-  rows.push_back({"incremental median per update <= 1 ms", format("%.3f ms", t.median), timed && t.median <= 1.0 ? "yes" : "NO"});
+  // The live-rooms and speed issues' targets (0.5 ms, 5 ms): the 1 ms of the first live version is met long since.
+  rows.push_back({"incremental median per update <= 0.5 ms", format("%.3f ms", t.median), timed && t.median <= 0.5 ? "yes" : "NO"});
   rows.push_back({"incremental p95 per update <= 5 ms", format("%.3f ms", t.p95), timed && t.p95 <= 5.0 ? "yes" : "NO"});
   if (b.count > 0 && p.median > 0.0) {
     const double ratio = b.median / p.median;
