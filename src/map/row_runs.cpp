@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <limits>
 #include <numeric>
 
 #if defined(__SSE2__)
@@ -95,23 +96,6 @@ void intersect_into(std::span<const CellRun> a, std::span<const CellRun> b, std:
   }
 }
 
-// acc ∩ (the runs of row, each shrunk by s cells at both ends), into out.
-void intersect_shrunk(std::span<const CellRun> acc, std::span<const CellRun> row, int s, std::vector<CellRun>& out) {
-  out.clear();
-  std::size_t i = 0, j = 0;
-  while (i < acc.size() && j < row.size()) {
-    const int b = row[j].begin + s, e = row[j].end - s;
-    if (b >= e) {
-      ++j;
-      continue;
-    }
-    const int lo = std::max(acc[i].begin, b), hi = std::min(acc[i].end, e);
-    if (lo < hi) out.push_back({lo, hi});
-    if (acc[i].end < e) ++i;
-    else ++j;
-  }
-}
-
 // Appends run to out, joining it to the last run when they overlap or touch (runs come in order of
 // their first cell).
 void append_joined(std::vector<CellRun>& out, CellRun run) {
@@ -133,6 +117,116 @@ void unite_grown(std::span<const CellRun> acc, std::span<const CellRun> row, int
       append_joined(out, {std::max(0, row[j].begin - g), std::min(w, row[j].end + g)});
       ++j;
     }
+  }
+}
+
+// The runs of one row from the first not yet passed to its end.
+struct RunCursor {
+  const CellRun* at;
+  const CellRun* end;
+};
+
+// Every run of an image shrunk (or grown) by each distinct half width of a disc, at the run's own
+// index of all(): copy(k) holds the runs changed by half_widths[k], row after row as in the image.
+// A run that shrinking removes becomes one ending before every cell (the cursors pass over it), so
+// no row is built.
+class ChangedRuns {
+ public:
+  ChangedRuns(const RowRuns& runs, const std::vector<int>& half_widths, bool shrink) : runs_(runs) {
+    const std::span<const CellRun> all = runs.all();
+    std::vector<std::size_t> copy_of_k;
+    for (std::size_t k = 0; k < half_widths.size(); ++k) {
+      const int c = half_widths[k];
+      if (c != 0 && (k == 0 || c != half_widths[k - 1])) {
+        copies_.emplace_back(all.size());
+        std::vector<CellRun>& copy = copies_.back();
+        for (std::size_t i = 0; i < all.size(); ++i) {
+          const CellRun& r = all[i];
+          copy[i] = !shrink ? CellRun{r.begin - c, r.end + c} : r.end - r.begin > 2 * c ? CellRun{r.begin + c, r.end - c} : kPassed;
+        }
+      }
+      copy_of_k.push_back(c == 0 ? kUnchanged : copies_.size() - 1);
+    }
+    for (const std::size_t c : copy_of_k) of_k_.push_back(c == kUnchanged ? all.data() : copies_[c].data());
+  }
+
+  // Row y's runs changed by half_widths[k].
+  RunCursor row(int k, int y) const {
+    const CellRun* first = of_k_[static_cast<std::size_t>(k)] + runs_.index_of_row(y);
+    return {first, first + runs_.row(y).size()};
+  }
+
+ private:
+  static constexpr std::size_t kUnchanged = std::numeric_limits<std::size_t>::max();  // a half width 0
+  static constexpr CellRun kPassed{std::numeric_limits<int>::min(), std::numeric_limits<int>::min()};
+  const RowRuns& runs_;
+  std::vector<std::vector<CellRun>> copies_;
+  std::vector<const CellRun*> of_k_;
+};
+
+// The intersection of the rows (of shrunk runs), appended to out; the cursors are used up. All
+// rows at once, leapfrogging: the rows are visited in turn, each passing its runs that end by lo; a
+// run beginning after lo moves lo there, and once every row's run holds lo, the cells from lo to
+// the nearest end are in the intersection. No row of partial results is written.
+void intersect_rows(std::vector<RunCursor>& rows, std::vector<CellRun>& out) {
+  const std::size_t k = rows.size();
+  int lo = -1, hi = std::numeric_limits<int>::max();
+  std::size_t holding = 0;  // rows visited in turn since lo last moved, each holding lo
+  for (std::size_t i = 0;; i = i + 1 == k ? 0 : i + 1) {
+    RunCursor& c = rows[i];
+    while (c.at != c.end && c.at->end <= lo) ++c.at;
+    if (c.at == c.end) return;
+    if (c.at->begin > lo) {
+      lo = c.at->begin;
+      hi = c.at->end;
+      holding = 1;
+    } else {
+      hi = std::min(hi, c.at->end);
+      ++holding;
+    }
+    if (holding == k) {
+      out.push_back({lo, hi});
+      lo = hi;
+      hi = std::numeric_limits<int>::max();
+      holding = 0;
+    }
+  }
+}
+
+// The union of the rows (of grown runs) within [0, w), appended to out (runs that meet joined);
+// the cursors are used up. From the leftmost first cell, the rows are visited in turn, each
+// passing its runs that begin within the run so far and extending it; once every row has been
+// visited without extending it, the run is complete, and the rows' next runs give the next one's
+// first cell.
+void unite_rows(std::vector<RunCursor>& rows, int w, std::vector<CellRun>& out) {
+  constexpr int kNone = std::numeric_limits<int>::max();
+  const std::size_t k = rows.size();
+  int lo = kNone;
+  for (const RunCursor& c : rows)
+    if (c.at != c.end) lo = std::min(lo, c.at->begin);
+  while (lo != kNone) {
+    int hi = lo, next = kNone;
+    std::size_t quiet = 0;  // rows visited in turn since hi last moved
+    for (std::size_t i = 0; quiet < k; i = i + 1 == k ? 0 : i + 1) {
+      RunCursor& c = rows[i];
+      bool extended = false;
+      for (; c.at != c.end && c.at->begin <= hi; ++c.at) {
+        if (c.at->end > hi) {
+          hi = c.at->end;
+          extended = true;
+        }
+      }
+      const int after = c.at != c.end ? c.at->begin : kNone;
+      if (extended) {
+        quiet = 1;
+        next = after;
+      } else {
+        ++quiet;
+        next = std::min(next, after);
+      }
+    }
+    out.push_back({std::max(0, lo), std::min(w, hi)});
+    lo = next;
   }
 }
 
@@ -346,24 +440,28 @@ std::vector<int> disc_half_widths(int r) {
 RowRuns erode(const RowRuns& runs, const std::vector<int>& half_widths) {
   const int r = static_cast<int>(half_widths.size()) - 1, h = runs.height();
   const std::vector<int> streak = equal_row_streaks(runs);
+  const ChangedRuns shrunk(runs, half_widths, true);
   RowRuns out(runs.width());
   out.reserve(runs.all().size(), h);
-  std::vector<CellRun> acc, next;
+  std::vector<RunCursor> rows;
+  std::vector<CellRun> row;
   for (int y = 0; y < h; ++y) {
     if (y < r || y + r >= h) {  // an empty row beyond the image is in reach
       out.end_row();
       continue;
     }
     if (repeats(streak, y, r)) {
-      repeat_last_row(out, acc);
+      repeat_last_row(out, row);
       continue;
     }
-    intersect_shrunk(runs.row(y), runs.row(y), half_widths[0], acc);
-    for (int k = 1; k <= r && !acc.empty(); ++k) {
-      intersect_shrunk(acc, runs.row(y - k), half_widths[static_cast<std::size_t>(k)], next);
-      intersect_shrunk(next, runs.row(y + k), half_widths[static_cast<std::size_t>(k)], acc);
+    rows.clear();
+    for (int k = 0; k <= r; ++k) {
+      rows.push_back(shrunk.row(k, y - k));
+      if (k > 0) rows.push_back(shrunk.row(k, y + k));
     }
-    out.append_row(acc);
+    row.clear();
+    intersect_rows(rows, row);
+    out.append_row(row);
   }
   return out;
 }
@@ -371,21 +469,23 @@ RowRuns erode(const RowRuns& runs, const std::vector<int>& half_widths) {
 RowRuns dilate(const RowRuns& runs, const std::vector<int>& half_widths) {
   const int r = static_cast<int>(half_widths.size()) - 1, h = runs.height(), w = runs.width();
   const std::vector<int> streak = equal_row_streaks(runs);
+  const ChangedRuns grown(runs, half_widths, false);
   RowRuns out(w);
   out.reserve(runs.all().size(), h);
-  std::vector<CellRun> acc, next;
+  std::vector<RunCursor> rows;
+  std::vector<CellRun> row;
   for (int y = 0; y < h; ++y) {
     if (repeats(streak, y, r)) {
-      repeat_last_row(out, acc);
+      repeat_last_row(out, row);
       continue;
     }
-    acc.clear();
-    for (int dy = -r; dy <= r; ++dy) {
-      if (y + dy < 0 || y + dy >= h || runs.row(y + dy).empty()) continue;
-      unite_grown(acc, runs.row(y + dy), half_widths[static_cast<std::size_t>(std::abs(dy))], w, next);
-      std::swap(acc, next);
+    rows.clear();
+    for (int dy = std::max(-r, -y); dy <= std::min(r, h - 1 - y); ++dy) {
+      if (!runs.row(y + dy).empty()) rows.push_back(grown.row(std::abs(dy), y + dy));
     }
-    out.append_row(acc);
+    row.clear();
+    unite_rows(rows, w, row);
+    out.append_row(row);
   }
   return out;
 }

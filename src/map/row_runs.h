@@ -78,8 +78,9 @@ std::vector<int> disc_half_widths(int r);
 // Morphology with a structuring element symmetric about its centre whose row dy (|dy| <= r) holds
 // the cells |dx| <= half_widths[|dy|] (a disc_half_widths() disc), as cv::erode and cv::dilate give it
 // with a zero constant border: cells beyond the image are unset. Cost: every output row merges the
-// runs of the 2r+1 rows around it (a row whose rows in reach repeat copies the row before), so it
-// grows with the element's height times the runs, not with its area times the cells.
+// runs of the 2r+1 rows around it at once, each row's runs shrunk or grown beforehand once per
+// distinct half width (a row whose rows in reach repeat copies the row before), so it grows with
+// the element's height times the runs, not with its area times the cells.
 RowRuns erode(const RowRuns& runs, const std::vector<int>& half_widths);
 RowRuns dilate(const RowRuns& runs, const std::vector<int>& half_widths);
 
