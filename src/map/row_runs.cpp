@@ -252,11 +252,6 @@ bool repeats(const std::vector<int>& streak, int y, int reach) {
          streak[static_cast<std::size_t>(y + reach)] >= 2 * reach + 1;
 }
 
-void repeat_last_row(RowRuns& out, std::vector<CellRun>& scratch) {
-  const std::span<const CellRun> last = out.row(out.height() - 1);
-  scratch.assign(last.begin(), last.end());
-  out.append_row(scratch);
-}
 
 // Runs of each row shrunk by n at both ends, except at the image's edges (a set border).
 RowRuns shrink_rows_set_border(const RowRuns& runs, int n) {
@@ -451,7 +446,7 @@ RowRuns erode(const RowRuns& runs, const std::vector<int>& half_widths) {
       continue;
     }
     if (repeats(streak, y, r)) {
-      repeat_last_row(out, row);
+      out.repeat_row();
       continue;
     }
     rows.clear();
@@ -476,7 +471,7 @@ RowRuns dilate(const RowRuns& runs, const std::vector<int>& half_widths) {
   std::vector<CellRun> row;
   for (int y = 0; y < h; ++y) {
     if (repeats(streak, y, r)) {
-      repeat_last_row(out, row);
+      out.repeat_row();
       continue;
     }
     rows.clear();
@@ -501,13 +496,26 @@ RowRuns grow_within(const RowRuns& seed, const RowRuns& within, int steps) {
   const std::vector<int> within_streak = equal_row_streaks(within);
   RowRuns current = seed;
   std::vector<CellRun> around, next;
+  // Rows the last step changed (all, before the first): a row none of whose three rows changed
+  // gives what it gave last time, which is the row as it is.
+  std::vector<unsigned char> changed(static_cast<std::size_t>(h), 1), changed_now(static_cast<std::size_t>(h));
+  const auto near_change = [&](int y) {
+    return changed[static_cast<std::size_t>(y)] || (y > 0 && changed[static_cast<std::size_t>(y) - 1]) ||
+           (y + 1 < h && changed[static_cast<std::size_t>(y) + 1]);
+  };
   for (int step = 0; step < steps; ++step) {
     const std::vector<int> streak = equal_row_streaks(current);
     RowRuns grown(w);
     grown.reserve(current.all().size(), h);
     for (int y = 0; y < h; ++y) {
+      changed_now[static_cast<std::size_t>(y)] = 0;
+      if (!near_change(y)) {
+        grown.append_row(current.row(y));
+        continue;
+      }
       if (repeats(streak, y, 1) && within_streak[static_cast<std::size_t>(y)] >= 1) {
-        repeat_last_row(grown, around);
+        grown.repeat_row();
+        changed_now[static_cast<std::size_t>(y)] = changed_now[static_cast<std::size_t>(y) - 1];
         continue;
       }
       // A row already all of within's cannot grow (a room's rows away from its thin parts).
@@ -523,9 +531,11 @@ RowRuns grow_within(const RowRuns& seed, const RowRuns& within, int steps) {
       }
       next.clear();
       intersect_into(around, within.row(y), next);
+      changed_now[static_cast<std::size_t>(y)] = !same_runs(next, current.row(y));
       grown.append_row(next);
     }
     current = std::move(grown);
+    std::swap(changed, changed_now);
   }
   return current;
 }

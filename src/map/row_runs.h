@@ -35,7 +35,17 @@ class RowRuns {
   void push(CellRun run) { runs_.push_back(run); }
   void end_row() { row_end_.push_back(runs_.size()); }
   void append_row(std::span<const CellRun> runs) {
-    runs_.insert(runs_.end(), runs.begin(), runs.end());
+    // One push per run: a row holds a few runs, for which a range insert's set-up costs more.
+    for (const CellRun& run : runs) runs_.push_back(run);
+    end_row();
+  }
+  // Appends a copy of the last row (there is one).
+  void repeat_row() {
+    const std::size_t first = index_of_row(height() - 1), end = runs_.size();
+    for (std::size_t i = first; i < end; ++i) {
+      const CellRun run = runs_[i];  // a copy: the push may move the runs
+      runs_.push_back(run);
+    }
     end_row();
   }
   void reserve(std::size_t runs, int rows) {
