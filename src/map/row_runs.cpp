@@ -253,6 +253,13 @@ bool repeats(const std::vector<int>& streak, int y, int reach) {
 }
 
 
+// Whether row y + dy (dy != 0) equals the row next to it towards row y. An element's row dy then
+// adds nothing to an erosion or dilation of row y: its half width is at most the nearer row's, so
+// its shrunk runs hold the nearer row's and its grown runs are within them.
+bool repeats_nearer(const std::vector<int>& streak, int y, int dy) {
+  return streak[static_cast<std::size_t>(dy > 0 ? y + dy : y + dy + 1)] >= 1;
+}
+
 // Runs of each row shrunk by n at both ends, except at the image's edges (a set border).
 RowRuns shrink_rows_set_border(const RowRuns& runs, int n) {
   const int w = runs.width();
@@ -450,9 +457,10 @@ RowRuns erode(const RowRuns& runs, const std::vector<int>& half_widths) {
       continue;
     }
     rows.clear();
-    for (int k = 0; k <= r; ++k) {
-      rows.push_back(shrunk.row(k, y - k));
-      if (k > 0) rows.push_back(shrunk.row(k, y + k));
+    rows.push_back(shrunk.row(0, y));
+    for (int k = 1; k <= r; ++k) {
+      if (!repeats_nearer(streak, y, -k)) rows.push_back(shrunk.row(k, y - k));
+      if (!repeats_nearer(streak, y, k)) rows.push_back(shrunk.row(k, y + k));
     }
     row.clear();
     intersect_rows(rows, row);
@@ -476,7 +484,7 @@ RowRuns dilate(const RowRuns& runs, const std::vector<int>& half_widths) {
     }
     rows.clear();
     for (int dy = std::max(-r, -y); dy <= std::min(r, h - 1 - y); ++dy) {
-      if (!runs.row(y + dy).empty()) rows.push_back(grown.row(std::abs(dy), y + dy));
+      if (!runs.row(y + dy).empty() && (dy == 0 || !repeats_nearer(streak, y, dy))) rows.push_back(grown.row(std::abs(dy), y + dy));
     }
     row.clear();
     unite_rows(rows, w, row);
@@ -525,7 +533,7 @@ RowRuns grow_within(const RowRuns& seed, const RowRuns& within, int steps) {
       }
       around.clear();
       for (int dy = -1; dy <= 1; ++dy) {
-        if (y + dy < 0 || y + dy >= h) continue;
+        if (y + dy < 0 || y + dy >= h || (dy != 0 && repeats_nearer(streak, y, dy))) continue;
         unite_grown(around, current.row(y + dy), 1, w, next);
         std::swap(around, next);
       }
