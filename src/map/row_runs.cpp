@@ -280,11 +280,17 @@ RowRuns shrink_rows_set_border(const RowRuns& runs, int n) {
 // its bottom; a window is one block's suffix and the next block's prefix).
 RowRuns intersect_sliding_rows(const RowRuns& runs, int n) {
   const int h = runs.height(), w = runs.width(), block = 2 * n + 1;
+  // A row equal to the one before it leaves a running intersection as it is, and a window whose
+  // rows differ from the last window's only by such repeats has the same intersection.
+  const std::vector<int> streak = equal_row_streaks(runs);
+  const auto repeated = [&streak](int y) { return streak[static_cast<std::size_t>(y)] >= 1; };
   RowRuns prefix(w), suffix_reversed(w);  // the suffix of row y is row h - 1 - y of suffix_reversed
   std::vector<CellRun> row;
   for (int y = 0; y < h; ++y) {
     if (y % block == 0) {
       prefix.append_row(runs.row(y));
+    } else if (repeated(y)) {
+      prefix.repeat_row();
     } else {
       row.clear();
       intersect_into(prefix.row(y - 1), runs.row(y), row);
@@ -294,6 +300,8 @@ RowRuns intersect_sliding_rows(const RowRuns& runs, int n) {
   for (int y = h - 1; y >= 0; --y) {
     if (y % block == block - 1 || y == h - 1) {
       suffix_reversed.append_row(runs.row(y));
+    } else if (repeated(y + 1)) {
+      suffix_reversed.repeat_row();
     } else {
       row.clear();
       intersect_into(runs.row(y), suffix_reversed.row(h - 2 - y), row);
@@ -303,15 +311,16 @@ RowRuns intersect_sliding_rows(const RowRuns& runs, int n) {
   RowRuns out(w);
   for (int y = 0; y < h; ++y) {
     const int lo = std::max(0, y - n), hi = std::min(h - 1, y + n);
-    row.clear();
-    if (lo / block == hi / block) {
+    if (y > 0 && (hi == y - 1 + n || repeated(hi)) && (lo == std::max(0, y - 1 - n) || repeated(lo))) {
+      out.repeat_row();
+    } else if (lo / block == hi / block) {
       // Within one block the window starts it (the image's top) or ends where the image does.
-      const std::span<const CellRun> whole = lo % block == 0 ? prefix.row(hi) : suffix_reversed.row(h - 1 - lo);
-      row.assign(whole.begin(), whole.end());
+      out.append_row(lo % block == 0 ? prefix.row(hi) : suffix_reversed.row(h - 1 - lo));
     } else {
+      row.clear();
       intersect_into(suffix_reversed.row(h - 1 - lo), prefix.row(hi), row);
+      out.append_row(row);
     }
-    out.append_row(row);
   }
   return out;
 }

@@ -21,19 +21,19 @@ class RowRuns {
   explicit RowRuns(int width) : width_(width) {}
 
   int width() const { return width_; }
-  int height() const { return static_cast<int>(row_end_.size()); }
+  int height() const { return static_cast<int>(row_start_.size()) - 1; }
   std::span<const CellRun> row(int y) const {
-    const std::size_t first = y == 0 ? 0 : row_end_[static_cast<std::size_t>(y) - 1];
-    return {runs_.data() + first, row_end_[static_cast<std::size_t>(y)] - first};
+    const std::size_t first = row_start_[static_cast<std::size_t>(y)];
+    return {runs_.data() + first, row_start_[static_cast<std::size_t>(y) + 1] - first};
   }
   // Every run, row after row; index_of_row(y) is the index of row y's first run.
   std::span<const CellRun> all() const { return runs_; }
-  std::size_t index_of_row(int y) const { return y == 0 ? 0 : row_end_[static_cast<std::size_t>(y) - 1]; }
+  std::size_t index_of_row(int y) const { return row_start_[static_cast<std::size_t>(y)]; }
   bool empty() const { return runs_.empty(); }
 
   // Building row after row: runs of the row begun last (sorted, separated), then end_row().
   void push(CellRun run) { runs_.push_back(run); }
-  void end_row() { row_end_.push_back(runs_.size()); }
+  void end_row() { row_start_.push_back(runs_.size()); }
   void append_row(std::span<const CellRun> runs) {
     // One push per run: a row holds a few runs, for which a range insert's set-up costs more.
     for (const CellRun& run : runs) runs_.push_back(run);
@@ -50,13 +50,15 @@ class RowRuns {
   }
   void reserve(std::size_t runs, int rows) {
     runs_.reserve(runs);
-    row_end_.reserve(static_cast<std::size_t>(rows));
+    row_start_.reserve(static_cast<std::size_t>(rows) + 1);
   }
 
  private:
   int width_ = 0;
   std::vector<CellRun> runs_;
-  std::vector<std::size_t> row_end_;  // per row: one past its last run in runs_
+  // Per row: the index of its first run in runs_, and one more: the end of the last row (so a row
+  // is found with no test for the first).
+  std::vector<std::size_t> row_start_ = {0};
 };
 
 // No runs, in an image of the size of like.
