@@ -349,12 +349,7 @@ RowRuns row_by_row(const RowRuns& a, const RowRuns& b, Op op) {
   CV_Assert(a.width() == b.width() && a.height() == b.height());
   RowRuns out(a.width());
   out.reserve(a.all().size() + b.all().size(), a.height());
-  std::vector<CellRun> row;
-  for (int y = 0; y < a.height(); ++y) {
-    row.clear();
-    op(a.row(y), b.row(y), row);
-    out.append_row(row);
-  }
+  for (int y = 0; y < a.height(); ++y) out.add_row([&](std::vector<CellRun>& runs) { op(a.row(y), b.row(y), runs); });
   return out;
 }
 
@@ -418,9 +413,16 @@ void write_mask(const RowRuns& runs, cv::Mat& image, unsigned char set, unsigned
   }
 }
 
-RowRuns unite(const RowRuns& a, const RowRuns& b) { return row_by_row(a, b, unite_into); }
-RowRuns intersect(const RowRuns& a, const RowRuns& b) { return row_by_row(a, b, intersect_into); }
-RowRuns subtract(const RowRuns& a, const RowRuns& b) { return row_by_row(a, b, subtract_into); }
+// The operations as lambdas, not function pointers, so that they are inlined into the row loop.
+RowRuns unite(const RowRuns& a, const RowRuns& b) {
+  return row_by_row(a, b, [](std::span<const CellRun> x, std::span<const CellRun> y, std::vector<CellRun>& out) { unite_into(x, y, out); });
+}
+RowRuns intersect(const RowRuns& a, const RowRuns& b) {
+  return row_by_row(a, b, [](std::span<const CellRun> x, std::span<const CellRun> y, std::vector<CellRun>& out) { intersect_into(x, y, out); });
+}
+RowRuns subtract(const RowRuns& a, const RowRuns& b) {
+  return row_by_row(a, b, [](std::span<const CellRun> x, std::span<const CellRun> y, std::vector<CellRun>& out) { subtract_into(x, y, out); });
+}
 
 RowRuns complement(const RowRuns& a) {
   const int w = a.width();

@@ -39,6 +39,13 @@ class RowRuns {
     for (const CellRun& run : runs) runs_.push_back(run);
     end_row();
   }
+  // Appends the row that fill(std::vector<CellRun>& runs) appends to runs (sorted, separated; the
+  // runs before are the rows before: fill must not read this image's runs).
+  template <class Fill>
+  void add_row(Fill fill) {
+    fill(runs_);
+    end_row();
+  }
   // Appends a copy of the last row (there is one).
   void repeat_row() {
     const std::size_t first = index_of_row(height() - 1), end = runs_.size();
