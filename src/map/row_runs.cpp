@@ -457,7 +457,6 @@ RowRuns erode(const RowRuns& runs, const std::vector<int>& half_widths) {
   RowRuns out(runs.width());
   out.reserve(runs.all().size(), h);
   std::vector<RunCursor> rows;
-  std::vector<CellRun> row;
   for (int y = 0; y < h; ++y) {
     if (y < r || y + r >= h) {  // an empty row beyond the image is in reach
       out.end_row();
@@ -473,9 +472,7 @@ RowRuns erode(const RowRuns& runs, const std::vector<int>& half_widths) {
       if (!repeats_nearer(streak, y, -k)) rows.push_back(shrunk.row(k, y - k));
       if (!repeats_nearer(streak, y, k)) rows.push_back(shrunk.row(k, y + k));
     }
-    row.clear();
-    intersect_rows(rows, row);
-    out.append_row(row);
+    out.add_row([&rows](std::vector<CellRun>& into) { intersect_rows(rows, into); });
   }
   return out;
 }
@@ -487,7 +484,6 @@ RowRuns dilate(const RowRuns& runs, const std::vector<int>& half_widths) {
   RowRuns out(w);
   out.reserve(runs.all().size(), h);
   std::vector<RunCursor> rows;
-  std::vector<CellRun> row;
   for (int y = 0; y < h; ++y) {
     if (repeats(streak, y, r)) {
       out.repeat_row();
@@ -497,9 +493,7 @@ RowRuns dilate(const RowRuns& runs, const std::vector<int>& half_widths) {
     for (int dy = std::max(-r, -y); dy <= std::min(r, h - 1 - y); ++dy) {
       if (!runs.row(y + dy).empty() && (dy == 0 || !repeats_nearer(streak, y, dy))) rows.push_back(grown.row(std::abs(dy), y + dy));
     }
-    row.clear();
-    unite_rows(rows, w, row);
-    out.append_row(row);
+    out.add_row([&rows, w](std::vector<CellRun>& into) { unite_rows(rows, w, into); });
   }
   return out;
 }
