@@ -260,6 +260,28 @@ bool repeats_nearer(const std::vector<int>& streak, int y, int dy) {
   return streak[static_cast<std::size_t>(dy > 0 ? y + dy : y + dy + 1)] >= 1;
 }
 
+// Per row: the next row that differs from the row before it (the start of the next band of equal
+// rows; the height if there is none).
+std::vector<int> next_bands(const std::vector<int>& streak) {
+  const int h = static_cast<int>(streak.size());
+  std::vector<int> next(streak.size(), h);
+  for (int y = h - 2; y >= 0; --y)
+    next[static_cast<std::size_t>(y)] = streak[static_cast<std::size_t>(y) + 1] == 0 ? y + 1 : next[static_cast<std::size_t>(y) + 1];
+  return next;
+}
+
+// Calls visit(dy) for row y and for each row y + dy within r rows and the image that does not
+// repeat its neighbour towards row y (repeats_nearer): the last row of each band of equal rows
+// above and the first of each below, found band by band.
+template <class Visit>
+void for_each_row_adding(const std::vector<int>& streak, const std::vector<int>& next_band, int y, int r, Visit visit) {
+  const auto at = [](const std::vector<int>& v, int i) { return v[static_cast<std::size_t>(i)]; };
+  visit(0);
+  for (int b = y - at(streak, y) - 1; b >= std::max(0, y - r); b -= at(streak, b) + 1) visit(b - y);
+  const int last = std::min(static_cast<int>(streak.size()) - 1, y + r);
+  for (int b = at(next_band, y); b <= last; b = at(next_band, b)) visit(b - y);
+}
+
 // Runs of each row shrunk by n at both ends, except at the image's edges (a set border).
 RowRuns shrink_rows_set_border(const RowRuns& runs, int n) {
   const int w = runs.width();
@@ -452,7 +474,7 @@ std::vector<int> disc_half_widths(int r) {
 
 RowRuns erode(const RowRuns& runs, const std::vector<int>& half_widths) {
   const int r = static_cast<int>(half_widths.size()) - 1, h = runs.height();
-  const std::vector<int> streak = equal_row_streaks(runs);
+  const std::vector<int> streak = equal_row_streaks(runs), next_band = next_bands(streak);
   const ChangedRuns shrunk(runs, half_widths, true);
   RowRuns out(runs.width());
   out.reserve(runs.all().size(), h);
@@ -467,11 +489,7 @@ RowRuns erode(const RowRuns& runs, const std::vector<int>& half_widths) {
       continue;
     }
     rows.clear();
-    rows.push_back(shrunk.row(0, y));
-    for (int k = 1; k <= r; ++k) {
-      if (!repeats_nearer(streak, y, -k)) rows.push_back(shrunk.row(k, y - k));
-      if (!repeats_nearer(streak, y, k)) rows.push_back(shrunk.row(k, y + k));
-    }
+    for_each_row_adding(streak, next_band, y, r, [&](int dy) { rows.push_back(shrunk.row(std::abs(dy), y + dy)); });
     out.add_row([&rows](std::vector<CellRun>& into) { intersect_rows(rows, into); });
   }
   return out;
@@ -479,7 +497,7 @@ RowRuns erode(const RowRuns& runs, const std::vector<int>& half_widths) {
 
 RowRuns dilate(const RowRuns& runs, const std::vector<int>& half_widths) {
   const int r = static_cast<int>(half_widths.size()) - 1, h = runs.height(), w = runs.width();
-  const std::vector<int> streak = equal_row_streaks(runs);
+  const std::vector<int> streak = equal_row_streaks(runs), next_band = next_bands(streak);
   const ChangedRuns grown(runs, half_widths, false);
   RowRuns out(w);
   out.reserve(runs.all().size(), h);
@@ -490,9 +508,9 @@ RowRuns dilate(const RowRuns& runs, const std::vector<int>& half_widths) {
       continue;
     }
     rows.clear();
-    for (int dy = std::max(-r, -y); dy <= std::min(r, h - 1 - y); ++dy) {
-      if (!runs.row(y + dy).empty() && (dy == 0 || !repeats_nearer(streak, y, dy))) rows.push_back(grown.row(std::abs(dy), y + dy));
-    }
+    for_each_row_adding(streak, next_band, y, r, [&](int dy) {
+      if (!runs.row(y + dy).empty()) rows.push_back(grown.row(std::abs(dy), y + dy));
+    });
     out.add_row([&rows, w](std::vector<CellRun>& into) { unite_rows(rows, w, into); });
   }
   return out;
