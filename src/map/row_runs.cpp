@@ -306,7 +306,8 @@ RowRuns intersect_sliding_rows(const RowRuns& runs, int n) {
   // rows differ from the last window's only by such repeats has the same intersection.
   const std::vector<int> streak = equal_row_streaks(runs);
   const auto repeated = [&streak](int y) { return streak[static_cast<std::size_t>(y)] >= 1; };
-  RowRuns prefix(w), suffix_reversed(w);  // the suffix of row y is row h - 1 - y of suffix_reversed
+  RowRuns prefix(w), suffix_reversed(w), out(w);  // the suffix of row y is row h - 1 - y of suffix_reversed
+  for (RowRuns* image : {&prefix, &suffix_reversed, &out}) image->reserve(runs.all().size(), h);
   std::vector<CellRun> row;
   for (int y = 0; y < h; ++y) {
     if (y % block == 0) {
@@ -330,7 +331,6 @@ RowRuns intersect_sliding_rows(const RowRuns& runs, int n) {
       suffix_reversed.append_row(row);
     }
   }
-  RowRuns out(w);
   for (int y = 0; y < h; ++y) {
     const int lo = std::max(0, y - n), hi = std::min(h - 1, y + n);
     if (y > 0 && (hi == y - 1 + n || repeated(hi)) && (lo == std::max(0, y - 1 - n) || repeated(lo))) {
@@ -596,6 +596,7 @@ std::vector<int> run_components(const RowRuns& runs, bool eight_connected, int& 
 
 RowRuns select_runs(const RowRuns& runs, const std::vector<unsigned char>& keep_run) {
   RowRuns out(runs.width());
+  out.reserve(runs.all().size(), runs.height());
   const std::span<const CellRun> all = runs.all();
   for (int y = 0; y < runs.height(); ++y) {
     const std::size_t end = y + 1 < runs.height() ? runs.index_of_row(y + 1) : all.size();
