@@ -98,15 +98,17 @@ std::vector<int> disc_half_widths(int r);
 // the cells |dx| <= half_widths[|dy|] (a disc_half_widths() disc), as cv::erode and cv::dilate give it
 // with a zero constant border: cells beyond the image are unset. Cost: every output row merges the
 // runs of the 2r+1 rows around it at once, each row's runs shrunk or grown beforehand once per
-// distinct half width (a row whose rows in reach repeat copies the row before), so it grows with
-// the element's height times the runs, not with its area times the cells.
+// distinct half width; a row in reach equal to its neighbour towards the middle adds nothing and is
+// left out, and a row whose rows in reach all repeat copies the row before. So it grows with the
+// element's height times the runs at most (with the bands of equal rows in reach on maps drawn
+// square), not with its area times the cells.
 RowRuns erode(const RowRuns& runs, const std::vector<int>& half_widths);
 RowRuns dilate(const RowRuns& runs, const std::vector<int>& half_widths);
 
 // Closing with a (2n+1)-cell square, as cv::dilate with a zero border followed by cv::erode with a
 // set border (the image's edge does not erode). The square is separable, and the sliding unions and
 // intersections over rows are van Herk's (prefixes and suffixes of blocks of 2n+1 rows): about three
-// row operations per row whatever n.
+// row operations per row whatever n, a copy where rows repeat.
 RowRuns close_square(const RowRuns& runs, int n);
 
 // seed grown `steps` times by one cell (8-neighbours) and cut back to within after each step: the
