@@ -176,6 +176,7 @@ RowRuns placed(const RowRuns& runs, const cv::Rect& window, const cv::Size& size
 // The rows of runs within the window, shifted to its columns (runs must lie inside its columns).
 RowRuns cropped(const RowRuns& runs, const cv::Rect& window) {
   RowRuns out(window.width);
+  out.reserve(runs.all().size(), window.height);
   for (int y = window.y; y < window.y + window.height; ++y) {
     for (const CellRun& r : runs.row(y)) out.push({r.begin - window.x, r.end - window.x});
     out.end_row();

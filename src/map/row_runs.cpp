@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <limits>
 #include <numeric>
 
 #if defined(__SSE2__)
@@ -95,23 +96,6 @@ void intersect_into(std::span<const CellRun> a, std::span<const CellRun> b, std:
   }
 }
 
-// acc ∩ (the runs of row, each shrunk by s cells at both ends), into out.
-void intersect_shrunk(std::span<const CellRun> acc, std::span<const CellRun> row, int s, std::vector<CellRun>& out) {
-  out.clear();
-  std::size_t i = 0, j = 0;
-  while (i < acc.size() && j < row.size()) {
-    const int b = row[j].begin + s, e = row[j].end - s;
-    if (b >= e) {
-      ++j;
-      continue;
-    }
-    const int lo = std::max(acc[i].begin, b), hi = std::min(acc[i].end, e);
-    if (lo < hi) out.push_back({lo, hi});
-    if (acc[i].end < e) ++i;
-    else ++j;
-  }
-}
-
 // Appends run to out, joining it to the last run when they overlap or touch (runs come in order of
 // their first cell).
 void append_joined(std::vector<CellRun>& out, CellRun run) {
@@ -133,6 +117,116 @@ void unite_grown(std::span<const CellRun> acc, std::span<const CellRun> row, int
       append_joined(out, {std::max(0, row[j].begin - g), std::min(w, row[j].end + g)});
       ++j;
     }
+  }
+}
+
+// The runs of one row from the first not yet passed to its end.
+struct RunCursor {
+  const CellRun* at;
+  const CellRun* end;
+};
+
+// Every run of an image shrunk (or grown) by each distinct half width of a disc, at the run's own
+// index of all(): copy(k) holds the runs changed by half_widths[k], row after row as in the image.
+// A run that shrinking removes becomes one ending before every cell (the cursors pass over it), so
+// no row is built.
+class ChangedRuns {
+ public:
+  ChangedRuns(const RowRuns& runs, const std::vector<int>& half_widths, bool shrink) : runs_(runs) {
+    const std::span<const CellRun> all = runs.all();
+    std::vector<std::size_t> copy_of_k;
+    for (std::size_t k = 0; k < half_widths.size(); ++k) {
+      const int c = half_widths[k];
+      if (c != 0 && (k == 0 || c != half_widths[k - 1])) {
+        copies_.emplace_back(all.size());
+        std::vector<CellRun>& copy = copies_.back();
+        for (std::size_t i = 0; i < all.size(); ++i) {
+          const CellRun& r = all[i];
+          copy[i] = !shrink ? CellRun{r.begin - c, r.end + c} : r.end - r.begin > 2 * c ? CellRun{r.begin + c, r.end - c} : kPassed;
+        }
+      }
+      copy_of_k.push_back(c == 0 ? kUnchanged : copies_.size() - 1);
+    }
+    for (const std::size_t c : copy_of_k) of_k_.push_back(c == kUnchanged ? all.data() : copies_[c].data());
+  }
+
+  // Row y's runs changed by half_widths[k].
+  RunCursor row(int k, int y) const {
+    const CellRun* first = of_k_[static_cast<std::size_t>(k)] + runs_.index_of_row(y);
+    return {first, first + runs_.row(y).size()};
+  }
+
+ private:
+  static constexpr std::size_t kUnchanged = std::numeric_limits<std::size_t>::max();  // a half width 0
+  static constexpr CellRun kPassed{std::numeric_limits<int>::min(), std::numeric_limits<int>::min()};
+  const RowRuns& runs_;
+  std::vector<std::vector<CellRun>> copies_;
+  std::vector<const CellRun*> of_k_;
+};
+
+// The intersection of the rows (of shrunk runs), appended to out; the cursors are used up. All
+// rows at once, leapfrogging: the rows are visited in turn, each passing its runs that end by lo; a
+// run beginning after lo moves lo there, and once every row's run holds lo, the cells from lo to
+// the nearest end are in the intersection. No row of partial results is written.
+void intersect_rows(std::vector<RunCursor>& rows, std::vector<CellRun>& out) {
+  const std::size_t k = rows.size();
+  int lo = -1, hi = std::numeric_limits<int>::max();
+  std::size_t holding = 0;  // rows visited in turn since lo last moved, each holding lo
+  for (std::size_t i = 0;; i = i + 1 == k ? 0 : i + 1) {
+    RunCursor& c = rows[i];
+    while (c.at != c.end && c.at->end <= lo) ++c.at;
+    if (c.at == c.end) return;
+    if (c.at->begin > lo) {
+      lo = c.at->begin;
+      hi = c.at->end;
+      holding = 1;
+    } else {
+      hi = std::min(hi, c.at->end);
+      ++holding;
+    }
+    if (holding == k) {
+      out.push_back({lo, hi});
+      lo = hi;
+      hi = std::numeric_limits<int>::max();
+      holding = 0;
+    }
+  }
+}
+
+// The union of the rows (of grown runs) within [0, w), appended to out (runs that meet joined);
+// the cursors are used up. From the leftmost first cell, the rows are visited in turn, each
+// passing its runs that begin within the run so far and extending it; once every row has been
+// visited without extending it, the run is complete, and the rows' next runs give the next one's
+// first cell.
+void unite_rows(std::vector<RunCursor>& rows, int w, std::vector<CellRun>& out) {
+  constexpr int kNone = std::numeric_limits<int>::max();
+  const std::size_t k = rows.size();
+  int lo = kNone;
+  for (const RunCursor& c : rows)
+    if (c.at != c.end) lo = std::min(lo, c.at->begin);
+  while (lo != kNone) {
+    int hi = lo, next = kNone;
+    std::size_t quiet = 0;  // rows visited in turn since hi last moved
+    for (std::size_t i = 0; quiet < k; i = i + 1 == k ? 0 : i + 1) {
+      RunCursor& c = rows[i];
+      bool extended = false;
+      for (; c.at != c.end && c.at->begin <= hi; ++c.at) {
+        if (c.at->end > hi) {
+          hi = c.at->end;
+          extended = true;
+        }
+      }
+      const int after = c.at != c.end ? c.at->begin : kNone;
+      if (extended) {
+        quiet = 1;
+        next = after;
+      } else {
+        ++quiet;
+        next = std::min(next, after);
+      }
+    }
+    out.push_back({std::max(0, lo), std::min(w, hi)});
+    lo = next;
   }
 }
 
@@ -158,10 +252,34 @@ bool repeats(const std::vector<int>& streak, int y, int reach) {
          streak[static_cast<std::size_t>(y + reach)] >= 2 * reach + 1;
 }
 
-void repeat_last_row(RowRuns& out, std::vector<CellRun>& scratch) {
-  const std::span<const CellRun> last = out.row(out.height() - 1);
-  scratch.assign(last.begin(), last.end());
-  out.append_row(scratch);
+
+// Whether row y + dy (dy != 0) equals the row next to it towards row y. An element's row dy then
+// adds nothing to an erosion or dilation of row y: its half width is at most the nearer row's, so
+// its shrunk runs hold the nearer row's and its grown runs are within them.
+bool repeats_nearer(const std::vector<int>& streak, int y, int dy) {
+  return streak[static_cast<std::size_t>(dy > 0 ? y + dy : y + dy + 1)] >= 1;
+}
+
+// Per row: the next row that differs from the row before it (the start of the next band of equal
+// rows; the height if there is none).
+std::vector<int> next_bands(const std::vector<int>& streak) {
+  const int h = static_cast<int>(streak.size());
+  std::vector<int> next(streak.size(), h);
+  for (int y = h - 2; y >= 0; --y)
+    next[static_cast<std::size_t>(y)] = streak[static_cast<std::size_t>(y) + 1] == 0 ? y + 1 : next[static_cast<std::size_t>(y) + 1];
+  return next;
+}
+
+// Calls visit(dy) for row y and for each row y + dy within r rows and the image that does not
+// repeat its neighbour towards row y (repeats_nearer): the last row of each band of equal rows
+// above and the first of each below, found band by band.
+template <class Visit>
+void for_each_row_adding(const std::vector<int>& streak, const std::vector<int>& next_band, int y, int r, Visit visit) {
+  const auto at = [](const std::vector<int>& v, int i) { return v[static_cast<std::size_t>(i)]; };
+  visit(0);
+  for (int b = y - at(streak, y) - 1; b >= std::max(0, y - r); b -= at(streak, b) + 1) visit(b - y);
+  const int last = std::min(static_cast<int>(streak.size()) - 1, y + r);
+  for (int b = at(next_band, y); b <= last; b = at(next_band, b)) visit(b - y);
 }
 
 // Runs of each row shrunk by n at both ends, except at the image's edges (a set border).
@@ -184,11 +302,18 @@ RowRuns shrink_rows_set_border(const RowRuns& runs, int n) {
 // its bottom; a window is one block's suffix and the next block's prefix).
 RowRuns intersect_sliding_rows(const RowRuns& runs, int n) {
   const int h = runs.height(), w = runs.width(), block = 2 * n + 1;
-  RowRuns prefix(w), suffix_reversed(w);  // the suffix of row y is row h - 1 - y of suffix_reversed
+  // A row equal to the one before it leaves a running intersection as it is, and a window whose
+  // rows differ from the last window's only by such repeats has the same intersection.
+  const std::vector<int> streak = equal_row_streaks(runs);
+  const auto repeated = [&streak](int y) { return streak[static_cast<std::size_t>(y)] >= 1; };
+  RowRuns prefix(w), suffix_reversed(w), out(w);  // the suffix of row y is row h - 1 - y of suffix_reversed
+  for (RowRuns* image : {&prefix, &suffix_reversed, &out}) image->reserve(runs.all().size(), h);
   std::vector<CellRun> row;
   for (int y = 0; y < h; ++y) {
     if (y % block == 0) {
       prefix.append_row(runs.row(y));
+    } else if (repeated(y)) {
+      prefix.repeat_row();
     } else {
       row.clear();
       intersect_into(prefix.row(y - 1), runs.row(y), row);
@@ -198,24 +323,26 @@ RowRuns intersect_sliding_rows(const RowRuns& runs, int n) {
   for (int y = h - 1; y >= 0; --y) {
     if (y % block == block - 1 || y == h - 1) {
       suffix_reversed.append_row(runs.row(y));
+    } else if (repeated(y + 1)) {
+      suffix_reversed.repeat_row();
     } else {
       row.clear();
       intersect_into(runs.row(y), suffix_reversed.row(h - 2 - y), row);
       suffix_reversed.append_row(row);
     }
   }
-  RowRuns out(w);
   for (int y = 0; y < h; ++y) {
     const int lo = std::max(0, y - n), hi = std::min(h - 1, y + n);
-    row.clear();
-    if (lo / block == hi / block) {
+    if (y > 0 && (hi == y - 1 + n || repeated(hi)) && (lo == std::max(0, y - 1 - n) || repeated(lo))) {
+      out.repeat_row();
+    } else if (lo / block == hi / block) {
       // Within one block the window starts it (the image's top) or ends where the image does.
-      const std::span<const CellRun> whole = lo % block == 0 ? prefix.row(hi) : suffix_reversed.row(h - 1 - lo);
-      row.assign(whole.begin(), whole.end());
+      out.append_row(lo % block == 0 ? prefix.row(hi) : suffix_reversed.row(h - 1 - lo));
     } else {
+      row.clear();
       intersect_into(suffix_reversed.row(h - 1 - lo), prefix.row(hi), row);
+      out.append_row(row);
     }
-    out.append_row(row);
   }
   return out;
 }
@@ -244,12 +371,7 @@ RowRuns row_by_row(const RowRuns& a, const RowRuns& b, Op op) {
   CV_Assert(a.width() == b.width() && a.height() == b.height());
   RowRuns out(a.width());
   out.reserve(a.all().size() + b.all().size(), a.height());
-  std::vector<CellRun> row;
-  for (int y = 0; y < a.height(); ++y) {
-    row.clear();
-    op(a.row(y), b.row(y), row);
-    out.append_row(row);
-  }
+  for (int y = 0; y < a.height(); ++y) out.add_row([&](std::vector<CellRun>& runs) { op(a.row(y), b.row(y), runs); });
   return out;
 }
 
@@ -313,9 +435,16 @@ void write_mask(const RowRuns& runs, cv::Mat& image, unsigned char set, unsigned
   }
 }
 
-RowRuns unite(const RowRuns& a, const RowRuns& b) { return row_by_row(a, b, unite_into); }
-RowRuns intersect(const RowRuns& a, const RowRuns& b) { return row_by_row(a, b, intersect_into); }
-RowRuns subtract(const RowRuns& a, const RowRuns& b) { return row_by_row(a, b, subtract_into); }
+// The operations as lambdas, not function pointers, so that they are inlined into the row loop.
+RowRuns unite(const RowRuns& a, const RowRuns& b) {
+  return row_by_row(a, b, [](std::span<const CellRun> x, std::span<const CellRun> y, std::vector<CellRun>& out) { unite_into(x, y, out); });
+}
+RowRuns intersect(const RowRuns& a, const RowRuns& b) {
+  return row_by_row(a, b, [](std::span<const CellRun> x, std::span<const CellRun> y, std::vector<CellRun>& out) { intersect_into(x, y, out); });
+}
+RowRuns subtract(const RowRuns& a, const RowRuns& b) {
+  return row_by_row(a, b, [](std::span<const CellRun> x, std::span<const CellRun> y, std::vector<CellRun>& out) { subtract_into(x, y, out); });
+}
 
 RowRuns complement(const RowRuns& a) {
   const int w = a.width();
@@ -345,47 +474,44 @@ std::vector<int> disc_half_widths(int r) {
 
 RowRuns erode(const RowRuns& runs, const std::vector<int>& half_widths) {
   const int r = static_cast<int>(half_widths.size()) - 1, h = runs.height();
-  const std::vector<int> streak = equal_row_streaks(runs);
+  const std::vector<int> streak = equal_row_streaks(runs), next_band = next_bands(streak);
+  const ChangedRuns shrunk(runs, half_widths, true);
   RowRuns out(runs.width());
   out.reserve(runs.all().size(), h);
-  std::vector<CellRun> acc, next;
+  std::vector<RunCursor> rows;
   for (int y = 0; y < h; ++y) {
     if (y < r || y + r >= h) {  // an empty row beyond the image is in reach
       out.end_row();
       continue;
     }
     if (repeats(streak, y, r)) {
-      repeat_last_row(out, acc);
+      out.repeat_row();
       continue;
     }
-    intersect_shrunk(runs.row(y), runs.row(y), half_widths[0], acc);
-    for (int k = 1; k <= r && !acc.empty(); ++k) {
-      intersect_shrunk(acc, runs.row(y - k), half_widths[static_cast<std::size_t>(k)], next);
-      intersect_shrunk(next, runs.row(y + k), half_widths[static_cast<std::size_t>(k)], acc);
-    }
-    out.append_row(acc);
+    rows.clear();
+    for_each_row_adding(streak, next_band, y, r, [&](int dy) { rows.push_back(shrunk.row(std::abs(dy), y + dy)); });
+    out.add_row([&rows](std::vector<CellRun>& into) { intersect_rows(rows, into); });
   }
   return out;
 }
 
 RowRuns dilate(const RowRuns& runs, const std::vector<int>& half_widths) {
   const int r = static_cast<int>(half_widths.size()) - 1, h = runs.height(), w = runs.width();
-  const std::vector<int> streak = equal_row_streaks(runs);
+  const std::vector<int> streak = equal_row_streaks(runs), next_band = next_bands(streak);
+  const ChangedRuns grown(runs, half_widths, false);
   RowRuns out(w);
   out.reserve(runs.all().size(), h);
-  std::vector<CellRun> acc, next;
+  std::vector<RunCursor> rows;
   for (int y = 0; y < h; ++y) {
     if (repeats(streak, y, r)) {
-      repeat_last_row(out, acc);
+      out.repeat_row();
       continue;
     }
-    acc.clear();
-    for (int dy = -r; dy <= r; ++dy) {
-      if (y + dy < 0 || y + dy >= h || runs.row(y + dy).empty()) continue;
-      unite_grown(acc, runs.row(y + dy), half_widths[static_cast<std::size_t>(std::abs(dy))], w, next);
-      std::swap(acc, next);
-    }
-    out.append_row(acc);
+    rows.clear();
+    for_each_row_adding(streak, next_band, y, r, [&](int dy) {
+      if (!runs.row(y + dy).empty()) rows.push_back(grown.row(std::abs(dy), y + dy));
+    });
+    out.add_row([&rows, w](std::vector<CellRun>& into) { unite_rows(rows, w, into); });
   }
   return out;
 }
@@ -401,13 +527,26 @@ RowRuns grow_within(const RowRuns& seed, const RowRuns& within, int steps) {
   const std::vector<int> within_streak = equal_row_streaks(within);
   RowRuns current = seed;
   std::vector<CellRun> around, next;
+  // Rows the last step changed (all, before the first): a row none of whose three rows changed
+  // gives what it gave last time, which is the row as it is.
+  std::vector<unsigned char> changed(static_cast<std::size_t>(h), 1), changed_now(static_cast<std::size_t>(h));
+  const auto near_change = [&](int y) {
+    return changed[static_cast<std::size_t>(y)] || (y > 0 && changed[static_cast<std::size_t>(y) - 1]) ||
+           (y + 1 < h && changed[static_cast<std::size_t>(y) + 1]);
+  };
   for (int step = 0; step < steps; ++step) {
     const std::vector<int> streak = equal_row_streaks(current);
     RowRuns grown(w);
     grown.reserve(current.all().size(), h);
     for (int y = 0; y < h; ++y) {
+      changed_now[static_cast<std::size_t>(y)] = 0;
+      if (!near_change(y)) {
+        grown.append_row(current.row(y));
+        continue;
+      }
       if (repeats(streak, y, 1) && within_streak[static_cast<std::size_t>(y)] >= 1) {
-        repeat_last_row(grown, around);
+        grown.repeat_row();
+        changed_now[static_cast<std::size_t>(y)] = changed_now[static_cast<std::size_t>(y) - 1];
         continue;
       }
       // A row already all of within's cannot grow (a room's rows away from its thin parts).
@@ -417,15 +556,17 @@ RowRuns grow_within(const RowRuns& seed, const RowRuns& within, int steps) {
       }
       around.clear();
       for (int dy = -1; dy <= 1; ++dy) {
-        if (y + dy < 0 || y + dy >= h) continue;
+        if (y + dy < 0 || y + dy >= h || (dy != 0 && repeats_nearer(streak, y, dy))) continue;
         unite_grown(around, current.row(y + dy), 1, w, next);
         std::swap(around, next);
       }
       next.clear();
       intersect_into(around, within.row(y), next);
+      changed_now[static_cast<std::size_t>(y)] = !same_runs(next, current.row(y));
       grown.append_row(next);
     }
     current = std::move(grown);
+    std::swap(changed, changed_now);
   }
   return current;
 }
@@ -455,6 +596,7 @@ std::vector<int> run_components(const RowRuns& runs, bool eight_connected, int& 
 
 RowRuns select_runs(const RowRuns& runs, const std::vector<unsigned char>& keep_run) {
   RowRuns out(runs.width());
+  out.reserve(runs.all().size(), runs.height());
   const std::span<const CellRun> all = runs.all();
   for (int y = 0; y < runs.height(); ++y) {
     const std::size_t end = y + 1 < runs.height() ? runs.index_of_row(y + 1) : all.size();

@@ -1,6 +1,7 @@
 // Run-length masks: every operation gives, cell for cell, what OpenCV gives on the image (its
 // morphology with the same structuring element and border, its connected components), on random
 // masks whose widths straddle the 64-cell blocks of the scan and whose rows repeat in places.
+#include <cmath>
 #include <set>
 
 #include <gtest/gtest.h>
@@ -98,6 +99,49 @@ TEST(RowRuns, OpeningIsOpenCVsPixelForPixel) {
       EXPECT_EQ(differing(image_of(erode(runs, disc)), eroded), 0) << "r " << r << ", " << c.rows << " x " << c.cols;
       EXPECT_EQ(differing(image_of(dilate(runs, disc)), dilated), 0) << "r " << r << ", " << c.rows << " x " << c.cols;
       EXPECT_EQ(differing(image_of(dilate(erode(runs, disc), disc)), opened), 0) << "r " << r;
+    }
+  }
+}
+
+// A room with fans of laser rays out of its doors (what exploration maps have at the frontier): rows
+// of many short runs beside one long run, rays of one or two cells that every disc removes.
+cv::Mat ray_fans(cv::RNG& rng, int rows, int cols) {
+  cv::Mat mask = cv::Mat::zeros(rows, cols, CV_8UC1);
+  cv::rectangle(mask, cv::Rect(cols / 4, rows / 4, cols / 2, rows / 2), cv::Scalar(255), cv::FILLED);
+  for (int fan = 0; fan < 4; ++fan) {
+    const cv::Point from(rng.uniform(cols / 4, 3 * cols / 4), rng.uniform(rows / 4, 3 * rows / 4));
+    for (int ray = 0; ray < 40; ++ray) {
+      const double angle = rng.uniform(0.0, 6.2832);
+      const cv::Point to = from + cv::Point(static_cast<int>(cols * std::cos(angle)), static_cast<int>(rows * std::sin(angle)));
+      cv::line(mask, from, to, cv::Scalar(255), rng.uniform(1, 3));
+    }
+  }
+  return mask;
+}
+
+TEST(RowRuns, OpeningOfRayFansIsOpenCVs) {
+  cv::RNG rng(7);
+  for (const int r : {1, 3, 6, 9}) {
+    const cv::Mat element = cv::getStructuringElement(cv::MORPH_ELLIPSE, {2 * r + 1, 2 * r + 1});
+    const std::vector<int> disc = disc_half_widths(r);
+    for (const cv::Size size : {cv::Size(130, 90), cv::Size(300, 200)}) {
+      const cv::Mat mask = ray_fans(rng, size.height, size.width);
+      cv::Mat eroded, dilated, opened;
+      cv::erode(mask, eroded, element, cv::Point(-1, -1), 1, cv::BORDER_CONSTANT, cv::Scalar(0));
+      cv::dilate(mask, dilated, element, cv::Point(-1, -1), 1, cv::BORDER_CONSTANT, cv::Scalar(0));
+      cv::dilate(eroded, opened, element, cv::Point(-1, -1), 1, cv::BORDER_CONSTANT, cv::Scalar(0));
+      const RowRuns runs = runs_of(mask);
+      ASSERT_GT(runs.all().size(), static_cast<std::size_t>(4 * size.height));  // rows of many runs
+      EXPECT_EQ(differing(image_of(erode(runs, disc)), eroded), 0) << "r " << r << ", " << size;
+      EXPECT_EQ(differing(image_of(dilate(runs, disc)), dilated), 0) << "r " << r << ", " << size;
+      EXPECT_EQ(differing(image_of(dilate(erode(runs, disc), disc)), opened), 0) << "r " << r << ", " << size;
+      // The thick part grown back along the rays (the cleaning's margin).
+      cv::Mat grown = eroded.clone();
+      for (int step = 0; step < 3; ++step) {
+        cv::dilate(grown, grown, cv::getStructuringElement(cv::MORPH_RECT, {3, 3}));
+        grown &= mask;
+      }
+      EXPECT_EQ(differing(image_of(grow_within(erode(runs, disc), runs, 3)), grown), 0) << "r " << r << ", " << size;
     }
   }
 }
