@@ -4,6 +4,7 @@
 // (src/segmentation/merging/merge_model.txt, built into the library) is fitted by
 // scripts/train_merge_model.py on people's rooms; another can be loaded from its text.
 #include <cstddef>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -52,6 +53,21 @@ void validate(const MergeModel& model);
 
 // The model shipped with the library.
 const MergeModel& default_merge_model();
+
+// A model as the options hold it: shared by every copy of them and checked once, when made (the
+// shipped model's nine thousand nodes were copied with each copy of the options and walked again by
+// every merging). Converts from a MergeModel, which it validates (throws Error); made empty, it
+// holds the shipped model.
+class SharedMergeModel {
+ public:
+  SharedMergeModel();
+  SharedMergeModel(MergeModel model);  // NOLINT(google-explicit-constructor): options.model = parse_merge_model(text)
+  const MergeModel& operator*() const { return *model_; }
+  const MergeModel* operator->() const { return model_.get(); }
+
+ private:
+  std::shared_ptr<const MergeModel> model_;
+};
 
 // p(one room) for a full feature vector (merge_feature_names() order).
 double merge_probability(const MergeModel& model, const std::vector<double>& features);

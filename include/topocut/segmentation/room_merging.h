@@ -21,7 +21,7 @@ struct RoomMergeOptions {
   // true: rooms merge where the learned model (merge_model.h) finds them one room; false: by the
   // hand rules below (door_like, width steps, furniture). Folding applies either way.
   bool learned = true;
-  MergeModel model = default_merge_model();
+  SharedMergeModel model;  // the shipped model unless given one (merge_model.h)
   // (Learned merging) a corridor continued across a cut is one room whatever the model says: both
   // sides strips of about one thickness (at most 2.5 m), the cut across the narrower, each side at
   // least 3 times as long as thick (--no-corridor-rule: the model decides alone).

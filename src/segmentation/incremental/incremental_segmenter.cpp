@@ -201,12 +201,12 @@ void IncrementalSegmenter::State::guarded(const Work& work) {
   try {
     work();
   } catch (...) {
-    IncrementalOptions keep_options = options;
+    State fresh;
+    fresh.options = options;
     const int keep_next = ledger.next_id();
-    *this = State{};
-    options = keep_options;
-    ledger = IdLedger(keep_next, cv::Mat());
-    rooms.assign(static_cast<std::size_t>(keep_next), RoomState{});
+    fresh.ledger = IdLedger(keep_next, cv::Mat());
+    fresh.rooms.assign(static_cast<std::size_t>(keep_next), RoomState{});
+    *this = std::move(fresh);
     throw;
   }
 }

@@ -34,7 +34,7 @@ namespace {
 
 // The learned criteria's answer: merge above the model's threshold.
 MergeVerdict by_probability(double probability, const RoomMergeOptions& options) {
-  return probability > options.model.threshold ? MergeVerdict::merge(probability) : MergeVerdict::keep(probability);
+  return probability > options.model->threshold ? MergeVerdict::merge(probability) : MergeVerdict::keep(probability);
 }
 
 }  // namespace
@@ -58,7 +58,7 @@ MergeVerdict corridor_continues(MergeCandidate& c) {
   return by_probability(1.0, c.options());
 }
 
-MergeVerdict learned_merge(MergeCandidate& c) { return by_probability(merge_probability(c.options().model, c.features()), c.options()); }
+MergeVerdict learned_merge(MergeCandidate& c) { return by_probability(merge_probability(*c.options().model, c.features()), c.options()); }
 
 MergeVerdict door_cuts_stay(MergeCandidate& c) { return is_door_rule(c.rule()) ? MergeVerdict::keep() : MergeVerdict::abstain(); }
 

@@ -4,9 +4,11 @@
 #include <charconv>
 #include <cmath>
 #include <cstring>
+#include <memory>
 #include <optional>
 #include <sstream>
 #include <string_view>
+#include <utility>
 
 #include "topocut/core/error.h"
 #include "topocut/core/input_file.h"
@@ -285,9 +287,23 @@ void validate(const MergeModel& model) {
   }
 }
 
-const MergeModel& default_merge_model() {
-  static const MergeModel model = parse_merge_model(kShippedMergeModelText);
+namespace {
+
+// The shipped model, parsed on first use and shared by every SharedMergeModel made empty.
+const std::shared_ptr<const MergeModel>& shipped_model() {
+  static const std::shared_ptr<const MergeModel> model = std::make_shared<const MergeModel>(parse_merge_model(kShippedMergeModelText));
   return model;
+}
+
+}  // namespace
+
+const MergeModel& default_merge_model() { return *shipped_model(); }
+
+SharedMergeModel::SharedMergeModel() : model_(shipped_model()) {}
+
+SharedMergeModel::SharedMergeModel(MergeModel model) {
+  validate(model);
+  model_ = std::make_shared<const MergeModel>(std::move(model));
 }
 
 double merge_probability(const MergeModel& model, const std::vector<double>& features) {

@@ -214,8 +214,8 @@ std::map<int, Shared> shared_cuts(RoomGraph& g, int r, bool skip_doors) {
 // without reaching its threshold: above it, the cut stands because a criterion before the model kept
 // it, and that stays.
 bool hangs_across(RoomGraph& g, std::size_t k, const RoomMergeOptions& options) {
-  const double p = merge_probability(options.model, merge_features(g, k, options));
-  return p >= options.hang_probability && p <= options.model.threshold;
+  const double p = merge_probability(*options.model, merge_features(g, k, options));
+  return p >= options.hang_probability && p <= options.model->threshold;
 }
 
 // The room that room r is a bay of (-1: none): a room at least bay_area_ratio^-1 times r's area whose
@@ -286,8 +286,7 @@ double turn(const Point2& a, const Point2& b, const Point2& c) {
 }  // namespace
 
 void validate(const RoomMergeOptions& options) {
-  check_option_rows(room_merge_option_rows(), options);  // each number's range is its row's
-  if (options.learned) validate(options.model);
+  check_option_rows(room_merge_option_rows(), options);  // each number's range is its row's (the model was checked when made)
 }
 
 PolygonWithHoles union_of_pieces(const std::vector<PolygonWithHoles>& pieces) {

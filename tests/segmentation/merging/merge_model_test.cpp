@@ -9,6 +9,7 @@
 #include "topocut/core/error.h"
 #include "topocut/core/input_file.h"
 #include "topocut/segmentation/merge_features.h"
+#include "topocut/segmentation/room_merging.h"
 
 namespace topocut {
 namespace {
@@ -186,6 +187,27 @@ TEST(MergeModel, ValidateRefusesWhatTheParserWouldRefuse) {
   MergeModel lopsided = model;
   lopsided.scale.push_back(1.0);
   EXPECT_THROW(validate(lopsided), Error);
+}
+
+// The options hold a model shared by their copies and checked when made: a model validate() refuses
+// is refused there, so no merging meets it.
+TEST(MergeModel, SharedModelIsCheckedOnceAndSharedByCopies) {
+  const SharedMergeModel shipped;
+  EXPECT_EQ(&*shipped, &default_merge_model());
+  MergeModel model = parse_merge_model(chain_model(2, 3));
+  const SharedMergeModel given = model;
+  const SharedMergeModel copy = given;
+  EXPECT_EQ(&*copy, &*given);
+  EXPECT_EQ(copy->text, model.text);
+  EXPECT_EQ(copy->trees.size(), 2U);
+  model.trees[1][2].yes = 0;  // points backwards
+  EXPECT_THROW(SharedMergeModel{model}, Error);
+  RoomMergeOptions options;
+  EXPECT_EQ(&*options.model, &default_merge_model());
+  options.model = parse_merge_model(chain_model(1, 2));
+  const RoomMergeOptions copied = options;
+  EXPECT_EQ(&*copied.model, &*options.model);
+  EXPECT_NE(&*copied.model, &default_merge_model());
 }
 
 }  // namespace
