@@ -50,6 +50,7 @@ std::vector<IncrementalImageResult> run_incremental_dataset(const std::vector<Da
                          : 0.0;
         for (const UpdateRecord& u : run.updates) {
           r.update_ms.push_back(u.incremental_ms);
+          r.whole_map_update.push_back(u.batch_update ? 1 : 0);
           r.update_wall_ms.push_back(u.incremental_wall_ms);
           if (u.batch_ms >= 0.0) {
             r.batch_update_ms.push_back(u.batch_ms);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <sstream>
+#include <utility>
 
 #include "topocut/core/error.h"
 #include "topocut/core/format.h"
@@ -61,7 +62,7 @@ std::string format_incremental_report(const std::vector<IncrementalImageResult>&
 }
 
 std::string format_incremental_summary(const std::vector<IncrementalImageResult>& results) {
-  std::vector<double> all, wall, batch, paired;
+  std::vector<double> all, wall, batch, paired, windowed, whole;
   std::size_t peak = 0;
   int updates = 0, batch_updates = 0, failed = 0;
   for (const IncrementalImageResult& r : results) {
@@ -73,6 +74,8 @@ std::string format_incremental_summary(const std::vector<IncrementalImageResult>
     wall.insert(wall.end(), r.update_wall_ms.begin(), r.update_wall_ms.end());
     batch.insert(batch.end(), r.batch_update_ms.begin(), r.batch_update_ms.end());
     paired.insert(paired.end(), r.paired_update_ms.begin(), r.paired_update_ms.end());
+    for (std::size_t i = 0; i < r.update_ms.size() && i < r.whole_map_update.size(); ++i)
+      (r.whole_map_update[i] ? whole : windowed).push_back(r.update_ms[i]);
     peak = std::max(peak, r.peak_state_bytes);
     updates += r.updates;
     batch_updates += r.batch_updates;
@@ -84,6 +87,12 @@ std::string format_incremental_summary(const std::vector<IncrementalImageResult>
                   std::to_string(inc.count)});
   rows.push_back({"incremental, wall clock", format("%.3f", inc_wall.median), format("%.3f", inc_wall.p95),
                   format("%.2f", inc_wall.max), std::to_string(inc_wall.count)});
+  // Which updates make the tail: the windowed ones, or those that decomposed the whole map again.
+  for (const auto& [label, times] : {std::pair{"incremental, windowed updates", &windowed}, std::pair{"incremental, whole-map updates", &whole}}) {
+    if (times->empty()) continue;
+    const TimeStatistics t = time_statistics(*times);
+    rows.push_back({label, format("%.3f", t.median), format("%.3f", t.p95), format("%.2f", t.max), std::to_string(t.count)});
+  }
   if (bat.count > 0) {
     rows.push_back({"incremental, compared updates", format("%.3f", pair.median), format("%.3f", pair.p95),
                     format("%.2f", pair.max), std::to_string(pair.count)});
@@ -95,7 +104,7 @@ std::string format_incremental_summary(const std::vector<IncrementalImageResult>
     out += format("\nSpeed-up on the same updates: %.1fx (medians), %.1fx (total time).\n", bat.median / pair.median,
                   bat.total / pair.total);
   }
-  out += format("\n%d updates, %d of them decomposed everything again (first update or wholesale change); "
+  out += format("\n%d updates, %d of them decomposed everything again (the first, a wholesale change, or what a window cannot judge); "
                 "peak segmenter state %.1f MB.\n",
                 updates, batch_updates, static_cast<double>(peak) / (1024.0 * 1024.0));
   if (failed > 0) out += std::to_string(failed) + " images failed.\n";

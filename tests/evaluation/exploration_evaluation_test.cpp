@@ -119,6 +119,30 @@ TEST(ExplorationRun, IncrementalCsvAddsTheUpdateColumns) {
   EXPECT_EQ(std::count(c.begin(), c.end(), ','), 20);
   EXPECT_EQ(c.rfind("broken,", 0), 0u);
 }
+// The pooled table splits the updates into windowed and whole-map ones (which make the tail).
+TEST(ExplorationRun, SummarySplitsWindowedAndWholeMapUpdates) {
+  IncrementalImageResult r;
+  r.incremental.ok = true;
+  r.updates = 4;
+  r.update_ms = {1.0, 3.0, 2.0, 40.0};
+  r.update_wall_ms = r.update_ms;
+  r.whole_map_update = {0, 0, 0, 1};
+  const std::string out = format_incremental_summary({r});
+  const auto row = [&out](const std::string& label) {
+    const std::size_t at = out.find("| " + label + " ");
+    return at == std::string::npos ? std::string() : out.substr(at, out.find('\n', at) - at);
+  };
+  const std::string windowed = row("incremental, windowed updates"), whole = row("incremental, whole-map updates");
+  ASSERT_FALSE(windowed.empty()) << out;
+  ASSERT_FALSE(whole.empty()) << out;
+  EXPECT_NE(windowed.find("| 2.000 "), std::string::npos) << windowed;  // the median of 1, 3 and 2
+  EXPECT_NE(windowed.find("| 3  "), std::string::npos) << windowed;
+  EXPECT_NE(whole.find("| 40.000 "), std::string::npos) << whole;
+  EXPECT_NE(whole.find("| 1  "), std::string::npos) << whole;
+  // Without whole-map updates, no such row.
+  r.whole_map_update = {0, 0, 0, 0};
+  EXPECT_EQ(format_incremental_summary({r}).find("whole-map updates"), std::string::npos);
+}
 TEST(ExplorationFrame, DrawsMapRoomsRobotAndPath) {
   const OccupancyGrid world = offices();
   OccupancyGrid known = world;

@@ -33,6 +33,7 @@ struct IncrementalImageResult {
   std::vector<double> update_wall_ms;  // every update, wall clock
   std::vector<double> batch_update_ms; // compared updates only
   std::vector<double> paired_update_ms;// incremental time of each compared update, same order
+  std::vector<unsigned char> whole_map_update;  // per update (update_ms' order): 1 if it decomposed everything again
   int batch_updates = 0;               // updates on which the segmenter itself fell back to batch
   std::size_t peak_state_bytes = 0;
   StabilityReport stability;
