@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <sstream>
-#include <utility>
 
 #include "topocut/core/error.h"
 #include "topocut/core/format.h"
@@ -83,19 +82,16 @@ std::string format_incremental_summary(const std::vector<IncrementalImageResult>
   const TimeStatistics inc = time_statistics(all), inc_wall = time_statistics(wall), bat = time_statistics(batch),
                        pair = time_statistics(paired);
   std::vector<std::vector<std::string>> rows{{"per update (all images pooled)", "median ms", "p95 ms", "max ms", "updates"}};
-  rows.push_back({"incremental", format("%.3f", inc.median), format("%.3f", inc.p95), format("%.2f", inc.max),
-                  std::to_string(inc.count)});
-  rows.push_back({"incremental, wall clock", format("%.3f", inc_wall.median), format("%.3f", inc_wall.p95),
-                  format("%.2f", inc_wall.max), std::to_string(inc_wall.count)});
+  const auto time_row = [](const std::string& label, const TimeStatistics& t) {
+    return std::vector<std::string>{label, format("%.3f", t.median), format("%.3f", t.p95), format("%.2f", t.max), std::to_string(t.count)};
+  };
+  rows.push_back(time_row("incremental", inc));
+  rows.push_back(time_row("incremental, wall clock", inc_wall));
   // Which updates make the tail: the windowed ones, or those that decomposed the whole map again.
-  for (const auto& [label, times] : {std::pair{"incremental, windowed updates", &windowed}, std::pair{"incremental, whole-map updates", &whole}}) {
-    if (times->empty()) continue;
-    const TimeStatistics t = time_statistics(*times);
-    rows.push_back({label, format("%.3f", t.median), format("%.3f", t.p95), format("%.2f", t.max), std::to_string(t.count)});
-  }
+  if (!windowed.empty()) rows.push_back(time_row("incremental, windowed updates", time_statistics(windowed)));
+  if (!whole.empty()) rows.push_back(time_row("incremental, whole-map updates", time_statistics(whole)));
   if (bat.count > 0) {
-    rows.push_back({"incremental, compared updates", format("%.3f", pair.median), format("%.3f", pair.p95),
-                    format("%.2f", pair.max), std::to_string(pair.count)});
+    rows.push_back(time_row("incremental, compared updates", pair));
     rows.push_back({"batch segment(), same updates", format("%.2f", bat.median), format("%.2f", bat.p95),
                     format("%.2f", bat.max), std::to_string(bat.count)});
   }
