@@ -16,9 +16,6 @@
 
 namespace topocut {
 
-// The text of src/segmentation/merging/merge_model.txt, built into the library (CMakeLists.txt).
-extern const char* const kShippedMergeModelText;
-
 namespace {
 
 // A line read word by word without the stream: words separated by spaces and tabs, each word taken
@@ -285,25 +282,6 @@ void validate(const MergeModel& model) {
     const std::string fault = tree_fault(tree);
     if (!fault.empty()) throw Error("merge model: " + fault);
   }
-}
-
-namespace {
-
-// The shipped model, parsed on first use and shared by every SharedMergeModel made empty.
-const std::shared_ptr<const MergeModel>& shipped_model() {
-  static const std::shared_ptr<const MergeModel> model = std::make_shared<const MergeModel>(parse_merge_model(kShippedMergeModelText));
-  return model;
-}
-
-}  // namespace
-
-const MergeModel& default_merge_model() { return *shipped_model(); }
-
-SharedMergeModel::SharedMergeModel() : model_(shipped_model()) {}
-
-SharedMergeModel::SharedMergeModel(MergeModel model) {
-  validate(model);
-  model_ = std::make_shared<const MergeModel>(std::move(model));
 }
 
 double merge_probability(const MergeModel& model, const std::vector<double>& features) {

@@ -189,6 +189,24 @@ TEST(MergeModel, ValidateRefusesWhatTheParserWouldRefuse) {
   EXPECT_THROW(validate(lopsided), Error);
 }
 
+// The shipped model is compiled into arrays at build time (tools/compile_merge_model.cpp): they hold
+// exactly what parsing its text gives, number for number, so the library answers as if it read the text.
+TEST(MergeModel, TheCompiledShippedModelIsItsParsedText) {
+  const MergeModel& compiled = default_merge_model();
+  const MergeModel parsed = parse_merge_model(compiled.text);
+  EXPECT_GT(parsed.trees.size(), 0U);
+  EXPECT_TRUE(same_trees(compiled, parsed));
+  EXPECT_EQ(compiled.features, parsed.features);
+  const auto same_numbers = [](const std::vector<double>& a, const std::vector<double>& b) {
+    return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(double)) == 0);
+  };
+  EXPECT_TRUE(same_numbers(compiled.mean, parsed.mean));
+  EXPECT_TRUE(same_numbers(compiled.scale, parsed.scale));
+  EXPECT_TRUE(same_numbers(compiled.weight, parsed.weight));
+  EXPECT_TRUE(same_numbers({compiled.bias, compiled.threshold}, {parsed.bias, parsed.threshold}));
+  EXPECT_NO_THROW(validate(compiled));
+}
+
 // The options hold a model shared by their copies and checked when made: a model validate() refuses
 // is refused there, so no merging meets it.
 TEST(MergeModel, SharedModelIsCheckedOnceAndSharedByCopies) {
