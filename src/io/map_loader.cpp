@@ -255,31 +255,48 @@ void decode_map_image(const std::string& bytes, const std::string& source, cv::M
   }
 }
 
+namespace {
+
+// The state map_server gives a cell of this grey level (0-255, mean of the colour channels).
+unsigned char ros_state(float level, const RosMapMetadata& m) {
+  const double v = m.negate ? 255.0 - level : static_cast<double>(level);
+  double p = 0.0;
+  if (m.mode == RosMapMode::kRaw) {
+    const double value = std::round(v);
+    if (value > 100.0) return kUnknown;  // not an occupancy percentage (255 is ROS's unknown)
+    p = value / 100.0;
+  } else {
+    p = (255.0 - v) / 255.0;
+  }
+  if (p > m.occupied_thresh) return kOccupied;
+  if (p < m.free_thresh) return kFree;
+  return kUnknown;
+}
+
+}  // namespace
+
 cv::Mat ros_cells(const cv::Mat& grey, const cv::Mat& transparent, const RosMapMetadata& m) {
   CV_Assert(grey.type() == CV_32FC1 && transparent.type() == CV_8UC1 && grey.size() == transparent.size());
-  cv::Mat cells(grey.size(), CV_8UC1, cv::Scalar(kUnknown));
-  for (int r = 0; r < grey.rows; ++r) {
-    const float* g = grey.ptr<float>(r);
-    const unsigned char* t = transparent.ptr<unsigned char>(r);
-    unsigned char* out = cells.ptr<unsigned char>(r);
-    for (int c = 0; c < grey.cols; ++c) {
-      if (t[c]) continue;
-      const double v = m.negate ? 255.0 - g[c] : static_cast<double>(g[c]);
-      double p = 0.0;
-      if (m.mode == RosMapMode::kRaw) {
-        const double value = std::round(v);
-        if (value > 100.0) continue;  // not an occupancy percentage (255 is ROS's unknown)
-        p = value / 100.0;
-      } else {
-        p = (255.0 - v) / 255.0;
-      }
-      if (p > m.occupied_thresh) {
-        out[c] = kOccupied;
-      } else if (p < m.free_thresh) {
-        out[c] = kFree;
-      }
+  // A grey image's levels are whole numbers: their states are looked up with OpenCV's vectorised
+  // passes instead of worked out per cell (most of the demo map's loading); an image holding other
+  // numbers (a colour image's channel means) takes the formula per cell.
+  cv::Mat lookup(1, 256, CV_8UC1);
+  for (int level = 0; level < 256; ++level) lookup.at<unsigned char>(level) = ros_state(static_cast<float>(level), m);
+  cv::Mat levels, back;
+  grey.convertTo(levels, CV_8U);
+  levels.convertTo(back, CV_32F);
+  cv::Mat cells;
+  if (cv::countNonZero(back != grey) == 0) {
+    cv::LUT(levels, lookup, cells);
+  } else {
+    cells.create(grey.size(), CV_8UC1);
+    for (int r = 0; r < grey.rows; ++r) {
+      const float* g = grey.ptr<float>(r);
+      unsigned char* out = cells.ptr<unsigned char>(r);
+      for (int c = 0; c < grey.cols; ++c) out[c] = ros_state(g[c], m);
     }
   }
+  cells.setTo(kUnknown, transparent);
   return cells;
 }
 

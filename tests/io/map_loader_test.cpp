@@ -62,6 +62,19 @@ TEST(RosSemantics, RawModeReadsPercentages) {
   EXPECT_EQ(ros_row({255, 155, 0}, m), (std::vector<int>{F, O, U}));
 }
 
+// Whole levels are looked up, a colour image's channel means are worked out: both as map_server.
+TEST(RosSemantics, ChannelMeansBetweenLevelsReadAsMapServerReadsThem) {
+  // p = (255 - v) / 255: 205 -> 0.196078 (unk); 205.333 (205, 205, 206) -> 0.19477 (free); 89 -> 0.65098
+  // (occ); 89.667 (89, 90, 90) -> 0.64837 (unk). Alone, the whole ones take the looked-up path.
+  cv::Mat grey = (cv::Mat_<float>(1, 4) << 205.0f, 616.0f / 3.0f, 89.0f, 269.0f / 3.0f);
+  cv::Mat cells = ros_cells(grey, cv::Mat::zeros(grey.size(), CV_8UC1), RosMapMetadata{});
+  EXPECT_EQ(cv::countNonZero(cells != (cv::Mat_<unsigned char>(1, 4) << U, F, O, U)), 0);
+  grey = (cv::Mat_<float>(1, 2) << 205.0f, 89.0f);
+  cells = ros_cells(grey, (cv::Mat_<unsigned char>(1, 2) << 0, 255), RosMapMetadata{});
+  EXPECT_EQ(cv::countNonZero(cells != (cv::Mat_<unsigned char>(1, 2) << U, U)), 0);
+  EXPECT_EQ(ros_row({205, 89}, RosMapMetadata{}), (std::vector<int>{U, O}));
+}
+
 TEST(RosSemantics, TransparentPixelsAreUnknown) {
   cv::Mat grey(1, 2, CV_32FC1, cv::Scalar(255));
   cv::Mat transparent = (cv::Mat_<unsigned char>(1, 2) << 255, 0);
