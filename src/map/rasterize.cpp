@@ -53,10 +53,14 @@ cv::Rect grown_box(const cv::Rect& box, int margin, const cv::Rect& bounds) {
 // paths no longer than it, and a window's value is never below the whole map's. So wherever the
 // square around the cell of half-side its distance lies within the window (or beyond the map's edge),
 // the whole map's transform takes the same steps.
+// reaches, if given, receives for each cell the half-side of the square around it that holds its
+// nearest label in the whole map (from the window's distance, never below the whole map's), -1 when
+// the window holds no label.
 std::vector<int> window_nearest_labels(const cv::Mat& labels, const cv::Rect& window, const std::vector<int>& cells,
-                                       bool as_whole_map) {
+                                       bool as_whole_map, std::vector<int>* reaches = nullptr) {
   const int w = labels.cols;
   const cv::Mat local = labels(window);
+  if (reaches) reaches->assign(cells.size(), -1);
   cv::Mat sources = local <= 0;  // distanceTransform measures distance to zero cells: the labelled ones
   if (cv::countNonZero(sources == 0) == 0) return std::vector<int>(cells.size(), as_whole_map ? -1 : 0);  // no label
   cv::Mat distance, nearest;
@@ -80,6 +84,7 @@ std::vector<int> window_nearest_labels(const cv::Mat& labels, const cv::Rect& wi
     if (!as_whole_map) continue;
     // Above the distance (the float rounds a fixed-point value; a relative 1e-6 covers it).
     const int reach = static_cast<int>(std::floor(distance.at<float>(r, c) * (1.0 + 1e-6))) + 1;
+    if (reaches) (*reaches)[k] = reach;
     if ((left && c - reach < 0) || (top && r - reach < 0) || (right && c + reach >= window.width) ||
         (bottom && r + reach >= window.height))
       found[k] = -1;
@@ -268,9 +273,10 @@ constexpr int kSpreadMargin = 64;  // first margin around groups of spread orpha
 // The labels one transform of the whole map gives orphans too many and too spread for a window
 // each (settled as nearest_labels_in() over the map, in the orphans' order): from the transforms of
 // windows around groups of them, each orphan the whole map might answer otherwise (its distance
-// reaching the window's side) again with twice the margin; the rest in one transform of the whole map
-// once the windows would cost more than it (lab_b: 1,205 orphans at 25-61 cells from a label, their
-// windows a fifth of the map).
+// reaching the window's side) again with windows grown by the largest distance those windows found
+// (a round that cannot fail; twice the margin where a window held no label); the rest in one
+// transform of the whole map once the windows would cost more than it (lab_b: 1,205 orphans at
+// 25-61 cells from a label, their windows a fifth of the map).
 void nearest_labels_spread(const cv::Mat& labels, const std::vector<int>& orphans, std::vector<int>& settled_index,
                            std::vector<int>& settled_label) {
   const cv::Rect all(0, 0, labels.cols, labels.rows);
@@ -285,7 +291,7 @@ void nearest_labels_spread(const cv::Mat& labels, const std::vector<int>& orphan
     for (const std::size_t k : members) cells.push_back(orphans[k]);
     return cells;
   };
-  for (int margin = kSpreadMargin; !left.empty(); margin *= 2) {
+  for (int margin = kSpreadMargin; !left.empty();) {
     std::vector<OrphanGroup> groups;
     if (margin < std::max(labels.rows, labels.cols)) groups = orphan_groups(orphans, left, margin, labels.size());
     double area = 0.0;
@@ -297,17 +303,25 @@ void nearest_labels_spread(const cv::Mat& labels, const std::vector<int>& orphan
     }
     work += area;
     std::vector<std::size_t> unsure;
+    int reach = 0;  // the largest reach of the unsure orphans, -1 if one has none
     for (const OrphanGroup& group : groups) {
-      const std::vector<int> got = window_nearest_labels(labels, group.window, cells_of(group.members), true);
+      std::vector<int> reaches;
+      const std::vector<int> got = window_nearest_labels(labels, group.window, cells_of(group.members), true, &reaches);
       for (std::size_t j = 0; j < got.size(); ++j) {
-        if (got[j] < 0)
+        if (got[j] < 0) {
           unsure.push_back(group.members[j]);
-        else
+          reach = reaches[j] < 0 || reach < 0 ? -1 : std::max(reach, reaches[j]);
+        } else {
           found[group.members[j]] = got[j];
+        }
       }
     }
     std::sort(unsure.begin(), unsure.end());
     left = std::move(unsure);
+    // Windows grown by every unsure orphan's reach hold what the whole map gives each (a reach
+    // bounds the whole map's distance from above), so the next round takes that margin and is the
+    // last; twice the margin only when an orphan's window held no label at all.
+    margin = reach > 0 ? reach : 2 * margin;
   }
   append_settled(orphans, found, settled_index, settled_label);
 }

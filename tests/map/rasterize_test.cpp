@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <limits>
 #include <random>
+#include <vector>
 
 #include <opencv2/imgproc.hpp>
 
@@ -297,6 +298,47 @@ TEST(FillLabels, SpreadSpecksTakeWhatTheWholeMapTransformGives) {
     EXPECT_GT(specks.size(), 100u) << "round " << round;
   }
   EXPECT_GT(farthest, 130.0);  // beyond twice the first windows' margin too
+}
+
+// Clusters of specks whose first window (64 cells around them) holds a label that is not their
+// nearest: one diagonally 60 + 60 cells off, inside the window, while the nearest lies 80 cells
+// straight up, beyond it. The round after takes windows grown by the distance the first found, and
+// each speck still takes what one transform of the whole map gives it (OpenCV's, computed here).
+TEST(FillLabels, SpecksWhoseFirstWindowMissesTheNearestLabelTakeTheWholeMapsAnswer) {
+  const int size = 1300, spacing = 300;
+  cv::Mat free = cv::Mat::zeros(size, size, CV_8UC1);
+  cv::Mat labels = cv::Mat::zeros(size, size, CV_32SC1);
+  std::vector<cv::Point> specks;
+  std::vector<int> above_label;  // by speck: the label straight up from its cluster
+  int station = 0;
+  for (int y = 150; y + 150 < size; y += spacing)
+    for (int x = 150; x + 150 < size; x += spacing, ++station) {
+      const cv::Point diagonal(x + 60, y + 60), above(x, y - 80);
+      labels.at<int>(diagonal) = 1 + station % 3;
+      labels.at<int>(above) = 4 + station % 2;
+      free.at<unsigned char>(diagonal) = free.at<unsigned char>(above) = 255;
+      for (int dy = -12; dy <= 12; dy += 3)  // specks apart, each a blob of its own
+        for (int dx = -12; dx <= 12; dx += 3) {
+          free.at<unsigned char>(y + dy, x + dx) = 255;
+          specks.emplace_back(x + dx, y + dy);
+          above_label.push_back(4 + station % 2);
+        }
+    }
+  const cv::Mat before = labels.clone();
+  cv::Mat distance, nearest;
+  cv::distanceTransform(before <= 0, distance, nearest, cv::DIST_L2, 5, cv::DIST_LABEL_PIXEL);
+  std::vector<int> label_of(static_cast<std::size_t>(size) * size + 1, 0);
+  for (int r = 0; r < size; ++r)
+    for (int c = 0; c < size; ++c)
+      if (before.at<int>(r, c) > 0) label_of[static_cast<std::size_t>(nearest.at<int>(r, c))] = before.at<int>(r, c);
+  fill_free_space_labels(labels, free);
+  std::size_t beyond_first_window = 0;
+  for (std::size_t i = 0; i < specks.size(); ++i) {
+    EXPECT_EQ(labels.at<int>(specks[i]), label_of[static_cast<std::size_t>(nearest.at<int>(specks[i]))]) << "at " << specks[i];
+    beyond_first_window += labels.at<int>(specks[i]) == above_label[i];
+  }
+  EXPECT_GT(beyond_first_window, specks.size() / 4);
+  EXPECT_LT(beyond_first_window, specks.size());  // and some take the diagonal one
 }
 
 TEST(FillLabels, SpecksWithoutAnyLabelStayUnlabelled) {
