@@ -251,6 +251,26 @@ TEST(FillLabels, SpecksTakeTheNearestLabelFirstInRingOrder) {
   }
 }
 
+// The reference for specks beyond the ring search: the label and distance one distance transform
+// of the whole map (OpenCV's) gives every cell.
+struct WholeMapNearest {
+  cv::Mat label, distance;  // CV_32SC1, CV_32FC1
+};
+
+WholeMapNearest whole_map_nearest(const cv::Mat& labels) {
+  WholeMapNearest out;
+  cv::Mat nearest;
+  cv::distanceTransform(labels <= 0, out.distance, nearest, cv::DIST_L2, 5, cv::DIST_LABEL_PIXEL);
+  std::vector<int> label_of(labels.total() + 1, 0);
+  for (int r = 0; r < labels.rows; ++r)
+    for (int c = 0; c < labels.cols; ++c)
+      if (labels.at<int>(r, c) > 0) label_of[static_cast<std::size_t>(nearest.at<int>(r, c))] = labels.at<int>(r, c);
+  out.label.create(labels.size(), CV_32SC1);
+  for (int r = 0; r < labels.rows; ++r)
+    for (int c = 0; c < labels.cols; ++c) out.label.at<int>(r, c) = label_of[static_cast<std::size_t>(nearest.at<int>(r, c))];
+  return out;
+}
+
 // Many specks more than 24 cells from every label (beyond the ring search), spread so that a window
 // each would cost more than the map: each takes the label that one distance transform of the whole
 // map gives it (OpenCV's, computed here), whatever windows the library solves them in. Labels on even
@@ -284,16 +304,11 @@ TEST(FillLabels, SpreadSpecksTakeWhatTheWholeMapTransformGives) {
         specks.push_back(p + cv::Point(1, 0));
       }
     }
-    cv::Mat distance, nearest;
-    cv::distanceTransform(before <= 0, distance, nearest, cv::DIST_L2, 5, cv::DIST_LABEL_PIXEL);
-    std::vector<int> label_of(static_cast<std::size_t>(h) * w + 1, 0);
-    for (int r = 0; r < h; ++r)
-      for (int c = 0; c < w; ++c)
-        if (before.at<int>(r, c) > 0) label_of[static_cast<std::size_t>(nearest.at<int>(r, c))] = before.at<int>(r, c);
+    const WholeMapNearest reference = whole_map_nearest(before);
     fill_free_space_labels(labels, free);
     for (const cv::Point& p : specks) {
-      EXPECT_EQ(labels.at<int>(p), label_of[static_cast<std::size_t>(nearest.at<int>(p))]) << "round " << round << " at " << p;
-      farthest = std::max(farthest, static_cast<double>(distance.at<float>(p)));
+      EXPECT_EQ(labels.at<int>(p), reference.label.at<int>(p)) << "round " << round << " at " << p;
+      farthest = std::max(farthest, static_cast<double>(reference.distance.at<float>(p)));
     }
     EXPECT_GT(specks.size(), 100u) << "round " << round;
   }
@@ -324,17 +339,11 @@ TEST(FillLabels, SpecksWhoseFirstWindowMissesTheNearestLabelTakeTheWholeMapsAnsw
           above_label.push_back(4 + station % 2);
         }
     }
-  const cv::Mat before = labels.clone();
-  cv::Mat distance, nearest;
-  cv::distanceTransform(before <= 0, distance, nearest, cv::DIST_L2, 5, cv::DIST_LABEL_PIXEL);
-  std::vector<int> label_of(static_cast<std::size_t>(size) * size + 1, 0);
-  for (int r = 0; r < size; ++r)
-    for (int c = 0; c < size; ++c)
-      if (before.at<int>(r, c) > 0) label_of[static_cast<std::size_t>(nearest.at<int>(r, c))] = before.at<int>(r, c);
+  const WholeMapNearest reference = whole_map_nearest(labels);
   fill_free_space_labels(labels, free);
   std::size_t beyond_first_window = 0;
   for (std::size_t i = 0; i < specks.size(); ++i) {
-    EXPECT_EQ(labels.at<int>(specks[i]), label_of[static_cast<std::size_t>(nearest.at<int>(specks[i]))]) << "at " << specks[i];
+    EXPECT_EQ(labels.at<int>(specks[i]), reference.label.at<int>(specks[i])) << "at " << specks[i];
     beyond_first_window += labels.at<int>(specks[i]) == above_label[i];
   }
   EXPECT_GT(beyond_first_window, specks.size() / 4);
