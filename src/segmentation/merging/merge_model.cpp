@@ -4,11 +4,9 @@
 #include <charconv>
 #include <cmath>
 #include <cstring>
-#include <memory>
 #include <optional>
 #include <sstream>
 #include <string_view>
-#include <utility>
 
 #include "topocut/core/error.h"
 #include "topocut/core/input_file.h"
