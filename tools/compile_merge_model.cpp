@@ -11,7 +11,7 @@
 #include <iostream>
 #include <sstream>
 #include <string>
-#include <system_error>
+#include <stdexcept>
 #include <vector>
 
 #include "topocut/segmentation/merge_model.h"
