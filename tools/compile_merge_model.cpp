@@ -5,15 +5,14 @@
 //
 //   compile_merge_model MODEL.txt OUT.cpp
 #include <charconv>
-#include <cstdio>
 #include <exception>
-#include <fstream>
 #include <iostream>
 #include <sstream>
 #include <string>
-#include <stdexcept>
 #include <vector>
 
+#include "topocut/core/input_file.h"
+#include "topocut/io/atomic_file.h"
 #include "topocut/segmentation/merge_model.h"
 
 namespace {
@@ -66,19 +65,9 @@ int main(int argc, char** argv) {
     return 2;
   }
   try {
-    std::ifstream in(argv[1], std::ios::binary);
-    if (!in) throw std::runtime_error(std::string("cannot read ") + argv[1]);
-    std::ostringstream text;
-    text << in.rdbuf();
-    const std::string code = source(topocut::parse_merge_model(text.str()));
-    // Written whole under another name and renamed, so that a stopped build leaves no half file.
-    const std::string partial = std::string(argv[2]) + ".partial";
-    {
-      std::ofstream out(partial, std::ios::binary | std::ios::trunc);
-      out << code;
-      if (!out.flush()) throw std::runtime_error("cannot write " + partial);
-    }
-    if (std::rename(partial.c_str(), argv[2]) != 0) throw std::runtime_error(std::string("cannot write ") + argv[2]);
+    const std::string text = topocut::read_input_file(argv[1], "merge model", topocut::kMaxMergeModelBytes);
+    // Written whole and renamed over the target, so that a stopped build leaves no half file.
+    topocut::write_file_atomically(argv[2], source(topocut::parse_merge_model(text)));
   } catch (const std::exception& e) {
     std::cerr << "compile_merge_model: " << argv[1] << ": " << e.what() << "\n";
     return 1;

@@ -252,7 +252,6 @@ bool repeats(const std::vector<int>& streak, int y, int reach) {
          streak[static_cast<std::size_t>(y + reach)] >= 2 * reach + 1;
 }
 
-
 // Whether row y + dy (dy != 0) equals the row next to it towards row y. An element's row dy then
 // adds nothing to an erosion or dilation of row y: its half width is at most the nearer row's, so
 // its shrunk runs hold the nearer row's and its grown runs are within them.
