@@ -569,8 +569,8 @@ void bind_segmentation(py::module_& m) {
          "Raises ValueError on a bad file or option.").c_str());
   py::class_<PyIncremental>(m, "IncrementalSegmenter",
                             "Segments a growing map update by update, reusing the rooms a change did not reach (ids stay).\n"
-                            "Keywords: segment()'s options and absorb_area, absorb_fraction, batch_fraction, neighbours_across_doors,\n"
-                            "neighbours_across_cuts, speck_size, split_after, merge_after.")
+                            "Keywords: segment()'s options and absorb_area, absorb_fraction, absorb_across_rooms, batch_fraction,\n"
+                            "neighbours_across_doors, neighbours_across_cuts, speck_size, split_after, merge_after.")
       .def(py::init<py::kwargs>())
       .def("update", [](const py::object& self, const py::array& grid, double resolution, const py::object& origin,
                         py::kwargs kwargs) { return state_of<PyIncremental>(self).update(grid, resolution, origin, std::move(kwargs)); },

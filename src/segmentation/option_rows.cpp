@@ -155,6 +155,8 @@ const std::vector<OptionRow<IncrementalOptions>>& incremental_option_rows() {
       field_row("absorb-area", "M2", OptionRange::kArea, &I::absorb_area,
                 "a new blob touching one room joins it undecomposed within this allowance (m²)"),
       field_row("absorb-fraction", "F", kNonNegative, &I::absorb_fraction, "or within this share of the room's area"),
+      switch_row("absorb-across-rooms", &I::absorb_across_rooms,
+                 "a new blob where rooms already meet is absorbed too, each cell to the nearest of them"),
       field_row("speck-size", "M", OptionRange::kLengthOrZero, &I::speck_size,
                 "obstacle specks up to this size (metres) leave a room undecomposed"),
       field_row("split-after", "N", OptionRange::kCount, &I::split_after,

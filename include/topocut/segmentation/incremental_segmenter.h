@@ -41,6 +41,12 @@ struct IncrementalOptions {
   // drift from what batch would do.
   double absorb_area = 0.25;
   double absorb_fraction = 0.1;
+  // A newly free blob (the floor only grew) of at most absorb_area that touches several rooms where
+  // they already meet is absorbed too, its cells taking the nearest of them, charged to every one's
+  // allowance: a few cells seen at the cut between two rooms, which a long-range laser adds with
+  // most scans, cannot join rooms that were apart (a door seen open: those do not meet there and
+  // are decomposed). false: such a blob is always decomposed with every room it touches.
+  bool absorb_across_rooms = true;
   // The same for obstacle specks: a blob of changed cells (free cells lost and the binarized cells
   // around them) within one room whose bounding box fits in speck_size × speck_size metres, and
   // around which the room's cells stay one piece (so it cannot split the room), leaves the room

@@ -6,6 +6,7 @@
 #include <climits>
 #include <cmath>
 #include <cstring>
+#include <numeric>
 #include <set>
 #include <vector>
 
@@ -556,7 +557,8 @@ std::vector<Blob> IncrementalSegmenter::State::find_blobs(const ChangeMask& mask
 }
 
 // Decides per blob: its cells only take the nearest room's label (the floor did not change), join
-// the one room it touches (small, the floor only grew), or be decomposed again together with every
+// the one room it touches (small, the floor only grew), take the nearest of the rooms it touches
+// (small, the floor only grew, where they already meet), or be decomposed again together with every
 // room it touches. A room's allowance is charged as its blobs are seen, so later blobs see what
 // earlier ones took.
 Region IncrementalSegmenter::State::choose_region(std::vector<Blob>& blobs) {
@@ -577,15 +579,18 @@ Region IncrementalSegmenter::State::choose_region(std::vector<Blob>& blobs) {
   for (std::size_t b = 1; b < blobs.size(); ++b) {
     Blob& blob = blobs[b];
     if (!blob.floor) continue;  // labels only (label_from_nearest_rooms)
-    // A blob touching several rooms joins them (a door seen open): always decomposed again.
-    blob.absorb = blob.touched.size() == 1 && (!blob.structural || is_speck(blob));
-    if (blob.absorb) {
-      RoomState& room = rooms[static_cast<std::size_t>(blob.touched.front())];
-      const long long taken = blob.gained + blob.lost;
-      blob.absorb = room.absorbed + taken <= allowance(room);
-      if (blob.absorb) room.absorbed += taken;  // counted now, so later blobs see it
+    // A blob touching several rooms may join them (a door seen open): decomposed again unless it is
+    // small and lies where they already meet.
+    const long long taken = blob.gained + blob.lost;
+    blob.across = blob.touched.size() > 1 && options.absorb_across_rooms && !blob.structural && taken <= absorb_cells &&
+                  rooms_meet_at(blob);
+    blob.absorb = blob.across || (blob.touched.size() == 1 && (!blob.structural || is_speck(blob)));
+    for (const int id : blob.touched) {
+      const RoomState& room = rooms[static_cast<std::size_t>(id)];
+      blob.absorb = blob.absorb && room.absorbed + taken <= allowance(room);
     }
     if (blob.absorb) {
+      for (const int id : blob.touched) rooms[static_cast<std::size_t>(id)].absorbed += taken;  // later blobs see it
       ++report.absorbed_blobs;
     } else {
       for (const int id : blob.touched) add_region(id);
@@ -593,6 +598,44 @@ Region IncrementalSegmenter::State::choose_region(std::vector<Blob>& blobs) {
     }
   }
   return region;
+}
+
+// Whether the rooms a blob touches already meet next to it (cells of two of them side by side within
+// a cell of its box), all of them linked so: the blob then lies at their cut and cannot connect rooms
+// that were apart.
+bool IncrementalSegmenter::State::rooms_meet_at(const Blob& blob) const {
+  const std::vector<int>& ids = blob.touched;
+  std::vector<int> group(ids.size());
+  std::iota(group.begin(), group.end(), 0);
+  const auto find = [&group](int i) {
+    while (group[static_cast<std::size_t>(i)] != i) i = group[static_cast<std::size_t>(i)] = group[static_cast<std::size_t>(group[static_cast<std::size_t>(i)])];
+    return i;
+  };
+  const auto index = [&ids](int id) {
+    const auto it = std::find(ids.begin(), ids.end(), id);
+    return it == ids.end() ? -1 : static_cast<int>(it - ids.begin());
+  };
+  std::size_t groups = ids.size();
+  const auto link = [&](int a, int b) {
+    if (a == b || a <= 0 || b <= 0) return;
+    const int i = index(a), j = index(b);
+    if (i < 0 || j < 0) return;
+    const int gi = find(i), gj = find(j);
+    if (gi == gj) return;
+    group[static_cast<std::size_t>(std::max(gi, gj))] = std::min(gi, gj);
+    --groups;
+  };
+  const cv::Mat& labels = result.labels;
+  const cv::Rect around = grown(blob.box, 1, labels.size());
+  for (int r = around.y; r < around.y + around.height && groups > 1; ++r) {
+    const int* row = labels.ptr<int>(r);
+    const int* below = r + 1 < around.y + around.height ? labels.ptr<int>(r + 1) : nullptr;
+    for (int c = around.x; c < around.x + around.width; ++c) {
+      if (c + 1 < around.x + around.width) link(row[c], row[c + 1]);
+      if (below) link(row[c], below[c]);
+    }
+  }
+  return groups == 1;
 }
 
 // A speck: a small structural blob of one room (an obstacle seen inside it, a wall's edge moved by
@@ -645,7 +688,7 @@ std::vector<int> IncrementalSegmenter::State::apply_changes(const ChangeMask& ma
       } else if (d[c] & kGained) {
         ++free_cells;
         const Blob& blob = blobs[static_cast<std::size_t>(b[c - active.x])];
-        if (!blob.floor) {
+        if (!blob.floor || blob.across) {
           l[c] = 0;
           nearest.push_back((window.y + r) * labels.cols + window.x + c);
           continue;

@@ -83,6 +83,7 @@ struct Blob {
   std::vector<int> touched;
   cv::Rect box;
   bool absorb = false;
+  bool across = false;  // absorbed across the rooms it touches: each cell takes the nearest room
 };
 
 // Region::member values: how a room of the region takes part in its decomposition.
@@ -241,6 +242,7 @@ struct IncrementalSegmenter::State {
   bool local_input(const OccupancyGrid& grid, const cv::Rect& changed, ChangeMask& mask, SegmentationInput& input) const;
   std::vector<Blob> find_blobs(const ChangeMask& mask, cv::Mat& blob_of) const;
   Region choose_region(std::vector<Blob>& blobs);
+  bool rooms_meet_at(const Blob& blob) const;
   bool is_speck(const Blob& blob) const;
   std::vector<int> apply_changes(const ChangeMask& mask, const cv::Mat& blob_of, const std::vector<Blob>& blobs,
                                  std::vector<int>& nearest);

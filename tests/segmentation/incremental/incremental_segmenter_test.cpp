@@ -434,6 +434,54 @@ TEST(IncrementalSegmenter, ASpeckThatWouldSplitARoomIsDecomposed) {
             second.labels.at<int>(plan.rooms[0].y + 1, plan.rooms[0].x + 1));
 }
 
+TEST(IncrementalSegmenter, CellsSeenWhereTwoRoomsMeetTakeTheNearestWithoutADecomposition) {
+  // Door 0 widened by two columns of its jamb (8 cells, next to room 0 and the corridor, which meet
+  // across the door): absorbed, each new cell labelled, no room decomposed again and no other label
+  // moved. Switched off, both rooms are decomposed again.
+  const FloorPlan plan = floor_plan();
+  const cv::Rect jamb(plan.doors[0].x - 2, plan.doors[0].y, 2, plan.doors[0].height);
+  const OccupancyGrid wider = with_cells(plan.world, {jamb}, kFree);
+  IncrementalSegmenter segmenter;
+  const Segmentation before = segmenter.update(plan.world);
+  const Segmentation after = segmenter.update(wider);
+  expect_valid(wider, after);
+  EXPECT_EQ(segmenter.last_update().kind, IncrementalUpdateReport::Kind::kIncremental);
+  EXPECT_EQ(segmenter.last_update().redecomposed_rooms, 0);
+  EXPECT_EQ(segmenter.last_update().absorbed_blobs, 1);
+  cv::Mat differs = before.labels != after.labels;
+  differs(jamb).setTo(0);
+  EXPECT_EQ(cv::countNonZero(differs), 0);
+  EXPECT_EQ(after.rooms.size(), before.rooms.size());
+  const int room = before.labels.at<int>(plan.rooms[0].y + 1, plan.rooms[0].x + 1);
+  const int corridor = before.labels.at<int>(plan.corridor.y + 1, plan.corridor.x + 1);
+  for (int r = jamb.y; r < jamb.y + jamb.height; ++r) {
+    for (int c = jamb.x; c < jamb.x + jamb.width; ++c) {
+      const int id = after.labels.at<int>(r, c);
+      EXPECT_TRUE(id == room || id == corridor) << "cell " << c << "," << r << " took room " << id;
+    }
+  }
+
+  IncrementalOptions apart;
+  apart.absorb_across_rooms = false;
+  IncrementalSegmenter strict(apart);
+  strict.update(plan.world);
+  expect_valid(wider, strict.update(wider));
+  EXPECT_GE(strict.last_update().redecomposed_rooms, 2);
+}
+
+TEST(IncrementalSegmenter, ADoorSeenBetweenRoomsThatDidNotMeetIsDecomposed) {
+  // An opening of 4 x 8 cells in the wall between rooms 0 and 1, which met only through the corridor:
+  // small enough to absorb, but it may join them, so both are decomposed again.
+  const FloorPlan plan = floor_plan();
+  const cv::Rect opening(plan.rooms[0].br().x, plan.rooms[0].y + 50, plan.rooms[1].x - plan.rooms[0].br().x, 8);
+  const OccupancyGrid opened = with_cells(plan.world, {opening}, kFree);
+  IncrementalSegmenter segmenter;
+  segmenter.update(plan.world);
+  expect_valid(opened, segmenter.update(opened));
+  EXPECT_EQ(segmenter.last_update().absorbed_blobs, 0);
+  EXPECT_GE(segmenter.last_update().redecomposed_rooms, 2);
+}
+
 // A 10 m x 5 m hall whose middle narrows, update after update, into a 0.6 m door: wall stubs from
 // both long walls, one cell thicker each time (too long to be specks).
 OccupancyGrid narrowing_hall(int thickness) {
