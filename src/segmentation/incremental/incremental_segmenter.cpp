@@ -605,24 +605,20 @@ Region IncrementalSegmenter::State::choose_region(std::vector<Blob>& blobs) {
 // that were apart.
 bool IncrementalSegmenter::State::rooms_meet_at(const Blob& blob) const {
   const std::vector<int>& ids = blob.touched;
-  std::vector<int> group(ids.size());
-  std::iota(group.begin(), group.end(), 0);
-  const auto find = [&group](int i) {
-    while (group[static_cast<std::size_t>(i)] != i) i = group[static_cast<std::size_t>(i)] = group[static_cast<std::size_t>(group[static_cast<std::size_t>(i)])];
+  std::vector<std::size_t> group(ids.size());  // union-find over the touched rooms
+  std::iota(group.begin(), group.end(), std::size_t{0});
+  const auto find = [&group](std::size_t i) {
+    while (group[i] != i) i = group[i] = group[group[i]];
     return i;
-  };
-  const auto index = [&ids](int id) {
-    const auto it = std::find(ids.begin(), ids.end(), id);
-    return it == ids.end() ? -1 : static_cast<int>(it - ids.begin());
   };
   std::size_t groups = ids.size();
   const auto link = [&](int a, int b) {
     if (a == b || a <= 0 || b <= 0) return;
-    const int i = index(a), j = index(b);
-    if (i < 0 || j < 0) return;
-    const int gi = find(i), gj = find(j);
+    const auto i = std::find(ids.begin(), ids.end(), a), j = std::find(ids.begin(), ids.end(), b);
+    if (i == ids.end() || j == ids.end()) return;
+    const std::size_t gi = find(static_cast<std::size_t>(i - ids.begin())), gj = find(static_cast<std::size_t>(j - ids.begin()));
     if (gi == gj) return;
-    group[static_cast<std::size_t>(std::max(gi, gj))] = std::min(gi, gj);
+    group[std::max(gi, gj)] = std::min(gi, gj);
     --groups;
   };
   const cv::Mat& labels = result.labels;
