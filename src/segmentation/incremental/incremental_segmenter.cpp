@@ -582,9 +582,9 @@ Region IncrementalSegmenter::State::choose_region(std::vector<Blob>& blobs) {
     // A blob touching several rooms may join them (a door seen open): decomposed again unless it is
     // small and lies where they already meet.
     const long long taken = blob.gained + blob.lost;
-    blob.across = blob.touched.size() > 1 && options.absorb_across_rooms && !blob.structural && taken <= absorb_cells &&
-                  rooms_meet_at(blob);
-    blob.absorb = blob.across || (blob.touched.size() == 1 && (!blob.structural || is_speck(blob)));
+    const bool across = blob.touched.size() > 1 && options.absorb_across_rooms && !blob.structural &&
+                        taken <= absorb_cells && rooms_meet_at(blob);
+    blob.absorb = across || (blob.touched.size() == 1 && (!blob.structural || is_speck(blob)));
     for (const int id : blob.touched) {
       const RoomState& room = rooms[static_cast<std::size_t>(id)];
       blob.absorb = blob.absorb && room.absorbed + taken <= allowance(room);
@@ -684,7 +684,8 @@ std::vector<int> IncrementalSegmenter::State::apply_changes(const ChangeMask& ma
       } else if (d[c] & kGained) {
         ++free_cells;
         const Blob& blob = blobs[static_cast<std::size_t>(b[c - active.x])];
-        if (!blob.floor || blob.across) {
+        // An absorbed blob of several rooms (where they meet): each cell takes the nearest of them.
+        if (!blob.floor || (blob.absorb && blob.touched.size() > 1)) {
           l[c] = 0;
           nearest.push_back((window.y + r) * labels.cols + window.x + c);
           continue;

@@ -82,8 +82,7 @@ struct Blob {
   bool structural = false;  // floor lost or reshaped: the touched rooms must be decomposed again
   std::vector<int> touched;
   cv::Rect box;
-  bool absorb = false;
-  bool across = false;  // absorbed across the rooms it touches: each cell takes the nearest room
+  bool absorb = false;  // with several rooms touched: absorbed where they meet, each cell to the nearest
 };
 
 // Region::member values: how a room of the region takes part in its decomposition.
