@@ -387,6 +387,20 @@ SpeckCase speck_case(const cv::Rect& speck) {
   return {plan, with_cells(plan.world, {speck}, kOccupied)};
 }
 
+// The last update (after, of grid) took in one blob of changed cells without decomposing a room: a
+// valid windowed result whose labels outside changed are before's, with as many rooms.
+void expect_one_blob_absorbed(const IncrementalSegmenter& segmenter, const OccupancyGrid& grid, const Segmentation& before,
+                              const Segmentation& after, const cv::Rect& changed) {
+  expect_valid(grid, after);
+  EXPECT_EQ(segmenter.last_update().kind, IncrementalUpdateReport::Kind::kIncremental);
+  EXPECT_EQ(segmenter.last_update().redecomposed_rooms, 0);
+  EXPECT_EQ(segmenter.last_update().absorbed_blobs, 1);
+  cv::Mat differs = before.labels != after.labels;
+  differs(changed).setTo(0);
+  EXPECT_EQ(cv::countNonZero(differs), 0);
+  EXPECT_EQ(after.rooms.size(), before.rooms.size());
+}
+
 TEST(IncrementalSegmenter, ASpeckInsideARoomChangesNoOtherLabel) {
   // A cupboard of 8 x 7 cells (larger than the cleaning's obstacle specks, which stay floor) in the
   // middle of room 0: its cells leave the room, no room is decomposed again and every other label
@@ -397,15 +411,8 @@ TEST(IncrementalSegmenter, ASpeckInsideARoomChangesNoOtherLabel) {
   IncrementalSegmenter segmenter;
   const Segmentation before = segmenter.update(c.plan.world);
   const Segmentation after = segmenter.update(c.with_speck);
-  expect_valid(c.with_speck, after);
-  EXPECT_EQ(segmenter.last_update().kind, IncrementalUpdateReport::Kind::kIncremental);
-  EXPECT_EQ(segmenter.last_update().redecomposed_rooms, 0);
-  EXPECT_EQ(segmenter.last_update().absorbed_blobs, 1);
-  cv::Mat differs = before.labels != after.labels;
-  differs(speck).setTo(0);
-  EXPECT_EQ(cv::countNonZero(differs), 0);
+  expect_one_blob_absorbed(segmenter, c.with_speck, before, after, speck);
   EXPECT_EQ(cv::countNonZero(after.labels(speck)), 0);
-  EXPECT_EQ(after.rooms.size(), before.rooms.size());
 
   IncrementalOptions every_speck;
   every_speck.speck_size = 0.0;
@@ -444,14 +451,7 @@ TEST(IncrementalSegmenter, CellsSeenWhereTwoRoomsMeetTakeTheNearestWithoutADecom
   IncrementalSegmenter segmenter;
   const Segmentation before = segmenter.update(plan.world);
   const Segmentation after = segmenter.update(wider);
-  expect_valid(wider, after);
-  EXPECT_EQ(segmenter.last_update().kind, IncrementalUpdateReport::Kind::kIncremental);
-  EXPECT_EQ(segmenter.last_update().redecomposed_rooms, 0);
-  EXPECT_EQ(segmenter.last_update().absorbed_blobs, 1);
-  cv::Mat differs = before.labels != after.labels;
-  differs(jamb).setTo(0);
-  EXPECT_EQ(cv::countNonZero(differs), 0);
-  EXPECT_EQ(after.rooms.size(), before.rooms.size());
+  expect_one_blob_absorbed(segmenter, wider, before, after, jamb);
   const int room = before.labels.at<int>(plan.rooms[0].y + 1, plan.rooms[0].x + 1);
   const int corridor = before.labels.at<int>(plan.corridor.y + 1, plan.corridor.x + 1);
   for (int r = jamb.y; r < jamb.y + jamb.height; ++r) {
