@@ -118,6 +118,9 @@ const std::vector<OptionRow<OpenRoomOptions>>& open_room_option_rows() {
       field_row("open-floor-share", "F", OptionRange::kShare, &O::floor_share,
                 "open rooms: or less than this share of the room's cells is floor, the rest rays the cleaning removed "
                 "(a fan seen through an opening; 0: off)"),
+      field_row("open-fan-ray-share", "F", OptionRange::kShare, &O::fan_ray_share,
+                "open rooms: a labelled room still open that the labelling gave at least this share of its cells beyond its "
+                "polygon (rays the cleaning removed) is a fan seen through a gap, no room (0: off)"),
   };
   return rows;
 }

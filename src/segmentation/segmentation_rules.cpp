@@ -88,6 +88,17 @@ std::vector<SegmentationRule> make_rules() {
   labelling.label = [](const OccupancyGrid& grid, const PieceSet& rooms, const SegmentOptions& o, const std::vector<CellSpan>& spans) {
     return rooms_from_pieces(grid, rooms, spans, o.labels);
   };
+  SegmentationRule fans = stage_rule(
+      "open-fans", RuleStage::kLeaveOut,
+      "labelled rooms still bounded mostly by never-seen space that hold the rays of a fan (at least --open-fan-ray-share "
+      "of their cells; a drawn plan has none) are no rooms: their cells get no room",
+      "keep open rooms that hold a fan's rays (a fan seen through a window or an open door) as rooms",
+      [](const SegmentOptions& o) { return o.open_rooms.enabled && o.open_rooms.fan_ray_share > 0.0; },
+      [](SegmentOptions& o) { o.open_rooms.fan_ray_share = 0.0; });
+  fans.leave_out = [](Segmentation& s, const OccupancyGrid& grid, const cv::Mat& floor, const SegmentOptions& o) {
+    leave_out_fans(s, grid, floor, o.open_rooms);
+  };
+  fans.whole_map = true;  // the windowed update gives every free cell of its region a room
   SegmentationRule door_flags = unswitched_rule("door-flags", RuleStage::kDescribe, "a passage at most --door-width wide is a door", always);
   door_flags.describe = [](Segmentation& s, const SegmentOptions& o) {
     for (Passage& passage : s.passages) passage.door = is_door(passage, o.doors);
@@ -200,6 +211,7 @@ std::vector<SegmentationRule> make_rules() {
                    return join_open_rooms(rooms, grid, o.open_rooms, spans);
                  }),
       std::move(labelling),
+      std::move(fans),
       std::move(door_flags),
       std::move(room_kinds),
   };
@@ -227,6 +239,7 @@ std::string to_string(RuleStage stage) {
     case RuleStage::kMerge: return "merge";
     case RuleStage::kRooms: return "rooms";
     case RuleStage::kLabel: return "label";
+    case RuleStage::kLeaveOut: return "leave-out";
     case RuleStage::kDescribe: return "describe";
   }
   return "?";

@@ -400,6 +400,10 @@ Segmentation segment_input(const SegmentationInput& input, const SegmentOptions&
     if (!starts(rule, RuleStage::kLabel, options)) continue;
     segmentation = rule.label(cells, pieces, options, spans);
   }
+  for (const SegmentationRule& rule : rules) {
+    if ((rule.whole_map && !to_label.empty()) || !starts(rule, RuleStage::kLeaveOut, options)) continue;
+    rule.leave_out(segmentation, cells, input.floor, options);
+  }
   timer.next(SegmentStage::kOutputs);
   // Once the rooms are final, whatever decided them; a window labelling only part of its cells
   // leaves the whole-map rows to its caller (its rooms' neighbours lie partly beyond it).

@@ -81,8 +81,9 @@ TEST(PipelineRows, EachRowHasTheFunctionOfItsStageAndNoOther) {
     EXPECT_FALSE(rule.judge && rule.on_component);
     EXPECT_EQ(rule.stage == RuleStage::kRooms, static_cast<bool>(rule.on_rooms));
     EXPECT_EQ(rule.stage == RuleStage::kLabel, static_cast<bool>(rule.label));
+    EXPECT_EQ(rule.stage == RuleStage::kLeaveOut, static_cast<bool>(rule.leave_out));
     EXPECT_EQ(rule.stage == RuleStage::kDescribe, static_cast<bool>(rule.describe));
-    EXPECT_TRUE(!rule.whole_map || rule.stage == RuleStage::kDescribe);
+    EXPECT_TRUE(!rule.whole_map || rule.stage == RuleStage::kDescribe || rule.stage == RuleStage::kLeaveOut);
   }
 }
 

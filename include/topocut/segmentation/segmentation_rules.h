@@ -42,6 +42,7 @@ enum class RuleStage {
   kMerge,      // judge, on_component: on each component's pieces: the merges, their criteria, the folding
   kRooms,      // on_rooms: on all rooms of the map, after kMerge
   kLabel,      // label: the rooms' labels and passages
+  kLeaveOut,   // leave_out: labelled rooms no person draws taken out (their cells no room's)
   kDescribe,   // describe: on the labelled rooms
 };
 
@@ -82,6 +83,9 @@ struct SegmentationRule {
   std::function<Segmentation(const OccupancyGrid& grid, const PieceSet& rooms, const SegmentOptions&,
                              const std::vector<CellSpan>& spans)>
       label;
+  // kLeaveOut: the labelled rooms of grid without those no person draws; floor: the free space the
+  // rooms were made of (CV_8UC1, the grid's size), so that the rays the labelling gave a room are seen.
+  std::function<void(Segmentation&, const OccupancyGrid& grid, const cv::Mat& floor, const SegmentOptions&)> leave_out;
   // kDescribe: what is measured on the labelled rooms; whole_map: only where every room is labelled
   // whole (a window labelling part of its cells leaves it to its caller).
   std::function<void(Segmentation&, const SegmentOptions&)> describe;
@@ -92,7 +96,7 @@ struct SegmentationRule {
 const std::vector<SegmentationRule>& segmentation_rules();
 
 // The stage's name as the rule list shows it: "clean", "outline", "cut", "decompose", "merge", "rooms",
-// "label" or "describe".
+// "label", "leave-out" or "describe".
 std::string to_string(RuleStage stage);
 
 // One row as the rule list shows it.

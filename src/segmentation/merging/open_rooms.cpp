@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <map>
 #include <numeric>
+#include <vector>
 
 #include "topocut/core/error.h"
 #include "topocut/map/label_runs.h"
@@ -134,7 +136,95 @@ PieceSet join_open_rooms(const PieceSet& rooms, const OccupancyGrid& grid, const
   return changed ? joined(rooms, parent, dropped) : rooms;
 }
 
+// The bounding box of the cells of each room whose flag is set (index: the room's id), in one pass;
+// throws Error on a label outside [0, flagged.size()). (A room's floor may lie far beyond its polygon:
+// the floor of a piece the open-rooms row left out goes to the nearest room.)
+std::vector<cv::Rect> flagged_boxes(const cv::Mat& labels, const std::vector<char>& flagged) {
+  std::vector<cv::Rect> boxes(flagged.size());
+  for (int r = 0; r < labels.rows; ++r) {
+    const int* label = labels.ptr<int>(r);
+    for (int c = 0; c < labels.cols; ++c) {
+      const std::size_t id = static_cast<std::size_t>(label[c]);  // a negative label wraps round to a large one
+      if (id >= flagged.size()) throw Error("leave_out_fans: a label is no room of the segmentation");
+      if (!flagged[id]) continue;
+      int end = c + 1;
+      while (end < labels.cols && label[end] == label[c]) ++end;
+      boxes[id] |= cv::Rect(c, r, end - c, 1);
+      c = end - 1;
+    }
+  }
+  return boxes;
+}
+
+// Whether each of segmentation's rooms (index: its id) is a fan (leave_out_fans()). The rays are read
+// off the rooms' areas, so that a map whose rooms hold none costs no pass over the grid; the outlines
+// only when some room holds rays enough, read in a window around those rooms.
+std::vector<char> fan_rooms(const Segmentation& segmentation, const OccupancyGrid& grid, const cv::Mat& floor,
+                            const OpenRoomOptions& options) {
+  const cv::Mat& labels = segmentation.labels;
+  std::vector<char> candidate(segmentation.rooms.size() + 1, 0), fan(segmentation.rooms.size() + 1, 0);
+  double largest = 0.0;
+  for (const Room& room : segmentation.rooms) {
+    largest = std::max(largest, room.labelled_area);
+    candidate[static_cast<std::size_t>(room.id)] =
+        room.labelled_area >= options.min_area && room.labelled_area - room.area >= options.fan_ray_share * room.labelled_area;
+  }
+  if (std::find(candidate.begin(), candidate.end(), 1) == candidate.end()) return fan;
+  // Wide enough that every cell an outline reads (a cell beyond its floor, band cells on) lies inside,
+  // with the occupied cells within wall_reach of it.
+  const int band = static_cast<int>(std::lround(options.wall_band / grid.resolution));
+  const int margin = band + static_cast<int>(std::ceil(options.wall_reach / grid.resolution)) + 4;
+  cv::Rect window;
+  for (const cv::Rect& box : flagged_boxes(labels, candidate)) window |= box;
+  window = cv::Rect(window.x - margin, window.y - margin, window.width + 2 * margin, window.height + 2 * margin) &
+           cv::Rect(0, 0, labels.cols, labels.rows);
+  cv::Mat on_floor(window.size(), CV_32SC1, cv::Scalar(0));
+  labels(window).copyTo(on_floor, floor(window));
+  const LabelRuns outlines = label_runs(on_floor);
+  const std::map<int, RoomExtent> extents = room_extents(outlines);
+  const cv::Mat cells = grid.cells(window);
+  const cv::Mat walls = wall_cells(cells, options.wall_reach / grid.resolution + 1e-9);
+  for (const Room& room : segmentation.rooms) {
+    const auto extent = extents.find(room.id);
+    if (!candidate[static_cast<std::size_t>(room.id)] || extent == extents.end()) continue;  // no floor: no outline to judge
+    const RoomOutline outline = room_outline(outlines, room.id, extent->second.box, cells, walls, band);
+    fan[static_cast<std::size_t>(room.id)] =
+        outline.open(options.share, options.ragged_share) && (!outline.neighbours.empty() || 2.0 * room.labelled_area < largest);
+  }
+  return fan;
+}
+
 }  // namespace
+
+void leave_out_fans(Segmentation& segmentation, const OccupancyGrid& grid, const cv::Mat& floor, const OpenRoomOptions& options) {
+  validate(options);
+  if (!options.enabled || options.fan_ray_share <= 0.0 || segmentation.rooms.empty() || !has_occupied_cell(grid.cells)) return;
+  if (floor.size() != segmentation.labels.size() || grid.cells.size() != segmentation.labels.size())
+    throw Error("leave_out_fans: the labels, the floor and the grid differ in size");
+  for (std::size_t k = 0; k < segmentation.rooms.size(); ++k)
+    if (segmentation.rooms[k].id != static_cast<int>(k) + 1) throw Error("leave_out_fans: the rooms are not numbered 1..N in order");
+  const std::vector<char> fan = fan_rooms(segmentation, grid, floor, options);
+  if (std::find(fan.begin(), fan.end(), 1) == fan.end()) return;
+  std::vector<int> new_id(fan.size(), 0);
+  std::vector<Room> rooms;
+  for (Room& room : segmentation.rooms) {
+    if (fan[static_cast<std::size_t>(room.id)]) continue;
+    const int id = static_cast<int>(rooms.size()) + 1;
+    new_id[static_cast<std::size_t>(room.id)] = id;
+    room.id = id;
+    rooms.push_back(std::move(room));
+  }
+  segmentation.rooms = std::move(rooms);
+  for (int r = 0; r < segmentation.labels.rows; ++r) {  // every label checked by fan_rooms()
+    int* label = segmentation.labels.ptr<int>(r);
+    for (int c = 0; c < segmentation.labels.cols; ++c) label[c] = new_id[static_cast<std::size_t>(label[c])];
+  }
+  std::erase_if(segmentation.passages, [&](Passage& p) {
+    p.room_a = new_id[static_cast<std::size_t>(p.room_a)];
+    p.room_b = new_id[static_cast<std::size_t>(p.room_b)];
+    return p.room_a == 0 || p.room_b == 0;
+  });
+}
 
 PieceSet join_open_rooms(const PieceSet& rooms, const OccupancyGrid& grid, const OpenRoomOptions& options) {
   return join_open_rooms(rooms, grid, options, nullptr);

@@ -147,5 +147,104 @@ TEST(OpenRooms, OffWithoutWallsOrWhenSwitchedOffAndBadOptions) {
   EXPECT_THROW(join_open_rooms(plan.rooms, plan.grid, bad), Error);
 }
 
+// Plan's corridor (room 1) and the room off its side (room 2) labelled, as the labelling leaves them:
+// the room's floor its piece, and, with rays, the rays the cleaning removed beyond its ragged far side
+// (one every other row, 25 cells long, free cells off the floor) given to it too. fan_first numbers the
+// room before the corridor.
+struct Labelled {
+  Segmentation segmentation;
+  OccupancyGrid grid;
+  cv::Mat floor;
+  int fan = 2, corridor = 1;
+  Labelled(unsigned char beyond_room, bool rays, bool fan_first = false) {
+    Plan plan(true, beyond_room);
+    grid = plan.grid;
+    const cv::Mat pieces = rasterize_polygons(plan.rooms.pieces, grid.cells.size());
+    floor = pieces > 0;
+    if (fan_first) std::swap(fan, corridor);
+    segmentation.labels = cv::Mat(grid.cells.size(), CV_32SC1, cv::Scalar(0));
+    segmentation.labels.setTo(corridor, pieces == 1);
+    segmentation.labels.setTo(fan, pieces == 2);
+    for (int row = 129 - 84; rays && row <= 129 - 46; row += 2) {
+      grid.cells(cv::Rect(87, row, 25, 1)).setTo(kFree);
+      segmentation.labels(cv::Rect(87, row, 25, 1)).setTo(fan);
+    }
+    segmentation.resolution = kRes;
+    for (int id = 1; id <= 2; ++id) {
+      Room room;
+      room.id = id;
+      room.area = cv::countNonZero((segmentation.labels == id) & floor) * kRes * kRes;  // the piece's cells
+      room.labelled_area = cv::countNonZero(segmentation.labels == id) * kRes * kRes;
+      room.centroid = {static_cast<double>(id), 0.0};  // tells the rooms apart once renumbered
+      for (const Point2& v : plan.rooms.pieces[id == corridor ? 0 : 1].outer) room.polygon.outer.push_back(grid_to_world(grid, v));
+      segmentation.rooms.push_back(room);
+    }
+    segmentation.passages.push_back(Passage{1, 2, Segment2{{2.25, 0.25}, {2.25, 2.25}}, 2.0, false, CutRule::kDoor});
+  }
+};
+
+// A room still open once labelled that holds a fan's rays is no room: its cells, rays and all, get 0;
+// the corridor keeps its cells and becomes room 1 whatever its number was; the passage goes.
+TEST(OpenRooms, AnOpenRoomHoldingTheRaysOfAFanIsLeftOut) {
+  for (const bool fan_first : {false, true}) {
+    SCOPED_TRACE(fan_first);
+    Labelled fan(kUnknown, true, fan_first);
+    const cv::Mat corridor_cells = fan.segmentation.labels == fan.corridor;
+    const Point2 corridor_tag = fan.segmentation.rooms[static_cast<std::size_t>(fan.corridor - 1)].centroid;
+    const Room& room = fan.segmentation.rooms[static_cast<std::size_t>(fan.fan - 1)];
+    ASSERT_GT(room.labelled_area - room.area, 0.02 * room.labelled_area);
+    leave_out_fans(fan.segmentation, fan.grid, fan.floor);
+    ASSERT_EQ(fan.segmentation.rooms.size(), 1u);
+    EXPECT_EQ(fan.segmentation.rooms[0].id, 1);
+    EXPECT_EQ(fan.segmentation.rooms[0].centroid, corridor_tag);
+    cv::Mat expected;
+    corridor_cells.convertTo(expected, CV_32S, 1.0 / 255.0);
+    EXPECT_EQ(cv::countNonZero(fan.segmentation.labels != expected), 0);  // the corridor 1, all else 0
+    EXPECT_TRUE(fan.segmentation.passages.empty());
+  }
+}
+
+// A drawn plan's room has no rays; a walled room with rays is no fan; the rule switched off or
+// without walls changes nothing; a floor of another size is an error.
+TEST(OpenRooms, RoomsWithoutRaysWalledRoomsAndTheRuleOffStay) {
+  const auto kept = [](Labelled labelled, const OpenRoomOptions& options = {}) {
+    const cv::Mat before = labelled.segmentation.labels.clone();
+    leave_out_fans(labelled.segmentation, labelled.grid, labelled.floor, options);
+    return labelled.segmentation.rooms.size() == 2u && labelled.segmentation.passages.size() == 1u &&
+           cv::countNonZero(labelled.segmentation.labels != before) == 0;
+  };
+  EXPECT_TRUE(kept(Labelled(kUnknown, false)));
+  EXPECT_TRUE(kept(Labelled(kOccupied, true)));
+  OpenRoomOptions off;
+  off.fan_ray_share = 0.0;
+  EXPECT_TRUE(kept(Labelled(kUnknown, true), off));
+  OpenRoomOptions disabled;
+  disabled.enabled = false;
+  EXPECT_TRUE(kept(Labelled(kUnknown, true), disabled));
+  // A share of rays just above the room's own (the cells the labelling gave it beyond its piece).
+  const Labelled fan(kUnknown, true);
+  const cv::Mat room = fan.segmentation.labels == fan.fan;
+  OpenRoomOptions more;
+  more.fan_ray_share = 0.01 + static_cast<double>(cv::countNonZero(room & (fan.floor == 0))) / cv::countNonZero(room);
+  ASSERT_LT(more.fan_ray_share, 0.5);
+  EXPECT_TRUE(kept(fan, more));
+  more.fan_ray_share -= 0.02;
+  EXPECT_FALSE(kept(fan, more));
+  Labelled no_walls(kUnknown, true);
+  no_walls.grid.cells.setTo(kUnknown, no_walls.grid.cells == kOccupied);
+  EXPECT_TRUE(kept(no_walls));
+  Labelled wrong(kUnknown, true);
+  EXPECT_THROW(leave_out_fans(wrong.segmentation, wrong.grid, wrong.floor(cv::Rect(0, 0, 10, 10)).clone()), Error);
+  Labelled stray(kUnknown, true);
+  stray.segmentation.labels.at<int>(0, 0) = 7;  // no room of the segmentation
+  EXPECT_THROW(leave_out_fans(stray.segmentation, stray.grid, stray.floor), Error);
+  Labelled unnumbered(kUnknown, true);
+  unnumbered.segmentation.rooms[1].id = 5;
+  EXPECT_THROW(leave_out_fans(unnumbered.segmentation, unnumbered.grid, unnumbered.floor), Error);
+  OpenRoomOptions bad;
+  bad.fan_ray_share = 1.5;
+  EXPECT_THROW(leave_out_fans(wrong.segmentation, wrong.grid, wrong.floor, bad), Error);
+}
+
 }  // namespace
 }  // namespace topocut
