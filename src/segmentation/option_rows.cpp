@@ -121,6 +121,9 @@ const std::vector<OptionRow<OpenRoomOptions>>& open_room_option_rows() {
       field_row("open-fan-ray-share", "F", OptionRange::kShare, &O::fan_ray_share,
                 "open rooms: a labelled room still open that the labelling gave at least this share of its cells beyond its "
                 "polygon (rays the cleaning removed) is a fan seen through a gap, no room (0: off)"),
+      field_row("open-fan-inside-share", "F", OptionRange::kShare, &O::fan_inside_share,
+                "open rooms: unless more than this share of its floor lies inside the building (walls closed across "
+                "--inside-closing): a walled room holding the fan seen through its door (1: leave every fan out)"),
   };
   return rows;
 }

@@ -34,6 +34,10 @@ struct OpenRoomOptions {
   // on Bormann's octagon hall drawn in grey, against 3-8 % on the fans of robot-made maps) is a fan seen
   // through a gap in a wall: no room at all (leave_out_fans()).
   double fan_ray_share = 0.02;  // [0, 1]; 0: off
+  // A fan with more than fan_inside_share of its floor inside the building (leave_out_fans()) is a walled
+  // room that holds the fan seen through its door, and stays: the fans outside robot-made offices have
+  // at most 6 % of their floor inside, a hall or a small room by a home's front door with its fan 26-58 %.
+  double fan_inside_share = 0.25;  // [0, 1]; 1: every fan is left out
 };
 
 // The fields of OpenRoomOptions as options: name, unit, range, help (option_table.h).
@@ -61,10 +65,12 @@ PieceSet join_open_rooms(const PieceSet& rooms, const OccupancyGrid& grid, const
 // rooms that are fans of rays seen through a gap: open by their floor's outline as join_open_rooms()
 // judges rooms, labelled_area at least area + fan_ray_share * labelled_area (Room: the cells the
 // labelling gave them beyond their polygon, the rays), and beside another room or under half the
-// largest room's labelled area (not the building itself). Their cells get 0,
+// largest room's labelled area (not the building itself), and with at most fan_inside_share of their
+// floor inside the building (not reached from the grid's edge once the occupied cells are closed across
+// gaps up to inside_closing metres, the cleaning's FreeSpaceCleaningOptions::inside_closing). Their cells get 0,
 // they and their passages go, the other rooms keep their order, numbered 1..N again. Unchanged unless
 // options.enabled and fan_ray_share > 0, and on a grid without occupied cells.
 void leave_out_fans(Segmentation& segmentation, const OccupancyGrid& grid, const cv::Mat& floor,
-                    const OpenRoomOptions& options = {});
+                    const OpenRoomOptions& options = {}, double inside_closing = 2.0);
 
 }  // namespace topocut

@@ -7,6 +7,8 @@
 #include <numeric>
 #include <vector>
 
+#include <opencv2/imgproc.hpp>
+
 #include "topocut/core/error.h"
 #include "topocut/map/label_runs.h"
 #include "topocut/map/rasterize.h"
@@ -194,16 +196,58 @@ std::vector<char> fan_rooms(const Segmentation& segmentation, const OccupancyGri
   return fan;
 }
 
+// The cells inside the building (CV_8UC1, 255): not reached from the grid's edge once the occupied
+// cells are closed across gaps up to closing metres (windows, doors), as the cleaning tells rays inside
+// from rays outside.
+cv::Mat inside_building(const OccupancyGrid& grid, double closing) {
+  if (closing <= 0.0) return cv::Mat::zeros(grid.cells.size(), CV_8UC1);  // as the cleaning: all outside
+  const int n = std::max(1, static_cast<int>(std::lround(closing / grid.resolution / 2.0)));
+  // OpenCV's default border: beyond the grid nothing is dilated from, and no wall is eroded away.
+  cv::Mat walls;
+  cv::morphologyEx(grid.cells == kOccupied, walls, cv::MORPH_CLOSE, cv::getStructuringElement(cv::MORPH_RECT, {2 * n + 1, 2 * n + 1}));
+  // Flood the open space from every edge cell that is not wall: what it does not reach is inside.
+  cv::Mat reached(walls.rows + 2, walls.cols + 2, CV_8UC1, cv::Scalar(0));
+  walls.copyTo(reached(cv::Rect(1, 1, walls.cols, walls.rows)));
+  cv::floodFill(reached, cv::Point(0, 0), cv::Scalar(128), nullptr, cv::Scalar(0), cv::Scalar(0), 4);
+  return reached(cv::Rect(1, 1, walls.cols, walls.rows)) != 128;
+}
+
+// Clears the flag of every fan (index: its id) with more than share of its floor cells inside the
+// building: a walled room (a hall, a small room by the front door) that holds a fan seen through its
+// door is still a room.
+void keep_walled_in(std::vector<char>& fan, const cv::Mat& labels, const OccupancyGrid& grid, const cv::Mat& floor,
+                    double share, double closing) {
+  if (share >= 1.0) return;
+  const cv::Mat inside = inside_building(grid, closing);
+  std::vector<long long> in(fan.size(), 0), all(fan.size(), 0);
+  for (int r = 0; r < labels.rows; ++r) {
+    const int* label = labels.ptr<int>(r);
+    const unsigned char* on = floor.ptr<unsigned char>(r);
+    const unsigned char* walled = inside.ptr<unsigned char>(r);
+    for (int c = 0; c < labels.cols; ++c) {
+      const std::size_t id = static_cast<std::size_t>(label[c]);  // checked by fan_rooms()
+      if (!fan[id] || !on[c]) continue;
+      ++all[id];
+      in[id] += walled[c] != 0;
+    }
+  }
+  for (std::size_t id = 1; id < fan.size(); ++id)
+    if (fan[id] && static_cast<double>(in[id]) > share * static_cast<double>(all[id])) fan[id] = 0;
+}
+
 }  // namespace
 
-void leave_out_fans(Segmentation& segmentation, const OccupancyGrid& grid, const cv::Mat& floor, const OpenRoomOptions& options) {
+void leave_out_fans(Segmentation& segmentation, const OccupancyGrid& grid, const cv::Mat& floor, const OpenRoomOptions& options,
+                    double inside_closing) {
   validate(options);
   if (!options.enabled || options.fan_ray_share <= 0.0 || segmentation.rooms.empty() || !has_occupied_cell(grid.cells)) return;
   if (floor.size() != segmentation.labels.size() || grid.cells.size() != segmentation.labels.size())
     throw Error("leave_out_fans: the labels, the floor and the grid differ in size");
   for (std::size_t k = 0; k < segmentation.rooms.size(); ++k)
     if (segmentation.rooms[k].id != static_cast<int>(k) + 1) throw Error("leave_out_fans: the rooms are not numbered 1..N in order");
-  const std::vector<char> fan = fan_rooms(segmentation, grid, floor, options);
+  std::vector<char> fan = fan_rooms(segmentation, grid, floor, options);
+  if (std::find(fan.begin(), fan.end(), 1) == fan.end()) return;
+  keep_walled_in(fan, segmentation.labels, grid, floor, options.fan_inside_share, inside_closing);
   if (std::find(fan.begin(), fan.end(), 1) == fan.end()) return;
   std::vector<int> new_id(fan.size(), 0);
   std::vector<Room> rooms;

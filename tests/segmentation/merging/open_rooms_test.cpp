@@ -150,15 +150,17 @@ TEST(OpenRooms, OffWithoutWallsOrWhenSwitchedOffAndBadOptions) {
 // Plan's corridor (room 1) and the room off its side (room 2) labelled, as the labelling leaves them:
 // the room's floor its piece, and, with rays, the rays the cleaning removed beyond its ragged far side
 // (one every other row, 25 cells long, free cells off the floor) given to it too. fan_first numbers the
-// room before the corridor.
+// room before the corridor. Open to the edge, the never-seen space beyond the room reaches the grid's
+// edge (the open, outside the building); else the map's 10-cell walls enclose it.
 struct Labelled {
   Segmentation segmentation;
   OccupancyGrid grid;
   cv::Mat floor;
   int fan = 2, corridor = 1;
-  Labelled(unsigned char beyond_room, bool rays, bool fan_first = false) {
+  Labelled(unsigned char beyond_room, bool rays, bool fan_first = false, bool open_to_edge = true) {
     Plan plan(true, beyond_room);
     grid = plan.grid;
+    if (open_to_edge) grid.cells(cv::Rect(120, 15, 10, 100)).setTo(beyond_room);
     const cv::Mat pieces = rasterize_polygons(plan.rooms.pieces, grid.cells.size());
     floor = pieces > 0;
     if (fan_first) std::swap(fan, corridor);
@@ -235,6 +237,20 @@ TEST(OpenRooms, RoomsWithoutRaysWalledRoomsAndTheRuleOffStay) {
   EXPECT_TRUE(kept(no_walls));
   Labelled wrong(kUnknown, true);
   EXPECT_THROW(leave_out_fans(wrong.segmentation, wrong.grid, wrong.floor(cv::Rect(0, 0, 10, 10)).clone()), Error);
+  // Inside the building (walls closed across 0.5 m gaps enclose it), it is a walled room holding the
+  // fan seen through its door; unless every fan is to be left out.
+  const Labelled walled_in(kUnknown, true, false, false);
+  const auto left_out = [&](const OpenRoomOptions& options, double closing) {
+    Labelled labelled = walled_in;
+    labelled.segmentation.labels = walled_in.segmentation.labels.clone();
+    leave_out_fans(labelled.segmentation, labelled.grid, labelled.floor, options, closing);
+    return labelled.segmentation.rooms.size() == 1u;
+  };
+  EXPECT_FALSE(left_out(OpenRoomOptions{}, 0.5));
+  OpenRoomOptions every_fan;
+  every_fan.fan_inside_share = 1.0;
+  EXPECT_TRUE(left_out(every_fan, 0.5));
+  EXPECT_TRUE(left_out(OpenRoomOptions{}, 0.0));  // no closing: nothing is inside, as in the cleaning
   Labelled stray(kUnknown, true);
   stray.segmentation.labels.at<int>(0, 0) = 7;  // no room of the segmentation
   EXPECT_THROW(leave_out_fans(stray.segmentation, stray.grid, stray.floor), Error);
