@@ -107,21 +107,7 @@ RowRuns rays_of(const RowRuns& thin, const cv::Mat& grid_cells) {
 // frame around the window reaches through the open cells.
 RowRuns inside_building(const RowRuns& lost, const RowRuns& floor, const cv::Mat& grid_cells, double side) {
   const int n = std::max(1, cells(side / 2.0, 1.0, std::max(grid_cells.rows, grid_cells.cols)));
-  const RowRuns open = complement(close_square(unite(floor, runs_of_value(grid_cells, kOccupied)), n));
-  int count = 0;
-  const std::vector<int> component = run_components(open, false, count);
-  std::vector<unsigned char> reached(static_cast<std::size_t>(count), 0);
-  const int h = open.height(), w = open.width();
-  std::size_t i = 0;
-  for (int y = 0; y < h; ++y) {
-    for (const CellRun& run : open.row(y)) {
-      if (run.begin == 0 || run.end == w || y == 0 || y == h - 1) reached[static_cast<std::size_t>(component[i])] = 1;
-      ++i;
-    }
-  }
-  std::vector<unsigned char> outside(component.size());
-  for (std::size_t k = 0; k < outside.size(); ++k) outside[k] = reached[static_cast<std::size_t>(component[k])];
-  return subtract(lost, select_runs(open, outside));
+  return subtract(lost, reached_from_edge(complement(close_square(unite(floor, runs_of_value(grid_cells, kOccupied)), n))));
 }
 
 // The bounding box of each 8-connected part of runs (the parts rays_of() judges one by one).

@@ -606,4 +606,21 @@ RowRuns select_runs(const RowRuns& runs, const std::vector<unsigned char>& keep_
   return out;
 }
 
+RowRuns reached_from_edge(const RowRuns& runs) {
+  int count = 0;
+  const std::vector<int> component = run_components(runs, false, count);
+  std::vector<unsigned char> reached(static_cast<std::size_t>(count), 0);
+  const int h = runs.height(), w = runs.width();
+  std::size_t i = 0;
+  for (int y = 0; y < h; ++y) {
+    for (const CellRun& run : runs.row(y)) {
+      if (run.begin == 0 || run.end == w || y == 0 || y == h - 1) reached[static_cast<std::size_t>(component[i])] = 1;
+      ++i;
+    }
+  }
+  std::vector<unsigned char> keep(component.size());
+  for (std::size_t k = 0; k < keep.size(); ++k) keep[k] = reached[static_cast<std::size_t>(component[k])];
+  return select_runs(runs, keep);
+}
+
 }  // namespace topocut

@@ -122,4 +122,8 @@ std::vector<int> run_components(const RowRuns& runs, bool eight_connected, int& 
 // The runs whose flag (by run index of all()) is set.
 RowRuns select_runs(const RowRuns& runs, const std::vector<unsigned char>& keep_run);
 
+// The cells of runs that a 4-connected flood from beyond the image's edge reaches through them: their
+// components with a cell on the edge.
+RowRuns reached_from_edge(const RowRuns& runs);
+
 }  // namespace topocut

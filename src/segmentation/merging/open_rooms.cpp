@@ -7,9 +7,9 @@
 #include <numeric>
 #include <vector>
 
-#include <opencv2/imgproc.hpp>
 
 #include "topocut/core/error.h"
+#include "topocut/map/building_inside.h"
 #include "topocut/map/label_runs.h"
 #include "topocut/map/rasterize.h"
 #include "topocut/map/room_outline.h"
@@ -158,11 +158,12 @@ std::vector<cv::Rect> flagged_boxes(const cv::Mat& labels, const std::vector<cha
   return boxes;
 }
 
-// Whether each of segmentation's rooms (index: its id) is a fan (leave_out_fans()). The rays are read
-// off the rooms' areas, so that a map whose rooms hold none costs no pass over the grid; the outlines
-// only when some room holds rays enough, read in a window around those rooms.
+// Whether each of segmentation's rooms (index: its id) is a fan (leave_out_fans()), and in boxes the
+// bounding box of each room judged. The rays are read off the rooms' areas, so that a map whose rooms
+// hold none costs no pass over the grid; the outlines only when some room holds rays enough, each read
+// in a window around its room.
 std::vector<char> fan_rooms(const Segmentation& segmentation, const OccupancyGrid& grid, const cv::Mat& floor,
-                            const OpenRoomOptions& options) {
+                            const OpenRoomOptions& options, std::vector<cv::Rect>& boxes) {
   const cv::Mat& labels = segmentation.labels;
   std::vector<char> candidate(segmentation.rooms.size() + 1, 0), fan(segmentation.rooms.size() + 1, 0);
   double largest = 0.0;
@@ -172,67 +173,44 @@ std::vector<char> fan_rooms(const Segmentation& segmentation, const OccupancyGri
         room.labelled_area >= options.min_area && room.labelled_area - room.area >= options.fan_ray_share * room.labelled_area;
   }
   if (std::find(candidate.begin(), candidate.end(), 1) == candidate.end()) return fan;
-  // Wide enough that every cell an outline reads (a cell beyond its floor, band cells on) lies inside,
-  // with the occupied cells within wall_reach of it.
+  boxes = flagged_boxes(labels, candidate);
+  // Each room in its own window, wide enough that every cell its outline reads (a cell beyond its floor,
+  // band cells on) lies inside, with the occupied cells within wall_reach of it.
   const int band = static_cast<int>(std::lround(options.wall_band / grid.resolution));
-  const int margin = band + static_cast<int>(std::ceil(options.wall_reach / grid.resolution)) + 4;
-  cv::Rect window;
-  for (const cv::Rect& box : flagged_boxes(labels, candidate)) window |= box;
-  window = cv::Rect(window.x - margin, window.y - margin, window.width + 2 * margin, window.height + 2 * margin) &
-           cv::Rect(0, 0, labels.cols, labels.rows);
-  cv::Mat on_floor(window.size(), CV_32SC1, cv::Scalar(0));
-  labels(window).copyTo(on_floor, floor(window));
-  const LabelRuns outlines = label_runs(on_floor);
-  const std::map<int, RoomExtent> extents = room_extents(outlines);
-  const cv::Mat cells = grid.cells(window);
-  const cv::Mat walls = wall_cells(cells, options.wall_reach / grid.resolution + 1e-9);
+  const int margin = band + static_cast<int>(std::ceil(options.wall_reach / grid.resolution)) + 3;
   for (const Room& room : segmentation.rooms) {
+    if (!candidate[static_cast<std::size_t>(room.id)]) continue;
+    const cv::Rect& box = boxes[static_cast<std::size_t>(room.id)];
+    const cv::Rect window = cv::Rect(box.x - margin, box.y - margin, box.width + 2 * margin, box.height + 2 * margin) &
+                            cv::Rect(0, 0, labels.cols, labels.rows);
+    cv::Mat on_floor(window.size(), CV_32SC1, cv::Scalar(0));
+    labels(window).copyTo(on_floor, floor(window));
+    const LabelRuns outlines = label_runs(on_floor);
+    const std::map<int, RoomExtent> extents = room_extents(outlines);
     const auto extent = extents.find(room.id);
-    if (!candidate[static_cast<std::size_t>(room.id)] || extent == extents.end()) continue;  // no floor: no outline to judge
-    const RoomOutline outline = room_outline(outlines, room.id, extent->second.box, cells, walls, band);
+    if (extent == extents.end()) continue;  // no floor: no outline to judge
+    const cv::Mat cells = grid.cells(window);
+    const RoomOutline outline =
+        room_outline(outlines, room.id, extent->second.box, cells, wall_cells(cells, options.wall_reach / grid.resolution + 1e-9), band);
     fan[static_cast<std::size_t>(room.id)] =
         outline.open(options.share, options.ragged_share) && (!outline.neighbours.empty() || 2.0 * room.labelled_area < largest);
   }
   return fan;
 }
 
-// The cells inside the building (CV_8UC1, 255): not reached from the grid's edge once the occupied
-// cells are closed across gaps up to closing metres (windows, doors), as the cleaning tells rays inside
-// from rays outside.
-cv::Mat inside_building(const OccupancyGrid& grid, double closing) {
-  if (closing <= 0.0) return cv::Mat::zeros(grid.cells.size(), CV_8UC1);  // as the cleaning: all outside
-  const int n = std::max(1, static_cast<int>(std::lround(closing / grid.resolution / 2.0)));
-  // OpenCV's default border: beyond the grid nothing is dilated from, and no wall is eroded away.
-  cv::Mat walls;
-  cv::morphologyEx(grid.cells == kOccupied, walls, cv::MORPH_CLOSE, cv::getStructuringElement(cv::MORPH_RECT, {2 * n + 1, 2 * n + 1}));
-  // Flood the open space from every edge cell that is not wall: what it does not reach is inside.
-  cv::Mat reached(walls.rows + 2, walls.cols + 2, CV_8UC1, cv::Scalar(0));
-  walls.copyTo(reached(cv::Rect(1, 1, walls.cols, walls.rows)));
-  cv::floodFill(reached, cv::Point(0, 0), cv::Scalar(128), nullptr, cv::Scalar(0), cv::Scalar(0), 4);
-  return reached(cv::Rect(1, 1, walls.cols, walls.rows)) != 128;
-}
-
-// Clears the flag of every fan (index: its id) with more than share of its floor cells inside the
-// building: a walled room (a hall, a small room by the front door) that holds a fan seen through its
-// door is still a room.
-void keep_walled_in(std::vector<char>& fan, const cv::Mat& labels, const OccupancyGrid& grid, const cv::Mat& floor,
-                    double share, double closing) {
+// Clears the flag of every fan (index: its id; box: its cells' bounding box) with more than share of
+// its floor cells inside the building (building_inside(), walls closed across closing metres): a walled
+// room (a hall, a small room by the front door) that holds a fan seen through its door is still a room.
+void keep_walled_in(std::vector<char>& fan, const std::vector<cv::Rect>& box, const cv::Mat& labels, const OccupancyGrid& grid,
+                    const cv::Mat& floor, double share, double closing) {
   if (share >= 1.0) return;
-  const cv::Mat inside = inside_building(grid, closing);
-  std::vector<long long> in(fan.size(), 0), all(fan.size(), 0);
-  for (int r = 0; r < labels.rows; ++r) {
-    const int* label = labels.ptr<int>(r);
-    const unsigned char* on = floor.ptr<unsigned char>(r);
-    const unsigned char* walled = inside.ptr<unsigned char>(r);
-    for (int c = 0; c < labels.cols; ++c) {
-      const std::size_t id = static_cast<std::size_t>(label[c]);  // checked by fan_rooms()
-      if (!fan[id] || !on[c]) continue;
-      ++all[id];
-      in[id] += walled[c] != 0;
-    }
+  const cv::Mat inside = building_inside(grid.cells, closing / grid.resolution);
+  for (std::size_t id = 1; id < fan.size(); ++id) {
+    if (!fan[id]) continue;
+    const cv::Mat room = (labels(box[id]) == static_cast<int>(id)) & floor(box[id]);
+    const long long all = cv::countNonZero(room);
+    fan[id] = static_cast<double>(cv::countNonZero(room & inside(box[id]))) <= share * static_cast<double>(all);
   }
-  for (std::size_t id = 1; id < fan.size(); ++id)
-    if (fan[id] && static_cast<double>(in[id]) > share * static_cast<double>(all[id])) fan[id] = 0;
 }
 
 }  // namespace
@@ -245,9 +223,10 @@ void leave_out_fans(Segmentation& segmentation, const OccupancyGrid& grid, const
     throw Error("leave_out_fans: the labels, the floor and the grid differ in size");
   for (std::size_t k = 0; k < segmentation.rooms.size(); ++k)
     if (segmentation.rooms[k].id != static_cast<int>(k) + 1) throw Error("leave_out_fans: the rooms are not numbered 1..N in order");
-  std::vector<char> fan = fan_rooms(segmentation, grid, floor, options);
+  std::vector<cv::Rect> boxes;
+  std::vector<char> fan = fan_rooms(segmentation, grid, floor, options, boxes);
   if (std::find(fan.begin(), fan.end(), 1) == fan.end()) return;
-  keep_walled_in(fan, segmentation.labels, grid, floor, options.fan_inside_share, inside_closing);
+  keep_walled_in(fan, boxes, segmentation.labels, grid, floor, options.fan_inside_share, inside_closing);
   if (std::find(fan.begin(), fan.end(), 1) == fan.end()) return;
   std::vector<int> new_id(fan.size(), 0);
   std::vector<Room> rooms;
