@@ -96,7 +96,7 @@ std::vector<SegmentationRule> make_rules() {
       [](const SegmentOptions& o) { return o.open_rooms.enabled && o.open_rooms.fan_ray_share > 0.0; },
       [](SegmentOptions& o) { o.open_rooms.fan_ray_share = 0.0; });
   fans.leave_out = [](Segmentation& s, const OccupancyGrid& grid, const cv::Mat& floor, const SegmentOptions& o) {
-    leave_out_fans(s, grid, floor, o.open_rooms, o.cleaning.inside_closing);
+    leave_out_fans(s, grid, floor, o.open_rooms);
   };
   fans.whole_map = true;  // the windowed update gives every free cell of its region a room
   SegmentationRule door_flags = unswitched_rule("door-flags", RuleStage::kDescribe, "a passage at most --door-width wide is a door", always);

@@ -35,9 +35,13 @@ struct OpenRoomOptions {
   // through a gap in a wall: no room at all (leave_out_fans()).
   double fan_ray_share = 0.02;  // [0, 1]; 0: off
   // A fan with more than fan_inside_share of its floor inside the building (leave_out_fans()) is a walled
-  // room that holds the fan seen through its door, and stays: the fans outside robot-made offices have
-  // at most 6 % of their floor inside, a hall or a small room by a home's front door with its fan 26-58 %.
+  // room that holds the fan seen through its door, and stays: with the walls closed across 2 m, the fans
+  // outside robot-made offices have at most 6 % of their floor inside, a hall or a small room by a home's
+  // front door with its fan 26-58 % (benchmarks/README.md, "Fans of rays left out").
   double fan_inside_share = 0.25;  // [0, 1]; 1: every fan is left out
+  // Metres: the walls are closed across gaps this wide to tell the building's inside; twice the
+  // cleaning's inside_closing, since at 2 m a room whose outer wall has a wider window was taken as a fan.
+  double fan_closing = 4.0;
 };
 
 // The fields of OpenRoomOptions as options: name, unit, range, help (option_table.h).
@@ -66,11 +70,11 @@ PieceSet join_open_rooms(const PieceSet& rooms, const OccupancyGrid& grid, const
 // judges rooms, labelled_area at least area + fan_ray_share * labelled_area (Room: the cells the
 // labelling gave them beyond their polygon, the rays), and beside another room or under half the
 // largest room's labelled area (not the building itself), and with at most fan_inside_share of their
-// floor inside the building (not reached from the grid's edge once the occupied cells are closed across
-// gaps up to inside_closing metres, the cleaning's FreeSpaceCleaningOptions::inside_closing). Their cells get 0,
+// floor inside the building (building_inside(): not reached from the grid's edge once the occupied cells
+// are closed across gaps up to fan_closing metres). Their cells get 0,
 // they and their passages go, the other rooms keep their order, numbered 1..N again. Unchanged unless
 // options.enabled and fan_ray_share > 0, and on a grid without occupied cells.
 void leave_out_fans(Segmentation& segmentation, const OccupancyGrid& grid, const cv::Mat& floor,
-                    const OpenRoomOptions& options = {}, double inside_closing = 2.0);
+                    const OpenRoomOptions& options = {});
 
 }  // namespace topocut

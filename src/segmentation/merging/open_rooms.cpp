@@ -215,8 +215,7 @@ void keep_walled_in(std::vector<char>& fan, const std::vector<cv::Rect>& box, co
 
 }  // namespace
 
-void leave_out_fans(Segmentation& segmentation, const OccupancyGrid& grid, const cv::Mat& floor, const OpenRoomOptions& options,
-                    double inside_closing) {
+void leave_out_fans(Segmentation& segmentation, const OccupancyGrid& grid, const cv::Mat& floor, const OpenRoomOptions& options) {
   validate(options);
   if (!options.enabled || options.fan_ray_share <= 0.0 || segmentation.rooms.empty() || !has_occupied_cell(grid.cells)) return;
   if (floor.size() != segmentation.labels.size() || grid.cells.size() != segmentation.labels.size())
@@ -226,7 +225,7 @@ void leave_out_fans(Segmentation& segmentation, const OccupancyGrid& grid, const
   std::vector<cv::Rect> boxes;
   std::vector<char> fan = fan_rooms(segmentation, grid, floor, options, boxes);
   if (std::find(fan.begin(), fan.end(), 1) == fan.end()) return;
-  keep_walled_in(fan, boxes, segmentation.labels, grid, floor, options.fan_inside_share, inside_closing);
+  keep_walled_in(fan, boxes, segmentation.labels, grid, floor, options.fan_inside_share, options.fan_closing);
   if (std::find(fan.begin(), fan.end(), 1) == fan.end()) return;
   std::vector<int> new_id(fan.size(), 0);
   std::vector<Room> rooms;

@@ -240,10 +240,11 @@ TEST(OpenRooms, RoomsWithoutRaysWalledRoomsAndTheRuleOffStay) {
   // Inside the building (walls closed across 0.5 m gaps enclose it), it is a walled room holding the
   // fan seen through its door; unless every fan is to be left out.
   const Labelled walled_in(kUnknown, true, false, false);
-  const auto left_out = [&](const OpenRoomOptions& options, double closing) {
+  const auto left_out = [&](OpenRoomOptions options, double closing) {
     Labelled labelled = walled_in;
     labelled.segmentation.labels = walled_in.segmentation.labels.clone();
-    leave_out_fans(labelled.segmentation, labelled.grid, labelled.floor, options, closing);
+    options.fan_closing = closing;
+    leave_out_fans(labelled.segmentation, labelled.grid, labelled.floor, options);
     return labelled.segmentation.rooms.size() == 1u;
   };
   EXPECT_FALSE(left_out(OpenRoomOptions{}, 0.5));
