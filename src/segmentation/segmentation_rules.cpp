@@ -91,7 +91,8 @@ std::vector<SegmentationRule> make_rules() {
   SegmentationRule fans = stage_rule(
       "open-fans", RuleStage::kLeaveOut,
       "labelled rooms still bounded mostly by never-seen space that hold the rays of a fan (at least --open-fan-ray-share "
-      "of their cells; a drawn plan has none) are no rooms: their cells get no room",
+      "of their cells beyond their polygon; a drawn plan's rooms hold almost none) and lie mostly outside the building "
+      "are no rooms: their cells get no room",
       "keep open rooms that hold a fan's rays (a fan seen through a window or an open door) as rooms",
       [](const SegmentOptions& o) { return o.open_rooms.enabled && o.open_rooms.fan_ray_share > 0.0; },
       [](SegmentOptions& o) { o.open_rooms.fan_ray_share = 0.0; });

@@ -65,15 +65,16 @@ PieceSet join_open_rooms(const PieceSet& rooms, const OccupancyGrid& grid, const
 PieceSet join_open_rooms(const PieceSet& rooms, const OccupancyGrid& grid, const OpenRoomOptions& options,
                          const std::vector<CellSpan>& spans);
 
-// segmentation (of grid, floor: the free space its rooms were made of, CV_8UC1 nonzero) without the
-// rooms that are fans of rays seen through a gap: open by their floor's outline as join_open_rooms()
-// judges rooms, labelled_area at least area + fan_ray_share * labelled_area (Room: the cells the
-// labelling gave them beyond their polygon, the rays), and beside another room or under half the
-// largest room's labelled area (not the building itself), and with at most fan_inside_share of their
-// floor inside the building (building_inside(): not reached from the grid's edge once the occupied cells
-// are closed across gaps up to fan_closing metres). Their cells get 0,
-// they and their passages go, the other rooms keep their order, numbered 1..N again. Unchanged unless
-// options.enabled and fan_ray_share > 0, and on a grid without occupied cells.
+// segmentation (labels CV_32SC1 of grid; floor: the free space its rooms were made of, CV_8UC1
+// nonzero) without the rooms that are fans of rays seen through a gap: open by their floor's outline as
+// join_open_rooms() judges rooms; labelled_area at least area + fan_ray_share * labelled_area (Room: the
+// cells the labelling gave them beyond their polygon, the rays); beside another room or under half the
+// largest room's labelled area (not the building itself); and with at most fan_inside_share of their
+// floor inside the building (building_inside(): not reached from the grid's edge once the occupied
+// cells are closed across gaps up to fan_closing metres). Their cells get 0, they and their passages
+// go, the other rooms keep their order, numbered 1..N again. Unchanged unless options.enabled and
+// fan_ray_share > 0, and on a grid without occupied cells. Throws Error on bad options, sizes or types,
+// rooms not numbered 1..N in order, or a label of no room.
 void leave_out_fans(Segmentation& segmentation, const OccupancyGrid& grid, const cv::Mat& floor,
                     const OpenRoomOptions& options = {});
 

@@ -7,7 +7,6 @@
 #include <numeric>
 #include <vector>
 
-
 #include "topocut/core/error.h"
 #include "topocut/map/building_inside.h"
 #include "topocut/map/label_runs.h"
@@ -218,6 +217,7 @@ void keep_walled_in(std::vector<char>& fan, const std::vector<cv::Rect>& box, co
 void leave_out_fans(Segmentation& segmentation, const OccupancyGrid& grid, const cv::Mat& floor, const OpenRoomOptions& options) {
   validate(options);
   if (!options.enabled || options.fan_ray_share <= 0.0 || segmentation.rooms.empty() || !has_occupied_cell(grid.cells)) return;
+  if (segmentation.labels.type() != CV_32SC1 || floor.type() != CV_8UC1) throw Error("leave_out_fans: the labels must be CV_32SC1, the floor CV_8UC1");
   if (floor.size() != segmentation.labels.size() || grid.cells.size() != segmentation.labels.size())
     throw Error("leave_out_fans: the labels, the floor and the grid differ in size");
   for (std::size_t k = 0; k < segmentation.rooms.size(); ++k)
