@@ -1,4 +1,4 @@
-// The building's inside: a hand-made house (a door and a window closed, a wide gap not), and random
+// The building's inside: a hand-made house (a door closed, a wide gap not), and random
 // grids against the definition written with OpenCV's whole-image operations.
 #include "topocut/map/building_inside.h"
 

@@ -178,7 +178,6 @@ struct Labelled {
       room.area = cv::countNonZero((segmentation.labels == id) & floor) * kRes * kRes;  // the piece's cells
       room.labelled_area = cv::countNonZero(segmentation.labels == id) * kRes * kRes;
       room.centroid = {static_cast<double>(id), 0.0};  // tells the rooms apart once renumbered
-      for (const Point2& v : plan.rooms.pieces[id == corridor ? 0 : 1].outer) room.polygon.outer.push_back(grid_to_world(grid, v));
       segmentation.rooms.push_back(room);
     }
     segmentation.passages.push_back(Passage{1, 2, Segment2{{2.25, 0.25}, {2.25, 2.25}}, 2.0, false, CutRule::kDoor});
