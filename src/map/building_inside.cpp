@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 #include "map/row_runs.h"
 #include "topocut/core/error.h"
@@ -17,6 +18,14 @@ cv::Mat building_inside(const cv::Mat& cells, double closing) {
   const int n = static_cast<int>(std::clamp(std::lround(std::min(closing, 1e9) / 2.0), 1L, limit));
   write_mask(reached_from_edge(complement(close_square(runs_of_value(cells, kOccupied), n))), inside, 0, 255);
   return inside;
+}
+
+bool has_occupied_cell(const cv::Mat& cells) {
+  for (int r = 0; r < cells.rows; ++r) {
+    const unsigned char* row = cells.ptr<unsigned char>(r);
+    if (std::memchr(row, kOccupied, static_cast<std::size_t>(cells.cols)) != nullptr) return true;
+  }
+  return false;
 }
 
 }  // namespace topocut

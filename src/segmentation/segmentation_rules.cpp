@@ -9,6 +9,7 @@
 #include "topocut/segmentation/door_cuts.h"
 #include "topocut/segmentation/island_cuts.h"
 #include "topocut/segmentation/open_rooms.h"
+#include "topocut/segmentation/outside_parts.h"
 #include "topocut/segmentation/room_kinds.h"
 #include "topocut/segmentation/rooms_from_pieces.h"
 #include "topocut/segmentation/wall_lines.h"
@@ -100,6 +101,17 @@ std::vector<SegmentationRule> make_rules() {
     leave_out_fans(s, grid, floor, o.open_rooms);
   };
   fans.whole_map = true;  // the windowed update gives every free cell of its region a room
+  SegmentationRule outside = stage_rule(
+      "outside-parts", RuleStage::kLeaveOut,
+      "the cells a room holding a fan's rays has outside the building get no room when more than --open-fan-inside-share "
+      "of its floor is inside: a fan seen through its window, merged with it; its polygon loses them",
+      "keep the fans merged with walled rooms in those rooms",
+      [](const SegmentOptions& o) { return o.open_rooms.enabled && o.open_rooms.fan_ray_share > 0.0 && o.open_rooms.cut_outside_parts; },
+      [](SegmentOptions& o) { o.open_rooms.cut_outside_parts = false; });
+  outside.leave_out = [](Segmentation& s, const OccupancyGrid& grid, const cv::Mat& floor, const SegmentOptions& o) {
+    leave_out_outside_parts(s, grid, floor, o.open_rooms);
+  };
+  outside.whole_map = true;  // as the fans
   SegmentationRule door_flags = unswitched_rule("door-flags", RuleStage::kDescribe, "a passage at most --door-width wide is a door", always);
   door_flags.describe = [](Segmentation& s, const SegmentOptions& o) {
     for (Passage& passage : s.passages) passage.door = is_door(passage, o.doors);
@@ -213,6 +225,7 @@ std::vector<SegmentationRule> make_rules() {
                  }),
       std::move(labelling),
       std::move(fans),
+      std::move(outside),
       std::move(door_flags),
       std::move(room_kinds),
   };

@@ -14,4 +14,8 @@ namespace topocut {
 // The walls themselves count as inside. Costs the walls' runs, not the cells.
 cv::Mat building_inside(const cv::Mat& cells, double closing);
 
+// Whether any of cells (CV_8UC1) is kOccupied, stopping at the first: without, walls cannot be told
+// from never-seen space (walls drawn in the unknown grey), and nothing is inside.
+bool has_occupied_cell(const cv::Mat& cells);
+
 }  // namespace topocut

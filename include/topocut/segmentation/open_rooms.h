@@ -35,13 +35,17 @@ struct OpenRoomOptions {
   // through a gap in a wall: no room at all (leave_out_fans()).
   double fan_ray_share = 0.02;  // [0, 1]; 0: off
   // A fan with more than fan_inside_share of its floor inside the building (leave_out_fans()) is a walled
-  // room that holds the fan seen through its door, and stays: with the walls closed across 2 m, the fans
+  // room that holds the fan seen through its door, and stays (cut back to the inside, cut_outside_parts): with the walls closed across 2 m, the fans
   // outside robot-made offices have at most 6 % of their floor inside, a hall or a small room by a home's
   // front door with its fan 26-58 % (benchmarks/README.md, "Fans of rays left out").
   double fan_inside_share = 0.25;  // [0, 1]; 1: every fan is left out
   // Metres: the walls are closed across gaps this wide to tell the building's inside; twice the
   // cleaning's inside_closing, since at 2 m a room whose outer wall has a wider window was taken as a fan.
   double fan_closing = 4.0;
+  // A room that holds rays (fan_ray_share) with more than fan_inside_share of its floor inside the
+  // building is walled, whatever its outline: its floor outside is a fan seen through its window that
+  // merging joined to it, and no room's (leave_out_outside_parts(), outside_parts.h).
+  bool cut_outside_parts = true;
 };
 
 // The fields of OpenRoomOptions as options: name, unit, range, help (option_table.h).
@@ -49,6 +53,10 @@ const std::vector<OptionRow<OpenRoomOptions>>& open_room_option_rows();
 
 // Throws Error unless the numbers are finite and non-negative and the shares lie in [0, 1].
 void validate(const OpenRoomOptions& options);
+
+// Whether the labelling gave room at least fan_ray_share of its cells beyond its polygon (labelled_area
+// against area): the rays of a fan the cleaning removed, which a drawn plan's rooms hardly get.
+bool holds_rays(const Room& room, const OpenRoomOptions& options);
 
 // rooms (each piece one room, grid coordinates of grid; free cells of no piece are rays the cleaning
 // removed) with every open room joined to the room it shares the longest boundary with (their union),

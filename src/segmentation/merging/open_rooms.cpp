@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 #include <map>
 #include <numeric>
 #include <vector>
@@ -18,16 +17,11 @@ namespace topocut {
 
 void validate(const OpenRoomOptions& options) { check_option_rows(open_room_option_rows(), options); }
 
-namespace {
-
-// Whether any cell is occupied; stops at the first one.
-bool has_occupied_cell(const cv::Mat& cells) {
-  for (int r = 0; r < cells.rows; ++r) {
-    const unsigned char* row = cells.ptr<unsigned char>(r);
-    if (std::memchr(row, kOccupied, static_cast<std::size_t>(cells.cols)) != nullptr) return true;
-  }
-  return false;
+bool holds_rays(const Room& room, const OpenRoomOptions& options) {
+  return room.labelled_area - room.area >= options.fan_ray_share * room.labelled_area;
 }
+
+namespace {
 
 // The cells the labelling (rooms_from_pieces(): free cells of no room take the nearest room along free
 // space) gives room id, estimated in the window of its extent grown on each side by its longer side:
@@ -169,7 +163,7 @@ std::vector<char> fan_rooms(const Segmentation& segmentation, const OccupancyGri
   for (const Room& room : segmentation.rooms) {
     largest = std::max(largest, room.labelled_area);
     candidate[static_cast<std::size_t>(room.id)] =
-        room.labelled_area >= options.min_area && room.labelled_area - room.area >= options.fan_ray_share * room.labelled_area;
+        room.labelled_area >= options.min_area && holds_rays(room, options);
   }
   if (std::find(candidate.begin(), candidate.end(), 1) == candidate.end()) return fan;
   boxes = flagged_boxes(labels, candidate);

@@ -1,0 +1,261 @@
+#include "topocut/segmentation/outside_parts.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <vector>
+
+#include <opencv2/imgproc.hpp>
+
+#include "topocut/core/error.h"
+#include "topocut/core/polygon_difference.h"
+#include "topocut/map/building_inside.h"
+#include "topocut/map/free_space_polygons.h"
+#include "topocut/map/label_runs.h"
+#include "topocut/map/room_outline.h"
+
+namespace topocut {
+
+namespace {
+
+// What one pass over the labels counts per room.
+struct RoomTally {
+  long long floor = 0;         // floor cells
+  long long floor_inside = 0;  // of those, inside the building
+  long long outside = 0;       // cells outside
+  cv::Rect box;                // of all its cells
+  cv::Rect outside_box;        // of its cells outside
+};
+
+// Grows box by the cell (column, row); an empty box becomes that cell.
+void add_cell(cv::Rect& box, int c, int r) {
+  if (box.empty()) {
+    box = cv::Rect(c, r, 1, 1);
+    return;
+  }
+  const int x1 = std::max(box.x + box.width, c + 1), y1 = std::max(box.y + box.height, r + 1);
+  box.x = std::min(box.x, c);
+  box.y = std::min(box.y, r);
+  box.width = x1 - box.x;
+  box.height = y1 - box.y;
+}
+
+// Per room (index: its id; rooms: the number of rooms, every label checked against it).
+std::vector<RoomTally> tally_rooms(const cv::Mat& labels, const cv::Mat& floor, const cv::Mat& inside, std::size_t rooms) {
+  std::vector<RoomTally> tally(rooms + 1);
+  for (int r = 0; r < labels.rows; ++r) {
+    const int* label = labels.ptr<int>(r);
+    const unsigned char* on_floor = floor.ptr<unsigned char>(r);
+    const unsigned char* in = inside.ptr<unsigned char>(r);
+    for (int c = 0; c < labels.cols; ++c) {
+      const int id = label[c];
+      if (id < 0 || static_cast<std::size_t>(id) > rooms) throw Error("leave_out_outside_parts: a label is no room of the segmentation");
+      if (id == 0) continue;
+      RoomTally& t = tally[static_cast<std::size_t>(id)];
+      add_cell(t.box, c, r);
+      if (on_floor[c]) {
+        ++t.floor;
+        if (in[c]) ++t.floor_inside;
+      }
+      if (!in[c]) {
+        ++t.outside;
+        add_cell(t.outside_box, c, r);
+      }
+    }
+  }
+  return tally;
+}
+
+// Whether the room's floor outside (t: its tally) is open as open rooms are (room_outline(): its outline
+// mostly against never-seen cells, those edges ragged), its floor inside and the other rooms' floor its
+// neighbours: the fan seen through a window ends in rays, while a floor outside because its walls have
+// gaps wider than the closing is walled along the rest.
+bool outside_open(int id, const RoomTally& t, const cv::Mat& labels, const cv::Mat& floor, const cv::Mat& inside,
+                  const OccupancyGrid& grid, const OpenRoomOptions& options) {
+  const int band = static_cast<int>(std::lround(options.wall_band / grid.resolution));
+  const int margin = band + static_cast<int>(std::ceil(options.wall_reach / grid.resolution)) + 3;
+  const cv::Rect& b = t.outside_box;
+  const cv::Rect window = cv::Rect(b.x - margin, b.y - margin, b.width + 2 * margin, b.height + 2 * margin) &
+                          cv::Rect(0, 0, labels.cols, labels.rows);
+  constexpr int kOutside = 1, kOther = 2;
+  cv::Mat parts(window.size(), CV_32SC1, cv::Scalar(0));
+  for (int r = 0; r < window.height; ++r) {
+    const int* label = labels.ptr<int>(window.y + r) + window.x;
+    const unsigned char* on_floor = floor.ptr<unsigned char>(window.y + r) + window.x;
+    const unsigned char* in = inside.ptr<unsigned char>(window.y + r) + window.x;
+    int* part = parts.ptr<int>(r);
+    for (int c = 0; c < window.width; ++c)
+      if (on_floor[c] && label[c] != 0) part[c] = label[c] == id && !in[c] ? kOutside : kOther;
+  }
+  const LabelRuns runs = label_runs(parts);
+  const std::map<int, RoomExtent> extents = room_extents(runs);
+  const auto extent = extents.find(kOutside);
+  if (extent == extents.end()) return false;  // rays only: none of its floor outside
+  const cv::Mat cells = grid.cells(window);
+  const RoomOutline outline =
+      room_outline(runs, kOutside, extent->second.box, cells, wall_cells(cells, options.wall_reach / grid.resolution + 1e-9), band);
+  return outline.open(options.share, options.ragged_share);
+}
+
+// Whether the room is cut back: it holds rays, has cells outside, more than inside_share of its floor
+// inside, and its floor outside is open.
+bool cut_back(const Room& room, const RoomTally& t, const cv::Mat& labels, const cv::Mat& floor, const cv::Mat& inside,
+              const OccupancyGrid& grid, const OpenRoomOptions& options) {
+  return holds_rays(room, options) && t.outside > 0 &&
+         static_cast<double>(t.floor_inside) > options.fan_inside_share * static_cast<double>(t.floor) &&
+         outside_open(room.id, t, labels, floor, inside, grid, options);
+}
+
+// Whether some room without rays lies mostly outside: then the map's walls do not enclose its rooms
+// (a plan whose outer walls are drawn as the never-seen grey around it: Bormann's lab_ipa, its octagon
+// hall and the corridor to it), and outside tells no fan.
+bool rooms_outside(const Segmentation& segmentation, const std::vector<RoomTally>& tally, const OpenRoomOptions& options) {
+  return std::any_of(segmentation.rooms.begin(), segmentation.rooms.end(), [&](const Room& room) {
+    const RoomTally& t = tally[static_cast<std::size_t>(room.id)];
+    return room.labelled_area >= options.min_area && room.labelled_area <= room.area && 2 * t.floor_inside < t.floor;
+  });
+}
+
+// A ring traced in a window of the grid (x = the window's column, y up from its bottom row), in world metres.
+Ring window_ring_to_world(const Ring& ring, const OccupancyGrid& grid, const cv::Rect& window) {
+  const double shift_y = static_cast<double>(grid.height() - window.y - window.height);
+  Ring world;
+  world.reserve(ring.size());
+  for (const Point2& p : ring) world.push_back(grid_to_world(grid, {p.x + window.x, p.y + shift_y}));
+  return world;
+}
+
+// The cells (column, row box) under a world polygon's bounding box, grown by margin cells, inside the grid.
+cv::Rect cell_box(const OccupancyGrid& grid, const PolygonWithHoles& polygon, int margin) {
+  const Box b = bounding_box(polygon.outer);
+  const cv::Point lo = world_to_cell(grid, {b.x0, b.y1});  // top-left: rows grow downwards
+  const cv::Point hi = world_to_cell(grid, {b.x1, b.y0});
+  return cv::Rect(cv::Point(lo.x - margin, lo.y - margin), cv::Point(hi.x + margin + 1, hi.y + margin + 1)) &
+         cv::Rect(0, 0, grid.width(), grid.height());
+}
+
+// The room's polygon without the squares of the outside cells under it: its largest part (the rest are
+// bits of the fan the closing enclosed, whose cells clear_remnants() takes).
+PolygonWithHoles polygon_inside(const PolygonWithHoles& polygon, const OccupancyGrid& grid, const cv::Mat& inside) {
+  const cv::Rect box = cell_box(grid, polygon, 2);
+  if (box.empty()) return polygon;
+  std::vector<PolygonWithHoles> cut_out;
+  for (const FreeSpaceComponent& part : trace_components(remove_diagonal_pinches(inside(box) == 0))) {
+    PolygonWithHoles world{window_ring_to_world(part.polygon.outer, grid, box), {}};
+    for (const Ring& hole : part.polygon.holes) world.holes.push_back(window_ring_to_world(hole, grid, box));
+    cut_out.push_back(std::move(world));
+  }
+  if (cut_out.empty()) return polygon;
+  const std::vector<PolygonWithHoles> parts = polygon_difference(polygon, cut_out);
+  return parts.empty() ? polygon : parts.front();
+}
+
+// Clears the room's cells in box that lie outside, and then those of every part of it but the largest
+// (8-connected) that touches a cell outside: the bits of a fan the closing enclosed against a wall far
+// out. A free speck walled in inside the building, labelled with the room, stays.
+void clear_outside(cv::Mat& labels, int id, const cv::Rect& box, const cv::Mat& inside) {
+  cv::Mat room(box.size(), CV_8UC1, cv::Scalar(0));
+  for (int r = 0; r < box.height; ++r) {
+    int* label = labels.ptr<int>(box.y + r) + box.x;
+    const unsigned char* in = inside.ptr<unsigned char>(box.y + r) + box.x;
+    unsigned char* own = room.ptr<unsigned char>(r);
+    for (int c = 0; c < box.width; ++c) {
+      if (label[c] != id) continue;
+      if (in[c]) own[c] = 255;
+      else label[c] = 0;
+    }
+  }
+  cv::Mat part, stats, centres;
+  const int parts = cv::connectedComponentsWithStats(room, part, stats, centres, 8, CV_32S);
+  if (parts <= 2) return;
+  int largest = 1;
+  for (int k = 2; k < parts; ++k)
+    if (stats.at<int>(k, cv::CC_STAT_AREA) > stats.at<int>(largest, cv::CC_STAT_AREA)) largest = k;
+  // The parts touching a cell outside: an outside cell's 8 neighbours, the box grown by one.
+  const cv::Rect grown = cv::Rect(box.x - 1, box.y - 1, box.width + 2, box.height + 2) & cv::Rect(0, 0, labels.cols, labels.rows);
+  std::vector<char> touches(static_cast<std::size_t>(parts), 0);
+  for (int r = 0; r < box.height; ++r)
+    for (int c = 0; c < box.width; ++c) {
+      const int k = part.at<int>(r, c);
+      if (k == 0 || k == largest || touches[static_cast<std::size_t>(k)]) continue;
+      for (int dr = -1; dr <= 1 && !touches[static_cast<std::size_t>(k)]; ++dr)
+        for (int dc = -1; dc <= 1; ++dc) {
+          const cv::Point q(box.x + c + dc, box.y + r + dr);
+          if (grown.contains(q) && inside.at<unsigned char>(q) == 0) {
+            touches[static_cast<std::size_t>(k)] = 1;
+            break;
+          }
+        }
+    }
+  for (int r = 0; r < box.height; ++r) {
+    int* label = labels.ptr<int>(box.y + r) + box.x;
+    for (int c = 0; c < box.width; ++c)
+      if (touches[static_cast<std::size_t>(part.at<int>(r, c))]) label[c] = 0;
+  }
+}
+
+// The room's labelled area and centroid from its cells in box.
+void recount(Room& room, const cv::Mat& labels, const cv::Rect& box, const OccupancyGrid& grid) {
+  long long cells = 0;
+  double sum_c = 0.0, sum_r = 0.0;
+  for (int r = box.y; r < box.y + box.height; ++r) {
+    const int* label = labels.ptr<int>(r);
+    for (int c = box.x; c < box.x + box.width; ++c)
+      if (label[c] == room.id) {
+        ++cells;
+        sum_c += c;
+        sum_r += r;
+      }
+  }
+  if (cells == 0) return;  // more than fan_inside_share of its floor is inside: never so
+  room.labelled_area = static_cast<double>(cells) * grid.resolution * grid.resolution;
+  room.centroid = cell_center_world(grid, 0, 0) + Point2{sum_c / static_cast<double>(cells) * grid.resolution,
+                                                         -sum_r / static_cast<double>(cells) * grid.resolution};
+}
+
+// Whether the cut's middle lies in a cell outside the building (or off the grid).
+bool middle_outside(const Passage& passage, const OccupancyGrid& grid, const cv::Mat& inside) {
+  const cv::Point cell = world_to_cell(grid, 0.5 * (passage.cut.a + passage.cut.b));
+  if (cell.x < 0 || cell.y < 0 || cell.x >= inside.cols || cell.y >= inside.rows) return true;
+  return inside.at<unsigned char>(cell) == 0;
+}
+
+void check_input(const Segmentation& segmentation, const OccupancyGrid& grid, const cv::Mat& floor) {
+  const cv::Mat& labels = segmentation.labels;
+  if (labels.type() != CV_32SC1 || floor.type() != CV_8UC1) throw Error("leave_out_outside_parts: the labels must be CV_32SC1, the floor CV_8UC1");
+  if (floor.size() != labels.size() || grid.cells.size() != labels.size())
+    throw Error("leave_out_outside_parts: the labels, the floor and the grid differ in size");
+  for (std::size_t k = 0; k < segmentation.rooms.size(); ++k)
+    if (segmentation.rooms[k].id != static_cast<int>(k) + 1) throw Error("leave_out_outside_parts: the rooms are not numbered 1..N in order");
+}
+
+}  // namespace
+
+void leave_out_outside_parts(Segmentation& segmentation, const OccupancyGrid& grid, const cv::Mat& floor, const OpenRoomOptions& options) {
+  validate(options);
+  if (!options.enabled || options.fan_ray_share <= 0.0 || !options.cut_outside_parts || segmentation.rooms.empty() ||
+      !has_occupied_cell(grid.cells))
+    return;
+  check_input(segmentation, grid, floor);
+  const auto rays = [&](const Room& room) { return holds_rays(room, options); };
+  if (std::none_of(segmentation.rooms.begin(), segmentation.rooms.end(), rays)) return;  // a drawn plan: no pass over the grid
+  const cv::Mat inside = building_inside(grid.cells, options.fan_closing / grid.resolution);
+  const std::vector<RoomTally> tally = tally_rooms(segmentation.labels, floor, inside, segmentation.rooms.size());
+  if (rooms_outside(segmentation, tally, options)) return;
+  std::vector<char> cut(segmentation.rooms.size() + 1, 0);  // every room judged on the labels as they came
+  for (const Room& room : segmentation.rooms)
+    cut[static_cast<std::size_t>(room.id)] = cut_back(room, tally[static_cast<std::size_t>(room.id)], segmentation.labels, floor, inside, grid, options);
+  for (Room& room : segmentation.rooms) {
+    if (!cut[static_cast<std::size_t>(room.id)]) continue;
+    const RoomTally& t = tally[static_cast<std::size_t>(room.id)];
+    room.polygon = polygon_inside(room.polygon, grid, inside);
+    room.area = area(room.polygon);
+    clear_outside(segmentation.labels, room.id, t.box, inside);
+    recount(room, segmentation.labels, t.box, grid);
+  }
+  std::erase_if(segmentation.passages, [&](const Passage& p) {
+    return (cut[static_cast<std::size_t>(p.room_a)] || cut[static_cast<std::size_t>(p.room_b)]) && middle_outside(p, grid, inside);
+  });
+}
+
+}  // namespace topocut
