@@ -123,7 +123,8 @@ const std::vector<OptionRow<OpenRoomOptions>>& open_room_option_rows() {
                 "polygon (rays the cleaning removed) is a fan seen through a gap, no room (0: off)"),
       field_row("open-fan-inside-share", "F", OptionRange::kShare, &O::fan_inside_share,
                 "open rooms: unless more than this share of its floor lies inside the building (walls closed across "
-                "--open-fan-closing): a walled room holding the fan seen through its door (1: leave every fan out)"),
+                "--open-fan-closing): a walled room holding the fan seen through its door, cut back to the inside "
+                "(1: leave every fan out)"),
       field_row("open-fan-closing", "M", OptionRange::kLengthOrZero, &O::fan_closing,
                 "open rooms: the walls are closed across gaps this wide (metres) to tell the building's inside (0: nothing is inside)"),
   };

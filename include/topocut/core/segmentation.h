@@ -48,7 +48,7 @@ struct Passage {
 inline const char* passage_kind(const Passage& passage) { return passage.door ? "door" : "opening"; }
 
 struct Segmentation {
-  cv::Mat labels;                // CV_32SC1, grid size; 0 = not a room (obstacle, unknown, rays outside, a fan left out), rooms 1..N
+  cv::Mat labels;                // CV_32SC1, grid size; 0 = not a room (obstacle, unknown, rays or a fan outside the building), rooms 1..N
   std::vector<Room> rooms;       // sorted by id
   std::vector<Passage> passages; // the room graph's edges
   double resolution = 0.05;      // metres per cell of labels
