@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <exception>
 #include <map>
 #include <vector>
 
@@ -150,6 +151,20 @@ PolygonWithHoles polygon_inside(const PolygonWithHoles& polygon, const Occupancy
   return parts.empty() ? polygon : parts.front();
 }
 
+// The largest part of room id's floor cells in box, traced along the cells' edges: the polygon of a
+// room whose merged polygon CGAL's set operations refuse (a ring touching itself where pieces joined).
+PolygonWithHoles traced_polygon(const cv::Mat& labels, const cv::Mat& floor, int id, const cv::Rect& box, const OccupancyGrid& grid,
+                                const PolygonWithHoles& fallback) {
+  const std::vector<FreeSpaceComponent> parts = trace_components(remove_diagonal_pinches((labels(box) == id) & floor(box)));
+  const auto largest = std::max_element(parts.begin(), parts.end(), [](const FreeSpaceComponent& a, const FreeSpaceComponent& b) {
+    return a.pixel_count < b.pixel_count;
+  });
+  if (largest == parts.end()) return fallback;
+  PolygonWithHoles world{window_ring_to_world(largest->polygon.outer, grid, box), {}};
+  for (const Ring& hole : largest->polygon.holes) world.holes.push_back(window_ring_to_world(hole, grid, box));
+  return normalized_orientation(world);
+}
+
 // Clears the room's cells in box that lie outside, and then those of every part of it but the largest
 // (8-connected) that touches a cell outside: the bits of a fan the closing enclosed against a wall far
 // out. A free speck walled in inside the building, labelled with the room, stays.
@@ -248,9 +263,13 @@ void leave_out_outside_parts(Segmentation& segmentation, const OccupancyGrid& gr
   for (Room& room : segmentation.rooms) {
     if (!cut[static_cast<std::size_t>(room.id)]) continue;
     const RoomTally& t = tally[static_cast<std::size_t>(room.id)];
-    room.polygon = polygon_inside(room.polygon, grid, inside);
-    room.area = area(room.polygon);
     clear_outside(segmentation.labels, room.id, t.box, inside);
+    try {
+      room.polygon = polygon_inside(room.polygon, grid, inside);
+    } catch (const std::exception&) {  // Error, or CGAL's own where its conditions fail
+      room.polygon = traced_polygon(segmentation.labels, floor, room.id, t.box, grid, room.polygon);
+    }
+    room.area = area(room.polygon);
     recount(room, segmentation.labels, t.box, grid);
   }
   std::erase_if(segmentation.passages, [&](const Passage& p) {
