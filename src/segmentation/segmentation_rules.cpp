@@ -106,12 +106,12 @@ std::vector<SegmentationRule> make_rules() {
       "the cells a room holding a fan's rays has outside the building get no room when more than --open-fan-inside-share "
       "of its floor is inside: a fan seen through its window, merged with it; its polygon loses them",
       "keep the fans merged with walled rooms in those rooms",
-      [](const SegmentOptions& o) {  // the rays it reads are the cells the cleaning removed: --no-clean keeps the fans
-        return o.clean && o.open_rooms.enabled && o.open_rooms.fan_ray_share > 0.0 && o.open_rooms.cut_outside_parts;
-      },
+      [](const SegmentOptions& o) { return o.open_rooms.enabled && o.open_rooms.fan_ray_share > 0.0 && o.open_rooms.cut_outside_parts; },
       [](SegmentOptions& o) { o.open_rooms.cut_outside_parts = false; });
   outside.leave_out = [](Segmentation& s, const OccupancyGrid& grid, const cv::Mat& floor, const SegmentOptions& o) {
-    leave_out_outside_parts(s, grid, floor, o.open_rooms);
+    // The rays it reads are the cells the cleaning removed: without it (--no-clean: the free space
+    // decomposed as it is) the cells beyond a room's polygon are specks, and a fan stays in its room.
+    if (o.clean) leave_out_outside_parts(s, grid, floor, o.open_rooms);
   };
   outside.whole_map = true;  // as the fans
   SegmentationRule door_flags = unswitched_rule("door-flags", RuleStage::kDescribe, "a passage at most --door-width wide is a door", always);

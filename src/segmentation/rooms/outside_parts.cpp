@@ -28,40 +28,46 @@ struct RoomTally {
   cv::Rect outside_box;        // of its cells outside
 };
 
-// Grows box by the cell (column, row); an empty box becomes that cell.
-void add_cell(cv::Rect& box, int c, int r) {
+// Grows box by the cells [c0, c1) of row r; an empty box becomes them.
+void add_run(cv::Rect& box, int c0, int c1, int r) {
   if (box.empty()) {
-    box = cv::Rect(c, r, 1, 1);
+    box = cv::Rect(c0, r, c1 - c0, 1);
     return;
   }
-  const int x1 = std::max(box.x + box.width, c + 1), y1 = std::max(box.y + box.height, r + 1);
-  box.x = std::min(box.x, c);
-  box.y = std::min(box.y, r);
-  box.width = x1 - box.x;
-  box.height = y1 - box.y;
+  box |= cv::Rect(c0, r, c1 - c0, 1);
 }
 
-// Per room (index: its id; rooms: the number of rooms, every label checked against it).
+// Per room (index: its id; rooms: the number of rooms, every label checked against it), run by run.
 std::vector<RoomTally> tally_rooms(const cv::Mat& labels, const cv::Mat& floor, const cv::Mat& inside, std::size_t rooms) {
   std::vector<RoomTally> tally(rooms + 1);
   for (int r = 0; r < labels.rows; ++r) {
     const int* label = labels.ptr<int>(r);
     const unsigned char* on_floor = floor.ptr<unsigned char>(r);
     const unsigned char* in = inside.ptr<unsigned char>(r);
-    for (int c = 0; c < labels.cols; ++c) {
+    for (int c = 0; c < labels.cols;) {
       const int id = label[c];
+      int end = c + 1;
+      while (end < labels.cols && label[end] == id) ++end;
       if (id < 0 || static_cast<std::size_t>(id) > rooms) throw Error("leave_out_outside_parts: a label is no room of the segmentation");
-      if (id == 0) continue;
+      if (id == 0) {
+        c = end;
+        continue;
+      }
       RoomTally& t = tally[static_cast<std::size_t>(id)];
-      add_cell(t.box, c, r);
-      if (on_floor[c]) {
-        ++t.floor;
-        if (in[c]) ++t.floor_inside;
-      }
-      if (!in[c]) {
+      add_run(t.box, c, end, r);
+      int first_out = -1, last_out = -1;
+      for (int k = c; k < end; ++k) {
+        if (on_floor[k]) {
+          ++t.floor;
+          t.floor_inside += in[k] != 0;
+        }
+        if (in[k]) continue;
         ++t.outside;
-        add_cell(t.outside_box, c, r);
+        if (first_out < 0) first_out = k;
+        last_out = k;
       }
+      if (first_out >= 0) add_run(t.outside_box, first_out, last_out + 1, r);
+      c = end;
     }
   }
   return tally;
@@ -137,11 +143,16 @@ cv::Rect cell_box(const OccupancyGrid& grid, const PolygonWithHoles& polygon, in
 
 // The room's polygon without the squares of the outside cells under it: its largest part (the rest are
 // bits of the fan the closing enclosed, whose cells clear_remnants() takes).
-PolygonWithHoles polygon_inside(const PolygonWithHoles& polygon, const OccupancyGrid& grid, const cv::Mat& inside) {
+PolygonWithHoles polygon_inside(const PolygonWithHoles& polygon, int id, const cv::Mat& labels, const cv::Mat& floor,
+                                const OccupancyGrid& grid, const cv::Mat& inside) {
   const cv::Rect box = cell_box(grid, polygon, 2);
   if (box.empty()) return polygon;
+  // The outside cells within a cell of the room's floor (the cells a cut crosses lie beside them): the
+  // rest of the outside lies off the polygon, and every edge traced costs the set operations.
+  cv::Mat near_floor;
+  cv::dilate((labels(box) == id) & floor(box), near_floor, cv::Mat::ones(3, 3, CV_8UC1));
   std::vector<PolygonWithHoles> cut_out;
-  for (const FreeSpaceComponent& part : trace_components(remove_diagonal_pinches(inside(box) == 0))) {
+  for (const FreeSpaceComponent& part : trace_components(remove_diagonal_pinches(near_floor & (inside(box) == 0)))) {
     PolygonWithHoles world{window_ring_to_world(part.polygon.outer, grid, box), {}};
     for (const Ring& hole : part.polygon.holes) world.holes.push_back(window_ring_to_world(hole, grid, box));
     cut_out.push_back(std::move(world));
@@ -263,12 +274,14 @@ void leave_out_outside_parts(Segmentation& segmentation, const OccupancyGrid& gr
   for (Room& room : segmentation.rooms) {
     if (!cut[static_cast<std::size_t>(room.id)]) continue;
     const RoomTally& t = tally[static_cast<std::size_t>(room.id)];
-    clear_outside(segmentation.labels, room.id, t.box, inside);
+    bool refused = false;  // by CGAL's set operations: Error, or CGAL's own where its conditions fail
     try {
-      room.polygon = polygon_inside(room.polygon, grid, inside);
-    } catch (const std::exception&) {  // Error, or CGAL's own where its conditions fail
-      room.polygon = traced_polygon(segmentation.labels, floor, room.id, t.box, grid, room.polygon);
+      room.polygon = polygon_inside(room.polygon, room.id, segmentation.labels, floor, grid, inside);
+    } catch (const std::exception&) {
+      refused = true;
     }
+    clear_outside(segmentation.labels, room.id, t.box, inside);
+    if (refused) room.polygon = traced_polygon(segmentation.labels, floor, room.id, t.box, grid, room.polygon);
     room.area = area(room.polygon);
     recount(room, segmentation.labels, t.box, grid);
   }
