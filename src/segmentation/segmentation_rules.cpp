@@ -294,6 +294,13 @@ std::vector<std::string> rules_off(const SegmentOptions& options) {
   return off;
 }
 
+SegmentOptions without_leave_out(const SegmentOptions& options) {
+  SegmentOptions result = options;
+  for (const SegmentationRule& rule : segmentation_rules())
+    if (rule.stage == RuleStage::kLeaveOut && rule.turn_off) rule.turn_off(result);
+  return result;
+}
+
 namespace {
 
 // The living RuleTrace's rows; the lock guards them against schedules on other threads.

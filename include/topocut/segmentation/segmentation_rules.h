@@ -118,6 +118,12 @@ const SegmentationRule* find_segmentation_rule(const std::string& name);
 // The names of the rules with a switch that are off in options although on by default, in list order.
 std::vector<std::string> rules_off(const SegmentOptions& options);
 
+// options with every leave-out row switched off: for a whole-map update of a growing map that windowed
+// updates go on updating. A windowed update gives every free cell of its region a room, so what such a
+// row leaves out would come back as a room at the next one and go again at the next whole-map update,
+// each time under a new id; the map at rest is segmented with them.
+SegmentOptions without_leave_out(const SegmentOptions& options);
+
 // The names of the rows run (their stage's function called) while it lives, in the order they ran,
 // over every thread; merge criteria are asked inside merge and not listed. For tests that check a
 // schedule runs the list; one at a time.

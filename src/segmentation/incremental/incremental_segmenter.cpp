@@ -20,6 +20,7 @@
 #include "topocut/segmentation/carried_ids.h"
 #include "topocut/segmentation/room_kinds.h"
 #include "topocut/segmentation/rooms_from_pieces.h"
+#include "topocut/segmentation/segmentation_rules.h"
 
 namespace topocut {
 
@@ -260,14 +261,15 @@ const Segmentation& IncrementalSegmenter::State::resegment() {
   detach_labels();
   const OccupancyGrid grid{cells.clone(), resolution, origin};
   report.changed = cv::Rect(0, 0, grid.width(), grid.height());
-  guarded([&] { segment_whole(grid, "resegmented as a whole"); });
+  guarded([&] { segment_whole(grid, "resegmented as a whole", true); });
   return result;
 }
 
 
 // segment() on the whole grid, its rooms taking the ids of the rooms they overlap most (carried_ids):
-// the state becomes batch's, holds and absorbed cells forgotten.
-void IncrementalSegmenter::State::segment_whole(const OccupancyGrid& grid, const std::string& reason) {
+// the state becomes batch's, holds and absorbed cells forgotten. Only at_rest (or with every update whole)
+// does it leave out what the leave-out rows would (without_leave_out()).
+void IncrementalSegmenter::State::segment_whole(const OccupancyGrid& grid, const std::string& reason, bool at_rest) {
   report.kind = IncrementalUpdateReport::Kind::kBatch;
   report.reason = reason;
   report.every_room_relabelled = true;
@@ -278,7 +280,8 @@ void IncrementalSegmenter::State::segment_whole(const OccupancyGrid& grid, const
   Segmentation batch;
   if (cv::countNonZero(grid.cells == kFree) > 0) {
     SegmentationInput input;
-    batch = segment(grid, options.segment, &input);
+    // While windowed updates go on, what a leave-out row takes out would come back with the next one.
+    batch = segment(grid, at_rest || !options.windowed ? options.segment : without_leave_out(options.segment), &input);
     floor = input.floor;
     uncleaned = options.segment.clean && input.cleaned.floor.empty();
     labelled = input.labelled.cells.data == grid.cells.data ? cells.clone() : input.labelled.cells;

@@ -234,7 +234,7 @@ struct IncrementalSegmenter::State {
   void guarded(const Work& work);
   void detach_labels();
   void process(const OccupancyGrid& grid, const cv::Rect& changed);
-  void segment_whole(const OccupancyGrid& grid, const std::string& reason);
+  void segment_whole(const OccupancyGrid& grid, const std::string& reason, bool at_rest = false);
   void take_loaded_ledger();
   ChangeMask take_changes(const OccupancyGrid& grid, const cv::Rect& changed);
   SegmentationInput window_input(const OccupancyGrid& grid, ChangeMask& mask) const;
