@@ -1,5 +1,7 @@
 #include "topocut/segmentation/outside_parts.h"
 
+#include <functional>
+
 #include <gtest/gtest.h>
 #include <opencv2/imgproc.hpp>
 
@@ -130,23 +132,20 @@ TEST(OutsideParts, RoomsWithoutRaysMostlyOutsideOrOnMapsWithoutWallsStay) {
     return cv::countNonZero(fan.segmentation.labels != before) == 0 && fan.segmentation.passages.size() == 2u &&
            fan.segmentation.rooms[0].polygon == rooms[0].polygon && fan.segmentation.rooms[0].area == rooms[0].area;
   };
+  // The fan with options changed by set.
+  const auto kept_with = [&](const std::function<void(OpenRoomOptions&)>& set) {
+    OpenRoomOptions options;
+    set(options);
+    return kept(Fan(), options);
+  };
   EXPECT_FALSE(kept(Fan()));
   EXPECT_TRUE(kept(Fan(false)));
-  OpenRoomOptions off;
-  off.cut_outside_parts = false;
-  EXPECT_TRUE(kept(Fan(), off));
-  OpenRoomOptions no_rays;
-  no_rays.fan_ray_share = 0.0;
-  EXPECT_TRUE(kept(Fan(), no_rays));
-  OpenRoomOptions disabled;
-  disabled.enabled = false;
-  EXPECT_TRUE(kept(Fan(), disabled));
+  EXPECT_TRUE(kept_with([](OpenRoomOptions& o) { o.cut_outside_parts = false; }));
+  EXPECT_TRUE(kept_with([](OpenRoomOptions& o) { o.fan_ray_share = 0.0; }));
+  EXPECT_TRUE(kept_with([](OpenRoomOptions& o) { o.enabled = false; }));
   // The room's floor is about two thirds inside.
-  OpenRoomOptions mostly_inside;
-  mostly_inside.fan_inside_share = 0.6;
-  EXPECT_FALSE(kept(Fan(), mostly_inside));
-  mostly_inside.fan_inside_share = 0.7;
-  EXPECT_TRUE(kept(Fan(), mostly_inside));
+  EXPECT_FALSE(kept_with([](OpenRoomOptions& o) { o.fan_inside_share = 0.6; }));
+  EXPECT_TRUE(kept_with([](OpenRoomOptions& o) { o.fan_inside_share = 0.7; }));
   Fan no_walls;
   no_walls.grid.cells.setTo(kUnknown, no_walls.grid.cells == kOccupied);
   EXPECT_TRUE(kept(no_walls));
