@@ -8,10 +8,9 @@
 
 namespace topocut {
 
-// The parts of polygon covered by none of minus (each a polygon with holes whose rings are simple),
-// largest first, outer rings counter-clockwise and holes clockwise; exact predicates and constructions,
-// rounded to doubles at the end. Throws Error when a ring is not simple or a hole not inside its outer
-// ring (CGAL's conditions for a polygon with holes).
+// The parts of polygon covered by none of minus (regions that may overlap one another), largest first, outer rings counter-clockwise and holes clockwise; exact predicates and constructions,
+// rounded to doubles at the end. Throws Error when a ring of any of them is not simple or a hole not
+// inside its outer ring (CGAL's conditions for a polygon with holes).
 std::vector<PolygonWithHoles> polygon_difference(const PolygonWithHoles& polygon, const std::vector<PolygonWithHoles>& minus);
 
 }  // namespace topocut

@@ -35,9 +35,10 @@ struct OpenRoomOptions {
   // through a gap in a wall: no room at all (leave_out_fans()).
   double fan_ray_share = 0.02;  // [0, 1]; 0: off
   // A fan with more than fan_inside_share of its floor inside the building (leave_out_fans()) is a walled
-  // room that holds the fan seen through its door, and stays (cut back to the inside, cut_outside_parts): with the walls closed across 2 m, the fans
-  // outside robot-made offices have at most 6 % of their floor inside, a hall or a small room by a home's
-  // front door with its fan 26-58 % (benchmarks/README.md, "Fans of rays left out").
+  // room that holds the fan seen through its door, and stays (cut back to the inside: cut_outside_parts):
+  // with the walls closed across 2 m, the fans outside robot-made offices have at most 6 % of their floor
+  // inside, a hall or a small room by a home's front door with its fan 26-58 % (benchmarks/README.md,
+  // "Fans of rays left out").
   double fan_inside_share = 0.25;  // [0, 1]; 1: every fan is left out
   // Metres: the walls are closed across gaps this wide to tell the building's inside; twice the
   // cleaning's inside_closing, since at 2 m a room whose outer wall has a wider window was taken as a fan.

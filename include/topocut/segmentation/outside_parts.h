@@ -10,14 +10,17 @@
 namespace topocut {
 
 // segmentation (labels CV_32SC1 of grid; floor: the free space its rooms were made of, CV_8UC1
-// nonzero) with every room that holds rays (labelled_area at least area + fan_ray_share *
-// labelled_area, as leave_out_fans() reads them) and has more than walled_share of its floor inside
-// the building (building_inside(), walls closed across fan_closing metres) cut back to the inside: its
-// cells outside get 0, its polygon loses the outside cells' squares (its largest part is kept), its
-// labelled area and centroid are its cells', and its passages whose cut's middle lies outside go.
-// Rooms keep their ids. Unchanged unless options.enabled, fan_ray_share > 0 and walled_share < 1, and
-// on a grid without occupied cells. Throws Error on bad options, sizes or types, rooms not numbered
-// 1..N in order, or a label of no room.
+// nonzero) with every room cut back to the building's inside (building_inside(), walls closed across
+// fan_closing metres) that holds rays (holds_rays(), as leave_out_fans() reads them), has more than
+// fan_inside_share of its floor inside, and whose floor outside is open (room_outline(): mostly against
+// never-seen cells, those edges ragged): its cells outside get 0, and so do the parts of it but the
+// largest that touch the outside (bits of the fan the closing enclosed); its polygon loses the outside
+// cells' squares (polygon_difference(), its largest part; traced from its cells where CGAL refuses it);
+// its labelled area and centroid become its cells'; its passages whose cut's middle lies outside go.
+// Rooms keep their ids. Nothing is cut where a room without rays (labelled_area <= area) has most of its
+// floor outside: the map's walls do not enclose its rooms. Unchanged unless options.enabled,
+// fan_ray_share > 0 and cut_outside_parts, and on a grid without occupied cells. Throws Error on bad
+// options, sizes or types, rooms not numbered 1..N in order, or a label of no room.
 void leave_out_outside_parts(Segmentation& segmentation, const OccupancyGrid& grid, const cv::Mat& floor,
                              const OpenRoomOptions& options = {});
 

@@ -104,7 +104,7 @@ bool outside_open(int id, const RoomTally& t, const cv::Mat& labels, const cv::M
   return outline.open(options.share, options.ragged_share);
 }
 
-// Whether the room is cut back: it holds rays, has cells outside, more than inside_share of its floor
+// Whether the room is cut back: it holds rays, has cells outside, more than fan_inside_share of its floor
 // inside, and its floor outside is open.
 bool cut_back(const Room& room, const RoomTally& t, const cv::Mat& labels, const cv::Mat& floor, const cv::Mat& inside,
               const OccupancyGrid& grid, const OpenRoomOptions& options) {
