@@ -12,8 +12,8 @@ namespace topocut {
 // segmentation (labels CV_32SC1 of grid; floor: the free space its rooms were made of, CV_8UC1
 // nonzero) with every room cut back to the building's inside (building_inside(), walls closed across
 // fan_closing metres) that holds rays (holds_rays(), as leave_out_fans() reads them), has more than
-// fan_inside_share of its floor inside, and whose floor outside is open (room_outline(): mostly against
-// never-seen cells, those edges ragged): its cells outside get 0, and so do the parts of it but the
+// fan_inside_share of its floor inside, whose floor outside is open (room_outline(): mostly against
+// never-seen cells, those edges ragged) and whose floor inside is not: its cells outside get 0, and so do the parts of it but the
 // largest that touch the outside (bits of the fan the closing enclosed); its polygon loses the outside
 // cells' squares (polygon_difference(), its largest part; traced from its cells where CGAL refuses it);
 // its labelled area and centroid become its cells'; its passages whose cut's middle lies outside go.

@@ -73,18 +73,16 @@ std::vector<RoomTally> tally_rooms(const cv::Mat& labels, const cv::Mat& floor, 
   return tally;
 }
 
-// Whether the room's floor outside (t: its tally) is open as open rooms are (room_outline(): its outline
-// mostly against never-seen cells, those edges ragged), its floor inside and the other rooms' floor its
-// neighbours: the fan seen through a window ends in rays, while a floor outside because its walls have
-// gaps wider than the closing is walled along the rest.
-bool outside_open(int id, const RoomTally& t, const cv::Mat& labels, const cv::Mat& floor, const cv::Mat& inside,
-                  const OccupancyGrid& grid, const OpenRoomOptions& options) {
+// Whether the room's floor outside (outside true; box: its cells there) or inside is open as open rooms
+// are (room_outline(): its outline mostly against never-seen cells, those edges ragged), the room's other
+// floor and the other rooms' floor its neighbours.
+bool part_open(int id, bool outside, const cv::Rect& box, const cv::Mat& labels, const cv::Mat& floor, const cv::Mat& inside,
+               const OccupancyGrid& grid, const OpenRoomOptions& options) {
   const int band = static_cast<int>(std::lround(options.wall_band / grid.resolution));
   const int margin = band + static_cast<int>(std::ceil(options.wall_reach / grid.resolution)) + 3;
-  const cv::Rect& b = t.outside_box;
-  const cv::Rect window = cv::Rect(b.x - margin, b.y - margin, b.width + 2 * margin, b.height + 2 * margin) &
+  const cv::Rect window = cv::Rect(box.x - margin, box.y - margin, box.width + 2 * margin, box.height + 2 * margin) &
                           cv::Rect(0, 0, labels.cols, labels.rows);
-  constexpr int kOutside = 1, kOther = 2;
+  constexpr int kPart = 1, kOther = 2;
   cv::Mat parts(window.size(), CV_32SC1, cv::Scalar(0));
   for (int r = 0; r < window.height; ++r) {
     const int* label = labels.ptr<int>(window.y + r) + window.x;
@@ -92,25 +90,29 @@ bool outside_open(int id, const RoomTally& t, const cv::Mat& labels, const cv::M
     const unsigned char* in = inside.ptr<unsigned char>(window.y + r) + window.x;
     int* part = parts.ptr<int>(r);
     for (int c = 0; c < window.width; ++c)
-      if (on_floor[c] && label[c] != 0) part[c] = label[c] == id && !in[c] ? kOutside : kOther;
+      if (on_floor[c] && label[c] != 0) part[c] = label[c] == id && (in[c] == 0) == outside ? kPart : kOther;
   }
   const LabelRuns runs = label_runs(parts);
   const std::map<int, RoomExtent> extents = room_extents(runs);
-  const auto extent = extents.find(kOutside);
-  if (extent == extents.end()) return false;  // rays only: none of its floor outside
+  const auto extent = extents.find(kPart);
+  if (extent == extents.end()) return false;  // none of its floor there
   const cv::Mat cells = grid.cells(window);
   const RoomOutline outline =
-      room_outline(runs, kOutside, extent->second.box, cells, wall_cells(cells, options.wall_reach / grid.resolution + 1e-9), band);
+      room_outline(runs, kPart, extent->second.box, cells, wall_cells(cells, options.wall_reach / grid.resolution + 1e-9), band);
   return outline.open(options.share, options.ragged_share);
 }
 
 // Whether the room is cut back: it holds rays, has cells outside, more than fan_inside_share of its floor
-// inside, and its floor outside is open.
+// inside, its floor outside is open (a fan seen through a window ends in rays, while a floor outside
+// because its walls have gaps wider than the closing is walled along the rest), and its floor inside is
+// not (the walled room; where the closing encloses the far end of a fan against a wall far out and a
+// gap wider than it lets the outside into the room, the part inside is that fan's end).
 bool cut_back(const Room& room, const RoomTally& t, const cv::Mat& labels, const cv::Mat& floor, const cv::Mat& inside,
               const OccupancyGrid& grid, const OpenRoomOptions& options) {
   return holds_rays(room, options) && t.outside > 0 &&
          static_cast<double>(t.floor_inside) > options.fan_inside_share * static_cast<double>(t.floor) &&
-         outside_open(room.id, t, labels, floor, inside, grid, options);
+         part_open(room.id, true, t.outside_box, labels, floor, inside, grid, options) &&
+         !part_open(room.id, false, t.box, labels, floor, inside, grid, options);
 }
 
 // Whether some room without rays lies mostly outside: then the map's walls do not enclose its rooms

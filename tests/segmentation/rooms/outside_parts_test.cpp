@@ -27,9 +27,12 @@ struct Fan {
   cv::Mat floor;
   cv::Mat fan_floor;  // the floor above the window
 
-  explicit Fan(bool rays = true) {
+  // ragged_room: the room's floor ends in teeth of laser rays 0.2-0.4 m short of its side and bottom
+  // walls, the cells between never seen.
+  explicit Fan(bool rays = true, bool ragged_room = false) {
     cv::rectangle(grid.cells, cv::Rect(49, 109, 102, 82), cv::Scalar(kOccupied), cv::FILLED);
     grid.cells(cv::Rect(50, 110, 100, 80)).setTo(kFree);
+    if (ragged_room) ragged_walls();
     grid.cells(cv::Rect(90, 109, 20, 1)).setTo(kFree);
     fan_floor = cv::Mat(grid.cells.size(), CV_8UC1, cv::Scalar(0));
     for (int row = 30; row <= 108; ++row) {
@@ -51,6 +54,18 @@ struct Fan {
     for (int id = 1; id <= 2; ++id) segmentation.rooms.push_back(room(id));
     segmentation.passages.push_back(Passage{1, 2, Segment2{{3.0, 2.0}, {3.0, 3.0}}, 1.0, true, CutRule::kDoor});
     segmentation.passages.push_back(Passage{1, 2, Segment2{{4.5, 6.0}, {5.5, 6.0}}, 1.0, true, CutRule::kDoor});
+  }
+
+  void ragged_walls() {
+    grid.cells(cv::Rect(50, 110, 100, 80)).setTo(kUnknown);
+    grid.cells(cv::Rect(58, 110, 84, 72)).setTo(kFree);
+    for (int k = 0; k < 84; k += 2) {  // teeth of 1-4 cells below the floor
+      grid.cells(cv::Rect(58 + k, 182, 1, 1 + k % 4)).setTo(kFree);
+      if (k < 72) {  // and beside it
+        grid.cells(cv::Rect(58 - 1 - k % 3, 110 + k, 1 + k % 3, 1)).setTo(kFree);
+        grid.cells(cv::Rect(142, 110 + k, 1 + k % 3, 1)).setTo(kFree);
+      }
+    }
   }
 
   // Room id as the labelling describes it: its polygon its floor's squares, its cells' area and centre.
@@ -146,6 +161,14 @@ TEST(OutsideParts, RoomsWithoutRaysMostlyOutsideOrOnMapsWithoutWallsStay) {
   // The room's floor is about two thirds inside.
   EXPECT_FALSE(kept_with([](OpenRoomOptions& o) { o.fan_inside_share = 0.6; }));
   EXPECT_TRUE(kept_with([](OpenRoomOptions& o) { o.fan_inside_share = 0.7; }));
+  // A room whose floor inside is itself open (rays end raggedly where its walls were never seen) is no
+  // walled room: the closing may have enclosed the end of a fan instead (its own part inside).
+  const Fan ragged(true, true);
+  const cv::Mat ragged_inside = building_inside(ragged.grid.cells, OpenRoomOptions{}.fan_closing / kRes);
+  const cv::Mat ragged_floor = (ragged.segmentation.labels == 1) & ragged.floor;
+  ASSERT_GT(cv::countNonZero(ragged_floor & ragged_inside), 0.5 * cv::countNonZero(ragged_floor));
+  ASSERT_GT(cv::countNonZero(ragged.fan_floor & (ragged_inside == 0)), 3000);
+  EXPECT_TRUE(kept(ragged));
   Fan no_walls;
   no_walls.grid.cells.setTo(kUnknown, no_walls.grid.cells == kOccupied);
   EXPECT_TRUE(kept(no_walls));
