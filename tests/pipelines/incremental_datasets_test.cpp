@@ -1,5 +1,6 @@
 // The incremental segmenter on the shared datasets (../shared/datasets; skipped with a message when
-// absent): every map given at once gets segment()'s rooms cell for cell, and a real map revealed in
+// absent): every map given at once gets segment()'s rooms cell for cell (without the leave-out rows
+// until it is at rest, with them once it is), and a real map revealed in
 // growing windows with a moving origin (windowed updates among them) ends, segmented again as a
 // whole at rest, on segment()'s rooms of the final map. The join of io (reading the maps) with segmentation.
 #include "topocut/segmentation/incremental_segmenter.h"
