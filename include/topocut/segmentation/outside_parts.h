@@ -14,9 +14,10 @@ namespace topocut {
 // fan_closing metres) that holds rays (holds_rays(), as leave_out_fans() reads them), has more than
 // fan_inside_share of its floor inside, whose floor outside is open (room_outline(): mostly against
 // never-seen cells, those edges ragged) and whose floor inside is not: its cells outside get 0, and so do the parts of it but the
-// largest that touch the outside (bits of the fan the closing enclosed); its polygon loses the outside
-// cells' squares (polygon_difference(), its largest part; traced from its cells where CGAL refuses it);
-// its labelled area and centroid become its cells'; its passages whose cut's middle lies outside go.
+// largest that touch the outside (bits of the fan the closing enclosed); its polygon becomes the outline
+// of the floor cells it keeps (their largest part, along the cells' edges, specks filled as in the free
+// space's polygons); its labelled area and centroid become its cells'; its passages whose cut's middle
+// lies outside go.
 // Rooms keep their ids. Nothing is cut where a room without rays (labelled_area <= area) has most of its
 // floor outside: the map's walls do not enclose its rooms. Unchanged unless options.enabled,
 // fan_ray_share > 0 and cut_outside_parts, and on a grid without occupied cells. Throws Error on bad

@@ -2,14 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <exception>
 #include <map>
 #include <vector>
 
 #include <opencv2/imgproc.hpp>
 
 #include "topocut/core/error.h"
-#include "topocut/core/polygon_difference.h"
 #include "topocut/map/building_inside.h"
 #include "topocut/map/free_space_polygons.h"
 #include "topocut/map/label_runs.h"
@@ -134,41 +132,15 @@ Ring window_ring_to_world(const Ring& ring, const OccupancyGrid& grid, const cv:
   return world;
 }
 
-// The cells (column, row box) under a world polygon's bounding box, grown by margin cells, inside the grid.
-cv::Rect cell_box(const OccupancyGrid& grid, const PolygonWithHoles& polygon, int margin) {
-  const Box b = bounding_box(polygon.outer);
-  const cv::Point lo = world_to_cell(grid, {b.x0, b.y1});  // top-left: rows grow downwards
-  const cv::Point hi = world_to_cell(grid, {b.x1, b.y0});
-  return cv::Rect(cv::Point(lo.x - margin, lo.y - margin), cv::Point(hi.x + margin + 1, hi.y + margin + 1)) &
-         cv::Rect(0, 0, grid.width(), grid.height());
-}
-
-// The room's polygon without the squares of the outside cells under it: its largest part (the rest are
-// bits of the fan the closing enclosed, whose cells clear_remnants() takes).
-PolygonWithHoles polygon_inside(const PolygonWithHoles& polygon, int id, const cv::Mat& labels, const cv::Mat& floor,
-                                const OccupancyGrid& grid, const cv::Mat& inside) {
-  const cv::Rect box = cell_box(grid, polygon, 2);
-  if (box.empty()) return polygon;
-  // The outside cells within a cell of the room's floor (the cells a cut crosses lie beside them): the
-  // rest of the outside lies off the polygon, and every edge traced costs the set operations.
-  cv::Mat near_floor;
-  cv::dilate((labels(box) == id) & floor(box), near_floor, cv::Mat::ones(3, 3, CV_8UC1));
-  std::vector<PolygonWithHoles> cut_out;
-  for (const FreeSpaceComponent& part : trace_components(remove_diagonal_pinches(near_floor & (inside(box) == 0)))) {
-    PolygonWithHoles world{window_ring_to_world(part.polygon.outer, grid, box), {}};
-    for (const Ring& hole : part.polygon.holes) world.holes.push_back(window_ring_to_world(hole, grid, box));
-    cut_out.push_back(std::move(world));
-  }
-  if (cut_out.empty()) return polygon;
-  const std::vector<PolygonWithHoles> parts = polygon_difference(polygon, cut_out);
-  return parts.empty() ? polygon : parts.front();
-}
-
-// The largest part of room id's floor cells in box, traced along the cells' edges: the polygon of a
-// room whose merged polygon CGAL's set operations refuse (a ring touching itself where pieces joined).
+// The largest part of room id's floor cells in box, traced along the cells' edges (as the live path
+// traces a room it redid in part): the polygon of a room cut back. fallback: when it has no floor left.
 PolygonWithHoles traced_polygon(const cv::Mat& labels, const cv::Mat& floor, int id, const cv::Rect& box, const OccupancyGrid& grid,
                                 const PolygonWithHoles& fallback) {
-  const std::vector<FreeSpaceComponent> parts = trace_components(remove_diagonal_pinches((labels(box) == id) & floor(box)));
+  const cv::Mat own = (labels(box) == id) & floor(box);
+  if (cv::countNonZero(own) == 0) return fallback;
+  ContourOptions contours;  // its holes as the free space's polygons have them (specks filled), every part
+  contours.min_component_area = 0.0;
+  const std::vector<FreeSpaceComponent> parts = free_space_polygons(own, grid.resolution, contours).components;
   const auto largest = std::max_element(parts.begin(), parts.end(), [](const FreeSpaceComponent& a, const FreeSpaceComponent& b) {
     return a.pixel_count < b.pixel_count;
   });
@@ -276,14 +248,8 @@ void leave_out_outside_parts(Segmentation& segmentation, const OccupancyGrid& gr
   for (Room& room : segmentation.rooms) {
     if (!cut[static_cast<std::size_t>(room.id)]) continue;
     const RoomTally& t = tally[static_cast<std::size_t>(room.id)];
-    bool refused = false;  // by CGAL's set operations: Error, or CGAL's own where its conditions fail
-    try {
-      room.polygon = polygon_inside(room.polygon, room.id, segmentation.labels, floor, grid, inside);
-    } catch (const std::exception&) {
-      refused = true;
-    }
     clear_outside(segmentation.labels, room.id, t.box, inside);
-    if (refused) room.polygon = traced_polygon(segmentation.labels, floor, room.id, t.box, grid, room.polygon);
+    room.polygon = traced_polygon(segmentation.labels, floor, room.id, t.box, grid, room.polygon);
     room.area = area(room.polygon);
     recount(room, segmentation.labels, t.box, grid);
   }

@@ -121,21 +121,6 @@ TEST(OutsideParts, AWalledRoomLosesTheFanSeenThroughItsWindow) {
   EXPECT_EQ(fan.segmentation.passages[0].cut.a, (Point2{3.0, 2.0}));
 }
 
-// A polygon CGAL's set operations refuse (here a hole lying along its outer ring, as where merged
-// pieces meet at a point) is traced from the room's floor cells that are left instead: the same
-// polygon, to the cell.
-TEST(OutsideParts, APolygonTheSetOperationsRefuseIsTracedFromTheCellsLeft) {
-  Fan fan;
-  Fan broken;
-  broken.segmentation.rooms[0].polygon.holes.push_back(Ring{{2.5, 0.5}, {2.5, 1.0}, {3.0, 1.0}, {3.0, 0.5}});
-  leave_out_outside_parts(fan.segmentation, fan.grid, fan.floor);
-  leave_out_outside_parts(broken.segmentation, broken.grid, broken.floor);
-  EXPECT_EQ(cv::countNonZero(fan.segmentation.labels != broken.segmentation.labels), 0);
-  EXPECT_NEAR(broken.segmentation.rooms[0].area, fan.segmentation.rooms[0].area, 1e-9);
-  EXPECT_TRUE(broken.segmentation.rooms[0].polygon.holes.empty());
-  EXPECT_EQ(broken.segmentation.passages.size(), 1u);
-}
-
 // Nothing changes: without rays (a drawn plan's room), with the row off, for a room with no more than
 // fan_inside_share of its floor inside (the open-fans row's), with no walls, or when a room without
 // rays lies mostly outside (walls the map does not draw as walls, and outside tells nothing).
