@@ -4,8 +4,11 @@
 #include <cmath>
 #include <map>
 #include <numeric>
+#include <optional>
+#include <string>
 #include <vector>
 
+#include "segmentation/merging/window_outline.h"
 #include "topocut/core/error.h"
 #include "topocut/map/building_inside.h"
 #include "topocut/map/label_runs.h"
@@ -167,26 +170,15 @@ std::vector<char> fan_rooms(const Segmentation& segmentation, const OccupancyGri
   }
   if (std::find(candidate.begin(), candidate.end(), 1) == candidate.end()) return fan;
   boxes = flagged_boxes(labels, candidate);
-  // Each room in its own window, wide enough that every cell its outline reads (a cell beyond its floor,
-  // band cells on) lies inside, with the occupied cells within wall_reach of it.
-  const int band = static_cast<int>(std::lround(options.wall_band / grid.resolution));
-  const int margin = band + static_cast<int>(std::ceil(options.wall_reach / grid.resolution)) + 3;
   for (const Room& room : segmentation.rooms) {
     if (!candidate[static_cast<std::size_t>(room.id)]) continue;
-    const cv::Rect& box = boxes[static_cast<std::size_t>(room.id)];
-    const cv::Rect window = cv::Rect(box.x - margin, box.y - margin, box.width + 2 * margin, box.height + 2 * margin) &
-                            cv::Rect(0, 0, labels.cols, labels.rows);
+    const cv::Rect window = outline_window(boxes[static_cast<std::size_t>(room.id)], labels.size(), grid.resolution, options);
     cv::Mat on_floor(window.size(), CV_32SC1, cv::Scalar(0));
     labels(window).copyTo(on_floor, floor(window));
-    const LabelRuns outlines = label_runs(on_floor);
-    const std::map<int, RoomExtent> extents = room_extents(outlines);
-    const auto extent = extents.find(room.id);
-    if (extent == extents.end()) continue;  // no floor: no outline to judge
-    const cv::Mat cells = grid.cells(window);
-    const RoomOutline outline =
-        room_outline(outlines, room.id, extent->second.box, cells, wall_cells(cells, options.wall_reach / grid.resolution + 1e-9), band);
+    const std::optional<RoomOutline> outline = window_outline(on_floor, room.id, grid.cells(window), grid.resolution, options);
+    if (!outline) continue;  // no floor: no outline to judge
     fan[static_cast<std::size_t>(room.id)] =
-        outline.open(options.share, options.ragged_share) && (!outline.neighbours.empty() || 2.0 * room.labelled_area < largest);
+        outline->open(options.share, options.ragged_share) && (!outline->neighbours.empty() || 2.0 * room.labelled_area < largest);
   }
   return fan;
 }
@@ -211,11 +203,7 @@ void keep_walled_in(std::vector<char>& fan, const std::vector<cv::Rect>& box, co
 void leave_out_fans(Segmentation& segmentation, const OccupancyGrid& grid, const cv::Mat& floor, const OpenRoomOptions& options) {
   validate(options);
   if (!options.enabled || options.fan_ray_share <= 0.0 || segmentation.rooms.empty() || !has_occupied_cell(grid.cells)) return;
-  if (segmentation.labels.type() != CV_32SC1 || floor.type() != CV_8UC1) throw Error("leave_out_fans: the labels must be CV_32SC1, the floor CV_8UC1");
-  if (floor.size() != segmentation.labels.size() || grid.cells.size() != segmentation.labels.size())
-    throw Error("leave_out_fans: the labels, the floor and the grid differ in size");
-  for (std::size_t k = 0; k < segmentation.rooms.size(); ++k)
-    if (segmentation.rooms[k].id != static_cast<int>(k) + 1) throw Error("leave_out_fans: the rooms are not numbered 1..N in order");
+  check_labelled(segmentation, grid, floor, "leave_out_fans");
   std::vector<cv::Rect> boxes;
   std::vector<char> fan = fan_rooms(segmentation, grid, floor, options, boxes);
   if (std::find(fan.begin(), fan.end(), 1) == fan.end()) return;
@@ -240,6 +228,32 @@ void leave_out_fans(Segmentation& segmentation, const OccupancyGrid& grid, const
     p.room_b = new_id[static_cast<std::size_t>(p.room_b)];
     return p.room_a == 0 || p.room_b == 0;
   });
+}
+
+cv::Rect outline_window(const cv::Rect& box, const cv::Size& size, double resolution, const OpenRoomOptions& options) {
+  const int band = static_cast<int>(std::lround(options.wall_band / resolution));
+  const int margin = band + static_cast<int>(std::ceil(options.wall_reach / resolution)) + 3;
+  return cv::Rect(box.x - margin, box.y - margin, box.width + 2 * margin, box.height + 2 * margin) & cv::Rect(cv::Point(0, 0), size);
+}
+
+std::optional<RoomOutline> window_outline(const cv::Mat& labels, int id, const cv::Mat& cells, double resolution,
+                                          const OpenRoomOptions& options) {
+  const LabelRuns runs = label_runs(labels);
+  const std::map<int, RoomExtent> extents = room_extents(runs);
+  const auto extent = extents.find(id);
+  if (extent == extents.end()) return std::nullopt;
+  const int band = static_cast<int>(std::lround(options.wall_band / resolution));
+  return room_outline(runs, id, extent->second.box, cells, wall_cells(cells, options.wall_reach / resolution + 1e-9), band);
+}
+
+void check_labelled(const Segmentation& segmentation, const OccupancyGrid& grid, const cv::Mat& floor, const char* caller) {
+  const cv::Mat& labels = segmentation.labels;
+  const std::string name = caller;
+  if (labels.type() != CV_32SC1 || floor.type() != CV_8UC1) throw Error(name + ": the labels must be CV_32SC1, the floor CV_8UC1");
+  if (floor.size() != labels.size() || grid.cells.size() != labels.size())
+    throw Error(name + ": the labels, the floor and the grid differ in size");
+  for (std::size_t k = 0; k < segmentation.rooms.size(); ++k)
+    if (segmentation.rooms[k].id != static_cast<int>(k) + 1) throw Error(name + ": the rooms are not numbered 1..N in order");
 }
 
 PieceSet join_open_rooms(const PieceSet& rooms, const OccupancyGrid& grid, const OpenRoomOptions& options) {

@@ -1,17 +1,15 @@
 #include "topocut/segmentation/outside_parts.h"
 
 #include <algorithm>
-#include <cmath>
-#include <map>
+#include <optional>
 #include <vector>
 
 #include <opencv2/imgproc.hpp>
 
+#include "segmentation/merging/window_outline.h"
 #include "topocut/core/error.h"
 #include "topocut/map/building_inside.h"
 #include "topocut/map/free_space_polygons.h"
-#include "topocut/map/label_runs.h"
-#include "topocut/map/room_outline.h"
 
 namespace topocut {
 
@@ -76,10 +74,7 @@ std::vector<RoomTally> tally_rooms(const cv::Mat& labels, const cv::Mat& floor, 
 // floor and the other rooms' floor its neighbours.
 bool part_open(int id, bool outside, const cv::Rect& box, const cv::Mat& labels, const cv::Mat& floor, const cv::Mat& inside,
                const OccupancyGrid& grid, const OpenRoomOptions& options) {
-  const int band = static_cast<int>(std::lround(options.wall_band / grid.resolution));
-  const int margin = band + static_cast<int>(std::ceil(options.wall_reach / grid.resolution)) + 3;
-  const cv::Rect window = cv::Rect(box.x - margin, box.y - margin, box.width + 2 * margin, box.height + 2 * margin) &
-                          cv::Rect(0, 0, labels.cols, labels.rows);
+  const cv::Rect window = outline_window(box, labels.size(), grid.resolution, options);
   constexpr int kPart = 1, kOther = 2;
   cv::Mat parts(window.size(), CV_32SC1, cv::Scalar(0));
   for (int r = 0; r < window.height; ++r) {
@@ -90,14 +85,8 @@ bool part_open(int id, bool outside, const cv::Rect& box, const cv::Mat& labels,
     for (int c = 0; c < window.width; ++c)
       if (on_floor[c] && label[c] != 0) part[c] = label[c] == id && (in[c] == 0) == outside ? kPart : kOther;
   }
-  const LabelRuns runs = label_runs(parts);
-  const std::map<int, RoomExtent> extents = room_extents(runs);
-  const auto extent = extents.find(kPart);
-  if (extent == extents.end()) return false;  // none of its floor there
-  const cv::Mat cells = grid.cells(window);
-  const RoomOutline outline =
-      room_outline(runs, kPart, extent->second.box, cells, wall_cells(cells, options.wall_reach / grid.resolution + 1e-9), band);
-  return outline.open(options.share, options.ragged_share);
+  const std::optional<RoomOutline> outline = window_outline(parts, kPart, grid.cells(window), grid.resolution, options);
+  return outline && outline->open(options.share, options.ragged_share);  // none of its floor there: not open
 }
 
 // Whether the room is cut back: it holds rays, has cells outside, more than fan_inside_share of its floor
@@ -220,15 +209,6 @@ bool middle_outside(const Passage& passage, const OccupancyGrid& grid, const cv:
   return inside.at<unsigned char>(cell) == 0;
 }
 
-void check_input(const Segmentation& segmentation, const OccupancyGrid& grid, const cv::Mat& floor) {
-  const cv::Mat& labels = segmentation.labels;
-  if (labels.type() != CV_32SC1 || floor.type() != CV_8UC1) throw Error("leave_out_outside_parts: the labels must be CV_32SC1, the floor CV_8UC1");
-  if (floor.size() != labels.size() || grid.cells.size() != labels.size())
-    throw Error("leave_out_outside_parts: the labels, the floor and the grid differ in size");
-  for (std::size_t k = 0; k < segmentation.rooms.size(); ++k)
-    if (segmentation.rooms[k].id != static_cast<int>(k) + 1) throw Error("leave_out_outside_parts: the rooms are not numbered 1..N in order");
-}
-
 }  // namespace
 
 void leave_out_outside_parts(Segmentation& segmentation, const OccupancyGrid& grid, const cv::Mat& floor, const OpenRoomOptions& options) {
@@ -236,7 +216,7 @@ void leave_out_outside_parts(Segmentation& segmentation, const OccupancyGrid& gr
   if (!options.enabled || options.fan_ray_share <= 0.0 || !options.cut_outside_parts || segmentation.rooms.empty() ||
       !has_occupied_cell(grid.cells))
     return;
-  check_input(segmentation, grid, floor);
+  check_labelled(segmentation, grid, floor, "leave_out_outside_parts");
   const auto rays = [&](const Room& room) { return holds_rays(room, options); };
   if (std::none_of(segmentation.rooms.begin(), segmentation.rooms.end(), rays)) return;  // a drawn plan: no pass over the grid
   const cv::Mat inside = building_inside(grid.cells, options.fan_closing / grid.resolution);
