@@ -11,6 +11,7 @@ TOPOCUT / BASE_TOPOCUT. --base-options adds segment options to BASE_TOPOCUT's ru
 binary twice with --base-options=--no-learned-merge gives the learned merging over the hand rules. Stages: load (load_map), front end (segmentation_input, free_space_polygons,
 simplified_where_valid), cuts and decomposition (decompose_pieces less the simplification), of which
 DuDe (decompose), merging (merge_rooms), open rooms (join_open_rooms), labelling (rooms_from_pieces),
+leave-out (the rows after it: leave_out_fans, leave_out_outside_parts),
 segment (the whole of segment()), outputs (in_frame: the JSON's points inside rooms), process (all).
 Runs with one OpenCV thread (OPENCV_FOR_THREADS_NUM=1), so that the work of OpenCV's pool is counted
 in the stage that asked for it. Needs valgrind; callgrind runs about 50 times slower than the program.
@@ -31,6 +32,7 @@ STAGES = [
     ("merging", ["merge_rooms"]),
     ("open rooms", ["join_open_rooms"]),
     ("labelling", ["rooms_from_pieces"]),
+    ("leave-out", ["leave_out_fans", "leave_out_outside_parts"]),
     ("segment", ["segment"]),
     ("outputs", ["in_frame"]),
     ("process", ["PROGRAM TOTALS"]),

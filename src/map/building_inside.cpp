@@ -20,6 +20,14 @@ cv::Mat building_inside(const cv::Mat& cells, double closing) {
   return inside;
 }
 
+const cv::Mat& BuildingInside::at(double closing) {
+  if (inside_.empty() || closing != closing_) {
+    inside_ = building_inside(cells_, closing);
+    closing_ = closing;
+  }
+  return inside_;
+}
+
 bool has_occupied_cell(const cv::Mat& cells) {
   for (int r = 0; r < cells.rows; ++r) {
     const unsigned char* row = cells.ptr<unsigned char>(r);

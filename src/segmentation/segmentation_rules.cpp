@@ -97,8 +97,8 @@ std::vector<SegmentationRule> make_rules() {
       "keep open rooms that hold a fan's rays (a fan seen through a window or an open door) as rooms",
       [](const SegmentOptions& o) { return o.open_rooms.enabled && o.open_rooms.fan_ray_share > 0.0; },
       [](SegmentOptions& o) { o.open_rooms.fan_ray_share = 0.0; });
-  fans.leave_out = [](Segmentation& s, const OccupancyGrid& grid, const cv::Mat& floor, const SegmentOptions& o) {
-    leave_out_fans(s, grid, floor, o.open_rooms);
+  fans.leave_out = [](Segmentation& s, const OccupancyGrid& grid, const cv::Mat& floor, const SegmentOptions& o, BuildingInside& inside) {
+    leave_out_fans(s, grid, floor, o.open_rooms, &inside);
   };
   fans.whole_map = true;  // the windowed update gives every free cell of its region a room
   SegmentationRule outside = stage_rule(
@@ -108,10 +108,10 @@ std::vector<SegmentationRule> make_rules() {
       "keep the fans merged with walled rooms in those rooms",
       [](const SegmentOptions& o) { return o.open_rooms.enabled && o.open_rooms.fan_ray_share > 0.0 && o.open_rooms.cut_outside_parts; },
       [](SegmentOptions& o) { o.open_rooms.cut_outside_parts = false; });
-  outside.leave_out = [](Segmentation& s, const OccupancyGrid& grid, const cv::Mat& floor, const SegmentOptions& o) {
+  outside.leave_out = [](Segmentation& s, const OccupancyGrid& grid, const cv::Mat& floor, const SegmentOptions& o, BuildingInside& inside) {
     // The rays it reads are the cells the cleaning removed: without it (--no-clean: the free space
     // decomposed as it is) the cells beyond a room's polygon are specks, and a fan stays in its room.
-    if (o.clean) leave_out_outside_parts(s, grid, floor, o.open_rooms);
+    if (o.clean) leave_out_outside_parts(s, grid, floor, o.open_rooms, &inside);
   };
   outside.whole_map = true;  // as the fans
   SegmentationRule door_flags = unswitched_rule("door-flags", RuleStage::kDescribe, "a passage at most --door-width wide is a door", always);

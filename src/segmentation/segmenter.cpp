@@ -400,9 +400,10 @@ Segmentation segment_input(const SegmentationInput& input, const SegmentOptions&
     if (!starts(rule, RuleStage::kLabel, options)) continue;
     segmentation = rule.label(cells, pieces, options, spans);
   }
+  BuildingInside inside(cells.cells);
   for (const SegmentationRule& rule : rules) {
     if ((rule.whole_map && !to_label.empty()) || !starts(rule, RuleStage::kLeaveOut, options)) continue;
-    rule.leave_out(segmentation, cells, input.floor, options);
+    rule.leave_out(segmentation, cells, input.floor, options, inside);
   }
   timer.next(SegmentStage::kOutputs);
   // Once the rooms are final, whatever decided them; a window labelling only part of its cells

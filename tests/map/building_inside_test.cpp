@@ -63,5 +63,20 @@ TEST(BuildingInside, EqualsTheDefinitionOnRandomGrids) {
   }
 }
 
+// The kept inside is building_inside()'s, computed once per closing: asked again with the same closing,
+// the same matrix comes back (no second computation); another closing gives that closing's inside.
+TEST(BuildingInside, KeptForTheSameClosingAndComputedAgainForAnother) {
+  const cv::Mat cells = house(30);
+  BuildingInside kept(cells);
+  const cv::Mat& first = kept.at(40);  // closes the 1.5 m gap
+  EXPECT_EQ(cv::countNonZero(first != building_inside(cells, 40)), 0);
+  EXPECT_EQ(first.at<unsigned char>(40, 50), 255);
+  const unsigned char* data = first.data;
+  EXPECT_EQ(kept.at(40).data, data);
+  const cv::Mat& narrow = kept.at(20);  // does not
+  EXPECT_EQ(cv::countNonZero(narrow != building_inside(cells, 20)), 0);
+  EXPECT_EQ(narrow.at<unsigned char>(40, 50), 0);
+}
+
 }  // namespace
 }  // namespace topocut

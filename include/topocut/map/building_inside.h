@@ -14,6 +14,21 @@ namespace topocut {
 // The walls themselves count as inside. Costs the walls' runs, not the cells.
 cv::Mat building_inside(const cv::Mat& cells, double closing);
 
+// building_inside() of one grid, computed when first asked for and kept for the next caller with the
+// same closing: the two leave-out rows (open-fans, outside-parts) read the same inside in turn. Holds a
+// reference to cells, which must outlive it and stay unchanged.
+class BuildingInside {
+ public:
+  explicit BuildingInside(const cv::Mat& cells) : cells_(cells) {}
+  // building_inside(cells, closing); computed again only for another closing.
+  const cv::Mat& at(double closing);
+
+ private:
+  const cv::Mat& cells_;
+  double closing_ = 0.0;
+  cv::Mat inside_;
+};
+
 // Whether any of cells (CV_8UC1) is kOccupied, stopping at the first: without, walls cannot be told
 // from never-seen space (walls drawn in the unknown grey), and nothing is inside.
 bool has_occupied_cell(const cv::Mat& cells);

@@ -7,6 +7,7 @@
 
 #include "topocut/core/occupancy_grid.h"
 #include "topocut/core/option_table.h"
+#include "topocut/map/building_inside.h"
 #include "topocut/map/rasterize.h"
 #include "topocut/segmentation/rooms_from_pieces.h"
 
@@ -83,8 +84,9 @@ PieceSet join_open_rooms(const PieceSet& rooms, const OccupancyGrid& grid, const
 // cells are closed across gaps up to fan_closing metres). Their cells get 0, they and their passages
 // go, the other rooms keep their order, numbered 1..N again. Unchanged unless options.enabled and
 // fan_ray_share > 0, and on a grid without occupied cells. Throws Error on bad options, sizes or types,
-// rooms not numbered 1..N in order, or a label of no room.
+// rooms not numbered 1..N in order, or a label of no room. inside, if given, is grid's building inside,
+// shared with the next row that reads it.
 void leave_out_fans(Segmentation& segmentation, const OccupancyGrid& grid, const cv::Mat& floor,
-                    const OpenRoomOptions& options = {});
+                    const OpenRoomOptions& options = {}, BuildingInside* inside = nullptr);
 
 }  // namespace topocut

@@ -5,6 +5,7 @@
 
 #include "topocut/core/occupancy_grid.h"
 #include "topocut/core/segmentation.h"
+#include "topocut/map/building_inside.h"
 #include "topocut/segmentation/open_rooms.h"
 
 namespace topocut {
@@ -21,8 +22,9 @@ namespace topocut {
 // Rooms keep their ids. Nothing is cut where a room without rays (labelled_area <= area) has most of its
 // floor outside: the map's walls do not enclose its rooms. Unchanged unless options.enabled,
 // fan_ray_share > 0 and cut_outside_parts, and on a grid without occupied cells. Throws Error on bad
-// options, sizes or types, rooms not numbered 1..N in order, or a label of no room.
+// options, sizes or types, rooms not numbered 1..N in order, or a label of no room. inside, if given, is
+// grid's building inside, shared with the row before.
 void leave_out_outside_parts(Segmentation& segmentation, const OccupancyGrid& grid, const cv::Mat& floor,
-                             const OpenRoomOptions& options = {});
+                             const OpenRoomOptions& options = {}, BuildingInside* inside = nullptr);
 
 }  // namespace topocut

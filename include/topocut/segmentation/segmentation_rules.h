@@ -25,6 +25,7 @@
 #include "topocut/core/occupancy_grid.h"
 #include "topocut/core/segmentation.h"
 #include "topocut/decomposition/decompose.h"
+#include "topocut/map/building_inside.h"
 #include "topocut/map/free_space_cleaning.h"
 #include "topocut/map/rasterize.h"
 #include "topocut/segmentation/merge_criteria.h"
@@ -84,8 +85,10 @@ struct SegmentationRule {
                              const std::vector<CellSpan>& spans)>
       label;
   // kLeaveOut: the labelled rooms of grid without those no person draws; floor: the free space the
-  // rooms were made of (CV_8UC1, the grid's size), so that the rays the labelling gave a room are seen.
-  std::function<void(Segmentation&, const OccupancyGrid& grid, const cv::Mat& floor, const SegmentOptions&)> leave_out;
+  // rooms were made of (CV_8UC1, the grid's size), so that the rays the labelling gave a room are seen;
+  // inside: grid's building inside, computed by the first row that reads it, for the rows after it.
+  std::function<void(Segmentation&, const OccupancyGrid& grid, const cv::Mat& floor, const SegmentOptions&, BuildingInside& inside)>
+      leave_out;
   // kDescribe: what is measured on the labelled rooms; whole_map: only where every room is labelled
   // whole (a window labelling part of its cells leaves it to its caller).
   std::function<void(Segmentation&, const SegmentOptions&)> describe;

@@ -187,9 +187,9 @@ std::vector<char> fan_rooms(const Segmentation& segmentation, const OccupancyGri
 // its floor cells inside the building (building_inside(), walls closed across closing metres): a walled
 // room (a hall, a small room by the front door) that holds a fan seen through its door is still a room.
 void keep_walled_in(std::vector<char>& fan, const std::vector<cv::Rect>& box, const cv::Mat& labels, const OccupancyGrid& grid,
-                    const cv::Mat& floor, double share, double closing) {
+                    const cv::Mat& floor, double share, double closing, BuildingInside& building) {
   if (share >= 1.0) return;
-  const cv::Mat inside = building_inside(grid.cells, closing / grid.resolution);
+  const cv::Mat& inside = building.at(closing / grid.resolution);
   for (std::size_t id = 1; id < fan.size(); ++id) {
     if (!fan[id]) continue;
     const cv::Mat room = (labels(box[id]) == static_cast<int>(id)) & floor(box[id]);
@@ -200,14 +200,16 @@ void keep_walled_in(std::vector<char>& fan, const std::vector<cv::Rect>& box, co
 
 }  // namespace
 
-void leave_out_fans(Segmentation& segmentation, const OccupancyGrid& grid, const cv::Mat& floor, const OpenRoomOptions& options) {
+void leave_out_fans(Segmentation& segmentation, const OccupancyGrid& grid, const cv::Mat& floor, const OpenRoomOptions& options,
+                    BuildingInside* inside) {
   validate(options);
   if (!options.enabled || options.fan_ray_share <= 0.0 || segmentation.rooms.empty() || !has_occupied_cell(grid.cells)) return;
   check_labelled(segmentation, grid, floor, "leave_out_fans");
   std::vector<cv::Rect> boxes;
   std::vector<char> fan = fan_rooms(segmentation, grid, floor, options, boxes);
   if (std::find(fan.begin(), fan.end(), 1) == fan.end()) return;
-  keep_walled_in(fan, boxes, segmentation.labels, grid, floor, options.fan_inside_share, options.fan_closing);
+  BuildingInside own(grid.cells);
+  keep_walled_in(fan, boxes, segmentation.labels, grid, floor, options.fan_inside_share, options.fan_closing, inside ? *inside : own);
   if (std::find(fan.begin(), fan.end(), 1) == fan.end()) return;
   std::vector<int> new_id(fan.size(), 0);
   std::vector<Room> rooms;

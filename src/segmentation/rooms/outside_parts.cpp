@@ -142,21 +142,33 @@ PolygonWithHoles traced_polygon(const cv::Mat& labels, const cv::Mat& floor, int
 // Clears the room's cells in box that lie outside, and then those of every part of it but the largest
 // (8-connected) that touches a cell outside: the bits of a fan the closing enclosed against a wall far
 // out. A free speck walled in inside the building, labelled with the room, stays.
-void clear_outside(cv::Mat& labels, int id, const cv::Rect& box, const cv::Mat& inside) {
+void clear_outside(cv::Mat& labels, int id, cv::Rect box, const cv::Mat& inside) {
   cv::Mat room(box.size(), CV_8UC1, cv::Scalar(0));
+  int top = box.height, bottom = -1, left = box.width, right = -1;  // of its cells inside, in room
   for (int r = 0; r < box.height; ++r) {
     int* label = labels.ptr<int>(box.y + r) + box.x;
     const unsigned char* in = inside.ptr<unsigned char>(box.y + r) + box.x;
     unsigned char* own = room.ptr<unsigned char>(r);
     for (int c = 0; c < box.width; ++c) {
       if (label[c] != id) continue;
-      if (in[c]) own[c] = 255;
-      else label[c] = 0;
+      if (in[c]) {
+        own[c] = 255;
+        top = std::min(top, r);
+        bottom = r;
+        left = std::min(left, c);
+        right = std::max(right, c);
+      } else {
+        label[c] = 0;
+      }
     }
   }
+  if (bottom < 0) return;
+  const cv::Rect kept(left, top, right - left + 1, bottom - top + 1);
+  // The parts of what is left, in its own box: the fan cut off often spans most of the room's box.
   cv::Mat part, stats, centres;
-  const int parts = cv::connectedComponentsWithStats(room, part, stats, centres, 8, CV_32S);
+  const int parts = cv::connectedComponentsWithStats(room(kept), part, stats, centres, 8, CV_32S);
   if (parts <= 2) return;
+  box = cv::Rect(box.x + kept.x, box.y + kept.y, kept.width, kept.height);
   int largest = 1;
   for (int k = 2; k < parts; ++k)
     if (stats.at<int>(k, cv::CC_STAT_AREA) > stats.at<int>(largest, cv::CC_STAT_AREA)) largest = k;
@@ -211,7 +223,8 @@ bool middle_outside(const Passage& passage, const OccupancyGrid& grid, const cv:
 
 }  // namespace
 
-void leave_out_outside_parts(Segmentation& segmentation, const OccupancyGrid& grid, const cv::Mat& floor, const OpenRoomOptions& options) {
+void leave_out_outside_parts(Segmentation& segmentation, const OccupancyGrid& grid, const cv::Mat& floor, const OpenRoomOptions& options,
+                             BuildingInside* building) {
   validate(options);
   if (!options.enabled || options.fan_ray_share <= 0.0 || !options.cut_outside_parts || segmentation.rooms.empty() ||
       !has_occupied_cell(grid.cells))
@@ -219,7 +232,8 @@ void leave_out_outside_parts(Segmentation& segmentation, const OccupancyGrid& gr
   check_labelled(segmentation, grid, floor, "leave_out_outside_parts");
   const auto rays = [&](const Room& room) { return holds_rays(room, options); };
   if (std::none_of(segmentation.rooms.begin(), segmentation.rooms.end(), rays)) return;  // a drawn plan: no pass over the grid
-  const cv::Mat inside = building_inside(grid.cells, options.fan_closing / grid.resolution);
+  BuildingInside own(grid.cells);
+  const cv::Mat& inside = (building ? *building : own).at(options.fan_closing / grid.resolution);
   const std::vector<RoomTally> tally = tally_rooms(segmentation.labels, floor, inside, segmentation.rooms.size());
   if (rooms_outside(segmentation, tally, options)) return;
   std::vector<char> cut(segmentation.rooms.size() + 1, 0);  // every room judged on the labels as they came
