@@ -270,13 +270,38 @@ std::vector<OrphanGroup> orphan_groups(const std::vector<int>& orphans, const st
 
 constexpr int kSpreadMargin = 64;  // first margin around groups of spread orphans (cells)
 
+// The next round's groups after a round over groups (margins: the margin each was grown by): each
+// group's orphans its window's transform left unsure (got < 0; reaches: theirs), in their box grown by
+// the largest of their reaches, which holds what the whole map gives each (a reach bounds the whole
+// map's distance from above), or by twice the group's margin where one of them saw no label at all.
+// Each group takes its own reach: one far orphan no longer grows every other group's window.
+void next_round(const std::vector<int>& orphans, cv::Size size, const OrphanGroup& group, int margin, const std::vector<int>& got,
+                const std::vector<int>& reaches, std::vector<OrphanGroup>& next, std::vector<int>& next_margins) {
+  OrphanGroup unsure;
+  cv::Rect box;
+  int reach = 0;  // the largest reach of the unsure orphans, -1 if one has none
+  for (std::size_t j = 0; j < got.size(); ++j) {
+    if (got[j] >= 0) continue;
+    const std::size_t k = group.members[j];
+    const cv::Rect cell(orphans[k] % size.width, orphans[k] / size.width, 1, 1);
+    box = unsure.members.empty() ? cell : box | cell;
+    unsure.members.push_back(k);
+    reach = reaches[j] < 0 || reach < 0 ? -1 : std::max(reach, reaches[j]);
+  }
+  if (unsure.members.empty()) return;
+  const int grown = reach > 0 ? reach : static_cast<int>(std::min<long>(2L * margin, std::max(size.width, size.height)));
+  unsure.window = grown_box(box, grown, cv::Rect(0, 0, size.width, size.height));
+  next.push_back(std::move(unsure));
+  next_margins.push_back(grown);
+}
+
 // The labels one transform of the whole map gives orphans too many and too spread for a window
 // each (settled as nearest_labels_in() over the map, in the orphans' order): from the transforms of
 // windows around groups of them, each orphan the whole map might answer otherwise (its distance
-// reaching the window's side) again with windows grown by the largest distance those windows found
-// (a round that cannot fail; twice the margin where a window held no label); the rest in one
-// transform of the whole map once the windows would cost more than it (lab_b: 1,205 orphans at
-// 25-61 cells from a label, their windows a fifth of the map).
+// reaching the window's side) again in a window grown by its group's reach (next_round(): a round
+// that cannot fail, but where a window held no label); the rest in one transform of the whole map
+// once the windows would cost more than it (lab_b: 1,205 orphans at 25-61 cells from a label, their
+// windows a fifth of the map).
 void nearest_labels_spread(const cv::Mat& labels, const std::vector<int>& orphans, std::vector<int>& settled_index,
                            std::vector<int>& settled_label) {
   const cv::Rect all(0, 0, labels.cols, labels.rows);
@@ -291,9 +316,10 @@ void nearest_labels_spread(const cv::Mat& labels, const std::vector<int>& orphan
     for (const std::size_t k : members) cells.push_back(orphans[k]);
     return cells;
   };
-  for (int margin = kSpreadMargin; !left.empty();) {
-    std::vector<OrphanGroup> groups;
-    if (margin < std::max(labels.rows, labels.cols)) groups = orphan_groups(orphans, left, margin, labels.size());
+  std::vector<OrphanGroup> groups;
+  if (kSpreadMargin < std::max(labels.rows, labels.cols)) groups = orphan_groups(orphans, left, kSpreadMargin, labels.size());
+  std::vector<int> margins(groups.size(), kSpreadMargin);
+  while (!left.empty()) {
     double area = 0.0;
     for (const OrphanGroup& group : groups) area += group.window.area();
     if (groups.empty() || work + area > budget) {
@@ -302,26 +328,19 @@ void nearest_labels_spread(const cv::Mat& labels, const std::vector<int>& orphan
       break;
     }
     work += area;
-    std::vector<std::size_t> unsure;
-    int reach = 0;  // the largest reach of the unsure orphans, -1 if one has none
-    for (const OrphanGroup& group : groups) {
+    std::vector<OrphanGroup> next;
+    std::vector<int> next_margins;
+    for (std::size_t g = 0; g < groups.size(); ++g) {
       std::vector<int> reaches;
-      const std::vector<int> got = window_nearest_labels(labels, group.window, cells_of(group.members), true, &reaches);
-      for (std::size_t j = 0; j < got.size(); ++j) {
-        if (got[j] < 0) {
-          unsure.push_back(group.members[j]);
-          reach = reaches[j] < 0 || reach < 0 ? -1 : std::max(reach, reaches[j]);
-        } else {
-          found[group.members[j]] = got[j];
-        }
-      }
+      const std::vector<int> got = window_nearest_labels(labels, groups[g].window, cells_of(groups[g].members), true, &reaches);
+      for (std::size_t j = 0; j < got.size(); ++j)
+        if (got[j] >= 0) found[groups[g].members[j]] = got[j];
+      next_round(orphans, labels.size(), groups[g], margins[g], got, reaches, next, next_margins);
     }
-    std::sort(unsure.begin(), unsure.end());
-    left = std::move(unsure);
-    // Windows grown by every unsure orphan's reach hold what the whole map gives each (a reach
-    // bounds the whole map's distance from above), so the next round takes that margin and is the
-    // last; twice the margin only when an orphan's window held no label at all.
-    margin = reach > 0 ? reach : 2 * margin;
+    left.clear();
+    for (const OrphanGroup& group : next) left.insert(left.end(), group.members.begin(), group.members.end());
+    groups = std::move(next);
+    margins = std::move(next_margins);
   }
   append_settled(orphans, found, settled_index, settled_label);
 }
