@@ -141,14 +141,12 @@ std::vector<cv::Rect> flagged_boxes(const cv::Mat& labels, const std::vector<cha
   std::vector<cv::Rect> boxes(flagged.size());
   for (int r = 0; r < labels.rows; ++r) {
     const int* label = labels.ptr<int>(r);
-    for (int c = 0; c < labels.cols; ++c) {
+    for (int c = 0; c < labels.cols;) {
       const std::size_t id = static_cast<std::size_t>(label[c]);  // a negative label wraps round to a large one
       if (id >= flagged.size()) throw Error("leave_out_fans: a label is no room of the segmentation");
-      if (!flagged[id]) continue;
-      int end = c + 1;
-      while (end < labels.cols && label[end] == label[c]) ++end;
-      boxes[id] |= cv::Rect(c, r, end - c, 1);
-      c = end - 1;
+      const int end = run_end(label, c, labels.cols);
+      if (flagged[id]) boxes[id] |= cv::Rect(c, r, end - c, 1);
+      c = end;
     }
   }
   return boxes;
@@ -223,7 +221,11 @@ void leave_out_fans(Segmentation& segmentation, const OccupancyGrid& grid, const
   segmentation.rooms = std::move(rooms);
   for (int r = 0; r < segmentation.labels.rows; ++r) {  // every label checked by fan_rooms()
     int* label = segmentation.labels.ptr<int>(r);
-    for (int c = 0; c < segmentation.labels.cols; ++c) label[c] = new_id[static_cast<std::size_t>(label[c])];
+    for (int c = 0; c < segmentation.labels.cols;) {
+      const int end = run_end(label, c, segmentation.labels.cols);
+      std::fill(label + c, label + end, new_id[static_cast<std::size_t>(label[c])]);
+      c = end;
+    }
   }
   std::erase_if(segmentation.passages, [&](Passage& p) {
     p.room_a = new_id[static_cast<std::size_t>(p.room_a)];
