@@ -4,11 +4,11 @@
 #include <optional>
 #include <vector>
 
-#include <opencv2/imgproc.hpp>
 
 #include "segmentation/merging/window_outline.h"
 #include "topocut/core/error.h"
 #include "topocut/map/building_inside.h"
+#include "topocut/map/cell_components.h"
 #include "topocut/map/free_space_polygons.h"
 
 namespace topocut {
@@ -164,16 +164,14 @@ void clear_outside(cv::Mat& labels, int id, cv::Rect box, const cv::Mat& inside)
   if (bottom < 0) return;
   const cv::Rect kept(left, top, right - left + 1, bottom - top + 1);
   // The parts of what is left, in its own box: the fan cut off often spans most of the room's box.
-  cv::Mat part, stats, centres;
-  const int parts = cv::connectedComponentsWithStats(room(kept), part, stats, centres, 8, CV_32S);
-  if (parts <= 2) return;
+  std::vector<long long> sizes;
+  const cv::Mat part = cell_components(room(kept), /*eight_connected=*/true, sizes);
+  if (sizes.size() <= 1) return;
   box = cv::Rect(box.x + kept.x, box.y + kept.y, kept.width, kept.height);
-  int largest = 1;
-  for (int k = 2; k < parts; ++k)
-    if (stats.at<int>(k, cv::CC_STAT_AREA) > stats.at<int>(largest, cv::CC_STAT_AREA)) largest = k;
+  const int largest = static_cast<int>(std::max_element(sizes.begin(), sizes.end()) - sizes.begin()) + 1;  // the first of equals
   // The parts touching a cell outside: an outside cell's 8 neighbours, the box grown by one.
   const cv::Rect grown = cv::Rect(box.x - 1, box.y - 1, box.width + 2, box.height + 2) & cv::Rect(0, 0, labels.cols, labels.rows);
-  std::vector<char> touches(static_cast<std::size_t>(parts), 0);
+  std::vector<char> touches(sizes.size() + 1, 0);
   for (int r = 0; r < box.height; ++r)
     for (int c = 0; c < box.width; ++c) {
       const int k = part.at<int>(r, c);
