@@ -4,7 +4,6 @@
 #include <optional>
 #include <vector>
 
-
 #include "segmentation/merging/window_outline.h"
 #include "topocut/core/error.h"
 #include "topocut/map/building_inside.h"
