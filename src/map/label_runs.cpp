@@ -3,25 +3,16 @@
 #include <algorithm>
 #include <numeric>
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 #include "topocut/core/error.h"
 #include "topocut/map/rasterize.h"
 
 namespace topocut {
 
 namespace {
-
-// One past the last cell of the run of value that starts at row[c] (c < n): eight cells at a time
-// while they all hold it, which the compiler compares together.
-int run_end(const int* row, int c, int n, int value) {
-  int end = c + 1;
-  for (; end + 8 <= n; end += 8) {
-    int differ = 0;
-    for (int k = 0; k < 8; ++k) differ |= row[end + k] != value;
-    if (differ) break;
-  }
-  while (end < n && row[end] == value) ++end;
-  return end;
-}
 
 // Appends runs (disjoint) in column order to out, adjacent runs of one label joined.
 void push_joined(std::vector<LabelRun>& runs, LabelRuns& out) {
@@ -86,6 +77,20 @@ void LabelRuns::index() {
     }
   }
   label_begin_.push_back(order_.size());
+}
+
+int run_end(const int* row, int c, int n, int value) {
+  int end = c + 1;
+#if defined(__SSE2__)
+  // Four cells at a compare while they all hold it (fewer instructions than the compiler's own
+  // vectorising of an eight-cell test gave the leave-out rows' passes over whole label images).
+  const __m128i wanted = _mm_set1_epi32(value);
+  while (end + 4 <= n &&
+         _mm_movemask_epi8(_mm_cmpeq_epi32(_mm_loadu_si128(reinterpret_cast<const __m128i*>(row + end)), wanted)) == 0xFFFF)
+    end += 4;
+#endif
+  while (end < n && row[end] == value) ++end;
+  return end;
 }
 
 LabelRuns label_runs(const cv::Mat& labels) {

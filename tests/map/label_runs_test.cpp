@@ -1,6 +1,9 @@
 // Label runs: the runs of a label image give its labels back cell for cell, and the runs of pieces
 // made without an image are those of rasterize_polygons()'s image, overlaps included (the earlier
 // piece keeps a cell).
+#include <random>
+#include <vector>
+
 #include <gtest/gtest.h>
 #include <opencv2/imgproc.hpp>
 
@@ -103,6 +106,36 @@ TEST(LabelRuns, PiecesAreTheirRasterizedImage) {
     EXPECT_EQ(cv::countNonZero(image_of(from_spans) != image_of(runs)), 0) << "round " << round;
     EXPECT_EQ(from_spans.all().size(), runs.all().size()) << "round " << round;
   }
+}
+
+// run_end() against a cell-at-a-time reference, on runs of every length from every start, so that the
+// eight-cell compares meet the rows' ends and unaligned starts.
+int reference_run_end(const std::vector<int>& row, int begin) {
+  int end = begin + 1;
+  while (end < static_cast<int>(row.size()) && row[end] == row[begin]) ++end;
+  return end;
+}
+
+TEST(RunEnd, EqualsACellAtATimeFromEveryStart) {
+  std::mt19937 random(5);
+  for (int round = 0; round < 200; ++round) {
+    std::vector<int> row;
+    const int cols = 1 + static_cast<int>(random() % 70);
+    while (static_cast<int>(row.size()) < cols) {  // runs of 1-13 cells of a few labels, negative ones too
+      const int label = static_cast<int>(random() % 5) - 1;
+      for (int k = 1 + static_cast<int>(random() % 13); k > 0 && static_cast<int>(row.size()) < cols; --k) row.push_back(label);
+    }
+    for (int begin = 0; begin < cols; ++begin)
+      ASSERT_EQ(run_end(row.data(), begin, cols, row[static_cast<std::size_t>(begin)]), reference_run_end(row, begin))
+          << "round " << round << " from " << begin;
+  }
+}
+
+TEST(RunEnd, AWholeRowIsOneRun) {
+  const std::vector<int> row(37, 4);
+  EXPECT_EQ(run_end(row.data(), 0, 37, 4), 37);
+  EXPECT_EQ(run_end(row.data(), 36, 37, 4), 37);
+  EXPECT_EQ(run_end(row.data(), 0, 1, 4), 1);  // n bounds the run, not the data
 }
 
 }  // namespace

@@ -62,6 +62,11 @@ class LabelRuns {
 // The runs of a label image (CV_32SC1; labels <= 0 are no label).
 LabelRuns label_runs(const cv::Mat& labels);
 
+// One past the last cell of the run of value that starts at row[c] (c < n, row[c] == value), n if it
+// reaches the row's end: label images are mostly long runs, which this walks four cells at a compare
+// where SSE2 is there.
+int run_end(const int* row, int c, int n, int value);
+
 // The runs of rasterize_polygons(polygons, size) without the image: polygon i's cells labelled i + 1,
 // the earlier polygon keeping a cell two of them claim.
 LabelRuns polygon_label_runs(const std::vector<PolygonWithHoles>& polygons, cv::Size size);

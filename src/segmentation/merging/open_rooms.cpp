@@ -144,7 +144,7 @@ std::vector<cv::Rect> flagged_boxes(const cv::Mat& labels, const std::vector<cha
     for (int c = 0; c < labels.cols;) {
       const std::size_t id = static_cast<std::size_t>(label[c]);  // a negative label wraps round to a large one
       if (id >= flagged.size()) throw Error("leave_out_fans: a label is no room of the segmentation");
-      const int end = run_end(label, c, labels.cols);
+      const int end = run_end(label, c, labels.cols, label[c]);
       if (flagged[id]) boxes[id] |= cv::Rect(c, r, end - c, 1);
       c = end;
     }
@@ -222,7 +222,7 @@ void leave_out_fans(Segmentation& segmentation, const OccupancyGrid& grid, const
   for (int r = 0; r < segmentation.labels.rows; ++r) {  // every label checked by fan_rooms()
     int* label = segmentation.labels.ptr<int>(r);
     for (int c = 0; c < segmentation.labels.cols;) {
-      const int end = run_end(label, c, segmentation.labels.cols);
+      const int end = run_end(label, c, segmentation.labels.cols, label[c]);
       std::fill(label + c, label + end, new_id[static_cast<std::size_t>(label[c])]);
       c = end;
     }

@@ -9,6 +9,7 @@
 #include "topocut/map/building_inside.h"
 #include "topocut/map/cell_components.h"
 #include "topocut/map/free_space_polygons.h"
+#include "topocut/map/label_runs.h"
 
 namespace topocut {
 
@@ -41,7 +42,7 @@ std::vector<RoomTally> tally_rooms(const cv::Mat& labels, const cv::Mat& floor, 
     const unsigned char* in = inside.ptr<unsigned char>(r);
     for (int c = 0; c < labels.cols;) {
       const int id = label[c];
-      const int end = run_end(label, c, labels.cols);
+      const int end = run_end(label, c, labels.cols, label[c]);
       if (id < 0 || static_cast<std::size_t>(id) > rooms) throw Error("leave_out_outside_parts: a label is no room of the segmentation");
       if (id == 0) {
         c = end;
