@@ -66,7 +66,7 @@ std::vector<Case> cases() {
   for (int n : {100, 300, 1000, 3000, 10000, 30000, 100000}) {
     out.push_back({"spiky star", "spiky_" + std::to_string(n), [n] { return spiky(n); }, 3.0});
   }
-  const std::string dir = std::string(TOPOCUT_SHARED_DIR) + "/datasets/bormann";
+  const std::string dir = std::string(TOPOCUT_SHARED_DIR "/datasets/bormann");
   if (std::filesystem::exists(dir)) {
     for (const char* map : {"Freiburg52_scan", "lab_ipa", "lab_intel_furnitures", "NLB_furnitures", "office_c_furnitures",
                             "office_e", "office_i_furnitures"}) {

@@ -74,7 +74,7 @@ bool same_partition(const Segmentation& a, const Segmentation& b) {
 
 int run(std::vector<std::string> names, int batch_every, bool settle, bool rest, const IncrementalOptions& incremental) {
   if (names.empty()) names = {"intel", "aces", "csail", "fhw"};
-  const std::string folder = std::string(TOPOCUT_SHARED_DIR) + "/datasets/carmen";
+  const std::string folder = std::string(TOPOCUT_SHARED_DIR "/datasets/carmen");
   benchmarks::require_folder(folder);
   cv::setNumThreads(1);
   std::printf("grid: %s; batch on %s\n\n",

@@ -119,7 +119,7 @@ bool run_map(const std::string& path, const ExplorationRunOptions& options, Tota
 
 int run(const ExplorationRunOptions& options, std::vector<std::string> paths) {
   if (paths.empty()) {
-    const std::string folder = std::string(TOPOCUT_SHARED_DIR) + "/datasets/real_maps";
+    const std::string folder = std::string(TOPOCUT_SHARED_DIR "/datasets/real_maps");
     benchmarks::require_folder(folder);
     paths = maps_in(folder);
   }

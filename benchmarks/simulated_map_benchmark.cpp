@@ -75,7 +75,7 @@ bool run_set(const Set& set, int plans, int seeds) {
 }
 
 int run(int plans, int seeds) {
-  const std::string data = std::string(TOPOCUT_SHARED_DIR) + "/datasets";
+  const std::string data = std::string(TOPOCUT_SHARED_DIR "/datasets");
   const std::vector<Set> sets = {{"r2v homes", data + "/r2v"}, {"Bormann offices", data + "/bormann"},
                                  {"lex sketches", data + "/sketches/lex"}};
   for (const Set& set : sets) benchmarks::require_folder(set.folder);

@@ -141,7 +141,7 @@ void print_ratios(const std::vector<Case>& cases) {
 }
 
 int run(int runs, const std::string& topocut, const std::string& base) {
-  const std::string floorplan = std::string(TOPOCUT_SOURCE_DIR) + "/maps/floorplan.yaml";
+  const std::string floorplan = std::string(TOPOCUT_SOURCE_DIR "/maps/floorplan.yaml");
   std::vector<Case> cases;
   for (const std::string& binary : {topocut, base}) {
     if (binary.empty()) continue;

@@ -166,7 +166,7 @@ void write_small_png(const std::string& path, cv::Mat image, std::size_t max_byt
 
 int run(std::vector<std::string> names, bool methods, bool sweep, const std::string& pictures) {
   if (names.empty()) names = {"intel", "aces", "csail", "fhw"};
-  const std::string folder = std::string(TOPOCUT_SHARED_DIR) + "/datasets/carmen";
+  const std::string folder = std::string(TOPOCUT_SHARED_DIR "/datasets/carmen");
   benchmarks::require_folder(folder);
   auto path_of = [&](const std::string& name) { return folder + "/" + name + "-corrected.log.gz"; };
 

@@ -10,7 +10,7 @@
 namespace topocut::testing {
 
 // A file of the checkout's maps/ folder, by its name (e.g. "floorplan.yaml").
-inline std::string bundled(const std::string& name) { return std::string(TOPOCUT_SOURCE_DIR) + "/maps/" + name; }
+inline std::string bundled(const std::string& name) { return std::string(TOPOCUT_SOURCE_DIR "/maps/") + name; }
 
 // A small map: a free room in an occupied frame, written as dir/map.png; its path.
 inline std::string small_map(const TempDir& dir) {

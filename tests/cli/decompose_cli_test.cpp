@@ -185,7 +185,7 @@ TEST_F(DecomposeCli, AStdoutThatCannotBeWrittenIsAnError) {
   const fs::path err = dir_ / "stderr.txt";
   for (const std::string redirect : {" >/dev/full", " >&-"}) {
     SCOPED_TRACE(redirect);
-    const std::string command = std::string(TOPOCUT_CLI) + " decompose " + input.string() + " --tau 1" + redirect + " 2>" + err.string();
+    const std::string command = std::string(TOPOCUT_CLI " decompose ") + input.string() + " --tau 1" + redirect + " 2>" + err.string();
     const int status = std::system(command.c_str());
     ASSERT_TRUE(WIFEXITED(status));
     EXPECT_EQ(WEXITSTATUS(status), 1);
@@ -193,7 +193,7 @@ TEST_F(DecomposeCli, AStdoutThatCannotBeWrittenIsAnError) {
     EXPECT_EQ(std::count(message.begin(), message.end(), '\n'), 1) << message;
     EXPECT_NE(message.find("cannot write to standard output"), std::string::npos) << message;
   }
-  const int help = std::system((std::string(TOPOCUT_CLI) + " --help >/dev/full 2>/dev/null").c_str());
+  const int help = std::system((std::string(TOPOCUT_CLI " --help >/dev/full 2>/dev/null")).c_str());
   EXPECT_EQ(WEXITSTATUS(help), 1);
 }
 

@@ -47,7 +47,7 @@ TEST(DefaultsCli, BareEvaluateExplainsTheDataset) {
 
 TEST(DefaultsCli, TheBundledMapsAreADataset) {
   TempDir dir;
-  const CliResult r = run_cli(dir, "evaluate", {"--dataset", std::string(TOPOCUT_SOURCE_DIR) + "/maps"});
+  const CliResult r = run_cli(dir, "evaluate", {"--dataset", std::string(TOPOCUT_SOURCE_DIR "/maps")});
   ASSERT_EQ(r.code, 0) << r.err;
   for (const char* map : {"floorplan", "corridor_l", "furnished"}) EXPECT_TRUE(has(r.out, map)) << r.out;
 }

@@ -36,7 +36,7 @@ TEST(Determinism, SegmentWritesIdenticalLabelsOverlayJsonAndSvg) {
     SCOPED_TRACE(map);
     for (const std::string run : {"a", "b"}) {
       const CliResult r = run_cli(dir, "segment",
-                                  {std::string(TOPOCUT_SOURCE_DIR) + "/" + map, "--out-labels", dir.file(run + "_labels.png"),
+                                  {std::string(TOPOCUT_SOURCE_DIR "/") + map, "--out-labels", dir.file(run + "_labels.png"),
                                    "--out-color", dir.file(run + "_color.png"), "--out-json", dir.file(run + ".json"),
                                    "--out-svg", dir.file(run + ".svg")},
                                   600);

@@ -11,7 +11,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string bormann_folder() { return std::string(TOPOCUT_SHARED_DIR) + "/datasets/bormann"; }
+std::string bormann_folder() { return std::string(TOPOCUT_SHARED_DIR "/datasets/bormann"); }
 
 TEST(BormannDataset, DiscoversTheTwentyMaps) {
   if (!fs::is_directory(bormann_folder())) GTEST_SKIP() << "Bormann dataset not found at " << bormann_folder();

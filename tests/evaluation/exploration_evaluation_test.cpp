@@ -170,7 +170,7 @@ TEST(ExplorationFrame, DrawsMapRoomsRobotAndPath) {
 // Integration on the real maps: exploration ends on every map tried, the known map never marks
 // free what the map says is not, and incremental and batch agree at the end.
 TEST(ExplorationDataset, TerminatesOnRealMaps) {
-  const std::string folder = std::string(TOPOCUT_SHARED_DIR) + "/datasets/bormann";
+  const std::string folder = std::string(TOPOCUT_SHARED_DIR "/datasets/bormann");
   if (!fs::is_directory(folder)) GTEST_SKIP() << "dataset not found at " << folder;
   IncrementalDatasetOptions options;
   options.run.variants = {Variant::kPlain, Variant::kFurnished};

@@ -14,7 +14,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const std::string kDatasets = std::string(TOPOCUT_SHARED_DIR) + "/datasets";
+const std::string kDatasets = std::string(TOPOCUT_SHARED_DIR "/datasets");
 
 // The peer's labels scored against one annotator's sketches, as `topocut evaluate --labels` does.
 VariantSummary score_peer(const std::string& peer, const std::string& annotator) {

@@ -240,7 +240,7 @@ TEST_F(CarmenLogFile, FileErrorsNameThePath) {
 }
 
 TEST(CarmenLog, SharedIntelLog) {
-  const std::string path = std::string(TOPOCUT_SHARED_DIR) + "/datasets/carmen/intel-corrected.log.gz";
+  const std::string path = std::string(TOPOCUT_SHARED_DIR "/datasets/carmen/intel-corrected.log.gz");
   if (!fs::exists(path)) GTEST_SKIP() << "shared dataset not found: " << path;
   const CarmenLog log = read_carmen_log(path);
   ASSERT_EQ(log.scans.size(), 910u);

@@ -272,7 +272,7 @@ TEST(LoadMap, GreyPlusAlphaPng) {
 }
 
 TEST(LoadMap, BormannGreyAlphaMap) {
-  const std::string path = std::string(TOPOCUT_SHARED_DIR) + "/datasets/bormann/Freiburg52_scan.png";
+  const std::string path = std::string(TOPOCUT_SHARED_DIR "/datasets/bormann/Freiburg52_scan.png");
   if (!std::filesystem::exists(path)) GTEST_SKIP() << "shared Bormann dataset not found at " << path;
   MapLoadOptions fixed;
   fixed.detect_palette = false;

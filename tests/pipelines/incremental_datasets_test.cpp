@@ -22,7 +22,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const std::string kDatasets = std::string(TOPOCUT_SHARED_DIR) + "/datasets";
+const std::string kDatasets = std::string(TOPOCUT_SHARED_DIR "/datasets");
 
 // The maps of a dataset folder: images and ROS YAMLs, without ground truths and without the images
 // a YAML names.

@@ -17,7 +17,7 @@ double row_value(const std::string& name, const topocut::SegmentSettings& settin
 }
 
 TEST(SegmentOptionsFile, TheExamplesRobotFile) {
-  const topocut::SegmentOptions loaded = topocut::load_segment_options(std::string(TOPOCUT_SOURCE_DIR) + "/examples/robot.yaml");
+  const topocut::SegmentOptions loaded = topocut::load_segment_options(std::string(TOPOCUT_SOURCE_DIR "/examples/robot.yaml"));
   // What the command line --robot-radius 0.1 --concavity 3 --door-width 1.2 --min-room-area 1.5 sets.
   topocut::SegmentSettings given;
   for (const auto& [name, value] : std::vector<std::pair<std::string, double>>{

@@ -254,7 +254,7 @@ TEST(FramedUpdates, EveryUpdateIsInFramesBitForBitWhileUnchangedRoomsKeepTheirCe
 // The node's sequence on a Bormann map (revealed around its centre in 20 growing frames): the
 // report lists every room whose cells changed, and every update's placements are in_frame()'s.
 TEST(FramedUpdates, ABormannMapGrowingAsTheNodeSeesIt) {
-  const std::string path = std::string(TOPOCUT_SHARED_DIR) + "/datasets/bormann/NLB.png";
+  const std::string path = TOPOCUT_SHARED_DIR "/datasets/bormann/NLB.png";
   if (!std::filesystem::exists(path)) GTEST_SKIP() << "shared Bormann dataset not found at " << path;
   const cv::Mat grey = cv::imread(path, cv::IMREAD_GRAYSCALE);
   ASSERT_FALSE(grey.empty());

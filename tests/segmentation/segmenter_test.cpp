@@ -27,7 +27,7 @@ OccupancyGrid read_map(const std::string& path) {
   return grid;
 }
 
-std::string bundled(const std::string& name) { return std::string(TOPOCUT_SOURCE_DIR) + "/maps/" + name + ".png"; }
+std::string bundled(const std::string& name) { return std::string(TOPOCUT_SOURCE_DIR "/maps/") + name + ".png"; }
 
 // Invariants every segmentation must satisfy, whatever the decomposition did.
 void expect_consistent(const OccupancyGrid& grid, const Segmentation& s) {
@@ -227,7 +227,7 @@ TEST(Segment, BundledMapsTrivialModeHasOneRoomPerComponent) {
 }
 
 TEST(Segment, BormannMapTrivialMode) {
-  const std::string path = std::string(TOPOCUT_SHARED_DIR) + "/datasets/bormann/lab_ipa_furnitures.png";
+  const std::string path = std::string(TOPOCUT_SHARED_DIR "/datasets/bormann/lab_ipa_furnitures.png");
   if (!std::filesystem::exists(path)) GTEST_SKIP() << "shared Bormann dataset not found at " << path;
   const OccupancyGrid grid = read_map(path);
   const Segmentation s = segment(grid, trivial());

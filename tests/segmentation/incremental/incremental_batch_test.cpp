@@ -23,7 +23,7 @@ namespace {
 
 // Read with OpenCV directly (segmentation does not use io): grey > 250 free, < 50 occupied, else unknown.
 OccupancyGrid read_bundled(const std::string& name) {
-  const std::string path = std::string(TOPOCUT_SOURCE_DIR) + "/maps/" + name + ".png";
+  const std::string path = std::string(TOPOCUT_SOURCE_DIR "/maps/") + name + ".png";
   const cv::Mat grey = cv::imread(path, cv::IMREAD_GRAYSCALE);
   if (grey.empty()) throw Error("test map missing: " + path);
   OccupancyGrid grid{cv::Mat(grey.size(), CV_8UC1, cv::Scalar(kUnknown)), 0.05, {1.5, -2.0}};

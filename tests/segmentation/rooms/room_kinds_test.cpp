@@ -132,7 +132,7 @@ TEST(RoomKinds, RejectsBadThresholdsAndLabels) {
 // The bundled floor plan (maps/README.md): a corridor 2 m wide across the building at y 6..8 m,
 // rooms north and south of it. Read with OpenCV (the segmentation module does not use io).
 OccupancyGrid floorplan() {
-  const cv::Mat grey = cv::imread(std::string(TOPOCUT_SOURCE_DIR) + "/maps/floorplan.png", cv::IMREAD_GRAYSCALE);
+  const cv::Mat grey = cv::imread(std::string(TOPOCUT_SOURCE_DIR "/maps/floorplan.png"), cv::IMREAD_GRAYSCALE);
   if (grey.empty()) throw Error("test map missing: floorplan.png");
   OccupancyGrid grid{cv::Mat(grey.size(), CV_8UC1, cv::Scalar(kUnknown)), 0.05, {0.0, 0.0}};
   grid.cells.setTo(kFree, grey > 250);
