@@ -16,11 +16,25 @@ if(NOT Python_FOUND OR NOT pybind11_FOUND)
   message(STATUS "topocut: Python module not built (needs python3-dev and pybind11-dev)")
   return()
 endif()
+# Not built under the sanitizers: the interpreter is not instrumented, and an instrumented extension
+# loads only into one with the sanitizer runtime preloaded (pybind11's documentation does so, which
+# also instruments numpy, matplotlib and Python's own allocator; not tried here). Nothing would load
+# it, and building it cost CI's sanitizer build a minute; the Release suite builds and tests it.
+if(TOPOCUT_SANITIZE)
+  if(TOPOCUT_BUILD_TESTS)
+    add_test(NAME python_tests COMMAND ${CMAKE_COMMAND} -E echo
+             "python_tests skipped under TOPOCUT_SANITIZE: run them in the Release build (bash .ci/setup.sh test)")
+    set_tests_properties(python_tests PROPERTIES SKIP_REGULAR_EXPRESSION "skipped under TOPOCUT_SANITIZE")
+    add_test(NAME python_package COMMAND ${CMAKE_COMMAND} -E echo
+             "python_package skipped under TOPOCUT_SANITIZE: pip installs the Release build's extension (bash .ci/setup.sh test)")
+    set_tests_properties(python_package PROPERTIES SKIP_REGULAR_EXPRESSION "skipped under TOPOCUT_SANITIZE")
+  endif()
+  return()
+endif()
 
 # The package topocut in build/python/topocut: the extension _topocut, the pure-Python part
 # (src/python/topocut) and the type stubs, which the build writes from the option table by importing
-# the extension (not under the sanitizers: an instrumented extension loads only into an interpreter
-# with the sanitizer runtime preloaded).
+# the extension.
 set(python_package_dir ${CMAKE_BINARY_DIR}/python/topocut)
 file(GLOB python_sources CONFIGURE_DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/src/python/*.cpp)
 pybind11_add_module(topocut_python MODULE ${python_sources})
@@ -34,18 +48,14 @@ foreach(file IN LISTS python_package_sources)
   configure_file(${file} ${python_package_dir}/${name} COPYONLY)
 endforeach()
 set(python_stubs ${python_package_dir}/__init__.pyi)
-if(NOT TOPOCUT_SANITIZE)
-  add_custom_command(OUTPUT ${python_stubs}
-    COMMAND ${CMAKE_COMMAND} -E env PYTHONPATH=${CMAKE_BINARY_DIR}/python ${Python_EXECUTABLE}
-            ${CMAKE_CURRENT_SOURCE_DIR}/src/python/generate_stubs.py ${CMAKE_CURRENT_SOURCE_DIR}/src/python/topocut/__init__.pyi.in
-            ${python_stubs}
-    DEPENDS topocut_python ${CMAKE_CURRENT_SOURCE_DIR}/src/python/topocut/__init__.pyi.in
-            ${CMAKE_CURRENT_SOURCE_DIR}/src/python/generate_stubs.py ${python_package_sources}
-    COMMENT "Writing the topocut package's type stubs from the option table")
-  add_custom_target(topocut_python_stubs ALL DEPENDS ${python_stubs})
-else()
-  add_custom_target(topocut_python_stubs)
-endif()
+add_custom_command(OUTPUT ${python_stubs}
+  COMMAND ${CMAKE_COMMAND} -E env PYTHONPATH=${CMAKE_BINARY_DIR}/python ${Python_EXECUTABLE}
+          ${CMAKE_CURRENT_SOURCE_DIR}/src/python/generate_stubs.py ${CMAKE_CURRENT_SOURCE_DIR}/src/python/topocut/__init__.pyi.in
+          ${python_stubs}
+  DEPENDS topocut_python ${CMAKE_CURRENT_SOURCE_DIR}/src/python/topocut/__init__.pyi.in
+          ${CMAKE_CURRENT_SOURCE_DIR}/src/python/generate_stubs.py ${python_package_sources}
+  COMMENT "Writing the topocut package's type stubs from the option table")
+add_custom_target(topocut_python_stubs ALL DEPENDS ${python_stubs})
 
 set(TOPOCUT_PYTHON_INSTALL_DIR lib/python${Python_VERSION_MAJOR}.${Python_VERSION_MINOR}/dist-packages
     CACHE STRING "Where cmake --install puts the Python package, relative to the prefix (Debian's python3 reads <prefix>/lib/python3.X/dist-packages for /usr/local)")
@@ -63,18 +73,6 @@ install(CODE "
 if(TOPOCUT_BUILD_TESTS)
   set(python_test_env PYTHONPATH=${CMAKE_BINARY_DIR}/python TOPOCUT_CLI=$<TARGET_FILE:topocut>
       TOPOCUT_SOURCE_DIR=${CMAKE_CURRENT_SOURCE_DIR} TOPOCUT_SHARED_DIR=${CMAKE_CURRENT_SOURCE_DIR}/../shared)
-  if(TOPOCUT_SANITIZE)
-    # The interpreter is not instrumented: pybind11's documentation has the ASan runtime preloaded
-    # into it, which also instruments numpy, matplotlib and Python's own allocator. Not tried here
-    # yet, so the sanitizer suite skips the Python tests with a message; the Release suite runs them.
-    add_test(NAME python_tests COMMAND ${CMAKE_COMMAND} -E echo
-             "python_tests skipped under TOPOCUT_SANITIZE: run them in the Release build (bash .ci/setup.sh test)")
-    set_tests_properties(python_tests PROPERTIES SKIP_REGULAR_EXPRESSION "skipped under TOPOCUT_SANITIZE")
-    add_test(NAME python_package COMMAND ${CMAKE_COMMAND} -E echo
-             "python_package skipped under TOPOCUT_SANITIZE: pip installs the Release build's extension (bash .ci/setup.sh test)")
-    set_tests_properties(python_package PROPERTIES SKIP_REGULAR_EXPRESSION "skipped under TOPOCUT_SANITIZE")
-    return()
-  endif()
   add_test(NAME python_tests COMMAND ${Python_EXECUTABLE} -m pytest -q -p no:cacheprovider ${CMAKE_CURRENT_SOURCE_DIR}/tests/python)
   set_tests_properties(python_tests PROPERTIES ENVIRONMENT "${python_test_env}" TIMEOUT 600)
   # pip install . into a fresh virtual environment (reusing this build) and the example run there.
