@@ -72,7 +72,8 @@ case "$mode" in
     ;;
   sanitize)
     # -O1 keeps the suite fast enough while the sanitizers still see every access; -g1 gives line
-    # numbers in reports. Benchmarks are not built (timings under ASan mean nothing).
+    # numbers in reports. Benchmarks are not built (timings under ASan mean nothing), nor the Python
+    # extension (cmake/python.cmake); the tests' own code is compiled at -O0 (CMakeLists.txt).
     echo "== configuring and building in $BUILD_DIR (ASan + UBSan, -O1, $JOBS jobs)"
     cmake -S . -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1" \
       -DTOPOCUT_SANITIZE=ON -DTOPOCUT_BUILD_BENCHMARKS=OFF -DTOPOCUT_WERROR="${TOPOCUT_WERROR:-OFF}" >/dev/null
