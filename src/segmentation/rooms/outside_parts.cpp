@@ -42,7 +42,7 @@ std::vector<RoomTally> tally_rooms(const cv::Mat& labels, const cv::Mat& floor, 
     const unsigned char* in = inside.ptr<unsigned char>(r);
     for (int c = 0; c < labels.cols;) {
       const int id = label[c];
-      const int end = run_end(label, c, labels.cols, label[c]);
+      const int end = run_end(label, c, labels.cols, id);
       if (id < 0 || static_cast<std::size_t>(id) > rooms) throw Error("leave_out_outside_parts: a label is no room of the segmentation");
       if (id == 0) {
         c = end;
